@@ -1,0 +1,90 @@
+// hlacore._core.parse_fed(text, file_name): the whole Fom as plain Python data, turned into dataclasses by
+// hlacore.fed. FedError is deliberately not caught here: module.cpp translates it to ErrorReadingFED.
+//
+// Returned shape (handles are ints, a missing space is None, parent 0 becomes None):
+//   {"source_name": str, "federation_name": str, "fed_version": str,
+//    "spaces": [(handle, name, [(handle, name), ...]), ...],
+//    "object_classes": [(handle, name, qualified_name, parent, (child, ...),
+//                        [(handle, name, transport, order, space), ...]), ...],
+//    "interaction_classes": [(handle, name, qualified_name, parent, (child, ...), transport, order, space,
+//                             [(handle, name), ...]), ...]}
+// where transport is "reliable" | "best_effort" and order is "timestamp" | "receive".
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <vector>
+
+#include "fed_parser/fom.hpp"
+
+namespace py = pybind11;
+using namespace hlacore::fom;
+
+namespace {
+
+py::str transport_name(Transport t) { return py::str(t == Transport::BestEffort ? "best_effort" : "reliable"); }
+py::str order_name(Order o) { return py::str(o == Order::Timestamp ? "timestamp" : "receive"); }
+
+py::object space_or_none(const std::string& s) { return s.empty() ? py::object(py::none()) : py::object(py::str(s)); }
+py::object parent_or_none(Handle h) { return h == 0 ? py::object(py::none()) : py::object(py::int_(h)); }
+
+py::tuple handles(const std::vector<Handle>& hs) {
+    py::tuple out(hs.size());
+    for (std::size_t i = 0; i < hs.size(); ++i) out[i] = py::int_(hs[i]);
+    return out;
+}
+
+py::dict to_python(const Fom& fom) {
+    py::list spaces;
+    for (const RoutingSpace& s : fom.spaces) {
+        py::list dims;
+        for (const Dimension& d : s.dimensions) dims.append(py::make_tuple(d.handle, d.name));
+        spaces.append(py::make_tuple(s.handle, s.name, dims));
+    }
+
+    py::list objects;
+    for (const ObjectClass& c : fom.object_classes) {
+        py::list attrs;
+        for (const Attribute& a : c.attributes) {
+            attrs.append(py::make_tuple(a.handle, a.name, transport_name(a.transport), order_name(a.order),
+                                        space_or_none(a.space)));
+        }
+        objects.append(py::make_tuple(c.handle, c.name, c.qualified_name, parent_or_none(c.parent),
+                                      handles(c.children), attrs));
+    }
+
+    py::list interactions;
+    for (const InteractionClass& c : fom.interaction_classes) {
+        py::list params;
+        for (const Parameter& p : c.parameters) params.append(py::make_tuple(p.handle, p.name));
+        interactions.append(py::make_tuple(c.handle, c.name, c.qualified_name, parent_or_none(c.parent),
+                                           handles(c.children), transport_name(c.transport), order_name(c.order),
+                                           space_or_none(c.space), params));
+    }
+
+    py::dict out;
+    out["source_name"] = fom.source_name;
+    out["federation_name"] = fom.federation_name;
+    out["fed_version"] = fom.fed_version;
+    out["spaces"] = spaces;
+    out["object_classes"] = objects;
+    out["interaction_classes"] = interactions;
+    return out;
+}
+
+}  // namespace
+
+void bind_fed(py::module_& m) {
+    m.def(
+        "parse_fed",
+        [](const std::string& text, const std::string& file_name) {
+            Fom fom;
+            {
+                py::gil_scoped_release release;
+                fom = parse_fed(text, file_name);
+            }
+            return to_python(fom);
+        },
+        py::arg("text"), py::arg("file_name"),
+        "Parse the text of an HLA 1.3 .fed file; raises ErrorReadingFED (\"FILE:LINE:COL: message\") on the first "
+        "error. Returns plain data (see hlacore.fed for the typed form).");
+}

@@ -1,0 +1,502 @@
+// hlacore._core: the native layer under `import hlacore`. Declarations and conversions only; the
+// PyHLA-shaped API and its docstrings live in python/hlacore/rti.py, which subclasses RTIAmbassadorBase.
+#include <array>
+#include <chrono>
+#include <memory>
+#include <thread>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "fed_parser/fom.hpp"
+#include "rti/client.hpp"
+#include "rti/gateway.hpp"
+
+namespace py = pybind11;
+namespace fom = hlacore::fom;
+namespace wire = hlacore::wire;
+using hlacore::Client;
+using hlacore::ErrorCode;
+using hlacore::Gateway;
+using hlacore::GatewayOptions;
+using hlacore::RtiError;
+
+void bind_fed(py::module_& m);
+
+namespace {
+
+// ---- exceptions: one Python class per HLA 1.3 exception, all under RTIexception ----
+
+PyObject* g_base_exception = nullptr;
+std::array<PyObject*, static_cast<std::size_t>(ErrorCode::Count)> g_exceptions{};
+
+PyObject* exception_class(ErrorCode code) {
+    auto i = static_cast<std::size_t>(code);
+    return i < g_exceptions.size() && g_exceptions[i] ? g_exceptions[i] : g_base_exception;
+}
+
+void register_exceptions(py::module_& m) {
+    g_base_exception = PyErr_NewExceptionWithDoc("hlacore._core.RTIexception",
+                                                 "Base of every HLA 1.3 exception raised by hlacore.", nullptr, nullptr);
+    m.add_object("RTIexception", py::handle(g_base_exception));
+#define HLACORE_X(name)                                                                                   \
+    g_exceptions[static_cast<std::size_t>(ErrorCode::name)] =                                             \
+        PyErr_NewExceptionWithDoc("hlacore._core." #name, "The HLA 1.3 exception " #name ".", g_base_exception, \
+                                  nullptr);                                                               \
+    m.add_object(#name, py::handle(g_exceptions[static_cast<std::size_t>(ErrorCode::name)]));
+    HLACORE_EXCEPTIONS(HLACORE_X)
+#undef HLACORE_X
+
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const RtiError& e) {
+            PyErr_SetString(exception_class(e.code()), e.what());
+        } catch (const fom::FedError& e) {
+            py::object cls = py::reinterpret_borrow<py::object>(exception_class(ErrorCode::ErrorReadingFED));
+            py::object exc = cls(e.what());
+            exc.attr("file") = e.file();
+            exc.attr("line") = e.line();
+            exc.attr("column") = e.column();
+            PyErr_SetObject(cls.ptr(), exc.ptr());
+        } catch (const wire::WireError& e) {
+            PyErr_SetString(exception_class(ErrorCode::RTIinternalError), e.what());
+        }
+    });
+}
+
+// ---- typed handles: hashable, ordered, never interchangeable ----
+
+template <int Kind>
+struct Handle {
+    std::uint32_t value;
+};
+using ObjectClassHandle = Handle<1>;
+using AttributeHandle = Handle<2>;
+using InteractionClassHandle = Handle<3>;
+using ParameterHandle = Handle<4>;
+using ObjectHandle = Handle<5>;
+using FederateHandle = Handle<6>;
+using OrderingHandle = Handle<7>;
+using TransportationHandle = Handle<8>;
+using SpaceHandle = Handle<9>;
+using DimensionHandle = Handle<10>;
+
+struct EventRetractionHandle {
+    std::uint32_t sender;
+    std::uint64_t serial;
+};
+
+template <class H>
+void bind_handle(py::module_& m, const char* name) {
+    const std::string repr_prefix = std::string("<rti.") + name + "=";
+    py::class_<H>(m, name, (std::string("An HLA ") + name + "; obtained from the RTI, never constructed.").c_str())
+        .def("__eq__", [](const H& a, const H& b) { return a.value == b.value; }, py::is_operator())
+        .def("__ne__", [](const H& a, const H& b) { return a.value != b.value; }, py::is_operator())
+        .def("__lt__", [](const H& a, const H& b) { return a.value < b.value; }, py::is_operator())
+        .def("__le__", [](const H& a, const H& b) { return a.value <= b.value; }, py::is_operator())
+        .def("__gt__", [](const H& a, const H& b) { return a.value > b.value; }, py::is_operator())
+        .def("__ge__", [](const H& a, const H& b) { return a.value >= b.value; }, py::is_operator())
+        .def("__hash__", [name](const H& h) { return py::hash(py::make_tuple(name, h.value)); })
+        .def("__int__", [](const H& h) { return h.value; })
+        .def("__index__", [](const H& h) { return h.value; })
+        .def("__repr__", [repr_prefix](const H& h) { return repr_prefix + std::to_string(h.value) + ">"; });
+}
+
+// ---- value conversions ----
+
+// Tags and labels are bytes on the wire; str goes through UTF-8 with surrogateescape so nothing is lost.
+std::string to_bytes(const py::handle& value, const char* what) {
+    if (PyBytes_Check(value.ptr())) return std::string(PyBytes_AS_STRING(value.ptr()), PyBytes_GET_SIZE(value.ptr()));
+    if (PyUnicode_Check(value.ptr())) {
+        py::object encoded = py::reinterpret_steal<py::object>(
+            PyUnicode_AsEncodedString(value.ptr(), "utf-8", "surrogateescape"));
+        if (!encoded) throw py::error_already_set();
+        return std::string(PyBytes_AS_STRING(encoded.ptr()), PyBytes_GET_SIZE(encoded.ptr()));
+    }
+    if (PyObject_CheckBuffer(value.ptr())) {
+        py::buffer_info info = py::reinterpret_borrow<py::buffer>(value).request();
+        if (info.itemsize * info.size < 0) throw py::value_error("bad buffer");
+        return std::string(static_cast<const char*>(info.ptr), static_cast<std::size_t>(info.itemsize * info.size));
+    }
+    throw py::type_error(std::string(what) + " must be bytes or str, not " + std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+}
+
+py::str to_str(const std::string& s) {
+    return py::reinterpret_steal<py::str>(PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "surrogateescape"));
+}
+
+template <class H>
+wire::HandleValues to_handle_values(const py::handle& mapping, const char* key_name) {
+    if (!PyDict_Check(mapping.ptr()) && !PyMapping_Check(mapping.ptr()))
+        throw py::type_error(std::string("a mapping {") + key_name + ": bytes} is required");
+    py::dict d = py::reinterpret_borrow<py::object>(mapping).cast<py::dict>();
+    wire::HandleValues values;
+    values.reserve(d.size());
+    for (auto item : d) {
+        if (!py::isinstance<H>(item.first)) throw py::type_error(std::string(key_name) + " object required as key");
+        values.emplace_back(item.first.cast<const H&>().value, to_bytes(item.second, "a value"));
+    }
+    return values;
+}
+
+template <class H>
+std::vector<std::uint32_t> to_handles(const std::vector<H>& handles) {
+    std::vector<std::uint32_t> out;
+    out.reserve(handles.size());
+    for (const auto& h : handles) out.push_back(h.value);
+    return out;
+}
+
+template <class H>
+py::dict to_dict(const wire::HandleValues& values) {
+    py::dict d;
+    for (const auto& [h, v] : values) d[py::cast(H{h})] = py::bytes(v);
+    return d;
+}
+
+template <class H>
+py::tuple to_tuple(const wire::Handles& handles) {
+    py::tuple t(handles.size());
+    for (std::size_t i = 0; i < handles.size(); ++i) t[i] = py::cast(H{handles[i]});
+    return t;
+}
+
+py::object retraction_or_none(std::uint64_t serial, std::uint32_t sender) {
+    return py::cast(EventRetractionHandle{sender, serial});
+}
+
+// A queued message as (callback name, arguments), with PyHLA's argument order.
+py::object to_callback(const wire::Message& message) {
+    return std::visit(
+        [](const auto& m) -> py::object {
+            using M = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<M, wire::SyncPointRegistrationSucceeded>) {
+                return py::make_tuple("synchronizationPointRegistrationSucceeded", py::make_tuple(to_str(m.label)));
+            } else if constexpr (std::is_same_v<M, wire::SyncPointRegistrationFailed>) {
+                return py::make_tuple("synchronizationPointRegistrationFailed", py::make_tuple(to_str(m.label)));
+            } else if constexpr (std::is_same_v<M, wire::AnnounceSyncPoint>) {
+                return py::make_tuple("announceSynchronizationPoint", py::make_tuple(to_str(m.label), to_str(m.tag)));
+            } else if constexpr (std::is_same_v<M, wire::FederationSynchronized>) {
+                return py::make_tuple("federationSynchronized", py::make_tuple(to_str(m.label)));
+            } else if constexpr (std::is_same_v<M, wire::StartRegistration>) {
+                return py::make_tuple("startRegistrationForObjectClass", py::make_tuple(ObjectClassHandle{m.object_class}));
+            } else if constexpr (std::is_same_v<M, wire::StopRegistration>) {
+                return py::make_tuple("stopRegistrationForObjectClass", py::make_tuple(ObjectClassHandle{m.object_class}));
+            } else if constexpr (std::is_same_v<M, wire::TurnInteractionsOn>) {
+                return py::make_tuple("turnInteractionsOn", py::make_tuple(InteractionClassHandle{m.interaction_class}));
+            } else if constexpr (std::is_same_v<M, wire::TurnInteractionsOff>) {
+                return py::make_tuple("turnInteractionsOff", py::make_tuple(InteractionClassHandle{m.interaction_class}));
+            } else if constexpr (std::is_same_v<M, wire::DiscoverObject>) {
+                return py::make_tuple("discoverObjectInstance",
+                                      py::make_tuple(ObjectHandle{m.object}, ObjectClassHandle{m.object_class}, to_str(m.name)));
+            } else if constexpr (std::is_same_v<M, wire::ReflectAttributes>) {
+                py::tuple args = m.time ? (py::tuple)py::make_tuple(ObjectHandle{m.object}, to_dict<AttributeHandle>(m.values),
+                                                         to_str(m.tag), OrderingHandle{m.order},
+                                                         TransportationHandle{m.transport}, *m.time,
+                                                         retraction_or_none(m.serial, m.sender))
+                                        : (py::tuple)py::make_tuple(ObjectHandle{m.object}, to_dict<AttributeHandle>(m.values),
+                                                         to_str(m.tag), OrderingHandle{m.order},
+                                                         TransportationHandle{m.transport});
+                return py::make_tuple("reflectAttributeValues", args);
+            } else if constexpr (std::is_same_v<M, wire::ReceiveInteraction>) {
+                py::tuple args = m.time ? (py::tuple)py::make_tuple(InteractionClassHandle{m.interaction_class},
+                                                         to_dict<ParameterHandle>(m.values), to_str(m.tag),
+                                                         OrderingHandle{m.order}, TransportationHandle{m.transport},
+                                                         *m.time, retraction_or_none(m.serial, m.sender))
+                                        : (py::tuple)py::make_tuple(InteractionClassHandle{m.interaction_class},
+                                                         to_dict<ParameterHandle>(m.values), to_str(m.tag),
+                                                         OrderingHandle{m.order}, TransportationHandle{m.transport});
+                return py::make_tuple("receiveInteraction", args);
+            } else if constexpr (std::is_same_v<M, wire::RemoveObject>) {
+                py::tuple args = m.time ? (py::tuple)py::make_tuple(ObjectHandle{m.object}, to_str(m.tag), *m.time,
+                                                         retraction_or_none(m.serial, m.sender))
+                                        : (py::tuple)py::make_tuple(ObjectHandle{m.object}, to_str(m.tag));
+                return py::make_tuple("removeObjectInstance", args);
+            } else if constexpr (std::is_same_v<M, wire::ProvideAttributeValueUpdate>) {
+                return py::make_tuple("provideAttributeValueUpdate",
+                                      py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else {
+                throw RtiError(ErrorCode::RTIinternalError, "unexpected message from the gateway");
+            }
+        },
+        message);
+}
+
+py::object serial_result(std::uint64_t serial, const std::optional<double>& time, const Client& c) {
+    if (!time) return py::none();
+    return py::cast(EventRetractionHandle{c.federate_handle(), serial});
+}
+
+// Waits for a callback with the GIL released; a signal (Ctrl-C) gets to Python between waits.
+bool wait_for_callback(Client& c, double timeout_s) {
+    const auto deadline = timeout_s < 0 ? Client::Clock::time_point::max()
+                                        : Client::Clock::now() + std::chrono::duration_cast<Client::Clock::duration>(
+                                                                     std::chrono::duration<double>(timeout_s));
+    for (;;) {
+        Client::WaitStatus status;
+        {
+            py::gil_scoped_release release;
+            status = c.wait_for_callback(deadline);
+        }
+        if (status != Client::WaitStatus::Interrupted) return status == Client::WaitStatus::Ready;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+}
+
+// ---- the in-process gateway ----
+
+class BackgroundGateway {
+public:
+    BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose) {
+        GatewayOptions options;
+        options.host = host;
+        options.port = port;
+        options.fom_path = std::move(fom_path);
+        options.verbose = verbose;
+        gateway_ = std::make_unique<Gateway>(options);
+        thread_ = std::thread([this] { gateway_->run(); });
+    }
+    ~BackgroundGateway() { stop(); }
+    void stop() {
+        if (thread_.joinable()) {
+            gateway_->stop();
+            thread_.join();
+        }
+    }
+    std::string host() const { return gateway_->host(); }
+    std::uint16_t port() const { return gateway_->port(); }
+    bool running() const { return thread_.joinable(); }
+
+private:
+    std::unique_ptr<Gateway> gateway_;
+    std::thread thread_;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+    m.doc() = "hlacore native core: gateway, client connection, FED parser";
+    register_exceptions(m);
+
+    bind_handle<ObjectClassHandle>(m, "ObjectClassHandle");
+    bind_handle<AttributeHandle>(m, "AttributeHandle");
+    bind_handle<InteractionClassHandle>(m, "InteractionClassHandle");
+    bind_handle<ParameterHandle>(m, "ParameterHandle");
+    bind_handle<ObjectHandle>(m, "ObjectHandle");
+    bind_handle<FederateHandle>(m, "FederateHandle");
+    bind_handle<OrderingHandle>(m, "OrderingHandle");
+    bind_handle<TransportationHandle>(m, "TransportationHandle");
+    bind_handle<SpaceHandle>(m, "SpaceHandle");
+    bind_handle<DimensionHandle>(m, "DimensionHandle");
+    py::class_<EventRetractionHandle>(m, "EventRetractionHandle",
+                                      "Names a timestamped message so that its sender can retract it.")
+        .def_readonly("sendingFederate", &EventRetractionHandle::sender)
+        .def_readonly("serial", &EventRetractionHandle::serial)
+        .def("__eq__", [](const EventRetractionHandle& a, const EventRetractionHandle& b) {
+            return a.sender == b.sender && a.serial == b.serial; }, py::is_operator())
+        .def("__hash__", [](const EventRetractionHandle& h) { return py::hash(py::make_tuple("ERH", h.sender, h.serial)); })
+        .def("__repr__", [](const EventRetractionHandle& h) {
+            return "<rti.EventRetractionHandle=" + std::to_string(h.sender) + ":" + std::to_string(h.serial) + ">";
+        });
+
+    bind_fed(m);
+
+    py::class_<BackgroundGateway>(m, "BackgroundGateway")
+        .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool>(), py::arg("host"),
+             py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::call_guard<py::gil_scoped_release>())
+        .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
+        .def_property_readonly("host", &BackgroundGateway::host)
+        .def_property_readonly("port", &BackgroundGateway::port)
+        .def_property_readonly("running", &BackgroundGateway::running);
+
+    using H32 = std::uint32_t;
+    py::class_<Client>(m, "RTIAmbassadorBase")
+        .def(py::init<const std::string&, std::uint16_t>(), py::arg("host"), py::arg("port"),
+             py::call_guard<py::gil_scoped_release>())
+        .def_property_readonly("address", &Client::address)
+        .def("fileno", &Client::fileno)
+        // federation management
+        .def("_create", &Client::create_federation, py::call_guard<py::gil_scoped_release>())
+        .def("destroyFederationExecution", &Client::destroy_federation, py::arg("executionName"),
+             py::call_guard<py::gil_scoped_release>(),
+             "Destroy a federation execution (HLA 1.3 §4.3). Raises FederatesCurrentlyJoined, FederationExecutionDoesNotExist.")
+        .def("_join", [](Client& c, const std::string& federate, const std::string& federation) {
+            H32 h;
+            {
+                py::gil_scoped_release release;
+                h = c.join(federate, federation);
+            }
+            return FederateHandle{h};
+        })
+        .def("_resign", [](Client& c, int action) {
+            if (action < 0 || action > 255) throw RtiError(ErrorCode::InvalidResignAction, "invalid resign action");
+            py::gil_scoped_release release;
+            c.resign(static_cast<std::uint8_t>(action));
+        })
+        .def("registerFederationSynchronizationPoint",
+             [](Client& c, py::object label, py::object tag, std::optional<std::vector<FederateHandle>> federates) {
+                 std::optional<std::vector<H32>> set;
+                 if (federates) set = to_handles(*federates);
+                 c.register_sync_point(to_bytes(label, "label"), to_bytes(tag, "tag"), set);
+             },
+             py::arg("label"), py::arg("tag"), py::arg("federates") = py::none(),
+             "Register a synchronization point (HLA 1.3 §4.6) for the whole federation or the given FederateHandles. Leads to synchronizationPointRegistrationSucceeded/Failed here and announceSynchronizationPoint at every member.")
+        .def("synchronizationPointAchieved",
+             [](Client& c, py::object label) { c.sync_point_achieved(to_bytes(label, "label")); }, py::arg("label"),
+             "Tell the RTI this federate reached an announced point (HLA 1.3 §4.9); federationSynchronized follows once every member has. Raises SynchronizationPointLabelWasNotAnnounced.")
+        // declaration management
+        .def("publishObjectClass",
+             [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs) {
+                 c.publish_object_class(cls.value, to_handles(attrs));
+             }, py::arg("objectClass"), py::arg("attributes"),
+             "Publish attributes of an object class (HLA 1.3 §5.2). Raises ObjectClassNotDefined, AttributeNotDefined.")
+        .def("unpublishObjectClass", [](Client& c, ObjectClassHandle cls) { c.unpublish_object_class(cls.value); },
+             py::arg("objectClass"),
+             "Stop publishing an object class (HLA 1.3 §5.3). Raises ObjectClassNotPublished.")
+        .def("subscribeObjectClassAttributes",
+             [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs, bool active) {
+                 c.subscribe_object_class(cls.value, to_handles(attrs), active);
+             }, py::arg("objectClass"), py::arg("attributes"), py::arg("active") = true,
+             "Subscribe to attributes of an object class (HLA 1.3 §5.6); instances of it and its subclasses are discovered (discoverObjectInstance). Raises ObjectClassNotDefined, AttributeNotDefined.")
+        .def("unsubscribeObjectClass", [](Client& c, ObjectClassHandle cls) { c.unsubscribe_object_class(cls.value); },
+             py::arg("objectClass"),
+             "Stop subscribing to an object class (HLA 1.3 §5.7). Raises ObjectClassNotSubscribed.")
+        .def("publishInteractionClass",
+             [](Client& c, InteractionClassHandle ic) { c.publish_interaction_class(ic.value); }, py::arg("interactionClass"),
+             "Publish an interaction class (HLA 1.3 §5.4). Raises InteractionClassNotDefined.")
+        .def("unpublishInteractionClass",
+             [](Client& c, InteractionClassHandle ic) { c.unpublish_interaction_class(ic.value); }, py::arg("interactionClass"),
+             "Stop publishing an interaction class (HLA 1.3 §5.5). Raises InteractionClassNotPublished.")
+        .def("subscribeInteractionClass",
+             [](Client& c, InteractionClassHandle ic, bool active) { c.subscribe_interaction_class(ic.value, active); },
+             py::arg("interactionClass"), py::arg("active") = true,
+             "Subscribe to an interaction class and its subclasses (HLA 1.3 §5.8); leads to receiveInteraction. Raises InteractionClassNotDefined.")
+        .def("unsubscribeInteractionClass",
+             [](Client& c, InteractionClassHandle ic) { c.unsubscribe_interaction_class(ic.value); },
+             py::arg("interactionClass"),
+             "Stop subscribing to an interaction class (HLA 1.3 §5.9). Raises InteractionClassNotSubscribed.")
+        .def("_set_advisory_switch",
+             [](Client& c, int which, bool on) { c.set_advisory_switch(static_cast<wire::AdvisorySwitch>(which), on); })
+        // object management
+        .def("registerObjectInstance",
+             [](Client& c, ObjectClassHandle cls, std::optional<std::string> name) {
+                 H32 h;
+                 {
+                     py::gil_scoped_release release;
+                     h = c.register_object(cls.value, name.value_or(""));
+                 }
+                 return ObjectHandle{h};
+             }, py::arg("objectClass"), py::arg("objectName") = py::none(),
+             "Register an instance of a published class (HLA 1.3 §6.2), optionally named (names are unique in the federation); returns its ObjectHandle and makes this federate the owner of the published attributes. Subscribers get discoverObjectInstance. Raises ObjectClassNotDefined, ObjectClassNotPublished, ObjectAlreadyRegistered.")
+        .def("updateAttributeValues",
+             [](Client& c, ObjectHandle obj, py::handle values, py::handle tag, std::optional<double> time) {
+                 auto serial = c.update_attributes(obj.value, to_handle_values<AttributeHandle>(values, "AttributeHandle"),
+                                                   to_bytes(tag, "tag"), time);
+                 return serial_result(serial, time, c);
+             }, py::arg("object"), py::arg("attributes"), py::arg("tag"), py::arg("time") = py::none(),
+             "Update owned attributes {AttributeHandle: bytes} of an object (HLA 1.3 §6.4); subscribers get reflectAttributeValues with the attributes they subscribed. With a time, returns an EventRetractionHandle. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned.")
+        .def("sendInteraction",
+             [](Client& c, InteractionClassHandle ic, py::handle values, py::handle tag, std::optional<double> time) {
+                 auto serial = c.send_interaction(ic.value, to_handle_values<ParameterHandle>(values, "ParameterHandle"),
+                                                  to_bytes(tag, "tag"), time);
+                 return serial_result(serial, time, c);
+             }, py::arg("interactionClass"), py::arg("parameters"), py::arg("tag"), py::arg("time") = py::none(),
+             "Send an interaction {ParameterHandle: bytes} (HLA 1.3 §6.6); subscribers get receiveInteraction. With a time, returns an EventRetractionHandle. Raises InteractionClassNotDefined, InteractionClassNotPublished, InteractionParameterNotDefined.")
+        .def("deleteObjectInstance",
+             [](Client& c, ObjectHandle obj, py::handle tag, std::optional<double> time) {
+                 auto serial = c.delete_object(obj.value, to_bytes(tag, "tag"), time);
+                 return serial_result(serial, time, c);
+             }, py::arg("object"), py::arg("tag"), py::arg("time") = py::none(),
+             "Delete an object this federate may delete (HLA 1.3 §6.8); the others get removeObjectInstance. Raises ObjectNotKnown, DeletePrivilegeNotHeld.")
+        .def("localDeleteObjectInstance", [](Client& c, ObjectHandle obj) { c.local_delete_object(obj.value); },
+             py::arg("object"),
+             "Forget an object locally (HLA 1.3 §6.10); it may be discovered again. Raises ObjectNotKnown, FederateOwnsAttributes.")
+        .def("requestObjectAttributeValueUpdate",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
+                 c.request_object_update(obj.value, to_handles(attrs));
+             }, py::arg("object"), py::arg("attributes"),
+             "Ask the owners of an object's attributes to update them (HLA 1.3 §6.15); they get provideAttributeValueUpdate. Raises ObjectNotKnown, AttributeNotDefined.")
+        .def("requestClassAttributeValueUpdate",
+             [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs) {
+                 c.request_class_update(cls.value, to_handles(attrs));
+             }, py::arg("objectClass"), py::arg("attributes"),
+             "Ask the owners of attributes of every instance of a class to update them (HLA 1.3 §6.15). Raises ObjectClassNotDefined, AttributeNotDefined.")
+        // support services
+        .def("getObjectClassHandle", [](Client& c, const std::string& n) { return ObjectClassHandle{c.object_class_handle(n)}; },
+             py::arg("name"),
+             "Handle of an object class by qualified or bare name ('ObjectRoot.robot', 'robot'). Raises NameNotFound.")
+        .def("getObjectClassName", [](Client& c, ObjectClassHandle h) { return c.object_class_name(h.value); },
+             py::arg("objectClass"),
+             "Qualified name of an object class. Raises ObjectClassNotDefined.")
+        .def("getAttributeHandle",
+             [](Client& c, const std::string& n, ObjectClassHandle cls) { return AttributeHandle{c.attribute_handle(n, cls.value)}; },
+             py::arg("name"), py::arg("objectClass"),
+             "Handle of an attribute of an object class. Raises ObjectClassNotDefined, NameNotFound.")
+        .def("getAttributeName",
+             [](Client& c, AttributeHandle a, ObjectClassHandle cls) { return c.attribute_name(a.value, cls.value); },
+             py::arg("attribute"), py::arg("objectClass"),
+             "Name of an attribute of an object class. Raises ObjectClassNotDefined, AttributeNotDefined.")
+        .def("getInteractionClassHandle",
+             [](Client& c, const std::string& n) { return InteractionClassHandle{c.interaction_class_handle(n)}; },
+             py::arg("name"),
+             "Handle of an interaction class by name. Raises NameNotFound.")
+        .def("getInteractionClassName", [](Client& c, InteractionClassHandle h) { return c.interaction_class_name(h.value); },
+             py::arg("interactionClass"),
+             "Qualified name of an interaction class. Raises InteractionClassNotDefined.")
+        .def("getParameterHandle",
+             [](Client& c, const std::string& n, InteractionClassHandle ic) {
+                 return ParameterHandle{c.parameter_handle(n, ic.value)};
+             }, py::arg("name"), py::arg("interactionClass"),
+             "Handle of a parameter of an interaction class. Raises InteractionClassNotDefined, NameNotFound.")
+        .def("getParameterName",
+             [](Client& c, ParameterHandle p, InteractionClassHandle ic) { return c.parameter_name(p.value, ic.value); },
+             py::arg("parameter"), py::arg("interactionClass"),
+             "Name of a parameter. Raises InteractionClassNotDefined, InteractionParameterNotDefined.")
+        .def("getObjectInstanceHandle",
+             [](Client& c, const std::string& n) { return ObjectHandle{c.object_instance_handle(n)}; }, py::arg("name"),
+             "Handle of an object known to this federate, by name. Raises ObjectNotKnown.")
+        .def("getObjectInstanceName", [](Client& c, ObjectHandle o) { return c.object_instance_name(o.value); },
+             py::arg("object"),
+             "Name of an object known to this federate. Raises ObjectNotKnown.")
+        .def("getObjectClass", [](Client& c, ObjectHandle o) { return ObjectClassHandle{c.object_class_of(o.value)}; },
+             py::arg("object"),
+             "Class of a known object (for a discovered one, the class it was discovered as). Raises ObjectNotKnown.")
+        .def("getRoutingSpaceHandle",
+             [](Client& c, const std::string& n) { return SpaceHandle{c.routing_space_handle(n)}; }, py::arg("name"),
+             "Handle of a routing space of the FOM. Raises NameNotFound.")
+        .def("getRoutingSpaceName", [](Client& c, SpaceHandle s) { return c.routing_space_name(s.value); },
+             py::arg("space"),
+             "Name of a routing space. Raises SpaceNotDefined.")
+        .def("getDimensionHandle",
+             [](Client& c, const std::string& n, SpaceHandle s) { return DimensionHandle{c.dimension_handle(n, s.value)}; },
+             py::arg("name"), py::arg("space"),
+             "Handle of a dimension of a routing space. Raises SpaceNotDefined, NameNotFound.")
+        .def("getDimensionName",
+             [](Client& c, DimensionHandle d, SpaceHandle s) { return c.dimension_name(d.value, s.value); },
+             py::arg("dimension"), py::arg("space"),
+             "Name of a dimension. Raises SpaceNotDefined, DimensionNotDefined.")
+        .def("getAttributeRoutingSpaceHandle",
+             [](Client& c, AttributeHandle a, ObjectClassHandle cls) {
+                 return SpaceHandle{c.attribute_routing_space(a.value, cls.value)};
+             }, py::arg("attribute"), py::arg("objectClass"),
+             "Routing space of an attribute (handle 0 when it has none).")
+        .def("getInteractionRoutingSpaceHandle",
+             [](Client& c, InteractionClassHandle ic) { return SpaceHandle{c.interaction_routing_space(ic.value)}; },
+             py::arg("interactionClass"),
+             "Routing space of an interaction class (handle 0 when it has none).")
+        .def("_federate_handle", [](Client& c) { return FederateHandle{c.federate_handle()}; })
+        // evoking callbacks
+        .def("_poll", &Client::poll_now, py::call_guard<py::gil_scoped_release>())
+        .def("_wait", &wait_for_callback, py::arg("timeout"))
+        .def("_has_callbacks", &Client::has_callbacks)
+        .def("_next_callback", [](Client& c) -> py::object {
+            auto m = c.pop_callback();
+            if (!m) return py::none();
+            return to_callback(*m);
+        });
+
+    m.def("_transportation_handle", [](std::uint32_t v) { return TransportationHandle{v}; });
+    m.def("_ordering_handle", [](std::uint32_t v) { return OrderingHandle{v}; });
+    m.def("_federate_handle_of", [](std::uint32_t v) { return FederateHandle{v}; });
+}

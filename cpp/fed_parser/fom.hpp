@@ -1,0 +1,115 @@
+// The Federation Object Model read from an HLA 1.3 `.fed` file: classes, attributes, interactions,
+// parameters, routing spaces, each with the handle the whole federation uses.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hlacore::fom {
+
+using Handle = std::uint32_t;  // 0 never names anything
+
+// Values match CERTI's handles so getTransportationHandle/getOrderingHandle agree with it.
+enum class Transport : std::uint8_t { Reliable = 1, BestEffort = 2 };
+enum class Order : std::uint8_t { Receive = 1, Timestamp = 2 };
+
+struct Attribute {
+    Handle handle = 0;
+    std::string name;
+    Transport transport = Transport::Reliable;
+    Order order = Order::Receive;
+    std::string space;  // routing space name, empty if none
+};
+
+struct ObjectClass {
+    Handle handle = 0;
+    std::string name;            // leaf name, e.g. "robot"
+    std::string qualified_name;  // CERTI form: root classes are not prepended ("robot", "robot.wheeled")
+    Handle parent = 0;           // 0 for a top-level class
+    std::vector<Handle> children;
+    std::vector<Attribute> attributes;  // inherited ones first (with the parent's handles), sorted by handle
+
+    const Attribute* attribute(Handle h) const;
+    const Attribute* attribute(std::string_view attribute_name) const;
+};
+
+struct Parameter {
+    Handle handle = 0;
+    std::string name;
+};
+
+struct InteractionClass {
+    Handle handle = 0;
+    std::string name;
+    std::string qualified_name;
+    Handle parent = 0;
+    std::vector<Handle> children;
+    Transport transport = Transport::Reliable;
+    Order order = Order::Receive;
+    std::string space;
+    std::vector<Parameter> parameters;  // inherited ones first (with the parent's handles), sorted by handle
+
+    const Parameter* parameter(Handle h) const;
+    const Parameter* parameter(std::string_view parameter_name) const;
+};
+
+struct Dimension {
+    Handle handle = 0;
+    std::string name;
+};
+
+struct RoutingSpace {
+    Handle handle = 0;
+    std::string name;
+    std::vector<Dimension> dimensions;
+};
+
+struct Fom {
+    std::string source_name;  // file name given to the parser, used in messages
+    std::string federation_name;
+    std::string fed_version;
+    std::vector<RoutingSpace> spaces;                   // spaces[h - 1] has handle h
+    std::vector<ObjectClass> object_classes;            // object_classes[h - 1] has handle h
+    std::vector<InteractionClass> interaction_classes;  // interaction_classes[h - 1] has handle h
+
+    // nullptr when the handle names nothing.
+    const ObjectClass* object_class(Handle h) const;
+    const InteractionClass* interaction_class(Handle h) const;
+    const RoutingSpace* space(Handle h) const;
+
+    // Name lookup with CERTI's rules: the qualified name, optionally preceded by a root class name
+    // ("ObjectRoot.robot", "HLAobjectRoot.robot"), or a bare leaf name (first declared match).
+    // nullptr when nothing matches.
+    const ObjectClass* find_object_class(std::string_view class_name) const;
+    const InteractionClass* find_interaction_class(std::string_view class_name) const;
+    const RoutingSpace* find_space(std::string_view space_name) const;
+
+    // True when `cls` is `ancestor` or one of its descendants.
+    bool is_object_subclass(Handle cls, Handle ancestor) const;
+    bool is_interaction_subclass(Handle cls, Handle ancestor) const;
+};
+
+// A malformed `.fed`: what() is "FILE:LINE:COL: message" (compiler form, 1-based line and column).
+class FedError : public std::runtime_error {
+public:
+    FedError(std::string file, int line, int column, std::string message);
+    const std::string& file() const { return file_; }
+    int line() const { return line_; }
+    int column() const { return column_; }
+    const std::string& message() const { return message_; }
+
+private:
+    std::string file_;
+    int line_;
+    int column_;
+    std::string message_;
+};
+
+// Parses the text of a `.fed` file; `file_name` only appears in error messages and Fom::source_name.
+// Throws FedError on the first error.
+Fom parse_fed(std::string_view text, std::string_view file_name);
+
+}  // namespace hlacore::fom

@@ -1,0 +1,582 @@
+// Recursive-descent parser for the union of the CERTI, OpenRTI and Portico `.fed` dialects, numbering
+// handles the way CERTI does.
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "fed_parser/fom.hpp"
+#include "fed_parser/lexer.hpp"
+
+namespace hlacore::fom {
+namespace {
+
+using detail::Lexer;
+using detail::Token;
+using detail::TokenKind;
+using detail::quote_for_message;
+
+enum class Kw : std::uint8_t {
+    Unknown, FED, Federation, FEDversion, Federate, Spaces, Space, Dimension, Objects, Class, Attribute,
+    Interactions, Parameter, SecLevel
+};
+
+struct KeywordName {
+    Kw kw;
+    std::string_view name;
+};
+
+constexpr KeywordName kKeywords[] = {
+    {Kw::FED, "FED"},          {Kw::Federation, "Federation"},     {Kw::FEDversion, "FEDversion"},
+    {Kw::Federate, "Federate"}, {Kw::Spaces, "spaces"},            {Kw::Space, "space"},
+    {Kw::Dimension, "dimension"}, {Kw::Objects, "objects"},        {Kw::Class, "class"},
+    {Kw::Attribute, "attribute"}, {Kw::Interactions, "interactions"}, {Kw::Parameter, "parameter"},
+    {Kw::SecLevel, "sec_level"},
+};
+
+inline char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+
+bool iequals(std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (lower(a[i]) != lower(b[i])) return false;
+    }
+    return true;
+}
+
+Kw keyword_of(std::string_view word) {
+    for (const auto& k : kKeywords) {
+        if (iequals(word, k.name)) return k.kw;
+    }
+    return Kw::Unknown;
+}
+
+std::string_view name_of(Kw kw) {
+    for (const auto& k : kKeywords) {
+        if (k.kw == kw) return k.name;
+    }
+    return "?";
+}
+
+bool is_root_name(std::string_view n) {
+    return n == "ObjectRoot" || n == "HLAobjectRoot" || n == "InteractionRoot" || n == "HLAinteractionRoot";
+}
+
+constexpr const char* transport_list = "reliable or best_effort";
+constexpr const char* order_list = "timestamp or receive";
+
+bool parse_transport(std::string_view w, Transport& out) {
+    if (iequals(w, "reliable") || iequals(w, "HLAreliable")) {
+        out = Transport::Reliable;
+        return true;
+    }
+    if (iequals(w, "best_effort") || iequals(w, "HLAbestEffort")) {
+        out = Transport::BestEffort;
+        return true;
+    }
+    return false;
+}
+
+bool parse_order(std::string_view w, Order& out) {
+    if (iequals(w, "timestamp")) {
+        out = Order::Timestamp;
+        return true;
+    }
+    if (iequals(w, "receive")) {
+        out = Order::Receive;
+        return true;
+    }
+    return false;
+}
+
+// An opened "(keyword": what a missing ')' message names.
+struct Open {
+    Kw kw;
+    std::size_t offset;  // of the '('
+};
+
+// Deep enough for any real FOM, shallow enough that recursion cannot exhaust the stack.
+constexpr int kMaxClassDepth = 256;
+
+class Parser {
+public:
+    Parser(std::string_view text, std::string_view file_name) : lex_(text, file_name) {
+        fom_.source_name = std::string(file_name);
+    }
+
+    Fom run();
+
+private:
+    [[noreturn]] void fail(std::size_t offset, const std::string& message) const { lex_.fail(offset, message); }
+    [[noreturn]] void fail(const Token& t, const std::string& message) const { lex_.fail(t.offset, message); }
+
+    std::string at(std::size_t offset) const {
+        const auto p = lex_.position(offset);
+        return std::to_string(p.line) + ":" + std::to_string(p.column);
+    }
+
+    std::string opened(const Open& o) const {
+        return "'(" + std::string(name_of(o.kw)) + "' opened at " + at(o.offset);
+    }
+
+    static std::string describe(const Token& t) {
+        switch (t.kind) {
+            case TokenKind::LParen: return "'('";
+            case TokenKind::RParen: return "')'";
+            case TokenKind::Word: return "'" + quote_for_message(t.text) + "'";
+            case TokenKind::String: return "\"" + quote_for_message(t.text) + "\"";
+            case TokenKind::End: return "end of file";
+        }
+        return "?";
+    }
+
+    // Next token inside `o`; the end of the file there is always an unclosed parenthesis.
+    Token next_in(const Open& o) {
+        Token t = lex_.next();
+        if (t.kind == TokenKind::End) fail(t, "missing ')' to close " + opened(o));
+        return t;
+    }
+
+    // After '(' inside `o`: the keyword.
+    Kw keyword_in(const Open& o, const Token& paren, Token& word) {
+        word = next_in(o);
+        if (word.kind != TokenKind::Word) {
+            fail(word, "expected a keyword after '(' at " + at(paren.offset) + ", found " + describe(word));
+        }
+        return keyword_of(word.text);
+    }
+
+    void expect_close(const Open& o) {
+        const Token t = next_in(o);
+        if (t.kind != TokenKind::RParen) {
+            fail(t, "unexpected " + describe(t) + " (expected ')' to close " + opened(o) + ")");
+        }
+    }
+
+    // A name or value: a word or a quoted string. `identifier` applies CERTI's name rule to words.
+    std::string_view read_value(const Open& o, std::string_view what, bool identifier, Token* where = nullptr) {
+        const Token t = next_in(o);
+        if (t.kind == TokenKind::Word) {
+            const char c = t.text[0];
+            if (identifier && !((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_')) {
+                fail(t, "invalid " + std::string(what) + " '" + quote_for_message(t.text) +
+                            "' (names start with a letter or '_')");
+            }
+        } else if (t.kind == TokenKind::String) {
+            if (t.text.empty()) fail(t, "empty " + std::string(what));
+        } else {
+            const bool vowel = what[0] == 'a' || what[0] == 'e' || what[0] == 'i' || what[0] == 'o';
+            fail(t, std::string(vowel ? "expected an " : "expected a ") + std::string(what) + " after '(" +
+                        std::string(name_of(o.kw)) + "', found " + describe(t));
+        }
+        if (where) *where = t;
+        return t.text;
+    }
+
+    // A keyword that is valid somewhere, but not inside `context`; `allowed` lists what is.
+    [[noreturn]] void misplaced(Kw kw, const Token& paren, const Token& word, Kw context, const char* allowed) const {
+        if (kw == context) {  // e.g. a space inside a space: the specific messages below would mislead
+            fail(paren, "'(" + std::string(name_of(kw)) + "' is not allowed inside '(" +
+                            std::string(name_of(context)) + "'");
+        }
+        switch (kw) {
+            case Kw::Attribute: fail(paren, "attribute outside an object class");
+            case Kw::Parameter: fail(paren, "parameter outside an interaction class");
+            case Kw::Class: fail(paren, "class outside (objects ...) or (interactions ...)");
+            case Kw::Space: fail(paren, "space outside (spaces ...)");
+            case Kw::Dimension: fail(paren, "dimension outside a (space ...)");
+            case Kw::SecLevel: fail(paren, "sec_level outside a class");
+            case Kw::Unknown:
+                fail(word, "unknown keyword '" + quote_for_message(word.text) + "' (expected " + allowed + ")");
+            default:
+                fail(paren, "'(" + std::string(name_of(kw)) + "' is not allowed inside '(" +
+                                std::string(name_of(context)) + "'");
+        }
+    }
+
+    void parse_federate(const Open& o);
+    void parse_sec_level(const Open& o);
+    void parse_spaces(const Open& o);
+    void parse_space(const Open& o);
+    void parse_objects(const Open& o);
+    void parse_object_class(const Open& o, Handle parent, int depth);
+    void parse_attribute(const Open& o, Handle cls);
+    void parse_interactions(const Open& o);
+    void parse_interaction_class(const Open& o, Handle parent, int depth);
+    void parse_parameter(const Open& o, Handle cls);
+    void space_reference(const Token& t, std::string& out);
+    std::string qualify(const std::string& parent_qualified, std::string_view name) const;
+
+    Lexer lex_;
+    Fom fom_;
+    std::unordered_map<std::string, std::size_t> object_names_;       // qualified name -> offset of the name
+    std::unordered_map<std::string, std::size_t> interaction_names_;  // likewise
+    bool spaces_done_ = false;
+    std::vector<Token> pending_spaces_;  // references made before (spaces ...) was read
+};
+
+std::string Parser::qualify(const std::string& parent_qualified, std::string_view name) const {
+    if (parent_qualified.empty() || is_root_name(parent_qualified)) return std::string(name);
+    std::string q;
+    q.reserve(parent_qualified.size() + 1 + name.size());
+    q += parent_qualified;
+    q += '.';
+    q += name;
+    return q;
+}
+
+Fom Parser::run() {
+    const Token first = lex_.next();
+    if (first.kind == TokenKind::End) fail(std::size_t{0}, "empty file");
+    if (first.kind != TokenKind::LParen) fail(first, "expected '(' to start the file, found " + describe(first));
+    const Token fed = lex_.next();
+    if (fed.kind != TokenKind::Word || keyword_of(fed.text) != Kw::FED) {
+        fail(fed, "expected keyword FED after '(', found " + describe(fed));
+    }
+    const Open fed_open{Kw::FED, first.offset};
+
+    bool seen_federation = false, seen_version = false, seen_spaces = false, seen_objects = false,
+         seen_interactions = false;
+    Token close;
+    for (;;) {
+        const Token t = next_in(fed_open);
+        if (t.kind == TokenKind::RParen) {
+            close = t;
+            break;
+        }
+        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(' or ')')");
+        Token word;
+        const Kw kw = keyword_in(fed_open, t, word);
+        const Open o{kw, t.offset};
+        auto once = [&](bool& seen, const char* what) {
+            if (seen) fail(t, std::string("duplicate ") + what);
+            seen = true;
+        };
+        switch (kw) {
+            case Kw::Federation:
+                once(seen_federation, "(Federation ...) entry");
+                fom_.federation_name = std::string(read_value(o, "federation name", true));
+                expect_close(o);
+                break;
+            case Kw::FEDversion:
+                once(seen_version, "(FEDversion ...) entry");
+                fom_.fed_version = std::string(read_value(o, "version", false));
+                expect_close(o);
+                break;
+            case Kw::Federate: parse_federate(o); break;
+            case Kw::Spaces:
+                once(seen_spaces, "section 'spaces'");
+                parse_spaces(o);
+                break;
+            case Kw::Objects:
+                once(seen_objects, "section 'objects'");
+                parse_objects(o);
+                break;
+            case Kw::Interactions:
+                once(seen_interactions, "section 'interactions'");
+                parse_interactions(o);
+                break;
+            default:
+                misplaced(kw, t, word, Kw::FED, "Federation, FEDversion, Federate, spaces, objects or interactions");
+        }
+    }
+    if (!seen_federation) fail(close, "the FED has no (Federation NAME) entry");
+    if (!seen_version) fail(close, "the FED has no (FEDversion VERSION) entry");
+
+    const Token trailing = lex_.next();
+    if (trailing.kind == TokenKind::RParen) {
+        fail(trailing, "unexpected ')' after the end of the FED (closed at " + at(close.offset) + ")");
+    }
+    if (trailing.kind != TokenKind::End) {
+        fail(trailing, "unexpected text after the end of the FED (closed at " + at(close.offset) + ")");
+    }
+
+    for (const Token& ref : pending_spaces_) {
+        if (fom_.find_space(ref.text) == nullptr) {
+            fail(ref, "unknown routing space '" + quote_for_message(ref.text) + "'");
+        }
+    }
+    return std::move(fom_);
+}
+
+void Parser::parse_federate(const Open& o) {
+    // CERTI's security extension: (Federate "name" "level"); accepted and ignored.
+    read_value(o, "federate name", false);
+    read_value(o, "security level", false);
+    expect_close(o);
+}
+
+void Parser::parse_sec_level(const Open& o) {
+    read_value(o, "security level", false);
+    expect_close(o);
+}
+
+void Parser::parse_spaces(const Open& o) {
+    for (;;) {
+        const Token t = next_in(o);
+        if (t.kind == TokenKind::RParen) break;
+        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(space' or ')')");
+        Token word;
+        const Kw kw = keyword_in(o, t, word);
+        if (kw != Kw::Space) misplaced(kw, t, word, Kw::Spaces, "space");
+        parse_space(Open{kw, t.offset});
+    }
+    spaces_done_ = true;
+}
+
+void Parser::parse_space(const Open& o) {
+    Token name_token;
+    const std::string_view name = read_value(o, "space name", true, &name_token);
+    if (fom_.find_space(name) != nullptr) fail(name_token, "duplicate routing space '" + quote_for_message(name) + "'");
+    RoutingSpace space;
+    space.handle = static_cast<Handle>(fom_.spaces.size() + 1);
+    space.name = std::string(name);
+    for (;;) {
+        const Token t = next_in(o);
+        if (t.kind == TokenKind::RParen) break;
+        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(dimension' or ')')");
+        Token word;
+        const Kw kw = keyword_in(o, t, word);
+        if (kw != Kw::Dimension) misplaced(kw, t, word, Kw::Space, "dimension");
+        const Open d{kw, t.offset};
+        Token dim_token;
+        const std::string_view dim = read_value(d, "dimension name", true, &dim_token);
+        for (const Dimension& existing : space.dimensions) {
+            if (existing.name == dim) {
+                fail(dim_token, "duplicate dimension '" + quote_for_message(dim) + "' in space '" + space.name + "'");
+            }
+        }
+        space.dimensions.push_back(Dimension{static_cast<Handle>(space.dimensions.size() + 1), std::string(dim)});
+        expect_close(d);
+    }
+    fom_.spaces.push_back(std::move(space));
+}
+
+void Parser::space_reference(const Token& t, std::string& out) {
+    out = std::string(t.text);
+    if (!spaces_done_) {
+        pending_spaces_.push_back(t);
+    } else if (fom_.find_space(t.text) == nullptr) {
+        fail(t, "unknown routing space '" + quote_for_message(t.text) + "'");
+    }
+}
+
+void Parser::parse_objects(const Open& o) {
+    for (;;) {
+        const Token t = next_in(o);
+        if (t.kind == TokenKind::RParen) return;
+        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(class' or ')')");
+        Token word;
+        const Kw kw = keyword_in(o, t, word);
+        if (kw != Kw::Class) misplaced(kw, t, word, Kw::Objects, "class");
+        parse_object_class(Open{kw, t.offset}, 0, 1);
+    }
+}
+
+void Parser::parse_object_class(const Open& o, Handle parent, int depth) {
+    if (depth > kMaxClassDepth) fail(o.offset, "classes nested more than " + std::to_string(kMaxClassDepth) + " deep");
+    Token name_token;
+    const std::string_view name = read_value(o, "class name", true, &name_token);
+
+    const Handle h = static_cast<Handle>(fom_.object_classes.size() + 1);
+    std::string qualified = qualify(parent ? fom_.object_classes[parent - 1].qualified_name : std::string(), name);
+    const auto [it, inserted] = object_names_.emplace(qualified, name_token.offset);
+    if (!inserted) {
+        fail(name_token, "duplicate object class '" + quote_for_message(qualified) + "' (first declared at " +
+                             at(it->second) + ")");
+    }
+    {
+        ObjectClass cls;
+        cls.handle = h;
+        cls.name = std::string(name);
+        cls.qualified_name = std::move(qualified);
+        cls.parent = parent;
+        if (parent) {
+            cls.attributes = fom_.object_classes[parent - 1].attributes;
+            fom_.object_classes[parent - 1].children.push_back(h);
+        }
+        fom_.object_classes.push_back(std::move(cls));
+    }
+
+    bool seen_subclass = false;
+    for (;;) {
+        const Token t = next_in(o);
+        if (t.kind == TokenKind::RParen) return;
+        if (t.kind != TokenKind::LParen) {
+            fail(t, "unexpected " + describe(t) + " in object class '" + fom_.object_classes[h - 1].qualified_name +
+                        "' (expected '(attribute', '(class' or ')')");
+        }
+        Token word;
+        const Kw kw = keyword_in(o, t, word);
+        const Open inner{kw, t.offset};
+        switch (kw) {
+            case Kw::Attribute:
+                // A later attribute would be missing from the subclasses already numbered.
+                if (seen_subclass) {
+                    fail(t, "attributes of class '" + fom_.object_classes[h - 1].qualified_name +
+                                "' must come before its subclasses");
+                }
+                parse_attribute(inner, h);
+                break;
+            case Kw::Class:
+                seen_subclass = true;
+                parse_object_class(inner, h, depth + 1);
+                break;
+            case Kw::SecLevel: parse_sec_level(inner); break;
+            default: misplaced(kw, t, word, Kw::Class, "attribute, class or sec_level");
+        }
+    }
+}
+
+void Parser::parse_attribute(const Open& o, Handle cls) {
+    Token name_token;
+    const std::string_view name = read_value(o, "attribute name", true, &name_token);
+    const std::string& cls_name = fom_.object_classes[cls - 1].qualified_name;
+    {
+        const auto& attrs = fom_.object_classes[cls - 1].attributes;
+        for (const Attribute& a : attrs) {
+            if (a.name != name) continue;
+            std::string msg = "duplicate attribute '" + quote_for_message(name) + "' in class '" + cls_name + "'";
+            // Name the class the clashing attribute comes from when it is inherited.
+            Handle owner = cls;
+            for (Handle p = fom_.object_classes[cls - 1].parent; p != 0; p = fom_.object_classes[p - 1].parent) {
+                if (fom_.object_classes[p - 1].attribute(a.handle) != nullptr) owner = p;
+            }
+            if (owner != cls) msg += " (inherited from '" + fom_.object_classes[owner - 1].qualified_name + "')";
+            fail(name_token, msg);
+        }
+    }
+
+    Attribute attr;
+    attr.name = std::string(name);
+    Token t = next_in(o);
+    if (t.kind != TokenKind::Word && t.kind != TokenKind::String) {
+        fail(t, "attribute '" + attr.name + "' needs a transport and an order");
+    }
+    if (!parse_transport(t.text, attr.transport)) {
+        fail(t, "unknown transport '" + quote_for_message(t.text) + "' (expected " + transport_list + ")");
+    }
+    t = next_in(o);
+    if (t.kind != TokenKind::Word && t.kind != TokenKind::String) {
+        fail(t, "attribute '" + attr.name + "' needs an order (" + order_list + ") after its transport");
+    }
+    if (!parse_order(t.text, attr.order)) {
+        fail(t, "unknown order '" + quote_for_message(t.text) + "' (expected " + order_list + ")");
+    }
+    if (lex_.peek().kind == TokenKind::Word || lex_.peek().kind == TokenKind::String) {
+        space_reference(lex_.next(), attr.space);
+    }
+    expect_close(o);
+
+    auto& attrs = fom_.object_classes[cls - 1].attributes;
+    attr.handle = static_cast<Handle>(attrs.size() + 1);
+    attrs.push_back(std::move(attr));
+}
+
+void Parser::parse_interactions(const Open& o) {
+    for (;;) {
+        const Token t = next_in(o);
+        if (t.kind == TokenKind::RParen) return;
+        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(class' or ')')");
+        Token word;
+        const Kw kw = keyword_in(o, t, word);
+        if (kw != Kw::Class) misplaced(kw, t, word, Kw::Interactions, "class");
+        parse_interaction_class(Open{kw, t.offset}, 0, 1);
+    }
+}
+
+void Parser::parse_interaction_class(const Open& o, Handle parent, int depth) {
+    if (depth > kMaxClassDepth) fail(o.offset, "classes nested more than " + std::to_string(kMaxClassDepth) + " deep");
+    Token name_token;
+    const std::string_view name = read_value(o, "class name", true, &name_token);
+
+    InteractionClass cls;
+    cls.name = std::string(name);
+    cls.qualified_name = qualify(parent ? fom_.interaction_classes[parent - 1].qualified_name : std::string(), name);
+    const auto [it, inserted] = interaction_names_.emplace(cls.qualified_name, name_token.offset);
+    if (!inserted) {
+        fail(name_token, "duplicate interaction class '" + quote_for_message(cls.qualified_name) +
+                             "' (first declared at " + at(it->second) + ")");
+    }
+
+    Token t = next_in(o);
+    if (t.kind != TokenKind::Word && t.kind != TokenKind::String) {
+        fail(t, "interaction class '" + cls.qualified_name + "' needs a transport and an order");
+    }
+    if (!parse_transport(t.text, cls.transport)) {
+        fail(t, "unknown transport '" + quote_for_message(t.text) + "' (expected " + transport_list + ")");
+    }
+    t = next_in(o);
+    if (t.kind != TokenKind::Word && t.kind != TokenKind::String) {
+        fail(t, "interaction class '" + cls.qualified_name + "' needs an order (" + order_list +
+                    ") after its transport");
+    }
+    if (!parse_order(t.text, cls.order)) {
+        fail(t, "unknown order '" + quote_for_message(t.text) + "' (expected " + order_list + ")");
+    }
+    if (lex_.peek().kind == TokenKind::Word || lex_.peek().kind == TokenKind::String) {
+        space_reference(lex_.next(), cls.space);
+    }
+
+    const Handle h = static_cast<Handle>(fom_.interaction_classes.size() + 1);
+    cls.handle = h;
+    cls.parent = parent;
+    if (parent) {
+        cls.parameters = fom_.interaction_classes[parent - 1].parameters;
+        fom_.interaction_classes[parent - 1].children.push_back(h);
+    }
+    fom_.interaction_classes.push_back(std::move(cls));
+
+    bool seen_subclass = false;
+    for (;;) {
+        t = next_in(o);
+        if (t.kind == TokenKind::RParen) return;
+        if (t.kind != TokenKind::LParen) {
+            fail(t, "unexpected " + describe(t) + " in interaction class '" +
+                        fom_.interaction_classes[h - 1].qualified_name + "' (expected '(parameter', '(class' or ')')");
+        }
+        Token word;
+        const Kw kw = keyword_in(o, t, word);
+        const Open inner{kw, t.offset};
+        switch (kw) {
+            case Kw::Parameter:
+                if (seen_subclass) {
+                    fail(t, "parameters of interaction class '" + fom_.interaction_classes[h - 1].qualified_name +
+                                "' must come before its subclasses");
+                }
+                parse_parameter(inner, h);
+                break;
+            case Kw::Class:
+                seen_subclass = true;
+                parse_interaction_class(inner, h, depth + 1);
+                break;
+            case Kw::SecLevel: parse_sec_level(inner); break;
+            default: misplaced(kw, t, word, Kw::Class, "parameter, class or sec_level");
+        }
+    }
+}
+
+void Parser::parse_parameter(const Open& o, Handle cls) {
+    Token name_token;
+    const std::string_view name = read_value(o, "parameter name", true, &name_token);
+    auto& c = fom_.interaction_classes[cls - 1];
+    for (const Parameter& p : c.parameters) {
+        if (p.name != name) continue;
+        std::string msg = "duplicate parameter '" + quote_for_message(name) + "' in interaction class '" +
+                          c.qualified_name + "'";
+        Handle owner = cls;
+        for (Handle a = c.parent; a != 0; a = fom_.interaction_classes[a - 1].parent) {
+            if (fom_.interaction_classes[a - 1].parameter(p.handle) != nullptr) owner = a;
+        }
+        if (owner != cls) msg += " (inherited from '" + fom_.interaction_classes[owner - 1].qualified_name + "')";
+        fail(name_token, msg);
+    }
+    c.parameters.push_back(Parameter{static_cast<Handle>(c.parameters.size() + 1), std::string(name)});
+    expect_close(o);
+}
+
+}  // namespace
+
+Fom parse_fed(std::string_view text, std::string_view file_name) { return Parser(text, file_name).run(); }
+
+}  // namespace hlacore::fom

@@ -1,0 +1,152 @@
+// The federate side of the connection to a gateway: HLA 1.3 services with local validation against
+// the FOM and the federate's own declarations, and a queue of callbacks waiting to be evoked by tick.
+//
+// Thread safety: every public method may be called from any thread. Reading the socket is done by
+// whichever thread waits (tick or a service awaiting its reply); the others wait on a condition variable.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "fed_parser/fom.hpp"
+#include "rti/exceptions.hpp"
+#include "rti/wire/codec.hpp"
+
+namespace hlacore {
+
+class Client {
+public:
+    using Clock = std::chrono::steady_clock;
+    enum class WaitStatus { Ready, Timeout, Interrupted };
+
+    // Connects and performs the version handshake; throws RtiError(RTIinternalError) naming the address.
+    Client(const std::string& host, std::uint16_t port);
+    ~Client();
+    Client(const Client&) = delete;
+    Client& operator=(const Client&) = delete;
+
+    const std::string& address() const { return address_; }
+    int fileno() const { return fd_; }
+
+    // ---- federation management ----
+    void create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text);
+    void destroy_federation(const std::string& name);
+    std::uint32_t join(const std::string& federate, const std::string& federation);
+    void resign(std::uint8_t action);
+    void register_sync_point(const std::string& label, const std::string& tag,
+                             const std::optional<std::vector<std::uint32_t>>& federates);
+    void sync_point_achieved(const std::string& label);
+
+    // ---- declaration management ----
+    void publish_object_class(fom::Handle cls, const std::vector<fom::Handle>& attributes);
+    void unpublish_object_class(fom::Handle cls);
+    void subscribe_object_class(fom::Handle cls, const std::vector<fom::Handle>& attributes, bool active);
+    void unsubscribe_object_class(fom::Handle cls);
+    void publish_interaction_class(fom::Handle cls);
+    void unpublish_interaction_class(fom::Handle cls);
+    void subscribe_interaction_class(fom::Handle cls, bool active);
+    void unsubscribe_interaction_class(fom::Handle cls);
+    void set_advisory_switch(wire::AdvisorySwitch which, bool on);
+
+    // ---- object management; the update calls return the serial of the event retraction handle ----
+    std::uint32_t register_object(fom::Handle cls, const std::string& name);
+    std::uint64_t update_attributes(std::uint32_t object, wire::HandleValues values, const std::string& tag,
+                                    wire::OptionalTime time);
+    std::uint64_t send_interaction(fom::Handle cls, wire::HandleValues values, const std::string& tag,
+                                   wire::OptionalTime time);
+    std::uint64_t delete_object(std::uint32_t object, const std::string& tag, wire::OptionalTime time);
+    void local_delete_object(std::uint32_t object);
+    void request_object_update(std::uint32_t object, const std::vector<fom::Handle>& attributes);
+    void request_class_update(fom::Handle cls, const std::vector<fom::Handle>& attributes);
+
+    // ---- support services (local: answered from the FOM and what this federate knows) ----
+    fom::Handle object_class_handle(const std::string& name) const;
+    std::string object_class_name(fom::Handle cls) const;
+    fom::Handle attribute_handle(const std::string& name, fom::Handle cls) const;
+    std::string attribute_name(fom::Handle attribute, fom::Handle cls) const;
+    fom::Handle interaction_class_handle(const std::string& name) const;
+    std::string interaction_class_name(fom::Handle cls) const;
+    fom::Handle parameter_handle(const std::string& name, fom::Handle cls) const;
+    std::string parameter_name(fom::Handle parameter, fom::Handle cls) const;
+    std::uint32_t object_instance_handle(const std::string& name) const;
+    std::string object_instance_name(std::uint32_t object) const;
+    fom::Handle object_class_of(std::uint32_t object) const;
+    fom::Handle routing_space_handle(const std::string& name) const;
+    std::string routing_space_name(fom::Handle space) const;
+    fom::Handle dimension_handle(const std::string& name, fom::Handle space) const;
+    std::string dimension_name(fom::Handle dimension, fom::Handle space) const;
+    fom::Handle attribute_routing_space(fom::Handle attribute, fom::Handle cls) const;
+    fom::Handle interaction_routing_space(fom::Handle cls) const;
+    std::uint32_t federate_handle() const;
+
+    // ---- evoking callbacks ----
+    // Reads what the socket has without blocking.
+    void poll_now();
+    // Waits until a callback is queued or the deadline passes; Interrupted when a signal arrived.
+    WaitStatus wait_for_callback(Clock::time_point deadline);
+    std::optional<wire::Message> pop_callback();
+    bool has_callbacks() const;
+
+private:
+    struct LocalObject {
+        fom::Handle object_class = 0;  // registered class, or the class it was discovered as
+        std::string name;
+        std::set<fom::Handle> owned;
+        bool privilege_to_delete = false;
+    };
+
+    template <class M>
+    void send(const M& message);
+    wire::Reply call(wire::Message request, std::uint32_t request_id);
+    std::uint32_t next_request();
+    // Reads the socket until pred() holds (checked under mu_), the deadline passes or a signal arrives.
+    template <class Pred>
+    WaitStatus pump(Clock::time_point deadline, Pred pred);
+    WaitStatus read_socket(Clock::time_point deadline, std::vector<wire::Message>& got);
+    void file(std::vector<wire::Message>& got);  // under mu_
+
+    // The checks behind the services; callers hold mu_.
+    void require_joined() const;
+    const fom::ObjectClass& defined_object_class(fom::Handle cls) const;
+    const fom::InteractionClass& defined_interaction_class(fom::Handle cls) const;
+    const LocalObject& known_object(std::uint32_t object) const;
+    [[noreturn]] void connection_lost() const;
+
+    std::string address_;
+    int fd_ = -1;
+
+    std::mutex send_mu_;
+    std::string send_buffer_;
+
+    mutable std::mutex mu_;
+    std::condition_variable cv_;
+    bool reading_ = false;
+    bool closed_ = false;
+    std::string closed_reason_;
+    std::string in_;  // touched only by the thread that is reading
+    std::deque<wire::Message> callbacks_;
+    std::map<std::uint32_t, wire::Reply> replies_;
+    std::uint32_t last_request_ = 0;
+
+    // Federate state, under mu_.
+    std::unique_ptr<fom::Fom> fom_;
+    std::uint32_t federate_ = 0;
+    std::map<fom::Handle, std::set<fom::Handle>> published_;
+    std::map<fom::Handle, std::set<fom::Handle>> subscribed_;
+    std::set<fom::Handle> published_interactions_;
+    std::set<fom::Handle> subscribed_interactions_;
+    std::unordered_map<std::uint32_t, LocalObject> objects_;
+    std::set<std::string> announced_;
+    std::uint64_t serial_ = 0;
+};
+
+}  // namespace hlacore

@@ -1,0 +1,113 @@
+// The HLA 1.3 exceptions, declared once: the same names and codes in C++, on the wire and in Python
+// (where each becomes a subclass of rti.RTIexception). Append only: the position is the wire code.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#define HLACORE_EXCEPTIONS(X)                   \
+    X(ArrayIndexOutOfBounds)                    \
+    X(AsynchronousDeliveryAlreadyDisabled)      \
+    X(AsynchronousDeliveryAlreadyEnabled)       \
+    X(AttributeAcquisitionWasNotRequested)      \
+    X(AttributeAcquisitionWasNotCanceled)       \
+    X(AttributeAlreadyBeingAcquired)            \
+    X(AttributeAlreadyBeingDivested)            \
+    X(AttributeAlreadyOwned)                    \
+    X(AttributeDivestitureWasNotRequested)      \
+    X(AttributeNotDefined)                      \
+    X(AttributeNotKnown)                        \
+    X(AttributeNotOwned)                        \
+    X(AttributeNotPublished)                    \
+    X(ConcurrentAccessAttempted)                \
+    X(CouldNotDiscover)                         \
+    X(CouldNotOpenFED)                          \
+    X(CouldNotRestore)                          \
+    X(DeletePrivilegeNotHeld)                   \
+    X(DimensionNotDefined)                      \
+    X(EnableTimeConstrainedPending)             \
+    X(EnableTimeConstrainedWasNotPending)       \
+    X(EnableTimeRegulationPending)              \
+    X(EnableTimeRegulationWasNotPending)        \
+    X(ErrorReadingFED)                          \
+    X(EventNotKnown)                            \
+    X(FederateAlreadyExecutionMember)           \
+    X(FederateInternalError)                    \
+    X(FederateLoggingServiceCalls)              \
+    X(FederateNotExecutionMember)               \
+    X(FederateOwnsAttributes)                   \
+    X(FederateWasNotAskedToReleaseAttribute)    \
+    X(FederatesCurrentlyJoined)                 \
+    X(FederationExecutionAlreadyExists)         \
+    X(FederationExecutionDoesNotExist)          \
+    X(FederationTimeAlreadyPassed)              \
+    X(HandleValuePairMaximumExceeded)           \
+    X(InteractionClassNotDefined)               \
+    X(InteractionClassNotKnown)                 \
+    X(InteractionClassNotPublished)             \
+    X(InteractionClassNotSubscribed)            \
+    X(InteractionParameterNotDefined)           \
+    X(InteractionParameterNotKnown)             \
+    X(InvalidExtents)                           \
+    X(InvalidFederationTime)                    \
+    X(InvalidHandleValuePairSetContext)         \
+    X(InvalidLookahead)                         \
+    X(InvalidOrderingHandle)                    \
+    X(InvalidRegionContext)                     \
+    X(InvalidResignAction)                      \
+    X(InvalidRetractionHandle)                  \
+    X(InvalidTransportationHandle)              \
+    X(MemoryExhausted)                          \
+    X(NameNotFound)                             \
+    X(ObjectClassNotDefined)                    \
+    X(ObjectClassNotKnown)                      \
+    X(ObjectClassNotPublished)                  \
+    X(ObjectClassNotSubscribed)                 \
+    X(ObjectNotKnown)                           \
+    X(ObjectAlreadyRegistered)                  \
+    X(OwnershipAcquisitionPending)              \
+    X(RegionInUse)                              \
+    X(RegionNotKnown)                           \
+    X(RestoreInProgress)                        \
+    X(RestoreNotRequested)                      \
+    X(RTIinternalError)                         \
+    X(SpaceNotDefined)                          \
+    X(SaveInProgress)                           \
+    X(SaveNotInitiated)                         \
+    X(SpecifiedSaveLabelDoesNotExist)           \
+    X(SynchronizationPointLabelWasNotAnnounced) \
+    X(TimeAdvanceAlreadyInProgress)             \
+    X(TimeAdvanceWasNotInProgress)              \
+    X(TimeConstrainedAlreadyEnabled)            \
+    X(TimeConstrainedWasNotEnabled)             \
+    X(TimeRegulationAlreadyEnabled)             \
+    X(TimeRegulationWasNotEnabled)              \
+    X(UnableToPerformSave)                      \
+    X(ValueCountExceeded)                       \
+    X(ValueLengthExceeded)
+
+namespace hlacore {
+
+enum class ErrorCode : std::uint16_t {
+    None = 0,
+#define HLACORE_X(name) name,
+    HLACORE_EXCEPTIONS(HLACORE_X)
+#undef HLACORE_X
+    Count
+};
+
+// Name of the exception, "" for None or an unknown code.
+const char* error_name(ErrorCode code);
+
+// An HLA exception raised by a service, carried as-is across the wire.
+class RtiError : public std::runtime_error {
+public:
+    RtiError(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+    ErrorCode code() const { return code_; }
+
+private:
+    ErrorCode code_;
+};
+
+}  // namespace hlacore

@@ -1,0 +1,454 @@
+#include "rti/federation.hpp"
+
+#include <algorithm>
+
+namespace hlacore {
+
+using wire::WireError;
+
+Federation::Federation(std::string name, fom::Fom fom, std::string fed_name, std::string fed_text, Outbox& outbox)
+    : name_(std::move(name)),
+      fom_(std::move(fom)),
+      fed_name_(std::move(fed_name)),
+      fed_text_(std::move(fed_text)),
+      outbox_(outbox) {}
+
+FederateHandle Federation::join(const std::string& federate_name) {
+    for (const auto& [h, f] : federates_) {
+        if (f.name == federate_name)
+            throw RtiError(ErrorCode::FederateAlreadyExecutionMember,
+                           "a federate named '" + federate_name + "' is already joined to '" + name_ + "'");
+    }
+    const FederateHandle h = next_federate_++;
+    federates_[h].name = federate_name;
+    return h;
+}
+
+void Federation::announce_pending(FederateHandle h) {
+    // A pending synchronization point for the whole federation includes late joiners (HLA 1.3 §4.6).
+    for (auto& [label, point] : sync_points_) {
+        if (!point.whole_federation) continue;
+        point.members.insert(h);
+        outbox_.send(h, wire::AnnounceSyncPoint{label, point.tag});
+    }
+}
+
+void Federation::resign(FederateHandle h, wire::ResignAction action) {
+    using wire::ResignAction;
+    if (action < ResignAction::ReleaseAttributes || action > ResignAction::NoAction)
+        throw RtiError(ErrorCode::InvalidResignAction, "unknown resign action " + std::to_string(int(action)));
+    const bool deletes = action == ResignAction::DeleteObjects || action == ResignAction::DeleteObjectsAndReleaseAttributes;
+    const bool releases =
+        action == ResignAction::ReleaseAttributes || action == ResignAction::DeleteObjectsAndReleaseAttributes;
+
+    // HLA 1.3 §4.5: the federate may not leave attributes owned behind unless the action disposes of them.
+    if (!releases) {
+        for (const auto& [oh, obj] : objects_) {
+            if (deletes && obj.privilege_holder == h) continue;
+            for (const auto& [attr, owner] : obj.owners) {
+                if (owner == h)
+                    throw RtiError(ErrorCode::FederateOwnsAttributes,
+                                   "federate owns attributes of object '" + obj.name + "'; resign with an action "
+                                   "that deletes objects or releases attributes");
+            }
+        }
+    }
+    if (deletes) {
+        std::vector<ObjectHandle> doomed;
+        for (const auto& [oh, obj] : objects_)
+            if (obj.privilege_holder == h) doomed.push_back(oh);
+        for (ObjectHandle oh : doomed) remove_object(oh, h, "", std::nullopt, 0);
+    }
+    for (auto& [oh, obj] : objects_) {
+        if (obj.privilege_holder == h) obj.privilege_holder = 0;
+        for (auto it = obj.owners.begin(); it != obj.owners.end();) {
+            it = it->second == h ? obj.owners.erase(it) : std::next(it);
+        }
+    }
+    federates_.erase(h);
+    std::vector<std::string> labels;
+    for (auto& [label, point] : sync_points_) {
+        point.members.erase(h);
+        point.achieved.erase(h);
+        labels.push_back(label);
+    }
+    for (const auto& label : labels) check_sync_point(label);
+    update_advisories();
+}
+
+std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle h, fom::Handle cls_handle,
+                                                                 const std::string& requested_name) {
+    const auto& cls = object_class(cls_handle);
+    auto& f = federate(h);
+    auto pub = f.published.find(cls_handle);
+    if (pub == f.published.end())
+        throw RtiError(ErrorCode::ObjectClassNotPublished, "object class '" + cls.qualified_name + "' is not published");
+    std::string name = requested_name;
+    const ObjectHandle oh = next_object_;
+    if (name.empty()) {
+        name = "HLAobject_" + std::to_string(oh);
+        for (int suffix = 1; object_names_.count(name); ++suffix)
+            name = "HLAobject_" + std::to_string(oh) + "_" + std::to_string(suffix);
+    } else if (object_names_.count(name)) {
+        throw RtiError(ErrorCode::ObjectAlreadyRegistered, "an object named '" + name + "' already exists");
+    }
+    ++next_object_;
+    ObjectInstance& obj = objects_[oh];
+    obj.object_class = cls_handle;
+    obj.name = name;
+    obj.privilege_holder = h;
+    for (fom::Handle attr : pub->second) obj.owners[attr] = h;
+    object_names_[name] = oh;
+    f.known.insert(oh);
+    for (auto& [gh, g] : federates_) {
+        if (gh != h && known_class(g, cls_handle) != 0) discover(gh, g, oh, obj);
+    }
+    return {oh, name};
+}
+
+void Federation::handle(FederateHandle from, const wire::Message& message) {
+    std::visit([&](const auto& m) { on(from, m); }, message);
+}
+
+template <class M>
+void Federation::on(FederateHandle, const M&) {
+    if constexpr (std::is_same_v<M, std::monostate>) {
+        throw WireError("empty message");
+    } else {
+        throw WireError(std::string(wire::message_name(M::kType)) + " is not a federation service message");
+    }
+}
+
+// ---- lookups ----
+
+Federation::FederateState& Federation::federate(FederateHandle h) {
+    auto it = federates_.find(h);
+    if (it == federates_.end()) throw RtiError(ErrorCode::FederateNotExecutionMember, "federate is not joined");
+    return it->second;
+}
+
+const fom::ObjectClass& Federation::object_class(fom::Handle h) const {
+    const auto* cls = fom_.object_class(h);
+    if (!cls) throw WireError("object class handle " + std::to_string(h) + " is not defined in the FOM");
+    return *cls;
+}
+
+const fom::InteractionClass& Federation::interaction_class(fom::Handle h) const {
+    const auto* cls = fom_.interaction_class(h);
+    if (!cls) throw WireError("interaction class handle " + std::to_string(h) + " is not defined in the FOM");
+    return *cls;
+}
+
+void Federation::check_attributes(const fom::ObjectClass& cls, const wire::Handles& attributes) const {
+    for (auto a : attributes) {
+        if (!cls.attribute(a))
+            throw WireError("attribute handle " + std::to_string(a) + " is not defined for class '" +
+                            cls.qualified_name + "'");
+    }
+}
+
+fom::Handle Federation::known_class(const FederateState& f, fom::Handle cls) const {
+    for (fom::Handle c = cls; c != 0; c = fom_.object_class(c)->parent) {
+        if (f.subscribed.count(c)) return c;
+    }
+    return 0;
+}
+
+fom::Handle Federation::receiving_interaction_class(const FederateState& f, fom::Handle cls) const {
+    for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent) {
+        if (f.subscribed_interactions.count(c)) return c;
+    }
+    return 0;
+}
+
+void Federation::discover(FederateHandle to, FederateState& f, ObjectHandle oh, const ObjectInstance& obj) {
+    f.known.insert(oh);
+    outbox_.send(to, wire::DiscoverObject{oh, known_class(f, obj.object_class), obj.name});
+}
+
+void Federation::discover_all_for(FederateHandle h) {
+    auto& f = federates_.at(h);
+    for (const auto& [oh, obj] : objects_) {
+        if (!f.known.count(oh) && known_class(f, obj.object_class) != 0) discover(h, f, oh, obj);
+    }
+}
+
+void Federation::remove_object(ObjectHandle oh, FederateHandle by, const std::string& tag,
+                               const wire::OptionalTime& time, std::uint64_t serial) {
+    auto it = objects_.find(oh);
+    if (it == objects_.end()) return;
+    for (auto& [gh, g] : federates_) {
+        if (g.known.erase(oh) && gh != by) outbox_.send(gh, wire::RemoveObject{oh, tag, time, by, serial});
+    }
+    object_names_.erase(it->second.name);
+    objects_.erase(it);
+}
+
+// Start/stop registration and turn interactions on/off follow real subscriber changes (HLA 1.3 §5.10-5.13):
+// a published class is relevant when another federate would discover (receive) its instances (interactions).
+void Federation::update_advisories() {
+    for (auto& [ph, p] : federates_) {
+        std::set<fom::Handle> relevant;
+        for (const auto& [cls, attrs] : p.published) {
+            for (const auto& [gh, g] : federates_) {
+                if (gh != ph && known_class(g, cls) != 0) {
+                    relevant.insert(cls);
+                    break;
+                }
+            }
+        }
+        if (p.class_relevance) {
+            for (fom::Handle cls : relevant)
+                if (!p.registration_started.count(cls)) outbox_.send(ph, wire::StartRegistration{cls});
+            for (fom::Handle cls : p.registration_started)
+                if (!relevant.count(cls) && p.published.count(cls)) outbox_.send(ph, wire::StopRegistration{cls});
+            p.registration_started = std::move(relevant);
+        }
+
+        std::set<fom::Handle> wanted;
+        for (fom::Handle ic : p.published_interactions) {
+            for (const auto& [gh, g] : federates_) {
+                if (gh != ph && receiving_interaction_class(g, ic) != 0) {
+                    wanted.insert(ic);
+                    break;
+                }
+            }
+        }
+        if (p.interaction_relevance) {
+            for (fom::Handle ic : wanted)
+                if (!p.interactions_turned_on.count(ic)) outbox_.send(ph, wire::TurnInteractionsOn{ic});
+            for (fom::Handle ic : p.interactions_turned_on)
+                if (!wanted.count(ic) && p.published_interactions.count(ic))
+                    outbox_.send(ph, wire::TurnInteractionsOff{ic});
+            p.interactions_turned_on = std::move(wanted);
+        }
+    }
+}
+
+// ---- synchronization points (HLA 1.3 §4.6-4.10) ----
+
+void Federation::on(FederateHandle from, const wire::RegisterSyncPoint& m) {
+    federate(from);
+    if (sync_points_.count(m.label)) {
+        outbox_.send(from, wire::SyncPointRegistrationFailed{m.label});
+        return;
+    }
+    SyncPoint point;
+    point.tag = m.tag;
+    point.whole_federation = m.whole_federation;
+    if (m.whole_federation) {
+        for (const auto& [h, f] : federates_) point.members.insert(h);
+    } else {
+        for (auto h : m.federates) {
+            if (!federates_.count(h)) {
+                outbox_.send(from, wire::SyncPointRegistrationFailed{m.label});
+                return;
+            }
+            point.members.insert(h);
+        }
+    }
+    outbox_.send(from, wire::SyncPointRegistrationSucceeded{m.label});
+    for (auto h : point.members) outbox_.send(h, wire::AnnounceSyncPoint{m.label, m.tag});
+    sync_points_.emplace(m.label, std::move(point));
+    check_sync_point(m.label);  // an explicit empty set is synchronized at once
+}
+
+void Federation::on(FederateHandle from, const wire::SyncPointAchieved& m) {
+    federate(from);
+    auto it = sync_points_.find(m.label);
+    if (it == sync_points_.end() || !it->second.members.count(from)) return;
+    it->second.achieved.insert(from);
+    check_sync_point(m.label);
+}
+
+void Federation::check_sync_point(const std::string& label) {
+    auto it = sync_points_.find(label);
+    if (it == sync_points_.end() || it->second.achieved.size() < it->second.members.size()) return;
+    const SyncPoint point = std::move(it->second);
+    sync_points_.erase(it);
+    for (auto h : point.members) outbox_.send(h, wire::FederationSynchronized{label});
+}
+
+// ---- declaration management (HLA 1.3 §5) ----
+
+void Federation::on(FederateHandle from, const wire::PublishObjectClass& m) {
+    auto& f = federate(from);
+    check_attributes(object_class(m.object_class), m.attributes);
+    if (m.attributes.empty()) {
+        f.published.erase(m.object_class);
+    } else {
+        f.published[m.object_class] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
+    }
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnpublishObjectClass& m) {
+    object_class(m.object_class);
+    federate(from).published.erase(m.object_class);
+    federate(from).registration_started.erase(m.object_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::SubscribeObjectClass& m) {
+    auto& f = federate(from);
+    check_attributes(object_class(m.object_class), m.attributes);
+    if (m.attributes.empty()) {
+        f.subscribed.erase(m.object_class);
+    } else {
+        f.subscribed[m.object_class] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
+        discover_all_for(from);
+    }
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnsubscribeObjectClass& m) {
+    object_class(m.object_class);
+    federate(from).subscribed.erase(m.object_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::PublishInteractionClass& m) {
+    interaction_class(m.interaction_class);
+    federate(from).published_interactions.insert(m.interaction_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnpublishInteractionClass& m) {
+    interaction_class(m.interaction_class);
+    federate(from).published_interactions.erase(m.interaction_class);
+    federate(from).interactions_turned_on.erase(m.interaction_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::SubscribeInteractionClass& m) {
+    interaction_class(m.interaction_class);
+    federate(from).subscribed_interactions.insert(m.interaction_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClass& m) {
+    interaction_class(m.interaction_class);
+    federate(from).subscribed_interactions.erase(m.interaction_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::SetAdvisorySwitch& m) {
+    auto& f = federate(from);
+    switch (static_cast<wire::AdvisorySwitch>(m.which)) {
+        case wire::AdvisorySwitch::ClassRelevance:
+            f.class_relevance = m.on;
+            if (!m.on) f.registration_started.clear();
+            break;
+        case wire::AdvisorySwitch::InteractionRelevance:
+            f.interaction_relevance = m.on;
+            if (!m.on) f.interactions_turned_on.clear();
+            break;
+        case wire::AdvisorySwitch::AttributeRelevance: f.attribute_relevance = m.on; break;
+        case wire::AdvisorySwitch::AttributeScope: f.attribute_scope = m.on; break;
+        default: throw WireError("unknown advisory switch " + std::to_string(m.which));
+    }
+    update_advisories();
+}
+
+// ---- object management (HLA 1.3 §6) ----
+
+void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
+    federate(from);
+    auto it = objects_.find(m.object);
+    if (it == objects_.end()) return;  // deleted meanwhile
+    const ObjectInstance& obj = it->second;
+    const auto& cls = object_class(obj.object_class);
+    for (const auto& [attr, value] : m.values) {
+        if (!cls.attribute(attr))
+            throw WireError("attribute handle " + std::to_string(attr) + " is not defined for class '" +
+                            cls.qualified_name + "'");
+    }
+    wire::ReflectAttributes reflect;
+    reflect.object = m.object;
+    reflect.tag = m.tag;
+    reflect.sender = from;
+    reflect.serial = m.serial;
+    // Without time management every delivery is receive order (HLA 1.3 §8.1.1: TSO needs a regulating sender).
+    reflect.order = static_cast<std::uint8_t>(fom::Order::Receive);
+    for (auto& [gh, g] : federates_) {
+        if (gh == from) continue;
+        const fom::Handle known = known_class(g, obj.object_class);
+        if (known == 0) continue;
+        if (!g.known.count(m.object)) discover(gh, g, m.object, obj);
+        const auto& wanted = g.subscribed.at(known);
+        reflect.values.clear();
+        for (const auto& pair : m.values)
+            if (wanted.count(pair.first)) reflect.values.push_back(pair);
+        if (reflect.values.empty()) continue;
+        reflect.transport = static_cast<std::uint8_t>(cls.attribute(reflect.values.front().first)->transport);
+        outbox_.send(gh, reflect);
+    }
+}
+
+void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
+    federate(from);
+    const auto& sent_class = interaction_class(m.interaction_class);
+    for (const auto& [param, value] : m.values) {
+        if (!sent_class.parameter(param))
+            throw WireError("parameter handle " + std::to_string(param) + " is not defined for interaction '" +
+                            sent_class.qualified_name + "'");
+    }
+    wire::ReceiveInteraction receive;
+    receive.tag = m.tag;
+    receive.sender = from;
+    receive.serial = m.serial;
+    receive.order = static_cast<std::uint8_t>(fom::Order::Receive);
+    receive.transport = static_cast<std::uint8_t>(sent_class.transport);
+    for (auto& [gh, g] : federates_) {
+        if (gh == from) continue;
+        const fom::Handle as = receiving_interaction_class(g, m.interaction_class);
+        if (as == 0) continue;
+        // Received as the subscribed superclass: only the parameters that class defines.
+        const auto* received_class = fom_.interaction_class(as);
+        receive.interaction_class = as;
+        receive.values.clear();
+        for (const auto& pair : m.values)
+            if (received_class->parameter(pair.first)) receive.values.push_back(pair);
+        outbox_.send(gh, receive);
+    }
+}
+
+void Federation::on(FederateHandle from, const wire::DeleteObject& m) {
+    federate(from);
+    auto it = objects_.find(m.object);
+    if (it == objects_.end() || it->second.privilege_holder != from) return;  // checked by the client
+    remove_object(m.object, from, m.tag, std::nullopt, m.serial);
+}
+
+void Federation::on(FederateHandle from, const wire::LocalDeleteObject& m) {
+    federate(from).known.erase(m.object);
+}
+
+void Federation::on(FederateHandle from, const wire::RequestObjectUpdate& m) {
+    federate(from);
+    auto it = objects_.find(m.object);
+    if (it == objects_.end()) return;
+    check_attributes(object_class(it->second.object_class), m.attributes);
+    std::map<FederateHandle, wire::Handles> by_owner;
+    for (auto attr : m.attributes) {
+        auto owner = it->second.owners.find(attr);
+        if (owner != it->second.owners.end() && owner->second != from) by_owner[owner->second].push_back(attr);
+    }
+    for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{m.object, attrs});
+}
+
+void Federation::on(FederateHandle from, const wire::RequestClassUpdate& m) {
+    federate(from);
+    check_attributes(object_class(m.object_class), m.attributes);
+    for (const auto& [oh, obj] : objects_) {
+        if (!fom_.is_object_subclass(obj.object_class, m.object_class)) continue;
+        std::map<FederateHandle, wire::Handles> by_owner;
+        for (auto attr : m.attributes) {
+            auto owner = obj.owners.find(attr);
+            if (owner != obj.owners.end() && owner->second != from) by_owner[owner->second].push_back(attr);
+        }
+        for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{oh, attrs});
+    }
+}
+
+}  // namespace hlacore

@@ -1,0 +1,136 @@
+// One federation execution as the gateway sees it: joined federates, their declarations, object
+// instances and their owners, synchronization points. Pure state, no I/O: messages for federates are
+// encoded into buffers handed out by an Outbox.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "fed_parser/fom.hpp"
+#include "rti/exceptions.hpp"
+#include "rti/wire/codec.hpp"
+
+namespace hlacore {
+
+using FederateHandle = std::uint32_t;
+using ObjectHandle = std::uint32_t;
+
+// Where a federation writes the frames it sends: the output buffer of a federate's connection.
+class Outbox {
+public:
+    virtual ~Outbox() = default;
+    virtual std::string& buffer(FederateHandle federate) = 0;
+
+    template <class M>
+    void send(FederateHandle federate, const M& message) {
+        wire::encode(buffer(federate), message);
+    }
+};
+
+class Federation {
+public:
+    Federation(std::string name, fom::Fom fom, std::string fed_name, std::string fed_text, Outbox& outbox);
+
+    const std::string& name() const { return name_; }
+    const fom::Fom& fom() const { return fom_; }
+    const std::string& fed_name() const { return fed_name_; }
+    const std::string& fed_text() const { return fed_text_; }
+    bool has_federates() const { return !federates_.empty(); }
+    std::size_t federate_count() const { return federates_.size(); }
+
+    // Federation management. join throws FederateAlreadyExecutionMember for a name in use; resign throws
+    // FederateOwnsAttributes when the action would leave attributes owned by a departed federate.
+    FederateHandle join(const std::string& federate_name);
+    // Sends a new federate what it must hear first (announcements of pending synchronization points).
+    void announce_pending(FederateHandle federate);
+    void resign(FederateHandle federate, wire::ResignAction action);
+
+    // Returns (object handle, object name). Throws ObjectAlreadyRegistered for a name in use.
+    std::pair<ObjectHandle, std::string> register_object(FederateHandle federate, fom::Handle object_class,
+                                                         const std::string& name);
+
+    // Everything else a federate sends once joined. Handles are checked against the FOM (a bad one is a
+    // protocol violation: wire::WireError); objects that vanished meanwhile are ignored.
+    void handle(FederateHandle from, const wire::Message& message);
+
+private:
+    struct FederateState {
+        std::string name;
+        std::map<fom::Handle, std::set<fom::Handle>> published;   // object class -> attributes
+        std::map<fom::Handle, std::set<fom::Handle>> subscribed;  // object class -> attributes
+        std::set<fom::Handle> published_interactions;
+        std::set<fom::Handle> subscribed_interactions;
+        std::set<ObjectHandle> known;                  // registered or discovered, not locally deleted
+        std::set<fom::Handle> registration_started;    // classes told startRegistrationForObjectClass
+        std::set<fom::Handle> interactions_turned_on;  // classes told turnInteractionsOn
+        bool class_relevance = true;                   // HLA 1.3 advisory switch defaults
+        bool interaction_relevance = true;
+        bool attribute_relevance = false;
+        bool attribute_scope = false;
+    };
+    struct ObjectInstance {
+        fom::Handle object_class = 0;
+        std::string name;
+        FederateHandle privilege_holder = 0;           // may delete it; 0 once released
+        std::map<fom::Handle, FederateHandle> owners;  // attribute -> owner, absent = unowned
+    };
+    struct SyncPoint {
+        std::string tag;
+        bool whole_federation = true;
+        std::set<FederateHandle> members;
+        std::set<FederateHandle> achieved;
+    };
+
+    FederateState& federate(FederateHandle h);
+    const fom::ObjectClass& object_class(fom::Handle h) const;
+    const fom::InteractionClass& interaction_class(fom::Handle h) const;
+    void check_attributes(const fom::ObjectClass& cls, const wire::Handles& attributes) const;
+
+    // The class a federate knows instances of `cls` as: the nearest (self included) subscribed class, or 0.
+    fom::Handle known_class(const FederateState& f, fom::Handle cls) const;
+    fom::Handle receiving_interaction_class(const FederateState& f, fom::Handle cls) const;
+    void discover(FederateHandle to, FederateState& f, ObjectHandle object, const ObjectInstance& instance);
+    void discover_all_for(FederateHandle to);
+    void remove_object(ObjectHandle object, FederateHandle by, const std::string& tag, const wire::OptionalTime& time,
+                       std::uint64_t serial);
+    void update_advisories();
+    void check_sync_point(const std::string& label);
+
+    void on(FederateHandle from, const wire::RegisterSyncPoint& m);
+    void on(FederateHandle from, const wire::SyncPointAchieved& m);
+    void on(FederateHandle from, const wire::PublishObjectClass& m);
+    void on(FederateHandle from, const wire::UnpublishObjectClass& m);
+    void on(FederateHandle from, const wire::SubscribeObjectClass& m);
+    void on(FederateHandle from, const wire::UnsubscribeObjectClass& m);
+    void on(FederateHandle from, const wire::PublishInteractionClass& m);
+    void on(FederateHandle from, const wire::UnpublishInteractionClass& m);
+    void on(FederateHandle from, const wire::SubscribeInteractionClass& m);
+    void on(FederateHandle from, const wire::UnsubscribeInteractionClass& m);
+    void on(FederateHandle from, const wire::UpdateAttributes& m);
+    void on(FederateHandle from, const wire::SendInteraction& m);
+    void on(FederateHandle from, const wire::DeleteObject& m);
+    void on(FederateHandle from, const wire::LocalDeleteObject& m);
+    void on(FederateHandle from, const wire::RequestObjectUpdate& m);
+    void on(FederateHandle from, const wire::RequestClassUpdate& m);
+    void on(FederateHandle from, const wire::SetAdvisorySwitch& m);
+    template <class M>
+    void on(FederateHandle from, const M& m);  // anything else: protocol violation
+
+    std::string name_;
+    fom::Fom fom_;
+    std::string fed_name_;
+    std::string fed_text_;
+    Outbox& outbox_;
+    FederateHandle next_federate_ = 1;
+    ObjectHandle next_object_ = 1;
+    std::map<FederateHandle, FederateState> federates_;
+    std::map<ObjectHandle, ObjectInstance> objects_;
+    std::unordered_map<std::string, ObjectHandle> object_names_;
+    std::map<std::string, SyncPoint> sync_points_;
+};
+
+}  // namespace hlacore

@@ -1,0 +1,481 @@
+#include "rti/gateway.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/eventfd.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace hlacore {
+
+using Clock = std::chrono::steady_clock;
+
+struct Gateway::Connection {
+    int fd = -1;
+    std::string peer;
+    std::string in;
+    std::size_t in_offset = 0;
+    std::string out;
+    std::size_t out_offset = 0;
+    bool greeted = false;
+    bool write_armed = false;
+    bool dirty = false;
+    FederationEntry* federation = nullptr;
+    FederateHandle federate = 0;
+    Clock::time_point partial_since{};
+};
+
+class Gateway::ConnectionOutbox : public Outbox {
+public:
+    explicit ConnectionOutbox(Gateway& gateway) : gateway_(gateway) {}
+    std::string& buffer(FederateHandle federate) override {
+        auto it = peers_.find(federate);
+        if (it == peers_.end()) return discard_;  // not reachable: federates are bound before use
+        gateway_.mark_dirty(*it->second);
+        return it->second->out;
+    }
+    std::unordered_map<FederateHandle, Connection*> peers_;
+
+private:
+    Gateway& gateway_;
+    std::string discard_;
+};
+
+struct Gateway::FederationEntry {
+    FederationEntry(Gateway& gw, std::string name, fom::Fom fom, std::string fed_name, std::string fed_text)
+        : outbox(gw), federation(std::move(name), std::move(fom), std::move(fed_name), std::move(fed_text), outbox) {}
+    ConnectionOutbox outbox;
+    Federation federation;
+};
+
+namespace {
+
+[[noreturn]] void fail(const std::string& what) {
+    throw std::runtime_error(what + ": " + std::strerror(errno));
+}
+
+std::string describe_peer(const sockaddr_storage& addr) {
+    char host[INET6_ADDRSTRLEN] = "?";
+    unsigned port = 0;
+    if (addr.ss_family == AF_INET) {
+        const auto* a = reinterpret_cast<const sockaddr_in*>(&addr);
+        inet_ntop(AF_INET, &a->sin_addr, host, sizeof host);
+        port = ntohs(a->sin_port);
+    } else if (addr.ss_family == AF_INET6) {
+        const auto* a = reinterpret_cast<const sockaddr_in6*>(&addr);
+        inet_ntop(AF_INET6, &a->sin6_addr, host, sizeof host);
+        port = ntohs(a->sin6_port);
+    }
+    return std::string(host) + ":" + std::to_string(port);
+}
+
+bool read_file(const std::string& path, std::string& text) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream s;
+    s << in.rdbuf();
+    text = s.str();
+    return true;
+}
+
+}  // namespace
+
+Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
+    addrinfo hints{};
+    hints.ai_family = AF_UNSPEC;
+    hints.ai_socktype = SOCK_STREAM;
+    hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
+    addrinfo* found = nullptr;
+    const std::string port = std::to_string(options_.port);
+    if (int rc = getaddrinfo(options_.host.c_str(), port.c_str(), &hints, &found); rc != 0)
+        throw std::runtime_error("cannot resolve " + options_.host + ": " + gai_strerror(rc));
+    std::unique_ptr<addrinfo, decltype(&freeaddrinfo)> guard(found, freeaddrinfo);
+
+    listen_fd_ = socket(found->ai_family, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    if (listen_fd_ < 0) fail("socket");
+    int one = 1;
+    setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+    if (bind(listen_fd_, found->ai_addr, found->ai_addrlen) < 0) {
+        ::close(listen_fd_);
+        fail("cannot listen on " + options_.host + ":" + port);
+    }
+    if (listen(listen_fd_, 128) < 0) fail("listen");
+    sockaddr_storage bound{};
+    socklen_t len = sizeof bound;
+    getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&bound), &len);
+    port_ = bound.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&bound)->sin6_port)
+                                        : ntohs(reinterpret_cast<sockaddr_in*>(&bound)->sin_port);
+
+    wake_fd_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+    if (wake_fd_ < 0) fail("eventfd");
+    loop_.add(listen_fd_, EPOLLIN);
+    loop_.add(wake_fd_, EPOLLIN);
+}
+
+Gateway::~Gateway() {
+    for (auto& [fd, c] : connections_) ::close(fd);
+    if (listen_fd_ >= 0) ::close(listen_fd_);
+    if (wake_fd_ >= 0) ::close(wake_fd_);
+}
+
+void Gateway::stop() {
+    const std::uint64_t one = 1;
+    [[maybe_unused]] auto n = ::write(wake_fd_, &one, sizeof one);
+}
+
+void Gateway::run() {
+    for (;;) {
+        bool partial_pending = false;
+        for (const auto& [fd, c] : connections_) partial_pending |= c->in.size() > c->in_offset;
+        const auto& events = loop_.wait(partial_pending ? 250 : -1);
+        for (const epoll_event& ev : events) {
+            const int fd = ev.data.fd;
+            if (fd == wake_fd_) {
+                std::uint64_t v;
+                [[maybe_unused]] auto n = ::read(wake_fd_, &v, sizeof v);
+                flush_dirty();
+                return;
+            }
+            if (fd == listen_fd_) {
+                accept_all();
+                continue;
+            }
+            auto it = connections_.find(fd);
+            if (it == connections_.end()) continue;
+            if (ev.events & (EPOLLIN | EPOLLHUP | EPOLLERR)) on_readable(*it->second);
+            it = connections_.find(fd);
+            if (it != connections_.end() && (ev.events & EPOLLOUT)) mark_dirty(*it->second);
+        }
+        flush_dirty();
+        if (partial_pending) drop_stale_partials();
+    }
+}
+
+void Gateway::accept_all() {
+    for (;;) {
+        sockaddr_storage addr{};
+        socklen_t len = sizeof addr;
+        int fd = accept4(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        if (fd < 0) {
+            if (errno == EINTR || errno == ECONNABORTED) continue;
+            if (errno != EAGAIN && errno != EWOULDBLOCK) log(std::string("accept failed: ") + std::strerror(errno));
+            return;
+        }
+        int one = 1;
+        setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+        auto c = std::make_unique<Connection>();
+        c->fd = fd;
+        c->peer = describe_peer(addr);
+        loop_.add(fd, EPOLLIN);
+        if (options_.verbose) log("connection from " + c->peer);
+        connections_[fd] = std::move(c);
+    }
+}
+
+void Gateway::on_readable(Connection& c) {
+    const int fd = c.fd;
+    bool peer_closed = false;
+    char chunk[65536];
+    // Bounded per turn so that one busy peer cannot starve the others.
+    for (int round = 0; round < 16; ++round) {
+        const ssize_t n = ::recv(fd, chunk, sizeof chunk, 0);
+        if (n > 0) {
+            if (c.in.size() == c.in_offset) c.partial_since = Clock::now();
+            c.in.append(chunk, static_cast<std::size_t>(n));
+            if (static_cast<std::size_t>(n) < sizeof chunk) break;
+            continue;
+        }
+        if (n == 0) {
+            peer_closed = true;
+            break;
+        }
+        if (errno == EINTR) continue;
+        if (errno == EAGAIN || errno == EWOULDBLOCK) break;
+        close(fd, std::string("read failed: ") + std::strerror(errno));
+        return;
+    }
+    try {
+        wire::Frame frame;
+        while (std::size_t used = wire::next_frame(std::string_view(c.in).substr(c.in_offset), frame)) {
+            c.in_offset += used;
+            on_frame(c, frame);
+            if (!connections_.count(fd)) return;
+            if (c.in_offset < c.in.size()) c.partial_since = Clock::now();
+        }
+    } catch (const wire::WireError& e) {
+        close(fd, std::string("protocol error: ") + e.what());
+        return;
+    }
+    const std::size_t left = c.in.size() - c.in_offset;
+    if (peer_closed) {
+        close(fd, left ? "connection closed in the middle of a frame (" + std::to_string(left) + " bytes pending)"
+                       : "connection closed by peer");
+        return;
+    }
+    if (left == 0) {
+        c.in.clear();
+        c.in_offset = 0;
+    } else if (c.in_offset > c.in.size() / 2) {
+        c.in.erase(0, c.in_offset);
+        c.in_offset = 0;
+    }
+}
+
+void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
+    wire::Message message = wire::decode(frame);
+    if (!c.greeted) {
+        const auto* hello = std::get_if<wire::Hello>(&message);
+        if (!hello || hello->magic != wire::kMagic)
+            throw wire::WireError("expected a Hello handshake, got " + std::string(wire::message_name(frame.type)));
+        if (hello->version != wire::kProtocolVersion)
+            throw wire::WireError("protocol version " + std::to_string(hello->version) + " is not supported (gateway speaks " +
+                                  std::to_string(wire::kProtocolVersion) + ")");
+        c.greeted = true;
+        wire::encode(c.out, wire::Welcome{wire::kProtocolVersion, "hlacore rtig"});
+        mark_dirty(c);
+        return;
+    }
+    on_request(c, message);
+}
+
+void Gateway::reply(Connection& c, wire::Reply r) {
+    wire::encode(c.out, r);
+    mark_dirty(c);
+}
+
+void Gateway::on_request(Connection& c, const wire::Message& message) {
+    auto error_reply = [&](std::uint32_t request, const RtiError& e) {
+        wire::Reply r;
+        r.request = request;
+        r.error = static_cast<std::uint16_t>(e.code());
+        r.message = e.what();
+        reply(c, std::move(r));
+    };
+
+    if (const auto* m = std::get_if<wire::CreateFederation>(&message)) {
+        try {
+            if (federations_.count(m->federation))
+                throw RtiError(ErrorCode::FederationExecutionAlreadyExists,
+                               "federation '" + m->federation + "' already exists");
+            std::string text = m->fed_text;
+            std::string source = m->fed_name;
+            if (text.empty()) {
+                source = find_fed_file(m->fed_name);
+                if (source.empty() || !read_file(source, text))
+                    throw RtiError(ErrorCode::CouldNotOpenFED, "FED file '" + m->fed_name +
+                                                                   "' was not found by the client nor in the gateway's "
+                                                                   "--fom-path");
+            }
+            fom::Fom fom;
+            try {
+                fom = fom::parse_fed(text, m->fed_name);
+            } catch (const fom::FedError& e) {
+                throw RtiError(ErrorCode::ErrorReadingFED, e.what());
+            }
+            federations_[m->federation] =
+                std::make_unique<FederationEntry>(*this, m->federation, std::move(fom), m->fed_name, std::move(text));
+            if (options_.verbose) log("created federation '" + m->federation + "' from " + source);
+            reply(c, wire::Reply{m->request, 0, "", 0, "", ""});
+        } catch (const RtiError& e) {
+            error_reply(m->request, e);
+        }
+        return;
+    }
+    if (const auto* m = std::get_if<wire::DestroyFederation>(&message)) {
+        auto it = federations_.find(m->federation);
+        if (it == federations_.end()) {
+            error_reply(m->request, RtiError(ErrorCode::FederationExecutionDoesNotExist,
+                                             "federation '" + m->federation + "' does not exist"));
+        } else if (it->second->federation.has_federates()) {
+            error_reply(m->request,
+                        RtiError(ErrorCode::FederatesCurrentlyJoined,
+                                 std::to_string(it->second->federation.federate_count()) +
+                                     " federate(s) still joined to '" + m->federation + "'"));
+        } else {
+            federations_.erase(it);
+            if (options_.verbose) log("destroyed federation '" + m->federation + "'");
+            reply(c, wire::Reply{m->request, 0, "", 0, "", ""});
+        }
+        return;
+    }
+    if (const auto* m = std::get_if<wire::JoinFederation>(&message)) {
+        try {
+            if (c.federation)
+                throw RtiError(ErrorCode::FederateAlreadyExecutionMember,
+                               "this ambassador is already joined to '" + c.federation->federation.name() + "'");
+            auto it = federations_.find(m->federation);
+            if (it == federations_.end())
+                throw RtiError(ErrorCode::FederationExecutionDoesNotExist,
+                               "federation '" + m->federation + "' does not exist");
+            FederationEntry& entry = *it->second;
+            const FederateHandle h = entry.federation.join(m->federate);
+            c.federation = &entry;
+            c.federate = h;
+            entry.outbox.peers_[h] = &c;
+            reply(c, wire::Reply{m->request, 0, "", h, entry.federation.fed_text(), entry.federation.fed_name()});
+            entry.federation.announce_pending(h);
+            if (options_.verbose) log("'" + m->federate + "' joined '" + m->federation + "' as federate " + std::to_string(h));
+        } catch (const RtiError& e) {
+            error_reply(m->request, e);
+        }
+        return;
+    }
+    if (const auto* m = std::get_if<wire::ResignFederation>(&message)) {
+        try {
+            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
+            c.federation->federation.resign(c.federate, static_cast<wire::ResignAction>(m->action));
+            c.federation->outbox.peers_.erase(c.federate);
+            c.federation = nullptr;
+            c.federate = 0;
+            reply(c, wire::Reply{m->request, 0, "", 0, "", ""});
+        } catch (const RtiError& e) {
+            error_reply(m->request, e);
+        }
+        return;
+    }
+    if (const auto* m = std::get_if<wire::RegisterObject>(&message)) {
+        try {
+            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
+            auto [handle, name] = c.federation->federation.register_object(c.federate, m->object_class, m->name);
+            reply(c, wire::Reply{m->request, 0, "", handle, name, ""});
+        } catch (const RtiError& e) {
+            error_reply(m->request, e);
+        }
+        return;
+    }
+    if (!c.federation)
+        throw wire::WireError(std::string(wire::message_name(static_cast<wire::MessageType>(message.index()))) +
+                              " sent before joining a federation");
+    try {
+        c.federation->federation.handle(c.federate, message);
+    } catch (const RtiError& e) {
+        throw wire::WireError(std::string("refused ") +
+                              wire::message_name(static_cast<wire::MessageType>(message.index())) + ": " + e.what());
+    }
+}
+
+std::string Gateway::find_fed_file(const std::string& name) const {
+    std::string text;
+    auto readable = [](const std::string& p) { return ::access(p.c_str(), R_OK) == 0; };
+    if (!name.empty() && name[0] == '/') return readable(name) ? name : "";
+    for (const auto& dir : options_.fom_path) {
+        std::string candidate = dir + "/" + name;
+        if (readable(candidate)) return candidate;
+        const auto slash = name.find_last_of('/');
+        if (slash != std::string::npos) {
+            candidate = dir + "/" + name.substr(slash + 1);
+            if (readable(candidate)) return candidate;
+        }
+    }
+    return "";
+}
+
+void Gateway::mark_dirty(Connection& c) {
+    if (!c.dirty) {
+        c.dirty = true;
+        dirty_.push_back(c.fd);
+    }
+}
+
+void Gateway::flush_dirty() {
+    // Closing a connection can dirty others (resign notices), so loop until quiet.
+    while (!dirty_.empty()) {
+        std::vector<int> batch;
+        batch.swap(dirty_);
+        for (int fd : batch) {
+            auto it = connections_.find(fd);
+            if (it == connections_.end()) continue;
+            it->second->dirty = false;
+            flush(*it->second);
+        }
+    }
+}
+
+void Gateway::flush(Connection& c) {
+    while (c.out_offset < c.out.size()) {
+        ssize_t n = ::send(c.fd, c.out.data() + c.out_offset, c.out.size() - c.out_offset, MSG_NOSIGNAL);
+        if (n > 0) {
+            c.out_offset += static_cast<std::size_t>(n);
+            continue;
+        }
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
+        close(c.fd, std::string("write failed: ") + std::strerror(errno));
+        return;
+    }
+    const std::size_t queued = c.out.size() - c.out_offset;
+    if (queued == 0) {
+        c.out.clear();
+        c.out_offset = 0;
+        if (c.write_armed) {
+            loop_.modify(c.fd, EPOLLIN);
+            c.write_armed = false;
+        }
+        return;
+    }
+    if (queued > options_.max_queued_output) {
+        close(c.fd, "peer is not reading: " + std::to_string(queued) + " bytes queued (limit " +
+                        std::to_string(options_.max_queued_output) + ")");
+        return;
+    }
+    if (c.out_offset > (1u << 20) && c.out_offset > c.out.size() / 2) {
+        c.out.erase(0, c.out_offset);
+        c.out_offset = 0;
+    }
+    if (!c.write_armed) {
+        loop_.modify(c.fd, EPOLLIN | EPOLLOUT);
+        c.write_armed = true;
+    }
+}
+
+void Gateway::drop_stale_partials() {
+    const auto now = Clock::now();
+    const auto limit = std::chrono::duration<double>(options_.partial_frame_timeout_s);
+    std::vector<int> stale;
+    for (const auto& [fd, c] : connections_) {
+        if (c->in.size() > c->in_offset && now - c->partial_since > limit) stale.push_back(fd);
+    }
+    for (int fd : stale) close(fd, "incomplete frame for too long");
+}
+
+void Gateway::close(int fd, const std::string& why) {
+    auto it = connections_.find(fd);
+    if (it == connections_.end()) return;
+    std::unique_ptr<Connection> c = std::move(it->second);
+    connections_.erase(it);
+    loop_.remove(fd);
+    ::close(fd);
+    std::string who = c->peer;
+    if (c->federation) {
+        FederationEntry& entry = *c->federation;
+        who += " (federate " + std::to_string(c->federate) + " of '" + entry.federation.name() + "')";
+        entry.outbox.peers_.erase(c->federate);
+        try {
+            // A federate that vanishes resigns with the default action: its objects go, the rest is released.
+            entry.federation.resign(c->federate, wire::ResignAction::DeleteObjectsAndReleaseAttributes);
+        } catch (const std::exception& e) {
+            log("resigning " + who + " failed: " + e.what());
+        }
+    }
+    const bool expected = why == "connection closed by peer" && !c->federation;
+    if (!expected || options_.verbose) log("dropped " + who + ": " + why);
+}
+
+void Gateway::log(const std::string& line) const {
+    const std::string text = "rtig: " + line + "\n";
+    std::fwrite(text.data(), 1, text.size(), stderr);
+    std::fflush(stderr);
+}
+
+}  // namespace hlacore

@@ -1,0 +1,70 @@
+// The gateway: a single-threaded epoll reactor that runs federations for federates connected over TCP.
+// `rtig` is a thin main around it; Python runs the same class in a background thread.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rti/event_loop.hpp"
+#include "rti/federation.hpp"
+
+namespace hlacore {
+
+struct GatewayOptions {
+    std::string host = "127.0.0.1";
+    std::uint16_t port = 60400;  // 0: pick a free port
+    std::vector<std::string> fom_path;  // searched for FED files a client could not read itself
+    bool verbose = false;
+    double partial_frame_timeout_s = 10.0;     // a half-sent frame older than this drops the connection
+    std::size_t max_queued_output = 64u << 20;  // a client that stops reading is dropped beyond this
+};
+
+class Gateway {
+public:
+    // Binds and listens; throws std::runtime_error when the address is unusable.
+    explicit Gateway(GatewayOptions options);
+    ~Gateway();
+    Gateway(const Gateway&) = delete;
+    Gateway& operator=(const Gateway&) = delete;
+
+    const std::string& host() const { return options_.host; }
+    std::uint16_t port() const { return port_; }
+
+    // Serves until stop() is called.
+    void run();
+    // Thread-safe and async-signal-safe.
+    void stop();
+
+private:
+    struct Connection;
+    struct FederationEntry;
+    class ConnectionOutbox;
+
+    void accept_all();
+    void on_readable(Connection& c);
+    void on_frame(Connection& c, const wire::Frame& frame);
+    void on_request(Connection& c, const wire::Message& message);
+    void reply(Connection& c, wire::Reply r);
+    void close(int fd, const std::string& why);
+    void flush(Connection& c);
+    void flush_dirty();
+    void drop_stale_partials();
+    void mark_dirty(Connection& c);
+    std::string find_fed_file(const std::string& name) const;
+    void log(const std::string& line) const;
+
+    GatewayOptions options_;
+    int listen_fd_ = -1;
+    int wake_fd_ = -1;
+    std::uint16_t port_ = 0;
+    EventLoop loop_;
+    std::map<int, std::unique_ptr<Connection>> connections_;
+    std::map<std::string, std::unique_ptr<FederationEntry>> federations_;
+    std::vector<int> dirty_;
+};
+
+}  // namespace hlacore

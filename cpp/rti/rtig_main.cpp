@@ -1,0 +1,93 @@
+// rtig: the hlacore gateway as a standalone server.
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <string>
+
+#include "rti/gateway.hpp"
+
+namespace {
+
+hlacore::Gateway* g_gateway = nullptr;
+
+void on_signal(int) {
+    if (g_gateway) g_gateway->stop();
+}
+
+int usage(int status) {
+    std::fprintf(status ? stderr : stdout,
+                 "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--verbose]\n"
+                 "  --host HOST        address to listen on (default 127.0.0.1)\n"
+                 "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
+                 "  --fom-path DIR     where to look for FED files a federate could not read itself\n"
+                 "  --frame-timeout S  drop a client whose frame stays incomplete S seconds (default 10)\n"
+                 "  --verbose          log connections, joins and federations to stderr\n");
+    return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    hlacore::GatewayOptions options;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto value = [&](const char* name) -> const char* {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "rtig: %s needs a value\n", name);
+                std::exit(usage(2));
+            }
+            return argv[++i];
+        };
+        if (arg == "--host") {
+            options.host = value("--host");
+        } else if (arg == "--port") {
+            const char* text = value("--port");
+            char* end = nullptr;
+            const long port = std::strtol(text, &end, 10);
+            if (*text == '\0' || *end != '\0' || port < 0 || port > 65535) {
+                std::fprintf(stderr, "rtig: invalid port '%s'\n", text);
+                return usage(2);
+            }
+            options.port = static_cast<std::uint16_t>(port);
+        } else if (arg == "--fom-path") {
+            options.fom_path.emplace_back(value("--fom-path"));
+        } else if (arg == "--frame-timeout") {
+            const char* text = value("--frame-timeout");
+            char* end = nullptr;
+            const double seconds = std::strtod(text, &end);
+            if (*text == '\0' || *end != '\0' || !(seconds > 0)) {
+                std::fprintf(stderr, "rtig: invalid --frame-timeout '%s'\n", text);
+                return usage(2);
+            }
+            options.partial_frame_timeout_s = seconds;
+        } else if (arg == "--verbose" || arg == "-v") {
+            options.verbose = true;
+        } else if (arg == "--help" || arg == "-h") {
+            return usage(0);
+        } else {
+            std::fprintf(stderr, "rtig: unknown argument '%s'\n", arg.c_str());
+            return usage(2);
+        }
+    }
+    try {
+        hlacore::Gateway gateway(options);
+        g_gateway = &gateway;
+        struct sigaction sa {};
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, nullptr);
+        sigaction(SIGTERM, &sa, nullptr);
+        std::signal(SIGPIPE, SIG_IGN);
+        std::printf("rtig listening on %s:%u\n", gateway.host().c_str(), static_cast<unsigned>(gateway.port()));
+        std::fflush(stdout);
+        gateway.run();
+        g_gateway = nullptr;
+        std::fprintf(stderr, "rtig: stopped\n");
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "rtig: %s\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,64 @@
+#include "rti/wire/codec.hpp"
+
+namespace hlacore::wire {
+
+const char* message_name(MessageType type) {
+    switch (type) {
+#define HLACORE_X(name) \
+    case MessageType::name: return #name;
+        HLACORE_MESSAGES(HLACORE_X)
+#undef HLACORE_X
+        default: return "unknown";
+    }
+}
+
+void Reader::fail(const char* what) const {
+    throw WireError(std::string(what) + " in " + message_name(type_) + " message");
+}
+
+void encode(std::string& out, const Message& m) {
+    std::visit(
+        [&out](const auto& msg) {
+            if constexpr (!std::is_same_v<std::decay_t<decltype(msg)>, std::monostate>) encode(out, msg);
+        },
+        m);
+}
+
+std::size_t next_frame(std::string_view buffer, Frame& frame) {
+    if (buffer.size() < kHeaderBytes) return 0;
+    std::uint32_t length = 0;
+    std::uint16_t type = 0;
+    std::memcpy(&length, buffer.data(), 4);
+    std::memcpy(&type, buffer.data() + 4, 2);
+    if (length < 2) throw WireError("frame length " + std::to_string(length) + " is shorter than its type field");
+    if (length > kMaxFrameBytes)
+        throw WireError("frame length " + std::to_string(length) + " exceeds the limit of " +
+                        std::to_string(kMaxFrameBytes) + " bytes");
+    if (buffer.size() < 4 + static_cast<std::size_t>(length)) return 0;
+    frame.type = static_cast<MessageType>(type);
+    frame.payload = buffer.substr(kHeaderBytes, length - 2);
+    return 4 + static_cast<std::size_t>(length);
+}
+
+namespace {
+template <class M>
+Message decode_as(const Frame& frame) {
+    M m;
+    Reader r(frame.payload, frame.type);
+    m.fields(r);
+    if (r.remaining() != 0) r.fail("trailing bytes");
+    return m;
+}
+}  // namespace
+
+Message decode(const Frame& frame) {
+    switch (frame.type) {
+#define HLACORE_X(name) \
+    case MessageType::name: return decode_as<name>(frame);
+        HLACORE_MESSAGES(HLACORE_X)
+#undef HLACORE_X
+        default: throw WireError("unknown message type " + std::to_string(static_cast<unsigned>(frame.type)));
+    }
+}
+
+}  // namespace hlacore::wire

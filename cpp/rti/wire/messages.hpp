@@ -1,0 +1,361 @@
+// Every message exchanged between a federate and the gateway, declared once.
+//
+// A frame on the socket is: u32 length (little-endian, counts what follows), u16 message type, payload.
+// The payload is the message's fields in declaration order (see codec.hpp for the encoding of each type).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace hlacore::wire {
+
+constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
+constexpr std::uint16_t kProtocolVersion = 1;
+constexpr std::uint32_t kMaxFrameBytes = 64u << 20;  // larger frames are a protocol error
+
+using Handles = std::vector<std::uint32_t>;
+using HandleValues = std::vector<std::pair<std::uint32_t, std::string>>;
+using OptionalTime = std::optional<double>;
+
+// The list that fixes each message's wire code (its position, from 1). Append only.
+#define HLACORE_MESSAGES(X)          \
+    /* handshake */                  \
+    X(Hello)                         \
+    X(Welcome)                       \
+    /* federate -> gateway */        \
+    X(CreateFederation)              \
+    X(DestroyFederation)             \
+    X(JoinFederation)                \
+    X(ResignFederation)              \
+    X(RegisterSyncPoint)             \
+    X(SyncPointAchieved)             \
+    X(PublishObjectClass)            \
+    X(UnpublishObjectClass)          \
+    X(SubscribeObjectClass)          \
+    X(UnsubscribeObjectClass)        \
+    X(PublishInteractionClass)       \
+    X(UnpublishInteractionClass)     \
+    X(SubscribeInteractionClass)     \
+    X(UnsubscribeInteractionClass)   \
+    X(RegisterObject)                \
+    X(UpdateAttributes)              \
+    X(SendInteraction)               \
+    X(DeleteObject)                  \
+    X(LocalDeleteObject)             \
+    X(RequestObjectUpdate)           \
+    X(RequestClassUpdate)            \
+    X(SetAdvisorySwitch)             \
+    /* gateway -> federate */        \
+    X(Reply)                         \
+    X(SyncPointRegistrationSucceeded) \
+    X(SyncPointRegistrationFailed)   \
+    X(AnnounceSyncPoint)             \
+    X(FederationSynchronized)        \
+    X(StartRegistration)             \
+    X(StopRegistration)              \
+    X(TurnInteractionsOn)            \
+    X(TurnInteractionsOff)           \
+    X(DiscoverObject)                \
+    X(ReflectAttributes)             \
+    X(ReceiveInteraction)            \
+    X(RemoveObject)                  \
+    X(ProvideAttributeValueUpdate)
+
+enum class MessageType : std::uint16_t {
+    Invalid = 0,
+#define HLACORE_X(name) name,
+    HLACORE_MESSAGES(HLACORE_X)
+#undef HLACORE_X
+    Count
+};
+
+const char* message_name(MessageType type);
+
+// Declares the fields in wire order, for the codec to visit (const and mutable).
+#define HLACORE_FIELDS(...)                                  \
+    template <class F>                                       \
+    void fields(F&& f) { f(__VA_ARGS__); }                   \
+    template <class F>                                       \
+    void fields(F&& f) const { f(__VA_ARGS__); }
+#define HLACORE_NO_FIELDS()              \
+    template <class F>                   \
+    void fields(F&&) {}                  \
+    template <class F>                   \
+    void fields(F&&) const {}
+#define HLACORE_TYPE(name) static constexpr MessageType kType = MessageType::name;
+
+// Resign actions, with PyHLA's values.
+enum class ResignAction : std::uint8_t {
+    ReleaseAttributes = 1,
+    DeleteObjects = 2,
+    DeleteObjectsAndReleaseAttributes = 3,
+    NoAction = 4,
+};
+
+enum class AdvisorySwitch : std::uint8_t { ClassRelevance = 1, AttributeRelevance, AttributeScope, InteractionRelevance };
+
+// ---- handshake ----
+struct Hello {
+    HLACORE_TYPE(Hello)
+    std::uint32_t magic = kMagic;
+    std::uint16_t version = kProtocolVersion;
+    HLACORE_FIELDS(magic, version)
+};
+struct Welcome {
+    HLACORE_TYPE(Welcome)
+    std::uint16_t version = kProtocolVersion;
+    std::string server;
+    HLACORE_FIELDS(version, server)
+};
+
+// ---- federate -> gateway; `request` ids are echoed in the Reply ----
+struct CreateFederation {
+    HLACORE_TYPE(CreateFederation)
+    std::uint32_t request = 0;
+    std::string federation;
+    std::string fed_name;  // as given by the caller
+    std::string fed_text;  // empty: the gateway looks fed_name up in its --fom-path
+    HLACORE_FIELDS(request, federation, fed_name, fed_text)
+};
+struct DestroyFederation {
+    HLACORE_TYPE(DestroyFederation)
+    std::uint32_t request = 0;
+    std::string federation;
+    HLACORE_FIELDS(request, federation)
+};
+struct JoinFederation {
+    HLACORE_TYPE(JoinFederation)
+    std::uint32_t request = 0;
+    std::string federate;
+    std::string federation;
+    HLACORE_FIELDS(request, federate, federation)
+};
+struct ResignFederation {
+    HLACORE_TYPE(ResignFederation)
+    std::uint32_t request = 0;
+    std::uint8_t action = 0;
+    HLACORE_FIELDS(request, action)
+};
+struct RegisterSyncPoint {
+    HLACORE_TYPE(RegisterSyncPoint)
+    std::string label;
+    std::string tag;
+    bool whole_federation = true;
+    Handles federates;  // used when !whole_federation
+    HLACORE_FIELDS(label, tag, whole_federation, federates)
+};
+struct SyncPointAchieved {
+    HLACORE_TYPE(SyncPointAchieved)
+    std::string label;
+    HLACORE_FIELDS(label)
+};
+struct PublishObjectClass {
+    HLACORE_TYPE(PublishObjectClass)
+    std::uint32_t object_class = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object_class, attributes)
+};
+struct UnpublishObjectClass {
+    HLACORE_TYPE(UnpublishObjectClass)
+    std::uint32_t object_class = 0;
+    HLACORE_FIELDS(object_class)
+};
+struct SubscribeObjectClass {
+    HLACORE_TYPE(SubscribeObjectClass)
+    std::uint32_t object_class = 0;
+    Handles attributes;
+    bool active = true;
+    HLACORE_FIELDS(object_class, attributes, active)
+};
+struct UnsubscribeObjectClass {
+    HLACORE_TYPE(UnsubscribeObjectClass)
+    std::uint32_t object_class = 0;
+    HLACORE_FIELDS(object_class)
+};
+struct PublishInteractionClass {
+    HLACORE_TYPE(PublishInteractionClass)
+    std::uint32_t interaction_class = 0;
+    HLACORE_FIELDS(interaction_class)
+};
+struct UnpublishInteractionClass {
+    HLACORE_TYPE(UnpublishInteractionClass)
+    std::uint32_t interaction_class = 0;
+    HLACORE_FIELDS(interaction_class)
+};
+struct SubscribeInteractionClass {
+    HLACORE_TYPE(SubscribeInteractionClass)
+    std::uint32_t interaction_class = 0;
+    bool active = true;
+    HLACORE_FIELDS(interaction_class, active)
+};
+struct UnsubscribeInteractionClass {
+    HLACORE_TYPE(UnsubscribeInteractionClass)
+    std::uint32_t interaction_class = 0;
+    HLACORE_FIELDS(interaction_class)
+};
+struct RegisterObject {
+    HLACORE_TYPE(RegisterObject)
+    std::uint32_t request = 0;
+    std::uint32_t object_class = 0;
+    std::string name;  // empty: the gateway picks a unique one
+    HLACORE_FIELDS(request, object_class, name)
+};
+struct UpdateAttributes {
+    HLACORE_TYPE(UpdateAttributes)
+    std::uint32_t object = 0;
+    HandleValues values;
+    std::string tag;
+    OptionalTime time;
+    std::uint64_t serial = 0;  // with the sender's handle, the event retraction handle
+    HLACORE_FIELDS(object, values, tag, time, serial)
+};
+struct SendInteraction {
+    HLACORE_TYPE(SendInteraction)
+    std::uint32_t interaction_class = 0;
+    HandleValues values;
+    std::string tag;
+    OptionalTime time;
+    std::uint64_t serial = 0;
+    HLACORE_FIELDS(interaction_class, values, tag, time, serial)
+};
+struct DeleteObject {
+    HLACORE_TYPE(DeleteObject)
+    std::uint32_t object = 0;
+    std::string tag;
+    OptionalTime time;
+    std::uint64_t serial = 0;
+    HLACORE_FIELDS(object, tag, time, serial)
+};
+struct LocalDeleteObject {
+    HLACORE_TYPE(LocalDeleteObject)
+    std::uint32_t object = 0;
+    HLACORE_FIELDS(object)
+};
+struct RequestObjectUpdate {
+    HLACORE_TYPE(RequestObjectUpdate)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct RequestClassUpdate {
+    HLACORE_TYPE(RequestClassUpdate)
+    std::uint32_t object_class = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object_class, attributes)
+};
+struct SetAdvisorySwitch {
+    HLACORE_TYPE(SetAdvisorySwitch)
+    std::uint8_t which = 0;  // AdvisorySwitch
+    bool on = true;
+    HLACORE_FIELDS(which, on)
+};
+
+// ---- gateway -> federate ----
+struct Reply {
+    HLACORE_TYPE(Reply)
+    std::uint32_t request = 0;
+    std::uint16_t error = 0;  // ErrorCode, 0 = success
+    std::string message;      // the exception's reason when error != 0
+    std::uint32_t handle = 0;  // join: federate handle; register: object handle
+    std::string text;          // join: FED text; register: object name
+    std::string text2;         // join: FED file name
+    HLACORE_FIELDS(request, error, message, handle, text, text2)
+};
+struct SyncPointRegistrationSucceeded {
+    HLACORE_TYPE(SyncPointRegistrationSucceeded)
+    std::string label;
+    HLACORE_FIELDS(label)
+};
+struct SyncPointRegistrationFailed {
+    HLACORE_TYPE(SyncPointRegistrationFailed)
+    std::string label;
+    HLACORE_FIELDS(label)
+};
+struct AnnounceSyncPoint {
+    HLACORE_TYPE(AnnounceSyncPoint)
+    std::string label;
+    std::string tag;
+    HLACORE_FIELDS(label, tag)
+};
+struct FederationSynchronized {
+    HLACORE_TYPE(FederationSynchronized)
+    std::string label;
+    HLACORE_FIELDS(label)
+};
+struct StartRegistration {
+    HLACORE_TYPE(StartRegistration)
+    std::uint32_t object_class = 0;
+    HLACORE_FIELDS(object_class)
+};
+struct StopRegistration {
+    HLACORE_TYPE(StopRegistration)
+    std::uint32_t object_class = 0;
+    HLACORE_FIELDS(object_class)
+};
+struct TurnInteractionsOn {
+    HLACORE_TYPE(TurnInteractionsOn)
+    std::uint32_t interaction_class = 0;
+    HLACORE_FIELDS(interaction_class)
+};
+struct TurnInteractionsOff {
+    HLACORE_TYPE(TurnInteractionsOff)
+    std::uint32_t interaction_class = 0;
+    HLACORE_FIELDS(interaction_class)
+};
+struct DiscoverObject {
+    HLACORE_TYPE(DiscoverObject)
+    std::uint32_t object = 0;
+    std::uint32_t object_class = 0;  // the class the receiver knows it as
+    std::string name;
+    HLACORE_FIELDS(object, object_class, name)
+};
+struct ReflectAttributes {
+    HLACORE_TYPE(ReflectAttributes)
+    std::uint32_t object = 0;
+    HandleValues values;
+    std::string tag;
+    std::uint8_t order = 1;      // fom::Order
+    std::uint8_t transport = 1;  // fom::Transport
+    OptionalTime time;
+    std::uint32_t sender = 0;
+    std::uint64_t serial = 0;
+    HLACORE_FIELDS(object, values, tag, order, transport, time, sender, serial)
+};
+struct ReceiveInteraction {
+    HLACORE_TYPE(ReceiveInteraction)
+    std::uint32_t interaction_class = 0;
+    HandleValues values;
+    std::string tag;
+    std::uint8_t order = 1;
+    std::uint8_t transport = 1;
+    OptionalTime time;
+    std::uint32_t sender = 0;
+    std::uint64_t serial = 0;
+    HLACORE_FIELDS(interaction_class, values, tag, order, transport, time, sender, serial)
+};
+struct RemoveObject {
+    HLACORE_TYPE(RemoveObject)
+    std::uint32_t object = 0;
+    std::string tag;
+    OptionalTime time;
+    std::uint32_t sender = 0;
+    std::uint64_t serial = 0;
+    HLACORE_FIELDS(object, tag, time, sender, serial)
+};
+struct ProvideAttributeValueUpdate {
+    HLACORE_TYPE(ProvideAttributeValueUpdate)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+
+// Index in the variant == wire code.
+#define HLACORE_X(name) , name
+using Message = std::variant<std::monostate HLACORE_MESSAGES(HLACORE_X)>;
+#undef HLACORE_X
+
+}  // namespace hlacore::wire

@@ -1,0 +1,12 @@
+"""hlacore: an HLA 1.3 run-time infrastructure with a C++ gateway and a PyHLA-style Python API.
+
+- :mod:`hlacore.rti` — the RTI ambassador, federate ambassador, handles and exceptions (PyHLA names).
+- :class:`hlacore.Gateway` — the gateway run in-process; ``rtig`` is the same gateway as a server.
+- :mod:`hlacore.fed` — the ``.fed`` parser; :mod:`hlacore.omt` — encoding helpers.
+"""
+
+from . import rti
+from .gateway import Gateway
+
+__version__ = "0.1.0"
+__all__ = ["Gateway", "rti", "__version__"]

@@ -1,0 +1,69 @@
+"""The gateway (`rtig`) run in-process, on a background thread."""
+
+from __future__ import annotations
+
+from types import TracebackType
+from typing import Iterable, Optional
+
+from . import _core
+
+
+class Gateway:
+    """An in-process gateway: the same C++ reactor as the ``rtig`` executable, on its own thread.
+
+    ::
+
+        with hlacore.Gateway(port=0) as gw:          # port 0 picks a free port
+            rtia = hlacore.rti.RTIAmbassador(gw.address)
+
+    The gateway listens from construction until :meth:`stop` (or the end of the ``with`` block).
+    It logs dropped connections to stderr; ``verbose=True`` logs joins and federations too.
+    """
+
+    def __init__(
+        self,
+        host: str = "127.0.0.1",
+        port: int = 60400,
+        fom_path: Iterable[str] = (),
+        verbose: bool = False,
+    ) -> None:
+        self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose)
+
+    @property
+    def host(self) -> str:
+        """The address the gateway listens on."""
+        return str(self._gateway.host)
+
+    @property
+    def port(self) -> int:
+        """The TCP port the gateway listens on (the one picked when constructed with port 0)."""
+        return int(self._gateway.port)
+
+    @property
+    def address(self) -> str:
+        """``"host:port"``, as :class:`hlacore.rti.RTIAmbassador` takes it."""
+        return f"{self.host}:{self.port}"
+
+    @property
+    def running(self) -> bool:
+        """True until :meth:`stop` has returned."""
+        return bool(self._gateway.running)
+
+    def stop(self) -> None:
+        """Stop serving and close every connection; idempotent."""
+        self._gateway.stop()
+
+    def __enter__(self) -> "Gateway":
+        return self
+
+    def __exit__(
+        self,
+        exc_type: Optional[type[BaseException]],
+        exc: Optional[BaseException],
+        tb: Optional[TracebackType],
+    ) -> None:
+        self.stop()
+
+    def __repr__(self) -> str:
+        state = "running" if self.running else "stopped"
+        return f"<hlacore.Gateway {self.address} {state}>"

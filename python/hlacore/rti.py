@@ -1,0 +1,286 @@
+"""The HLA 1.3 RTI ambassador with PyHLA's names and argument order.
+
+A PyHLA federate ports by changing its import line::
+
+    import hlacore.rti as rti            # was: import hla.rti as rti
+
+    class Ambassador(rti.FederateAmbassador):
+        def reflectAttributeValues(self, obj, attributes, tag, order, transport, time=None, retraction=None):
+            ...
+
+    rtia = rti.RTIAmbassador()           # connects to $HLACORE_RTIG or 127.0.0.1:60400
+    rtia.createFederationExecution("uav", "uav.fed")
+    rtia.joinFederationExecution("sender", "uav", Ambassador())
+    ...
+    rtia.tick(1.0, 1.0)
+
+Every service raises the HLA 1.3 exception named in its docstring (all subclasses of
+:class:`RTIexception`); wrong handle types raise :class:`TypeError`. Callbacks are evoked by
+:meth:`RTIAmbassador.tick` on the ticking thread; sending calls are safe from any thread.
+"""
+
+from __future__ import annotations
+
+import os
+import time as _time
+from typing import Any, Optional
+
+from . import _core
+from ._core import (  # noqa: F401  (re-exported handle types)
+    AttributeHandle,
+    DimensionHandle,
+    EventRetractionHandle,
+    FederateHandle,
+    InteractionClassHandle,
+    ObjectClassHandle,
+    ObjectHandle,
+    OrderingHandle,
+    ParameterHandle,
+    SpaceHandle,
+    TransportationHandle,
+)
+
+DEFAULT_ADDRESS = "127.0.0.1:60400"
+
+RTIexception = _core.RTIexception
+
+
+def _export_exceptions() -> list[str]:
+    names = []
+    for name in dir(_core):
+        obj = getattr(_core, name)
+        if isinstance(obj, type) and issubclass(obj, _core.RTIexception):
+            globals()[name] = obj
+            names.append(name)
+    return names
+
+
+_EXCEPTION_NAMES = _export_exceptions()
+# PyHLA's spellings.
+RTIInternalError = _core.RTIinternalError
+Exception = _core.RTIexception  # noqa: A001  (hla.rti.Exception was PyHLA's base class)
+
+
+class ResignAction:
+    """Actions for :meth:`RTIAmbassador.resignFederationExecution` (PyHLA's values)."""
+
+    ReleaseAttributes = 1
+    DeleteObjects = 2
+    DeleteObjectsAndReleaseAttributes = 3
+    NoAction = 4
+
+
+class FederateAmbassador:
+    """Base class for a federate's callbacks.
+
+    Define the callbacks you need with PyHLA's signatures; a callback you do not define is not called.
+    The callbacks of this release are ``synchronizationPointRegistrationSucceeded(label)``,
+    ``synchronizationPointRegistrationFailed(label)``, ``announceSynchronizationPoint(label, tag)``,
+    ``federationSynchronized(label)``, ``startRegistrationForObjectClass(objectClass)``,
+    ``stopRegistrationForObjectClass(objectClass)``, ``turnInteractionsOn(interactionClass)``,
+    ``turnInteractionsOff(interactionClass)``, ``discoverObjectInstance(object, objectClass, name)``,
+    ``reflectAttributeValues(object, attributes, tag, order, transport[, time, retraction])``,
+    ``receiveInteraction(interactionClass, parameters, tag, order, transport[, time, retraction])``,
+    ``removeObjectInstance(object, tag[, time, retraction])`` and
+    ``provideAttributeValueUpdate(object, attributes)``.
+    """
+
+
+_TRANSPORTS = {"HLAreliable": 1, "reliable": 1, "HLAbestEffort": 2, "best_effort": 2}
+_TRANSPORT_NAMES = {1: "HLAreliable", 2: "HLAbestEffort"}
+_ORDERS = {"Receive": 1, "receive": 1, "Timestamp": 2, "timestamp": 2}
+_ORDER_NAMES = {1: "Receive", 2: "Timestamp"}
+
+_SWITCH_CLASS, _SWITCH_ATTRIBUTE, _SWITCH_SCOPE, _SWITCH_INTERACTION = 1, 2, 3, 4
+
+
+
+def _resolve_address(address: Optional[str]) -> tuple[str, int]:
+    text = address or os.environ.get("HLACORE_RTIG") or DEFAULT_ADDRESS
+    host, sep, port = text.rpartition(":")
+    if not sep or not port.isdigit():
+        raise _core.RTIinternalError(f"rtig address {text!r} is not HOST:PORT")
+    return host.strip("[]") or "127.0.0.1", int(port)
+
+
+class RTIAmbassador(_core.RTIAmbassadorBase):
+    """A federate's connection to the RTI (HLA 1.3 RTIambassador).
+
+    ``RTIAmbassador(address=None)`` connects to ``address`` ("host:port"), else ``$HLACORE_RTIG``,
+    else ``127.0.0.1:60400``; raises :class:`RTIinternalError` naming the address if nothing answers.
+    One ambassador joins at most one federation execution at a time.
+    """
+
+    def __init__(self, address: Optional[str] = None) -> None:
+        host, port = _resolve_address(address)
+        super().__init__(host, port)
+        self._federate_ambassador: Any = None
+
+    # ---- federation management ----
+
+    def createFederationExecution(self, executionName: str, FED: str) -> None:
+        """Create a federation execution from a ``.fed`` file (HLA 1.3 §4.2).
+
+        The file is read and checked here, so a malformed file raises :class:`ErrorReadingFED` in the
+        caller with its ``FILE:LINE:COL:`` position. A path this process cannot open is looked up by
+        the gateway in its ``--fom-path`` directories. Raises :class:`FederationExecutionAlreadyExists`,
+        :class:`CouldNotOpenFED`, :class:`ErrorReadingFED`.
+        """
+        text = ""
+        if os.path.isfile(FED):
+            try:
+                with open(FED, "r", encoding="utf-8", errors="surrogateescape") as f:
+                    text = f.read()
+            except OSError as e:
+                raise _core.CouldNotOpenFED(f"cannot read FED file {FED!r}: {e.strerror}") from None
+            _core.parse_fed(text, FED)
+        self._create(executionName, FED, text)
+
+    def joinFederationExecution(
+        self, yourName: str, executionName: str, federateAmbassadorReference: FederateAmbassador
+    ) -> FederateHandle:
+        """Join a federation execution (HLA 1.3 §4.4); callbacks go to ``federateAmbassadorReference``.
+
+        Returns the federate's :class:`FederateHandle`. Raises :class:`FederateAlreadyExecutionMember`
+        (this ambassador is joined, or the name is taken) and :class:`FederationExecutionDoesNotExist`.
+        """
+        handle = self._join(yourName, executionName)
+        self._federate_ambassador = federateAmbassadorReference
+        return handle
+
+    def resignFederationExecution(self, theAction: int) -> None:
+        """Resign from the federation execution (HLA 1.3 §4.5).
+
+        ``theAction`` is a :class:`ResignAction`: ``DeleteObjects`` removes the objects this federate may
+        delete (``removeObjectInstance`` at the others), ``ReleaseAttributes`` leaves its attributes
+        unowned. Raises :class:`FederateOwnsAttributes` when the action leaves owned attributes behind,
+        :class:`InvalidResignAction`, :class:`FederateNotExecutionMember`.
+        """
+        self._resign(int(theAction))
+        self._federate_ambassador = None
+
+    # ---- advisory switches (HLA 1.3 §5.10-5.13, §7.17-7.24) ----
+
+    def enableClassRelevanceAdvisorySwitch(self) -> None:
+        """Turn on ``startRegistrationForObjectClass``/``stopRegistrationForObjectClass`` (the default)."""
+        self._set_advisory_switch(_SWITCH_CLASS, True)
+
+    def disableClassRelevanceAdvisorySwitch(self) -> None:
+        """Turn off ``startRegistrationForObjectClass``/``stopRegistrationForObjectClass``."""
+        self._set_advisory_switch(_SWITCH_CLASS, False)
+
+    def enableInteractionRelevanceAdvisorySwitch(self) -> None:
+        """Turn on ``turnInteractionsOn``/``turnInteractionsOff`` (the default)."""
+        self._set_advisory_switch(_SWITCH_INTERACTION, True)
+
+    def disableInteractionRelevanceAdvisorySwitch(self) -> None:
+        """Turn off ``turnInteractionsOn``/``turnInteractionsOff``."""
+        self._set_advisory_switch(_SWITCH_INTERACTION, False)
+
+    def enableAttributeRelevanceAdvisorySwitch(self) -> None:
+        """Record the attribute relevance switch (its callbacks come with data distribution management)."""
+        self._set_advisory_switch(_SWITCH_ATTRIBUTE, True)
+
+    def disableAttributeRelevanceAdvisorySwitch(self) -> None:
+        """Record the attribute relevance switch as off (the default)."""
+        self._set_advisory_switch(_SWITCH_ATTRIBUTE, False)
+
+    def enableAttributeScopeAdvisorySwitch(self) -> None:
+        """Record the attribute scope switch (its callbacks come with data distribution management)."""
+        self._set_advisory_switch(_SWITCH_SCOPE, True)
+
+    def disableAttributeScopeAdvisorySwitch(self) -> None:
+        """Record the attribute scope switch as off (the default)."""
+        self._set_advisory_switch(_SWITCH_SCOPE, False)
+
+    # ---- transportation and ordering (answered locally, usable before joining) ----
+
+    def getTransportationHandle(self, name: str) -> TransportationHandle:
+        """Handle of ``"HLAreliable"`` or ``"HLAbestEffort"``; raises :class:`NameNotFound`."""
+        if name not in _TRANSPORTS:
+            raise _core.NameNotFound(f"no transportation type named {name!r}")
+        return _core._transportation_handle(_TRANSPORTS[name])
+
+    def getTransportationName(self, handle: TransportationHandle) -> str:
+        """Name of a transportation handle; raises :class:`InvalidTransportationHandle`."""
+        if not isinstance(handle, TransportationHandle):
+            raise TypeError("TransportationHandle object required")
+        if int(handle) not in _TRANSPORT_NAMES:
+            raise _core.InvalidTransportationHandle(f"{handle!r} is not a transportation type")
+        return _TRANSPORT_NAMES[int(handle)]
+
+    def getOrderingHandle(self, name: str) -> OrderingHandle:
+        """Handle of ``"Receive"`` or ``"Timestamp"``; raises :class:`NameNotFound`."""
+        if name not in _ORDERS:
+            raise _core.NameNotFound(f"no ordering type named {name!r}")
+        return _core._ordering_handle(_ORDERS[name])
+
+    def getOrderingName(self, handle: OrderingHandle) -> str:
+        """Name of an ordering handle; raises :class:`InvalidOrderingHandle`."""
+        if not isinstance(handle, OrderingHandle):
+            raise TypeError("OrderingHandle object required")
+        if int(handle) not in _ORDER_NAMES:
+            raise _core.InvalidOrderingHandle(f"{handle!r} is not an ordering type")
+        return _ORDER_NAMES[int(handle)]
+
+    # ---- evoking callbacks ----
+
+    def tick(self, minimum: Optional[float] = None, maximum: Optional[float] = None) -> bool:
+        """Evoke callbacks on this thread (HLA 1.3 §2.2 ``tick``).
+
+        ``tick()`` delivers every callback that is ready and returns at once. ``tick(minimum, maximum)``
+        waits up to ``minimum`` seconds for the first callback (in C++, the GIL released; Ctrl-C
+        interrupts it), then keeps delivering what is ready for at most ``maximum`` seconds.
+        Returns True when callbacks are still pending. An exception raised by a callback propagates
+        with its traceback; the callbacks not yet delivered stay queued for the next tick.
+        """
+        if minimum is None and maximum is None:
+            self._poll()
+            self._deliver(None)
+        else:
+            lo = 0.0 if minimum is None else float(minimum)
+            hi = lo if maximum is None else float(maximum)
+            start = _time.monotonic()
+            if self._wait(lo):
+                self._deliver(start + max(hi, lo))
+        return bool(self._has_callbacks())
+
+    def _deliver(self, deadline: Optional[float]) -> None:
+        ambassador = self._federate_ambassador
+        while True:
+            callback = self._next_callback()
+            if callback is None:
+                if deadline is None or _time.monotonic() >= deadline:
+                    return
+                self._poll()
+                callback = self._next_callback()
+                if callback is None:
+                    return
+            name, args = callback
+            method = getattr(ambassador, name, None)
+            if method is not None:
+                method(*args)
+            if deadline is not None and _time.monotonic() >= deadline:
+                return
+
+
+__all__ = [
+    "RTIAmbassador",
+    "FederateAmbassador",
+    "ResignAction",
+    "RTIexception",
+    "RTIInternalError",
+    "AttributeHandle",
+    "DimensionHandle",
+    "EventRetractionHandle",
+    "FederateHandle",
+    "InteractionClassHandle",
+    "ObjectClassHandle",
+    "ObjectHandle",
+    "OrderingHandle",
+    "ParameterHandle",
+    "SpaceHandle",
+    "TransportationHandle",
+    *_EXCEPTION_NAMES,
+]
+

@@ -1,0 +1,203 @@
+"""Fixtures: an in-process gateway, the real `rtig` executable on port 0, and helpers to tick until a
+condition holds. Everything started here is stopped here, by pid."""
+
+from __future__ import annotations
+
+import os
+import pathlib
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from typing import Any, Callable, Iterator, Optional
+
+import pytest
+
+import hlacore
+from hlacore import rti
+
+DATA = pathlib.Path(__file__).parent / "data"
+ROBOT_FED = str(DATA / "robot.fed")
+SANITIZER_REPORT = re.compile(r"ERROR: AddressSanitizer|runtime error:|ERROR: LeakSanitizer")
+
+
+def rtig_executable() -> str:
+    """The rtig under test: $HLACORE_TEST_RTIG (the sanitizer build), else the one installed beside Python."""
+    explicit = os.environ.get("HLACORE_TEST_RTIG")
+    if explicit:
+        return explicit
+    beside = pathlib.Path(sys.executable).parent / "rtig"
+    if beside.exists():
+        return str(beside)
+    found = shutil.which("rtig")
+    if not found:
+        raise RuntimeError("rtig is not installed: run ./scripts/test.sh")
+    return found
+
+
+class RtigProcess:
+    """A running `rtig --port 0`; its stderr goes to a file so that tests can read the log."""
+
+    def __init__(self, tmp_path: pathlib.Path, *args: str) -> None:
+        self.log_path = tmp_path / f"rtig-{len(list(tmp_path.glob('rtig-*.log')))}.log"
+        self._log = open(self.log_path, "wb")
+        self.proc = subprocess.Popen(
+            [rtig_executable(), "--port", "0", *args],
+            stdout=subprocess.PIPE,
+            stderr=self._log,
+            stdin=subprocess.DEVNULL,
+        )
+        assert self.proc.stdout is not None
+        line = self.proc.stdout.readline().decode()
+        match = re.fullmatch(r"rtig listening on (\S+):(\d+)\n", line)
+        if not match:
+            self.stop()
+            raise RuntimeError(f"unexpected rtig readiness line {line!r}; log: {self.log()}")
+        self.host, self.port = match.group(1), int(match.group(2))
+        self.address = f"{self.host}:{self.port}"
+
+    def log(self) -> str:
+        if not self._log.closed:
+            self._log.flush()
+        return self.log_path.read_text(errors="replace")
+
+    def stop(self) -> int:
+        """SIGTERM by pid, wait, and return the exit status."""
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGTERM)
+            try:
+                self.proc.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+        if self.proc.stdout:
+            self.proc.stdout.close()
+        self._log.close()
+        return self.proc.returncode
+
+
+@pytest.fixture
+def rtig(tmp_path: pathlib.Path) -> Iterator[RtigProcess]:
+    """The real rtig binary; the test fails if it exits uncleanly or reports a sanitizer error."""
+    server = RtigProcess(tmp_path)
+    try:
+        yield server
+    finally:
+        status = server.stop()
+        log = server.log()
+        assert not SANITIZER_REPORT.search(log), log
+        assert status == 0, f"rtig exited with {status}; log:\n{log}"
+
+
+@pytest.fixture
+def inprocess_gateway() -> Iterator[hlacore.Gateway]:
+    with hlacore.Gateway(port=0) as gw:
+        yield gw
+
+
+@pytest.fixture(params=["in-process", "rtig"])
+def gateway_address(request: pytest.FixtureRequest) -> str:
+    """The address of a gateway: both the in-process one and the real rtig executable."""
+    if request.param == "in-process":
+        return str(request.getfixturevalue("inprocess_gateway").address)
+    return str(request.getfixturevalue("rtig").address)
+
+
+class Recorder(rti.FederateAmbassador):
+    """Records every callback as (name, args)."""
+
+    def __init__(self) -> None:
+        self.calls: list[tuple[str, tuple[Any, ...]]] = []
+
+    def named(self, name: str) -> list[tuple[Any, ...]]:
+        return [args for n, args in self.calls if n == name]
+
+    def _record(name: str) -> Callable[..., None]:  # type: ignore[misc]
+        def callback(self: "Recorder", *args: Any) -> None:
+            self.calls.append((name, args))
+
+        callback.__name__ = name
+        return callback
+
+    for _name in (
+        "synchronizationPointRegistrationSucceeded",
+        "synchronizationPointRegistrationFailed",
+        "announceSynchronizationPoint",
+        "federationSynchronized",
+        "startRegistrationForObjectClass",
+        "stopRegistrationForObjectClass",
+        "turnInteractionsOn",
+        "turnInteractionsOff",
+        "discoverObjectInstance",
+        "reflectAttributeValues",
+        "receiveInteraction",
+        "removeObjectInstance",
+        "provideAttributeValueUpdate",
+    ):
+        locals()[_name] = _record(_name)
+    del _name, _record
+
+
+def tick_until(
+    predicate: Callable[[], bool], *ambassadors: rti.RTIAmbassador, timeout: float = 5.0
+) -> None:
+    """Tick every ambassador until predicate() holds; fail after timeout seconds."""
+    deadline = time.monotonic() + timeout
+    while not predicate():
+        if time.monotonic() > deadline:
+            raise AssertionError("condition not reached within %.1f s" % timeout)
+        for amb in ambassadors:
+            amb.tick(0.01, 0.05)
+
+
+def settle(*ambassadors: rti.RTIAmbassador, seconds: float = 0.2) -> None:
+    """Tick everyone for a while, to show that nothing more arrives."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        for amb in ambassadors:
+            amb.tick(0.01, 0.02)
+
+
+class Federate:
+    """One joined federate: its RTI ambassador and a Recorder."""
+
+    def __init__(self, address: str, name: str, federation: str = "TestFed") -> None:
+        self.rtia = rti.RTIAmbassador(address)
+        self.amb = Recorder()
+        self.handle = self.rtia.joinFederationExecution(name, federation, self.amb)
+
+
+@pytest.fixture
+def federation(gateway_address: str) -> Iterator[Callable[[str], Federate]]:
+    """Creates TestFed from tests/data/robot.fed; returns a function joining federates to it."""
+    creator = rti.RTIAmbassador(gateway_address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    joined: list[Federate] = []
+
+    def join(name: str) -> Federate:
+        fed = Federate(gateway_address, name)
+        joined.append(fed)
+        return fed
+
+    yield join
+    for fed in joined:
+        try:
+            fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        except rti.FederateNotExecutionMember:
+            pass
+    creator.destroyFederationExecution("TestFed")
+
+
+def python_subprocess(script: str, *args: str, env: Optional[dict[str, str]] = None) -> subprocess.Popen[str]:
+    """Start tests/peers/<script> with this interpreter; stdout is line-buffered text."""
+    full_env = dict(os.environ, PYTHONUNBUFFERED="1", **(env or {}))
+    return subprocess.Popen(
+        [sys.executable, str(pathlib.Path(__file__).parent / "peers" / script), *args],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        stdin=subprocess.DEVNULL,
+        text=True,
+        env=full_env,
+    )

@@ -152,6 +152,15 @@ def tick_until(
             amb.tick(0.01, 0.05)
 
 
+def barrier(rtia: rti.RTIAmbassador) -> None:
+    """Return once the gateway has handled everything this federate sent before.
+
+    The gateway handles each connection's messages in order but connections in any order, so a test that
+    subscribes on one federate and sends from another first makes this round trip on the subscriber."""
+    with pytest.raises(rti.FederationExecutionDoesNotExist):
+        rtia.destroyFederationExecution("hlacore-test-barrier")
+
+
 def settle(*ambassadors: rti.RTIAmbassador, seconds: float = 0.2) -> None:
     """Tick everyone for a while, to show that nothing more arrives."""
     deadline = time.monotonic() + seconds

@@ -15,6 +15,7 @@
 #include <netinet/tcp.h>
 #include <sys/eventfd.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace hlacore {
@@ -367,7 +368,11 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
 
 std::string Gateway::find_fed_file(const std::string& name) const {
     std::string text;
-    auto readable = [](const std::string& p) { return ::access(p.c_str(), R_OK) == 0; };
+    // Only regular files: opening a FIFO or a device would block the whole gateway.
+    auto readable = [](const std::string& p) {
+        struct stat st {};
+        return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::access(p.c_str(), R_OK) == 0;
+    };
     if (!name.empty() && name[0] == '/') return readable(name) ? name : "";
     for (const auto& dir : options_.fom_path) {
         std::string candidate = dir + "/" + name;

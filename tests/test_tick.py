@@ -1,0 +1,138 @@
+"""tick(): evoking callbacks, waiting with the GIL released, Ctrl-C, exceptions raised by callbacks."""
+
+import select
+import signal
+import threading
+import time
+import traceback
+
+import pytest
+
+import hlacore.rti as rti
+
+from conftest import barrier, python_subprocess, tick_until
+
+
+@pytest.fixture
+def robot_pair(federation):
+    pub, sub = federation("publisher"), federation("subscriber")
+    robot = pub.rtia.getObjectClassHandle("robot")
+    location = pub.rtia.getAttributeHandle("location", robot)
+    pub.rtia.publishObjectClass(robot, [location])
+    sub.rtia.subscribeObjectClassAttributes(robot, [location])
+    barrier(sub.rtia)
+    obj = pub.rtia.registerObjectInstance(robot)
+    return pub, sub, obj, location
+
+
+def test_tick_without_arguments_returns_at_once_when_idle(federation):
+    """tick() does not wait: with nothing to deliver it returns False immediately."""
+    fed = federation("a")
+    assert fed.rtia.tick() is False
+
+
+def test_tick_waits_up_to_minimum_for_the_first_callback(federation):
+    """tick(min, max) with nothing to deliver waits about min seconds, then returns False."""
+    fed = federation("a")
+    start = time.monotonic()
+    assert fed.rtia.tick(0.3, 1.0) is False
+    assert time.monotonic() - start >= 0.25
+
+
+def test_blocking_tick_releases_the_gil_and_wakes_on_arrival(robot_pair):
+    """While one thread waits in tick(10, 10), another thread runs Python and its update ends the wait."""
+    pub, sub, obj, location = robot_pair
+    tick_until(lambda: sub.amb.named("discoverObjectInstance"), sub.rtia)
+    progress = []
+
+    def other_thread():
+        for i in range(50):
+            progress.append(i)
+            time.sleep(0.002)
+        pub.rtia.updateAttributeValues(obj, {location: b"wake"}, "")
+
+    thread = threading.Thread(target=other_thread)
+    thread.start()
+    sub.rtia.tick(10.0, 10.0)
+    thread.join()
+    assert len(progress) == 50
+    assert sub.amb.named("reflectAttributeValues")[0][1] == {location: b"wake"}
+
+
+def test_exception_in_callback_propagates_and_keeps_the_rest_queued(robot_pair):
+    """A callback's exception leaves tick() with its traceback; the undelivered callbacks come next tick."""
+    pub, sub, obj, location = robot_pair
+    tick_until(lambda: sub.amb.named("discoverObjectInstance"), sub.rtia)
+    seen = []
+
+    def reflectAttributeValues(obj, attributes, tag, order, transport, time=None, retraction=None):
+        seen.append(attributes[location])
+        if attributes[location] == b"0":
+            raise ValueError("user bug in reflect")
+
+    sub.amb.reflectAttributeValues = reflectAttributeValues
+    for i in range(3):
+        pub.rtia.updateAttributeValues(obj, {location: str(i).encode()}, "")
+    deadline = time.monotonic() + 5
+    with pytest.raises(ValueError, match="user bug") as error:
+        while time.monotonic() < deadline:
+            sub.rtia.tick(0.05, 0.5)
+    frames = [frame.name for frame in traceback.extract_tb(error.value.__traceback__)]
+    assert "reflectAttributeValues" in frames
+    tick_until(lambda: len(seen) == 3, sub.rtia)
+    assert seen == [b"0", b"1", b"2"]
+
+
+def test_callbacks_may_call_the_rti(robot_pair):
+    """A callback can call RTI services (re-entrantly, on the ticking thread)."""
+    pub, sub, obj, location = robot_pair
+
+    def discoverObjectInstance(o, cls, name):
+        sub.rtia.requestObjectAttributeValueUpdate(o, [location])
+
+    sub.amb.discoverObjectInstance = discoverObjectInstance
+    tick_until(lambda: pub.amb.named("provideAttributeValueUpdate"), sub.rtia, pub.rtia)
+    assert pub.amb.named("provideAttributeValueUpdate") == [(obj, (location,))]
+
+
+def test_missing_callbacks_are_ignored(federation):
+    """A FederateAmbassador without a callback method simply does not get that callback."""
+    registrar = federation("registrar")
+    bare = rti.RTIAmbassador(registrar.rtia.address)
+    bare.joinFederationExecution("bare", "TestFed", rti.FederateAmbassador())
+    registrar.rtia.registerFederationSynchronizationPoint("x", "")
+    barrier(registrar.rtia)
+    bare.tick(0.5, 0.5)
+    bare.synchronizationPointAchieved("x")  # accepted: the announcement was delivered (and ignored)
+    bare.resignFederationExecution(rti.ResignAction.NoAction)
+
+
+def test_fileno_becomes_readable_when_a_callback_arrives(robot_pair):
+    """fileno() lets another event loop wait for callbacks with select()."""
+    pub, sub, obj, location = robot_pair
+    tick_until(lambda: sub.amb.named("discoverObjectInstance"), sub.rtia)
+    readable, _, _ = select.select([sub.rtia.fileno()], [], [], 0)
+    assert readable == []
+    pub.rtia.updateAttributeValues(obj, {location: b"x"}, "")
+    readable, _, _ = select.select([sub.rtia.fileno()], [], [], 5)
+    assert readable == [sub.rtia.fileno()]
+
+
+def test_ctrl_c_interrupts_a_blocking_tick(gateway_address):
+    """SIGINT ends a tick(30, 30) wait in another process with KeyboardInterrupt, promptly."""
+    creator = rti.RTIAmbassador(gateway_address)
+    creator.createFederationExecution("TestFed", "tests/data/robot.fed")
+    proc = python_subprocess("tick_forever.py", gateway_address)
+    try:
+        assert proc.stdout.readline() == "ticking\n"
+        time.sleep(0.2)  # let it enter the wait; the signal must interrupt a wait in progress
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(timeout=10) == 0, proc.stderr.read()
+        assert proc.stdout.readline().startswith("interrupted after")
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        proc.stdout.close()
+        proc.stderr.close()
+    creator.destroyFederationExecution("TestFed")

@@ -428,7 +428,7 @@ PYBIND11_MODULE(_core, m) {
              "Handle of an object class by qualified or bare name ('ObjectRoot.robot', 'robot'). Raises NameNotFound.")
         .def("getObjectClassName", [](Client& c, ObjectClassHandle h) { return c.object_class_name(h.value); },
              py::arg("objectClass"),
-             "Qualified name of an object class. Raises ObjectClassNotDefined.")
+             "Name of an object class, qualified as CERTI does ('robot', 'robot.turtlebot': root classes are not prepended). Raises ObjectClassNotDefined.")
         .def("getAttributeHandle",
              [](Client& c, const std::string& n, ObjectClassHandle cls) { return AttributeHandle{c.attribute_handle(n, cls.value)}; },
              py::arg("name"), py::arg("objectClass"),

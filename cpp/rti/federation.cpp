@@ -377,8 +377,12 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
         if (!g.known.count(m.object)) discover(gh, g, m.object, obj);
         const auto& wanted = g.subscribed.at(known);
         reflect.values.clear();
-        for (const auto& pair : m.values)
-            if (wanted.count(pair.first)) reflect.values.push_back(pair);
+        for (const auto& pair : m.values) {
+            // Values of attributes the sender does not own are not reflected (clients check this first).
+            auto owner = obj.owners.find(pair.first);
+            if (wanted.count(pair.first) && owner != obj.owners.end() && owner->second == from)
+                reflect.values.push_back(pair);
+        }
         if (reflect.values.empty()) continue;
         reflect.transport = static_cast<std::uint8_t>(cls.attribute(reflect.values.front().first)->transport);
         outbox_.send(gh, reflect);

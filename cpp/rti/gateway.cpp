@@ -367,21 +367,18 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
 }
 
 std::string Gateway::find_fed_file(const std::string& name) const {
-    std::string text;
-    // Only regular files: opening a FIFO or a device would block the whole gateway.
+    // Only regular files inside --fom-path: a client must not make the gateway open arbitrary paths, and
+    // opening a FIFO or a device would block the whole gateway.
     auto readable = [](const std::string& p) {
         struct stat st {};
         return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::access(p.c_str(), R_OK) == 0;
     };
-    if (!name.empty() && name[0] == '/') return readable(name) ? name : "";
+    const auto slash = name.find_last_of('/');
+    const std::string base = slash == std::string::npos ? name : name.substr(slash + 1);
+    if (base.empty() || base == "." || base == "..") return "";
     for (const auto& dir : options_.fom_path) {
-        std::string candidate = dir + "/" + name;
-        if (readable(candidate)) return candidate;
-        const auto slash = name.find_last_of('/');
-        if (slash != std::string::npos) {
-            candidate = dir + "/" + name.substr(slash + 1);
-            if (readable(candidate)) return candidate;
-        }
+        if (name[0] != '/' && name.find("..") == std::string::npos && readable(dir + "/" + name)) return dir + "/" + name;
+        if (readable(dir + "/" + base)) return dir + "/" + base;
     }
     return "";
 }

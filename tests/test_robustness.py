@@ -1,0 +1,739 @@
+"""Hostile and dying clients against the real `rtig`: each is dropped with a clear log line, sees EOF,
+and the federates joined beside it keep working."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import pathlib
+import random
+import re
+import select
+import signal
+import socket
+import struct
+import subprocess
+import time
+from dataclasses import dataclass, field
+from typing import Any, Iterator, Optional
+
+import pytest
+
+from hlacore import rti
+
+from conftest import ROBOT_FED, SANITIZER_REPORT, Federate, RtigProcess, python_subprocess, settle, tick_until
+
+# ---- the wire protocol, as a hostile client speaks it (cpp/rti/wire/messages.hpp) ----
+
+MAGIC = 0x484C4143
+VERSION = 1
+MAX_FRAME = 64 << 20
+MESSAGE_TYPES = [
+    "Hello", "Welcome", "CreateFederation", "DestroyFederation", "JoinFederation", "ResignFederation",
+    "RegisterSyncPoint", "SyncPointAchieved", "PublishObjectClass", "UnpublishObjectClass",
+    "SubscribeObjectClass", "UnsubscribeObjectClass", "PublishInteractionClass", "UnpublishInteractionClass",
+    "SubscribeInteractionClass", "UnsubscribeInteractionClass", "RegisterObject", "UpdateAttributes",
+    "SendInteraction", "DeleteObject", "LocalDeleteObject", "RequestObjectUpdate", "RequestClassUpdate",
+    "SetAdvisorySwitch", "Reply",
+]  # fmt: skip
+T = {name: code for code, name in enumerate(MESSAGE_TYPES, start=1)}
+
+
+def u8(v: int) -> bytes:
+    return struct.pack("<B", v)
+
+
+def u16(v: int) -> bytes:
+    return struct.pack("<H", v)
+
+
+def u32(v: int) -> bytes:
+    return struct.pack("<I", v)
+
+
+def boolean(v: bool) -> bytes:
+    return u8(1 if v else 0)
+
+
+def string(s: str | bytes) -> bytes:
+    data = s.encode() if isinstance(s, str) else s
+    return u32(len(data)) + data
+
+
+def handles(hs: list[int]) -> bytes:
+    return u32(len(hs)) + b"".join(u32(h) for h in hs)
+
+
+def frame(message: str | int, payload: bytes = b"") -> bytes:
+    code = T[message] if isinstance(message, str) else message
+    return u32(2 + len(payload)) + u16(code) + payload
+
+
+def hello(magic: int = MAGIC, version: int = VERSION) -> bytes:
+    return frame("Hello", u32(magic) + u16(version))
+
+
+class Cursor:
+    """Reads the fields of a received payload."""
+
+    def __init__(self, data: bytes) -> None:
+        self.data, self.pos = data, 0
+
+    def take(self, fmt: str) -> Any:
+        (value,) = struct.unpack_from(fmt, self.data, self.pos)
+        self.pos += struct.calcsize(fmt)
+        return value
+
+    def string(self) -> bytes:
+        n = self.take("<I")
+        value = self.data[self.pos : self.pos + n]
+        self.pos += n
+        return value
+
+
+@dataclass
+class Reply:
+    request: int
+    error: int
+    message: str
+    handle: int
+
+
+class RawClient:
+    """A federate-side socket that speaks (or abuses) the wire protocol by hand."""
+
+    def __init__(self, address: str, rcvbuf: Optional[int] = None) -> None:
+        host, port = address.rsplit(":", 1)
+        self.sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+        if rcvbuf is not None:  # before connect, so that the kernel does not grow it
+            self.sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, rcvbuf)
+        self.sock.settimeout(5)
+        self.sock.connect((host, int(port)))
+        self.local = "%s:%d" % self.sock.getsockname()
+        self.buffer = b""
+        self.request = 0
+
+    def close(self) -> None:
+        self.sock.close()
+
+    def send(self, data: bytes, tolerate_drop: bool = False) -> None:
+        try:
+            self.sock.sendall(data)
+        except (BrokenPipeError, ConnectionResetError):
+            if not tolerate_drop:
+                raise
+
+    def recv_frame(self, timeout: float = 5.0) -> tuple[int, bytes]:
+        deadline = time.monotonic() + timeout
+        while True:
+            if len(self.buffer) >= 6:
+                (length,) = struct.unpack_from("<I", self.buffer)
+                if len(self.buffer) >= 4 + length:
+                    (code,) = struct.unpack_from("<H", self.buffer, 4)
+                    payload = self.buffer[6 : 4 + length]
+                    self.buffer = self.buffer[4 + length :]
+                    return code, payload
+            left = deadline - time.monotonic()
+            if left <= 0:
+                raise AssertionError("no complete frame from the gateway within %.1f s" % timeout)
+            self.sock.settimeout(left)
+            chunk = self.sock.recv(65536)
+            if not chunk:
+                raise AssertionError("the gateway closed the connection")
+            self.buffer += chunk
+
+    def handshake(self) -> tuple[int, bytes]:
+        """Hello, then the Welcome: returns (version, server name)."""
+        self.send(hello())
+        code, payload = self.recv_frame()
+        assert code == T["Welcome"]
+        c = Cursor(payload)
+        version, server = c.take("<H"), c.string()
+        assert c.pos == len(payload)
+        return version, server
+
+    def call(self, message: str, payload_after_request: bytes) -> Reply:
+        """Send a request-carrying message and read frames until its Reply."""
+        self.request += 1
+        request = self.request
+        self.send(frame(message, u32(request) + payload_after_request))
+        while True:
+            code, payload = self.recv_frame()
+            if code != T["Reply"]:
+                continue
+            c = Cursor(payload)
+            reply = Reply(c.take("<I"), c.take("<H"), c.string().decode(), c.take("<I"))
+            if reply.request == request:
+                return reply
+
+    def join(self, federate: str, federation: str = "TestFed") -> int:
+        self.handshake()
+        reply = self.call("JoinFederation", string(federate) + string(federation))
+        assert reply.error == 0, reply.message
+        return reply.handle
+
+    def ping(self) -> None:
+        """A round trip (an error Reply) proving that everything sent before was handled."""
+        reply = self.call("DestroyFederation", string("no-such-federation"))
+        assert reply.error != 0
+
+    def wait_eof(self, timeout: float = 5.0) -> None:
+        """Read (and discard) until the gateway's close shows: EOF or a reset."""
+        deadline = time.monotonic() + timeout
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                raise AssertionError("the gateway did not close the connection within %.1f s" % timeout)
+            self.sock.settimeout(left)
+            try:
+                chunk = self.sock.recv(1 << 16)
+            except ConnectionResetError:
+                return
+            except socket.timeout:
+                continue
+            if not chunk:
+                return
+
+
+@contextlib.contextmanager
+def raw_client(address: str, rcvbuf: Optional[int] = None) -> Iterator[RawClient]:
+    client = RawClient(address, rcvbuf)
+    try:
+        yield client
+    finally:
+        client.close()
+
+
+def wait_for_log(server: RtigProcess, pattern: str, timeout: float = 5.0) -> str:
+    """Poll the rtig log until `pattern` (a regex) matches; return the matching text."""
+    deadline = time.monotonic() + timeout
+    while True:
+        match = re.search(pattern, server.log())
+        if match:
+            return match.group(0)
+        if time.monotonic() > deadline:
+            raise AssertionError(f"{pattern!r} not logged within {timeout} s; log:\n{server.log()}")
+        time.sleep(0.02)
+
+
+def dropped_line(server: RtigProcess, client: RawClient, timeout: float = 5.0) -> str:
+    """The log line of the gateway dropping `client` (found by its address)."""
+    return wait_for_log(server, rf"rtig: dropped {re.escape(client.local)}\b[^\n]*", timeout)
+
+
+# ---- two well-behaved federates beside the hostile ones ----
+
+
+@dataclass
+class Legit:
+    address: str
+    creator: rti.RTIAmbassador
+    alice: Federate
+    bob: Federate
+    robot: Any
+    battery: Any
+    location: Any
+    command: Any
+    value: Any
+    probes: int = 0
+    objects: list[Any] = field(default_factory=list)
+
+    def check_working(self) -> None:
+        """alice registers, updates and sends; bob discovers, reflects and receives."""
+        self.probes += 1
+        n = self.probes
+        alice, bob = self.alice, self.bob
+        obj = alice.rtia.registerObjectInstance(self.robot, f"probe-{n}")
+        self.objects.append(obj)
+        tick_until(lambda: any(a[2] == f"probe-{n}" for a in bob.amb.named("discoverObjectInstance")), alice.rtia, bob.rtia)
+        alice.rtia.updateAttributeValues(obj, {self.battery: b"battery-%d" % n}, "probe")
+        tick_until(
+            lambda: any(a[0] == obj and a[1].get(self.battery) == b"battery-%d" % n for a in bob.amb.named("reflectAttributeValues")),
+            alice.rtia,
+            bob.rtia,
+        )
+        alice.rtia.sendInteraction(self.command, {self.value: b"command-%d" % n}, "probe")
+        tick_until(
+            lambda: any(a[1].get(self.value) == b"command-%d" % n for a in bob.amb.named("receiveInteraction")),
+            alice.rtia,
+            bob.rtia,
+        )
+
+    def handles(self) -> tuple[int, int, int]:
+        return int(self.robot), int(self.battery), int(self.location)
+
+
+@contextlib.contextmanager
+def legit_federation(address: str) -> Iterator[Legit]:
+    """Creates TestFed with alice (publishes robot battery+location and command) and bob (subscribes to
+    robot battery and to command); resigns them and destroys TestFed afterwards."""
+    creator = rti.RTIAmbassador(address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    alice = Federate(address, "alice")
+    bob = Federate(address, "bob")
+    robot = alice.rtia.getObjectClassHandle("robot")
+    battery = alice.rtia.getAttributeHandle("battery", robot)
+    location = alice.rtia.getAttributeHandle("location", robot)
+    command = alice.rtia.getInteractionClassHandle("command")
+    value = alice.rtia.getParameterHandle("value", command)
+    alice.rtia.publishObjectClass(robot, [battery, location])
+    alice.rtia.publishInteractionClass(command)
+    bob.rtia.subscribeObjectClassAttributes(robot, [battery])
+    bob.rtia.subscribeInteractionClass(command)
+    legit = Legit(address, creator, alice, bob, robot, battery, location, command, value)
+    legit.check_working()
+    try:
+        yield legit
+    finally:
+        for fed in (alice, bob):
+            try:
+                fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+            except rti.FederateNotExecutionMember:
+                pass
+        creator.destroyFederationExecution("TestFed")
+
+
+@pytest.fixture
+def legit(rtig: RtigProcess) -> Iterator[Legit]:
+    with legit_federation(rtig.address) as fed:
+        yield fed
+
+
+@contextlib.contextmanager
+def own_rtig(tmp_path: pathlib.Path, *args: str) -> Iterator[RtigProcess]:
+    """An rtig with custom arguments, stopped by pid and checked like the `rtig` fixture does."""
+    server = RtigProcess(tmp_path, *args)
+    try:
+        yield server
+    finally:
+        status = server.stop()
+        log = server.log()
+        assert not SANITIZER_REPORT.search(log), log
+        assert status == 0, f"rtig exited with {status}; log:\n{log}"
+
+
+# ---- 1. garbage ----
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_random_garbage_is_a_protocol_error(rtig: RtigProcess, legit: Legit, seed: int) -> None:
+    """Seeded random bytes of several sizes each get their connection dropped with a protocol error."""
+    rng = random.Random(seed)
+    for size in (6, 7, 64, 1000, 65536, 1 << 20):
+        data = rng.randbytes(size)
+        (length,) = struct.unpack_from("<I", data)
+        if 2 <= length <= min(MAX_FRAME, size - 4):
+            # A plausible length: make the type unknown so the frame cannot decode by luck.
+            data = data[:4] + u16(0xFFFF) + data[6:]
+        elif 2 <= length <= MAX_FRAME:
+            # The header promises more than we send: make the length impossible instead.
+            data = u32(MAX_FRAME + 1 + rng.randrange(1 << 20)) + data[4:]
+        with raw_client(rtig.address) as hostile:
+            hostile.send(data, tolerate_drop=True)
+            hostile.wait_eof()
+            line = dropped_line(rtig, hostile)
+        assert "protocol error" in line, line
+    legit.check_working()
+
+
+def test_garbage_after_a_valid_join_resigns_the_federate(rtig: RtigProcess, legit: Legit) -> None:
+    """Garbage from a joined federate drops it, names it in the log and frees its federate name."""
+    with raw_client(rtig.address) as hostile:
+        handle = hostile.join("garbler")
+        hostile.send(random.Random(7).randbytes(4096), tolerate_drop=True)
+        hostile.wait_eof()
+        line = dropped_line(rtig, hostile)
+    assert f"(federate {handle} of 'TestFed')" in line and "protocol error" in line, line
+    again = Federate(rtig.address, "garbler")
+    again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    legit.check_working()
+
+
+# ---- 2. impossible lengths ----
+
+
+@pytest.mark.parametrize(
+    "length, why",
+    [
+        (0xFFFFFFF0, "frame length 4294967280 exceeds the limit of 67108864 bytes"),
+        (MAX_FRAME + 1, "frame length 67108865 exceeds the limit of 67108864 bytes"),
+        (1, "frame length 1 is shorter than its type field"),
+        (0, "frame length 0 is shorter than its type field"),
+    ],
+)
+def test_impossible_frame_length_is_refused_at_once(rtig: RtigProcess, legit: Legit, length: int, why: str) -> None:
+    """A header with a huge (or too small) length is dropped at once, without waiting for the body."""
+    with raw_client(rtig.address) as hostile:
+        hostile.send(u32(length) + u16(T["Hello"]))
+        hostile.wait_eof()
+        line = dropped_line(rtig, hostile)
+    assert f"protocol error: {why}" in line, line
+    legit.check_working()
+
+
+def test_huge_length_after_joining(rtig: RtigProcess, legit: Legit) -> None:
+    """A joined federate announcing a 4 GiB frame is dropped (exceeds the limit) and resigned."""
+    with raw_client(rtig.address) as hostile:
+        handle = hostile.join("bragger")
+        hostile.send(u32(0xFFFFFFF0) + u16(T["UpdateAttributes"]) + b"\0" * 100)
+        hostile.wait_eof()
+        line = dropped_line(rtig, hostile)
+    assert f"(federate {handle} of 'TestFed')" in line and "exceeds the limit" in line, line
+    legit.check_working()
+
+
+# ---- 3. truncated frame, then close ----
+
+
+@pytest.mark.parametrize("sent", [3, 6, 11])
+def test_truncated_frame_then_close(rtig: RtigProcess, legit: Legit, sent: int) -> None:
+    """A peer closing after part of a frame (header or body) is dropped `in the middle of a frame`."""
+    with raw_client(rtig.address) as hostile:
+        hostile.send(hello()[:sent])
+        hostile.sock.shutdown(socket.SHUT_WR)
+        hostile.wait_eof()
+        line = dropped_line(rtig, hostile)
+    assert f"connection closed in the middle of a frame ({sent} bytes pending)" in line, line
+    legit.check_working()
+
+
+def test_truncated_frame_then_close_after_joining(rtig: RtigProcess, legit: Legit) -> None:
+    """A joined federate dying mid-frame is dropped and resigned: its object is removed at the subscriber."""
+    with raw_client(rtig.address) as hostile:
+        handle = hostile.join("halfway")
+        robot, battery, _ = legit.handles()
+        hostile.send(frame("PublishObjectClass", u32(robot) + handles([battery])))
+        reply = hostile.call("RegisterObject", u32(robot) + string("halfway-object"))
+        assert reply.error == 0, reply.message
+        tick_until(lambda: any(a[2] == "halfway-object" for a in legit.bob.amb.named("discoverObjectInstance")), legit.bob.rtia)
+        update = frame("UpdateAttributes", u32(reply.handle) + u32(1) + u32(battery) + string(b"x" * 100))
+        hostile.send(update[:50])
+        hostile.sock.shutdown(socket.SHUT_WR)
+        hostile.wait_eof()
+        line = dropped_line(rtig, hostile)
+    assert f"(federate {handle} of 'TestFed'): connection closed in the middle of a frame (50 bytes pending)" in line
+    tick_until(lambda: any(int(a[0]) == reply.handle for a in legit.bob.amb.named("removeObjectInstance")), legit.bob.rtia)
+    legit.check_working()
+
+
+# ---- 4. truncated frame, then silence ----
+
+
+def test_truncated_frame_then_silence_times_out(tmp_path: pathlib.Path) -> None:
+    """A partial frame left alone is dropped after --frame-timeout (0.5 s), not before; idle peers stay."""
+    with own_rtig(tmp_path, "--frame-timeout", "0.5") as server, legit_federation(server.address) as legit:
+        with raw_client(server.address) as slow, raw_client(server.address) as stalled:
+            # A peer that completes its frame in time and then idles is not dropped.
+            slow.send(hello()[:5])
+            start = time.monotonic()
+            stalled.send(hello()[:7])
+            time.sleep(0.2)  # deliberately less than the timeout: the frame completes in time
+            slow.send(hello()[5:])
+            code, _ = slow.recv_frame()
+            assert code == T["Welcome"]
+            stalled.wait_eof(timeout=5)
+            elapsed = time.monotonic() - start
+            line = dropped_line(server, stalled)
+            assert "incomplete frame for too long" in line, line
+            assert 0.45 <= elapsed < 5, elapsed
+            # The idle legit federates and the slow peer outlive the timeout.
+            legit.check_working()
+            slow.ping()
+            assert slow.local not in server.log()
+
+
+# ---- 5. wrong handshakes ----
+
+
+@pytest.mark.parametrize(
+    "first, why",
+    [
+        (hello(magic=0xDEADBEEF), "expected a Hello handshake, got Hello"),
+        (hello(version=99), "protocol version 99 is not supported (gateway speaks 1)"),
+        (frame("JoinFederation", u32(1) + string("sneaky") + string("TestFed")), "expected a Hello handshake, got JoinFederation"),
+        (frame("Welcome", u16(1) + string("me")), "expected a Hello handshake, got Welcome"),
+        (frame("Hello", u32(MAGIC) + u16(VERSION) + b"extra"), "trailing bytes in Hello message"),
+        (frame("Hello", u32(MAGIC)), "truncated field in Hello message"),
+        (frame(0x7777, b""), "unknown message type 30583"),
+    ],
+    ids=["bad-magic", "version-99", "join-first", "welcome-first", "trailing-bytes", "short-hello", "unknown-type"],
+)
+def test_wrong_handshake_is_a_protocol_error(rtig: RtigProcess, legit: Legit, first: bytes, why: str) -> None:
+    """Anything but a well-formed Hello of version 1 first gets the connection dropped with a protocol error."""
+    with raw_client(rtig.address) as hostile:
+        hostile.send(first)
+        hostile.wait_eof()
+        line = dropped_line(rtig, hostile)
+    assert f"protocol error: {why}" in line, line
+    # The JoinFederation sent without a handshake was never handled: the name is free.
+    again = Federate(rtig.address, "sneaky")
+    again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    legit.check_working()
+
+
+def test_welcome_names_the_gateway(rtig: RtigProcess) -> None:
+    """The Welcome answering a Hello carries protocol version 1 and the server name."""
+    with raw_client(rtig.address) as client:
+        assert client.handshake() == (1, b"hlacore rtig")
+        client.ping()
+
+
+# ---- 6. services before joining ----
+
+
+@pytest.mark.parametrize(
+    "message, payload",
+    [
+        ("PublishObjectClass", u32(1) + handles([])),
+        ("SubscribeInteractionClass", u32(1) + boolean(True)),
+        ("SyncPointAchieved", string("x")),
+        ("Hello", u32(MAGIC) + u16(VERSION)),
+    ],
+)
+def test_service_before_join_is_a_protocol_error(rtig: RtigProcess, legit: Legit, message: str, payload: bytes) -> None:
+    """After the handshake, a federation service sent before joining drops the connection (`sent before joining`)."""
+    with raw_client(rtig.address) as hostile:
+        hostile.handshake()
+        hostile.send(frame(message, payload))
+        hostile.wait_eof()
+        line = dropped_line(rtig, hostile)
+    assert f"protocol error: {message} sent before joining a federation" in line, line
+    legit.check_working()
+
+
+def test_request_before_join_gets_an_error_reply(rtig: RtigProcess) -> None:
+    """RegisterObject and ResignFederation before joining are answered with an error Reply, not a drop."""
+    with raw_client(rtig.address) as client:
+        client.handshake()
+        assert client.call("RegisterObject", u32(1) + string("")).error != 0
+        assert client.call("ResignFederation", u8(3)).error != 0
+        client.ping()
+    assert "dropped" not in rtig.log()
+
+
+# ---- 7. handles of nothing ----
+
+
+@pytest.mark.parametrize(
+    "message, payload, why",
+    [
+        ("PublishObjectClass", u32(999) + handles([]), "object class handle 999 is not defined in the FOM"),
+        ("SubscribeObjectClass", u32(999) + handles([]) + boolean(True), "object class handle 999 is not defined in the FOM"),
+        ("SubscribeInteractionClass", u32(999) + boolean(True), "interaction class handle 999 is not defined in the FOM"),
+        ("PublishObjectClass", None, "attribute handle 999 is not defined for class"),
+    ],
+    ids=["publish-class-999", "subscribe-class-999", "subscribe-interaction-999", "publish-attribute-999"],
+)
+def test_undefined_handles_drop_and_resign_the_federate(
+    rtig: RtigProcess, legit: Legit, message: str, payload: Optional[bytes], why: str
+) -> None:
+    """A joined federate naming a handle the FOM lacks is dropped (`not defined`) and resigned: its object is
+    removed, a sync point does not wait for it, and its name is free again."""
+    robot, battery, _ = legit.handles()
+    with raw_client(rtig.address) as hostile:
+        handle = hostile.join("hostile")
+        hostile.send(frame("PublishObjectClass", u32(robot) + handles([battery])))
+        reply = hostile.call("RegisterObject", u32(robot) + string("hostile-object"))
+        assert reply.error == 0, reply.message
+        bob = legit.bob
+        tick_until(lambda: any(a[2] == "hostile-object" for a in bob.amb.named("discoverObjectInstance")), bob.rtia)
+        if payload is None:
+            payload = u32(robot) + handles([battery, 999])
+        hostile.send(frame(message, payload))
+        hostile.wait_eof()
+        line = dropped_line(rtig, hostile)
+    assert f"(federate {handle} of 'TestFed'): protocol error: " in line and why in line, line
+    tick_until(lambda: any(int(a[0]) == reply.handle for a in bob.amb.named("removeObjectInstance")), bob.rtia)
+    # A whole-federation sync point now involves alice and bob only.
+    alice = legit.alice
+    alice.rtia.registerFederationSynchronizationPoint("after-hostile", "")
+    for fed in (alice, bob):
+        tick_until(lambda: ("after-hostile", "") in fed.amb.named("announceSynchronizationPoint"), alice.rtia, bob.rtia)
+        fed.rtia.synchronizationPointAchieved("after-hostile")
+    tick_until(
+        lambda: all(("after-hostile",) in f.amb.named("federationSynchronized") for f in (alice, bob)), alice.rtia, bob.rtia
+    )
+    again = Federate(rtig.address, "hostile")
+    again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    legit.check_working()
+
+
+@pytest.mark.parametrize(
+    "message, payload, why",
+    [
+        ("Reply", u32(1) + u16(0) + string("") + u32(0) + string("") + string(""), "Reply is not a federation service message"),
+        ("Hello", u32(MAGIC) + u16(VERSION), "Hello is not a federation service message"),
+        ("SetAdvisorySwitch", u8(77) + boolean(True), "unknown advisory switch 77"),
+        ("SubscribeInteractionClass", u32(1) + u8(2), "bad boolean in SubscribeInteractionClass message"),
+        ("SubscribeObjectClass", u32(1) + u32(0x40000000) + boolean(True), "element count exceeds frame in SubscribeObjectClass"),
+    ],
+    ids=["reply", "second-hello", "advisory-77", "bad-bool", "huge-count"],
+)
+def test_joined_federate_sending_nonsense_is_dropped(
+    rtig: RtigProcess, legit: Legit, message: str, payload: bytes, why: str
+) -> None:
+    """A joined federate sending a gateway-only or malformed message is dropped and resigned, with a reason."""
+    with raw_client(rtig.address) as hostile:
+        handle = hostile.join("nonsense")
+        hostile.send(frame(message, payload))
+        hostile.wait_eof()
+        line = dropped_line(rtig, hostile)
+    assert f"(federate {handle} of 'TestFed'): protocol error: " in line and why in line, line
+    again = Federate(rtig.address, "nonsense")
+    again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    legit.check_working()
+
+
+# ---- 8. a client that never reads ----
+
+
+class Counter(rti.FederateAmbassador):
+    """Counts reflections without keeping their (large) values."""
+
+    def __init__(self) -> None:
+        self.discovered: list[str] = []
+        self.reflected = 0
+        self.last_size = 0
+
+    def discoverObjectInstance(self, obj: Any, cls: Any, name: str) -> None:
+        self.discovered.append(name)
+
+    def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], *rest: Any) -> None:
+        self.reflected += 1
+        self.last_size = sum(len(v) for v in attributes.values())
+
+
+def test_client_that_never_reads_is_dropped(rtig: RtigProcess, legit: Legit) -> None:
+    """A subscriber that never reads is dropped once 64 MiB are queued for it (`peer is not reading`); the
+    publisher and a reading subscriber go on (the latter gets every update)."""
+    robot, _, location = legit.handles()
+    started = time.monotonic()
+    with raw_client(rtig.address, rcvbuf=4096) as sloth:
+        sloth_handle = sloth.join("sloth")
+        sloth.send(frame("SubscribeObjectClass", u32(robot) + handles([location]) + boolean(True)))
+        sloth.ping()  # the subscription is in place; from here on the sloth never reads
+
+        carol_amb = Counter()
+        carol = rti.RTIAmbassador(rtig.address)
+        carol.joinFederationExecution("carol", "TestFed", carol_amb)
+        try:
+            carol.subscribeObjectClassAttributes(legit.robot, [legit.location])
+            alice = legit.alice.rtia
+            obj = alice.registerObjectInstance(legit.robot, "heavy")
+            tick_until(lambda: "heavy" in carol_amb.discovered, carol, alice)
+            value = bytes(64 << 10)
+            updates = 1200  # 75 MiB: beyond the 64 MiB limit even with a few MiB in kernel buffers
+            for i in range(updates):
+                alice.updateAttributeValues(obj, {legit.location: value}, "heavy")
+                # carol keeps up (a reader lagging 64 MiB behind would be dropped as well).
+                tick_until(lambda: carol_amb.reflected > i - 32, carol, alice)
+                assert time.monotonic() - started < 25, f"too slow: {i} updates sent"
+            line = dropped_line(rtig, sloth, timeout=10)
+            tick_until(lambda: carol_amb.reflected == updates, carol, alice, timeout=10)
+            assert carol_amb.last_size == len(value)
+        finally:
+            carol.resignFederationExecution(rti.ResignAction.NoAction)
+        assert f"(federate {sloth_handle} of 'TestFed'): peer is not reading: " in line, line
+        queued = int(re.search(r"peer is not reading: (\d+) bytes queued \(limit (\d+)\)", line).group(1))  # type: ignore[union-attr]
+        assert queued > MAX_FRAME
+        assert "(limit 67108864)" in line
+        assert "carol" not in rtig.log() and "alice" not in rtig.log()
+        sloth.wait_eof(timeout=10)
+    legit.check_working()
+    assert time.monotonic() - started < 30
+
+
+# ---- 9. a federate killed with SIGKILL ----
+
+
+def read_line(proc: subprocess.Popen[str], timeout: float) -> str:
+    assert proc.stdout is not None
+    ready, _, _ = select.select([proc.stdout], [], [], timeout)
+    if not ready:
+        raise AssertionError(f"no output from pid {proc.pid} within {timeout} s")
+    return proc.stdout.readline()
+
+
+@pytest.mark.parametrize("achieve_before_kill", [True, False], ids=["achieved-before", "achieved-after"])
+def test_killed_federate_is_resigned(rtig: RtigProcess, achieve_before_kill: bool) -> None:
+    """A federate killed with SIGKILL while owning an object and holding up a sync point is resigned: its
+    object is removed and the sync point completes without it."""
+    creator = rti.RTIAmbassador(rtig.address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    watcher = Federate(rtig.address, "watcher")
+    victim: Optional[subprocess.Popen[str]] = None
+    try:
+        robot = watcher.rtia.getObjectClassHandle("robot")
+        location = watcher.rtia.getAttributeHandle("location", robot)
+        watcher.rtia.subscribeObjectClassAttributes(robot, [location])
+        victim = python_subprocess("victim_federate.py", rtig.address)
+        line = read_line(victim, timeout=15)
+        assert line.startswith("ready "), (line, victim.stderr.read() if victim.poll() is not None else "")  # type: ignore[union-attr]
+        _, victim_handle, victim_object = line.split()
+        tick_until(lambda: any(a[2] == "victim" for a in watcher.amb.named("discoverObjectInstance")), watcher.rtia)
+        (obj, _, _) = next(a for a in watcher.amb.named("discoverObjectInstance") if a[2] == "victim")
+        assert int(obj) == int(victim_object)
+        tick_until(lambda: any(a[0] == obj for a in watcher.amb.named("reflectAttributeValues")), watcher.rtia)
+
+        watcher.rtia.registerFederationSynchronizationPoint("checkpoint", "tag")
+        tick_until(lambda: ("checkpoint", "tag") in watcher.amb.named("announceSynchronizationPoint"), watcher.rtia)
+        assert ("checkpoint",) in watcher.amb.named("synchronizationPointRegistrationSucceeded")
+        if achieve_before_kill:
+            watcher.rtia.synchronizationPointAchieved("checkpoint")
+            settle(watcher.rtia, seconds=0.3)
+            assert not watcher.amb.named("federationSynchronized"), "the victim has not achieved the point"
+
+        victim.send_signal(signal.SIGKILL)
+        assert victim.wait(timeout=10) == -signal.SIGKILL
+        tick_until(lambda: any(a[0] == obj for a in watcher.amb.named("removeObjectInstance")), watcher.rtia)
+        if not achieve_before_kill:
+            watcher.rtia.synchronizationPointAchieved("checkpoint")
+        tick_until(lambda: ("checkpoint",) in watcher.amb.named("federationSynchronized"), watcher.rtia)
+        dropped = wait_for_log(rtig, rf"rtig: dropped 127\.0\.0\.1:\d+ \(federate {victim_handle} of 'TestFed'\): [^\n]*")
+        assert "connection closed by peer" in dropped or "Connection reset by peer" in dropped, dropped
+        # The dead federate's name is free again and the federation can be destroyed once the rest resign.
+        again = Federate(rtig.address, "victim")
+        again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    finally:
+        if victim is not None:
+            if victim.poll() is None:
+                victim.kill()
+            victim.wait(timeout=10)
+            for stream in (victim.stdout, victim.stderr):
+                if stream is not None:
+                    stream.close()
+        watcher.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+    creator.destroyFederationExecution("TestFed")
+
+
+# ---- a FED name that is not a regular file ----
+
+
+def test_fed_name_naming_a_fifo_does_not_freeze_the_gateway(
+    tmp_path: pathlib.Path, rtig: RtigProcess, legit: Legit
+) -> None:
+    """CreateFederation naming (by absolute path, outside any --fom-path) a FIFO nobody writes to is answered
+    promptly with an error, and the gateway keeps serving everyone else meanwhile."""
+    fifo = tmp_path / "trap.fed"
+    os.mkfifo(fifo)
+    try:
+        with raw_client(rtig.address) as hostile, raw_client(rtig.address) as bystander:
+            hostile.handshake()
+            hostile.send(frame("CreateFederation", u32(1) + string("Trap") + string(str(fifo)) + string("")))
+            # Another client must still get its handshake answered...
+            try:
+                bystander.handshake()
+                responsive = True
+            except (AssertionError, socket.timeout):
+                responsive = False
+            assert responsive, "the gateway froze: it blocks opening the FIFO named by a client"
+            # ... and the creator gets an error reply, not silence.
+            code, payload = hostile.recv_frame()
+            assert code == T["Reply"] and Cursor(payload[4:]).take("<H") != 0
+    finally:
+        # Unfreeze the gateway (if it is blocked opening the FIFO for reading) so that it can stop.
+        try:
+            os.close(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK))
+        except OSError:  # ENXIO: nobody has it open for reading
+            pass
+    legit.check_working()

@@ -1,0 +1,251 @@
+"""The `rtig` command line: readiness line, signals, argument errors, --fom-path and --verbose."""
+
+from __future__ import annotations
+
+import pathlib
+import re
+import shutil
+import signal
+import socket
+import subprocess
+import time
+from typing import Iterator
+
+import pytest
+
+from hlacore import rti
+
+from conftest import ROBOT_FED, SANITIZER_REPORT, Federate, RtigProcess, rtig_executable
+
+
+def run_rtig(*args: str) -> subprocess.CompletedProcess[str]:
+    """Run rtig to completion (for the arguments that make it exit at once)."""
+    return subprocess.run(
+        [rtig_executable(), *args], capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=10
+    )
+
+
+def wait_for_log(server: RtigProcess, pattern: str, timeout: float = 5.0) -> str:
+    """Poll the rtig log until `pattern` (a regex) matches a line; return that line."""
+    deadline = time.monotonic() + timeout
+    while True:
+        match = re.search(pattern, server.log())
+        if match:
+            return match.group(0)
+        if time.monotonic() > deadline:
+            raise AssertionError(f"{pattern!r} not logged within {timeout} s; log:\n{server.log()}")
+        time.sleep(0.02)
+
+
+@pytest.fixture
+def server_factory(tmp_path: pathlib.Path) -> Iterator[list[RtigProcess]]:
+    """rtig instances started by a test; each is stopped by pid and checked for sanitizer reports."""
+    started: list[RtigProcess] = []
+    yield started
+    for server in started:
+        server.stop()
+        assert not SANITIZER_REPORT.search(server.log()), server.log()
+
+
+def test_readiness_line_is_the_only_stdout(tmp_path: pathlib.Path) -> None:
+    """`--port 0` prints exactly one line `rtig listening on 127.0.0.1:<free port>` (default host) and nothing else."""
+    server = RtigProcess(tmp_path)
+    try:
+        assert server.host == "127.0.0.1"
+        assert 0 < server.port < 65536
+        with socket.create_connection(("127.0.0.1", server.port), timeout=5):
+            pass
+        server.proc.send_signal(signal.SIGTERM)
+        server.proc.wait(timeout=10)
+        assert server.proc.stdout is not None
+        assert server.proc.stdout.read() == b""
+    finally:
+        status = server.stop()
+    assert status == 0, server.log()
+    assert not SANITIZER_REPORT.search(server.log()), server.log()
+
+
+def test_two_instances_get_different_free_ports(tmp_path: pathlib.Path, server_factory: list[RtigProcess]) -> None:
+    """Two `--port 0` servers each report their own real port, and each accepts a federate."""
+    server_factory.append(RtigProcess(tmp_path))
+    server_factory.append(RtigProcess(tmp_path))
+    a, b = server_factory
+    assert a.port != b.port
+    for server in (a, b):
+        rtia = rti.RTIAmbassador(server.address)
+        rtia.createFederationExecution("TestFed", ROBOT_FED)
+        rtia.destroyFederationExecution("TestFed")
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "SIGINT"])
+def test_signal_stops_cleanly_with_a_joined_federate(tmp_path: pathlib.Path, signum: int) -> None:
+    """SIGTERM/SIGINT stop rtig within seconds with status 0 and `rtig: stopped`, even with a federate joined."""
+    server = RtigProcess(tmp_path)
+    try:
+        creator = rti.RTIAmbassador(server.address)
+        creator.createFederationExecution("TestFed", ROBOT_FED)
+        fed = Federate(server.address, "joined")
+        assert int(fed.handle) > 0
+        start = time.monotonic()
+        server.proc.send_signal(signum)
+        status = server.proc.wait(timeout=5)
+        assert time.monotonic() - start < 5
+    finally:
+        server.stop()
+    log = server.log()
+    assert status == 0, log
+    assert "rtig: stopped" in log
+    assert not SANITIZER_REPORT.search(log), log
+
+
+def test_help_prints_usage_on_stdout_and_exits_0() -> None:
+    """`--help` prints the usage (naming every option) on stdout and exits 0."""
+    result = run_rtig("--help")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("usage: rtig")
+    for option in ("--host", "--port", "--fom-path", "--frame-timeout", "--verbose"):
+        assert option in result.stdout
+    assert "rtig listening" not in result.stdout
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--bogus"], "unknown argument '--bogus'"),
+        (["--port", "abc"], "invalid port 'abc'"),
+        (["--port", "70000"], "invalid port '70000'"),
+        (["--port", "-1"], "invalid port '-1'"),
+        (["--port", ""], "invalid port ''"),
+        (["--port", "80x"], "invalid port '80x'"),
+        (["--port"], "--port needs a value"),
+        (["--host"], "--host needs a value"),
+        (["--fom-path"], "--fom-path needs a value"),
+        (["--frame-timeout"], "--frame-timeout needs a value"),
+        (["--frame-timeout", "0"], "invalid --frame-timeout '0'"),
+        (["--frame-timeout", "-1"], "invalid --frame-timeout '-1'"),
+        (["--frame-timeout", "soon"], "invalid --frame-timeout 'soon'"),
+        (["--port", "0", "extra"], "unknown argument 'extra'"),
+    ],
+)
+def test_bad_arguments_exit_2_with_a_message(args: list[str], message: str) -> None:
+    """A bad or missing argument exits 2 with a message and the usage on stderr, nothing on stdout."""
+    result = run_rtig(*args)
+    assert result.returncode == 2, (result.stdout, result.stderr)
+    assert message in result.stderr
+    assert "usage: rtig" in result.stderr
+    assert result.stdout == ""
+
+
+def test_port_in_use_exits_1_naming_the_address() -> None:
+    """A port already listened on makes rtig exit 1 with a message naming HOST:PORT."""
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen(1)
+        port = taken.getsockname()[1]
+        result = run_rtig("--port", str(port))
+    assert result.returncode == 1, (result.stdout, result.stderr)
+    assert f"127.0.0.1:{port}" in result.stderr
+    assert "rtig listening" not in result.stdout
+
+
+@pytest.fixture
+def fom_dir(tmp_path: pathlib.Path, monkeypatch: pytest.MonkeyPatch) -> pathlib.Path:
+    """A --fom-path directory holding only-on-gateway.fed; the test runs from a directory without it."""
+    foms = tmp_path / "foms"
+    foms.mkdir()
+    shutil.copy(ROBOT_FED, foms / "only-on-gateway.fed")
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
+    return foms
+
+
+def test_fom_path_finds_a_fed_file_the_federate_cannot_read(
+    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: list[RtigProcess]
+) -> None:
+    """A FED name missing from the federate's CWD is found in the gateway's --fom-path; joining resolves handles."""
+    assert not pathlib.Path("only-on-gateway.fed").exists()
+    server = RtigProcess(tmp_path, "--fom-path", str(tmp_path / "empty-dir"), "--fom-path", str(fom_dir))
+    server_factory.append(server)
+    creator = rti.RTIAmbassador(server.address)
+    creator.createFederationExecution("F", "only-on-gateway.fed")
+    fed = Federate(server.address, "joiner", federation="F")
+    robot = fed.rtia.getObjectClassHandle("robot")
+    assert fed.rtia.getObjectClassHandle(fed.rtia.getObjectClassName(robot)) == robot
+    location = fed.rtia.getAttributeHandle("location", robot)
+    assert fed.rtia.getAttributeName(location, robot) == "location"
+    command = fed.rtia.getInteractionClassHandle("command")
+    assert fed.rtia.getParameterName(fed.rtia.getParameterHandle("value", command), command) == "value"
+    fed.rtia.publishObjectClass(robot, [location])
+    fed.rtia.registerObjectInstance(robot, "r1")
+    fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+    creator.destroyFederationExecution("F")
+
+
+def test_fom_path_uses_the_base_name_of_a_relative_path(
+    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: list[RtigProcess]
+) -> None:
+    """A relative FED path with directories the federate cannot read is looked up by its base name in --fom-path."""
+    server = RtigProcess(tmp_path, "--fom-path", str(fom_dir))
+    server_factory.append(server)
+    creator = rti.RTIAmbassador(server.address)
+    creator.createFederationExecution("F", "no/such/dir/only-on-gateway.fed")
+    fed = Federate(server.address, "joiner", federation="F")
+    assert int(fed.rtia.getObjectClassHandle("robot")) > 0
+    fed.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    creator.destroyFederationExecution("F")
+
+
+def test_fom_path_name_found_nowhere_raises_could_not_open_fed(
+    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: list[RtigProcess]
+) -> None:
+    """A FED name that neither the federate nor any --fom-path directory has raises CouldNotOpenFED."""
+    server = RtigProcess(tmp_path, "--fom-path", str(fom_dir))
+    server_factory.append(server)
+    creator = rti.RTIAmbassador(server.address)
+    with pytest.raises(rti.CouldNotOpenFED, match="nowhere.fed"):
+        creator.createFederationExecution("F", "nowhere.fed")
+    with pytest.raises(rti.CouldNotOpenFED):
+        creator.createFederationExecution("F", str(tmp_path / "absent" / "elsewhere.fed"))
+    with pytest.raises(rti.FederationExecutionDoesNotExist):
+        creator.destroyFederationExecution("F")
+
+
+def test_without_fom_path_a_missing_fed_raises_could_not_open_fed(
+    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: list[RtigProcess]
+) -> None:
+    """Without --fom-path the gateway does not find the file either: CouldNotOpenFED."""
+    server = RtigProcess(tmp_path)
+    server_factory.append(server)
+    creator = rti.RTIAmbassador(server.address)
+    with pytest.raises(rti.CouldNotOpenFED):
+        creator.createFederationExecution("F", "only-on-gateway.fed")
+
+
+def test_verbose_logs_the_join(tmp_path: pathlib.Path, server_factory: list[RtigProcess]) -> None:
+    """`--verbose` logs the connection, the federation's creation and a federate's join to stderr."""
+    server = RtigProcess(tmp_path, "--verbose")
+    server_factory.append(server)
+    creator = rti.RTIAmbassador(server.address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    fed = Federate(server.address, "chatty")
+    wait_for_log(server, rf"rtig: 'chatty' joined 'TestFed' as federate {int(fed.handle)}\n")
+    log = server.log()
+    assert "rtig: connection from 127.0.0.1:" in log
+    assert "rtig: created federation 'TestFed'" in log
+    fed.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    creator.destroyFederationExecution("TestFed")
+    wait_for_log(server, r"rtig: destroyed federation 'TestFed'")
+
+
+def test_quiet_by_default(tmp_path: pathlib.Path, server_factory: list[RtigProcess]) -> None:
+    """Without --verbose a join and an orderly disconnect are not logged."""
+    server = RtigProcess(tmp_path)
+    server_factory.append(server)
+    creator = rti.RTIAmbassador(server.address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    fed = Federate(server.address, "quiet")
+    fed.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    creator.destroyFederationExecution("TestFed")
+    del fed, creator
+    assert "joined" not in server.log()

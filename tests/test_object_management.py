@@ -260,6 +260,7 @@ def test_unsubscribe_stops_delivery(pair):
     tick_until(lambda: sub.amb.named("discoverObjectInstance"), sub.rtia)
     sub.rtia.unsubscribeObjectClass(robot)
     sub.rtia.unsubscribeInteractionClass(command)
+    barrier(sub.rtia)
     with pytest.raises(rti.ObjectClassNotSubscribed):
         sub.rtia.unsubscribeObjectClass(robot)
     with pytest.raises(rti.InteractionClassNotSubscribed):

@@ -561,7 +561,7 @@ def test_undefined_handles_drop_and_resign_the_federate(
 @pytest.mark.parametrize(
     "message, payload, why",
     [
-        ("Reply", u32(1) + u16(0) + string("") + u32(0) + string("") + string(""), "Reply is not a federation service message"),
+        ("Reply", u32(1) + u16(0) + string("") + u32(0) + string("") + string("") + struct.pack("<d", 0.0), "Reply is not a federation service message"),
         ("Hello", u32(MAGIC) + u16(VERSION), "Hello is not a federation service message"),
         ("SetAdvisorySwitch", u8(77) + boolean(True), "unknown advisory switch 77"),
         ("SubscribeInteractionClass", u32(1) + u8(2), "bad boolean in SubscribeInteractionClass message"),

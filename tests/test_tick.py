@@ -10,7 +10,7 @@ import pytest
 
 import hlacore.rti as rti
 
-from conftest import barrier, python_subprocess, tick_until
+from conftest import ROBOT_FED, barrier, python_subprocess, tick_until
 
 
 @pytest.fixture
@@ -121,7 +121,7 @@ def test_fileno_becomes_readable_when_a_callback_arrives(robot_pair):
 def test_ctrl_c_interrupts_a_blocking_tick(gateway_address):
     """SIGINT ends a tick(30, 30) wait in another process with KeyboardInterrupt, promptly."""
     creator = rti.RTIAmbassador(gateway_address)
-    creator.createFederationExecution("TestFed", "tests/data/robot.fed")
+    creator.createFederationExecution("TestFed", ROBOT_FED)
     proc = python_subprocess("tick_forever.py", gateway_address)
     try:
         assert proc.stdout.readline() == "ticking\n"

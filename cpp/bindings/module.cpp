@@ -11,6 +11,7 @@
 #include "fed_parser/fom.hpp"
 #include "rti/client.hpp"
 #include "rti/gateway.hpp"
+#include "rti/time_manager.hpp"
 
 namespace py = pybind11;
 namespace fom = hlacore::fom;
@@ -494,6 +495,73 @@ PYBIND11_MODULE(_core, m) {
             auto m = c.pop_callback();
             if (!m) return py::none();
             return to_callback(*m);
+        });
+
+    // The pure time manager, exposed for the property tests (tests/test_time_manager_properties.py).
+    using hlacore::AdvanceKind;
+    using hlacore::TimeManager;
+    py::class_<TimeManager>(m, "_TimeManager")
+        .def(py::init<>())
+        .def("add_federate", &TimeManager::add_federate)
+        .def("remove_federate", &TimeManager::remove_federate)
+        .def("enable_regulation", &TimeManager::enable_regulation)
+        .def("disable_regulation", &TimeManager::disable_regulation)
+        .def("enable_constrained", &TimeManager::enable_constrained)
+        .def("disable_constrained", [](TimeManager& tm, std::uint32_t f) {
+            py::list out;
+            for (auto& frame : tm.disable_constrained(f)) out.append(py::bytes(frame));
+            return out;
+        })
+        .def("set_asynchronous_delivery", &TimeManager::set_asynchronous_delivery)
+        .def("modify_lookahead", &TimeManager::modify_lookahead)
+        .def("request", [](TimeManager& tm, std::uint32_t f, int kind, double t) {
+            if (kind < 1 || kind > 5) throw py::value_error("kind must be 1-5");
+            tm.request(f, static_cast<AdvanceKind>(kind), t);
+        })
+        .def("is_tso", &TimeManager::is_tso)
+        .def("holds_receive_order", &TimeManager::holds_receive_order)
+        .def("enqueue_tso", [](TimeManager& tm, std::uint32_t receiver, double t, std::uint32_t sender,
+                               std::uint64_t serial, py::bytes payload) {
+            tm.enqueue_tso(receiver, hlacore::TsoMessage{t, sender, serial, std::string(payload)});
+        })
+        .def("enqueue_receive_order",
+             [](TimeManager& tm, std::uint32_t receiver, py::bytes payload) { tm.enqueue_receive_order(receiver, payload); })
+        .def("retract", [](TimeManager& tm, std::uint32_t sender, std::uint64_t serial) {
+            return tm.retract(sender, serial).size();
+        })
+        .def("release", [](TimeManager& tm) {
+            py::list out;
+            for (auto& r : tm.release()) {
+                py::list frames;
+                for (auto& frame : r.frames) frames.append(py::bytes(frame));
+                out.append(py::make_tuple(r.federate, frames, r.grant ? py::cast(*r.grant) : py::none(),
+                                          r.constrained_enabled ? py::cast(*r.constrained_enabled) : py::none()));
+            }
+            return out;
+        })
+        .def("output_bound", &TimeManager::output_bound)
+        .def("lbts", &TimeManager::lbts)
+        .def("min_next_event_time", &TimeManager::min_next_event_time)
+        .def("federate_time", &TimeManager::federate_time)
+        .def("status", [](TimeManager& tm) {
+            py::list out;
+            for (const auto& s : tm.status()) {
+                py::dict d;
+                d["federate"] = s.federate;
+                d["time"] = s.time;
+                d["lookahead"] = s.lookahead;
+                d["regulating"] = s.regulating;
+                d["constrained"] = s.constrained;
+                d["asynchronous_delivery"] = s.asynchronous_delivery;
+                d["pending"] = static_cast<int>(s.pending);
+                d["pending_time"] = s.pending_time;
+                d["queued_tso"] = s.queued_tso;
+                d["queued_ro"] = s.queued_ro;
+                d["lbts"] = s.lbts;
+                d["output_bound"] = s.output_bound;
+                out.append(d);
+            }
+            return out;
         });
 
     m.def("_transportation_handle", [](std::uint32_t v) { return TransportationHandle{v}; });

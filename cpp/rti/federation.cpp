@@ -1,6 +1,7 @@
 #include "rti/federation.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hlacore {
 
@@ -21,6 +22,7 @@ FederateHandle Federation::join(const std::string& federate_name) {
     }
     const FederateHandle h = next_federate_++;
     federates_[h].name = federate_name;
+    time_.add_federate(h);
     return h;
 }
 
@@ -66,6 +68,8 @@ void Federation::resign(FederateHandle h, wire::ResignAction action) {
         }
     }
     federates_.erase(h);
+    time_.remove_federate(h);
+    routed_.erase(h);
     std::vector<std::string> labels;
     for (auto& [label, point] : sync_points_) {
         point.members.erase(h);
@@ -74,6 +78,7 @@ void Federation::resign(FederateHandle h, wire::ResignAction action) {
     }
     for (const auto& label : labels) check_sync_point(label);
     update_advisories();
+    release_time();  // those blocked on the departed federate may advance now
 }
 
 std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle h, fom::Handle cls_handle,
@@ -178,10 +183,60 @@ void Federation::remove_object(ObjectHandle oh, FederateHandle by, const std::st
     auto it = objects_.find(oh);
     if (it == objects_.end()) return;
     for (auto& [gh, g] : federates_) {
-        if (g.known.erase(oh) && gh != by) outbox_.send(gh, wire::RemoveObject{oh, tag, time, by, serial});
+        if (!g.known.erase(oh) || gh == by) continue;
+        if (time && time_.is_tso(by, gh)) {
+            deliver_timestamp_order(gh, wire::RemoveObject{oh, tag, time, by, serial}, by, serial, *time);
+        } else {
+            deliver_receive_order(gh, wire::RemoveObject{oh, tag, std::nullopt, by, serial});
+        }
     }
     object_names_.erase(it->second.name);
     objects_.erase(it);
+}
+
+template <class M>
+void Federation::deliver_receive_order(FederateHandle to, const M& message) {
+    if (!time_.holds_receive_order(to)) {
+        outbox_.send(to, message);
+        return;
+    }
+    std::string frame;
+    wire::encode(frame, message);
+    time_.enqueue_receive_order(to, std::move(frame));
+}
+
+template <class M>
+void Federation::deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender,
+                                         std::uint64_t serial, double time) {
+    TsoMessage queued{time, sender, serial, {}};
+    wire::encode(queued.frame, message);
+    time_.enqueue_tso(to, std::move(queued));
+    Routed& routed = routed_[sender][serial];
+    routed.time = time;
+    routed.receivers.push_back(to);
+}
+
+void Federation::release_time() {
+    for (auto& r : time_.release()) {
+        if (!federates_.count(r.federate)) continue;
+        std::string& out = outbox_.buffer(r.federate);
+        if (r.constrained_enabled) wire::encode(out, wire::TimeConstrainedEnabled{*r.constrained_enabled});
+        for (const auto& frame : r.frames) out.append(frame);
+        if (r.grant) {
+            wire::encode(out, wire::TimeAdvanceGrant{*r.grant});
+            // A message at or below the sender's time can no longer be retracted (HLA 1.3 §8.21).
+            auto routed = routed_.find(r.federate);
+            if (routed != routed_.end()) {
+                for (auto it = routed->second.begin(); it != routed->second.end();)
+                    it = it->second.time <= *r.grant ? routed->second.erase(it) : std::next(it);
+            }
+        }
+    }
+}
+
+double Federation::query_time(FederateHandle f, wire::TimeQuery which) {
+    federate(f);
+    return which == wire::TimeQuery::Lbts ? time_.lbts(f) : time_.min_next_event_time(f);
 }
 
 // Start/stop registration and turn interactions on/off follow real subscriber changes (HLA 1.3 §5.10-5.13):
@@ -368,25 +423,37 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
     reflect.tag = m.tag;
     reflect.sender = from;
     reflect.serial = m.serial;
-    // Without time management every delivery is receive order (HLA 1.3 §8.1.1: TSO needs a regulating sender).
-    reflect.order = static_cast<std::uint8_t>(fom::Order::Receive);
+    wire::ReflectAttributes timed = reflect;
+    timed.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
+    timed.time = m.time;
     for (auto& [gh, g] : federates_) {
         if (gh == from) continue;
         const fom::Handle known = known_class(g, obj.object_class);
         if (known == 0) continue;
         if (!g.known.count(m.object)) discover(gh, g, m.object, obj);
         const auto& wanted = g.subscribed.at(known);
+        // HLA 1.3 §8.1.1: timestamp order needs a time, a regulating sender, a constrained receiver and
+        // `timestamp` in the FOM; each attribute goes its own way, so one update may split in two.
+        const bool tso = m.time && time_.is_tso(from, gh);
         reflect.values.clear();
+        timed.values.clear();
         for (const auto& pair : m.values) {
             // Values of attributes the sender does not own are not reflected (clients check this first).
             auto owner = obj.owners.find(pair.first);
-            if (wanted.count(pair.first) && owner != obj.owners.end() && owner->second == from)
-                reflect.values.push_back(pair);
+            if (!wanted.count(pair.first) || owner == obj.owners.end() || owner->second != from) continue;
+            const auto* attr = cls.attribute(pair.first);
+            (tso && attr->order == fom::Order::Timestamp ? timed : reflect).values.push_back(pair);
         }
-        if (reflect.values.empty()) continue;
-        reflect.transport = static_cast<std::uint8_t>(cls.attribute(reflect.values.front().first)->transport);
-        outbox_.send(gh, reflect);
+        if (!timed.values.empty()) {
+            timed.transport = static_cast<std::uint8_t>(cls.attribute(timed.values.front().first)->transport);
+            deliver_timestamp_order(gh, timed, from, m.serial, *m.time);
+        }
+        if (!reflect.values.empty()) {
+            reflect.transport = static_cast<std::uint8_t>(cls.attribute(reflect.values.front().first)->transport);
+            deliver_receive_order(gh, reflect);
+        }
     }
+    release_time();
 }
 
 void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
@@ -401,8 +468,8 @@ void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
     receive.tag = m.tag;
     receive.sender = from;
     receive.serial = m.serial;
-    receive.order = static_cast<std::uint8_t>(fom::Order::Receive);
     receive.transport = static_cast<std::uint8_t>(sent_class.transport);
+    const bool timestamped = m.time && sent_class.order == fom::Order::Timestamp;
     for (auto& [gh, g] : federates_) {
         if (gh == from) continue;
         const fom::Handle as = receiving_interaction_class(g, m.interaction_class);
@@ -413,15 +480,89 @@ void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
         receive.values.clear();
         for (const auto& pair : m.values)
             if (received_class->parameter(pair.first)) receive.values.push_back(pair);
-        outbox_.send(gh, receive);
+        if (timestamped && time_.is_tso(from, gh)) {
+            receive.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
+            receive.time = m.time;
+            deliver_timestamp_order(gh, receive, from, m.serial, *m.time);
+        } else {
+            receive.order = static_cast<std::uint8_t>(fom::Order::Receive);
+            receive.time.reset();
+            deliver_receive_order(gh, receive);
+        }
     }
+    release_time();
 }
 
 void Federation::on(FederateHandle from, const wire::DeleteObject& m) {
     federate(from);
     auto it = objects_.find(m.object);
     if (it == objects_.end() || it->second.privilege_holder != from) return;  // checked by the client
-    remove_object(m.object, from, m.tag, std::nullopt, m.serial);
+    remove_object(m.object, from, m.tag, m.time, m.serial);
+    release_time();
+}
+
+// ---- time management (HLA 1.3 §8); the rules are in time_manager.hpp and docs/time-management.md ----
+
+void Federation::on(FederateHandle from, const wire::EnableTimeRegulation& m) {
+    federate(from);
+    if (!(m.lookahead >= 0) || !std::isfinite(m.time)) throw WireError("invalid time or lookahead");
+    const double start = time_.enable_regulation(from, m.time, m.lookahead);
+    outbox_.send(from, wire::TimeRegulationEnabled{start});
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::DisableTimeRegulation&) {
+    federate(from);
+    time_.disable_regulation(from);
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::EnableTimeConstrained&) {
+    federate(from);
+    time_.enable_constrained(from);
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::DisableTimeConstrained&) {
+    federate(from);
+    for (const auto& frame : time_.disable_constrained(from)) outbox_.send_frame(from, frame);
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::TimeAdvance& m) {
+    federate(from);
+    if (m.kind < 1 || m.kind > 5 || std::isnan(m.time)) throw WireError("invalid time advance request");
+    if (m.time < time_.federate_time(from)) throw WireError("time advance request into the past");
+    time_.request(from, static_cast<AdvanceKind>(m.kind), m.time);
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::ModifyLookahead& m) {
+    federate(from);
+    if (!(m.lookahead >= 0)) throw WireError("invalid lookahead");
+    time_.modify_lookahead(from, m.lookahead);
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::SetAsynchronousDelivery& m) {
+    federate(from);
+    time_.set_asynchronous_delivery(from, m.on);
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::Retract& m) {
+    federate(from);
+    auto sender = routed_.find(from);
+    if (sender == routed_.end()) return;
+    auto it = sender->second.find(m.serial);
+    if (it == sender->second.end()) return;  // never routed TSO, or already in the past
+    const auto removed = time_.retract(from, m.serial);
+    for (FederateHandle to : it->second.receivers) {
+        // Those who already got it are asked to retract it themselves (HLA 1.3 §8.22).
+        if (federates_.count(to) && std::find(removed.begin(), removed.end(), to) == removed.end())
+            outbox_.send(to, wire::RequestRetraction{from, m.serial});
+    }
+    sender->second.erase(it);
 }
 
 void Federation::on(FederateHandle from, const wire::LocalDeleteObject& m) {

@@ -12,6 +12,7 @@
 
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
+#include "rti/time_manager.hpp"
 #include "rti/wire/codec.hpp"
 
 namespace hlacore {
@@ -29,6 +30,7 @@ public:
     void send(FederateHandle federate, const M& message) {
         wire::encode(buffer(federate), message);
     }
+    void send_frame(FederateHandle federate, const std::string& frame) { buffer(federate).append(frame); }
 };
 
 class Federation {
@@ -52,6 +54,11 @@ public:
     // Returns (object handle, object name). Throws ObjectAlreadyRegistered for a name in use.
     std::pair<ObjectHandle, std::string> register_object(FederateHandle federate, fom::Handle object_class,
                                                          const std::string& name);
+
+    // LBTS or the minimum next event time of a federate (HLA 1.3 §8.16, §8.18).
+    double query_time(FederateHandle federate, wire::TimeQuery which);
+    // Per-federate time state, for introspection.
+    std::vector<TimeFederateStatus> time_status() { return time_.status(); }
 
     // Everything else a federate sends once joined. Handles are checked against the FOM (a bad one is a
     // protocol violation: wire::WireError); objects that vanished meanwhile are ignored.
@@ -98,6 +105,15 @@ private:
     void remove_object(ObjectHandle object, FederateHandle by, const std::string& tag, const wire::OptionalTime& time,
                        std::uint64_t serial);
     void update_advisories();
+    // Sends what time management allows now: held messages, TSO messages, grants.
+    void release_time();
+    // Receive-order delivery, held back from a constrained federate that is not advancing.
+    template <class M>
+    void deliver_receive_order(FederateHandle to, const M& message);
+    // Timestamp-ordered delivery: queued until the receiver's grant allows it.
+    template <class M>
+    void deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender, std::uint64_t serial,
+                                 double time);
     void check_sync_point(const std::string& label);
 
     void on(FederateHandle from, const wire::RegisterSyncPoint& m);
@@ -117,6 +133,14 @@ private:
     void on(FederateHandle from, const wire::RequestObjectUpdate& m);
     void on(FederateHandle from, const wire::RequestClassUpdate& m);
     void on(FederateHandle from, const wire::SetAdvisorySwitch& m);
+    void on(FederateHandle from, const wire::EnableTimeRegulation& m);
+    void on(FederateHandle from, const wire::DisableTimeRegulation& m);
+    void on(FederateHandle from, const wire::EnableTimeConstrained& m);
+    void on(FederateHandle from, const wire::DisableTimeConstrained& m);
+    void on(FederateHandle from, const wire::TimeAdvance& m);
+    void on(FederateHandle from, const wire::ModifyLookahead& m);
+    void on(FederateHandle from, const wire::SetAsynchronousDelivery& m);
+    void on(FederateHandle from, const wire::Retract& m);
     template <class M>
     void on(FederateHandle from, const M& m);  // anything else: protocol violation
 
@@ -131,6 +155,14 @@ private:
     std::map<ObjectHandle, ObjectInstance> objects_;
     std::unordered_map<std::string, ObjectHandle> object_names_;
     std::map<std::string, SyncPoint> sync_points_;
+
+    TimeManager time_;
+    // TSO messages routed but perhaps not yet delivered, for retraction: sender -> serial -> receivers.
+    struct Routed {
+        double time = 0;
+        std::vector<FederateHandle> receivers;
+    };
+    std::map<FederateHandle, std::map<std::uint64_t, Routed>> routed_;
 };
 
 }  // namespace hlacore

@@ -287,7 +287,7 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
             federations_[m->federation] =
                 std::make_unique<FederationEntry>(*this, m->federation, std::move(fom), m->fed_name, std::move(text));
             if (options_.verbose) log("created federation '" + m->federation + "' from " + source);
-            reply(c, wire::Reply{m->request, 0, "", 0, "", ""});
+            reply(c, wire::Reply{m->request, 0, "", 0, "", "", 0});
         } catch (const RtiError& e) {
             error_reply(m->request, e);
         }
@@ -306,7 +306,7 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
         } else {
             federations_.erase(it);
             if (options_.verbose) log("destroyed federation '" + m->federation + "'");
-            reply(c, wire::Reply{m->request, 0, "", 0, "", ""});
+            reply(c, wire::Reply{m->request, 0, "", 0, "", "", 0});
         }
         return;
     }
@@ -324,7 +324,7 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
             c.federation = &entry;
             c.federate = h;
             entry.outbox.peers_[h] = &c;
-            reply(c, wire::Reply{m->request, 0, "", h, entry.federation.fed_text(), entry.federation.fed_name()});
+            reply(c, wire::Reply{m->request, 0, "", h, entry.federation.fed_text(), entry.federation.fed_name(), 0});
             entry.federation.announce_pending(h);
             if (options_.verbose) log("'" + m->federate + "' joined '" + m->federation + "' as federate " + std::to_string(h));
         } catch (const RtiError& e) {
@@ -339,7 +339,7 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
             c.federation->outbox.peers_.erase(c.federate);
             c.federation = nullptr;
             c.federate = 0;
-            reply(c, wire::Reply{m->request, 0, "", 0, "", ""});
+            reply(c, wire::Reply{m->request, 0, "", 0, "", "", 0});
         } catch (const RtiError& e) {
             error_reply(m->request, e);
         }
@@ -349,7 +349,17 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
         try {
             if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
             auto [handle, name] = c.federation->federation.register_object(c.federate, m->object_class, m->name);
-            reply(c, wire::Reply{m->request, 0, "", handle, name, ""});
+            reply(c, wire::Reply{m->request, 0, "", handle, name, "", 0});
+        } catch (const RtiError& e) {
+            error_reply(m->request, e);
+        }
+        return;
+    }
+    if (const auto* m = std::get_if<wire::QueryTime>(&message)) {
+        try {
+            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
+            const double value = c.federation->federation.query_time(c.federate, static_cast<wire::TimeQuery>(m->which));
+            reply(c, wire::Reply{m->request, 0, "", 0, "", "", value});
         } catch (const RtiError& e) {
             error_reply(m->request, e);
         }

@@ -63,7 +63,21 @@ using OptionalTime = std::optional<double>;
     X(ReflectAttributes)             \
     X(ReceiveInteraction)            \
     X(RemoveObject)                  \
-    X(ProvideAttributeValueUpdate)
+    X(ProvideAttributeValueUpdate)   \
+    /* time management, both ways */ \
+    X(EnableTimeRegulation)          \
+    X(DisableTimeRegulation)         \
+    X(EnableTimeConstrained)         \
+    X(DisableTimeConstrained)        \
+    X(TimeAdvance)                   \
+    X(ModifyLookahead)               \
+    X(SetAsynchronousDelivery)       \
+    X(Retract)                       \
+    X(QueryTime)                     \
+    X(TimeRegulationEnabled)         \
+    X(TimeConstrainedEnabled)        \
+    X(TimeAdvanceGrant)              \
+    X(RequestRetraction)
 
 enum class MessageType : std::uint16_t {
     Invalid = 0,
@@ -254,6 +268,54 @@ struct SetAdvisorySwitch {
     HLACORE_FIELDS(which, on)
 };
 
+// ---- time management (HLA 1.3 §8) ----
+struct EnableTimeRegulation {
+    HLACORE_TYPE(EnableTimeRegulation)
+    double time = 0;
+    double lookahead = 0;
+    HLACORE_FIELDS(time, lookahead)
+};
+struct DisableTimeRegulation {
+    HLACORE_TYPE(DisableTimeRegulation)
+    HLACORE_NO_FIELDS()
+};
+struct EnableTimeConstrained {
+    HLACORE_TYPE(EnableTimeConstrained)
+    HLACORE_NO_FIELDS()
+};
+struct DisableTimeConstrained {
+    HLACORE_TYPE(DisableTimeConstrained)
+    HLACORE_NO_FIELDS()
+};
+struct TimeAdvance {
+    HLACORE_TYPE(TimeAdvance)
+    std::uint8_t kind = 0;  // AdvanceKind: TAR, TARA, NER, NERA, FQR
+    double time = 0;
+    HLACORE_FIELDS(kind, time)
+};
+struct ModifyLookahead {
+    HLACORE_TYPE(ModifyLookahead)
+    double lookahead = 0;
+    HLACORE_FIELDS(lookahead)
+};
+struct SetAsynchronousDelivery {
+    HLACORE_TYPE(SetAsynchronousDelivery)
+    bool on = false;
+    HLACORE_FIELDS(on)
+};
+struct Retract {
+    HLACORE_TYPE(Retract)
+    std::uint64_t serial = 0;
+    HLACORE_FIELDS(serial)
+};
+enum class TimeQuery : std::uint8_t { Lbts = 1, MinNextEventTime = 2 };
+struct QueryTime {
+    HLACORE_TYPE(QueryTime)
+    std::uint32_t request = 0;
+    std::uint8_t which = 0;  // TimeQuery
+    HLACORE_FIELDS(request, which)
+};
+
 // ---- gateway -> federate ----
 struct Reply {
     HLACORE_TYPE(Reply)
@@ -263,7 +325,8 @@ struct Reply {
     std::uint32_t handle = 0;  // join: federate handle; register: object handle
     std::string text;          // join: FED text; register: object name
     std::string text2;         // join: FED file name
-    HLACORE_FIELDS(request, error, message, handle, text, text2)
+    double value = 0;          // time queries
+    HLACORE_FIELDS(request, error, message, handle, text, text2, value)
 };
 struct SyncPointRegistrationSucceeded {
     HLACORE_TYPE(SyncPointRegistrationSucceeded)
@@ -351,6 +414,28 @@ struct ProvideAttributeValueUpdate {
     std::uint32_t object = 0;
     Handles attributes;
     HLACORE_FIELDS(object, attributes)
+};
+
+struct TimeRegulationEnabled {
+    HLACORE_TYPE(TimeRegulationEnabled)
+    double time = 0;
+    HLACORE_FIELDS(time)
+};
+struct TimeConstrainedEnabled {
+    HLACORE_TYPE(TimeConstrainedEnabled)
+    double time = 0;
+    HLACORE_FIELDS(time)
+};
+struct TimeAdvanceGrant {
+    HLACORE_TYPE(TimeAdvanceGrant)
+    double time = 0;
+    HLACORE_FIELDS(time)
+};
+struct RequestRetraction {
+    HLACORE_TYPE(RequestRetraction)
+    std::uint32_t sender = 0;
+    std::uint64_t serial = 0;
+    HLACORE_FIELDS(sender, serial)
 };
 
 // Index in the variant == wire code.

@@ -1,0 +1,323 @@
+#include "rti/time_manager.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hlacore {
+
+namespace {
+
+bool is_available(AdvanceKind kind) {
+    return kind == AdvanceKind::TimeAdvanceRequestAvailable || kind == AdvanceKind::NextEventRequestAvailable;
+}
+
+bool is_next_event(AdvanceKind kind) {
+    return kind == AdvanceKind::NextEventRequest || kind == AdvanceKind::NextEventRequestAvailable ||
+           kind == AdvanceKind::FlushQueueRequest;
+}
+
+}  // namespace
+
+Time TimeManager::bound_after(Time t, Time lookahead, AdvanceKind kind) {
+    if (lookahead > 0 && t + lookahead > t) return t + lookahead;
+    // HLA 1.3 §8.1.1 zero lookahead: after TAR/NER a federate sends only above its time, after TARA/NERA at it.
+    return is_available(kind) ? t : std::nextafter(t, kInfinity);
+}
+
+TimeManager::State& TimeManager::state(std::uint32_t f) {
+    auto it = federates_.find(f);
+    if (it == federates_.end()) throw std::logic_error("time manager: unknown federate " + std::to_string(f));
+    return it->second;
+}
+
+const TimeManager::State& TimeManager::state(std::uint32_t f) const {
+    auto it = federates_.find(f);
+    if (it == federates_.end()) throw std::logic_error("time manager: unknown federate " + std::to_string(f));
+    return it->second;
+}
+
+void TimeManager::add_federate(std::uint32_t f) { federates_[f]; }
+
+void TimeManager::remove_federate(std::uint32_t f) {
+    federates_.erase(f);
+    bounds_.erase(f);
+}
+
+// HLA 1.3 §8.2 enableTimeRegulation: start where no message can fall into a constrained federate's past
+// nor below a bound the others were already granted on.
+Time TimeManager::enable_regulation(std::uint32_t f, Time time, Time lookahead) {
+    compute_bounds();
+    State& s = state(f);
+    Time highest = -kInfinity;
+    for (const auto& [h, other] : federates_) {
+        if (h == f) continue;
+        if (other.constrained)
+            highest = std::max(highest, other.receives_above_time ? std::nextafter(other.time, kInfinity) : other.time);
+        if (other.regulating) highest = std::max(highest, other.promise);
+    }
+    Time start = std::max(time, s.time);
+    if (highest > -kInfinity) {
+        // The smallest start whose first allowed timestamp reaches `highest`.
+        Time candidate = highest - lookahead;
+        while (candidate + lookahead < highest) candidate = std::nextafter(candidate, kInfinity);
+        start = std::max(start, candidate);
+    }
+    s.regulating = true;
+    s.time = start;
+    s.lookahead = lookahead;
+    s.strict_after_grant = false;
+    s.promise = bound_after(start, lookahead, AdvanceKind::TimeAdvanceRequestAvailable);
+    return start;
+}
+
+void TimeManager::disable_regulation(std::uint32_t f) {
+    State& s = state(f);
+    s.regulating = false;
+    s.promise = -kInfinity;
+    bounds_.erase(f);
+}
+
+void TimeManager::enable_constrained(std::uint32_t f) { state(f).constrained_pending = true; }
+
+std::vector<std::string> TimeManager::disable_constrained(std::uint32_t f) {
+    State& s = state(f);
+    s.constrained = false;
+    s.constrained_pending = false;
+    std::vector<std::string> frames;
+    for (auto& [key, frame] : s.tso) frames.push_back(std::move(frame));
+    s.tso.clear();
+    return frames;
+}
+
+void TimeManager::set_asynchronous_delivery(std::uint32_t f, bool on) { state(f).asynchronous_delivery = on; }
+
+void TimeManager::modify_lookahead(std::uint32_t f, Time lookahead) { state(f).lookahead = lookahead; }
+
+void TimeManager::request(std::uint32_t f, AdvanceKind kind, Time time) {
+    State& s = state(f);
+    s.pending = kind;
+    s.pending_time = time;
+}
+
+bool TimeManager::is_tso(std::uint32_t sender, std::uint32_t receiver) const {
+    return state(sender).regulating && state(receiver).constrained;
+}
+
+bool TimeManager::holds_receive_order(std::uint32_t receiver) const {
+    const State& s = state(receiver);
+    return s.constrained && s.pending == AdvanceKind::None && !s.asynchronous_delivery;
+}
+
+void TimeManager::enqueue_tso(std::uint32_t receiver, TsoMessage message) {
+    state(receiver).tso.emplace(std::make_pair(message.time, std::make_pair(message.sender, message.serial)),
+                                std::move(message.frame));
+}
+
+void TimeManager::enqueue_receive_order(std::uint32_t receiver, std::string frame) {
+    state(receiver).held_ro.push_back(std::move(frame));
+}
+
+std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint64_t serial) {
+    std::vector<std::uint32_t> removed_from;
+    for (auto& [f, s] : federates_) {
+        for (auto it = s.tso.begin(); it != s.tso.end();) {
+            if (it->first.second.first == sender && it->first.second.second == serial) {
+                it = s.tso.erase(it);
+                removed_from.push_back(f);
+            } else {
+                ++it;
+            }
+        }
+    }
+    return removed_from;
+}
+
+Time TimeManager::earliest_tso(const State& s) const { return s.tso.empty() ? kInfinity : s.tso.begin()->first.first; }
+
+// The greatest fixed point of the bound equations (see the header), by increasing bounds like Dijkstra:
+// a federate's bound only depends on smaller ones through after(), which never lowers a value.
+void TimeManager::compute_bounds() {
+    bounds_.clear();
+    std::map<std::uint32_t, bool> done;
+    for (auto& [g, s] : federates_) {
+        if (!s.regulating) continue;
+        Time own;
+        if (s.pending == AdvanceKind::None) {
+            own = s.lookahead > 0 && s.time + s.lookahead > s.time ? s.time + s.lookahead
+                  : s.strict_after_grant                            ? std::nextafter(s.time, kInfinity)
+                                                                    : s.time;
+        } else if (is_next_event(s.pending)) {
+            own = bound_after(std::min(s.pending_time, s.constrained ? earliest_tso(s) : kInfinity), s.lookahead,
+                              s.pending);
+        } else {
+            own = bound_after(s.pending_time, s.lookahead, s.pending);
+        }
+        bounds_[g] = std::max(s.promise, own);
+        done[g] = false;
+    }
+    for (std::size_t round = 0; round < bounds_.size(); ++round) {
+        // Settle the smallest unsettled bound, then relax the federates waiting on incoming messages.
+        std::uint32_t h = 0;
+        Time smallest = kInfinity;
+        bool found = false;
+        for (const auto& [g, b] : bounds_) {
+            if (!done[g] && (!found || b < smallest)) {
+                h = g;
+                smallest = b;
+                found = true;
+            }
+        }
+        if (!found) break;
+        done[h] = true;
+        for (auto& [g, b] : bounds_) {
+            if (done[g]) continue;
+            const State& s = federates_.at(g);
+            if (!s.constrained || !is_next_event(s.pending)) continue;
+            b = std::min(b, std::max(s.promise, bound_after(smallest, s.lookahead, s.pending)));
+        }
+    }
+    for (auto& [g, b] : bounds_) federates_.at(g).promise = b;
+}
+
+Time TimeManager::lbts_from_bounds(std::uint32_t f) const {
+    Time lowest = kInfinity;
+    for (const auto& [g, b] : bounds_)
+        if (g != f) lowest = std::min(lowest, b);
+    return lowest;
+}
+
+Time TimeManager::output_bound(std::uint32_t f) {
+    compute_bounds();
+    auto it = bounds_.find(f);
+    return it == bounds_.end() ? kInfinity : it->second;
+}
+
+Time TimeManager::lbts(std::uint32_t f) {
+    state(f);
+    compute_bounds();
+    return lbts_from_bounds(f);
+}
+
+Time TimeManager::min_next_event_time(std::uint32_t f) {
+    const Time l = lbts(f);
+    return std::min(l, earliest_tso(state(f)));
+}
+
+Time TimeManager::federate_time(std::uint32_t f) const { return state(f).time; }
+
+// HLA 1.3 §8.5-8.11: the grant conditions of each request, with the TSO messages that precede the grant.
+bool TimeManager::try_grant(std::uint32_t f, State& s, Release& out) {
+    if (s.pending == AdvanceKind::None) return false;
+    const Time t = s.pending_time;
+    Time grant = t;
+    Time deliver_up_to = t;
+    bool deliver_all = false;
+    if (s.constrained) {
+        const Time lbts = lbts_from_bounds(f);
+        const Time next = std::min(t, earliest_tso(s));
+        switch (s.pending) {
+            case AdvanceKind::TimeAdvanceRequest:  // §8.5: nothing at or below t may still arrive
+                if (!(t < lbts)) return false;
+                break;
+            case AdvanceKind::TimeAdvanceRequestAvailable:  // §8.6: nothing below t may still arrive
+                if (!(t <= lbts)) return false;
+                break;
+            case AdvanceKind::NextEventRequest:  // §8.7
+                if (!(next < lbts)) return false;
+                grant = deliver_up_to = next;
+                break;
+            case AdvanceKind::NextEventRequestAvailable:  // §8.8
+                if (!(next <= lbts)) return false;
+                grant = deliver_up_to = next;
+                break;
+            case AdvanceKind::FlushQueueRequest:  // §8.9: everything queued, grant no further than is safe
+                grant = std::max(s.time, std::min({t, lbts, earliest_tso(s)}));
+                deliver_all = true;
+                break;
+            case AdvanceKind::None: return false;
+        }
+    }
+    while (!s.tso.empty() && (deliver_all || s.tso.begin()->first.first <= deliver_up_to)) {
+        out.frames.push_back(std::move(s.tso.begin()->second));
+        s.tso.erase(s.tso.begin());
+    }
+    s.time = grant;
+    s.strict_after_grant = !is_available(s.pending) && !(s.lookahead > 0 && grant + s.lookahead > grant);
+    // Conservative for newcomers: after FQR with zero lookahead too, start strictly above the grant.
+    s.receives_above_time = s.constrained && (s.pending == AdvanceKind::TimeAdvanceRequest ||
+                                              s.pending == AdvanceKind::NextEventRequest ||
+                                              (s.pending == AdvanceKind::FlushQueueRequest && s.strict_after_grant));
+    s.pending = AdvanceKind::None;
+    out.grant = grant;
+    return true;
+}
+
+std::vector<TimeManager::Release> TimeManager::release() {
+    std::vector<Release> releases;
+    std::map<std::uint32_t, std::size_t> index;
+    auto slot = [&](std::uint32_t f) -> Release& {
+        auto it = index.find(f);
+        if (it != index.end()) return releases[it->second];
+        index[f] = releases.size();
+        releases.push_back(Release{f, {}, std::nullopt, std::nullopt});
+        return releases.back();
+    };
+    for (bool progress = true; progress;) {
+        progress = false;
+        compute_bounds();
+        for (auto& [f, s] : federates_) {
+            if (!s.held_ro.empty() && !holds_receive_order(f)) {
+                auto& frames = slot(f).frames;
+                for (auto& frame : s.held_ro) frames.push_back(std::move(frame));
+                s.held_ro.clear();
+            }
+            if (s.constrained_pending && lbts_from_bounds(f) >= s.time) {
+                s.constrained_pending = false;
+                s.constrained = true;
+                s.receives_above_time = false;
+                slot(f).constrained_enabled = s.time;
+                progress = true;
+            }
+            if (s.pending != AdvanceKind::None) {
+                Release attempt{f, {}, std::nullopt, std::nullopt};
+                if (try_grant(f, s, attempt)) {
+                    Release& r = slot(f);
+                    for (auto& frame : attempt.frames) r.frames.push_back(std::move(frame));
+                    r.grant = attempt.grant;
+                    progress = true;
+                    compute_bounds();
+                }
+            }
+        }
+    }
+    std::vector<Release> nonempty;
+    for (auto& r : releases)
+        if (!r.frames.empty() || r.grant || r.constrained_enabled) nonempty.push_back(std::move(r));
+    return nonempty;
+}
+
+std::vector<TimeFederateStatus> TimeManager::status() {
+    compute_bounds();
+    std::vector<TimeFederateStatus> out;
+    for (const auto& [f, s] : federates_) {
+        TimeFederateStatus st;
+        st.federate = f;
+        st.time = s.time;
+        st.lookahead = s.lookahead;
+        st.regulating = s.regulating;
+        st.constrained = s.constrained;
+        st.asynchronous_delivery = s.asynchronous_delivery;
+        st.pending = s.pending;
+        st.pending_time = s.pending_time;
+        st.queued_tso = s.tso.size();
+        st.queued_ro = s.held_ro.size();
+        st.lbts = lbts_from_bounds(f);
+        auto b = bounds_.find(f);
+        st.output_bound = b == bounds_.end() ? kInfinity : b->second;
+        out.push_back(st);
+    }
+    return out;
+}
+
+}  // namespace hlacore

@@ -1,0 +1,142 @@
+// Conservative time management of one federation (HLA 1.3 §8): regulating and constrained federates,
+// lookahead, TAR/TARA/NER/NERA/flushQueueRequest, and the timestamp-ordered (TSO) queue of each
+// constrained federate. Pure state, no I/O: the federation feeds it requests and messages and sends
+// what release() hands back.
+//
+// The gateway sees every federate's state, so instead of exchanging null messages it computes each
+// regulating federate's output bound exactly: the lowest timestamp it may still send. For a federate in
+// NER/NERA that bound depends on the messages it may still receive, so the bounds are the greatest
+// fixed point of   bound(g) = max(promise(g), min(own(g), after(g, min over h != g of bound(h)))),
+// computed like shortest paths (Dijkstra), which is why NER grants land exactly on message times.
+//
+// Zero lookahead needs no epsilon: after a TAR/NER grant to T a zero-lookahead federate may only send
+// timestamps > T, which for doubles is >= nextafter(T, +inf); after TARA/NERA it may send at T itself.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace hlacore {
+
+using Time = double;
+constexpr Time kInfinity = std::numeric_limits<double>::infinity();
+
+enum class AdvanceKind : std::uint8_t {
+    None = 0,
+    TimeAdvanceRequest = 1,
+    TimeAdvanceRequestAvailable = 2,
+    NextEventRequest = 3,
+    NextEventRequestAvailable = 4,
+    FlushQueueRequest = 5,
+};
+
+// A message waiting in a constrained federate's TSO queue. Ties in time are broken by the sending
+// federate's handle, then by the sender's serial number: deterministic, independent of arrival order.
+struct TsoMessage {
+    Time time = 0;
+    std::uint32_t sender = 0;
+    std::uint64_t serial = 0;
+    std::string frame;  // opaque to the time manager: the encoded callback to deliver
+};
+
+struct TimeFederateStatus {
+    std::uint32_t federate = 0;
+    Time time = 0;
+    Time lookahead = 0;
+    bool regulating = false;
+    bool constrained = false;
+    bool asynchronous_delivery = false;
+    AdvanceKind pending = AdvanceKind::None;
+    Time pending_time = 0;
+    std::size_t queued_tso = 0;
+    std::size_t queued_ro = 0;
+    Time lbts = kInfinity;
+    Time output_bound = kInfinity;  // infinity when not regulating
+};
+
+class TimeManager {
+public:
+    // What release() hands back for one federate, in delivery order: frames, then maybe a callback.
+    struct Release {
+        std::uint32_t federate = 0;
+        std::vector<std::string> frames;  // TSO messages in order, or held receive-order messages
+        std::optional<Time> grant;                  // timeAdvanceGrant
+        std::optional<Time> constrained_enabled;    // timeConstrainedEnabled
+    };
+
+    void add_federate(std::uint32_t f);
+    // Forgets the federate: it leaves the regulating set and its queues are dropped.
+    void remove_federate(std::uint32_t f);
+
+    // HLA 1.3 §8.2. Returns the time at which regulation starts: no earlier than `time`, the federate's
+    // time, and what every constrained federate's current time allows (so it cannot send into their past).
+    Time enable_regulation(std::uint32_t f, Time time, Time lookahead);
+    void disable_regulation(std::uint32_t f);
+    // HLA 1.3 §8.4. Enabling completes in release() once no regulating federate can still send below the
+    // federate's time. Disabling hands back the queued TSO messages, now receive order.
+    void enable_constrained(std::uint32_t f);
+    std::vector<std::string> disable_constrained(std::uint32_t f);
+    void set_asynchronous_delivery(std::uint32_t f, bool on);
+    // HLA 1.3 §8.19: a lower lookahead never withdraws a bound already promised.
+    void modify_lookahead(std::uint32_t f, Time lookahead);
+    void request(std::uint32_t f, AdvanceKind kind, Time time);
+
+    // Whether a message with a timestamp goes timestamp-ordered from `sender` to `receiver`
+    // (the FOM's order is checked by the caller): sender regulating, receiver constrained.
+    bool is_tso(std::uint32_t sender, std::uint32_t receiver) const;
+    // Whether a receive-order message to `receiver` must wait: constrained, not advancing, and
+    // asynchronous delivery off (HLA 1.3 §8.1.2).
+    bool holds_receive_order(std::uint32_t receiver) const;
+    void enqueue_tso(std::uint32_t receiver, TsoMessage message);
+    void enqueue_receive_order(std::uint32_t receiver, std::string frame);
+    // Removes an undelivered TSO message from every queue; returns the federates it was removed for.
+    std::vector<std::uint32_t> retract(std::uint32_t sender, std::uint64_t serial);
+
+    // Everything deliverable now: held receive-order messages, TSO messages that are safe, grants.
+    std::vector<Release> release();
+
+    // The lowest timestamp a regulating federate may still send (kInfinity if not regulating).
+    Time output_bound(std::uint32_t f);
+    // LBTS of f: the lowest timestamp any other regulating federate may still send (HLA 1.3 §8.16).
+    Time lbts(std::uint32_t f);
+    // min(LBTS, earliest queued TSO message) (HLA 1.3 §8.18).
+    Time min_next_event_time(std::uint32_t f);
+    Time federate_time(std::uint32_t f) const;
+    std::vector<TimeFederateStatus> status();
+
+private:
+    struct State {
+        Time time = 0;
+        Time lookahead = 0;
+        bool regulating = false;
+        bool constrained = false;
+        bool constrained_pending = false;
+        bool asynchronous_delivery = false;
+        bool strict_after_grant = false;  // last grant was TAR/NER with zero lookahead: sends must be > time
+        bool receives_above_time = false;  // last grant was TAR/NER while constrained: nothing at time may arrive
+        AdvanceKind pending = AdvanceKind::None;
+        Time pending_time = 0;
+        Time promise = -kInfinity;  // no message below this was ever allowed since regulation began
+        std::multimap<std::pair<Time, std::pair<std::uint32_t, std::uint64_t>>, std::string> tso;
+        std::vector<std::string> held_ro;
+    };
+
+    State& state(std::uint32_t f);
+    const State& state(std::uint32_t f) const;
+    // The bound implied by a grant to `t` of `kind`, for a federate with lookahead `lookahead`.
+    static Time bound_after(Time t, Time lookahead, AdvanceKind kind);
+    void compute_bounds();
+    Time lbts_from_bounds(std::uint32_t f) const;
+    Time earliest_tso(const State& s) const;
+    bool try_grant(std::uint32_t f, State& s, Release& out);
+
+    std::map<std::uint32_t, State> federates_;
+    std::map<std::uint32_t, Time> bounds_;  // regulating federates only, valid after compute_bounds()
+};
+
+}  // namespace hlacore

@@ -3,6 +3,7 @@ condition holds. Everything started here is stopped here, by pid."""
 
 from __future__ import annotations
 
+import contextlib
 import os
 import pathlib
 import re
@@ -78,10 +79,10 @@ class RtigProcess:
         return self.proc.returncode
 
 
-@pytest.fixture
-def rtig(tmp_path: pathlib.Path) -> Iterator[RtigProcess]:
-    """The real rtig binary; the test fails if it exits uncleanly or reports a sanitizer error."""
-    server = RtigProcess(tmp_path)
+@contextlib.contextmanager
+def running_rtig(tmp_path: pathlib.Path, *args: str) -> Iterator[RtigProcess]:
+    """An rtig with the given arguments; fails if it exits uncleanly or reports a sanitizer error."""
+    server = RtigProcess(tmp_path, *args)
     try:
         yield server
     finally:
@@ -89,6 +90,25 @@ def rtig(tmp_path: pathlib.Path) -> Iterator[RtigProcess]:
         log = server.log()
         assert not SANITIZER_REPORT.search(log), log
         assert status == 0, f"rtig exited with {status}; log:\n{log}"
+
+
+def wait_for_log(server: RtigProcess, pattern: str, timeout: float = 5.0) -> str:
+    """Poll the rtig log until `pattern` (a regex) matches; return the matching text."""
+    deadline = time.monotonic() + timeout
+    while True:
+        match = re.search(pattern, server.log())
+        if match:
+            return match.group(0)
+        if time.monotonic() > deadline:
+            raise AssertionError(f"{pattern!r} not logged within {timeout} s; log:\n{server.log()}")
+        time.sleep(0.02)
+
+
+@pytest.fixture
+def rtig(tmp_path: pathlib.Path) -> Iterator[RtigProcess]:
+    """The real rtig binary on port 0."""
+    with running_rtig(tmp_path) as server:
+        yield server
 
 
 @pytest.fixture

@@ -21,7 +21,16 @@ import pytest
 
 from hlacore import rti
 
-from conftest import ROBOT_FED, SANITIZER_REPORT, Federate, RtigProcess, python_subprocess, settle, tick_until
+from conftest import (
+    ROBOT_FED,
+    Federate,
+    RtigProcess,
+    python_subprocess,
+    running_rtig,
+    settle,
+    tick_until,
+    wait_for_log,
+)
 
 # ---- the wire protocol, as a hostile client speaks it (cpp/rti/wire/messages.hpp) ----
 
@@ -204,18 +213,6 @@ def raw_client(address: str, rcvbuf: Optional[int] = None) -> Iterator[RawClient
         client.close()
 
 
-def wait_for_log(server: RtigProcess, pattern: str, timeout: float = 5.0) -> str:
-    """Poll the rtig log until `pattern` (a regex) matches; return the matching text."""
-    deadline = time.monotonic() + timeout
-    while True:
-        match = re.search(pattern, server.log())
-        if match:
-            return match.group(0)
-        if time.monotonic() > deadline:
-            raise AssertionError(f"{pattern!r} not logged within {timeout} s; log:\n{server.log()}")
-        time.sleep(0.02)
-
-
 def dropped_line(server: RtigProcess, client: RawClient, timeout: float = 5.0) -> str:
     """The log line of the gateway dropping `client` (found by its address)."""
     return wait_for_log(server, rf"rtig: dropped {re.escape(client.local)}\b[^\n]*", timeout)
@@ -297,19 +294,6 @@ def legit_federation(address: str) -> Iterator[Legit]:
 def legit(rtig: RtigProcess) -> Iterator[Legit]:
     with legit_federation(rtig.address) as fed:
         yield fed
-
-
-@contextlib.contextmanager
-def own_rtig(tmp_path: pathlib.Path, *args: str) -> Iterator[RtigProcess]:
-    """An rtig with custom arguments, stopped by pid and checked like the `rtig` fixture does."""
-    server = RtigProcess(tmp_path, *args)
-    try:
-        yield server
-    finally:
-        status = server.stop()
-        log = server.log()
-        assert not SANITIZER_REPORT.search(log), log
-        assert status == 0, f"rtig exited with {status}; log:\n{log}"
 
 
 # ---- 1. garbage ----
@@ -421,7 +405,7 @@ def test_truncated_frame_then_close_after_joining(rtig: RtigProcess, legit: Legi
 
 def test_truncated_frame_then_silence_times_out(tmp_path: pathlib.Path) -> None:
     """A partial frame left alone is dropped after --frame-timeout (0.5 s), not before; idle peers stay."""
-    with own_rtig(tmp_path, "--frame-timeout", "0.5") as server, legit_federation(server.address) as legit:
+    with running_rtig(tmp_path, "--frame-timeout", "0.5") as server, legit_federation(server.address) as legit:
         with raw_client(server.address) as slow, raw_client(server.address) as stalled:
             # A peer that completes its frame in time and then idles is not dropped.
             slow.send(hello()[:5])

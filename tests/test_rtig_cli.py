@@ -15,7 +15,7 @@ import pytest
 
 from hlacore import rti
 
-from conftest import ROBOT_FED, SANITIZER_REPORT, Federate, RtigProcess, rtig_executable
+from conftest import ROBOT_FED, SANITIZER_REPORT, Federate, RtigProcess, rtig_executable, wait_for_log
 
 
 def run_rtig(*args: str) -> subprocess.CompletedProcess[str]:
@@ -23,18 +23,6 @@ def run_rtig(*args: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
         [rtig_executable(), *args], capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=10
     )
-
-
-def wait_for_log(server: RtigProcess, pattern: str, timeout: float = 5.0) -> str:
-    """Poll the rtig log until `pattern` (a regex) matches a line; return that line."""
-    deadline = time.monotonic() + timeout
-    while True:
-        match = re.search(pattern, server.log())
-        if match:
-            return match.group(0)
-        if time.monotonic() > deadline:
-            raise AssertionError(f"{pattern!r} not logged within {timeout} s; log:\n{server.log()}")
-        time.sleep(0.02)
 
 
 @pytest.fixture

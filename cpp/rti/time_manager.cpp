@@ -40,6 +40,7 @@ const TimeManager::State& TimeManager::state(std::uint32_t f) const {
 void TimeManager::add_federate(std::uint32_t f) { federates_[f]; }
 
 void TimeManager::remove_federate(std::uint32_t f) {
+    changed_ = true;
     federates_.erase(f);
     bounds_.erase(f);
 }
@@ -47,6 +48,7 @@ void TimeManager::remove_federate(std::uint32_t f) {
 // HLA 1.3 §8.2 enableTimeRegulation: start where no message can fall into a constrained federate's past
 // nor below a bound the others were already granted on.
 Time TimeManager::enable_regulation(std::uint32_t f, Time time, Time lookahead) {
+    changed_ = true;
     compute_bounds();
     State& s = state(f);
     Time highest = -kInfinity;
@@ -72,15 +74,22 @@ Time TimeManager::enable_regulation(std::uint32_t f, Time time, Time lookahead) 
 }
 
 void TimeManager::disable_regulation(std::uint32_t f) {
+    changed_ = true;
     State& s = state(f);
     s.regulating = false;
     s.promise = -kInfinity;
     bounds_.erase(f);
 }
 
-void TimeManager::enable_constrained(std::uint32_t f) { state(f).constrained_pending = true; }
+
+
+void TimeManager::enable_constrained(std::uint32_t f) {
+    changed_ = true;
+    state(f).constrained_pending = true;
+}
 
 std::vector<std::string> TimeManager::disable_constrained(std::uint32_t f) {
+    changed_ = true;
     State& s = state(f);
     s.constrained = false;
     s.constrained_pending = false;
@@ -90,11 +99,18 @@ std::vector<std::string> TimeManager::disable_constrained(std::uint32_t f) {
     return frames;
 }
 
-void TimeManager::set_asynchronous_delivery(std::uint32_t f, bool on) { state(f).asynchronous_delivery = on; }
+void TimeManager::set_asynchronous_delivery(std::uint32_t f, bool on) {
+    changed_ = true;
+    state(f).asynchronous_delivery = on;
+}
 
-void TimeManager::modify_lookahead(std::uint32_t f, Time lookahead) { state(f).lookahead = lookahead; }
+void TimeManager::modify_lookahead(std::uint32_t f, Time lookahead) {
+    changed_ = true;
+    state(f).lookahead = lookahead;
+}
 
 void TimeManager::request(std::uint32_t f, AdvanceKind kind, Time time) {
+    changed_ = true;
     State& s = state(f);
     s.pending = kind;
     s.pending_time = time;
@@ -110,15 +126,18 @@ bool TimeManager::holds_receive_order(std::uint32_t receiver) const {
 }
 
 void TimeManager::enqueue_tso(std::uint32_t receiver, TsoMessage message) {
+    changed_ = true;
     state(receiver).tso.emplace(std::make_pair(message.time, std::make_pair(message.sender, message.serial)),
                                 std::move(message.frame));
 }
 
 void TimeManager::enqueue_receive_order(std::uint32_t receiver, std::string frame) {
+    changed_ = true;
     state(receiver).held_ro.push_back(std::move(frame));
 }
 
 std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint64_t serial) {
+    changed_ = true;
     std::vector<std::uint32_t> removed_from;
     for (auto& [f, s] : federates_) {
         for (auto it = s.tso.begin(); it != s.tso.end();) {
@@ -255,6 +274,8 @@ bool TimeManager::try_grant(std::uint32_t f, State& s, Release& out) {
 
 std::vector<TimeManager::Release> TimeManager::release() {
     std::vector<Release> releases;
+    if (!changed_) return releases;
+    changed_ = false;
     std::map<std::uint32_t, std::size_t> index;
     auto slot = [&](std::uint32_t f) -> Release& {
         auto it = index.find(f);

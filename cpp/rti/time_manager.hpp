@@ -137,6 +137,9 @@ private:
 
     std::map<std::uint32_t, State> federates_;
     std::map<std::uint32_t, Time> bounds_;  // regulating federates only, valid after compute_bounds()
+    // Set by every change that can make something deliverable; release() does nothing otherwise, which
+    // keeps the bound computation off the path of plain receive-order updates.
+    bool changed_ = false;
 };
 
 }  // namespace hlacore

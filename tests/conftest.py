@@ -155,6 +155,10 @@ class Recorder(rti.FederateAmbassador):
         "receiveInteraction",
         "removeObjectInstance",
         "provideAttributeValueUpdate",
+        "timeRegulationEnabled",
+        "timeConstrainedEnabled",
+        "timeAdvanceGrant",
+        "requestRetraction",
     ):
         locals()[_name] = _record(_name)
     del _name, _record

@@ -123,10 +123,11 @@ wire::Reply Client::call(wire::Message request, std::uint32_t id) {
 template <class Pred>
 Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
     std::unique_lock<std::mutex> lock(mu_);
+    bool read_once = false;  // even with a deadline already past, look at the socket once (poll_now)
     for (;;) {
         if (pred()) return WaitStatus::Ready;
         if (closed_) return WaitStatus::Ready;
-        if (Clock::now() >= deadline) return WaitStatus::Timeout;
+        if ((read_once || reading_) && Clock::now() >= deadline) return WaitStatus::Timeout;
         if (reading_) {
             if (deadline == Clock::time_point::max()) {
                 cv_.wait(lock);
@@ -136,6 +137,7 @@ Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
             continue;
         }
         reading_ = true;
+        read_once = true;
         lock.unlock();
         std::vector<wire::Message> got;
         WaitStatus status = WaitStatus::Ready;
@@ -239,6 +241,7 @@ std::optional<wire::Message> Client::pop_callback() {
     }
     wire::Message m = std::move(callbacks_.front());
     callbacks_.pop_front();
+    apply_time_callback(m);
     return m;
 }
 
@@ -334,6 +337,7 @@ void Client::resign(std::uint8_t action) {
     subscribed_interactions_.clear();
     objects_.clear();
     announced_.clear();
+    time_ = TimeState{};
 }
 
 void Client::register_sync_point(const std::string& label, const std::string& tag,
@@ -487,7 +491,9 @@ std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues
                 raise(ErrorCode::AttributeNotOwned, "attribute '" + cls.attribute(attr)->name + "' of object '" +
                                                         obj.name + "' is not owned by this federate");
         }
+        check_send_time(time);
         serial = ++serial_;
+        note_sent(serial, time);
     }
     send(wire::UpdateAttributes{object, std::move(values), tag, time, serial});
     return serial;
@@ -508,7 +514,9 @@ std::uint64_t Client::send_interaction(fom::Handle cls, wire::HandleValues value
                                                                      " is not defined for interaction '" +
                                                                      c.qualified_name + "'");
         }
+        check_send_time(time);
         serial = ++serial_;
+        note_sent(serial, time);
     }
     send(wire::SendInteraction{cls, std::move(values), tag, time, serial});
     return serial;
@@ -521,8 +529,10 @@ std::uint64_t Client::delete_object(std::uint32_t object, const std::string& tag
         const LocalObject& obj = known_object(object);
         if (!obj.privilege_to_delete)
             raise(ErrorCode::DeletePrivilegeNotHeld, "this federate may not delete object '" + obj.name + "'");
+        check_send_time(time);
         objects_.erase(object);
         serial = ++serial_;
+        note_sent(serial, time);
     }
     send(wire::DeleteObject{object, tag, time, serial});
     return serial;

@@ -19,6 +19,7 @@
 
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
+#include "rti/time_manager.hpp"
 #include "rti/wire/codec.hpp"
 
 namespace hlacore {
@@ -68,6 +69,24 @@ public:
     void request_object_update(std::uint32_t object, const std::vector<fom::Handle>& attributes);
     void request_class_update(fom::Handle cls, const std::vector<fom::Handle>& attributes);
 
+    // ---- time management (HLA 1.3 §8; the rules are in docs/time-management.md) ----
+    // The federate's time state changes when its callbacks are popped (timeRegulationEnabled,
+    // timeConstrainedEnabled, timeAdvanceGrant), as HLA says: at delivery, not at arrival.
+    void enable_time_regulation(Time time, Time lookahead);
+    void disable_time_regulation();
+    void enable_time_constrained();
+    void disable_time_constrained();
+    void time_advance(AdvanceKind kind, Time time);
+    void modify_lookahead(Time lookahead);
+    Time query_lookahead() const;
+    Time query_federate_time() const;
+    Time query_lbts();
+    Time query_min_next_event_time();
+    void set_asynchronous_delivery(bool on);
+    void retract(std::uint32_t sender, std::uint64_t serial);
+    // True from a time advance request until its grant has been popped.
+    bool time_advance_pending() const;
+
     // ---- support services (local: answered from the FOM and what this federate knows) ----
     fom::Handle object_class_handle(const std::string& name) const;
     std::string object_class_name(fom::Handle cls) const;
@@ -97,6 +116,22 @@ public:
     bool has_callbacks() const;
 
 private:
+    struct TimeState {
+        Time time = 0;
+        Time lookahead = 0;
+        // A lowered lookahead never allows a timestamp below one allowed before (HLA 1.3 §8.19).
+        Time floor = -kInfinity;
+        bool regulating = false;
+        bool regulation_pending = false;
+        bool constrained = false;
+        bool constrained_pending = false;
+        bool asynchronous_delivery = false;
+        bool strict = false;  // the last grant was TAR/NER/FQR with zero lookahead: sends must be > time
+        AdvanceKind pending = AdvanceKind::None;
+        Time pending_time = 0;
+        std::map<std::uint64_t, Time> retractable;  // own timestamped messages above the federate's time
+    };
+
     struct LocalObject {
         fom::Handle object_class = 0;  // registered class, or the class it was discovered as
         std::string name;
@@ -120,6 +155,11 @@ private:
     const fom::InteractionClass& defined_interaction_class(fom::Handle cls) const;
     const LocalObject& known_object(std::uint32_t object) const;
     [[noreturn]] void connection_lost() const;
+    // The lowest timestamp this federate may send now, and the checks of the sending rule (callers hold mu_).
+    Time lowest_sendable() const;
+    void check_send_time(const wire::OptionalTime& time) const;
+    void note_sent(std::uint64_t serial, const wire::OptionalTime& time);
+    void apply_time_callback(const wire::Message& m);
 
     std::string address_;
     int fd_ = -1;
@@ -147,6 +187,7 @@ private:
     std::unordered_map<std::uint32_t, LocalObject> objects_;
     std::set<std::string> announced_;
     std::uint64_t serial_ = 0;
+    TimeState time_;
 };
 
 }  // namespace hlacore

@@ -5,8 +5,8 @@
 - :mod:`hlacore.fed` — the ``.fed`` parser; :mod:`hlacore.omt` — encoding helpers.
 """
 
-from . import rti
+from . import aio, rti
 from .gateway import Gateway
 
 __version__ = "0.1.0"
-__all__ = ["Gateway", "rti", "__version__"]
+__all__ = ["Gateway", "aio", "rti", "__version__"]

@@ -81,8 +81,9 @@ class FederateAmbassador:
     ``turnInteractionsOff(interactionClass)``, ``discoverObjectInstance(object, objectClass, name)``,
     ``reflectAttributeValues(object, attributes, tag, order, transport[, time, retraction])``,
     ``receiveInteraction(interactionClass, parameters, tag, order, transport[, time, retraction])``,
-    ``removeObjectInstance(object, tag[, time, retraction])`` and
-    ``provideAttributeValueUpdate(object, attributes)``.
+    ``removeObjectInstance(object, tag[, time, retraction])``,
+    ``provideAttributeValueUpdate(object, attributes)``, ``timeRegulationEnabled(time)``,
+    ``timeConstrainedEnabled(time)``, ``timeAdvanceGrant(time)`` and ``requestRetraction(retraction)``.
     """
 
 
@@ -222,6 +223,58 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         if int(handle) not in _ORDER_NAMES:
             raise _core.InvalidOrderingHandle(f"{handle!r} is not an ordering type")
         return _ORDER_NAMES[int(handle)]
+
+    # ---- blocking time advance (beyond PyHLA; asyncio forms in hlacore.aio) ----
+
+    def advance_to(self, time: float, timeout: Optional[float] = None) -> float:
+        """``timeAdvanceRequest(time)``, then tick until the grant is delivered; returns the grant time.
+
+        Callbacks before the grant (the timestamped messages up to ``time``) are delivered to the federate
+        ambassador as usual, the grant included; callbacks queued behind it wait for the next tick.
+        ``timeout`` (seconds, default none) raises :class:`TimeoutError` with the request still pending.
+        """
+        self.timeAdvanceRequest(time)
+        return self.await_grant(timeout)
+
+    def next_event(self, time: float, timeout: Optional[float] = None) -> float:
+        """``nextEventRequest(time)``, then tick until granted; returns the grant time (the earliest of
+        ``time`` and the next timestamped message). ``timeout`` as in :meth:`advance_to`."""
+        self.nextEventRequest(time)
+        return self.await_grant(timeout)
+
+    def await_grant(self, timeout: Optional[float] = None) -> float:
+        """Tick until the pending time advance is granted; returns the federate's new time.
+
+        For a request made with any of the five PyHLA calls. Raises :class:`TimeAdvanceWasNotInProgress`
+        when no request is pending and :class:`TimeoutError` when ``timeout`` seconds pass first.
+        """
+        if not self._time_advance_pending():
+            raise _core.TimeAdvanceWasNotInProgress("no time advance is pending")
+        deadline = None if timeout is None else _time.monotonic() + timeout
+        while not self.deliver_until_granted():
+            remaining = -1.0
+            if deadline is not None:
+                remaining = deadline - _time.monotonic()
+                if remaining <= 0:
+                    raise TimeoutError(f"no time advance grant within {timeout} s")
+            self._wait(remaining)
+        return float(self.queryFederateTime())
+
+    def deliver_until_granted(self) -> bool:
+        """Deliver ready callbacks, stopping after a grant; True once no time advance is pending."""
+        ambassador = self._federate_ambassador
+        while self._time_advance_pending():
+            callback = self._next_callback()
+            if callback is None:
+                self._poll()
+                callback = self._next_callback()
+                if callback is None:
+                    return False
+            name, args = callback
+            method = getattr(ambassador, name, None)
+            if method is not None:
+                method(*args)
+        return True
 
     # ---- evoking callbacks ----
 

@@ -1,0 +1,255 @@
+// The federate side of time management (HLA 1.3 §8): local checks with the spec's exceptions, the
+// sending rule of docs/time-management.md, and the time state that the callbacks change when popped.
+#include <cmath>
+#include <sstream>
+
+#include "rti/client.hpp"
+
+namespace hlacore {
+
+namespace {
+
+[[noreturn]] void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
+
+std::string text(Time t) {
+    std::ostringstream out;
+    out.precision(17);
+    out << t;
+    return out.str();
+}
+
+bool is_available(AdvanceKind kind) {
+    return kind == AdvanceKind::TimeAdvanceRequestAvailable || kind == AdvanceKind::NextEventRequestAvailable;
+}
+
+// after(x, L, kind) of the contract: x + L, or with zero lookahead x itself after an "available" request
+// and the next double above x otherwise.
+Time after(Time x, Time lookahead, bool strict) {
+    if (lookahead > 0 && x + lookahead > x) return x + lookahead;
+    return strict ? std::nextafter(x, kInfinity) : x;
+}
+
+const char* service_name(AdvanceKind kind) {
+    switch (kind) {
+        case AdvanceKind::TimeAdvanceRequest: return "timeAdvanceRequest";
+        case AdvanceKind::TimeAdvanceRequestAvailable: return "timeAdvanceRequestAvailable";
+        case AdvanceKind::NextEventRequest: return "nextEventRequest";
+        case AdvanceKind::NextEventRequestAvailable: return "nextEventRequestAvailable";
+        case AdvanceKind::FlushQueueRequest: return "flushQueueRequest";
+        case AdvanceKind::None: break;
+    }
+    return "time advance";
+}
+
+}  // namespace
+
+Time Client::lowest_sendable() const {
+    const TimeState& s = time_;
+    const Time rule = s.pending != AdvanceKind::None ? after(s.pending_time, s.lookahead, !is_available(s.pending))
+                                                     : after(s.time, s.lookahead, s.strict);
+    return std::max(rule, s.floor);
+}
+
+void Client::check_send_time(const wire::OptionalTime& time) const {
+    if (!time) return;
+    if (std::isnan(*time)) raise(ErrorCode::InvalidFederationTime, "the timestamp is NaN");
+    if (time_.regulation_pending)
+        raise(ErrorCode::InvalidFederationTime,
+              "timestamp " + text(*time) + " sent while enableTimeRegulation is pending; wait for timeRegulationEnabled");
+    if (!time_.regulating) return;  // receive order everywhere: any timestamp will do
+    const Time lowest = lowest_sendable();
+    if (*time < lowest) {
+        std::string why = time_.pending != AdvanceKind::None
+                              ? "requested time " + text(time_.pending_time) + " + lookahead " + text(time_.lookahead)
+                              : "federate time " + text(time_.time) + " + lookahead " + text(time_.lookahead);
+        raise(ErrorCode::InvalidFederationTime, "timestamp " + text(*time) + " is below " + text(lowest) +
+                                                    ", the lowest this federate may send (" + why + ")");
+    }
+}
+
+void Client::note_sent(std::uint64_t serial, const wire::OptionalTime& time) {
+    if (time && time_.regulating) time_.retractable.emplace(serial, *time);
+}
+
+// HLA 1.3 §8.3, §8.6, §8.13: the callbacks take effect when the federate receives them.
+void Client::apply_time_callback(const wire::Message& m) {
+    TimeState& s = time_;
+    if (const auto* r = std::get_if<wire::TimeRegulationEnabled>(&m)) {
+        s.regulation_pending = false;
+        s.regulating = true;
+        s.time = r->time;
+        s.strict = false;
+    } else if (const auto* c = std::get_if<wire::TimeConstrainedEnabled>(&m)) {
+        s.constrained_pending = false;
+        s.constrained = true;
+        s.time = c->time;
+    } else if (const auto* g = std::get_if<wire::TimeAdvanceGrant>(&m)) {
+        s.time = g->time;
+        s.strict = !is_available(s.pending) && !(s.lookahead > 0 && g->time + s.lookahead > g->time);
+        s.pending = AdvanceKind::None;
+        // A message at or below the federate's time can no longer be retracted (§8.21).
+        for (auto it = s.retractable.begin(); it != s.retractable.end();)
+            it = it->second <= g->time ? s.retractable.erase(it) : std::next(it);
+    }
+}
+
+void Client::enable_time_regulation(Time time, Time lookahead) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        if (time_.regulating) raise(ErrorCode::TimeRegulationAlreadyEnabled, "time regulation is already enabled");
+        if (time_.regulation_pending)
+            raise(ErrorCode::EnableTimeRegulationPending, "enableTimeRegulation is already pending");
+        if (time_.pending != AdvanceKind::None)
+            raise(ErrorCode::TimeAdvanceAlreadyInProgress,
+                  std::string(service_name(time_.pending)) + "(" + text(time_.pending_time) + ") is in progress");
+        if (!std::isfinite(time)) raise(ErrorCode::InvalidFederationTime, "federate time " + text(time) + " is not finite");
+        if (!(lookahead >= 0) || !std::isfinite(lookahead))
+            raise(ErrorCode::InvalidLookahead, "lookahead " + text(lookahead) + " is not a finite value >= 0");
+        time_.regulation_pending = true;
+        time_.lookahead = lookahead;
+        time_.floor = -kInfinity;
+    }
+    send(wire::EnableTimeRegulation{time, lookahead});
+}
+
+void Client::disable_time_regulation() {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        if (!time_.regulating)
+            raise(ErrorCode::TimeRegulationWasNotEnabled,
+                  time_.regulation_pending ? "time regulation is still being enabled (timeRegulationEnabled not yet delivered)"
+                                           : "time regulation is not enabled");
+        time_.regulating = false;
+        time_.retractable.clear();
+    }
+    send(wire::DisableTimeRegulation{});
+}
+
+void Client::enable_time_constrained() {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        if (time_.constrained) raise(ErrorCode::TimeConstrainedAlreadyEnabled, "time constrained is already enabled");
+        if (time_.constrained_pending)
+            raise(ErrorCode::EnableTimeConstrainedPending, "enableTimeConstrained is already pending");
+        if (time_.pending != AdvanceKind::None)
+            raise(ErrorCode::TimeAdvanceAlreadyInProgress,
+                  std::string(service_name(time_.pending)) + "(" + text(time_.pending_time) + ") is in progress");
+        time_.constrained_pending = true;
+    }
+    send(wire::EnableTimeConstrained{});
+}
+
+void Client::disable_time_constrained() {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        if (!time_.constrained)
+            raise(ErrorCode::TimeConstrainedWasNotEnabled,
+                  time_.constrained_pending ? "time constrained is still being enabled (timeConstrainedEnabled not yet delivered)"
+                                            : "time constrained is not enabled");
+        time_.constrained = false;
+    }
+    send(wire::DisableTimeConstrained{});
+}
+
+// HLA 1.3 §8.8-8.12.
+void Client::time_advance(AdvanceKind kind, Time time) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        const char* name = service_name(kind);
+        if (std::isnan(time)) raise(ErrorCode::InvalidFederationTime, std::string(name) + ": the time is NaN");
+        if (time_.pending != AdvanceKind::None)
+            raise(ErrorCode::TimeAdvanceAlreadyInProgress,
+                  std::string(service_name(time_.pending)) + "(" + text(time_.pending_time) + ") is in progress");
+        if (time_.regulation_pending)
+            raise(ErrorCode::EnableTimeRegulationPending,
+                  std::string(name) + " while enableTimeRegulation is pending; wait for timeRegulationEnabled");
+        if (time_.constrained_pending)
+            raise(ErrorCode::EnableTimeConstrainedPending,
+                  std::string(name) + " while enableTimeConstrained is pending; wait for timeConstrainedEnabled");
+        if (time < time_.time)
+            raise(ErrorCode::FederationTimeAlreadyPassed,
+                  std::string(name) + "(" + text(time) + ") is before the federate time " + text(time_.time));
+        time_.pending = kind;
+        time_.pending_time = time;
+    }
+    send(wire::TimeAdvance{static_cast<std::uint8_t>(kind), time});
+}
+
+void Client::modify_lookahead(Time lookahead) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        if (!(lookahead >= 0) || !std::isfinite(lookahead))
+            raise(ErrorCode::InvalidLookahead, "lookahead " + text(lookahead) + " is not a finite value >= 0");
+        if (time_.regulating) time_.floor = lowest_sendable();
+        time_.lookahead = lookahead;
+    }
+    send(wire::ModifyLookahead{lookahead});
+}
+
+Time Client::query_lookahead() const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    return time_.lookahead;
+}
+
+Time Client::query_federate_time() const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    return time_.time;
+}
+
+Time Client::query_lbts() {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    const auto id = next_request();
+    return call(wire::QueryTime{id, static_cast<std::uint8_t>(wire::TimeQuery::Lbts)}, id).value;
+}
+
+Time Client::query_min_next_event_time() {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    const auto id = next_request();
+    return call(wire::QueryTime{id, static_cast<std::uint8_t>(wire::TimeQuery::MinNextEventTime)}, id).value;
+}
+
+void Client::set_asynchronous_delivery(bool on) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        if (time_.asynchronous_delivery == on)
+            raise(on ? ErrorCode::AsynchronousDeliveryAlreadyEnabled : ErrorCode::AsynchronousDeliveryAlreadyDisabled,
+                  on ? "asynchronous delivery is already enabled" : "asynchronous delivery is already disabled");
+        time_.asynchronous_delivery = on;
+    }
+    send(wire::SetAsynchronousDelivery{on});
+}
+
+// HLA 1.3 §8.21: only the sender may retract, and only messages above its current time.
+void Client::retract(std::uint32_t sender, std::uint64_t serial) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        if (sender != federate_ || !time_.retractable.erase(serial))
+            raise(ErrorCode::InvalidRetractionHandle,
+                  "event retraction handle " + std::to_string(sender) + ":" + std::to_string(serial) +
+                      " does not name a timestamped message of this federate above its time " + text(time_.time));
+    }
+    send(wire::Retract{serial});
+}
+
+bool Client::time_advance_pending() const {
+    std::lock_guard<std::mutex> lock(mu_);
+    return time_.pending != AdvanceKind::None;
+}
+
+}  // namespace hlacore

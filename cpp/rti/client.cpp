@@ -227,6 +227,11 @@ void Client::file(std::vector<wire::Message>& got) {
     }
 }
 
+std::string Client::query_status() {
+    const auto id = next_request();
+    return call(wire::QueryStatus{id}, id).text;
+}
+
 void Client::poll_now() { pump(Clock::now(), [] { return false; }); }
 
 Client::WaitStatus Client::wait_for_callback(Clock::time_point deadline) {

@@ -107,6 +107,9 @@ public:
     fom::Handle interaction_routing_space(fom::Handle cls) const;
     std::uint32_t federate_handle() const;
 
+    // The gateway's state as JSON (needs no join).
+    std::string query_status();
+
     // ---- evoking callbacks ----
     // Reads what the socket has without blocking.
     void poll_now();

@@ -57,8 +57,8 @@ public:
 
     // LBTS or the minimum next event time of a federate (HLA 1.3 §8.16, §8.18).
     double query_time(FederateHandle federate, wire::TimeQuery which);
-    // Per-federate time state, for introspection.
-    std::vector<TimeFederateStatus> time_status() { return time_.status(); }
+    // Appends this federation's state as a JSON object (federates, time state, objects, sync points).
+    void write_status(std::string& json);
 
     // Everything else a federate sends once joined. Handles are checked against the FOM (a bad one is a
     // protocol violation: wire::WireError); objects that vanished meanwhile are ignored.

@@ -1,4 +1,5 @@
 #include "rti/gateway.hpp"
+#include "rti/status.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -353,6 +354,20 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
         } catch (const RtiError& e) {
             error_reply(m->request, e);
         }
+        return;
+    }
+    if (const auto* m = std::get_if<wire::QueryStatus>(&message)) {
+        std::string json = "{\"server\":\"hlacore rtig\",\"address\":";
+        json_string(json, options_.host + ":" + std::to_string(port_));
+        json += ",\"connections\":" + std::to_string(connections_.size()) + ",\"federations\":[";
+        bool first = true;
+        for (auto& [name, entry] : federations_) {
+            if (!first) json += ',';
+            first = false;
+            entry->federation.write_status(json);
+        }
+        json += "]}";
+        reply(c, wire::Reply{m->request, 0, "", 0, std::move(json), "", 0});
         return;
     }
     if (const auto* m = std::get_if<wire::QueryTime>(&message)) {

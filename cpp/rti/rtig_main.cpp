@@ -6,6 +6,7 @@
 #include <exception>
 #include <string>
 
+#include "rti/client.hpp"
 #include "rti/gateway.hpp"
 
 namespace {
@@ -19,12 +20,37 @@ void on_signal(int) {
 int usage(int status) {
     std::fprintf(status ? stderr : stdout,
                  "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--verbose]\n"
+                 "       rtig --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
                  "  --fom-path DIR     where to look for FED files a federate could not read itself\n"
                  "  --frame-timeout S  drop a client whose frame stays incomplete S seconds (default 10)\n"
-                 "  --verbose          log connections, joins and federations to stderr\n");
+                 "  --verbose          log connections, joins and federations to stderr\n"
+                 "  --status           print the state of a running rtig (default 127.0.0.1:60400) as JSON:\n"
+                 "                     per federation each federate's time, lookahead, regulating/constrained,\n"
+                 "                     pending request, queued messages, LBTS (`python -m hlacore.status` is a table)\n");
     return status;
+}
+
+// Connects to a running gateway and prints its status report.
+int print_status(const std::string& address) {
+    const auto colon = address.rfind(':');
+    const std::string host = colon == std::string::npos ? address : address.substr(0, colon);
+    const std::string port_text = colon == std::string::npos ? "60400" : address.substr(colon + 1);
+    char* end = nullptr;
+    const long port = std::strtol(port_text.c_str(), &end, 10);
+    if (port_text.empty() || *end != '\0' || port <= 0 || port > 65535) {
+        std::fprintf(stderr, "rtig: invalid address '%s' (HOST:PORT expected)\n", address.c_str());
+        return 2;
+    }
+    try {
+        hlacore::Client client(host.empty() ? "127.0.0.1" : host, static_cast<std::uint16_t>(port));
+        std::printf("%s\n", client.query_status().c_str());
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "rtig: %s\n", e.what());
+        return 1;
+    }
 }
 
 }  // namespace
@@ -64,6 +90,12 @@ int main(int argc, char** argv) {
             options.partial_frame_timeout_s = seconds;
         } else if (arg == "--verbose" || arg == "-v") {
             options.verbose = true;
+        } else if (arg == "--status") {
+            if (i + 2 < argc) {
+                std::fprintf(stderr, "rtig: --status takes at most one HOST:PORT\n");
+                return usage(2);
+            }
+            return print_status(i + 1 < argc ? argv[i + 1] : "127.0.0.1:60400");
         } else if (arg == "--help" || arg == "-h") {
             return usage(0);
         } else {

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from types import TracebackType
-from typing import Iterable, Optional
+from typing import Any, Iterable, Optional
 
 from . import _core
 
@@ -48,6 +48,13 @@ class Gateway:
     def running(self) -> bool:
         """True until :meth:`stop` has returned."""
         return bool(self._gateway.running)
+
+    def status(self) -> dict[str, Any]:
+        """Per federation, each federate's time, lookahead, regulating/constrained, pending request and
+        queued messages: see :func:`hlacore.status.status`."""
+        from .status import status
+
+        return status(self.address)
 
     def stop(self) -> None:
         """Stop serving and close every connection; idempotent."""

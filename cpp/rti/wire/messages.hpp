@@ -77,7 +77,9 @@ using OptionalTime = std::optional<double>;
     X(TimeRegulationEnabled)         \
     X(TimeConstrainedEnabled)        \
     X(TimeAdvanceGrant)              \
-    X(RequestRetraction)
+    X(RequestRetraction)             \
+    /* introspection */              \
+    X(QueryStatus)
 
 enum class MessageType : std::uint16_t {
     Invalid = 0,
@@ -314,6 +316,14 @@ struct QueryTime {
     std::uint32_t request = 0;
     std::uint8_t which = 0;  // TimeQuery
     HLACORE_FIELDS(request, which)
+};
+
+// Answered with a Reply whose text is the gateway's state as JSON (see docs/time-management.md);
+// allowed before joining, so that `rtig --status` can ask.
+struct QueryStatus {
+    HLACORE_TYPE(QueryStatus)
+    std::uint32_t request = 0;
+    HLACORE_FIELDS(request)
 };
 
 // ---- gateway -> federate ----

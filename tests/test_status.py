@@ -1,0 +1,94 @@
+"""Introspection: the gateway reports each federate's time state (Python call, rtig --status, table)."""
+
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+
+import hlacore
+import hlacore.rti as rti
+from hlacore.status import status
+
+from conftest import ROBOT_FED, Recorder, RtigProcess, rtig_executable, tick_until
+
+
+def join_timed(address: str, name: str, lookahead: float) -> tuple[rti.RTIAmbassador, Recorder]:
+    rtia, amb = rti.RTIAmbassador(address), Recorder()
+    rtia.joinFederationExecution(name, "TestFed", amb)
+    rtia.enableTimeRegulation(0.0, lookahead)
+    rtia.enableTimeConstrained()
+    tick_until(lambda: bool(amb.named("timeConstrainedEnabled")), rtia)
+    return rtia, amb
+
+
+def test_status_reports_each_federates_time_state(inprocess_gateway: hlacore.Gateway) -> None:
+    address = inprocess_gateway.address
+    creator = rti.RTIAmbassador(address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    a, _ = join_timed(address, "alpha", 1.0)
+    b, _ = join_timed(address, "beta", 2.0)
+    command = a.getInteractionClassHandle("command")
+    value = a.getParameterHandle("value", command)
+    a.publishInteractionClass(command)
+    b.subscribeInteractionClass(command)
+    b.queryLBTS()  # the subscription is in place
+    a.sendInteraction(command, {value: b"x"}, "", 7.0)
+    a.timeAdvanceRequest(3.0)  # waits: beta's bound is 2
+    report = inprocess_gateway.status()
+    assert report["server"] == "hlacore rtig"
+    (federation,) = report["federations"]
+    assert federation["name"] == "TestFed" and federation["fed"] == ROBOT_FED
+    alpha, beta = federation["federates"]
+    assert alpha == {
+        "handle": 1, "name": "alpha", "time": 0.0, "lookahead": 1.0, "regulating": True, "constrained": True,
+        "asynchronous_delivery": False, "pending": {"request": "TAR", "time": 3.0}, "queued_tso": 0,
+        "queued_ro": 0, "lbts": 2.0, "output_bound": 4.0,
+    }
+    assert beta["pending"] is None and beta["queued_tso"] == 1 and beta["lbts"] == 4.0
+    assert beta["output_bound"] == 2.0
+    b.timeAdvanceRequest(3.0)
+    assert a.await_grant(5.0) == 3.0
+    assert b.await_grant(5.0) == 3.0
+    report = status(address)
+    alpha, beta = report["federations"][0]["federates"]
+    assert (alpha["time"], alpha["pending"], beta["time"], beta["queued_tso"]) == (3.0, None, 3.0, 1)
+    for rtia in (a, b):
+        rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    assert status(address)["federations"][0]["federates"] == []
+    creator.destroyFederationExecution("TestFed")
+    assert status(address)["federations"] == []
+
+
+def test_infinite_bounds_are_null_on_the_wire_and_inf_in_python(rtig: RtigProcess) -> None:
+    creator = rti.RTIAmbassador(rtig.address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    lone, _ = join_timed(rtig.address, "lone", 1.0)
+    raw = subprocess.run([rtig_executable(), "--status", rtig.address], capture_output=True, text=True, timeout=10)
+    assert raw.returncode == 0, raw.stderr
+    (federate,) = json.loads(raw.stdout)["federations"][0]["federates"]
+    assert federate["name"] == "lone" and federate["lbts"] is None and federate["output_bound"] == 1.0
+    assert status(rtig.address)["federations"][0]["federates"][0]["lbts"] == math.inf
+    table = subprocess.run([sys.executable, "-m", "hlacore.status", rtig.address], capture_output=True, text=True,
+                           timeout=10)
+    assert table.returncode == 0, table.stderr
+    assert "federation TestFed" in table.stdout
+    row = next(line for line in table.stdout.splitlines() if "lone" in line)
+    assert row.split() == ["1", "lone", "0", "1", "R", "C", "-", "0", "0", "inf"]
+    lone.resignFederationExecution(rti.ResignAction.NoAction)
+    creator.destroyFederationExecution("TestFed")
+
+
+def test_status_of_nothing_listening_is_a_clear_error() -> None:
+    import socket
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    out = subprocess.run([rtig_executable(), "--status", f"127.0.0.1:{port}"], capture_output=True, text=True,
+                         timeout=10)
+    assert out.returncode == 1 and "cannot connect to rtig at 127.0.0.1:" in out.stderr
+    out = subprocess.run([sys.executable, "-m", "hlacore.status", f"127.0.0.1:{port}"], capture_output=True,
+                         text=True, timeout=10)
+    assert out.returncode == 1 and "cannot connect" in out.stderr

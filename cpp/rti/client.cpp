@@ -70,11 +70,7 @@ Client::~Client() {
 
 // ---- plumbing ----
 
-template <class M>
-void Client::send(const M& message) {
-    std::lock_guard<std::mutex> lock(send_mu_);
-    send_buffer_.clear();
-    wire::encode(send_buffer_, message);
+void Client::write_send_buffer() {
     std::size_t done = 0;
     while (done < send_buffer_.size()) {
         ssize_t n = ::send(fd_, send_buffer_.data() + done, send_buffer_.size() - done, MSG_NOSIGNAL);

@@ -143,7 +143,13 @@ private:
     };
 
     template <class M>
-    void send(const M& message);
+    void send(const M& message) {
+        std::lock_guard<std::mutex> lock(send_mu_);
+        send_buffer_.clear();
+        wire::encode(send_buffer_, message);
+        write_send_buffer();
+    }
+    void write_send_buffer();  // under send_mu_
     wire::Reply call(wire::Message request, std::uint32_t request_id);
     std::uint32_t next_request();
     // Reads the socket until pred() holds (checked under mu_), the deadline passes or a signal arrives.

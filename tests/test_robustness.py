@@ -43,7 +43,12 @@ MESSAGE_TYPES = [
     "SubscribeObjectClass", "UnsubscribeObjectClass", "PublishInteractionClass", "UnpublishInteractionClass",
     "SubscribeInteractionClass", "UnsubscribeInteractionClass", "RegisterObject", "UpdateAttributes",
     "SendInteraction", "DeleteObject", "LocalDeleteObject", "RequestObjectUpdate", "RequestClassUpdate",
-    "SetAdvisorySwitch", "Reply",
+    "SetAdvisorySwitch", "Reply", "SyncPointRegistrationSucceeded", "SyncPointRegistrationFailed",
+    "AnnounceSyncPoint", "FederationSynchronized", "StartRegistration", "StopRegistration", "TurnInteractionsOn",
+    "TurnInteractionsOff", "DiscoverObject", "ReflectAttributes", "ReceiveInteraction", "RemoveObject",
+    "ProvideAttributeValueUpdate", "EnableTimeRegulation", "DisableTimeRegulation", "EnableTimeConstrained",
+    "DisableTimeConstrained", "TimeAdvance", "ModifyLookahead", "SetAsynchronousDelivery", "Retract", "QueryTime",
+    "TimeRegulationEnabled", "TimeConstrainedEnabled", "TimeAdvanceGrant", "RequestRetraction",
 ]  # fmt: skip
 T = {name: code for code, name in enumerate(MESSAGE_TYPES, start=1)}
 
@@ -60,8 +65,20 @@ def u32(v: int) -> bytes:
     return struct.pack("<I", v)
 
 
+def u64(v: int) -> bytes:
+    return struct.pack("<Q", v)
+
+
+def f64(v: float) -> bytes:
+    return struct.pack("<d", v)
+
+
 def boolean(v: bool) -> bytes:
     return u8(1 if v else 0)
+
+
+def optional_time(t: Optional[float]) -> bytes:
+    return boolean(False) if t is None else boolean(True) + f64(t)
 
 
 def string(s: str | bytes) -> bytes:
@@ -121,6 +138,7 @@ class RawClient:
         self.local = "%s:%d" % self.sock.getsockname()
         self.buffer = b""
         self.request = 0
+        self.skipped: list[tuple[int, bytes]] = []  # frames call() read past while waiting for its Reply
 
     def close(self) -> None:
         self.sock.close()
@@ -169,6 +187,7 @@ class RawClient:
         while True:
             code, payload = self.recv_frame()
             if code != T["Reply"]:
+                self.skipped.append((code, payload))
                 continue
             c = Cursor(payload)
             reply = Reply(c.take("<I"), c.take("<H"), c.string().decode(), c.take("<I"))
@@ -185,6 +204,15 @@ class RawClient:
         """A round trip (an error Reply) proving that everything sent before was handled."""
         reply = self.call("DestroyFederation", string("no-such-federation"))
         assert reply.error != 0
+
+    def frames_until(self, message: str, timeout: float = 5.0) -> tuple[list[tuple[int, bytes]], bytes]:
+        """Read frames until one of type `message`: returns (the frames before it, its payload)."""
+        before = []
+        while True:
+            code, payload = self.recv_frame(timeout)
+            if code == T[message]:
+                return before, payload
+            before.append((code, payload))
 
     def wait_eof(self, timeout: float = 5.0) -> None:
         """Read (and discard) until the gateway's close shows: EOF or a reset."""
@@ -720,4 +748,121 @@ def test_fed_name_naming_a_fifo_does_not_freeze_the_gateway(
             os.close(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK))
         except OSError:  # ENXIO: nobody has it open for reading
             pass
+    legit.check_working()
+
+
+# ---- 10. time management rules the client checks first ----
+
+TAR = 1  # TimeAdvance kinds (AdvanceKind)
+
+
+def send_interaction(client: RawClient, command: int, value: int, data: bytes, ts: Optional[float], serial: int) -> bytes:
+    return frame(
+        "SendInteraction",
+        u32(command) + u32(1) + u32(value) + string(data) + string("raw") + optional_time(ts) + u64(serial),
+    )
+
+
+def interaction_time(payload: bytes) -> tuple[bytes, Optional[float]]:
+    """(the first parameter's value, the timestamp) of a ReceiveInteraction payload."""
+    c = Cursor(payload)
+    c.take("<I")
+    n = c.take("<I")
+    values = []
+    for _ in range(n):
+        c.take("<I")
+        values.append(c.string())
+    c.string()
+    c.take("<B"), c.take("<B")
+    ts = c.take("<d") if c.take("<B") else None
+    return values[0], ts
+
+
+@pytest.mark.parametrize("message", ["interaction", "update", "delete"])
+def test_timestamp_below_the_senders_bound_is_a_protocol_error(rtig: RtigProcess, legit: Legit, message: str) -> None:
+    """A regulating federate (lookahead 1 at time 0) sending at 0.5, below its bound 1, is dropped and resigned;
+    at 1 itself it was fine. Its early message reaches nobody."""
+    robot, battery, _ = legit.handles()
+    command, value = int(legit.command), int(legit.value)
+    bob = legit.bob
+    with raw_client(rtig.address) as hasty:
+        handle = hasty.join("hasty")
+        hasty.send(frame("PublishObjectClass", u32(robot) + handles([battery])))
+        hasty.send(frame("PublishInteractionClass", u32(command)))
+        reply = hasty.call("RegisterObject", u32(robot) + string("hasty-object"))
+        assert reply.error == 0, reply.message
+        hasty.send(frame("EnableTimeRegulation", f64(0.0) + f64(1.0)))
+        _, enabled = hasty.frames_until("TimeRegulationEnabled")
+        assert Cursor(enabled).take("<d") == 0.0
+        hasty.send(send_interaction(hasty, command, value, b"on-time", 1.0, 0))
+        tick_until(lambda: any(a[1].get(legit.value) == b"on-time" for a in bob.amb.named("receiveInteraction")), bob.rtia)
+        early = {
+            "interaction": send_interaction(hasty, command, value, b"early", 0.5, 1),
+            "update": frame(
+                "UpdateAttributes",
+                u32(reply.handle) + u32(1) + u32(battery) + string(b"early") + string("raw") + optional_time(0.5) + u64(1),
+            ),
+            "delete": frame("DeleteObject", u32(reply.handle) + string("early") + optional_time(0.5) + u64(1)),
+        }[message]
+        hasty.send(early, tolerate_drop=True)
+        hasty.wait_eof()
+        line = dropped_line(rtig, hasty)
+    what = {"interaction": "interaction", "update": "attribute update", "delete": "object deletion"}[message]
+    assert f"(federate {handle} of 'TestFed'): protocol error: {what} at timestamp 0.5 is below the sender's " in line
+    assert "output bound 1 " in line, line
+    # removed by the resign (empty tag), not by the early deletion
+    tick_until(lambda: any(int(a[0]) == reply.handle for a in bob.amb.named("removeObjectInstance")), bob.rtia)
+    assert [a[1] for a in bob.amb.named("removeObjectInstance") if int(a[0]) == reply.handle] == [""]
+    assert not any(a[1].get(legit.value) == b"early" for a in bob.amb.named("receiveInteraction"))
+    assert not any(a[1].get(legit.battery) == b"early" for a in bob.amb.named("reflectAttributeValues"))
+    again = Federate(rtig.address, "hasty")
+    again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    legit.check_working()
+
+
+@pytest.mark.parametrize("then", ["advance-others", "enable-again", "advance-self"])
+def test_pending_regulation_enable_over_the_wire(rtig: RtigProcess, legit: Legit, then: str) -> None:
+    """A constrained federate enabling regulation ahead of its LBTS gets the TSO messages below t0 first, then
+    timeRegulationEnabled(t0); enabling again or asking to advance meanwhile is a protocol error."""
+    command, value = int(legit.command), int(legit.value)
+    with raw_client(rtig.address) as pacer, raw_client(rtig.address) as newcomer:
+        pacer.join("pacer")
+        pacer.send(frame("PublishInteractionClass", u32(command)))
+        pacer.send(frame("EnableTimeRegulation", f64(0.0) + f64(1.0)))
+        pacer.frames_until("TimeRegulationEnabled")
+        handle = newcomer.join("newcomer")
+        newcomer.send(frame("SubscribeInteractionClass", u32(command) + boolean(True)))
+        newcomer.send(frame("EnableTimeConstrained"))
+        _, enabled = newcomer.frames_until("TimeConstrainedEnabled")
+        assert Cursor(enabled).take("<d") == 0.0
+        pacer.send(send_interaction(pacer, command, value, b"at-2", 2.0, 0))
+        pacer.send(send_interaction(pacer, command, value, b"at-6", 6.0, 1))
+        pacer.ping()
+        newcomer.skipped.clear()
+        newcomer.send(frame("EnableTimeRegulation", f64(5.0) + f64(1.0)))  # t0 = 5 > LBTS = 1
+        newcomer.ping()
+        assert not newcomer.skipped and not newcomer.buffer, "nothing may come before the pacer moves"
+        if then == "advance-others":
+            pacer.send(frame("TimeAdvance", u8(TAR) + f64(10.0)))
+            _, granted = pacer.frames_until("TimeAdvanceGrant")
+            assert Cursor(granted).take("<d") == 10.0
+            before, enabled = newcomer.frames_until("TimeRegulationEnabled")
+            assert Cursor(enabled).take("<d") == 5.0
+            assert [interaction_time(p) for code, p in before if code == T["ReceiveInteraction"]] == [(b"at-2", 2.0)]
+            newcomer.send(frame("TimeAdvance", u8(TAR) + f64(7.0)))
+            before, granted = newcomer.frames_until("TimeAdvanceGrant")
+            assert Cursor(granted).take("<d") == 7.0
+            assert [interaction_time(p) for code, p in before if code == T["ReceiveInteraction"]] == [(b"at-6", 6.0)]
+            newcomer.ping()
+        else:
+            again = frame("EnableTimeRegulation", f64(5.0) + f64(1.0))
+            advance = frame("TimeAdvance", u8(TAR) + f64(7.0))
+            newcomer.send(again if then == "enable-again" else advance, tolerate_drop=True)
+            newcomer.wait_eof()
+            line = dropped_line(rtig, newcomer)
+            why = {
+                "enable-again": "enable time regulation while an enable is pending",
+                "advance-self": "time advance request while a regulation enable is pending",
+            }[then]
+            assert f"(federate {handle} of 'TestFed'): protocol error: {why}" in line, line
     legit.check_working()

@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 from hlacore import _core
 
-from time_reference import FQR, INF, NER, NERA, TAR, TARA, ReferenceTimeManager
+from time_reference import FQR, INF, NER, NERA, TAR, TARA, ReferenceTimeManager, after
 
 T_END = 1.0e6
 LOOKAHEADS = st.one_of(
@@ -75,7 +75,7 @@ def execute(tm: Any, op: tuple, present: List[int]) -> tuple:
         ret = tm.retract(op[1], op[2])
     else:  # pragma: no cover
         raise AssertionError(op)
-    released = [(f, list(frames), g, ce) for f, frames, g, ce in tm.release()]
+    released = [(f, list(frames), g, ce, re) for f, frames, g, ce, re in tm.release()]
     queries = {
         f: (
             tm.output_bound(f),
@@ -90,12 +90,12 @@ def execute(tm: Any, op: tuple, present: List[int]) -> tuple:
 
 
 def aggregate(released: List[tuple], extra: Optional[Tuple[int, List[bytes]]] = None) -> Dict[int, tuple]:
-    """Per federate: (TSO frames, RO frames, grant, constrained_enabled) delivered in one step."""
+    """Per federate: (TSO frames, RO frames, grant, constrained_enabled, regulation_enabled) of one step."""
     out: Dict[int, list] = {}
     if extra is not None and extra[1]:
-        out[extra[0]] = [list(extra[1]), [], None, None]
-    for f, frames, grant, ce in released:
-        agg = out.setdefault(f, [[], [], None, None])
+        out[extra[0]] = [list(extra[1]), [], None, None, None]
+    for f, frames, grant, ce, re in released:
+        agg = out.setdefault(f, [[], [], None, None, None])
         for p in frames:
             (agg[0] if is_tso_payload(p) else agg[1]).append(p)
         if grant is not None:
@@ -104,8 +104,11 @@ def aggregate(released: List[tuple], extra: Optional[Tuple[int, List[bytes]]] = 
         if ce is not None:
             assert agg[3] is None, f"two constrained-enabled to {f} in one release"
             agg[3] = ce
+        if re is not None:
+            assert agg[4] is None, f"two regulation-enabled to {f} in one release"
+            agg[4] = re
     # RO frames and re-ordered TSO frames are checked separately, so split the disable_constrained ones
-    return {f: (tuple(v[0]), tuple(v[1]), v[2], v[3]) for f, v in out.items()}
+    return {f: (tuple(v[0]), tuple(v[1]), v[2], v[3], v[4]) for f, v in out.items()}
 
 
 class Harness:
@@ -126,6 +129,10 @@ class Harness:
         self.floor: Dict[int, float] = {}  # last grant (or constrained-enabled) time: no TSO below it
         self.ro_counter = 0
         self._pending_kind: Dict[int, int] = {}
+        # The sending rule's memory, as a client keeps it: what it was allowed before lowering its lookahead,
+        # and the highest lookahead it had since asking for regulation (it learns t0 only at the callback).
+        self.kept: Dict[int, float] = {}
+        self.enable_lookahead: Dict[int, float] = {}
 
     # -------------------------------------------------------------- helpers
     @property
@@ -133,9 +140,10 @@ class Harness:
         return sorted(self.ref.feds)
 
     def allowed_send_minimum(self, f: int) -> float:
-        """The sending rule: after(T, L, last grant kind) or after(t, L, kind) while a request is pending, and
-        never below what was allowed before (lowered lookahead): the promise, i.e. the model's bound."""
-        return max(self.ref.output_bound(f), self.ref.sending_minimum(f))
+        """The document's sending rule as a client can follow it: after(T, L, last grant kind), also
+        after(t, L, kind) while a request is pending, and never below what was allowed before a lowered
+        lookahead. It knows nothing of the bounds: send() checks that they never exceed this."""
+        return max(self.ref.sending_minimum(f), self.kept.get(f, -INF))
 
     def _model_apply(self, op: tuple) -> Any:
         name, ref = op[0], self.ref
@@ -199,9 +207,9 @@ class Harness:
         want = {}
         for f, r in expected_rel.items():
             tso = (list(extra[1]) if extra and extra[0] == f else []) + list(r.tso)
-            want[f] = (tuple(tso), tuple(r.ro), r.grant, r.constrained_enabled)
+            want[f] = (tuple(tso), tuple(r.ro), r.grant, r.constrained_enabled, r.regulation_enabled)
         if extra and extra[1] and extra[0] not in want:
-            want[extra[0]] = (tuple(extra[1]), (), None, None)
+            want[extra[0]] = (tuple(extra[1]), (), None, None, None)
         assert got == want, f"{ctx}: release {released!r}\n  model {want!r}"
 
         # property 1 and 4: timestamps, order, exactly-once (disable_constrained hands back first)
@@ -212,7 +220,7 @@ class Harness:
                 assert m[0] >= self.floor.get(extra[0], 0.0), f"{ctx}: queued TSO {m} below the last grant"
             self._mark_delivered(extra[0], tso, ctx)
 
-        for f, frames, grant, _ce in released:
+        for f, frames, grant, _ce, re in released:
             kind = self.ref_kind_of_grant(op, f, grant)
             t_before = self.floor.get(f, 0.0)
             tso = [parse_tso(p) for p in frames if is_tso_payload(p)]
@@ -222,15 +230,23 @@ class Harness:
                     assert m[0] > t_before, f"{ctx}: {f} strictly granted {t_before} got TSO {m}"
                 if grant is not None and kind in (TAR, TARA, NER, NERA):
                     assert m[0] <= grant, f"{ctx}: {f} got TSO {m} with its grant to {grant}"
+                if re is not None:  # delivered before timeRegulationEnabled(re), like TARA(re)
+                    assert m[0] <= re, f"{ctx}: {f} got TSO {m} with its regulation enabled at {re}"
             assert tso == sorted(tso), f"{ctx}: {f} got TSO out of order {tso}"
             self._mark_delivered(f, tso, ctx)
             self.ro_got.setdefault(f, []).extend(p for p in frames if not is_tso_payload(p))
-            if grant is not None:
-                self.last_kind[f] = kind
-                self.floor[f] = grant
             if _ce is not None:
                 self.floor[f] = _ce
                 self.last_kind.pop(f, None)
+            if re is not None:
+                L = self.enable_lookahead.pop(f)
+                self.kept[f] = max(self.kept.get(f, -INF), after(re, L, False))
+                if re > t_before:  # moved to re like TARA(re); at t_before nothing changes for receiving
+                    self.floor[f] = re
+                    self.last_kind.pop(f, None)
+            if grant is not None:
+                self.last_kind[f] = kind
+                self.floor[f] = grant
         # property 2: queries
         bounds = self.ref.compute_bounds()
         for f in present:
@@ -246,6 +262,13 @@ class Harness:
             assert queries[f] == want_q, (
                 f"{ctx}: federate {f} (output_bound, lbts, mnet, time, holds_ro) = {queries[f]!r}, model {want_q!r}"
             )
+            s, tm = self.ref.feds[f], self.tm
+            states = (tm.regulating(f), tm.enabling_regulation(f), tm.advancing(f))
+            assert states == (s.regulating, s.enabling is not None, bool(s.pending)), f"{ctx}: {f} states {states}"
+            # the gateway's check of timestamps (may_send) accepts exactly what is at or above the bound
+            b = bounds.get(f, INF) if s.regulating else -INF
+            assert tm.promise(f) == b, f"{ctx}: promise of {f} is {tm.promise(f)}, model bound {b}"
+            assert tm.may_send(f, b) and (b == -INF or not tm.may_send(f, math.nextafter(b, -INF)))
 
     def ref_kind_of_grant(self, op: tuple, f: int, grant: Optional[float]) -> Optional[int]:
         if grant is None:
@@ -264,8 +287,20 @@ class Harness:
     # -------------------------------------------------------------- legal operations
 
     def run_op(self, op: tuple) -> None:
-        if op[0] == "request":
+        name = op[0]
+        if name == "request":
             self._pending_kind[op[1]] = op[2]
+        elif name in ("enable_regulation", "disable_regulation", "remove"):
+            self.kept.pop(op[1], None)
+            self.enable_lookahead.pop(op[1], None)
+            if name == "enable_regulation":
+                self.enable_lookahead[op[1]] = op[3]
+        elif name == "lookahead":
+            f = op[1]
+            if f in self.enable_lookahead:
+                self.enable_lookahead[f] = max(self.enable_lookahead[f], op[2])
+            else:
+                self.kept[f] = self.allowed_send_minimum(f)
         self.step(op)
 
     def send(self, sender: int, ts: float) -> None:
@@ -274,6 +309,7 @@ class Harness:
         assert ts >= b, (
             f"document inconsistency: the sending rule allows {ts} but the model's bound of {sender} is {b}"
         )
+        assert self.tm.may_send(sender, ts), f"the gateway would drop {sender} for a legal timestamp {ts}"
         receivers = []
         for r in self.present:
             if r == sender:
@@ -292,13 +328,19 @@ class Harness:
     def draw_op(self, draw: Any) -> None:
         feds = self.ref.feds
         present = self.present
-        idle = [f for f in present if not feds[f].pending and not feds[f].constrained_pending]
+        idle = [
+            f for f in present if not feds[f].pending and not feds[f].constrained_pending and feds[f].enabling is None
+        ]
         regulating = [f for f in present if feds[f].regulating]
+        # no timestamps before timeRegulationEnabled: the federate does not know t0 yet
+        senders = [f for f in regulating if feds[f].enabling is None]
         choices = []
         if idle:
             choices += ["request"] * 6
+        if senders:
+            choices += ["send"] * 6
         if regulating:
-            choices += ["send"] * 6 + ["lookahead"]
+            choices += ["lookahead"]
         choices += ["send_ro", "async", "regulation", "constrained"]
         if any(self.sent.get(k, -INF) > feds[k[0]].time for k in self.sent if k[0] in feds):
             choices.append("retract")
@@ -322,7 +364,7 @@ class Harness:
                 t = feds[f].time + draw(DELTAS)
             self.run_op(("request", f, kind, t))
         elif what == "send":
-            f = draw(st.sampled_from(regulating))
+            f = draw(st.sampled_from(senders))
             self.send(f, self.allowed_send_minimum(f) + draw(DELTAS))
         elif what == "lookahead":
             f = draw(st.sampled_from(regulating))
@@ -342,16 +384,10 @@ class Harness:
         elif what == "regulation":
             f = draw(st.sampled_from(present))
             if feds[f].regulating:
-                self.run_op(("disable_regulation", f))
+                if feds[f].enabling is None:  # disabling a pending enable is refused by the client
+                    self.run_op(("disable_regulation", f))
             elif not feds[f].pending:
-                time, lookahead = feds[f].time + draw(DELTAS), draw(LOOKAHEADS)
-                # A constrained federate whose t0 passes its own LBTS or queued messages would receive TSO
-                # messages in its past: a hole in the document, pinned by
-                # test_enabling_regulation_never_moves_a_constrained_federate_past_its_messages.
-                if not feds[f].constrained or self.ref.regulation_start(f, time, lookahead) <= min(
-                    self.ref.lbts(f), self.ref.min_next_event_time(f)
-                ):
-                    self.run_op(("enable_regulation", f, time, lookahead))
+                self.run_op(("enable_regulation", f, feds[f].time + draw(DELTAS), draw(LOOKAHEADS)))
         elif what == "constrained":
             f = draw(st.sampled_from(present))
             if feds[f].constrained:
@@ -374,14 +410,18 @@ class Harness:
         feds = self.ref.feds
         # one kind for everyone: a zero-lookahead TARA(T_END) sender blocks a TAR(T_END) receiver
         kind = draw(st.sampled_from([TAR, TARA]))
+
+        def waiting(s: Any) -> bool:
+            return bool(s.pending or s.constrained_pending or s.enabling is not None)
+
         for _round in range(6):
             # everyone idle at the start of the round: then all of them request T_END in this round
-            all_request = not any(feds[f].pending or feds[f].constrained_pending for f in self.present)
+            all_request = not any(waiting(feds[f]) for f in self.present)
             for f in self.present:
                 s = feds[f]
-                if not s.pending and not s.constrained_pending and s.time < T_END:
+                if not waiting(s) and s.time < T_END:
                     self.run_op(("request", f, kind, T_END))
-            stuck = [f for f in self.present if feds[f].pending or feds[f].constrained_pending]
+            stuck = [f for f in self.present if waiting(feds[f])]
             if all_request:
                 # one release (the one after the last request) must have granted every request
                 assert not stuck, f"deadlock: {stuck} still waiting after everyone requested {T_END}"
@@ -393,6 +433,7 @@ class Harness:
         for f in self.present:
             assert self.tm.federate_time(f) == T_END
             assert status[f]["pending"] == 0 and status[f]["queued_tso"] == 0 and status[f]["queued_ro"] == 0
+            assert not status[f]["enabling_regulation"]
             assert not self.queued.get(f), f"{f} never received {sorted(self.queued[f])}"
             assert self.ro_got.get(f, []) == self.ro_sent.get(f, []), f"receive-order messages to {f}"
 
@@ -408,9 +449,14 @@ def scenario(draw: Any) -> Harness:
     for f in ids:
         h.run_op(("add", f))
     for f in ids:
-        if draw(st.integers(0, 3)):
+        regulating, constrained = draw(st.integers(0, 3)) > 0, draw(st.integers(0, 3)) > 0
+        # constrained first: its regulation enable may have to wait for messages below t0
+        if constrained and draw(st.booleans()):
+            h.run_op(("enable_constrained", f))
+            constrained = False
+        if regulating:
             h.run_op(("enable_regulation", f, 0.0, draw(LOOKAHEADS)))
-        if draw(st.integers(0, 3)):
+        if constrained:
             h.run_op(("enable_constrained", f))
     for _ in range(draw(st.integers(0, 60))):
         h.draw_op(draw)
@@ -454,17 +500,17 @@ def federation(*specs: Tuple[int, Optional[float], bool]) -> Any:
             assert tm.enable_regulation(f, 0.0, lookahead) == 0.0
         if constrained:
             tm.enable_constrained(f)
-    assert all(grant is None for _f, _frames, grant, _ce in tm.release())
+    assert all(grant is None for _f, _frames, grant, _ce, _re in tm.release())
     return tm
 
 
 def grants(released: List[tuple]) -> Dict[int, float]:
-    return {f: g for f, _frames, g, _ce in released if g is not None}
+    return {f: g for f, _frames, g, _ce, _re in released if g is not None}
 
 
 def frames(released: List[tuple]) -> Dict[int, List[bytes]]:
     out: Dict[int, List[bytes]] = {}
-    for f, fr, _g, _ce in released:
+    for f, fr, _g, _ce, _re in released:
         out.setdefault(f, []).extend(fr)
     return out
 
@@ -491,7 +537,7 @@ def test_zero_lookahead_tar_and_tara() -> None:
     assert tm.release() == [] and tm.lbts(2) == 1.0
     tm.enqueue_tso(2, 1.0, 1, 0, b"at-1")
     tm.request(1, TARA, 2.0)
-    assert tm.release() == [(2, [b"at-1"], 1.0, None)]
+    assert tm.release() == [(2, [b"at-1"], 1.0, None, None)]
 
 
 def test_nextafter_strictness() -> None:
@@ -542,8 +588,10 @@ def test_tar_grant_stays_strict_for_newcomers(regulating_first: bool) -> None:
         tm.disable_regulation(1)  # its lookahead was 0.5 when granted
     else:
         assert tm.enable_regulation(1, 0.0, 0.0) == 0.0  # regulation does not undo what 1 received
+        assert tm.release() == [(1, [], None, None, 0.0)]
         tm.disable_regulation(1)
     t0 = tm.enable_regulation(2, 0.0, 0.0)
+    assert tm.release() == [(2, [], None, None, t0)]
     # a message at t0 (allowed: no grant yet, zero lookahead) must not reach 1 at its TAR-granted time 0
     tm.enqueue_tso(1, t0, 2, 0, tso_payload(t0, 2, 0))
     tm.request(1, TAR, 1.0)
@@ -553,23 +601,91 @@ def test_tar_grant_stays_strict_for_newcomers(regulating_first: bool) -> None:
     assert t0 > 0.0, "newcomer may send at 0 to a federate already granted 0 by TAR"
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="known gap (issue 4): enabling regulation on a constrained federate can move its time past its LBTS; "
-    "the fix is to complete the enable like a TAR(t0)",
-)
 def test_enabling_regulation_never_moves_a_constrained_federate_past_its_messages() -> None:
-    """A constrained federate enabling regulation must not jump past TSO messages it may still receive."""
+    """A constrained federate enabling regulation must not jump past TSO messages it may still receive: it
+    gets them first, then timeRegulationEnabled(t0), like a TARA(t0)."""
     tm = federation((1, 0.0, False), (2, 1.0, False), (3, None, True))
-    before = tm.federate_time(3)
     t0 = tm.enable_regulation(3, 0.0, 0.0)  # M = promise of 2 = 1 although LBTS(3) = 0
+    assert t0 == 1.0
+    assert tm.release() == [] and tm.federate_time(3) == 0.0  # 1 may still send at 0
+    assert tm.enabling_regulation(3) and tm.regulating(3) and not tm.holds_receive_order(3)
+    assert tm.output_bound(3) == 1.0 and tm.lbts(1) == 1.0  # its bound counts at once
     tm.enqueue_tso(3, 0.0, 1, 0, tso_payload(0.0, 1, 0))  # legal: 1 may send at 0
+    with pytest.raises(RuntimeError, match="request while enabling regulation"):
+        tm.request(3, TAR, 2.0)
+    tm.request(1, TAR, 3.0)  # not constrained: granted at once, LBTS(3) = min(next(3), 2 + 1) >= t0
+    assert tm.release() == [(1, [], 3.0, None, None), (3, [tso_payload(0.0, 1, 0)], None, None, 1.0)]
+    assert tm.federate_time(3) == 1.0 and not tm.enabling_regulation(3)
     tm.request(3, TAR, 2.0)
-    tm.request(1, TAR, 3.0)
     tm.request(2, TAR, 3.0)
-    got = [parse_tso(p)[0] for p in frames(tm.release()).get(3, [])]
-    assert got == [0.0]
-    assert min(got) >= t0, f"3 moved from {before} to {t0} by enable_regulation, then received a TSO at 0"
+    assert grants(tm.release()) == {2: 3.0, 3: 2.0}
+
+
+def test_regulation_enable_waits_for_lbts_and_delivers_only_up_to_t0() -> None:
+    """The pending enable of a constrained federate completes once t0 <= LBTS (not <: like TARA), with the
+    queued messages at or below t0 only; held receive-order messages go at once (it counts as advancing)."""
+    tm = federation((1, 0.5, False), (2, None, True))
+    tm.request(1, TAR, 2.0)  # 1's bound 2.5
+    assert grants(tm.release()) == {1: 2.0}
+    tm.enqueue_receive_order(2, b"ro")
+    for ts, serial in ((2.5, 0), (3.0, 1), (4.0, 2)):
+        tm.enqueue_tso(2, ts, 1, serial, tso_payload(ts, 1, serial))
+    assert tm.enable_regulation(2, 3.0, 1.0) == 3.0
+    assert tm.release() == [(2, [b"ro"], None, None, None)]  # LBTS(2) = 2.5 < 3
+    tm.request(1, TAR, 2.5)  # LBTS(2) = 3 = t0: enough
+    assert sorted(tm.release()) == [
+        (1, [], 2.5, None, None),
+        (2, [tso_payload(2.5, 1, 0), tso_payload(3.0, 1, 1)], None, None, 3.0),
+    ]
+    assert tm.federate_time(2) == 3.0 and tm.min_next_event_time(2) == 3.0
+    # 1 may still send at 3 itself (its bound), so nothing was skipped: TAR(3) must wait for it
+    tm.request(2, TAR, 3.0)
+    assert tm.release() == []
+    tm.enqueue_tso(2, 3.0, 1, 3, tso_payload(3.0, 1, 3))
+    tm.request(1, TAR, 5.0)
+    assert tm.release() == [(1, [], 5.0, None, None), (2, [tso_payload(3.0, 1, 3)], 3.0, None, None)]
+
+
+def test_regulation_enable_completes_at_once_unless_constrained_and_ahead() -> None:
+    """Not constrained, or t0 = T: the time is t0 at once and the callback comes with the next release; a
+    pending enable is cancelled by disabling regulation and completed by disabling constraint."""
+    tm = federation((1, 1.0, False), (2, None, False), (3, None, True), (4, None, True), (5, None, True))
+    assert tm.enable_regulation(2, 0.0, 0.0) == 1.0  # M = promise of 1
+    assert tm.federate_time(2) == 1.0 and tm.enabling_regulation(2)
+    assert tm.enable_regulation(3, 0.0, 2.0) == 0.0  # t0 = T
+    assert tm.release() == [(2, [], None, None, 1.0), (3, [], None, None, 0.0)]
+    tm.disable_regulation(2)
+    # 4 waits (LBTS 1 < t0 = 5); disabling regulation cancels it without a callback
+    assert tm.enable_regulation(4, 5.0, 0.0) == 5.0
+    assert tm.release() == [] and tm.lbts(1) == 2.0  # 3's bound 2 now, 4's bound 5
+    tm.disable_regulation(4)
+    assert tm.release() == [] and not tm.enabling_regulation(4) and tm.federate_time(4) == 0.0
+    # 5 waits; disabling constraint hands back its messages (receive order now) and completes it
+    tm.enqueue_tso(5, 1.5, 1, 0, tso_payload(1.5, 1, 0))
+    assert tm.enable_regulation(5, 5.0, 0.0) == 5.0
+    assert tm.release() == []
+    assert tm.disable_constrained(5) == [tso_payload(1.5, 1, 0)]
+    assert tm.release() == [(5, [], None, None, 5.0)]
+    assert tm.federate_time(5) == 5.0
+    with pytest.raises(RuntimeError, match="enable_regulation while regulating"):
+        tm.enable_regulation(5, 6.0, 0.0)
+
+
+def test_may_send_checks_the_promise() -> None:
+    """may_send: anything from a federate that is not regulating; from a regulating one, nothing below the
+    highest bound ever computed for it, even after its lookahead is lowered."""
+    tm = federation((1, 2.0, False), (2, None, True))
+    assert tm.may_send(2, -1e300) and tm.may_send(2, math.nan) and tm.promise(2) == -INF
+    assert not tm.may_send(1, math.nan)
+    assert tm.promise(1) == 2.0 and tm.may_send(1, 2.0) and not tm.may_send(1, NEXT(2.0, -INF))
+    tm.modify_lookahead(1, 0.5)
+    tm.release()
+    assert tm.output_bound(1) == 2.0 and not tm.may_send(1, 1.0)
+    tm.request(1, TAR, 3.0)
+    tm.release()
+    assert tm.promise(1) == 3.5 and not tm.may_send(1, 3.0) and tm.may_send(1, 3.5)
+    tm.disable_regulation(1)
+    assert tm.may_send(1, 0.0)
 
 
 def test_receive_order_held_while_constrained_and_idle() -> None:
@@ -581,7 +697,7 @@ def test_receive_order_held_while_constrained_and_idle() -> None:
     assert tm.release() == []
     tm.request(2, TAR, 5.0)  # cannot be granted (LBTS 1), but a request releases them
     assert not tm.holds_receive_order(2)
-    assert tm.release() == [(2, [b"r1", b"r2"], None, None)]
+    assert tm.release() == [(2, [b"r1", b"r2"], None, None, None)]
     tm.request(1, TAR, 10.0)
     assert grants(tm.release()) == {1: 10.0, 2: 5.0}
     assert tm.holds_receive_order(2)
@@ -589,7 +705,7 @@ def test_receive_order_held_while_constrained_and_idle() -> None:
     assert tm.release() == []
     tm.set_asynchronous_delivery(2, True)
     assert not tm.holds_receive_order(2)
-    assert tm.release() == [(2, [b"r3"], None, None)]
+    assert tm.release() == [(2, [b"r3"], None, None, None)]
 
 
 def test_disable_constrained_returns_queue_in_order() -> None:
@@ -617,7 +733,7 @@ def test_retract_removes_undelivered_message() -> None:
     assert {f: fr for f, fr in frames(tm.release()).items() if fr} == {2: [tso_payload(2.0, 1, 1)]}
     assert tm.retract(1, 1) == 1  # 2 already has it; 3 still waits for it
     tm.request(3, TAR, 3.0)
-    assert tm.release() == [(3, [], 3.0, None)]
+    assert tm.release() == [(3, [], 3.0, None, None)]
 
 
 def test_next_event_request_grants_at_each_message() -> None:
@@ -637,23 +753,23 @@ def test_next_event_request_grants_at_each_message() -> None:
     assert tm.release() == []  # 3 may still send at 1
     tm.request(3, NER, 10.0)
     assert sorted(tm.release()) == [
-        (1, [tso_payload(1.1, 2, 0)], 1.1, None),
-        (2, [tso_payload(1.3, 1, 0)], 1.3, None),
-        (3, [tso_payload(1.1, 2, 0)], 1.1, None),
+        (1, [tso_payload(1.1, 2, 0)], 1.1, None, None),
+        (2, [tso_payload(1.3, 1, 0)], 1.3, None, None),
+        (3, [tso_payload(1.1, 2, 0)], 1.1, None, None),
     ]
     send(2, 2.31, 1)  # after its grant at 1.3, 2 may send from 2.3
     for f in (1, 2, 3):
         tm.request(f, NER, 10.0)
-    assert tm.release() == [(3, [tso_payload(1.3, 1, 0)], 1.3, None)]
+    assert tm.release() == [(3, [tso_payload(1.3, 1, 0)], 1.3, None, None)]
     tm.request(3, NER, 10.0)
     assert sorted(tm.release()) == [
-        (1, [tso_payload(2.31, 2, 1)], 2.31, None),
-        (2, [tso_payload(2.7, 3, 0)], 2.7, None),
-        (3, [tso_payload(2.31, 2, 1)], 2.31, None),
+        (1, [tso_payload(2.31, 2, 1)], 2.31, None, None),
+        (2, [tso_payload(2.7, 3, 0)], 2.7, None, None),
+        (3, [tso_payload(2.31, 2, 1)], 2.31, None, None),
     ]
     tm.request(1, NER, 10.0)
     tm.request(3, NER, 10.0)
-    assert tm.release() == [(1, [tso_payload(2.7, 3, 0)], 2.7, None)]
+    assert tm.release() == [(1, [tso_payload(2.7, 3, 0)], 2.7, None, None)]
     tm.request(1, NER, 10.0)
     tm.request(2, NER, 10.0)
-    assert sorted(tm.release()) == [(1, [], 10.0, None), (2, [], 10.0, None), (3, [], 10.0, None)]
+    assert sorted(tm.release()) == [(1, [], 10.0, None, None), (2, [], 10.0, None, None), (3, [], 10.0, None, None)]

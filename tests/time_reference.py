@@ -33,8 +33,9 @@ class Fed:
     constrained: bool = False
     constrained_pending: bool = False
     asynchronous: bool = False
-    # Sending side: the last grant was TAR/NER/FQR (no grant yet: not strict). Enabling regulation starts
-    # afresh at t0 (the document is ambiguous here; t0 already respects every receiver, see M).
+    # Sending side: the last grant kind is strict, i.e. TAR/NER/FQR, or TARA/NERA to the time a strict grant
+    # reached (no grant yet: not strict). Enabling regulation starts afresh at t0 (the document says "TARA
+    # when there was none since regulation was enabled"; t0 already respects every receiver, see M).
     strict: bool = False
     # Receiving side, for M: the last grant was strict, so nothing at T will be delivered any more. Not
     # reset by enabling regulation: what the federate has received does not change.
@@ -42,6 +43,8 @@ class Fed:
     pending: int = 0
     pending_time: float = 0.0
     promise: float = -INF
+    # t0 of a regulation enable whose timeRegulationEnabled(t0) has not been released yet.
+    enabling: Optional[float] = None
     tso: List[Tuple[float, int, int, bytes]] = field(default_factory=list)  # sorted by (time, sender, serial)
     ro: List[bytes] = field(default_factory=list)
 
@@ -52,6 +55,7 @@ class Release:
     ro: List[bytes] = field(default_factory=list)
     grant: Optional[float] = None
     constrained_enabled: Optional[float] = None
+    regulation_enabled: Optional[float] = None
 
 
 class ReferenceTimeManager:
@@ -64,6 +68,8 @@ class ReferenceTimeManager:
         return s.tso[0][0] if s.tso else INF
 
     def _own(self, s: Fed) -> float:
+        if s.enabling is not None:
+            return after(s.enabling, s.lookahead, False)  # like TARA(t0)
         if not s.pending:
             return after(s.time, s.lookahead, s.strict)
         strict = s.pending in STRICT_KINDS
@@ -110,11 +116,13 @@ class ReferenceTimeManager:
         return self.feds[f].time
 
     def sending_minimum(self, f: int) -> float:
-        """after(T, L, last grant kind), or after(t, L, kind) while a request is pending (no history)."""
+        """after(T, L, last grant kind), and also after(t, L, kind) while a request is pending (no memory of
+        lowered lookaheads). Both: a TARA(T) after a strict grant to T does not allow T itself."""
         s = self.feds[f]
+        minimum = after(s.time, s.lookahead, s.strict)
         if s.pending:
-            return after(s.pending_time, s.lookahead, s.pending in STRICT_KINDS)
-        return after(s.time, s.lookahead, s.strict)
+            minimum = max(minimum, after(s.pending_time, s.lookahead, s.pending in STRICT_KINDS))
+        return minimum
 
     # ------------------------------------------------------------------ operations
     def add_federate(self, f: int) -> None:
@@ -143,19 +151,24 @@ class ReferenceTimeManager:
         return max(time, self.feds[f].time, start)
 
     def enable_regulation(self, f: int, time: float, lookahead: float) -> float:
-        t0 = self.regulation_start(f, time, lookahead)
         s = self.feds[f]
+        assert not s.regulating and not s.pending, "refused by the client and the gateway"
+        t0 = self.regulation_start(f, time, lookahead)
         s.regulating = True
         s.lookahead = lookahead
-        s.time = t0
         s.strict = False
         s.promise = -INF
+        s.enabling = t0
+        # Constrained and t0 > T: the time moves in release(), like TARA(t0). Otherwise at once.
+        if not (s.constrained and t0 > s.time):
+            s.time = t0
         return t0
 
     def disable_regulation(self, f: int) -> None:
         s = self.feds[f]
         s.regulating = False
         s.promise = -INF
+        s.enabling = None  # cancels a pending enable
 
     def enable_constrained(self, f: int) -> None:
         self.feds[f].constrained_pending = True
@@ -175,7 +188,7 @@ class ReferenceTimeManager:
 
     def request(self, f: int, kind: int, time: float) -> None:
         s = self.feds[f]
-        assert not s.pending and time >= s.time
+        assert not s.pending and s.enabling is None and time >= s.time
         s.pending, s.pending_time = kind, time
 
     def is_tso(self, sender: int, receiver: int) -> bool:
@@ -183,7 +196,7 @@ class ReferenceTimeManager:
 
     def holds_receive_order(self, f: int) -> bool:
         s = self.feds[f]
-        return s.constrained and not s.pending and not s.asynchronous
+        return s.constrained and not s.pending and s.enabling is None and not s.asynchronous
 
     def enqueue_tso(self, receiver: int, time: float, sender: int, serial: int, payload: bytes) -> None:
         bisect.insort(self.feds[receiver].tso, (time, sender, serial, payload))
@@ -221,6 +234,21 @@ class ReferenceTimeManager:
                     rel(f).constrained_enabled = s.time
                     changed = True
             for f, s in self.feds.items():
+                if s.enabling is None:
+                    continue
+                t0 = s.enabling
+                if s.time < t0:  # constrained when enabling; maybe not any more
+                    if s.constrained:
+                        if not t0 <= lbts[f]:
+                            continue
+                        while s.tso and s.tso[0][0] <= t0:
+                            rel(f).tso.append(s.tso.pop(0)[3])
+                    s.time = t0
+                    s.strict_receive = False  # like TARA(t0): messages at t0 may still come
+                s.enabling = None
+                rel(f).regulation_enabled = t0
+                changed = True
+            for f, s in self.feds.items():
                 if not s.pending:
                     continue
                 t, kind = s.pending_time, s.pending
@@ -246,8 +274,9 @@ class ReferenceTimeManager:
                 r = rel(f)
                 assert r.grant is None
                 r.grant = grant
+                # "last grant kind": a TARA/NERA grant to the time a strict grant reached stays strict
+                s.strict = kind in STRICT_KINDS or (s.strict and grant == s.time)
                 s.time = grant
-                s.strict = kind in STRICT_KINDS
                 # A TAR/NER grant to G means every TSO message <= G was delivered (t < LBTS), whatever the
                 # lookahead: HLA 1.3's reading of the document's "strict grant". FQR only counts where the
                 # document's after() is strict (zero lookahead); it may grant LBTS itself.
@@ -259,4 +288,8 @@ class ReferenceTimeManager:
             if not changed:
                 break
         self.compute_bounds()
-        return {f: r for f, r in out.items() if r.tso or r.ro or r.grant is not None or r.constrained_enabled is not None}
+        return {
+            f: r
+            for f, r in out.items()
+            if r.tso or r.ro or r.grant is not None or r.constrained_enabled is not None or r.regulation_enabled is not None
+        }

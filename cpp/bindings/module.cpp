@@ -572,6 +572,11 @@ PYBIND11_MODULE(_core, m) {
         })
         .def("is_tso", &TimeManager::is_tso)
         .def("holds_receive_order", &TimeManager::holds_receive_order)
+        .def("may_send", &TimeManager::may_send)
+        .def("promise", &TimeManager::promise)
+        .def("regulating", &TimeManager::regulating)
+        .def("enabling_regulation", &TimeManager::enabling_regulation)
+        .def("advancing", &TimeManager::advancing)
         .def("enqueue_tso", [](TimeManager& tm, std::uint32_t receiver, double t, std::uint32_t sender,
                                std::uint64_t serial, py::bytes payload) {
             tm.enqueue_tso(receiver, hlacore::TsoMessage{t, sender, serial, std::string(payload)});
@@ -583,11 +588,15 @@ PYBIND11_MODULE(_core, m) {
         })
         .def("release", [](TimeManager& tm) {
             py::list out;
+            auto time_or_none = [](const std::optional<double>& t) -> py::object {
+                return t ? py::object(py::cast(*t)) : py::object(py::none());
+            };
+            // (federate, frames, grant, constrained_enabled, regulation_enabled)
             for (auto& r : tm.release()) {
                 py::list frames;
                 for (auto& frame : r.frames) frames.append(py::bytes(frame));
-                out.append(py::make_tuple(r.federate, frames, r.grant ? py::cast(*r.grant) : py::none(),
-                                          r.constrained_enabled ? py::cast(*r.constrained_enabled) : py::none()));
+                out.append(py::make_tuple(r.federate, frames, time_or_none(r.grant),
+                                          time_or_none(r.constrained_enabled), time_or_none(r.regulation_enabled)));
             }
             return out;
         })
@@ -609,6 +618,7 @@ PYBIND11_MODULE(_core, m) {
                 d["pending_time"] = s.pending_time;
                 d["queued_tso"] = s.queued_tso;
                 d["queued_ro"] = s.queued_ro;
+                d["enabling_regulation"] = s.enabling_regulation;
                 d["lbts"] = s.lbts;
                 d["output_bound"] = s.output_bound;
                 out.append(d);

@@ -1,11 +1,23 @@
 #include "rti/federation.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 namespace hlacore {
 
 using wire::WireError;
+
+namespace {
+
+// Shortest text that reads back as the same double, for error messages.
+std::string time_text(double t) {
+    char buf[32];
+    const auto result = std::to_chars(buf, buf + sizeof buf, t);
+    return std::string(buf, result.ptr);
+}
+
+}  // namespace
 
 Federation::Federation(std::string name, fom::Fom fom, std::string fed_name, std::string fed_text, Outbox& outbox)
     : name_(std::move(name)),
@@ -194,6 +206,15 @@ void Federation::remove_object(ObjectHandle oh, FederateHandle by, const std::st
     objects_.erase(it);
 }
 
+// HLA 1.3 §8.1.1: receivers were granted on the regulating sender's bound, so a timestamp below it could
+// land in their past. Clients check this first (InvalidFederationTime); here it is a protocol violation.
+void Federation::check_timestamp(FederateHandle from, const wire::OptionalTime& time, const char* what) const {
+    if (!time || time_.may_send(from, *time)) return;
+    throw WireError(std::string(what) + " at timestamp " + time_text(*time) +
+                    " is below the sender's output bound " + time_text(time_.promise(from)) +
+                    " (lowest timestamp it may still send)");
+}
+
 template <class M>
 void Federation::deliver_receive_order(FederateHandle to, const M& message) {
     if (!time_.holds_receive_order(to)) {
@@ -217,19 +238,26 @@ void Federation::deliver_timestamp_order(FederateHandle to, const M& message, Fe
 }
 
 void Federation::release_time() {
+    // A message at or below the sender's time can no longer be retracted (HLA 1.3 §8.21).
+    auto forget_retractable = [&](FederateHandle sender, double time) {
+        auto routed = routed_.find(sender);
+        if (routed == routed_.end()) return;
+        for (auto it = routed->second.begin(); it != routed->second.end();)
+            it = it->second.time <= time ? routed->second.erase(it) : std::next(it);
+    };
+    // In the order of TimeManager::Release: messages below a new time precede the callback announcing it.
     for (auto& r : time_.release()) {
         if (!federates_.count(r.federate)) continue;
         std::string& out = outbox_.buffer(r.federate);
         if (r.constrained_enabled) wire::encode(out, wire::TimeConstrainedEnabled{*r.constrained_enabled});
         for (const auto& frame : r.frames) out.append(frame);
+        if (r.regulation_enabled) {
+            wire::encode(out, wire::TimeRegulationEnabled{*r.regulation_enabled});
+            forget_retractable(r.federate, *r.regulation_enabled);
+        }
         if (r.grant) {
             wire::encode(out, wire::TimeAdvanceGrant{*r.grant});
-            // A message at or below the sender's time can no longer be retracted (HLA 1.3 §8.21).
-            auto routed = routed_.find(r.federate);
-            if (routed != routed_.end()) {
-                for (auto it = routed->second.begin(); it != routed->second.end();)
-                    it = it->second.time <= *r.grant ? routed->second.erase(it) : std::next(it);
-            }
+            forget_retractable(r.federate, *r.grant);
         }
     }
 }
@@ -409,6 +437,7 @@ void Federation::on(FederateHandle from, const wire::SetAdvisorySwitch& m) {
 
 void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
     federate(from);
+    check_timestamp(from, m.time, "attribute update");
     auto it = objects_.find(m.object);
     if (it == objects_.end()) return;  // deleted meanwhile
     const ObjectInstance& obj = it->second;
@@ -458,6 +487,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
 
 void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
     federate(from);
+    check_timestamp(from, m.time, "interaction");
     const auto& sent_class = interaction_class(m.interaction_class);
     for (const auto& [param, value] : m.values) {
         if (!sent_class.parameter(param))
@@ -495,6 +525,7 @@ void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
 
 void Federation::on(FederateHandle from, const wire::DeleteObject& m) {
     federate(from);
+    check_timestamp(from, m.time, "object deletion");
     auto it = objects_.find(m.object);
     if (it == objects_.end() || it->second.privilege_holder != from) return;  // checked by the client
     remove_object(m.object, from, m.tag, m.time, m.serial);
@@ -506,9 +537,13 @@ void Federation::on(FederateHandle from, const wire::DeleteObject& m) {
 void Federation::on(FederateHandle from, const wire::EnableTimeRegulation& m) {
     federate(from);
     if (!(m.lookahead >= 0) || !std::isfinite(m.time)) throw WireError("invalid time or lookahead");
-    const double start = time_.enable_regulation(from, m.time, m.lookahead);
-    outbox_.send(from, wire::TimeRegulationEnabled{start});
-    release_time();
+    // HLA 1.3 §8.2: the client refuses these (TimeRegulationAlreadyEnabled, EnableTimeRegulationPending,
+    // TimeAdvanceAlreadyInProgress); re-enabling could also lower a bound others were granted on.
+    if (time_.enabling_regulation(from)) throw WireError("enable time regulation while an enable is pending");
+    if (time_.regulating(from)) throw WireError("enable time regulation while regulation is enabled");
+    if (time_.advancing(from)) throw WireError("enable time regulation while a time advance is pending");
+    time_.enable_regulation(from, m.time, m.lookahead);
+    release_time();  // timeRegulationEnabled comes from there, at once unless constrained messages must go first
 }
 
 void Federation::on(FederateHandle from, const wire::DisableTimeRegulation&) {
@@ -533,6 +568,9 @@ void Federation::on(FederateHandle from, const wire::TimeAdvance& m) {
     federate(from);
     if (m.kind < 1 || m.kind > 5 || std::isnan(m.time)) throw WireError("invalid time advance request");
     if (m.time < time_.federate_time(from)) throw WireError("time advance request into the past");
+    // HLA 1.3 §8.2: refused by the client too (EnableTimeRegulationPending).
+    if (time_.enabling_regulation(from))
+        throw WireError("time advance request while a regulation enable is pending");
     time_.request(from, static_cast<AdvanceKind>(m.kind), m.time);
     release_time();
 }

@@ -105,8 +105,10 @@ private:
     void remove_object(ObjectHandle object, FederateHandle by, const std::string& tag, const wire::OptionalTime& time,
                        std::uint64_t serial);
     void update_advisories();
-    // Sends what time management allows now: held messages, TSO messages, grants.
+    // Sends what time management allows now: held messages, TSO messages, grants and enable callbacks.
     void release_time();
+    // Throws WireError for a timestamp below a regulating sender's bound; `what` names the message.
+    void check_timestamp(FederateHandle from, const wire::OptionalTime& time, const char* what) const;
     // Receive-order delivery, held back from a constrained federate that is not advancing.
     template <class M>
     void deliver_receive_order(FederateHandle to, const M& message);

@@ -48,9 +48,11 @@ void TimeManager::remove_federate(std::uint32_t f) {
 // HLA 1.3 §8.2 enableTimeRegulation: start where no message can fall into a constrained federate's past
 // nor below a bound the others were already granted on.
 Time TimeManager::enable_regulation(std::uint32_t f, Time time, Time lookahead) {
+    State& s = state(f);
+    if (s.regulating || s.pending != AdvanceKind::None)
+        throw std::logic_error("time manager: enable_regulation while regulating, enabling or advancing");
     changed_ = true;
     compute_bounds();
-    State& s = state(f);
     Time highest = -kInfinity;
     for (const auto& [h, other] : federates_) {
         if (h == f) continue;
@@ -66,10 +68,13 @@ Time TimeManager::enable_regulation(std::uint32_t f, Time time, Time lookahead) 
         start = std::max(start, candidate);
     }
     s.regulating = true;
-    s.time = start;
     s.lookahead = lookahead;
     s.strict_after_grant = false;
     s.promise = bound_after(start, lookahead, AdvanceKind::TimeAdvanceRequestAvailable);
+    s.enabling = start;
+    // A constrained federate may still receive messages in [time, start): it moves there in release(),
+    // after them. Otherwise nothing can land in between.
+    if (!s.constrained) s.time = start;
     return start;
 }
 
@@ -78,6 +83,7 @@ void TimeManager::disable_regulation(std::uint32_t f) {
     State& s = state(f);
     s.regulating = false;
     s.promise = -kInfinity;
+    s.enabling.reset();
     bounds_.erase(f);
 }
 
@@ -112,6 +118,7 @@ void TimeManager::modify_lookahead(std::uint32_t f, Time lookahead) {
 void TimeManager::request(std::uint32_t f, AdvanceKind kind, Time time) {
     changed_ = true;
     State& s = state(f);
+    if (s.enabling) throw std::logic_error("time manager: request while enabling regulation");
     s.pending = kind;
     s.pending_time = time;
 }
@@ -122,7 +129,17 @@ bool TimeManager::is_tso(std::uint32_t sender, std::uint32_t receiver) const {
 
 bool TimeManager::holds_receive_order(std::uint32_t receiver) const {
     const State& s = state(receiver);
-    return s.constrained && s.pending == AdvanceKind::None && !s.asynchronous_delivery;
+    return s.constrained && s.pending == AdvanceKind::None && !s.enabling && !s.asynchronous_delivery;
+}
+
+bool TimeManager::may_send(std::uint32_t sender, Time ts) const {
+    const State& s = state(sender);
+    return !s.regulating || ts >= s.promise;
+}
+
+Time TimeManager::promise(std::uint32_t f) const {
+    const State& s = state(f);
+    return s.regulating ? s.promise : -kInfinity;
 }
 
 void TimeManager::enqueue_tso(std::uint32_t receiver, TsoMessage message) {
@@ -162,7 +179,9 @@ void TimeManager::compute_bounds() {
     for (auto& [g, s] : federates_) {
         if (!s.regulating) continue;
         Time own;
-        if (s.pending == AdvanceKind::None) {
+        if (s.enabling) {
+            own = bound_after(*s.enabling, s.lookahead, AdvanceKind::TimeAdvanceRequestAvailable);
+        } else if (s.pending == AdvanceKind::None) {
             own = s.lookahead > 0 && s.time + s.lookahead > s.time ? s.time + s.lookahead
                   : s.strict_after_grant                            ? std::nextafter(s.time, kInfinity)
                                                                     : s.time;
@@ -225,6 +244,12 @@ Time TimeManager::min_next_event_time(std::uint32_t f) {
 
 Time TimeManager::federate_time(std::uint32_t f) const { return state(f).time; }
 
+bool TimeManager::regulating(std::uint32_t f) const { return state(f).regulating; }
+
+bool TimeManager::enabling_regulation(std::uint32_t f) const { return state(f).enabling.has_value(); }
+
+bool TimeManager::advancing(std::uint32_t f) const { return state(f).pending != AdvanceKind::None; }
+
 // HLA 1.3 §8.5-8.11: the grant conditions of each request, with the TSO messages that precede the grant.
 bool TimeManager::try_grant(std::uint32_t f, State& s, Release& out) {
     if (s.pending == AdvanceKind::None) return false;
@@ -272,6 +297,26 @@ bool TimeManager::try_grant(std::uint32_t f, State& s, Release& out) {
     return true;
 }
 
+// HLA 1.3 §8.2 for a constrained federate moving to t0 > T: like TARA(t0), what may still arrive below t0
+// first. Its time is already t0 otherwise (see enable_regulation), or again so after disableTimeConstrained.
+bool TimeManager::try_complete_regulation(std::uint32_t f, State& s, Release& out) {
+    const Time t0 = *s.enabling;
+    if (s.time < t0) {
+        if (s.constrained) {
+            if (!(t0 <= lbts_from_bounds(f))) return false;
+            while (!s.tso.empty() && s.tso.begin()->first.first <= t0) {
+                out.frames.push_back(std::move(s.tso.begin()->second));
+                s.tso.erase(s.tso.begin());
+            }
+        }
+        s.time = t0;
+        s.receives_above_time = false;  // messages at t0 itself may still come
+    }
+    s.enabling.reset();
+    out.regulation_enabled = t0;
+    return true;
+}
+
 std::vector<TimeManager::Release> TimeManager::release() {
     std::vector<Release> releases;
     if (!changed_) return releases;
@@ -281,7 +326,8 @@ std::vector<TimeManager::Release> TimeManager::release() {
         auto it = index.find(f);
         if (it != index.end()) return releases[it->second];
         index[f] = releases.size();
-        releases.push_back(Release{f, {}, std::nullopt, std::nullopt});
+        releases.emplace_back();
+        releases.back().federate = f;
         return releases.back();
     };
     for (bool progress = true; progress;) {
@@ -300,8 +346,18 @@ std::vector<TimeManager::Release> TimeManager::release() {
                 slot(f).constrained_enabled = s.time;
                 progress = true;
             }
+            if (s.enabling) {
+                Release attempt;
+                if (try_complete_regulation(f, s, attempt)) {
+                    Release& r = slot(f);
+                    for (auto& frame : attempt.frames) r.frames.push_back(std::move(frame));
+                    r.regulation_enabled = attempt.regulation_enabled;
+                    progress = true;
+                    compute_bounds();
+                }
+            }
             if (s.pending != AdvanceKind::None) {
-                Release attempt{f, {}, std::nullopt, std::nullopt};
+                Release attempt;
                 if (try_grant(f, s, attempt)) {
                     Release& r = slot(f);
                     for (auto& frame : attempt.frames) r.frames.push_back(std::move(frame));
@@ -314,7 +370,8 @@ std::vector<TimeManager::Release> TimeManager::release() {
     }
     std::vector<Release> nonempty;
     for (auto& r : releases)
-        if (!r.frames.empty() || r.grant || r.constrained_enabled) nonempty.push_back(std::move(r));
+        if (!r.frames.empty() || r.grant || r.constrained_enabled || r.regulation_enabled)
+            nonempty.push_back(std::move(r));
     return nonempty;
 }
 
@@ -333,6 +390,7 @@ std::vector<TimeFederateStatus> TimeManager::status() {
         st.pending_time = s.pending_time;
         st.queued_tso = s.tso.size();
         st.queued_ro = s.held_ro.size();
+        st.enabling_regulation = s.enabling.has_value();
         st.lbts = lbts_from_bounds(f);
         auto b = bounds_.find(f);
         st.output_bound = b == bounds_.end() ? kInfinity : b->second;

@@ -55,27 +55,34 @@ struct TimeFederateStatus {
     Time pending_time = 0;
     std::size_t queued_tso = 0;
     std::size_t queued_ro = 0;
+    bool enabling_regulation = false;  // timeRegulationEnabled not released yet
     Time lbts = kInfinity;
     Time output_bound = kInfinity;  // infinity when not regulating
 };
 
 class TimeManager {
 public:
-    // What release() hands back for one federate, in delivery order: frames, then maybe a callback.
+    // What release() hands back for one federate. Delivery order: constrained_enabled, frames,
+    // regulation_enabled, grant (messages below a new time come before the callback announcing it).
     struct Release {
         std::uint32_t federate = 0;
-        std::vector<std::string> frames;  // TSO messages in order, or held receive-order messages
+        std::vector<std::string> frames;  // held receive-order messages, then TSO messages in order
         std::optional<Time> grant;                  // timeAdvanceGrant
         std::optional<Time> constrained_enabled;    // timeConstrainedEnabled
+        std::optional<Time> regulation_enabled;     // timeRegulationEnabled
     };
 
     void add_federate(std::uint32_t f);
     // Forgets the federate: it leaves the regulating set and its queues are dropped.
     void remove_federate(std::uint32_t f);
 
-    // HLA 1.3 §8.2. Returns the time at which regulation starts: no earlier than `time`, the federate's
+    // HLA 1.3 §8.2. Returns the time t0 at which regulation starts: no earlier than `time`, the federate's
     // time, and what every constrained federate's current time allows (so it cannot send into their past).
+    // The bound counts at once; timeRegulationEnabled(t0) comes out of release(), for a constrained
+    // federate only once nothing below t0 can still reach it (like TARA(t0)). Not while regulating, enabling
+    // or advancing (std::logic_error: the caller checks).
     Time enable_regulation(std::uint32_t f, Time time, Time lookahead);
+    // Also cancels a pending enable.
     void disable_regulation(std::uint32_t f);
     // HLA 1.3 §8.4. Enabling completes in release() once no regulating federate can still send below the
     // federate's time. Disabling hands back the queued TSO messages, now receive order.
@@ -84,14 +91,20 @@ public:
     void set_asynchronous_delivery(std::uint32_t f, bool on);
     // HLA 1.3 §8.19: a lower lookahead never withdraws a bound already promised.
     void modify_lookahead(std::uint32_t f, Time lookahead);
+    // Not while enabling regulation (std::logic_error: the caller checks).
     void request(std::uint32_t f, AdvanceKind kind, Time time);
 
     // Whether a message with a timestamp goes timestamp-ordered from `sender` to `receiver`
     // (the FOM's order is checked by the caller): sender regulating, receiver constrained.
     bool is_tso(std::uint32_t sender, std::uint32_t receiver) const;
-    // Whether a receive-order message to `receiver` must wait: constrained, not advancing, and
-    // asynchronous delivery off (HLA 1.3 §8.1.2).
+    // Whether a receive-order message to `receiver` must wait: constrained, not advancing (no request
+    // and no regulation enable pending), and asynchronous delivery off (HLA 1.3 §8.1.2).
     bool holds_receive_order(std::uint32_t receiver) const;
+    // Whether `sender` may send a message with timestamp `ts`: not regulating, or `ts` at or above its
+    // promise, the highest bound others were ever given for it (a lower one could land in their past).
+    bool may_send(std::uint32_t sender, Time ts) const;
+    // That promise (-kInfinity when not regulating).
+    Time promise(std::uint32_t f) const;
     void enqueue_tso(std::uint32_t receiver, TsoMessage message);
     void enqueue_receive_order(std::uint32_t receiver, std::string frame);
     // Removes an undelivered TSO message from every queue; returns the federates it was removed for.
@@ -107,6 +120,9 @@ public:
     // min(LBTS, earliest queued TSO message) (HLA 1.3 §8.18).
     Time min_next_event_time(std::uint32_t f);
     Time federate_time(std::uint32_t f) const;
+    bool regulating(std::uint32_t f) const;           // enabled or being enabled
+    bool enabling_regulation(std::uint32_t f) const;  // timeRegulationEnabled not released yet
+    bool advancing(std::uint32_t f) const;            // a time advance request is pending
     std::vector<TimeFederateStatus> status();
 
 private:
@@ -122,6 +138,7 @@ private:
         AdvanceKind pending = AdvanceKind::None;
         Time pending_time = 0;
         Time promise = -kInfinity;  // no message below this was ever allowed since regulation began
+        std::optional<Time> enabling;  // t0 of a regulation enable whose callback is not released yet
         std::multimap<std::pair<Time, std::pair<std::uint32_t, std::uint64_t>>, std::string> tso;
         std::vector<std::string> held_ro;
     };
@@ -134,6 +151,7 @@ private:
     Time lbts_from_bounds(std::uint32_t f) const;
     Time earliest_tso(const State& s) const;
     bool try_grant(std::uint32_t f, State& s, Release& out);
+    bool try_complete_regulation(std::uint32_t f, State& s, Release& out);
 
     std::map<std::uint32_t, State> federates_;
     std::map<std::uint32_t, Time> bounds_;  // regulating federates only, valid after compute_bounds()

@@ -538,6 +538,7 @@ PYBIND11_MODULE(_core, m) {
              [](Client& c, const EventRetractionHandle& h) { c.retract(h.sender, h.serial); }, py::arg("theHandle"),
              "Retract a timestamped message this federate sent above its current time (HLA 1.3 §8.21): it is removed where it is still queued; federates that already received it get requestRetraction. Raises InvalidRetractionHandle.")
         .def("_time_advance_pending", &Client::time_advance_pending)
+        .def("_lowest_sendable_time", &Client::lowest_sendable_time)
         .def("_status", &Client::query_status, py::call_guard<py::gil_scoped_release>())
         // evoking callbacks
         .def("_poll", &Client::poll_now, py::call_guard<py::gil_scoped_release>())

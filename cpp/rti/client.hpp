@@ -86,6 +86,8 @@ public:
     void retract(std::uint32_t sender, std::uint64_t serial);
     // True from a time advance request until its grant has been popped.
     bool time_advance_pending() const;
+    // The lowest timestamp the sending rule allows now (-inf when not regulating).
+    Time lowest_sendable_time() const;
 
     // ---- support services (local: answered from the FOM and what this federate knows) ----
     fom::Handle object_class_handle(const std::string& name) const;
@@ -129,7 +131,8 @@ private:
         bool constrained = false;
         bool constrained_pending = false;
         bool asynchronous_delivery = false;
-        bool strict = false;  // the last grant was TAR/NER/FQR with zero lookahead: sends must be > time
+        bool strict = false;  // the last grant kind counts as TAR/NER/FQR: with zero lookahead, sends must be > time
+        Time enable_lookahead = 0;  // the highest lookahead since enableTimeRegulation, until it completes
         AdvanceKind pending = AdvanceKind::None;
         Time pending_time = 0;
         std::map<std::uint64_t, Time> retractable;  // own timestamped messages above the federate's time

@@ -45,8 +45,9 @@ const char* service_name(AdvanceKind kind) {
 
 Time Client::lowest_sendable() const {
     const TimeState& s = time_;
-    const Time rule = s.pending != AdvanceKind::None ? after(s.pending_time, s.lookahead, !is_available(s.pending))
-                                                     : after(s.time, s.lookahead, s.strict);
+    Time rule = after(s.time, s.lookahead, s.strict);
+    if (s.pending != AdvanceKind::None)
+        rule = std::max(rule, after(s.pending_time, s.lookahead, !is_available(s.pending)));
     return std::max(rule, s.floor);
 }
 
@@ -79,13 +80,17 @@ void Client::apply_time_callback(const wire::Message& m) {
         s.regulating = true;
         s.time = r->time;
         s.strict = false;
+        // The gateway bounded this federate by after(t0, L) for every lookahead it had since asking.
+        s.floor = after(r->time, s.enable_lookahead, false);
     } else if (const auto* c = std::get_if<wire::TimeConstrainedEnabled>(&m)) {
         s.constrained_pending = false;
         s.constrained = true;
         s.time = c->time;
     } else if (const auto* g = std::get_if<wire::TimeAdvanceGrant>(&m)) {
+        // A TARA/NERA grant to the very time a strict grant reached stays strict: others were granted it.
+        const bool strict_kind = !is_available(s.pending) || (s.strict && g->time == s.time);
         s.time = g->time;
-        s.strict = !is_available(s.pending) && !(s.lookahead > 0 && g->time + s.lookahead > g->time);
+        s.strict = strict_kind;
         s.pending = AdvanceKind::None;
         // A message at or below the federate's time can no longer be retracted (§8.21).
         for (auto it = s.retractable.begin(); it != s.retractable.end();)
@@ -108,6 +113,7 @@ void Client::enable_time_regulation(Time time, Time lookahead) {
             raise(ErrorCode::InvalidLookahead, "lookahead " + text(lookahead) + " is not a finite value >= 0");
         time_.regulation_pending = true;
         time_.lookahead = lookahead;
+        time_.enable_lookahead = lookahead;
         time_.floor = -kInfinity;
     }
     send(wire::EnableTimeRegulation{time, lookahead});
@@ -187,6 +193,7 @@ void Client::modify_lookahead(Time lookahead) {
         if (!(lookahead >= 0) || !std::isfinite(lookahead))
             raise(ErrorCode::InvalidLookahead, "lookahead " + text(lookahead) + " is not a finite value >= 0");
         if (time_.regulating) time_.floor = lowest_sendable();
+        if (time_.regulation_pending) time_.enable_lookahead = std::max(time_.enable_lookahead, lookahead);
         time_.lookahead = lookahead;
     }
     send(wire::ModifyLookahead{lookahead});
@@ -245,6 +252,11 @@ void Client::retract(std::uint32_t sender, std::uint64_t serial) {
                       " does not name a timestamped message of this federate above its time " + text(time_.time));
     }
     send(wire::Retract{serial});
+}
+
+Time Client::lowest_sendable_time() const {
+    std::lock_guard<std::mutex> lock(mu_);
+    return time_.regulating ? lowest_sendable() : -kInfinity;
 }
 
 bool Client::time_advance_pending() const {

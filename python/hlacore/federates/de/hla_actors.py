@@ -1,0 +1,312 @@
+"""Actors that map ports to the FOM: object attributes and interactions, out and in.
+
+* :class:`ObjectPublisher` — one input port per attribute; each firing sends one
+  ``updateAttributeValues`` of the attributes that got a token (the last token of a port wins: an
+  attribute holds one value at a time).
+* :class:`ObjectSubscriber` — one output port per attribute; a reflection becomes an event at its
+  timestamp (receive order: at the current time), fired as tokens on the ports of the attributes it
+  carries, plus a :class:`Received` record on ``received``.
+* :class:`InteractionSender` / :class:`InteractionReceiver` — the same with interaction parameters;
+  a sender sends one interaction per token index (interactions are events, none is dropped).
+
+Values are encoded with a :data:`Codec` per attribute or parameter: an :mod:`hlacore.omt` type
+(``omt.HLAfloat64BE``), a pair of functions ``(encode, decode)``, or None for raw ``bytes``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Callable, Iterable, Mapping, Optional, Union
+
+from hlacore import omt, rti
+
+from .actor import Actor, InputPort, OutputPort
+
+if TYPE_CHECKING:
+    from .hla import HlaDirector
+
+__all__ = [
+    "Codec",
+    "HlaActor",
+    "ObjectPublisher",
+    "ObjectSubscriber",
+    "InteractionSender",
+    "InteractionReceiver",
+    "Received",
+]
+
+#: How a value becomes bytes and back.
+Codec = Union[omt.HLAdataType, tuple[Callable[[Any], bytes], Callable[[bytes], Any]], None]
+
+
+def _encoder(codec: Codec) -> Callable[[Any], bytes]:
+    if codec is None:
+        return bytes
+    if isinstance(codec, omt.HLAdataType):
+        return codec.pack
+    return codec[0]
+
+
+def _decoder(codec: Codec) -> Callable[[bytes], Any]:
+    if codec is None:
+        return bytes
+    if isinstance(codec, omt.HLAdataType):
+        datatype = codec
+        return lambda data: datatype.unpack(data)[0]
+    return codec[1]
+
+
+def _codecs(names: Union[Mapping[str, Codec], Iterable[str]]) -> dict[str, Codec]:
+    if isinstance(names, Mapping):
+        return dict(names)
+    return {name: None for name in names}
+
+
+@dataclass(frozen=True)
+class Received:
+    """One reflection or interaction as the model saw it.
+
+    ``source`` is the object instance name (reflections) or the interaction class name;
+    ``values`` the decoded attributes or parameters by name; ``timestamp`` the message's timestamp
+    (None when it came in receive order); ``time`` the model time it was fired at (the timestamp,
+    or the current time for receive order, or the current time if it came late); ``tag`` the
+    sender's user-supplied tag.
+    """
+
+    source: str
+    values: dict[str, Any]
+    timestamp: Optional[float]
+    time: float
+    tag: str
+
+
+class HlaActor(Actor):
+    """Base class of actors that talk to the RTI through an :class:`HlaDirector`.
+
+    The director calls :meth:`declare` on every HLA actor (publish, subscribe) and then
+    :meth:`register` on every one (register object instances) before any actor's ``initialize()``.
+    """
+
+    def hla(self) -> "HlaDirector":
+        """The actor's director, which must be an :class:`HlaDirector` (TypeError otherwise)."""
+        from .hla import HlaDirector
+
+        director = self.director_or_raise()
+        if not isinstance(director, HlaDirector):
+            raise TypeError(f"{type(self).__name__} {self.name!r} needs an HlaDirector, not {type(director).__name__}")
+        return director
+
+    def declare(self, director: "HlaDirector") -> None:
+        """Publish and subscribe (called once, after time regulation is set up)."""
+
+    def register(self, director: "HlaDirector") -> None:
+        """Register object instances (called once, after every HLA actor declared)."""
+
+
+class ObjectPublisher(HlaActor):
+    """Publishes ``attributes`` of ``object_class`` for one object instance, one input port each.
+
+    ``attributes`` maps attribute names to codecs (or is a list of names: raw bytes). The instance is
+    registered as ``instance_name`` (default: the actor's name); publishers with the same class and
+    instance name share it. Updates carry :meth:`HlaDirector.send_time` (+ ``delay``) when
+    ``timestamped``, else no time (receive order).
+    """
+
+    def __init__(
+        self,
+        name: str,
+        object_class: str,
+        attributes: Union[Mapping[str, Codec], Iterable[str]],
+        instance_name: Optional[str] = None,
+        timestamped: bool = True,
+        delay: float = 0.0,
+    ) -> None:
+        super().__init__(name)
+        self.object_class = object_class
+        self.codecs = _codecs(attributes)
+        self.instance_name = instance_name if instance_name is not None else name
+        self.timestamped = timestamped
+        self.delay = float(delay)
+        self.ports: dict[str, InputPort] = {attr: self.add_input(attr) for attr in self.codecs}
+        #: The timestamps of the updates sent (None for receive order), in order.
+        self.sent: list[Optional[float]] = []
+        self._handles: dict[str, rti.AttributeHandle] = {}
+        self._class: Optional[rti.ObjectClassHandle] = None
+        self._object: Optional[rti.ObjectHandle] = None
+
+    @property
+    def object(self) -> Optional[rti.ObjectHandle]:
+        """The registered instance (None before the director initializes)."""
+        return self._object
+
+    def declare(self, director: "HlaDirector") -> None:
+        rtia = director.rtia
+        self._class = rtia.getObjectClassHandle(self.object_class)
+        self._handles = {attr: rtia.getAttributeHandle(attr, self._class) for attr in self.codecs}
+        director.publish_attributes(self._class, set(self._handles.values()))
+
+    def register(self, director: "HlaDirector") -> None:
+        assert self._class is not None
+        self._object = director.register_object(self._class, self.instance_name)
+
+    def fire(self) -> None:
+        values = {
+            self._handles[attr]: _encoder(self.codecs[attr])(port.last())
+            for attr, port in self.ports.items()
+            if port.has_token()
+        }
+        if not values:
+            return
+        director = self.hla()
+        if self._object is None:
+            raise RuntimeError(f"{self.name!r} fired before its director registered the object")
+        time = director.send_time(self.delay) if self.timestamped else None
+        director.rtia.updateAttributeValues(self._object, values, self.name, time)
+        self.sent.append(time)
+
+
+class ObjectSubscriber(HlaActor):
+    """Subscribes to ``attributes`` of ``object_class``; one output port per attribute.
+
+    Reflections of any instance of the class (or only of ``instance_name``) become events at their
+    timestamps; when fired, each reflected attribute's decoded value is sent on its port and a
+    :class:`Received` on ``received``. The input port ``reflections`` is the director's way in: do
+    not connect it.
+    """
+
+    def __init__(
+        self,
+        name: str,
+        object_class: str,
+        attributes: Union[Mapping[str, Codec], Iterable[str]],
+        instance_name: Optional[str] = None,
+    ) -> None:
+        super().__init__(name)
+        self.object_class = object_class
+        self.codecs = _codecs(attributes)
+        self.instance_name = instance_name
+        self.reflections = self.add_input("reflections")
+        self.ports: dict[str, OutputPort] = {attr: self.add_output(attr) for attr in self.codecs}
+        self.received = self.add_output("received")
+        self._names: dict[rti.AttributeHandle, str] = {}
+
+    def declare(self, director: "HlaDirector") -> None:
+        rtia = director.rtia
+        object_class = rtia.getObjectClassHandle(self.object_class)
+        self._names = {rtia.getAttributeHandle(attr, object_class): attr for attr in self.codecs}
+        director.subscribe_attributes(object_class, set(self._names), self)
+
+    def reflect(
+        self, instance: str, values: Mapping[rti.AttributeHandle, bytes], tag: str,
+        timestamp: Optional[float], at: float,
+    ) -> None:
+        """Called by the director for a reflection of the subscribed class: schedule it at ``at``."""
+        if self.instance_name is not None and instance != self.instance_name:
+            return
+        decoded = {
+            self._names[h]: _decoder(self.codecs[self._names[h]])(data) for h, data in values.items() if h in self._names
+        }
+        if not decoded:
+            return
+        director = self.hla()
+        time = max(at, director.now)
+        director.inject(self.reflections, Received(instance, decoded, timestamp, time, tag), at)
+
+    def fire(self) -> None:
+        for record in self.reflections.tokens:
+            for attr, value in record.values.items():
+                self.ports[attr].send(value)
+            self.received.send(record)
+
+
+class InteractionSender(HlaActor):
+    """Publishes ``interaction_class`` and sends it with ``parameters`` (one input port each).
+
+    Token ``i`` of every port that has one goes in the ``i``-th interaction of the firing. Times as
+    in :class:`ObjectPublisher`.
+    """
+
+    def __init__(
+        self,
+        name: str,
+        interaction_class: str,
+        parameters: Union[Mapping[str, Codec], Iterable[str]],
+        timestamped: bool = True,
+        delay: float = 0.0,
+    ) -> None:
+        super().__init__(name)
+        self.interaction_class = interaction_class
+        self.codecs = _codecs(parameters)
+        self.timestamped = timestamped
+        self.delay = float(delay)
+        self.ports: dict[str, InputPort] = {param: self.add_input(param) for param in self.codecs}
+        #: The timestamps of the interactions sent (None for receive order), in order.
+        self.sent: list[Optional[float]] = []
+        self._handles: dict[str, rti.ParameterHandle] = {}
+        self._class: Optional[rti.InteractionClassHandle] = None
+
+    def declare(self, director: "HlaDirector") -> None:
+        rtia = director.rtia
+        self._class = rtia.getInteractionClassHandle(self.interaction_class)
+        self._handles = {param: rtia.getParameterHandle(param, self._class) for param in self.codecs}
+        director.publish_interaction(self._class)
+
+    def fire(self) -> None:
+        director = self.hla()
+        if self._class is None:
+            raise RuntimeError(f"{self.name!r} fired before its director declared the interaction")
+        count = max((len(port.tokens) for port in self.ports.values()), default=0)
+        for i in range(count):
+            values = {
+                self._handles[param]: _encoder(self.codecs[param])(port.tokens[i])
+                for param, port in self.ports.items()
+                if i < len(port.tokens)
+            }
+            time = director.send_time(self.delay) if self.timestamped else None
+            director.rtia.sendInteraction(self._class, values, self.name, time)
+            self.sent.append(time)
+
+
+class InteractionReceiver(HlaActor):
+    """Subscribes to ``interaction_class``; one output port per parameter, plus ``received``.
+
+    Interactions of exactly that class become events at their timestamps (receive order: at the
+    current time). The input port ``interactions`` is the director's way in: do not connect it.
+    """
+
+    def __init__(
+        self,
+        name: str,
+        interaction_class: str,
+        parameters: Union[Mapping[str, Codec], Iterable[str]],
+    ) -> None:
+        super().__init__(name)
+        self.interaction_class = interaction_class
+        self.codecs = _codecs(parameters)
+        self.interactions = self.add_input("interactions")
+        self.ports: dict[str, OutputPort] = {param: self.add_output(param) for param in self.codecs}
+        self.received = self.add_output("received")
+        self._names: dict[rti.ParameterHandle, str] = {}
+
+    def declare(self, director: "HlaDirector") -> None:
+        rtia = director.rtia
+        interaction_class = rtia.getInteractionClassHandle(self.interaction_class)
+        self._names = {rtia.getParameterHandle(param, interaction_class): param for param in self.codecs}
+        director.subscribe_interaction(interaction_class, self)
+
+    def receive(
+        self, values: Mapping[rti.ParameterHandle, bytes], tag: str, timestamp: Optional[float], at: float
+    ) -> None:
+        """Called by the director for an interaction of the subscribed class: schedule it at ``at``."""
+        decoded = {
+            self._names[h]: _decoder(self.codecs[self._names[h]])(data) for h, data in values.items() if h in self._names
+        }
+        director = self.hla()
+        time = max(at, director.now)
+        director.inject(self.interactions, Received(self.interaction_class, decoded, timestamp, time, tag), at)
+
+    def fire(self) -> None:
+        for record in self.interactions.tokens:
+            for param, value in record.values.items():
+                self.ports[param].send(value)
+            self.received.send(record)

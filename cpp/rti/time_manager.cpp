@@ -42,7 +42,7 @@ void TimeManager::add_federate(std::uint32_t f) { federates_[f]; }
 void TimeManager::remove_federate(std::uint32_t f) {
     changed_ = true;
     federates_.erase(f);
-    bounds_.erase(f);
+    regulating_.clear();  // it may point at the erased state until the next compute_bounds()
 }
 
 // HLA 1.3 §8.2 enableTimeRegulation: start where no message can fall into a constrained federate's past
@@ -84,7 +84,6 @@ void TimeManager::disable_regulation(std::uint32_t f) {
     s.regulating = false;
     s.promise = -kInfinity;
     s.enabling.reset();
-    bounds_.erase(f);
 }
 
 
@@ -143,13 +142,16 @@ Time TimeManager::promise(std::uint32_t f) const {
 }
 
 void TimeManager::enqueue_tso(std::uint32_t receiver, TsoMessage message) {
-    changed_ = true;
-    state(receiver).tso.emplace(std::make_pair(message.time, std::make_pair(message.sender, message.serial)),
-                                std::move(message.frame));
+    State& s = state(receiver);
+    // The queue only matters to bounds and grants of a federate in NER/NERA/FQR: a message cannot make a
+    // TAR grantable, and the lockstep's updates would otherwise each cost a bound computation.
+    if (is_next_event(s.pending)) changed_ = true;
+    s.tso.emplace(std::make_pair(message.time, std::make_pair(message.sender, message.serial)),
+                  std::move(message.frame));
 }
 
 void TimeManager::enqueue_receive_order(std::uint32_t receiver, std::string frame) {
-    changed_ = true;
+    // Only called while the receiver holds receive-order messages: nothing becomes deliverable.
     state(receiver).held_ro.push_back(std::move(frame));
 }
 
@@ -172,10 +174,11 @@ std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint6
 Time TimeManager::earliest_tso(const State& s) const { return s.tso.empty() ? kInfinity : s.tso.begin()->first.first; }
 
 // The greatest fixed point of the bound equations (see the header), by increasing bounds like Dijkstra:
-// a federate's bound only depends on smaller ones through after(), which never lowers a value.
+// a federate's bound only depends on smaller ones through after(), which never lowers a value. Only a
+// constrained federate in NER/NERA/FQR depends on others; without one, each bound is its own.
 void TimeManager::compute_bounds() {
-    bounds_.clear();
-    std::map<std::uint32_t, bool> done;
+    regulating_.clear();
+    bool relax = false;
     for (auto& [g, s] : federates_) {
         if (!s.regulating) continue;
         Time own;
@@ -188,47 +191,47 @@ void TimeManager::compute_bounds() {
         } else if (is_next_event(s.pending)) {
             own = bound_after(std::min(s.pending_time, s.constrained ? earliest_tso(s) : kInfinity), s.lookahead,
                               s.pending);
+            relax = relax || s.constrained;
         } else {
             own = bound_after(s.pending_time, s.lookahead, s.pending);
         }
-        bounds_[g] = std::max(s.promise, own);
-        done[g] = false;
+        s.bound = std::max(s.promise, own);
+        s.settled = false;
+        regulating_.push_back({g, &s});
     }
-    for (std::size_t round = 0; round < bounds_.size(); ++round) {
+    for (std::size_t round = 0; relax && round < regulating_.size(); ++round) {
         // Settle the smallest unsettled bound, then relax the federates waiting on incoming messages.
-        std::uint32_t h = 0;
-        Time smallest = kInfinity;
-        bool found = false;
-        for (const auto& [g, b] : bounds_) {
-            if (!done[g] && (!found || b < smallest)) {
-                h = g;
-                smallest = b;
-                found = true;
-            }
-        }
-        if (!found) break;
-        done[h] = true;
-        for (auto& [g, b] : bounds_) {
-            if (done[g]) continue;
-            const State& s = federates_.at(g);
-            if (!s.constrained || !is_next_event(s.pending)) continue;
-            b = std::min(b, std::max(s.promise, bound_after(smallest, s.lookahead, s.pending)));
+        State* smallest = nullptr;
+        for (auto& [g, s] : regulating_)
+            if (!s->settled && (!smallest || s->bound < smallest->bound)) smallest = s;
+        if (!smallest) break;
+        smallest->settled = true;
+        for (auto& [g, s] : regulating_) {
+            if (s->settled || !s->constrained || !is_next_event(s->pending)) continue;
+            s->bound = std::min(s->bound, std::max(s->promise, bound_after(smallest->bound, s->lookahead, s->pending)));
         }
     }
-    for (auto& [g, b] : bounds_) federates_.at(g).promise = b;
+    // LBTS(f) is the lowest bound of the others: the lowest, or the second lowest for its owner.
+    lowest_ = second_lowest_ = kInfinity;
+    lowest_federate_ = 0;
+    for (auto& [g, s] : regulating_) {
+        s->promise = s->bound;
+        if (s->bound < lowest_) {
+            second_lowest_ = lowest_;
+            lowest_ = s->bound;
+            lowest_federate_ = g;
+        } else if (s->bound < second_lowest_) {
+            second_lowest_ = s->bound;
+        }
+    }
 }
 
-Time TimeManager::lbts_from_bounds(std::uint32_t f) const {
-    Time lowest = kInfinity;
-    for (const auto& [g, b] : bounds_)
-        if (g != f) lowest = std::min(lowest, b);
-    return lowest;
-}
+Time TimeManager::lbts_from_bounds(std::uint32_t f) const { return f == lowest_federate_ ? second_lowest_ : lowest_; }
 
 Time TimeManager::output_bound(std::uint32_t f) {
     compute_bounds();
-    auto it = bounds_.find(f);
-    return it == bounds_.end() ? kInfinity : it->second;
+    const State& s = state(f);
+    return s.regulating ? s.bound : kInfinity;
 }
 
 Time TimeManager::lbts(std::uint32_t f) {
@@ -353,7 +356,6 @@ std::vector<TimeManager::Release> TimeManager::release() {
                     for (auto& frame : attempt.frames) r.frames.push_back(std::move(frame));
                     r.regulation_enabled = attempt.regulation_enabled;
                     progress = true;
-                    compute_bounds();
                 }
             }
             if (s.pending != AdvanceKind::None) {
@@ -362,8 +364,7 @@ std::vector<TimeManager::Release> TimeManager::release() {
                     Release& r = slot(f);
                     for (auto& frame : attempt.frames) r.frames.push_back(std::move(frame));
                     r.grant = attempt.grant;
-                    progress = true;
-                    compute_bounds();
+                    progress = true;  // a grant leaves every bound as it was (promises), but not who is advancing
                 }
             }
         }
@@ -392,8 +393,7 @@ std::vector<TimeFederateStatus> TimeManager::status() {
         st.queued_ro = s.held_ro.size();
         st.enabling_regulation = s.enabling.has_value();
         st.lbts = lbts_from_bounds(f);
-        auto b = bounds_.find(f);
-        st.output_bound = b == bounds_.end() ? kInfinity : b->second;
+        st.output_bound = s.regulating ? s.bound : kInfinity;
         out.push_back(st);
     }
     return out;

@@ -139,6 +139,8 @@ private:
         Time pending_time = 0;
         Time promise = -kInfinity;  // no message below this was ever allowed since regulation began
         std::optional<Time> enabling;  // t0 of a regulation enable whose callback is not released yet
+        Time bound = kInfinity;        // output bound, valid after compute_bounds() while regulating
+        bool settled = false;          // scratch for compute_bounds()
         std::multimap<std::pair<Time, std::pair<std::uint32_t, std::uint64_t>>, std::string> tso;
         std::vector<std::string> held_ro;
     };
@@ -154,7 +156,11 @@ private:
     bool try_complete_regulation(std::uint32_t f, State& s, Release& out);
 
     std::map<std::uint32_t, State> federates_;
-    std::map<std::uint32_t, Time> bounds_;  // regulating federates only, valid after compute_bounds()
+    // Valid after compute_bounds(): the regulating federates, the lowest bound and whose it is, the next.
+    std::vector<std::pair<std::uint32_t, State*>> regulating_;
+    Time lowest_ = kInfinity;
+    Time second_lowest_ = kInfinity;
+    std::uint32_t lowest_federate_ = 0;
     // Set by every change that can make something deliverable; release() does nothing otherwise, which
     // keeps the bound computation off the path of plain receive-order updates.
     bool changed_ = false;

@@ -25,7 +25,7 @@ def test_floor_python_stream(measure) -> None:
 
 
 def test_floor_cpp_stream(report: Report, tcp_floor: str) -> None:
-    report.add("throughput.floor.cpp", [cpp_stream_rate(tcp_floor, FLOOR_BURST * 2) for _ in range(3)])
+    report.add("throughput.floor.cpp", [cpp_stream_rate(tcp_floor, FLOOR_BURST) for _ in range(ROUNDS)])
 
 
 @pytest.mark.parametrize("subscribers", SUBSCRIBERS)

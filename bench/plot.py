@@ -43,7 +43,7 @@ def grant_latency_png(report: Report, path: pathlib.Path) -> bool:
     ax.set_ylabel("time per step (µs)")
     ax.set_title("Grant latency: TSO update, TAR(t+1), tick to TAG; lookahead 1")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left")
+    ax.legend(fontsize=8, loc="lower right")
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path)

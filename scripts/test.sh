@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Install hlacore and its test dependencies into .venv, build an ASan+UBSan rtig for the tests that run
-# against the real executable, then run the whole test suite. Arguments go to pytest.
+# against the real executable (and the bench's C++ TCP floor program, for its smoke test), then run the
+# whole test suite. Arguments go to pytest.
 source "$(dirname "$0")/env.sh"
 pip_install ".[test]" cmake ninja
 mkdir -p build
-.venv/bin/cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHLACORE_SANITIZE=ON -DHLACORE_PYTHON=OFF \
+.venv/bin/cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHLACORE_SANITIZE=ON -DHLACORE_PYTHON=OFF -DHLACORE_BENCH=ON \
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/asan-configure.log 2>&1 \
     || { cat build/asan-configure.log; exit 1; }
-.venv/bin/cmake --build build/asan --target rtig >build/asan-build.log 2>&1 || { cat build/asan-build.log; exit 1; }
-export HLACORE_TEST_RTIG="$PWD/build/asan/rtig"
+.venv/bin/cmake --build build/asan --target rtig tcp_floor >build/asan-build.log 2>&1 || { cat build/asan-build.log; exit 1; }
+export HLACORE_TEST_RTIG="$PWD/build/asan/rtig" HLACORE_TEST_TCP_FLOOR="$PWD/build/asan/tcp_floor"
 exec .venv/bin/python -m pytest "$@"

@@ -1,0 +1,61 @@
+"""Grant latency: a federation of regulating + constrained federates in lockstep, each its own process,
+the pytest process being one of them. One step (the benchmarked call) is what every federate does:
+update at t+1 (TSO), timeAdvanceRequest(t+1), tick to the grant. Lookahead 1."""
+
+from __future__ import annotations
+
+from .federation import create, join, leave, release_peers
+from .peers.peerlib import STOP
+from .procs import Child, close_all, python_peer
+
+
+class Lockstep:
+    """`federates` federates in lockstep on the gateway at `address`; `federates - 1` are peer processes,
+    which stop by themselves after `max_steps` (the stop step included) should this process be killed."""
+
+    def __init__(self, address: str, federates: int, max_steps: int) -> None:
+        self.federates = federates
+        self.time = 0
+        self.federation = create(address)
+        self.fed, self.amb = join(address, self.federation, "conductor")
+        self.fed.enable_time(lambda: self.amb.enabled == 2)
+        self.peers: list[Child] = []
+        try:
+            self.peers = [
+                python_peer("lockstep_peer.py", address, self.federation, f"p{i}", federates, max_steps)
+                for i in range(federates - 1)
+            ]
+            for peer in self.peers:
+                assert peer.read_json(timeout=60.0) == {"ready": True}
+            release_peers(self.fed, self.amb)
+        except BaseException:
+            close_all(self.peers)
+            raise
+
+    def step(self, value: bytes = b"conductor") -> None:
+        """One lockstep step of the whole federation, seen from this federate."""
+        t = float(self.time + 1)
+        self.fed.rtia.updateAttributeValues(self.fed.obj, {self.fed.location: value}, "", t)
+        self.fed.rtia.advance_to(t, timeout=60.0)
+        self.time += 1
+
+    def finish(self) -> None:
+        """Stop the peers with one last step, check that every step of every federate got every update,
+        and leave; raises AssertionError naming what went wrong."""
+        try:
+            self.step(STOP)
+            results = [peer.read_json(timeout=60.0) for peer in self.peers]
+            for peer in self.peers:
+                assert peer.wait(timeout=30.0) == 0, peer.stderr()
+        finally:
+            close_all(self.peers)
+        others = self.federates - 1
+        for result in results:
+            assert result["errors"] == [], result
+            assert result == {"steps": self.time, "received": others * self.time, "errors": []}, result
+        assert self.amb.reflected == others * self.time, (self.amb.reflected, others, self.time)
+        leave(self.fed, self.federation)
+
+    def close(self) -> None:
+        """Kill whatever is left (after a failure); finish() has already cleaned up otherwise."""
+        close_all(self.peers)

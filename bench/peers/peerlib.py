@@ -1,0 +1,85 @@
+"""What every bench peer does: report as JSON lines, join the federation with the robot FOM's location
+attribute published and subscribed, tick with a deadline, and become regulating and constrained."""
+
+from __future__ import annotations
+
+import json
+import sys
+import time
+from typing import Any, Callable
+
+import hlacore.rti as rti
+
+STOP = b"stop"  # the conductor's last update: peers leave their loop when they reflect it
+
+
+def say(**fields: Any) -> None:
+    print(json.dumps(fields), flush=True)
+
+
+def fail(message: str) -> None:
+    say(error=message)
+    sys.exit(3)
+
+
+def tick_until(rtia: rti.RTIAmbassador, predicate: Callable[[], bool], timeout: float = 60.0) -> None:
+    deadline = time.monotonic() + timeout
+    while not predicate():
+        if time.monotonic() > deadline:
+            fail("timeout")
+        rtia.tick(0.5, 0.5)
+
+
+class Joined:
+    """One federate joined to `federation`, with an object of class robot whose location it owns."""
+
+    def __init__(self, address: str, federation: str, name: str, amb: rti.FederateAmbassador,
+                 publish: bool = True, subscribe: bool = True) -> None:
+        self.rtia = rti.RTIAmbassador(address)
+        self.amb = amb
+        self.rtia.joinFederationExecution(name, federation, amb)
+        robot = self.rtia.getObjectClassHandle("robot")
+        self.location = self.rtia.getAttributeHandle("location", robot)
+        if subscribe:
+            self.rtia.subscribeObjectClassAttributes(robot, [self.location])
+        self.obj = None
+        if publish:
+            self.rtia.publishObjectClass(robot, [self.location])
+            self.obj = self.rtia.registerObjectInstance(robot, name)
+
+    def enable_time(self, enabled: Callable[[], bool]) -> None:
+        """Regulating (lookahead 1) and constrained; `enabled()` turns true on both callbacks."""
+        self.rtia.enableTimeRegulation(0.0, 1.0)
+        self.rtia.enableTimeConstrained()
+        tick_until(self.rtia, enabled)
+
+    def resign(self) -> None:
+        self.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+
+
+class TimeAmbassador(rti.FederateAmbassador):
+    """Counts the time-enabling callbacks and keeps the synchronization point state."""
+
+    def __init__(self) -> None:
+        self.enabled = 0
+        self.announced = False
+        self.synchronized = False
+
+    def timeRegulationEnabled(self, time: float) -> None:
+        self.enabled += 1
+
+    def timeConstrainedEnabled(self, time: float) -> None:
+        self.enabled += 1
+
+    def announceSynchronizationPoint(self, label: str, tag: str) -> None:
+        self.announced = True
+
+    def federationSynchronized(self, label: str) -> None:
+        self.synchronized = True
+
+
+def await_start(fed: Joined, amb: TimeAmbassador) -> None:
+    """Wait for the conductor's synchronization point "start" and achieve it."""
+    tick_until(fed.rtia, lambda: amb.announced)
+    fed.rtia.synchronizationPointAchieved("start")
+    tick_until(fed.rtia, lambda: amb.synchronized)

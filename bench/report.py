@@ -1,0 +1,212 @@
+"""The figures of one bench run, each with its ratio to the floor measured in the same run, rendered as
+the Markdown table of docs/performance.md and as JSON. Samples are seconds (latencies, parse times) or
+messages per second (rates), keyed as the bench tests record them:
+
+    grant.floor.py / grant.floor.cpp        raw TCP round trips of 8 B
+    grant.rtig.K, grant.inprocess.2         lockstep steps of K federates (standalone / in-process gateway)
+    update.floor.py.S / update.floor.cpp.S  raw TCP round trips of S bytes
+    update.ro.S, update.tso.S               update ping-pong round trips with an S-byte payload
+    throughput.floor.py / .cpp              raw TCP messages per second (one send per message)
+    throughput.N                            updates per second delivered to each of N subscribers
+    fom.flat, fom.tree, fom.tree.python     parse times of the generated 1000-class FOM
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+from dataclasses import dataclass
+from typing import Callable, Optional
+
+FEDERATES = (2, 4, 8, 16, 32)
+PAYLOADS = (8, 1024, 65536)
+SUBSCRIBERS = (1, 8)
+FOMS = ("fom.flat", "fom.tree", "fom.tree.python")
+
+
+def p99(values: list[float]) -> float:
+    """Nearest-rank 99th percentile."""
+    ordered = sorted(values)
+    return ordered[max(0, math.ceil(0.99 * len(ordered)) - 1)]
+
+
+def size_name(size: int) -> str:
+    return f"{size // 1024} KiB" if size >= 1024 else f"{size} B"
+
+
+@dataclass
+class Row:
+    figure: str
+    median: str
+    p99: str
+    vs_py: str
+    vs_cpp: str
+    target: str
+
+
+class Report:
+    def __init__(self) -> None:
+        self.samples: dict[str, list[float]] = {}
+
+    def add(self, key: str, values: list[float]) -> None:
+        self.samples[key] = list(values)
+
+    def median(self, key: str) -> Optional[float]:
+        values = self.samples.get(key)
+        return statistics.median(values) if values else None
+
+    def complete(self) -> bool:
+        """True when every figure of the full run is here (then the docs are rewritten)."""
+        return all(k in self.samples for k in expected_keys())
+
+    # ---- rendering ----
+
+    def _ratio(self, key: str, floor_key: str) -> str:
+        """median(key) / median(floor_key): a multiple for latencies, a fraction for rates."""
+        m, f = self.median(key), self.median(floor_key)
+        return f"{m / f:.2f}×" if m is not None and f else "–"
+
+    def _latency_row(self, figure: str, key: str, floor: str, target: str) -> Optional[Row]:
+        values = self.samples.get(key)
+        if not values:
+            return None
+        return Row(figure, _us(statistics.median(values)), _us(p99(values)),
+                   self._ratio(key, f"{floor}.py"), self._ratio(key, f"{floor}.cpp"), target)
+
+    def rows(self) -> list[tuple[str, list[Row]]]:
+        sections: list[tuple[str, list[Row]]] = []
+        g2 = self.median("grant.rtig.2")
+        cpp_rtt = self.median("grant.floor.cpp")
+        grant = [
+            self._floor_row("raw TCP round trip 8 B", "grant.floor"),
+            *[self._latency_row(f"{k} federates, rtig", f"grant.rtig.{k}", "grant.floor",
+                                _grant_target(k, self.median(f"grant.rtig.{k}"), g2, cpp_rtt)) for k in FEDERATES],
+            self._latency_row("2 federates, in-process gateway", "grant.inprocess.2", "grant.floor",
+                              f"{self._ratio('grant.inprocess.2', 'grant.rtig.2')} of rtig"),
+        ]
+        title = "Grant latency: one lockstep step of the federation (TSO update at t+1, TAR t+1, tick to TAG)"
+        sections.append((title, _present(grant)))
+        update: list[Optional[Row]] = []
+        for size in PAYLOADS:
+            update.append(self._floor_row(f"raw TCP one-way {size_name(size)}", "update.floor", size, half=True))
+            update += [self._update_row(order, size) for order in ("ro", "tso")]
+        sections.append(("Update latency: one-way = ping-pong round trip / 2", _present(update)))
+        throughput = [self._rate_row("raw TCP 48 B messages, one send each", "throughput.floor", "")]
+        for n in SUBSCRIBERS:
+            rate = self.median(f"throughput.{n}")
+            target = (f"≥ 200 000/s: {'met' if rate >= 200_000 else 'missed'}" if n == 1 and rate else "")
+            throughput.append(self._rate_row(f"8 B updates, 1 → {n} (per subscriber, all delivered)",
+                                             f"throughput.{n}", target, n))
+        sections.append(("Throughput: small updates through one rtig, none lost", _present(throughput)))
+        fom = [self._fom_row(label, key) for label, key in (
+            ("1000 classes × 10 attributes, flat: `_core.parse_fed`", "fom.flat"),
+            ("same, 3-level tree (inherited attributes): `_core.parse_fed`", "fom.tree"),
+            ("3-level tree: `hlacore.fed.parse_text` (dataclasses)", "fom.tree.python"),
+        )]
+        sections.append(("FOM parse (generated .fed)", _present(fom)))
+        return sections
+
+    def _floor_row(self, figure: str, prefix: str, size: Optional[int] = None, half: bool = False) -> Optional[Row]:
+        suffix = f".{size}" if size is not None else ""
+        py, cpp = self.samples.get(f"{prefix}.py{suffix}"), self.samples.get(f"{prefix}.cpp{suffix}")
+        if not py and not cpp:
+            return None
+        k = 0.5 if half else 1.0
+        fmt: Callable[[Optional[list[float]], Callable[[list[float]], float]], str] = (
+            lambda v, stat: _us(stat(v) * k) if v else "–")
+        py_vs_cpp = _python_vs_cpp(self._ratio(f"{prefix}.py{suffix}", f"{prefix}.cpp{suffix}"))
+        return Row(figure + " (Python / C++)", f"{fmt(py, statistics.median)} / {fmt(cpp, statistics.median)}",
+                   f"{fmt(py, p99)} / {fmt(cpp, p99)}", "", py_vs_cpp, "")
+
+    def _update_row(self, order: str, size: int) -> Optional[Row]:
+        """One-way = round trip / 2, for the figure and its floor alike, so the ratio is that of the RTTs."""
+        key = f"update.{order}.{size}"
+        values = self.samples.get(key)
+        if not values:
+            return None
+        m, floor = statistics.median(values), self.median(f"update.floor.cpp.{size}")
+        target = _meets(m / floor if floor else None, 2.5)
+        return Row(f"{'receive order' if order == 'ro' else 'TSO'} one-way {size_name(size)}",
+                   _us(statistics.median(values) / 2), _us(p99(values) / 2),
+                   self._ratio(key, f"update.floor.py.{size}"), self._ratio(key, f"update.floor.cpp.{size}"), target)
+
+    def _rate_row(self, figure: str, key: str, target: str, subscribers: int = 1) -> Optional[Row]:
+        """A rate row: the median rate, and the slowest round in the p99 column."""
+        if key == "throughput.floor":
+            py, cpp = self.median("throughput.floor.py"), self.median("throughput.floor.cpp")
+            if py is None and cpp is None:
+                return None
+            return Row(figure + " (Python / C++)", f"{_rate(py)} / {_rate(cpp)}", "", "",
+                       _python_vs_cpp(self._ratio("throughput.floor.py", "throughput.floor.cpp")), "")
+        rate = self.median(key)
+        if rate is None:
+            return None
+        total = f" ({_rate(rate * subscribers)} in all)" if subscribers > 1 else ""
+        return Row(figure, _rate(rate) + total, f"slowest round {_rate(min(self.samples[key]))}",
+                   self._ratio(key, "throughput.floor.py"), self._ratio(key, "throughput.floor.cpp"), target)
+
+    def _fom_row(self, figure: str, key: str) -> Optional[Row]:
+        values = self.samples.get(key)
+        if not values:
+            return None
+        m = statistics.median(values)
+        target = f"< 20 ms: {'met' if m < 0.020 else 'missed'}" if key != "fom.tree.python" else ""
+        return Row(figure, f"{m * 1e3:.1f} ms", f"{p99(values) * 1e3:.1f} ms", "", "", target)
+
+    def markdown(self) -> str:
+        out = []
+        for title, rows in self.rows():
+            if not rows:
+                continue
+            out += [f"### {title}", "",
+                    "| figure | median | p99 | ratio to Python floor | ratio to C++ floor | target |",
+                    "|---|---|---|---|---|---|"]
+            out += [f"| {r.figure} | {r.median} | {r.p99} | {r.vs_py} | {r.vs_cpp} | {r.target} |" for r in rows]
+            out.append("")
+        return "\n".join(out)
+
+    def summary(self) -> dict[str, dict[str, float]]:
+        """Per key: median, p99 and the number of samples (for results.json)."""
+        return {k: {"median": statistics.median(v), "p99": p99(v), "n": len(v)}
+                for k, v in sorted(self.samples.items())}
+
+
+def expected_keys() -> list[str]:
+    keys = ["grant.floor.py", "grant.floor.cpp", "grant.inprocess.2", "throughput.floor.py", "throughput.floor.cpp"]
+    keys += [f"grant.rtig.{k}" for k in FEDERATES]
+    keys += [f"update.{kind}.{s}" for s in PAYLOADS for kind in ("floor.py", "floor.cpp", "ro", "tso")]
+    keys += [f"throughput.{n}" for n in SUBSCRIBERS]
+    return keys + list(FOMS)
+
+
+def _grant_target(k: int, median: Optional[float], g2: Optional[float], cpp_rtt: Optional[float]) -> str:
+    if not median:
+        return ""
+    if k == 2:
+        return _meets(median / cpp_rtt if cpp_rtt else None, 2.0, "≤ 2.0× C++ RTT")
+    if k == 32:
+        return _meets(median / g2 if g2 else None, 4.0, "≤ 4× 2-federate figure")
+    return f"{median / g2:.1f}× 2-federate figure" if g2 else ""
+
+
+def _meets(ratio: Optional[float], limit: float, text: str = "") -> str:
+    """'TEXT: met (1.23×)' or 'TEXT: missed (...)'; the default text is the one-way update target."""
+    if ratio is None:
+        return ""
+    return f"{text or f'≤ {limit}× C++ one-way'}: {'met' if ratio <= limit else 'missed'} ({ratio:.2f}×)"
+
+
+def _python_vs_cpp(ratio: str) -> str:
+    return f"Python floor = {ratio}" if ratio != "–" else ratio
+
+
+def _present(rows: list[Optional[Row]]) -> list[Row]:
+    return [r for r in rows if r is not None]
+
+
+def _us(seconds: float) -> str:
+    return f"{seconds * 1e6:.1f} µs" if seconds < 1e-3 else f"{seconds * 1e6:.0f} µs"
+
+
+def _rate(rate: Optional[float]) -> str:
+    return "–" if rate is None else f"{rate / 1000:.1f} k/s"

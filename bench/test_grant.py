@@ -1,0 +1,50 @@
+"""Grant latency (TAR → TAG) of 2 to 32 federates in lockstep, each its own process, against the raw TCP
+round trip; and the in-process gateway against the standalone rtig for the 2-federate loop."""
+
+from __future__ import annotations
+
+import pytest
+
+import hlacore
+
+from .floor import PyEcho, cpp_rtt_ns
+from .lockstep import Lockstep
+from .report import FEDERATES, Report
+
+# Rounds per federate count: more for the fast loops, so that each takes a few seconds at most.
+ROUNDS = {2: 5000, 4: 3000, 8: 2000, 16: 1000, 32: 500}
+FLOOR_ROUNDS = 5000
+
+pytestmark = pytest.mark.benchmark(group="grant latency")
+
+
+def test_floor_python_rtt(measure) -> None:
+    echo = PyEcho(8)
+    try:
+        measure("grant.floor.py", echo.round_trip, FLOOR_ROUNDS)
+    finally:
+        echo.close()
+
+
+def test_floor_cpp_rtt(report: Report, tcp_floor: str) -> None:
+    report.add("grant.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS)])
+
+
+def run_lockstep(measure, address: str, federates: int, key: str) -> None:
+    rounds = ROUNDS[federates]
+    federation = Lockstep(address, federates, max_steps=rounds + rounds // 10 + 10)  # warm-up, stop, margin
+    try:
+        measure(key, federation.step, rounds)
+        federation.finish()
+    finally:
+        federation.close()
+
+
+@pytest.mark.parametrize("federates", FEDERATES)
+def test_lockstep_rtig(measure, rtig, federates: int) -> None:
+    run_lockstep(measure, rtig.address, federates, f"grant.rtig.{federates}")
+
+
+def test_lockstep_inprocess_gateway(measure) -> None:
+    with hlacore.Gateway(port=0) as gateway:
+        run_lockstep(measure, gateway.address, 2, "grant.inprocess.2")

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Install hlacore (Release, with rtig into .venv/bin) and the bench extras into .venv, build the C++ TCP
+# floor program, then run the benchmarks in bench/. Arguments go to pytest (./scripts/bench.sh -k grant).
+# Writes build/bench/ (results.json, results.md, grant-latency.png) and, after a full run, the figures of
+# docs/performance.md and docs/grant-latency.png.
+source "$(dirname "$0")/env.sh"
+pip_install ".[bench]" cmake ninja
+mkdir -p build
+.venv/bin/cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DHLACORE_BENCH=ON -DHLACORE_PYTHON=OFF \
+    -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/bench-configure.log 2>&1 \
+    || { cat build/bench-configure.log; exit 1; }
+.venv/bin/cmake --build build/bench --target tcp_floor >build/bench-build.log 2>&1 || { cat build/bench-build.log; exit 1; }
+export HLACORE_TCP_FLOOR="$PWD/build/bench/tcp_floor"
+export HLACORE_BENCH_COMMAND="./scripts/bench.sh${*:+ $*}"
+exec .venv/bin/python -m pytest bench --benchmark-columns=min,median,mean,max,rounds "$@"

@@ -1,0 +1,109 @@
+"""Each benchmark body of bench/ at a tiny size, for correctness only (no timing is asserted):
+./scripts/bench.sh runs the same bodies at full size."""
+
+from __future__ import annotations
+
+import os
+import pathlib
+
+import pytest
+
+from bench.floor import PyEcho, PySink, cpp_rtt_ns, cpp_stream_rate
+from bench.fomgen import generate_fed
+from bench.lockstep import Lockstep
+from bench.outputs import results_markdown
+from bench.pingpong import PingPong
+from bench.report import Report, expected_keys
+from bench.throughput import Fanout
+from hlacore import _core
+
+
+def test_python_floors_echo_and_count() -> None:
+    echo = PyEcho(1024)
+    try:
+        for _ in range(3):
+            echo.round_trip()
+    finally:
+        echo.close()
+    sink = PySink(100)
+    try:
+        sink.burst()
+        sink.burst()
+    finally:
+        sink.close()
+
+
+def test_cpp_floor_program() -> None:
+    binary = os.environ.get("HLACORE_TEST_TCP_FLOOR", "")
+    if not pathlib.Path(binary).is_file():
+        pytest.skip("HLACORE_TEST_TCP_FLOOR is not set: ./scripts/test.sh builds bench/tcp_floor")
+    samples = cpp_rtt_ns(binary, 64, 5)
+    assert len(samples) == 5 and all(ns > 0 for ns in samples)
+    assert cpp_stream_rate(binary, 100) > 0
+
+
+@pytest.mark.parametrize("federates", [2, 3])
+def test_lockstep_federation_steps_and_stops(rtig, federates: int) -> None:
+    federation = Lockstep(rtig.address, federates, max_steps=10)
+    try:
+        for _ in range(5):
+            federation.step()
+        federation.finish()  # checks every federate got every update of every step
+    finally:
+        federation.close()
+    assert federation.time == 6
+
+
+def test_lockstep_on_the_in_process_gateway(inprocess_gateway) -> None:
+    federation = Lockstep(inprocess_gateway.address, 2, max_steps=10)
+    try:
+        federation.step()
+        federation.finish()
+    finally:
+        federation.close()
+
+
+@pytest.mark.parametrize("order", ["ro", "tso"])
+def test_update_ping_pong(rtig, order: str) -> None:
+    pingpong = PingPong(rtig.address, order, 1024)
+    try:
+        for _ in range(3):
+            pingpong.round_trip()
+        pingpong.finish()  # checks the echo count and the bytes echoed
+    finally:
+        pingpong.close()
+    assert pingpong.time == (6.0 if order == "tso" else 0.0)  # TSO: granted t+2 per round trip
+
+
+def test_fanout_counts_every_update_at_every_subscriber(rtig) -> None:
+    fanout = Fanout(rtig.address, 2, 50)
+    try:
+        fanout.burst()
+        fanout.burst()
+        fanout.finish()
+    finally:
+        fanout.close()
+
+
+@pytest.mark.parametrize("levels", [1, 3])
+def test_generated_fom_parses_with_every_class_and_attribute(levels: int) -> None:
+    fom = _core.parse_fed(generate_fed(40, 3, levels, fanout=4), "gen.fed")
+    classes = fom["object_classes"]
+    assert len(classes) == 42  # ObjectRoot and RTIprivate besides the 40 generated
+    declared = {attr[1] for cls in classes for attr in cls[5]}
+    assert len(declared) == 1 + 3 * levels  # privilegeToDelete and d{level}a{0,1,2}
+
+
+def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
+    report = Report()
+    for key in expected_keys():
+        value = 1e5 if key.startswith("throughput") else 5e-3 if key.startswith("fom") else 1e-4
+        report.add(key, [value, value * 2, value * 3])
+    report.add("grant.rtig.32", [1e-3, 2e-3, 3e-3])
+    assert report.complete()
+    text = results_markdown(report, {"cpu": "test", "date": "today"}, "./scripts/bench.sh")
+    assert "| 2 federates, rtig | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 2.0× C++ RTT: met (1.00×) |" in text
+    assert "| 32 federates, rtig | 2000 µs | 3000 µs | 10.00× | 10.00× | ≤ 4× 2-federate figure: missed (10.00×) |" in text
+    assert "| receive order one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× C++ one-way: met (1.00×) |" in text
+    assert "200.0 k/s (1600.0 k/s in all)" in text
+    assert "≥ 200 000/s: met" in text and text.count("< 20 ms: met") == 2

@@ -3,6 +3,7 @@ the Markdown table of docs/performance.md and as JSON. Samples are seconds (late
 messages per second (rates), keyed as the bench tests record them:
 
     grant.floor.py / grant.floor.cpp        raw TCP round trips of 8 B
+    grant.pure.K                            TAR -> TAG steps of K federates, no updates (rtig)
     grant.rtig.K, grant.inprocess.2         lockstep steps of K federates (standalone / in-process gateway)
     update.floor.py.S / update.floor.cpp.S  raw TCP round trips of S bytes
     update.ro.S, update.tso.S               update ping-pong round trips with an S-byte payload
@@ -75,16 +76,24 @@ class Report:
 
     def rows(self) -> list[tuple[str, list[Row]]]:
         sections: list[tuple[str, list[Row]]] = []
+        p2 = self.median("grant.pure.2")
         g2 = self.median("grant.rtig.2")
         cpp_rtt = self.median("grant.floor.cpp")
-        grant = [
+        pure = [
             self._floor_row("raw TCP round trip 8 B", "grant.floor"),
+            *[self._latency_row(f"{k} federates, rtig", f"grant.pure.{k}", "grant.floor",
+                                _grant_target(k, self.median(f"grant.pure.{k}"), p2, cpp_rtt)) for k in FEDERATES],
+        ]
+        sections.append(("Grant latency: one step of the federation, TAR t+1 and tick to TAG (no updates)",
+                         _present(pure)))
+        grant = [
             *[self._latency_row(f"{k} federates, rtig", f"grant.rtig.{k}", "grant.floor",
-                                _grant_target(k, self.median(f"grant.rtig.{k}"), g2, cpp_rtt)) for k in FEDERATES],
+                                _anchor(k, self.median(f"grant.rtig.{k}"), g2)) for k in FEDERATES],
             self._latency_row("2 federates, in-process gateway", "grant.inprocess.2", "grant.floor",
                               f"{self._ratio('grant.inprocess.2', 'grant.rtig.2')} of rtig"),
         ]
-        title = "Grant latency: one lockstep step of the federation (TSO update at t+1, TAR t+1, tick to TAG)"
+        title = ("Lockstep with updates, the anchors' loop: one step of the federation (every federate: TSO update "
+                 "at t+1, TAR t+1, tick to TAG)")
         sections.append((title, _present(grant)))
         update: list[Optional[Row]] = []
         for size in PAYLOADS:
@@ -173,7 +182,7 @@ class Report:
 
 def expected_keys() -> list[str]:
     keys = ["grant.floor.py", "grant.floor.cpp", "grant.inprocess.2", "throughput.floor.py", "throughput.floor.cpp"]
-    keys += [f"grant.rtig.{k}" for k in FEDERATES]
+    keys += [f"grant.rtig.{k}" for k in FEDERATES] + [f"grant.pure.{k}" for k in FEDERATES]
     keys += [f"update.{kind}.{s}" for s in PAYLOADS for kind in ("floor.py", "floor.cpp", "ro", "tso")]
     keys += [f"throughput.{n}" for n in SUBSCRIBERS]
     return keys + list(FOMS)
@@ -186,6 +195,19 @@ def _grant_target(k: int, median: Optional[float], g2: Optional[float], cpp_rtt:
         return _meets(median / cpp_rtt if cpp_rtt else None, 2.0, "≤ 2.0× C++ RTT")
     if k == 32:
         return _meets(median / g2 if g2 else None, 4.0, "≤ 4× 2-federate figure")
+    return f"{median / g2:.1f}× 2-federate figure" if g2 else ""
+
+
+# ../shared/reference/rti-performance-anchors.md, same loop, C++ federates, same machine size (µs per step).
+ANCHORS = {2: (151, 398), 4: (563, 975), 8: (1631, 3617)}
+
+
+def _anchor(k: int, median: Optional[float], g2: Optional[float]) -> str:
+    if not median:
+        return ""
+    if k in ANCHORS:
+        openrti, certi = ANCHORS[k]
+        return f"OpenRTI {openrti} µs, CERTI {certi} µs (C++ federates)"
     return f"{median / g2:.1f}× 2-federate figure" if g2 else ""
 
 

@@ -30,9 +30,10 @@ def test_floor_cpp_rtt(report: Report, tcp_floor: str) -> None:
     report.add("grant.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS)])
 
 
-def run_lockstep(measure, address: str, federates: int, key: str) -> None:
+def run_lockstep(measure, address: str, federates: int, key: str, updates: bool = True) -> None:
     rounds = ROUNDS[federates]
-    federation = Lockstep(address, federates, max_steps=rounds + rounds // 10 + 10)  # warm-up, stop, margin
+    federation = Lockstep(address, federates, max_steps=rounds + rounds // 10 + 10,  # warm-up, stop, margin
+                          updates=updates)
     try:
         measure(key, federation.step, rounds)
         federation.finish()
@@ -43,6 +44,11 @@ def run_lockstep(measure, address: str, federates: int, key: str) -> None:
 @pytest.mark.parametrize("federates", FEDERATES)
 def test_lockstep_rtig(measure, rtig, federates: int) -> None:
     run_lockstep(measure, rtig.address, federates, f"grant.rtig.{federates}")
+
+
+@pytest.mark.parametrize("federates", FEDERATES)
+def test_pure_grant_rtig(measure, rtig, federates: int) -> None:
+    run_lockstep(measure, rtig.address, federates, f"grant.pure.{federates}", updates=False)
 
 
 def test_lockstep_inprocess_gateway(measure) -> None:

@@ -54,6 +54,17 @@ def test_lockstep_federation_steps_and_stops(rtig, federates: int) -> None:
     assert federation.time == 6
 
 
+def test_pure_grant_federation_steps_and_stops(rtig) -> None:
+    federation = Lockstep(rtig.address, 3, max_steps=10, updates=False)
+    try:
+        for _ in range(5):
+            federation.step()
+        federation.finish()  # the peers run to 10 steps by themselves, receiving nothing
+    finally:
+        federation.close()
+    assert federation.time == 5
+
+
 def test_lockstep_on_the_in_process_gateway(inprocess_gateway) -> None:
     federation = Lockstep(inprocess_gateway.address, 2, max_steps=10)
     try:
@@ -99,11 +110,12 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     for key in expected_keys():
         value = 1e5 if key.startswith("throughput") else 5e-3 if key.startswith("fom") else 1e-4
         report.add(key, [value, value * 2, value * 3])
-    report.add("grant.rtig.32", [1e-3, 2e-3, 3e-3])
+    report.add("grant.pure.32", [1e-3, 2e-3, 3e-3])
     assert report.complete()
     text = results_markdown(report, {"cpu": "test", "date": "today"}, "./scripts/bench.sh")
     assert "| 2 federates, rtig | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 2.0× C++ RTT: met (1.00×) |" in text
     assert "| 32 federates, rtig | 2000 µs | 3000 µs | 10.00× | 10.00× | ≤ 4× 2-federate figure: missed (10.00×) |" in text
+    assert "OpenRTI 151 µs, CERTI 398 µs (C++ federates)" in text
     assert "| receive order one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× C++ one-way: met (1.00×) |" in text
     assert "200.0 k/s (1600.0 k/s in all)" in text
     assert "≥ 200 000/s: met" in text and text.count("< 20 ms: met") == 2

@@ -1,11 +1,12 @@
 """A lockstep federate for the grant-latency benchmark.
 
-usage: lockstep_peer.py ADDRESS FEDERATION NAME FEDERATES MAX_STEPS
+usage: lockstep_peer.py ADDRESS FEDERATION NAME FEDERATES MAX_STEPS [pure]
 
 Regulating (lookahead 1) and constrained; prints {"ready": true}, waits for sync point "start", then for
 k = 1, 2, ... updates its location at timestamp k and advances to k, until MAX_STEPS or until it
 reflects the conductor's b"stop". Each step must bring FEDERATES - 1 reflections at time k. Prints
-{"steps", "received", "errors"} and resigns.
+{"steps", "received", "errors"} and resigns. With `pure`, there are no updates: each step is only
+timeAdvanceRequest(k) and the grant, and the peer runs exactly MAX_STEPS steps.
 """
 
 from __future__ import annotations
@@ -32,6 +33,7 @@ class Ambassador(TimeAmbassador):
 def main() -> None:
     address, federation, name = sys.argv[1:4]
     federates, max_steps = int(sys.argv[4]), int(sys.argv[5])
+    pure = sys.argv[6:] == ["pure"]
     amb = Ambassador()
     fed = Joined(address, federation, name, amb)
     fed.enable_time(lambda: amb.enabled == 2)
@@ -41,12 +43,14 @@ def main() -> None:
     errors: list[str] = []
     received = steps = 0
     for k in range(1, max_steps + 1):
-        fed.rtia.updateAttributeValues(fed.obj, {fed.location: payload}, "", float(k))
+        if not pure:
+            fed.rtia.updateAttributeValues(fed.obj, {fed.location: payload}, "", float(k))
         granted = fed.rtia.advance_to(float(k), timeout=60.0)
         steps = k
         got, amb.times = amb.times, []
         received += len(got)
-        if (granted != k or len(got) != federates - 1 or any(t != k for t in got)) and len(errors) < 5:
+        expected = 0 if pure else federates - 1
+        if (granted != k or len(got) != expected or any(t != k for t in got)) and len(errors) < 5:
             errors.append(f"step {k}: granted {granted}, reflections at {got}")
         if amb.stop:
             break

@@ -201,6 +201,15 @@ class Federate:
         self.amb = Recorder()
         self.handle = self.rtia.joinFederationExecution(name, federation, self.amb)
 
+    def enable_time(self, lookahead: Optional[float] = 1.0, constrained: bool = True) -> None:
+        """Enable regulation (unless lookahead is None) and/or constrained, waiting for each callback."""
+        if lookahead is not None:
+            self.rtia.enableTimeRegulation(self.rtia.queryFederateTime(), lookahead)
+            tick_until(lambda: bool(self.amb.named("timeRegulationEnabled")), self.rtia)
+        if constrained:
+            self.rtia.enableTimeConstrained()
+            tick_until(lambda: bool(self.amb.named("timeConstrainedEnabled")), self.rtia)
+
 
 @pytest.fixture
 def federation(gateway_address: str) -> Iterator[Callable[[str], Federate]]:

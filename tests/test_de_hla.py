@@ -25,7 +25,7 @@ from hlacore.federates.de import (
     TimedSource,
 )
 
-from conftest import Federate, barrier, tick_until
+from conftest import Federate, barrier
 
 Join = Callable[[str], Federate]
 JoinDE = Callable[..., HlaDirector]
@@ -69,15 +69,6 @@ class Probe(Actor):
         return all(time <= granted for time, _, granted, _ in self.seen)
 
 
-def enable(fed: Federate, lookahead: float | None, constrained: bool) -> None:
-    if lookahead is not None:
-        fed.rtia.enableTimeRegulation(fed.rtia.queryFederateTime(), lookahead)
-        tick_until(lambda: bool(fed.amb.named("timeRegulationEnabled")), fed.rtia)
-    if constrained:
-        fed.rtia.enableTimeConstrained()
-        tick_until(lambda: bool(fed.amb.named("timeConstrainedEnabled")), fed.rtia)
-
-
 @pytest.mark.parametrize(
     "mode, grants, sent",
     [
@@ -104,7 +95,7 @@ def test_ner_and_tar_requests_grants_and_firing_times(
     robot = peer.rtia.getObjectClassHandle("robot")
     battery = peer.rtia.getAttributeHandle("battery", robot)
     peer.rtia.publishObjectClass(robot, [battery])
-    enable(peer, lookahead=1.0, constrained=False)
+    peer.enable_time(lookahead=1.0, constrained=False)
     barrier(director.rtia)
     obj = peer.rtia.registerObjectInstance(robot, "peer-robot")
     peer.rtia.updateAttributeValues(obj, {battery: F64.pack(42.0)}, "peer", 1.7)
@@ -129,7 +120,7 @@ def test_director_blocks_while_a_regulating_federate_lags(federation: Join, join
     director.add(source, probe)
     director.initialize()
     peer = federation("peer")
-    enable(peer, lookahead=1.0, constrained=True)
+    peer.enable_time(lookahead=1.0, constrained=True)
     assert director.rtia.queryLBTS() == 1.0
 
     director.grant_timeout = 0.3
@@ -218,7 +209,7 @@ def test_interactions_fire_at_their_timestamps_and_receive_order_ones_at_the_cur
     reply_value = peer.rtia.getParameterHandle("value", reply)
     peer.rtia.publishInteractionClass(command)
     peer.rtia.publishInteractionClass(reply)
-    enable(peer, lookahead=1.0, constrained=False)
+    peer.enable_time(lookahead=1.0, constrained=False)
     barrier(director.rtia)
     peer.rtia.sendInteraction(command, {name: b"go", value: F64.pack(7.0)}, "peer", 2.5)
     peer.rtia.sendInteraction(reply, {reply_value: b"pong"}, "peer")
@@ -260,7 +251,7 @@ def test_publishers_of_one_instance_share_it_and_subscribers_filter_instances(
     handles = {n: peer.rtia.getAttributeHandle(n, robot) for n in ("location", "battery", "sensor1")}
     peer.rtia.subscribeObjectClassAttributes(robot, [handles["location"], handles["battery"]])
     peer.rtia.publishObjectClass(robot, [handles["sensor1"]])
-    enable(peer, lookahead=1.0, constrained=True)
+    peer.enable_time(lookahead=1.0, constrained=True)
     barrier(director.rtia)
     r1 = peer.rtia.registerObjectInstance(robot, "r1")
     r2 = peer.rtia.registerObjectInstance(robot, "r2")

@@ -6,7 +6,7 @@ from __future__ import annotations
 import asyncio
 import math
 import threading
-from typing import Callable, Optional
+from typing import Callable
 
 import pytest
 
@@ -17,16 +17,6 @@ from conftest import Federate, barrier, settle, tick_until
 
 Join = Callable[[str], Federate]
 INF = math.inf
-
-
-def make_timed(fed: Federate, lookahead: Optional[float] = 1.0, constrained: bool = True) -> None:
-    """Enable regulation (unless lookahead is None) and/or constrained, waiting for the callbacks."""
-    if lookahead is not None:
-        fed.rtia.enableTimeRegulation(fed.rtia.queryFederateTime(), lookahead)
-        tick_until(lambda: bool(fed.amb.named("timeRegulationEnabled")), fed.rtia)
-    if constrained:
-        fed.rtia.enableTimeConstrained()
-        tick_until(lambda: bool(fed.amb.named("timeConstrainedEnabled")), fed.rtia)
 
 
 def robot_location(fed: Federate) -> tuple[rti.ObjectClassHandle, rti.AttributeHandle]:
@@ -56,7 +46,7 @@ def test_time_state_before_and_after_enabling(federation: Join) -> None:
     assert a.rtia.queryLookahead() == 0.0
     assert a.rtia.queryLBTS() == INF
     assert a.rtia.queryMinNextEventTime() == INF
-    make_timed(a, lookahead=2.5)
+    a.enable_time(lookahead=2.5)
     assert a.amb.named("timeRegulationEnabled") == [(0.0,)]
     assert a.amb.named("timeConstrainedEnabled") == [(0.0,)]
     assert a.rtia.queryLookahead() == 2.5
@@ -71,8 +61,8 @@ def test_lockstep_updates_arrive_in_order_before_the_grant_to_their_time(federat
     robot, location = robot_location(a)
     a.rtia.publishObjectClass(robot, [location])
     b.rtia.subscribeObjectClassAttributes(robot, [location])
-    make_timed(a)
-    make_timed(b)
+    a.enable_time()
+    b.enable_time()
     barrier(b.rtia)
     obj = a.rtia.registerObjectInstance(robot, "r1")
     steps = 50
@@ -98,7 +88,7 @@ def test_sending_rule_raises_invalid_federation_time(federation: Join) -> None:
     a = federation("a")
     command, value = command_class(a)
     a.rtia.publishInteractionClass(command)
-    make_timed(a, lookahead=1.0, constrained=False)
+    a.enable_time(lookahead=1.0, constrained=False)
     with pytest.raises(rti.InvalidFederationTime, match="below 1"):
         a.rtia.sendInteraction(command, {value: b"x"}, "", 0.5)
     with pytest.raises(rti.InvalidFederationTime, match="NaN"):
@@ -173,7 +163,7 @@ def test_time_service_exceptions(federation: Join) -> None:
 def test_a_grant_to_the_current_time_is_allowed(federation: Join) -> None:
     """PyHLA federates commonly ask for their current time (the papers' TAR(queryFederateTime()))."""
     a = federation("a")
-    make_timed(a)
+    a.enable_time()
     assert a.rtia.advance_to(a.rtia.queryFederateTime(), timeout=5.0) == 0.0
 
 
@@ -183,8 +173,8 @@ def test_zero_lookahead_with_available_requests(federation: Join) -> None:
     command, value = command_class(a)
     a.rtia.publishInteractionClass(command)
     b.rtia.subscribeInteractionClass(command)
-    make_timed(a, lookahead=0.0)
-    make_timed(b, lookahead=0.0)
+    a.enable_time(lookahead=0.0)
+    b.enable_time(lookahead=0.0)
     barrier(b.rtia)
     a.rtia.timeAdvanceRequestAvailable(1.0)
     b.rtia.timeAdvanceRequestAvailable(1.0)
@@ -213,7 +203,7 @@ def test_next_event_requests_grant_exactly_at_message_times(federation: Join) ->
         fed.rtia.publishInteractionClass(command)
         fed.rtia.subscribeInteractionClass(command)
     for fed in feds.values():
-        make_timed(fed, lookahead=0.1)
+        fed.enable_time(lookahead=0.1)
     for fed in feds.values():
         barrier(fed.rtia)
     grants: dict[str, list[float]] = {n: [] for n in names}
@@ -253,8 +243,8 @@ def test_retraction_removes_queued_messages_and_asks_receivers(federation: Join)
     command, value = command_class(a)
     a.rtia.publishInteractionClass(command)
     b.rtia.subscribeInteractionClass(command)
-    make_timed(a, lookahead=1.0, constrained=False)
-    make_timed(b, lookahead=None)
+    a.enable_time(lookahead=1.0, constrained=False)
+    b.enable_time(lookahead=None)
     barrier(b.rtia)
     at5 = a.rtia.sendInteraction(command, {value: b"5"}, "", 5.0)
     at7 = a.rtia.sendInteraction(command, {value: b"7"}, "", 7.0)
@@ -283,7 +273,7 @@ def test_receive_order_is_held_from_a_constrained_federate_until_it_advances(fed
     value = a.rtia.getParameterHandle("value", reply)
     a.rtia.publishInteractionClass(reply)
     b.rtia.subscribeInteractionClass(reply)
-    make_timed(b, lookahead=None)
+    b.enable_time(lookahead=None)
     barrier(b.rtia)
     a.rtia.sendInteraction(reply, {value: b"held"}, "")
     settle(b.rtia)
@@ -300,7 +290,7 @@ def test_timestamped_messages_of_a_non_regulating_sender_are_receive_order(feder
     command, value = command_class(a)
     a.rtia.publishInteractionClass(command)
     b.rtia.subscribeInteractionClass(command)
-    make_timed(b, lookahead=None)
+    b.enable_time(lookahead=None)
     b.rtia.enableAsynchronousDelivery()
     barrier(b.rtia)
     assert a.rtia.sendInteraction(command, {value: b"x"}, "", 42.0) is not None
@@ -314,8 +304,8 @@ def test_disabling_constrained_delivers_the_queued_messages(federation: Join) ->
     command, value = command_class(a)
     a.rtia.publishInteractionClass(command)
     b.rtia.subscribeInteractionClass(command)
-    make_timed(a, lookahead=1.0, constrained=False)
-    make_timed(b, lookahead=None)
+    a.enable_time(lookahead=1.0, constrained=False)
+    b.enable_time(lookahead=None)
     barrier(b.rtia)
     a.rtia.sendInteraction(command, {value: b"6"}, "", 6.0)
     a.rtia.sendInteraction(command, {value: b"5"}, "", 5.0)
@@ -329,8 +319,8 @@ def test_disabling_constrained_delivers_the_queued_messages(federation: Join) ->
 
 def test_asyncio_advance_waits_on_the_socket(federation: Join) -> None:
     a, b = federation("a"), federation("b")
-    make_timed(a)
-    make_timed(b)
+    a.enable_time()
+    b.enable_time()
 
     async def lockstep() -> list[tuple[float, float]]:
         fa, fb = AsyncAmbassador(a.rtia), AsyncAmbassador(b.rtia)
@@ -345,8 +335,8 @@ def test_asyncio_advance_waits_on_the_socket(federation: Join) -> None:
 
 def test_await_grant_times_out_with_the_request_still_pending(federation: Join) -> None:
     a, b = federation("a"), federation("b")
-    make_timed(a)
-    make_timed(b)
+    a.enable_time()
+    b.enable_time()
     with pytest.raises(TimeoutError):
         a.rtia.advance_to(5.0, timeout=0.2)  # b has not moved: LBTS(a) = 1
     with pytest.raises(rti.TimeAdvanceAlreadyInProgress):

@@ -251,7 +251,7 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         if not self._time_advance_pending():
             raise _core.TimeAdvanceWasNotInProgress("no time advance is pending")
         deadline = None if timeout is None else _time.monotonic() + timeout
-        while not self.deliver_until_granted():
+        while not self.deliver_until_granted(read=False):  # _wait reads the socket
             remaining = -1.0
             if deadline is not None:
                 remaining = deadline - _time.monotonic()
@@ -260,12 +260,16 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
             self._wait(remaining)
         return float(self.queryFederateTime())
 
-    def deliver_until_granted(self) -> bool:
-        """Deliver ready callbacks, stopping after a grant; True once no time advance is pending."""
+    def deliver_until_granted(self, read: bool = True) -> bool:
+        """Deliver ready callbacks, stopping after a grant; True once no time advance is pending.
+
+        With ``read`` (the default) it also reads what the socket holds, without blocking."""
         ambassador = self._federate_ambassador
         while self._time_advance_pending():
             callback = self._next_callback()
             if callback is None:
+                if not read:
+                    return False
                 self._poll()
                 callback = self._next_callback()
                 if callback is None:

@@ -344,3 +344,15 @@ def test_await_grant_times_out_with_the_request_still_pending(federation: Join) 
     b.rtia.timeAdvanceRequest(5.0)
     assert a.rtia.await_grant(5.0) == 5.0
     assert b.rtia.await_grant(5.0) == 5.0
+
+
+def test_a_resigning_regulator_releases_the_federates_waiting_on_it(federation: Join) -> None:
+    a, b = federation("a"), federation("b")
+    a.enable_time()
+    b.enable_time()
+    a.rtia.timeAdvanceRequest(10.0)
+    with pytest.raises(TimeoutError):
+        a.rtia.await_grant(0.2)  # b, at 0 with lookahead 1, holds a's LBTS at 1
+    b.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+    assert a.rtia.await_grant(5.0) == 10.0
+    assert a.rtia.queryLBTS() == INF

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <memory>
 #include <thread>
+#include <unordered_map>
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -149,10 +150,22 @@ std::vector<std::uint32_t> to_handles(const std::vector<H>& handles) {
     return out;
 }
 
+// Handle objects are immutable values, so callbacks share them: creating a pybind11 instance costs about
+// as much as the rest of a reflection's conversion. The caches live as long as the interpreter.
+template <class H>
+py::object handle_of(std::uint32_t value) {
+    static auto* cache = new std::unordered_map<std::uint32_t, py::object>();
+    auto it = cache->find(value);
+    if (it != cache->end()) return it->second;
+    py::object h = py::cast(H{value});
+    if (cache->size() < (1u << 16)) cache->emplace(value, h);
+    return h;
+}
+
 template <class H>
 py::dict to_dict(const wire::HandleValues& values) {
     py::dict d;
-    for (const auto& [h, v] : values) d[py::cast(H{h})] = py::bytes(v);
+    for (const auto& [h, v] : values) d[handle_of<H>(h)] = py::bytes(v);
     return d;
 }
 
@@ -190,29 +203,29 @@ py::object to_callback(const wire::Message& message) {
                 return py::make_tuple("turnInteractionsOff", py::make_tuple(InteractionClassHandle{m.interaction_class}));
             } else if constexpr (std::is_same_v<M, wire::DiscoverObject>) {
                 return py::make_tuple("discoverObjectInstance",
-                                      py::make_tuple(ObjectHandle{m.object}, ObjectClassHandle{m.object_class}, to_str(m.name)));
+                                      py::make_tuple(handle_of<ObjectHandle>(m.object), ObjectClassHandle{m.object_class}, to_str(m.name)));
             } else if constexpr (std::is_same_v<M, wire::ReflectAttributes>) {
-                py::tuple args = m.time ? (py::tuple)py::make_tuple(ObjectHandle{m.object}, to_dict<AttributeHandle>(m.values),
-                                                         to_str(m.tag), OrderingHandle{m.order},
-                                                         TransportationHandle{m.transport}, *m.time,
+                py::tuple args = m.time ? (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_dict<AttributeHandle>(m.values),
+                                                         to_str(m.tag), handle_of<OrderingHandle>(m.order),
+                                                         handle_of<TransportationHandle>(m.transport), *m.time,
                                                          retraction_or_none(m.serial, m.sender))
-                                        : (py::tuple)py::make_tuple(ObjectHandle{m.object}, to_dict<AttributeHandle>(m.values),
-                                                         to_str(m.tag), OrderingHandle{m.order},
-                                                         TransportationHandle{m.transport});
+                                        : (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_dict<AttributeHandle>(m.values),
+                                                         to_str(m.tag), handle_of<OrderingHandle>(m.order),
+                                                         handle_of<TransportationHandle>(m.transport));
                 return py::make_tuple("reflectAttributeValues", args);
             } else if constexpr (std::is_same_v<M, wire::ReceiveInteraction>) {
-                py::tuple args = m.time ? (py::tuple)py::make_tuple(InteractionClassHandle{m.interaction_class},
+                py::tuple args = m.time ? (py::tuple)py::make_tuple(handle_of<InteractionClassHandle>(m.interaction_class),
                                                          to_dict<ParameterHandle>(m.values), to_str(m.tag),
-                                                         OrderingHandle{m.order}, TransportationHandle{m.transport},
+                                                         handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport),
                                                          *m.time, retraction_or_none(m.serial, m.sender))
-                                        : (py::tuple)py::make_tuple(InteractionClassHandle{m.interaction_class},
+                                        : (py::tuple)py::make_tuple(handle_of<InteractionClassHandle>(m.interaction_class),
                                                          to_dict<ParameterHandle>(m.values), to_str(m.tag),
-                                                         OrderingHandle{m.order}, TransportationHandle{m.transport});
+                                                         handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport));
                 return py::make_tuple("receiveInteraction", args);
             } else if constexpr (std::is_same_v<M, wire::RemoveObject>) {
-                py::tuple args = m.time ? (py::tuple)py::make_tuple(ObjectHandle{m.object}, to_str(m.tag), *m.time,
+                py::tuple args = m.time ? (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_str(m.tag), *m.time,
                                                          retraction_or_none(m.serial, m.sender))
-                                        : (py::tuple)py::make_tuple(ObjectHandle{m.object}, to_str(m.tag));
+                                        : (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_str(m.tag));
                 return py::make_tuple("removeObjectInstance", args);
             } else if constexpr (std::is_same_v<M, wire::TimeRegulationEnabled>) {
                 return py::make_tuple("timeRegulationEnabled", py::make_tuple(m.time));
@@ -230,6 +243,28 @@ py::object to_callback(const wire::Message& message) {
             }
         },
         message);
+}
+
+// Delivers queued callbacks to the ambassador's methods of the same name (absent ones are skipped), for
+// at most max_seconds (< 0: no limit), stopping after a time advance grant if asked. Returns how many were
+// delivered. The loop is here rather than in Python because it runs once per reflection.
+int dispatch(Client& c, const py::object& ambassador, bool stop_after_grant, double max_seconds) {
+    const auto deadline = Client::Clock::now() + std::chrono::duration_cast<Client::Clock::duration>(
+                                                      std::chrono::duration<double>(max_seconds < 0 ? 0 : max_seconds));
+    int delivered = 0;
+    for (;;) {
+        auto m = c.pop_callback();
+        if (!m) break;
+        ++delivered;
+        py::tuple callback = to_callback(*m);
+        if (!ambassador.is_none()) {
+            py::object method = py::getattr(ambassador, callback[0], py::none());
+            if (!method.is_none()) method(*callback[1]);
+        }
+        if (stop_after_grant && std::holds_alternative<wire::TimeAdvanceGrant>(*m)) break;
+        if (max_seconds >= 0 && Client::Clock::now() >= deadline) break;
+    }
+    return delivered;
 }
 
 py::object serial_result(std::uint64_t serial, const std::optional<double>& time, const Client& c) {
@@ -548,7 +583,8 @@ PYBIND11_MODULE(_core, m) {
             auto m = c.pop_callback();
             if (!m) return py::none();
             return to_callback(*m);
-        });
+        })
+        .def("_dispatch", &dispatch, py::arg("ambassador"), py::arg("stop_after_grant"), py::arg("max_seconds"));
 
     // The pure time manager, exposed for the property tests (tests/test_time_manager_properties.py).
     using hlacore::AdvanceKind;

@@ -266,18 +266,12 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         With ``read`` (the default) it also reads what the socket holds, without blocking."""
         ambassador = self._federate_ambassador
         while self._time_advance_pending():
-            callback = self._next_callback()
-            if callback is None:
+            if not self._dispatch(ambassador, True, -1.0):
                 if not read:
                     return False
                 self._poll()
-                callback = self._next_callback()
-                if callback is None:
+                if not self._dispatch(ambassador, True, -1.0):
                     return False
-            name, args = callback
-            method = getattr(ambassador, name, None)
-            if method is not None:
-                method(*args)
         return True
 
     # ---- evoking callbacks ----
@@ -304,20 +298,15 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
 
     def _deliver(self, deadline: Optional[float]) -> None:
         ambassador = self._federate_ambassador
+        if deadline is None:
+            self._dispatch(ambassador, False, -1.0)
+            return
         while True:
-            callback = self._next_callback()
-            if callback is None:
-                if deadline is None or _time.monotonic() >= deadline:
-                    return
-                self._poll()
-                callback = self._next_callback()
-                if callback is None:
-                    return
-            name, args = callback
-            method = getattr(ambassador, name, None)
-            if method is not None:
-                method(*args)
-            if deadline is not None and _time.monotonic() >= deadline:
+            self._dispatch(ambassador, False, max(0.0, deadline - _time.monotonic()))
+            if _time.monotonic() >= deadline:
+                return
+            self._poll()  # more may have arrived meanwhile: deliver it within the same tick
+            if not self._has_callbacks():
                 return
 
 

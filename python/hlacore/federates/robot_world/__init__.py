@@ -1,0 +1,27 @@
+"""The robot world: a pymunk 2-D world of Stage-style differential-drive robots, loaded from Stage
+``.world`` files, stepped with a fixed dt, and joinable to a federation (docs/robot-world.md)."""
+
+from .render import plot_trajectories, snapshot, trajectories, write_snapshot
+from .world import GridError, Pose, Robot, World, beam_angles, first_step_at_or_after, steps_at
+from .worldfile import BlockSpec, RobotSpec, SensorSpec, WorldFileError, WorldSpec, load_world, read_world
+
+__all__ = [
+    "BlockSpec",
+    "GridError",
+    "Pose",
+    "Robot",
+    "RobotSpec",
+    "SensorSpec",
+    "World",
+    "WorldFileError",
+    "WorldSpec",
+    "beam_angles",
+    "first_step_at_or_after",
+    "load_world",
+    "plot_trajectories",
+    "read_world",
+    "snapshot",
+    "steps_at",
+    "trajectories",
+    "write_snapshot",
+]

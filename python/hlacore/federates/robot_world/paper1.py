@@ -58,8 +58,8 @@ class Trace:
     poses: list[dict[str, Pose]] = field(default_factory=list)
     distance: list[float] = field(default_factory=list)
     avatar_speed: list[float] = field(default_factory=list)
-    touching: list[bool] = field(default_factory=list)  # the avatar touched something at that step
-    stalled: list[bool] = field(default_factory=list)  # any robot stalled
+    touching: list[bool] = field(default_factory=list)  # per physics step: the avatar touches something
+    stalled: list[bool] = field(default_factory=list)  # per physics step: some robot is stalled
 
 
 def world_spec() -> WorldSpec:
@@ -78,7 +78,6 @@ def run(duration: float = 30.0, period: float = 0.1, dt: float = 0.01, obstacle_
     start = {name: world.robot(name).pose for name in OBSTACLES}
     trace = Trace()
     per_cycle = round(period / dt)
-    checks_every = 1
     for _cycle in range(round(duration / period)):
         avatar = world.robot("avatar")
         distance = min(avatar.ranges)
@@ -89,11 +88,56 @@ def run(duration: float = 30.0, period: float = 0.1, dt: float = 0.01, obstacle_
             world.command(name, obstacle_speed if travelled < obstacle_travel else 0.0, 0.0)
         for _ in range(per_cycle):
             world.step()
-            if _ % checks_every == 0:
-                trace.touching.append(world.touching("avatar"))
-                trace.stalled.append(any(r.stall for r in world.robots))
+            trace.touching.append(world.touching("avatar"))
+            trace.stalled.append(any(r.stall for r in world.robots))
         trace.times.append(world.time)
         trace.poses.append(world.poses())
         trace.distance.append(distance)
         trace.avatar_speed.append(speed)
     return world, trace
+
+
+def write_outputs(world: World, trace: Trace, directory: str) -> list[str]:
+    """Write the run's trace (CSV), a final snapshot (PNG) and, when matplotlib is installed, the
+    trajectory plot; returns the files written."""
+    import csv
+    import pathlib
+
+    from . import render
+
+    out = pathlib.Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    names = [r.name for r in world.robots]
+    with open(out / "paper1-trace.csv", "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["time", "distance", "avatar_speed"] + [f"{n}_{c}" for n in names for c in "xy"])
+        for t, d, v, poses in zip(trace.times, trace.distance, trace.avatar_speed, trace.poses):
+            writer.writerow([repr(t), repr(d), repr(v)] + [repr(c) for n in names for c in (poses[n].x, poses[n].y)])
+    written = [str(out / "paper1-trace.csv")]
+    tracks = render.trajectories(trace.poses)
+    written.append(str(render.write_snapshot(world, out / "paper1-snapshot.png", trails=tracks)))
+    try:
+        written.append(str(render.plot_trajectories(world, trace.poses, out / "paper1-trajectories.png",
+                                                    title="paper 1: avatar, crossing obstacles, wall")))
+    except ImportError as exc:
+        print(f"no trajectory plot: {exc}")
+    return written
+
+
+def main(argv: Optional[list[str]] = None) -> int:
+    """``python -m hlacore.federates.robot_world.paper1 [OUTDIR]``: run the scenario, print its checks,
+    write the trace and pictures (default directory: paper1-out)."""
+    import sys
+
+    args = sys.argv[1:] if argv is None else argv
+    world, trace = run()
+    avatar = world.robot("avatar").pose
+    print(f"collisions: {sum(trace.touching)} steps touching, stalls: {sum(trace.stalled)} steps")
+    print(f"avatar stopped at x = {avatar.x:.3f} m, front {6.9 - avatar.x - 0.165:.3f} m from the wall")
+    for path in write_outputs(world, trace, args[0] if args else "paper1-out"):
+        print(f"wrote {path}")
+    return 0 if not any(trace.touching) and not any(trace.stalled) else 1
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

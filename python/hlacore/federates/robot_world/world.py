@@ -80,6 +80,9 @@ class Robot:
     stall: bool = False
     odometry: Pose = Pose(0.0, 0.0, 0.0)
     ranges: list[float] = field(default_factory=list)
+    # every beam, precomputed: sensor x, y in the robot frame, angle to the heading, min, max, noise
+    beams: list[tuple[float, float, float, float, float, float]] = field(default_factory=list)
+    ray_filter: pymunk.ShapeFilter = pymunk.ShapeFilter()
 
     @property
     def name(self) -> str:
@@ -140,7 +143,10 @@ class World:
         shape = pymunk.Poly(body, _box(spec.size[0], spec.size[1], spec.origin[0], spec.origin[1]))
         shape.filter = pymunk.ShapeFilter(group=index + 1, categories=OBSTACLE | VISIBLE, mask=OBSTACLE | RAY)
         self.space.add(body, shape)
-        robot = Robot(spec, index, body, shape, odometry=Pose(*spec.pose))
+        beams = [(sensor.pose[0], sensor.pose[1], sensor.pose[2] + beam, sensor.range_min, sensor.range_max,
+                  sensor.noise) for sensor in spec.sensors for beam in beam_angles(sensor)]
+        ray_filter = pymunk.ShapeFilter(group=index + 1, categories=RAY, mask=VISIBLE)
+        robot = Robot(spec, index, body, shape, odometry=Pose(*spec.pose), beams=beams, ray_filter=ray_filter)
         self.robots.append(robot)
         self._by_name[spec.name] = robot
 
@@ -250,18 +256,16 @@ class World:
         x, y = robot.body.position
         theta = robot.body.angle
         c, s = math.cos(theta), math.sin(theta)
-        ray = pymunk.ShapeFilter(group=robot.index + 1, categories=RAY, mask=VISIBLE)
-        for sensor in robot.spec.sensors:
-            sx, sy, sa = sensor.pose
+        query = self.space.segment_query_first
+        ray = robot.ray_filter
+        for sx, sy, offset, range_min, range_max, noise in robot.beams:
             ox, oy = x + c * sx - s * sy, y + s * sx + c * sy
-            for beam in beam_angles(sensor):
-                a = theta + sa + beam
-                end = (ox + sensor.range_max * math.cos(a), oy + sensor.range_max * math.sin(a))
-                hit = self.space.segment_query_first((ox, oy), end, 0.0, ray)
-                r = sensor.range_max if hit is None else hit.alpha * sensor.range_max
-                if sensor.noise:
-                    r += self.rng.gauss(0.0, sensor.noise)
-                out.append(min(max(r, sensor.range_min), sensor.range_max))
+            a = theta + offset
+            hit = query((ox, oy), (ox + range_max * math.cos(a), oy + range_max * math.sin(a)), 0.0, ray)
+            r = range_max if hit is None else hit.alpha * range_max
+            if noise:
+                r += self.rng.gauss(0.0, noise)
+            out.append(min(max(r, range_min), range_max))
         return out
 
 

@@ -65,7 +65,9 @@ class Driver:
         out = []
         for _obj, attributes, _tag, _order, _transport, *rest in self.fed.amb.named("reflectAttributeValues"):
             values = {self.attrs[h]: codec.unpack(kinds[self.attrs[h]], v) for h, v in attributes.items()}
-            out.append((float(rest[0]), values["name"].decode("ascii"), values))
+            name = values["name"]
+            assert isinstance(name, bytes)
+            out.append((float(rest[0]), name.decode("ascii"), values))
         return out
 
 

@@ -19,6 +19,9 @@ import hlacore.rti as rti
 from . import codec
 from .world import Pose, World, steps_at
 
+# exported by hlacore.rti at import time (from the C++ module), so invisible to type checkers
+_AlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
+
 
 @dataclass(frozen=True)
 class Command:
@@ -98,7 +101,7 @@ class WorldFederate:
         if create:
             try:
                 rtia.createFederationExecution(federation, str(codec.FOM_PATH))
-            except rti.FederationExecutionAlreadyExists:
+            except _AlreadyExists:
                 pass
         amb = _Ambassador()
         rtia.joinFederationExecution(name, federation, amb)

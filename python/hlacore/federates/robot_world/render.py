@@ -8,7 +8,7 @@ import pathlib
 import struct
 import zlib
 from dataclasses import dataclass
-from typing import Iterable, Mapping, Optional, Sequence, Union
+from typing import Any, Iterable, Mapping, Optional, Sequence, Union
 
 from .world import Pose, World, beam_angles
 
@@ -139,7 +139,7 @@ def snapshot(world: World, scale: float = 40.0, margin: float = 0.5, beams: bool
     return image
 
 
-def _static_vertices(world: World, pose: tuple[float, float, float], size: tuple[float, float]) -> list:
+def _static_vertices(world: World, pose: tuple[float, float, float], size: tuple[float, float]) -> list[Any]:
     import pymunk
 
     x, y, a = pose
@@ -183,7 +183,7 @@ def trajectories(poses: Iterable[Mapping[str, Pose]]) -> dict[str, list[tuple[fl
     return out
 
 
-def _pyplot():  # type: ignore[no-untyped-def]
+def _pyplot() -> Any:
     try:
         import matplotlib
 

@@ -286,17 +286,26 @@ def _robot(entity: _Entity, index: int, units: _Units, defines: dict[str, _Entit
     return robot
 
 
+def _number(props: dict[str, Value], key: str, default: float) -> float:
+    """A scalar property (the first element of a tuple)."""
+    value = props.get(key, default)
+    if isinstance(value, list):
+        value = value[0] if value else default
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return default
+
+
 def _blocks(entity: _Entity, units: _Units) -> list[BlockSpec]:
     props = entity.props
-    ret = props.get("ranger_return", props.get("laser_return", 1.0))
-    visible = not (isinstance(ret, float) and ret < 0)
-    obstacle = float(props.get("obstacle_return", 1.0)) != 0.0 if not isinstance(
-        props.get("obstacle_return", 1.0), list) else True
+    visible = _number(props, "ranger_return", _number(props, "laser_return", 1.0)) >= 0.0
+    obstacle = _number(props, "obstacle_return", 1.0) != 0.0
     pose = units.pose(props)
     size = units.size(props, [0.1, 0.1])
     color = str(props.get("color", "gray30" if entity.kind == "floorplan" else "red"))
     name = str(props.get("name", ""))
-    if float(props.get("boundary", 0.0)) if not isinstance(props.get("boundary"), list) else 0.0:
+    if _number(props, "boundary", 0.0):
         # Stage's bounding box: four thin walls on the model's outline.
         sx, sy = size
         t = 0.02

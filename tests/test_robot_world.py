@@ -250,6 +250,11 @@ def test_trajectory_data_and_clear_error_without_matplotlib(monkeypatch: pytest.
     tracks = trajectories(samples)
     assert tracks["r1"] == [(pytest.approx(-1.9), 0.0), (pytest.approx(-1.8), 0.0), (pytest.approx(-1.7), 0.0)]
     assert tracks["r0"] == [(0.0, 0.0)] * 3
+    assert render.animation_frames(samples, 2) == [0, 2]
+    assert render.animation_frames(samples, 60) == [0, 1, 2]
+    assert render.animation_frames(samples[:1], 5) == [0] and render.animation_frames([], 5) == []
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     with pytest.raises(ImportError, match="needs matplotlib: pip install matplotlib"):
         render.plot_trajectories(world, samples, tmp_path / "t.png")
+    with pytest.raises(ImportError, match="needs matplotlib"):
+        render.animate_trajectories(world, samples, tmp_path / "t.gif")

@@ -3,7 +3,7 @@
 
 from .codec import FEDERATION, FOM_PATH
 from .federate import Command, WorldFederate
-from .render import plot_trajectories, snapshot, trajectories, write_snapshot
+from .render import animate_trajectories, plot_trajectories, snapshot, trajectories, write_snapshot
 from .world import GridError, Pose, Robot, World, beam_angles, first_step_at_or_after, steps_at
 from .worldfile import BlockSpec, RobotSpec, SensorSpec, WorldFileError, WorldSpec, load_world, read_world
 
@@ -21,6 +21,7 @@ __all__ = [
     "WorldFederate",
     "WorldFileError",
     "WorldSpec",
+    "animate_trajectories",
     "beam_angles",
     "first_step_at_or_after",
     "load_world",

@@ -116,9 +116,12 @@ def write_outputs(world: World, trace: Trace, directory: str) -> list[str]:
     written = [str(out / "paper1-trace.csv")]
     tracks = render.trajectories(trace.poses)
     written.append(str(render.write_snapshot(world, out / "paper1-snapshot.png", trails=tracks)))
+    title = "paper 1: avatar, crossing obstacles, wall"
     try:
         written.append(str(render.plot_trajectories(world, trace.poses, out / "paper1-trajectories.png",
-                                                    title="paper 1: avatar, crossing obstacles, wall")))
+                                                    title=title)))
+        written.append(str(render.animate_trajectories(world, trace.poses, out / "paper1-trajectories.gif",
+                                                       title=title)))
     except ImportError as exc:
         print(f"no trajectory plot: {exc}")
     return written

@@ -225,3 +225,57 @@ def plot_trajectories(world: World, poses: Iterable[Mapping[str, Pose]], path: U
     finally:
         plt.close(fig)
     return out
+
+
+def animation_frames(poses: Sequence[Mapping[str, Pose]], frames: int) -> list[int]:
+    """The sample indices an animation of ``frames`` frames shows: evenly spread, first and last included."""
+    if not poses or frames < 1:
+        return []
+    last = len(poses) - 1
+    if frames == 1 or last == 0:
+        return [last]
+    count = min(frames, last + 1)
+    return sorted({round(i * last / (count - 1)) for i in range(count)})
+
+
+def animate_trajectories(world: World, poses: Sequence[Mapping[str, Pose]], path: Union[str, pathlib.Path],
+                         frames: int = 60, fps: int = 10, title: str = "") -> pathlib.Path:
+    """Write an animated GIF of the run: each frame shows the trajectories so far and the robots' current
+    positions (frames from :func:`animation_frames`). Needs matplotlib (and Pillow, its dependency)."""
+    plt = _pyplot()
+    from matplotlib.animation import FuncAnimation, PillowWriter
+
+    tracks = trajectories(poses)
+    indices = animation_frames(poses, frames)
+    fig, ax = plt.subplots(figsize=(7, 5))
+    try:
+        for block in world.spec.blocks:
+            pts = [(float(v.x), float(v.y)) for v in _static_vertices(world, block.pose, block.size)]
+            ax.fill([p[0] for p in pts], [p[1] for p in pts], color=[c / 255 for c in color(block.color)])
+        lines, marks = {}, {}
+        for robot in world.robots:
+            rgb = [c / 255 for c in color(robot.spec.color)]
+            (lines[robot.name],) = ax.plot([], [], color=rgb, label=robot.name)
+            (marks[robot.name],) = ax.plot([], [], "s", color=rgb)
+        xs = [p[0] for t in tracks.values() for p in t]
+        ys = [p[1] for t in tracks.values() for p in t]
+        x0, y0, x1, y1 = _bounds(world)
+        ax.set_xlim(min([x0, *xs]) - 0.5, max([x1, *xs]) + 0.5)
+        ax.set_ylim(min([y0, *ys]) - 0.5, max([y1, *ys]) + 0.5)
+        ax.set_aspect("equal")
+        ax.legend(loc="best", fontsize="small")
+
+        def draw(frame: int) -> list[Any]:
+            k = indices[frame]
+            for name, track in tracks.items():
+                lines[name].set_data([p[0] for p in track[:k + 1]], [p[1] for p in track[:k + 1]])
+                marks[name].set_data([track[k][0]], [track[k][1]])
+            ax.set_title(f"{title} (sample {k + 1}/{len(poses)})".strip())
+            return [*lines.values(), *marks.values()]
+
+        animation = FuncAnimation(fig, draw, frames=len(indices), blit=False)
+        out = pathlib.Path(path)
+        animation.save(str(out), writer=PillowWriter(fps=fps))
+    finally:
+        plt.close(fig)
+    return out

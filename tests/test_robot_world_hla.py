@@ -10,7 +10,15 @@ from typing import Any, Iterator
 import pytest
 
 import hlacore.rti as rti
-from hlacore.federates.robot_world import FEDERATION, FOM_PATH, GridError, World, WorldFederate, load_world
+from hlacore.federates.robot_world import (
+    FEDERATION,
+    FOM_PATH,
+    Command,
+    GridError,
+    World,
+    WorldFederate,
+    load_world,
+)
 from hlacore.federates.robot_world import codec
 
 from conftest import Federate, barrier
@@ -79,6 +87,8 @@ def lockstep(world: WorldFederate, driver: Driver, cycles: int) -> list[float]:
         now = k * PERIOD
         linear, angular = COMMANDS[k]
         driver.send("rover", linear, angular, now + LOOKAHEAD)
+        if k == 3:
+            driver.send("ghost", 1.0, 0.0, now + LOOKAHEAD)  # no such robot: ignored, recorded
         driver.fed.rtia.timeAdvanceRequest((k + 1) * PERIOD)
         world.request()
         deadline = time.monotonic() + 10.0
@@ -102,6 +112,7 @@ def test_world_steps_exactly_to_grants_and_matches_a_standalone_run_bit_for_bit(
         grants = lockstep(world, driver, CYCLES)
         assert grants == [(k + 1) * PERIOD for k in range(CYCLES)]
         assert world.world.steps == round(CYCLES * PERIOD / DT)
+        assert world.ignored == [Command(3 * PERIOD + LOOKAHEAD, "ghost", 1.0, 0.0)]
         # the federate's poses at every grant, against a world run alone with the same commands and steps
         alone = World(load_world(WORLD), dt=DT, watchdog=0.2)
         expected = [(0.0, alone.poses())]

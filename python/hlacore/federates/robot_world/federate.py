@@ -63,7 +63,8 @@ class WorldFederate:
     """A :class:`World` joined to a federation (see the module docstring for the cycle).
 
     Use :meth:`join`; then :meth:`advance` (blocking), or :meth:`request` and :meth:`poll` to run beside
-    other federates on the same thread. ``history`` holds ``(grant time, poses)`` for every grant."""
+    other federates on the same thread. ``history`` holds ``(grant time, poses)`` for every grant;
+    ``ignored`` the commands that named no robot of the world."""
 
     def __init__(self, world: World, rtia: rti.RTIAmbassador, ambassador: _Ambassador, period: float,
                  lookahead: float) -> None:
@@ -74,6 +75,7 @@ class WorldFederate:
         self.lookahead = float(lookahead)
         self.cycle = 0
         self.history: list[tuple[float, dict[str, Pose]]] = []
+        self.ignored: list[Command] = []
         self._pending = False
         rob = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
         self._attr = {name: rtia.getAttributeHandle(name, rob) for name in codec.ATTRIBUTES}
@@ -166,7 +168,11 @@ class WorldFederate:
         self._pending = False
         granted = self.time
         commands, self._amb.commands = self._amb.commands, []
+        names = {robot.name for robot in self.world.robots}
         for command in commands:
+            if command.robot not in names:
+                self.ignored.append(command)
+                continue
             at = self.world.time if command.time is None else command.time
             self.world.schedule(at, command.robot, command.linear, command.angular)
         self.world.advance_to(granted)

@@ -78,6 +78,7 @@ class Robot:
     angular: float = 0.0
     last_command_step: int = 0
     stall: bool = False
+    stall_steps: int = 0  # how many steps it was blocked (each one a collision it was stopped by)
     odometry: Pose = Pose(0.0, 0.0, 0.0)
     ranges: list[float] = field(default_factory=list)
     # every beam, precomputed: sensor x, y in the robot frame, angle to the heading, min, max, noise
@@ -219,6 +220,7 @@ class World:
             robot.body.angular_velocity = 0.0
             if id(robot) in stalled:
                 robot.stall = True
+                robot.stall_steps += 1
             elif robot.linear != 0.0 or robot.angular != 0.0:
                 robot.stall = False
                 robot.odometry = self._integrate_odometry(robot)

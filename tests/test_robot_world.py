@@ -258,3 +258,134 @@ def test_trajectory_data_and_clear_error_without_matplotlib(monkeypatch: pytest.
         render.plot_trajectories(world, samples, tmp_path / "t.png")
     with pytest.raises(ImportError, match="needs matplotlib"):
         render.animate_trajectories(world, samples, tmp_path / "t.gif")
+
+
+WILLOW_FOUR_ERRATICS = '''
+define block model
+(
+  size [0.5 0.5 0.5]
+  gui_nose 0
+)
+
+define topurg ranger
+(
+	sensor( 			
+    range [ 0.0  30.0 ]
+    fov 270.25
+   samples 1081
+  )
+
+  # generic model properties
+  color "black"
+  size [ 0.05 0.05 0.1 ]
+)
+
+define erratic position
+(
+  #size [0.415 0.392 0.25]
+  size [0.35 0.35 0.25]
+  origin [-0.05 0 0 0]
+  gui_nose 1
+  drive "diff"
+  topurg(pose [ 0.050 0.000 0 0.000 ])
+)
+
+define floorplan model
+(
+  # sombre, sensible, artistic
+  color "gray30"
+
+  # most maps will need a bounding box
+  boundary 1
+
+  gui_nose 0
+  gui_grid 0
+
+  gui_outline 0
+  gripper_return 0
+  fiducial_return 0
+  laser_return 1
+)
+
+# set the resolution of the underlying raytrace model in meters
+resolution 0.02
+
+interval_sim 100  # simulation timestep in milliseconds
+
+
+window
+( 
+  size [ 745.000 448.000 ] 
+
+  rotate [ 0.000 -1.560 ]
+  scale 28.806 
+)
+
+# load an environment bitmap
+floorplan
+( 
+  name "willow"
+  bitmap "willow-full.pgm"
+  size [54.0 58.7 0.5]
+  pose [ -29.350 27.000 0 90.000 ]
+)
+
+# throw in two robots
+erratic( pose [ -11.277 23.266 0 180.000 ] name "era" color "blue")
+erratic( pose [ -13.277 22.266 0 180.000 ] name "era2" color "blue")
+erratic( pose [ -13.277 23.266 0 180.000 ] name "era3" color "blue")
+erratic( pose [ -11.277 22.266 0 180.000 ] name "era4" color "blue")
+block( pose [ -13.924 25.020 0 180.000 ] color "red")
+'''
+
+
+def test_stage_ros_willow_four_erratics_loads() -> None:
+    """stage_ros's world/willow-four-erratics.world, verbatim (the bitmap is not read: its boundary is)."""
+    spec = load_world(WILLOW_FOUR_ERRATICS)
+    assert [r.name for r in spec.robots] == ["era", "era2", "era3", "era4"]
+    assert spec.robots[0].pose == pytest.approx((-11.277, 23.266, math.pi))
+    (laser,) = spec.robots[0].sensors
+    assert (laser.samples, laser.range_max, laser.fov) == (1081, 30.0, pytest.approx(math.radians(270.25)))
+    assert len(spec.blocks) == 5 and spec.blocks[-1].size == (0.5, 0.5)  # 4 boundary walls + the block
+    world = World(spec)
+    assert len(world.robot("era").ranges) == 1081
+    assert min(world.robot("era").ranges) < 2.1  # era3 and era4 stand 1 m and 2 m away
+
+
+def test_turtlebot_inc_units_and_old_range_max() -> None:
+    text = (
+        'unit_length "cm"\n'
+        "define kinect ranger ( sensor ( range_max 650  fov 58.0  samples 640 ) color \"black\" size [ 6 15 3 ] )\n"
+        "define turtlebot position ( pose [0 0 0 0] odom_error [0.03 0.03 999999 999999 999999 0.02]\n"
+        '  size [ 33 33 40 ] origin [0 0 0 0] gui_nose 1 drive "diff" color "gray"\n'
+        "  kinect(pose [ -10 0.0 -11 0.0 ]) )\n"
+        'turtlebot( pose [ 100 50 0 45 ] name "tb" localization "odom" )\n'
+    )
+    (tb,) = load_world(text).robots
+    assert tb.pose == pytest.approx((1.0, 0.5, math.pi / 4)) and tb.size == pytest.approx((0.33, 0.33))
+    (kinect,) = tb.sensors
+    assert (kinect.range_max, kinect.samples, kinect.pose[0]) == (pytest.approx(6.5), 640, pytest.approx(-0.1))
+X
+
+
+def test_poses_are_identical_in_another_process_with_another_hash_seed() -> None:
+    import os
+    import subprocess
+
+    script = (
+        "import math\n"
+        "from hlacore.federates.robot_world import World, load_world\n"
+        f"w = World(load_world({CORRIDOR!r}), seed=3)\n"
+        "for k in range(30):\n"
+        "    w.command('r1', 0.8, 0.5 * math.sin(k)); w.command('r0', 0.3, -0.4); w.advance(7)\n"
+        "print(repr(sorted((n, p.x, p.y, p.theta) for n, p in w.poses().items())))\n"
+    )
+    here = World(load_world(CORRIDOR), seed=3)
+    for k in range(30):
+        here.command("r1", 0.8, 0.5 * math.sin(k))
+        here.command("r0", 0.3, -0.4)
+        here.advance(7)
+    env = dict(os.environ, PYTHONHASHSEED="12345")
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, timeout=60,
+                         check=True).stdout.strip()
+    assert out == repr(sorted((n, p.x, p.y, p.theta) for n, p in here.poses().items()))

@@ -365,7 +365,8 @@ def test_turtlebot_inc_units_and_old_range_max() -> None:
     assert tb.pose == pytest.approx((1.0, 0.5, math.pi / 4)) and tb.size == pytest.approx((0.33, 0.33))
     (kinect,) = tb.sensors
     assert (kinect.range_max, kinect.samples, kinect.pose[0]) == (pytest.approx(6.5), 640, pytest.approx(-0.1))
-X
+    # Stage reads odom_error's first four entries as x y z a: turtlebot.inc's yaw error is 999999 ("huge")
+    assert tb.odom_noise == (0.03, 999999.0)
 
 
 def test_poses_are_identical_in_another_process_with_another_hash_seed() -> None:

@@ -11,6 +11,7 @@ grant: a grant off the grid raises :class:`~.world.GridError` rather than integr
 
 from __future__ import annotations
 
+import time as _time
 from dataclasses import dataclass
 from typing import Any, Optional
 
@@ -197,8 +198,6 @@ class WorldFederate:
 
 
 def _tick_until(rtia: rti.RTIAmbassador, done: Any, timeout: float) -> None:
-    import time as _time
-
     deadline = _time.monotonic() + timeout
     while not done():
         if _time.monotonic() > deadline:

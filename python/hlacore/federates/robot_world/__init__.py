@@ -1,0 +1,34 @@
+"""The robot world: a pymunk 2-D world of Stage-style differential-drive robots, loaded from Stage
+``.world`` files, stepped with a fixed dt, and joinable to a federation (docs/robot-world.md)."""
+
+from .codec import FEDERATION, FOM_PATH
+from .federate import Command, WorldFederate
+from .render import animate_trajectories, plot_trajectories, snapshot, trajectories, write_snapshot
+from .world import GridError, Pose, Robot, World, beam_angles, first_step_at_or_after, steps_at
+from .worldfile import BlockSpec, RobotSpec, SensorSpec, WorldFileError, WorldSpec, load_world, read_world
+
+__all__ = [
+    "FEDERATION",
+    "FOM_PATH",
+    "BlockSpec",
+    "Command",
+    "GridError",
+    "Pose",
+    "Robot",
+    "RobotSpec",
+    "SensorSpec",
+    "World",
+    "WorldFederate",
+    "WorldFileError",
+    "WorldSpec",
+    "animate_trajectories",
+    "beam_angles",
+    "first_step_at_or_after",
+    "load_world",
+    "plot_trajectories",
+    "read_world",
+    "snapshot",
+    "steps_at",
+    "trajectories",
+    "write_snapshot",
+]

@@ -82,3 +82,28 @@ def test_the_6x6_scenario_runs_calibrated(tmp_path):
     done, rows = run_demo(tmp_path, "--grid", "6x6", "--cycles", "12", "--time-scale", "0")
     assert done.returncode == 0, done.stdout + done.stderr
     assert len(rows) == 12 and robot_cells(rows)[-1] == (5, 4)
+
+
+def test_testbench_and_robot_as_two_commands_over_the_real_rtig(rtig, tmp_path):
+    """The two federates started separately, as on two machines: python -m ...testbench and ...robot_driver."""
+    commands = [
+        [sys.executable, "-m", "hlacore.federates.testbench", "--rtig", rtig.address, "--out", str(tmp_path / "tb"),
+         "--cycles", "15", "--timeout", "60"],
+        [sys.executable, "-m", "hlacore.federates.robot_driver", "--rtig", rtig.address, "--cycles", "15",
+         "--timeout", "60"],
+    ]
+    processes = [subprocess.Popen(c, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                  text=True) for c in commands]
+    try:
+        outputs = [p.communicate(timeout=100)[0] for p in processes]
+    finally:
+        for p in processes:
+            if p.poll() is None:
+                p.kill()
+                p.wait()
+    testbench, robot = outputs
+    assert [p.returncode for p in processes] == [0, 0], testbench + robot
+    assert "checker: 15 cycles, 0 value errors, 0 time errors" in testbench
+    assert robot.count("robot cycle") == 15
+    with open(tmp_path / "tb" / "trace.csv", newline="") as stream:
+        assert robot_cells(list(csv.DictReader(stream))) == PAPER_PATH

@@ -71,7 +71,7 @@ class SerialTransport:
 
     def __init__(self, path: str, baudrate: int = 115200) -> None:
         try:
-            import serial  # type: ignore[import-not-found]
+            import serial  # type: ignore[import-untyped, import-not-found, unused-ignore]
         except ImportError:
             raise RuntimeError(
                 "the serial transport needs pyserial (pip install pyserial); "
@@ -162,7 +162,7 @@ class TxRxDriver:
 
 def _has_pyserial() -> bool:
     try:
-        import serial  # type: ignore[import-not-found]  # noqa: F401
+        import serial  # type: ignore[import-untyped, import-not-found, unused-ignore]  # noqa: F401
     except ImportError:
         return False
     return True

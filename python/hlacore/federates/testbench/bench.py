@@ -43,7 +43,7 @@ class ArrivalClock(rti.FederateAmbassador):
         """Note the robot's object."""
         self.discovered.append(name)
 
-    def reflectAttributeValues(self, obj: Any, attributes: dict, tag: str, *rest: Any) -> None:
+    def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], tag: str, *rest: Any) -> None:
         """Note when a report came in (the first reflection of its cycle)."""
         now = time.monotonic()
         for data in attributes.values():

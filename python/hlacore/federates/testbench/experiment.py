@@ -29,7 +29,7 @@ from .bench import Testbench, TestbenchResult
 from .delays import format_table
 from .plotter import write_plot, write_trace
 
-__all__ = ["ExperimentOptions", "Experiment", "run_experiment"]
+__all__ = ["ExperimentOptions", "Experiment", "run_experiment", "write_outputs"]
 
 
 @dataclass
@@ -123,9 +123,15 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
             director.rtia.destroyFederationExecution(options.federation)
         except getattr(rti, "FederatesCurrentlyJoined"):
             pass
-    write_trace(out / "trace.csv", result.verdicts, result.reflected_at, options.precision)
-    (out / "delays.md").write_text(format_table(result.delays))
     title = f"{scenario.width}x{scenario.height}, {calibration}, {mode}"
-    messages = [f"trace: {out / 'trace.csv'}", write_plot(out / "trajectory.png", result.verdicts, scenario, title),
-                f"delay table: {out / 'delays.md'}"]
+    messages = write_outputs(out, result, scenario, title)
     return Experiment(result, out, int(robot.returncode), messages)
+
+
+def write_outputs(out: pathlib.Path, result: TestbenchResult, scenario: Scenario, title: str) -> list[str]:
+    """Write ``trace.csv``, ``trajectory.png`` (if matplotlib) and ``delays.md`` into ``out``; returns a
+    line about each."""
+    write_trace(out / "trace.csv", result.verdicts, result.reflected_at, result.precision)
+    (out / "delays.md").write_text(format_table(result.delays))
+    return [f"trace: {out / 'trace.csv'}", write_plot(out / "trajectory.png", result.verdicts, scenario, title),
+            f"delay table: {out / 'delays.md'}"]

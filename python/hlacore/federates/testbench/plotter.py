@@ -51,10 +51,10 @@ def write_plot(path: pathlib.Path, verdicts: Sequence[Verdict], scenario: Scenar
     """Draw the grid, the walls, the reference path and the robot's measured trajectory; returns a one-line
     message (where it went, or why there is no plot)."""
     try:
-        import matplotlib
+        import matplotlib  # type: ignore[import-not-found, unused-ignore]
 
         matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        import matplotlib.pyplot as plt  # type: ignore[import-not-found, unused-ignore]
     except ImportError:
         return "no plot: matplotlib is not installed (pip install 'hlacore[bench]' or matplotlib)"
     ordered = sorted(verdicts, key=lambda v: v.cycle)

@@ -58,16 +58,17 @@ def write_plot(path: pathlib.Path, verdicts: Sequence[Verdict], scenario: Scenar
     except ImportError:
         return "no plot: matplotlib is not installed (pip install 'hlacore[bench]' or matplotlib)"
     ordered = sorted(verdicts, key=lambda v: v.cycle)
-    figure, axes = plt.subplots(figsize=(5.5, 5.5))
+    figure, axes = plt.subplots(figsize=(5.5, 6.0))
     for a, b in scenario.walls:
         axes.add_patch(plt.Rectangle(((a - 0.5) * CELL, (b - 0.5) * CELL), CELL, CELL, color="0.6"))
     for cell, colour in ((scenario.start, "tab:green"), (scenario.goal, "tab:red")):
         axes.add_patch(plt.Rectangle(((cell[0] - 0.5) * CELL, (cell[1] - 0.5) * CELL), CELL, CELL,
                                      color=colour, alpha=0.35))
     axes.plot([v.expected[0] * CELL for v in ordered], [v.expected[1] * CELL for v in ordered], "o-",
-              color="tab:blue", label="reference model")
+              color="tab:blue", markersize=10, label="reference model")
     poses = [v.report.pose for v in ordered if v.report is not None]
-    axes.plot([p[0] for p in poses], [p[1] for p in poses], "s--", color="tab:orange", label="robot (measured)")
+    axes.plot([p[0] for p in poses], [p[1] for p in poses], "s--", color="tab:orange", markersize=5,
+              label="robot (measured)")
     errors = [v for v in ordered if v.value_error and v.report is not None]
     if errors:
         axes.plot([v.report.pose[0] for v in errors if v.report], [v.report.pose[1] for v in errors if v.report],
@@ -81,7 +82,7 @@ def write_plot(path: pathlib.Path, verdicts: Sequence[Verdict], scenario: Scenar
     axes.set_xlabel("first coordinate (cells of 33 cm)")
     axes.set_ylabel("second coordinate")
     axes.set_title(title)
-    axes.legend(loc="upper left", fontsize=8)
+    axes.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=3, fontsize=8)
     figure.tight_layout()
     figure.savefig(path, dpi=110)
     plt.close(figure)

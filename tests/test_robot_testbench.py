@@ -120,3 +120,32 @@ def test_trace_has_a_row_per_cycle_and_plot_is_optional(tmp_path: pathlib.Path):
         assert not (tmp_path / "trajectory.png").exists()
     else:
         assert (tmp_path / "trajectory.png").stat().st_size > 0
+
+
+def test_testbench_keeps_the_directors_delegate(inprocess_gateway):
+    """The testbench's arrival clock wraps a delegate the director already had; callbacks reach both."""
+    from importlib import resources
+
+    from hlacore.federates.de import HlaDirector
+    from hlacore.federates.testbench import ArrivalClock, Testbench
+
+    class Discoveries:
+        def __init__(self) -> None:
+            self.names: list[str] = []
+
+        def discoverObjectInstance(self, obj, cls, name) -> None:
+            self.names.append(name)
+
+    mine = Discoveries()
+    fom = str(resources.files("hlacore") / "foms" / "robot.fed")
+    director = HlaDirector.join("testbench", "TestFed", fom, address=str(inprocess_gateway.address),
+                                mode="TAR", lookahead=0.5, delegate=mine)
+    try:
+        testbench = Testbench(director, PAPER_5X5, 3)
+        clock = director.ambassador.delegate
+        assert isinstance(clock, ArrivalClock) and clock.inner is mine and testbench.clock is clock
+        director.ambassador.discoverObjectInstance(None, None, "robot")
+        assert clock.discovered == ["robot"] and mine.names == ["robot"]
+    finally:
+        director.resign()
+        director.rtia.destroyFederationExecution("TestFed")

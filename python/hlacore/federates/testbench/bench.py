@@ -33,15 +33,27 @@ __all__ = ["ArrivalClock", "Testbench", "TestbenchResult"]
 
 
 class ArrivalClock(rti.FederateAmbassador):
-    """The director's delegate: the wall-clock time each cycle's report was reflected, and discoveries."""
+    """The director's delegate: the wall-clock time each cycle's report was reflected, and discoveries.
 
-    def __init__(self) -> None:
+    Every callback also goes to ``inner`` (the delegate the director had before), when there is one.
+    """
+
+    def __init__(self, inner: Optional[rti.FederateAmbassador] = None) -> None:
+        self.inner = inner
         self.reflected_at: dict[int, float] = {}
         self.discovered: list[str] = []
+
+    def __getattr__(self, name: str) -> Any:
+        inner = self.__dict__.get("inner")
+        if inner is None or name.startswith("_"):
+            raise AttributeError(name)
+        return getattr(inner, name)
 
     def discoverObjectInstance(self, obj: rti.ObjectHandle, cls: rti.ObjectClassHandle, name: str) -> None:
         """Note the robot's object."""
         self.discovered.append(name)
+        if self.inner is not None and hasattr(self.inner, "discoverObjectInstance"):
+            self.inner.discoverObjectInstance(obj, cls, name)
 
     def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], tag: str, *rest: Any) -> None:
         """Note when a report came in (the first reflection of its cycle)."""
@@ -52,6 +64,8 @@ class ArrivalClock(rti.FederateAmbassador):
             except ValueError:
                 continue
             self.reflected_at.setdefault(cycle, now)
+        if self.inner is not None and hasattr(self.inner, "reflectAttributeValues"):
+            self.inner.reflectAttributeValues(obj, attributes, tag, *rest)
 
 
 @dataclass
@@ -102,7 +116,7 @@ class Testbench:
         robot_instance: str = "robot",
     ) -> None:
         if not isinstance(director.ambassador.delegate, ArrivalClock):
-            director.ambassador.delegate = ArrivalClock()
+            director.ambassador.delegate = ArrivalClock(director.ambassador.delegate)
         self.director = director
         self.clock: ArrivalClock = director.ambassador.delegate
         self.scenario = scenario

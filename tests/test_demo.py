@@ -1,15 +1,22 @@
-"""The README's main job: the two-federate demo on the in-process gateway."""
+"""The README's main job: `python -m hlacore.demo` runs the robot A* experiment with no configuration."""
 
+import pathlib
+import re
 import subprocess
 import sys
 
 
-def test_demo_runs_and_every_message_arrives():
-    """python -m hlacore.demo exchanges a sync point, three updates, a command and a removal."""
-    done = subprocess.run([sys.executable, "-m", "hlacore.demo"], capture_output=True, text=True, timeout=60)
-    assert done.returncode == 0, done.stderr
+def test_demo_runs_the_experiment_with_no_configuration(tmp_path: pathlib.Path):
+    """No option: in-process gateway, calibrated robot on the paper's grid; names its output folder."""
+    done = subprocess.run([sys.executable, "-m", "hlacore.demo"], capture_output=True, text=True, timeout=110,
+                          cwd=tmp_path, stdin=subprocess.DEVNULL)
+    assert done.returncode == 0, done.stdout + done.stderr
     out = done.stdout
-    assert "federation synchronized at 'ReadyToRun'" in out
-    assert out.count("reflected location") == 3
-    assert "received command 'stop'" in out
-    assert out.rstrip().endswith("demo finished: every message arrived")
+    assert "(in-process); calibrated robot, stepped mode, 15 cycles" in out
+    assert len(re.findall(r"^cycle +\d+ .* ok$", out, re.M)) == 15
+    folder = re.search(r"output in (\S+)", out)
+    assert folder is not None
+    written = {p.name for p in (tmp_path / folder.group(1)).iterdir()}
+    assert {"scenario.txt", "robot.log", "trace.csv", "delays.md"} <= written
+    assert "| d_RT |" in out
+    assert out.rstrip().endswith("experiment finished: checker passed")

@@ -1,119 +1,72 @@
-"""A two-federate exchange on the in-process gateway, printing what each side does.
+"""The main job: the robot-in-the-loop A* experiment of testing-rtes-hla-2016 §6, end to end.
 
-Run with ``python -m hlacore.demo``. A "robot" federate publishes the seed FOM's ``robot`` class and
-reports its location; a "monitor" federate discovers it, reflects the updates and sends a ``command``
-interaction back. Both meet at a synchronization point first, as the papers' federates do.
+Run with ``python -m hlacore.demo`` (or ``./scripts/run.sh``). With no option it runs the paper's calibrated
+robot on the 5x5 grid on an in-process gateway: the testbench federate (sequencer, reference model,
+checker, display) here, the Robot Federate in its own process, the simulated device behind a pty. It prints
+a line per cycle, writes the trace, the trajectory plot and the delay table into the output folder it
+names, and exits 0 when the checker passes (1 when it found value or time errors).
 """
 
 from __future__ import annotations
 
-import struct
+import argparse
+import datetime
+import pathlib
 import sys
-from importlib import resources
-from typing import Any, Callable
+from typing import Optional, Sequence
 
-from . import omt, rti
-from .gateway import Gateway
-
-
-class Narrator(rti.FederateAmbassador):
-    """Prints each callback it gets, prefixed with the federate's name."""
-
-    def __init__(self, name: str) -> None:
-        self.name = name
-        self.announced = False
-        self.synchronized = False
-        self.removed = False
-        self.locations: list[tuple[float, float]] = []
-        self.commands: list[str] = []
-
-    def say(self, text: str) -> None:
-        print(f"[{self.name:>7}] {text}")
-
-    def announceSynchronizationPoint(self, label: str, tag: str) -> None:
-        self.say(f"sync point '{label}' announced ({tag})")
-        self.announced = True
-
-    def federationSynchronized(self, label: str) -> None:
-        self.say(f"federation synchronized at '{label}'")
-        self.synchronized = True
-
-    def startRegistrationForObjectClass(self, cls: rti.ObjectClassHandle) -> None:
-        self.say(f"someone subscribes to {cls!r}: start registering")
-
-    def turnInteractionsOn(self, cls: rti.InteractionClassHandle) -> None:
-        self.say(f"someone subscribes to {cls!r}: interactions on")
-
-    def discoverObjectInstance(self, obj: rti.ObjectHandle, cls: rti.ObjectClassHandle, name: str) -> None:
-        self.say(f"discovered {name!r} ({obj!r}, {cls!r})")
-
-    def reflectAttributeValues(self, obj: Any, attributes: dict, tag: str, order: Any, transport: Any,
-                               time: Any = None, retraction: Any = None) -> None:
-        x, y = struct.unpack(">dd", next(iter(attributes.values())))
-        self.locations.append((x, y))
-        self.say(f"reflected location ({x:.2f}, {y:.2f}) tag={tag!r}")
-
-    def receiveInteraction(self, cls: Any, parameters: dict, tag: str, order: Any, transport: Any,
-                           time: Any = None, retraction: Any = None) -> None:
-        command = omt.unpack_string(next(iter(parameters.values())))
-        self.commands.append(command)
-        self.say(f"received command {command!r}")
-
-    def removeObjectInstance(self, obj: rti.ObjectHandle, tag: str, time: Any = None, retraction: Any = None) -> None:
-        self.say(f"{obj!r} removed ({tag!r})")
-        self.removed = True
+from .federates.testbench.delays import format_table
+from .federates.testbench.experiment import ExperimentOptions, run_experiment
 
 
-def _tick_until(done: Callable[[], bool], *ambassadors: rti.RTIAmbassador) -> None:
-    for _ in range(1000):
-        if done():
-            return
-        for rtia in ambassadors:
-            rtia.tick(0.001, 0.01)
-    raise RuntimeError("the demo did not make progress")
+def _grid(text: str) -> str:
+    if text not in ("5x5", "6x6"):
+        raise argparse.ArgumentTypeError("the grids are 5x5 (the paper's) and 6x6 (ours); use --scenario FILE")
+    return text
 
 
-def main() -> int:
-    """Run the exchange and return 0 when every message arrived."""
-    fed_file = str(resources.files("hlacore") / "foms" / "robot.fed")
-    with Gateway(port=0) as gateway:
-        print(f"gateway listening on {gateway.address} (in-process)")
-        robot_rtia, monitor_rtia = rti.RTIAmbassador(gateway.address), rti.RTIAmbassador(gateway.address)
-        robot_rtia.createFederationExecution("TestFed", fed_file)
-        robot, monitor = Narrator("robot"), Narrator("monitor")
-        robot_rtia.joinFederationExecution("robot", "TestFed", robot)
-        monitor_rtia.joinFederationExecution("monitor", "TestFed", monitor)
+def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
+    """The command line as :class:`ExperimentOptions`."""
+    parser = argparse.ArgumentParser(prog="python -m hlacore.demo", description=__doc__.splitlines()[0])
+    parser.add_argument("--rtig", metavar="HOST:PORT", default=None,
+                        help="a running rtig instead of the in-process gateway")
+    parser.add_argument("--miscalibrated", action="store_true", help="the device's motors are miscalibrated")
+    parser.add_argument("--grid", type=_grid, default="5x5", help="5x5 (the paper's, default) or 6x6 (ours)")
+    parser.add_argument("--scenario", type=pathlib.Path, default=None, help="a scenario file (overrides --grid)")
+    parser.add_argument("--best-effort", action="store_true",
+                        help="the robot is neither regulating nor constrained (never waits)")
+    parser.add_argument("--cycles", type=int, default=15, help="control cycles (default 15: the whole path)")
+    parser.add_argument("--time-scale", type=float, default=0.05,
+                        help="wall seconds per simulated device second (default 0.05; 1 = real time)")
+    parser.add_argument("--precision", type=float, default=0.25, help="checker's time precision, model time")
+    parser.add_argument("--federation", default="TestFed")
+    parser.add_argument("--out", type=pathlib.Path, default=None,
+                        help="output folder (default ./robot-experiment-<UTC time>)")
+    args = parser.parse_args(argv)
+    if args.cycles < 1:
+        parser.error("--cycles must be at least 1")
+    out = args.out or pathlib.Path(f"robot-experiment-{datetime.datetime.now(datetime.timezone.utc):%Y%m%d-%H%M%S}")
+    return ExperimentOptions(out=out, rtig=args.rtig, grid=args.grid, scenario_file=args.scenario,
+                             miscalibrated=args.miscalibrated, best_effort=args.best_effort, cycles=args.cycles,
+                             time_scale=args.time_scale, precision=args.precision, federation=args.federation)
 
-        robot_class = robot_rtia.getObjectClassHandle("robot")
-        location = robot_rtia.getAttributeHandle("location", robot_class)
-        command = robot_rtia.getInteractionClassHandle("command")
-        command_name = robot_rtia.getParameterHandle("name", command)
 
-        robot_rtia.publishObjectClass(robot_class, [location])
-        robot_rtia.subscribeInteractionClass(command)
-        monitor_rtia.subscribeObjectClassAttributes(robot_class, [location])
-        monitor_rtia.publishInteractionClass(command)
-
-        robot_rtia.registerFederationSynchronizationPoint("ReadyToRun", "both joined")
-        _tick_until(lambda: robot.announced and monitor.announced, robot_rtia, monitor_rtia)
-        robot_rtia.synchronizationPointAchieved("ReadyToRun")
-        monitor_rtia.synchronizationPointAchieved("ReadyToRun")
-        _tick_until(lambda: robot.synchronized and monitor.synchronized, robot_rtia, monitor_rtia)
-
-        obj = robot_rtia.registerObjectInstance(robot_class, "robot-1")
-        for step in range(3):
-            robot_rtia.updateAttributeValues(obj, {location: struct.pack(">dd", 0.33 * step, 0.0)}, f"step {step}")
-            _tick_until(lambda: len(monitor.locations) > step, robot_rtia, monitor_rtia)
-        monitor_rtia.sendInteraction(command, {command_name: omt.pack_string("stop")}, "monitor says")
-        _tick_until(lambda: bool(robot.commands), robot_rtia, monitor_rtia)
-
-        robot_rtia.resignFederationExecution(rti.ResignAction.DeleteObjects)
-        _tick_until(lambda: monitor.removed, monitor_rtia)
-        monitor_rtia.resignFederationExecution(rti.ResignAction.NoAction)
-        robot_rtia.destroyFederationExecution("TestFed")
-    ok = len(monitor.locations) == 3 and robot.commands == ["stop"] and monitor.removed
-    print("demo finished:", "every message arrived" if ok else "MESSAGES MISSING")
-    return 0 if ok else 1
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """Run the experiment; 0 when the checker passes, 1 when it found errors."""
+    options = parse_args(argv)
+    experiment = run_experiment(options, lambda line: print(line, flush=True))
+    result = experiment.result
+    for message in experiment.messages:
+        print(message)
+    print(format_table(result.delays), end="")
+    value, late = result.value_errors, result.time_errors
+    first = f" (first at cycle {value[0].cycle})" if value else ""
+    print(f"checker: {len(result.verdicts)} cycles, {len(value)} value errors{first}, {len(late)} time errors")
+    if experiment.robot_status != 0:
+        print(f"robot federate exited with {experiment.robot_status}: see {experiment.out / 'robot.log'}")
+    passed = result.passed and experiment.robot_status == 0
+    print("experiment finished:", "checker passed" if passed else "CHECKER FOUND ERRORS")
+    return 0 if passed else 1
 
 
 if __name__ == "__main__":

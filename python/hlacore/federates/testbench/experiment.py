@@ -1,0 +1,137 @@
+"""The paper's robot-in-the-loop A* experiment end to end: the main job's body.
+
+:func:`run_experiment` writes the stimulus (scenario) file into the output folder, starts a gateway (the
+in-process one unless ``rtig`` gives an address), joins the testbench, starts the Robot Federate as its
+own process (``python -m hlacore.federates.robot_driver``, which starts the simulated device on a pty),
+runs the testbench, waits for the robot, and writes into the folder:
+
+- ``scenario.txt``: the stimulus file; ``robot.log``: the robot process's output;
+- ``trace.csv``: one row per cycle (:data:`~.plotter.TRACE_COLUMNS`);
+- ``trajectory.png``: robot vs reference (when matplotlib is installed);
+- ``delays.md``: the delay decomposition in Table 1's form.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import pathlib
+import subprocess
+import sys
+from dataclasses import dataclass
+from importlib import resources
+from typing import Callable, Iterator, Optional
+
+from hlacore import rti
+from hlacore.federates.de import HlaDirector
+from hlacore.federates.robot_driver.navigation import Scenario, scenario_named
+
+from .bench import Testbench, TestbenchResult
+from .delays import format_table
+from .plotter import write_plot, write_trace
+
+__all__ = ["ExperimentOptions", "Experiment", "run_experiment", "write_outputs"]
+
+
+@dataclass
+class ExperimentOptions:
+    """The experiment's knobs; the defaults are the main job's (the paper's calibrated 5x5 run)."""
+
+    out: pathlib.Path
+    rtig: Optional[str] = None
+    grid: str = "5x5"
+    scenario_file: Optional[pathlib.Path] = None
+    miscalibrated: bool = False
+    best_effort: bool = False
+    cycles: int = 15
+    time_scale: float = 0.05
+    latency: float = 0.5
+    precision: float = 0.25
+    federation: str = "TestFed"
+    timeout: float = 60.0
+
+
+@dataclass
+class Experiment:
+    """A finished run: the checker's result and the files written."""
+
+    result: TestbenchResult
+    out: pathlib.Path
+    robot_status: int
+    messages: list[str]
+
+
+@contextlib.contextmanager
+def _gateway(address: Optional[str]) -> Iterator[str]:
+    if address is not None:
+        yield address
+        return
+    from hlacore.gateway import Gateway
+
+    with Gateway(port=0) as gateway:
+        yield str(gateway.address)
+
+
+def _robot_command(options: ExperimentOptions, address: str, scenario_path: pathlib.Path) -> list[str]:
+    command = [
+        sys.executable, "-m", "hlacore.federates.robot_driver", "--rtig", address,
+        "--federation", options.federation, "--scenario", str(scenario_path), "--cycles", str(options.cycles),
+        "--lookahead", repr(options.latency), "--time-scale", repr(options.time_scale),
+        "--timeout", repr(options.timeout),
+    ]
+    if options.best_effort:
+        command.append("--best-effort")
+    if options.miscalibrated:
+        command.append("--miscalibrated")
+    return command
+
+
+def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = print) -> Experiment:
+    """Run the experiment (see the module docstring); ``write`` gets the progress lines."""
+    out = options.out
+    out.mkdir(parents=True, exist_ok=True)
+    scenario = Scenario.load(options.scenario_file) if options.scenario_file else scenario_named(options.grid)
+    stimulus = out / "scenario.txt"
+    stimulus.write_text(scenario.to_text())
+    fom = str(resources.files("hlacore") / "foms" / "robot.fed")
+    mode = "best-effort" if options.best_effort else "stepped"
+    calibration = "miscalibrated" if options.miscalibrated else "calibrated"
+    # Best effort: the model keeps the pace of a straight cell (2 simulated seconds per cycle).
+    pace = max(2.0 * options.time_scale, 0.01) if options.best_effort else None
+    with _gateway(options.rtig) as address:
+        write(f"gateway {address} ({'in-process' if options.rtig is None else 'rtig'}); "
+              f"{calibration} robot, {mode} mode, {options.cycles} cycles; output in {out}")
+        director = HlaDirector.join("testbench", options.federation, fom, address=address, mode="TAR",
+                                    step=1.0, lookahead=options.latency, grant_timeout=options.timeout)
+        testbench = Testbench(director, Scenario.load(stimulus), options.cycles, options.latency,
+                              options.precision, write)
+        with open(out / "robot.log", "w") as log:
+            robot = subprocess.Popen(_robot_command(options, address, stimulus), stdout=log,
+                                     stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+            try:
+                result = testbench.run(pace=pace, discover_timeout=options.timeout)
+                robot_status = robot.wait(timeout=options.timeout)
+            finally:
+                if robot.poll() is None:
+                    robot.terminate()
+                    try:
+                        robot.wait(timeout=10)
+                    except subprocess.TimeoutExpired:
+                        robot.kill()
+                        robot.wait()
+        director.resign()
+        try:
+            director.rtia.destroyFederationExecution(options.federation)
+        except getattr(rti, "FederatesCurrentlyJoined"):
+            pass
+    title = f"{scenario.width}x{scenario.height}, {calibration}, {mode}"
+    messages = write_outputs(out, result, scenario, title)
+    return Experiment(result, out, int(robot.returncode), messages)
+
+
+def write_outputs(out: pathlib.Path, result: TestbenchResult, scenario: Scenario, title: str) -> list[str]:
+    """Write ``trace.csv``, ``trajectory.png`` (if matplotlib) and ``delays.md`` into ``out``; returns a
+    line about each."""
+    write_trace(out / "trace.csv", result.verdicts, result.reflected_at, result.precision)
+    (out / "delays.md").write_text(format_table(result.delays))
+    return [f"trace: {out / 'trace.csv'}", write_plot(out / "trajectory.png", result.verdicts, scenario, title),
+            f"delay table: {out / 'delays.md'}"]

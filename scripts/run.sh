@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job on the embedded default: install hlacore into .venv and run the demo federation
-# on an in-process gateway.
+# on an in-process gateway. Arguments go to the demo (./scripts/run.sh --help).
 source "$(dirname "$0")/env.sh"
 pip_install .
-exec .venv/bin/python -m hlacore.demo
+exec .venv/bin/python -m hlacore.demo "$@"

@@ -10,6 +10,7 @@ messages per second (rates), keyed as the bench tests record them:
     throughput.floor.py / .cpp              raw TCP messages per second (one send per message)
     throughput.N                            updates per second delivered to each of N subscribers
     fom.flat, fom.tree, fom.tree.python     parse times of the generated 1000-class FOM
+    world.robot_steps.N                     robot-world robot-steps per second with N robots
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ FEDERATES = (2, 4, 8, 16, 32)
 PAYLOADS = (8, 1024, 65536)
 SUBSCRIBERS = (1, 8)
 FOMS = ("fom.flat", "fom.tree", "fom.tree.python")
+WORLD_ROBOTS = (4, 50)
 
 
 def p99(values: list[float]) -> float:
@@ -113,6 +115,8 @@ class Report:
             ("3-level tree: `hlacore.fed.parse_text` (dataclasses)", "fom.tree.python"),
         )]
         sections.append(("FOM parse (generated .fed)", _present(fom)))
+        world = [self._world_row(n) for n in WORLD_ROBOTS]
+        sections.append(("Robot world: robot-steps per second (no RTI)", _present(world)))
         return sections
 
     def _floor_row(self, figure: str, prefix: str, size: Optional[int] = None, half: bool = False) -> Optional[Row]:
@@ -154,6 +158,14 @@ class Report:
         return Row(figure, _rate(rate) + total, f"slowest round {_rate(min(self.samples[key]))}",
                    self._ratio(key, "throughput.floor.py"), self._ratio(key, "throughput.floor.cpp"), target)
 
+    def _world_row(self, robots: int) -> Optional[Row]:
+        """No floor: the world runs in one process without the RTI."""
+        values = self.samples.get(f"world.robot_steps.{robots}")
+        if not values:
+            return None
+        return Row(f"{robots} robots, physics and rangers", _rate(statistics.median(values)),
+                   f"slowest round {_rate(min(values))}", "", "", "")
+
     def _fom_row(self, figure: str, key: str) -> Optional[Row]:
         values = self.samples.get(key)
         if not values:
@@ -185,7 +197,7 @@ def expected_keys() -> list[str]:
     keys += [f"grant.rtig.{k}" for k in FEDERATES] + [f"grant.pure.{k}" for k in FEDERATES]
     keys += [f"update.{kind}.{s}" for s in PAYLOADS for kind in ("floor.py", "floor.cpp", "ro", "tso")]
     keys += [f"throughput.{n}" for n in SUBSCRIBERS]
-    return keys + list(FOMS)
+    return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
 
 
 def _grant_target(k: int, median: Optional[float], g2: Optional[float], cpp_rtt: Optional[float]) -> str:

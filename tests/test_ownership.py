@@ -284,6 +284,45 @@ def test_negotiated_divestiture_goes_to_a_waiting_acquirer_at_once(robots):
         a.rtia.attributeOwnershipReleaseResponse(obj, [battery])
 
 
+def test_local_delete_ends_a_pending_acquisition(robots):
+    """A federate that forgets the object (§6.10) no longer waits for its attributes."""
+    a, b, obj, location = robots.a, robots.b, robots.obj, robots.location
+    b.rtia.attributeOwnershipAcquisition(obj, [location], "")
+    robots.tick_until(lambda: a.amb.named("requestAttributeOwnershipRelease"))
+    b.rtia.localDeleteObjectInstance(obj)
+    barrier(b.rtia)
+    assert a.rtia.attributeOwnershipReleaseResponse(obj, [location]) == ()
+    assert a.rtia.isAttributeOwnedByFederate(obj, location)
+
+
+def test_first_waiting_acquirer_gets_the_attribute_and_subclass_instances_qualify(federation):
+    """Acquirers wait in request order; an instance discovered as its superclass is acquired through the
+    superclass's published attributes."""
+    a, b, c = federation("a"), federation("b"), federation("c")
+    robot = a.rtia.getObjectClassHandle("robot")
+    turtle = a.rtia.getObjectClassHandle("turtlebot")
+    location = a.rtia.getAttributeHandle("location", robot)
+    a.rtia.publishObjectClass(turtle, [location])
+    for fed in (b, c):
+        fed.rtia.publishObjectClass(robot, [location])
+        fed.rtia.subscribeObjectClassAttributes(robot, [location])
+        barrier(fed.rtia)
+    obj = a.rtia.registerObjectInstance(turtle)
+    tick_until(lambda: b.amb.named("discoverObjectInstance") and c.amb.named("discoverObjectInstance"), b.rtia, c.rtia)
+    assert b.rtia.getObjectClass(obj) == robot
+    b.rtia.attributeOwnershipAcquisition(obj, [location], "b")
+    barrier(b.rtia)
+    c.rtia.attributeOwnershipAcquisition(obj, [location], "c")
+    tick_until(lambda: len(a.amb.named("requestAttributeOwnershipRelease")) == 2, a.rtia)
+    assert [args[2] for args in a.amb.named("requestAttributeOwnershipRelease")] == ["b", "c"]
+    assert a.rtia.attributeOwnershipReleaseResponse(obj, [location]) == (location,)
+    tick_until(lambda: b.amb.named("attributeOwnershipAcquisitionNotification"), b.rtia)
+    # c is still waiting: when b lets the attribute go, c gets it.
+    b.rtia.unconditionalAttributeOwnershipDivestiture(obj, [location])
+    tick_until(lambda: c.amb.named("attributeOwnershipAcquisitionNotification"), c.rtia)
+    assert c.rtia.isAttributeOwnedByFederate(obj, location)
+
+
 def test_ownership_service_errors(robots, federation):
     """HLA 1.3 §7's exceptions, raised by the caller's RTI ambassador."""
     a, b, obj = robots.a, robots.b, robots.obj

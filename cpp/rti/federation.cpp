@@ -627,6 +627,21 @@ void Federation::on(FederateHandle from, const wire::Retract& m) {
 
 void Federation::on(FederateHandle from, const wire::LocalDeleteObject& m) {
     federate(from).known.erase(m.object);
+    // A federate that forgot the object no longer waits to acquire its attributes (HLA 1.3 §7.7), and
+    // releases any it was given while its client still thought it owned none.
+    auto it = objects_.find(m.object);
+    if (it == objects_.end()) return;
+    ObjectInstance& obj = it->second;
+    for (auto w = obj.acquirers.begin(); w != obj.acquirers.end();) {
+        w->second.erase(std::remove(w->second.begin(), w->second.end(), from), w->second.end());
+        w = w->second.empty() ? obj.acquirers.erase(w) : std::next(w);
+    }
+    std::vector<fom::Handle> owned;
+    for (const auto& [attr, owner] : obj.owners)
+        if (owner == from) owned.push_back(attr);
+    OwnershipNotices notices;
+    for (fom::Handle attr : owned) release_attribute(obj, attr, notices);
+    send_notices(m.object, notices);
 }
 
 void Federation::on(FederateHandle from, const wire::RequestObjectUpdate& m) {

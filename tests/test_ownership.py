@@ -414,6 +414,33 @@ def test_privilege_to_delete_transfers_like_an_attribute(robots):
     assert a.amb.named("removeObjectInstance") == [(obj, "mine now")]
 
 
+def test_publishing_fewer_attributes_or_unpublishing_divests_them(robots):
+    """HLA 1.3 §5.2-5.3: owned attributes no longer published are divested unconditionally; the privilege
+    to delete goes with the class."""
+    a, b, obj, location, battery = robots.a, robots.b, robots.obj, robots.location, robots.battery
+    a.rtia.publishObjectClass(robots.robot, [location])
+    assert not a.rtia.isAttributeOwnedByFederate(obj, battery)
+    assert a.rtia.isAttributeOwnedByFederate(obj, location)
+    assert a.rtia.isAttributeOwnedByFederate(obj, robots.privilege)
+    with pytest.raises(rti.AttributeNotOwned):
+        a.rtia.updateAttributeValues(obj, {battery: b"x"}, "")
+    assert robots.owner_seen_by(b, battery) is None
+    b.rtia.attributeOwnershipAcquisition(obj, [location], "")
+    barrier(b.rtia)
+    a.rtia.unpublishObjectClass(robots.robot)
+    assert not a.rtia.isAttributeOwnedByFederate(obj, location)
+    with pytest.raises(rti.DeletePrivilegeNotHeld):
+        a.rtia.deleteObjectInstance(obj, "")
+    robots.tick_until(lambda: b.amb.named("attributeOwnershipAcquisitionNotification"))
+    assert b.amb.named("attributeOwnershipAcquisitionNotification") == [(obj, (location,))]
+    assert robots.owner_seen_by(b, robots.privilege) is None
+    # b publishes robot without naming privilegeToDelete: the class is enough to take it.
+    b.rtia.publishObjectClass(robots.robot, [location, battery])
+    b.rtia.attributeOwnershipAcquisitionIfAvailable(obj, [robots.privilege])
+    robots.tick_until(lambda: b.amb.named("attributeOwnershipAcquisitionNotification"))
+    b.rtia.deleteObjectInstance(obj, "")
+
+
 def test_resign_releasing_attributes_leaves_them_available(robots):
     """ReleaseAttributes (HLA 1.3 §4.5): unowned afterwards, a waiting acquirer gets its attribute at once."""
     a, b, obj, location, battery = robots.a, robots.b, robots.obj, robots.location, robots.battery

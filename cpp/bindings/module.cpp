@@ -392,10 +392,10 @@ PYBIND11_MODULE(_core, m) {
              [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs) {
                  c.publish_object_class(cls.value, to_handles(attrs));
              }, py::arg("objectClass"), py::arg("attributes"),
-             "Publish attributes of an object class (HLA 1.3 §5.2). Raises ObjectClassNotDefined, AttributeNotDefined.")
+             "Publish attributes of an object class (HLA 1.3 §5.2); owned attributes of its instances no longer published are divested unconditionally (privilegeToDelete counts as published with the class). Raises ObjectClassNotDefined, AttributeNotDefined.")
         .def("unpublishObjectClass", [](Client& c, ObjectClassHandle cls) { c.unpublish_object_class(cls.value); },
              py::arg("objectClass"),
-             "Stop publishing an object class (HLA 1.3 §5.3). Raises ObjectClassNotPublished.")
+             "Stop publishing an object class (HLA 1.3 §5.3); the owned attributes of its instances are divested unconditionally. Raises ObjectClassNotPublished, OwnershipAcquisitionPending.")
         .def("subscribeObjectClassAttributes",
              [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs, bool active) {
                  c.subscribe_object_class(cls.value, to_handles(attrs), active);

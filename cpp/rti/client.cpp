@@ -365,6 +365,7 @@ void Client::sync_point_achieved(const std::string& label) {
 // ---- declaration management ----
 
 void Client::publish_object_class(fom::Handle cls, const std::vector<fom::Handle>& attributes) {
+    std::vector<wire::UnconditionalDivestiture> divested;
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_attributes(defined_object_class(cls), attributes);
@@ -373,11 +374,14 @@ void Client::publish_object_class(fom::Handle cls, const std::vector<fom::Handle
         } else {
             published_[cls] = std::set<fom::Handle>(attributes.begin(), attributes.end());
         }
+        divested = divest_unpublished(cls);
     }
+    for (const auto& m : divested) send(m);
     send(wire::PublishObjectClass{cls, attributes});
 }
 
 void Client::unpublish_object_class(fom::Handle cls) {
+    std::vector<wire::UnconditionalDivestiture> divested;
     {
         std::lock_guard<std::mutex> lock(mu_);
         const auto& c = defined_object_class(cls);
@@ -391,7 +395,9 @@ void Client::unpublish_object_class(fom::Handle cls) {
                           c.qualified_name + "'");
         }
         published_.erase(cls);
+        divested = divest_unpublished(cls);
     }
+    for (const auto& m : divested) send(m);
     send(wire::UnpublishObjectClass{cls});
 }
 

@@ -197,6 +197,12 @@ private:
     LocalObject& ownership_object(std::uint32_t object, const std::vector<fom::Handle>& attributes);
     LocalObject make_local_object(fom::Handle cls, const std::string& name) const;
     void apply_ownership_callback(const wire::Message& m);
+    // Whether this federate publishes the attribute at the class it knows the object as; privilegeToDelete
+    // counts as published with its class.
+    bool publishes(const LocalObject& obj, fom::Handle attribute) const;
+    // After publishing fewer attributes of `cls` (or none): the owned attributes of its instances that are
+    // no longer published are divested unconditionally (HLA 1.3 §5.2-5.3); returns the messages to send.
+    std::vector<wire::UnconditionalDivestiture> divest_unpublished(fom::Handle cls);
     static void sync_privilege(LocalObject& obj) {
         if (obj.privilege_attribute) obj.privilege_to_delete = obj.owned.count(obj.privilege_attribute) > 0;
     }

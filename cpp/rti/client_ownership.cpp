@@ -87,19 +87,42 @@ void Client::negotiated_divestiture(std::uint32_t object, const std::vector<fom:
     send(wire::NegotiatedDivestiture{object, attributes, tag});
 }
 
+bool Client::publishes(const LocalObject& obj, fom::Handle attribute) const {
+    auto pub = published_.find(obj.object_class);
+    return pub != published_.end() && (pub->second.count(attribute) || attribute == obj.privilege_attribute);
+}
+
+std::vector<wire::UnconditionalDivestiture> Client::divest_unpublished(fom::Handle cls) {
+    std::vector<wire::UnconditionalDivestiture> out;
+    for (auto& [h, obj] : objects_) {
+        if (obj.object_class != cls) continue;
+        wire::UnconditionalDivestiture m{h, {}};
+        for (auto a : obj.owned)
+            if (!publishes(obj, a)) m.attributes.push_back(a);
+        if (m.attributes.empty()) continue;
+        for (auto a : m.attributes) {
+            obj.owned.erase(a);
+            obj.divesting.erase(a);
+            obj.release_requested.erase(a);
+        }
+        sync_privilege(obj);
+        out.push_back(std::move(m));
+    }
+    return out;
+}
+
 namespace {
 
 // The checks shared by the two acquisition services (§7.7, §7.8): the object's class and the attributes
 // must be published, and not already owned.
-template <class Obj>
-void check_acquirable(const fom::Fom& fom, const std::map<fom::Handle, std::set<fom::Handle>>& published,
-                      const Obj& obj, const std::vector<fom::Handle>& attributes) {
-    auto pub = published.find(obj.object_class);
-    if (pub == published.end())
+template <class Obj, class Publishes>
+void check_acquirable(const fom::Fom& fom, bool class_published, Publishes publishes, const Obj& obj,
+                      const std::vector<fom::Handle>& attributes) {
+    if (!class_published)
         raise(ErrorCode::ObjectClassNotPublished,
               "object class '" + fom.object_class(obj.object_class)->qualified_name + "' is not published");
     for (auto a : attributes) {
-        if (!pub->second.count(a))
+        if (!publishes(a))
             raise(ErrorCode::AttributeNotPublished, describe(fom, obj, a) + " is not published by this federate");
         if (obj.owned.count(a))
             raise(ErrorCode::FederateOwnsAttributes, describe(fom, obj, a) + " is already owned by this federate");
@@ -114,7 +137,8 @@ void Client::ownership_acquisition(std::uint32_t object, const std::vector<fom::
     {
         std::lock_guard<std::mutex> lock(mu_);
         LocalObject& obj = ownership_object(object, attributes);
-        check_acquirable(*fom_, published_, obj, attributes);
+        check_acquirable(*fom_, published_.count(obj.object_class) > 0,
+                         [&](fom::Handle a) { return publishes(obj, a); }, obj, attributes);
         obj.acquiring.insert(attributes.begin(), attributes.end());
     }
     send(wire::OwnershipAcquisition{object, attributes, tag});
@@ -125,7 +149,8 @@ void Client::ownership_acquisition_if_available(std::uint32_t object, const std:
     {
         std::lock_guard<std::mutex> lock(mu_);
         LocalObject& obj = ownership_object(object, attributes);
-        check_acquirable(*fom_, published_, obj, attributes);
+        check_acquirable(*fom_, published_.count(obj.object_class) > 0,
+                         [&](fom::Handle a) { return publishes(obj, a); }, obj, attributes);
         for (auto a : attributes)
             if (obj.acquiring.count(a) || obj.acquiring_if_available.count(a))
                 raise(ErrorCode::AttributeAlreadyBeingAcquired, describe(*fom_, obj, a) + " is already being acquired");

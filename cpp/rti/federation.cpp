@@ -683,10 +683,12 @@ FederateHandle Federation::deleter(const ObjectInstance& obj) const {
     return owner == obj.owners.end() ? 0 : owner->second;
 }
 
+// privilegeToDelete counts as published with its class (the registrant holds it without naming it).
 bool Federation::publishes(const FederateState& f, const ObjectInstance& obj, fom::Handle attribute) const {
     for (fom::Handle c = obj.object_class; c != 0; c = fom_.object_class(c)->parent) {
         auto pub = f.published.find(c);
-        if (pub != f.published.end() && pub->second.count(attribute)) return true;
+        if (pub != f.published.end() && (pub->second.count(attribute) || attribute == obj.privilege_attribute))
+            return true;
     }
     return false;
 }

@@ -24,7 +24,7 @@ Client::LocalObject Client::make_local_object(fom::Handle cls, const std::string
     LocalObject obj;
     obj.object_class = cls;
     obj.name = name;
-    if (const auto* c = fom_->object_class(cls)) {
+    if (const auto* c = fom_ ? fom_->object_class(cls) : nullptr) {
         if (const auto* privilege = privilege_to_delete(*c)) obj.privilege_attribute = privilege->handle;
     }
     return obj;

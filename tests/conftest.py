@@ -159,6 +159,15 @@ class Recorder(rti.FederateAmbassador):
         "timeConstrainedEnabled",
         "timeAdvanceGrant",
         "requestRetraction",
+        "requestAttributeOwnershipAssumption",
+        "attributeOwnershipDivestitureNotification",
+        "attributeOwnershipAcquisitionNotification",
+        "attributeOwnershipUnavailable",
+        "requestAttributeOwnershipRelease",
+        "confirmAttributeOwnershipAcquisitionCancellation",
+        "informAttributeOwnership",
+        "attributeIsNotOwned",
+        "attributeOwnedByRTI",
     ):
         locals()[_name] = _record(_name)
     del _name, _record

@@ -238,6 +238,39 @@ py::object to_callback(const wire::Message& message) {
             } else if constexpr (std::is_same_v<M, wire::ProvideAttributeValueUpdate>) {
                 return py::make_tuple("provideAttributeValueUpdate",
                                       py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::RequestOwnershipAssumption>) {
+                return py::make_tuple("requestAttributeOwnershipAssumption",
+                                      py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes),
+                                                     to_str(m.tag)));
+            } else if constexpr (std::is_same_v<M, wire::DivestitureNotification>) {
+                return py::make_tuple("attributeOwnershipDivestitureNotification",
+                                      py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::AcquisitionNotification>) {
+                return py::make_tuple("attributeOwnershipAcquisitionNotification",
+                                      py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::OwnershipUnavailable>) {
+                return py::make_tuple("attributeOwnershipUnavailable",
+                                      py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::RequestOwnershipRelease>) {
+                return py::make_tuple("requestAttributeOwnershipRelease",
+                                      py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes),
+                                                     to_str(m.tag)));
+            } else if constexpr (std::is_same_v<M, wire::ConfirmAcquisitionCancellation>) {
+                return py::make_tuple("confirmAttributeOwnershipAcquisitionCancellation",
+                                      py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::OwnershipInformation>) {
+                switch (static_cast<wire::OwnershipKind>(m.kind)) {
+                    case wire::OwnershipKind::OwnedByFederate:
+                        return py::make_tuple("informAttributeOwnership",
+                                              py::make_tuple(ObjectHandle{m.object}, AttributeHandle{m.attribute},
+                                                             FederateHandle{m.owner}));
+                    case wire::OwnershipKind::OwnedByRti:
+                        return py::make_tuple("attributeOwnedByRTI",
+                                              py::make_tuple(ObjectHandle{m.object}, AttributeHandle{m.attribute}));
+                    default:
+                        return py::make_tuple("attributeIsNotOwned",
+                                              py::make_tuple(ObjectHandle{m.object}, AttributeHandle{m.attribute}));
+                }
             } else {
                 throw RtiError(ErrorCode::RTIinternalError, "unexpected message from the gateway");
             }
@@ -394,10 +427,10 @@ PYBIND11_MODULE(_core, m) {
              [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs) {
                  c.publish_object_class(cls.value, to_handles(attrs));
              }, py::arg("objectClass"), py::arg("attributes"),
-             "Publish attributes of an object class (HLA 1.3 §5.2). Raises ObjectClassNotDefined, AttributeNotDefined.")
+             "Publish attributes of an object class (HLA 1.3 §5.2); owned attributes of its instances no longer published are divested unconditionally (privilegeToDelete counts as published with the class). Raises ObjectClassNotDefined, AttributeNotDefined.")
         .def("unpublishObjectClass", [](Client& c, ObjectClassHandle cls) { c.unpublish_object_class(cls.value); },
              py::arg("objectClass"),
-             "Stop publishing an object class (HLA 1.3 §5.3). Raises ObjectClassNotPublished.")
+             "Stop publishing an object class (HLA 1.3 §5.3); the owned attributes of its instances are divested unconditionally. Raises ObjectClassNotPublished, OwnershipAcquisitionPending.")
         .def("subscribeObjectClassAttributes",
              [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs, bool active) {
                  c.subscribe_object_class(cls.value, to_handles(attrs), active);
@@ -466,6 +499,55 @@ PYBIND11_MODULE(_core, m) {
                  c.request_class_update(cls.value, to_handles(attrs));
              }, py::arg("objectClass"), py::arg("attributes"),
              "Ask the owners of attributes of every instance of a class to update them (HLA 1.3 §6.15). Raises ObjectClassNotDefined, AttributeNotDefined.")
+        // ownership management (HLA 1.3 §7)
+        .def("unconditionalAttributeOwnershipDivestiture",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
+                 c.unconditional_divestiture(obj.value, to_handles(attrs));
+             }, py::arg("object"), py::arg("attributes"),
+             "Give up owned attributes at once (HLA 1.3 §7.2): they become unowned, or go to a federate waiting to acquire them. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned.")
+        .def("negotiatedAttributeOwnershipDivestiture",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs, py::handle tag) {
+                 c.negotiated_divestiture(obj.value, to_handles(attrs), to_bytes(tag, "tag"));
+             }, py::arg("object"), py::arg("attributes"), py::arg("tag"),
+             "Offer owned attributes (HLA 1.3 §7.3): the federates publishing them get requestAttributeOwnershipAssumption; this federate owns them until attributeOwnershipDivestitureNotification. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, AttributeAlreadyBeingDivested.")
+        .def("attributeOwnershipAcquisition",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs, py::handle tag) {
+                 c.ownership_acquisition(obj.value, to_handles(attrs), to_bytes(tag, "tag"));
+             }, py::arg("object"), py::arg("attributes"), py::arg("tag"),
+             "Ask for published attributes (HLA 1.3 §7.7): unowned or divested ones come at once, owned ones after their owner gets requestAttributeOwnershipRelease and releases them; attributeOwnershipAcquisitionNotification tells. Raises ObjectNotKnown, ObjectClassNotPublished, AttributeNotDefined, AttributeNotPublished, FederateOwnsAttributes.")
+        .def("attributeOwnershipAcquisitionIfAvailable",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
+                 c.ownership_acquisition_if_available(obj.value, to_handles(attrs));
+             }, py::arg("object"), py::arg("attributes"),
+             "Take published attributes that are unowned or being divested (HLA 1.3 §7.8): attributeOwnershipAcquisitionNotification, else attributeOwnershipUnavailable. Raises ObjectNotKnown, ObjectClassNotPublished, AttributeNotDefined, AttributeNotPublished, FederateOwnsAttributes, AttributeAlreadyBeingAcquired.")
+        .def("attributeOwnershipReleaseResponse",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
+                 std::vector<H32> released;
+                 {
+                     py::gil_scoped_release release;
+                     released = c.release_response(obj.value, to_handles(attrs));
+                 }
+                 return to_tuple<AttributeHandle>(released);
+             }, py::arg("object"), py::arg("attributes"),
+             "Release attributes this federate was asked for by requestAttributeOwnershipRelease (HLA 1.3 §7.11); returns the tuple of AttributeHandles actually released (those a federate still waits for), the others stay owned. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, FederateWasNotAskedToReleaseAttribute.")
+        .def("cancelNegotiatedAttributeOwnershipDivestiture",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
+                 c.cancel_negotiated_divestiture(obj.value, to_handles(attrs));
+             }, py::arg("object"), py::arg("attributes"),
+             "Withdraw a negotiated divestiture (HLA 1.3 §7.12). Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, AttributeDivestitureWasNotRequested.")
+        .def("cancelAttributeOwnershipAcquisition",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
+                 c.cancel_ownership_acquisition(obj.value, to_handles(attrs));
+             }, py::arg("object"), py::arg("attributes"),
+             "Withdraw an attributeOwnershipAcquisition (HLA 1.3 §7.13): confirmAttributeOwnershipAcquisitionCancellation follows for what was still awaited. Raises ObjectNotKnown, AttributeNotDefined, AttributeAlreadyOwned, AttributeAcquisitionWasNotRequested.")
+        .def("queryAttributeOwnership",
+             [](Client& c, ObjectHandle obj, AttributeHandle attr) { c.query_ownership(obj.value, attr.value); },
+             py::arg("object"), py::arg("attribute"),
+             "Ask who owns an attribute (HLA 1.3 §7.15): informAttributeOwnership(object, attribute, owner) or attributeIsNotOwned(object, attribute) follows. Raises ObjectNotKnown, AttributeNotDefined.")
+        .def("isAttributeOwnedByFederate",
+             [](Client& c, ObjectHandle obj, AttributeHandle attr) { return c.is_owned(obj.value, attr.value); },
+             py::arg("object"), py::arg("attribute"),
+             "Whether this federate owns the attribute (HLA 1.3 §7.17), as of the ownership notifications delivered so far; answered locally. Raises ObjectNotKnown, AttributeNotDefined.")
         // support services
         .def("getObjectClassHandle", [](Client& c, const std::string& n) { return ObjectClassHandle{c.object_class_handle(n)}; },
              py::arg("name"),

@@ -211,7 +211,7 @@ void Client::file(std::vector<wire::Message>& got) {
         }
         if (std::holds_alternative<wire::Welcome>(m)) continue;
         if (auto* d = std::get_if<wire::DiscoverObject>(&m)) {
-            objects_[d->object] = LocalObject{d->object_class, d->name, {}, false};
+            objects_[d->object] = make_local_object(d->object_class, d->name);
         } else if (auto* rm = std::get_if<wire::RemoveObject>(&m)) {
             objects_.erase(rm->object);
         } else if (auto* a = std::get_if<wire::AnnounceSyncPoint>(&m)) {
@@ -243,6 +243,7 @@ std::optional<wire::Message> Client::pop_callback() {
     wire::Message m = std::move(callbacks_.front());
     callbacks_.pop_front();
     apply_time_callback(m);
+    apply_ownership_callback(m);
     return m;
 }
 
@@ -364,6 +365,7 @@ void Client::sync_point_achieved(const std::string& label) {
 // ---- declaration management ----
 
 void Client::publish_object_class(fom::Handle cls, const std::vector<fom::Handle>& attributes) {
+    std::vector<wire::UnconditionalDivestiture> divested;
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_attributes(defined_object_class(cls), attributes);
@@ -372,17 +374,30 @@ void Client::publish_object_class(fom::Handle cls, const std::vector<fom::Handle
         } else {
             published_[cls] = std::set<fom::Handle>(attributes.begin(), attributes.end());
         }
+        divested = divest_unpublished(cls);
     }
+    for (const auto& m : divested) send(m);
     send(wire::PublishObjectClass{cls, attributes});
 }
 
 void Client::unpublish_object_class(fom::Handle cls) {
+    std::vector<wire::UnconditionalDivestiture> divested;
     {
         std::lock_guard<std::mutex> lock(mu_);
         const auto& c = defined_object_class(cls);
-        if (!published_.erase(cls))
+        if (!published_.count(cls))
             raise(ErrorCode::ObjectClassNotPublished, "object class '" + c.qualified_name + "' is not published");
+        // HLA 1.3 §5.3: not while this federate waits to acquire attributes of an instance of the class.
+        for (const auto& [h, obj] : objects_) {
+            if (obj.object_class == cls && (!obj.acquiring.empty() || !obj.acquiring_if_available.empty()))
+                raise(ErrorCode::OwnershipAcquisitionPending,
+                      "an ownership acquisition is pending for object '" + obj.name + "' of class '" +
+                          c.qualified_name + "'");
+        }
+        published_.erase(cls);
+        divested = divest_unpublished(cls);
     }
+    for (const auto& m : divested) send(m);
     send(wire::UnpublishObjectClass{cls});
 }
 
@@ -473,7 +488,12 @@ std::uint32_t Client::register_object(fom::Handle cls, const std::string& name) 
     const auto id = next_request();
     wire::Reply reply = call(wire::RegisterObject{id, cls, name}, id);
     std::lock_guard<std::mutex> lock(mu_);
-    objects_[reply.handle] = LocalObject{cls, reply.text, std::move(owned), true};
+    LocalObject obj = make_local_object(cls, reply.text);
+    obj.owned = std::move(owned);
+    // The registrant holds the privilege to delete (HLA 1.3 §6.2), the privilegeToDelete attribute if any.
+    if (obj.privilege_attribute) obj.owned.insert(obj.privilege_attribute);
+    obj.privilege_to_delete = true;
+    objects_[reply.handle] = std::move(obj);
     return reply.handle;
 }
 

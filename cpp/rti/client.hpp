@@ -69,6 +69,22 @@ public:
     void request_object_update(std::uint32_t object, const std::vector<fom::Handle>& attributes);
     void request_class_update(fom::Handle cls, const std::vector<fom::Handle>& attributes);
 
+    // ---- ownership management (HLA 1.3 §7) ----
+    // The federate's owned attributes change when the notifications are popped (acquisition, divestiture)
+    // or when a call gives them up (unconditional divestiture, release response).
+    void unconditional_divestiture(std::uint32_t object, const std::vector<fom::Handle>& attributes);
+    void negotiated_divestiture(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                const std::string& tag);
+    void ownership_acquisition(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                               const std::string& tag);
+    void ownership_acquisition_if_available(std::uint32_t object, const std::vector<fom::Handle>& attributes);
+    // Returns the attributes actually released (those another federate is waiting for).
+    std::vector<fom::Handle> release_response(std::uint32_t object, const std::vector<fom::Handle>& attributes);
+    void cancel_negotiated_divestiture(std::uint32_t object, const std::vector<fom::Handle>& attributes);
+    void cancel_ownership_acquisition(std::uint32_t object, const std::vector<fom::Handle>& attributes);
+    void query_ownership(std::uint32_t object, fom::Handle attribute);
+    bool is_owned(std::uint32_t object, fom::Handle attribute) const;
+
     // ---- time management (HLA 1.3 §8; the rules are in docs/time-management.md) ----
     // The federate's time state changes when its callbacks are popped (timeRegulationEnabled,
     // timeConstrainedEnabled, timeAdvanceGrant), as HLA says: at delivery, not at arrival.
@@ -143,6 +159,14 @@ private:
         std::string name;
         std::set<fom::Handle> owned;
         bool privilege_to_delete = false;
+        // Ownership management (HLA 1.3 §7): the privilegeToDelete attribute (0 when the FOM has none:
+        // then only the registrant may delete), attributes offered by negotiated divestiture, awaited by
+        // attributeOwnershipAcquisition(IfAvailable), and those the RTI asked this federate to release.
+        fom::Handle privilege_attribute = 0;
+        std::set<fom::Handle> divesting;
+        std::set<fom::Handle> acquiring;
+        std::set<fom::Handle> acquiring_if_available;
+        std::set<fom::Handle> release_requested;
     };
 
     template <class M>
@@ -166,6 +190,22 @@ private:
     const fom::ObjectClass& defined_object_class(fom::Handle cls) const;
     const fom::InteractionClass& defined_interaction_class(fom::Handle cls) const;
     const LocalObject& known_object(std::uint32_t object) const;
+    LocalObject& known_object(std::uint32_t object) {
+        return const_cast<LocalObject&>(static_cast<const Client*>(this)->known_object(object));
+    }
+    // An object named in an ownership service, with its attributes checked (callers hold mu_).
+    LocalObject& ownership_object(std::uint32_t object, const std::vector<fom::Handle>& attributes);
+    LocalObject make_local_object(fom::Handle cls, const std::string& name) const;
+    void apply_ownership_callback(const wire::Message& m);
+    // Whether this federate publishes the attribute at the class it knows the object as; privilegeToDelete
+    // counts as published with its class.
+    bool publishes(const LocalObject& obj, fom::Handle attribute) const;
+    // After publishing fewer attributes of `cls` (or none): the owned attributes of its instances that are
+    // no longer published are divested unconditionally (HLA 1.3 §5.2-5.3); returns the messages to send.
+    std::vector<wire::UnconditionalDivestiture> divest_unpublished(fom::Handle cls);
+    static void sync_privilege(LocalObject& obj) {
+        if (obj.privilege_attribute) obj.privilege_to_delete = obj.owned.count(obj.privilege_attribute) > 0;
+    }
     [[noreturn]] void connection_lost() const;
     // The lowest timestamp this federate may send now, and the checks of the sending rule (callers hold mu_).
     Time lowest_sendable() const;

@@ -55,6 +55,10 @@ public:
     std::pair<ObjectHandle, std::string> register_object(FederateHandle federate, fom::Handle object_class,
                                                          const std::string& name);
 
+    // attributeOwnershipReleaseResponse (HLA 1.3 §7.11): returns the attributes actually released, those
+    // some federate is waiting to acquire.
+    wire::Handles release_response(FederateHandle federate, const wire::ReleaseResponse& m);
+
     // LBTS or the minimum next event time of a federate (HLA 1.3 §8.16, §8.18).
     double query_time(FederateHandle federate, wire::TimeQuery which);
     // Appends this federation's state as a JSON object (federates, time state, objects, sync points).
@@ -82,8 +86,20 @@ private:
     struct ObjectInstance {
         fom::Handle object_class = 0;
         std::string name;
-        FederateHandle privilege_holder = 0;           // may delete it; 0 once released
+        // With a privilegeToDelete attribute in the FOM, its owner may delete the object (HLA 1.3 §6.8);
+        // without one, the registrant may (privilege_holder, 0 once released).
+        fom::Handle privilege_attribute = 0;
+        FederateHandle privilege_holder = 0;
         std::map<fom::Handle, FederateHandle> owners;  // attribute -> owner, absent = unowned
+        // Ownership transfers in progress (HLA 1.3 §7): attributes their owner offers by negotiated
+        // divestiture, and the federates waiting for an attribute (attributeOwnershipAcquisition), in
+        // request order.
+        std::map<fom::Handle, std::string> divesting;
+        std::map<fom::Handle, std::vector<FederateHandle>> acquirers;
+    };
+    // Ownership callbacks gathered while handling one request, one message per federate and kind.
+    struct OwnershipNotices {
+        std::map<FederateHandle, wire::Handles> acquired, divested, unavailable, cancelled;
     };
     struct SyncPoint {
         std::string tag;
@@ -105,6 +121,18 @@ private:
     void remove_object(ObjectHandle object, FederateHandle by, const std::string& tag, const wire::OptionalTime& time,
                        std::uint64_t serial);
     void update_advisories();
+    // Who may delete the object: the owner of privilegeToDelete, else the privilege holder (0: nobody).
+    FederateHandle deleter(const ObjectInstance& obj) const;
+    // Does the federate publish `attribute` for the object's class (or a superclass of it)?
+    bool publishes(const FederateState& f, const ObjectInstance& obj, fom::Handle attribute) const;
+    // Ownership moves (HLA 1.3 §7): `to` becomes the owner; a negotiating previous owner is told.
+    void transfer(ObjectInstance& obj, fom::Handle attribute, FederateHandle to, OwnershipNotices& notices);
+    // The attribute loses its owner; the first federate waiting to acquire it gets it.
+    void release_attribute(ObjectInstance& obj, fom::Handle attribute, OwnershipNotices& notices);
+    void send_notices(ObjectHandle object, OwnershipNotices& notices);
+    // The object a federate names in an ownership service, or null when it vanished meanwhile; its
+    // attribute handles are checked against the FOM.
+    ObjectInstance* owned_object(ObjectHandle object, const wire::Handles& attributes);
     // Sends what time management allows now: held messages, TSO messages, grants and enable callbacks.
     void release_time();
     // Throws WireError for a timestamp below a regulating sender's bound; `what` names the message.
@@ -143,6 +171,13 @@ private:
     void on(FederateHandle from, const wire::ModifyLookahead& m);
     void on(FederateHandle from, const wire::SetAsynchronousDelivery& m);
     void on(FederateHandle from, const wire::Retract& m);
+    void on(FederateHandle from, const wire::UnconditionalDivestiture& m);
+    void on(FederateHandle from, const wire::NegotiatedDivestiture& m);
+    void on(FederateHandle from, const wire::CancelNegotiatedDivestiture& m);
+    void on(FederateHandle from, const wire::OwnershipAcquisition& m);
+    void on(FederateHandle from, const wire::OwnershipAcquisitionIfAvailable& m);
+    void on(FederateHandle from, const wire::CancelOwnershipAcquisition& m);
+    void on(FederateHandle from, const wire::QueryOwnership& m);
     template <class M>
     void on(FederateHandle from, const M& m);  // anything else: protocol violation
 

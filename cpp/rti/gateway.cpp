@@ -356,6 +356,20 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
         }
         return;
     }
+    if (const auto* m = std::get_if<wire::ReleaseResponse>(&message)) {
+        try {
+            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
+            std::string released;
+            for (auto attr : c.federation->federation.release_response(c.federate, *m)) {
+                if (!released.empty()) released += ' ';
+                released += std::to_string(attr);
+            }
+            reply(c, wire::Reply{m->request, 0, "", 0, std::move(released), "", 0});
+        } catch (const RtiError& e) {
+            error_reply(m->request, e);
+        }
+        return;
+    }
     if (const auto* m = std::get_if<wire::QueryStatus>(&message)) {
         std::string json = "{\"server\":\"hlacore rtig\",\"address\":";
         json_string(json, options_.host + ":" + std::to_string(port_));

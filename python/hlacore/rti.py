@@ -83,7 +83,16 @@ class FederateAmbassador:
     ``receiveInteraction(interactionClass, parameters, tag, order, transport[, time, retraction])``,
     ``removeObjectInstance(object, tag[, time, retraction])``,
     ``provideAttributeValueUpdate(object, attributes)``, ``timeRegulationEnabled(time)``,
-    ``timeConstrainedEnabled(time)``, ``timeAdvanceGrant(time)`` and ``requestRetraction(retraction)``.
+    ``timeConstrainedEnabled(time)``, ``timeAdvanceGrant(time)``, ``requestRetraction(retraction)``,
+    and for ownership management (HLA 1.3 §7; ``attributes`` is a tuple of :class:`AttributeHandle`)
+    ``requestAttributeOwnershipAssumption(object, attributes, tag)``,
+    ``attributeOwnershipDivestitureNotification(object, attributes)``,
+    ``attributeOwnershipAcquisitionNotification(object, attributes)``,
+    ``attributeOwnershipUnavailable(object, attributes)``,
+    ``requestAttributeOwnershipRelease(object, attributes, tag)``,
+    ``confirmAttributeOwnershipAcquisitionCancellation(object, attributes)``,
+    ``informAttributeOwnership(object, attribute, owner)``, ``attributeIsNotOwned(object, attribute)`` and
+    ``attributeOwnedByRTI(object, attribute)`` (never called: hlacore has no RTI-owned attributes).
     """
 
 

@@ -79,7 +79,24 @@ using OptionalTime = std::optional<double>;
     X(TimeAdvanceGrant)              \
     X(RequestRetraction)             \
     /* introspection */              \
-    X(QueryStatus)
+    X(QueryStatus)                   \
+    /* ownership management (HLA 1.3 §7): federate -> gateway */ \
+    X(UnconditionalDivestiture)      \
+    X(NegotiatedDivestiture)         \
+    X(CancelNegotiatedDivestiture)   \
+    X(OwnershipAcquisition)          \
+    X(OwnershipAcquisitionIfAvailable) \
+    X(CancelOwnershipAcquisition)    \
+    X(ReleaseResponse)               \
+    X(QueryOwnership)                \
+    /* ownership management: gateway -> federate */ \
+    X(RequestOwnershipAssumption)    \
+    X(DivestitureNotification)       \
+    X(AcquisitionNotification)       \
+    X(OwnershipUnavailable)          \
+    X(RequestOwnershipRelease)       \
+    X(ConfirmAcquisitionCancellation) \
+    X(OwnershipInformation)
 
 enum class MessageType : std::uint16_t {
     Invalid = 0,
@@ -446,6 +463,113 @@ struct RequestRetraction {
     std::uint32_t sender = 0;
     std::uint64_t serial = 0;
     HLACORE_FIELDS(sender, serial)
+};
+
+// ---- ownership management (HLA 1.3 §7) ----
+// Federate -> gateway. The gateway acts only where its state agrees (the client checks the exceptions):
+// a transfer may already be on its way to a federate that has not yet evoked the notification.
+struct UnconditionalDivestiture {
+    HLACORE_TYPE(UnconditionalDivestiture)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct NegotiatedDivestiture {
+    HLACORE_TYPE(NegotiatedDivestiture)
+    std::uint32_t object = 0;
+    Handles attributes;
+    std::string tag;
+    HLACORE_FIELDS(object, attributes, tag)
+};
+struct CancelNegotiatedDivestiture {
+    HLACORE_TYPE(CancelNegotiatedDivestiture)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct OwnershipAcquisition {
+    HLACORE_TYPE(OwnershipAcquisition)
+    std::uint32_t object = 0;
+    Handles attributes;
+    std::string tag;
+    HLACORE_FIELDS(object, attributes, tag)
+};
+struct OwnershipAcquisitionIfAvailable {
+    HLACORE_TYPE(OwnershipAcquisitionIfAvailable)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct CancelOwnershipAcquisition {
+    HLACORE_TYPE(CancelOwnershipAcquisition)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+// Answered with a Reply whose text lists the attributes actually released, as decimal handles
+// separated by spaces.
+struct ReleaseResponse {
+    HLACORE_TYPE(ReleaseResponse)
+    std::uint32_t request = 0;
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(request, object, attributes)
+};
+struct QueryOwnership {
+    HLACORE_TYPE(QueryOwnership)
+    std::uint32_t object = 0;
+    std::uint32_t attribute = 0;
+    HLACORE_FIELDS(object, attribute)
+};
+
+// Gateway -> federate.
+struct RequestOwnershipAssumption {
+    HLACORE_TYPE(RequestOwnershipAssumption)
+    std::uint32_t object = 0;
+    Handles attributes;
+    std::string tag;
+    HLACORE_FIELDS(object, attributes, tag)
+};
+struct DivestitureNotification {
+    HLACORE_TYPE(DivestitureNotification)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct AcquisitionNotification {
+    HLACORE_TYPE(AcquisitionNotification)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct OwnershipUnavailable {
+    HLACORE_TYPE(OwnershipUnavailable)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct RequestOwnershipRelease {
+    HLACORE_TYPE(RequestOwnershipRelease)
+    std::uint32_t object = 0;
+    Handles attributes;
+    std::string tag;
+    HLACORE_FIELDS(object, attributes, tag)
+};
+struct ConfirmAcquisitionCancellation {
+    HLACORE_TYPE(ConfirmAcquisitionCancellation)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+// The answer to QueryOwnership: informAttributeOwnership, attributeIsNotOwned or attributeOwnedByRTI.
+enum class OwnershipKind : std::uint8_t { OwnedByFederate = 1, NotOwned = 2, OwnedByRti = 3 };
+struct OwnershipInformation {
+    HLACORE_TYPE(OwnershipInformation)
+    std::uint32_t object = 0;
+    std::uint32_t attribute = 0;
+    std::uint8_t kind = 0;   // OwnershipKind
+    std::uint32_t owner = 0;  // when OwnedByFederate
+    HLACORE_FIELDS(object, attribute, kind, owner)
 };
 
 // Index in the variant == wire code.

@@ -1,0 +1,285 @@
+// The federate side of ownership management (HLA 1.3 §7): the services check HLA 1.3's exceptions
+// against the federate's view of each object; the gateway decides the transfers. What this federate owns
+// changes when a notification callback is popped (as time state does in client_time.cpp), or at once
+// when a call gives attributes up (unconditional divestiture, release response).
+#include <sstream>
+
+#include "rti/client.hpp"
+
+namespace hlacore {
+
+namespace {
+
+[[noreturn]] void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
+
+// The attribute that carries the privilege to delete (CERTI/Portico and OpenRTI spellings), or null.
+const fom::Attribute* privilege_to_delete(const fom::ObjectClass& cls) {
+    const auto* a = cls.attribute("privilegeToDelete");
+    return a ? a : cls.attribute("HLAprivilegeToDeleteObject");
+}
+
+}  // namespace
+
+Client::LocalObject Client::make_local_object(fom::Handle cls, const std::string& name) const {
+    LocalObject obj;
+    obj.object_class = cls;
+    obj.name = name;
+    if (const auto* c = fom_ ? fom_->object_class(cls) : nullptr) {
+        if (const auto* privilege = privilege_to_delete(*c)) obj.privilege_attribute = privilege->handle;
+    }
+    return obj;
+}
+
+Client::LocalObject& Client::ownership_object(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
+    LocalObject& obj = known_object(object);
+    const auto& cls = *fom_->object_class(obj.object_class);
+    for (auto a : attributes) {
+        if (!cls.attribute(a))
+            raise(ErrorCode::AttributeNotDefined, "attribute handle " + std::to_string(a) +
+                                                      " is not defined for class '" + cls.qualified_name + "'");
+    }
+    return obj;
+}
+
+namespace {
+
+// "attribute 'location' of object 'r1'"
+template <class Obj>
+std::string describe(const fom::Fom& fom, const Obj& obj, fom::Handle attr) {
+    const auto* a = fom.object_class(obj.object_class)->attribute(attr);
+    return "attribute '" + (a ? a->name : std::to_string(attr)) + "' of object '" + obj.name + "'";
+}
+
+}  // namespace
+
+// §7.2: the attributes are no longer this federate's as soon as the call returns.
+void Client::unconditional_divestiture(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        LocalObject& obj = ownership_object(object, attributes);
+        for (auto a : attributes)
+            if (!obj.owned.count(a))
+                raise(ErrorCode::AttributeNotOwned, describe(*fom_, obj, a) + " is not owned by this federate");
+        for (auto a : attributes) {
+            obj.owned.erase(a);
+            obj.divesting.erase(a);
+            obj.release_requested.erase(a);
+        }
+        sync_privilege(obj);
+    }
+    send(wire::UnconditionalDivestiture{object, attributes});
+}
+
+// §7.3: the federate keeps the attributes until attributeOwnershipDivestitureNotification.
+void Client::negotiated_divestiture(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                    const std::string& tag) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        LocalObject& obj = ownership_object(object, attributes);
+        for (auto a : attributes) {
+            if (!obj.owned.count(a))
+                raise(ErrorCode::AttributeNotOwned, describe(*fom_, obj, a) + " is not owned by this federate");
+            if (obj.divesting.count(a))
+                raise(ErrorCode::AttributeAlreadyBeingDivested, describe(*fom_, obj, a) + " is already being divested");
+        }
+        obj.divesting.insert(attributes.begin(), attributes.end());
+    }
+    send(wire::NegotiatedDivestiture{object, attributes, tag});
+}
+
+bool Client::publishes(const LocalObject& obj, fom::Handle attribute) const {
+    auto pub = published_.find(obj.object_class);
+    return pub != published_.end() && (pub->second.count(attribute) || attribute == obj.privilege_attribute);
+}
+
+std::vector<wire::UnconditionalDivestiture> Client::divest_unpublished(fom::Handle cls) {
+    std::vector<wire::UnconditionalDivestiture> out;
+    for (auto& [h, obj] : objects_) {
+        if (obj.object_class != cls) continue;
+        wire::UnconditionalDivestiture m{h, {}};
+        for (auto a : obj.owned)
+            if (!publishes(obj, a)) m.attributes.push_back(a);
+        if (m.attributes.empty()) continue;
+        for (auto a : m.attributes) {
+            obj.owned.erase(a);
+            obj.divesting.erase(a);
+            obj.release_requested.erase(a);
+        }
+        sync_privilege(obj);
+        out.push_back(std::move(m));
+    }
+    return out;
+}
+
+namespace {
+
+// The checks shared by the two acquisition services (§7.7, §7.8): the object's class and the attributes
+// must be published, and not already owned.
+template <class Obj, class Publishes>
+void check_acquirable(const fom::Fom& fom, bool class_published, Publishes publishes, const Obj& obj,
+                      const std::vector<fom::Handle>& attributes) {
+    if (!class_published)
+        raise(ErrorCode::ObjectClassNotPublished,
+              "object class '" + fom.object_class(obj.object_class)->qualified_name + "' is not published");
+    for (auto a : attributes) {
+        if (!publishes(a))
+            raise(ErrorCode::AttributeNotPublished, describe(fom, obj, a) + " is not published by this federate");
+        if (obj.owned.count(a))
+            raise(ErrorCode::FederateOwnsAttributes, describe(fom, obj, a) + " is already owned by this federate");
+    }
+}
+
+}  // namespace
+
+// §7.7: acquired at once if unowned or being divested, else once its owner releases it.
+void Client::ownership_acquisition(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                   const std::string& tag) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        LocalObject& obj = ownership_object(object, attributes);
+        check_acquirable(*fom_, published_.count(obj.object_class) > 0,
+                         [&](fom::Handle a) { return publishes(obj, a); }, obj, attributes);
+        obj.acquiring.insert(attributes.begin(), attributes.end());
+    }
+    send(wire::OwnershipAcquisition{object, attributes, tag});
+}
+
+// §7.8: answered by attributeOwnershipAcquisitionNotification or attributeOwnershipUnavailable.
+void Client::ownership_acquisition_if_available(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        LocalObject& obj = ownership_object(object, attributes);
+        check_acquirable(*fom_, published_.count(obj.object_class) > 0,
+                         [&](fom::Handle a) { return publishes(obj, a); }, obj, attributes);
+        for (auto a : attributes)
+            if (obj.acquiring.count(a) || obj.acquiring_if_available.count(a))
+                raise(ErrorCode::AttributeAlreadyBeingAcquired, describe(*fom_, obj, a) + " is already being acquired");
+        obj.acquiring_if_available.insert(attributes.begin(), attributes.end());
+    }
+    send(wire::OwnershipAcquisitionIfAvailable{object, attributes});
+}
+
+// §7.11: a round trip, since only the gateway knows who still waits for each attribute.
+std::vector<fom::Handle> Client::release_response(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        LocalObject& obj = ownership_object(object, attributes);
+        for (auto a : attributes) {
+            if (!obj.owned.count(a))
+                raise(ErrorCode::AttributeNotOwned, describe(*fom_, obj, a) + " is not owned by this federate");
+            if (!obj.release_requested.count(a))
+                raise(ErrorCode::FederateWasNotAskedToReleaseAttribute,
+                      "this federate was not asked to release " + describe(*fom_, obj, a));
+        }
+    }
+    const auto id = next_request();
+    wire::Reply reply = call(wire::ReleaseResponse{id, object, attributes}, id);
+    std::vector<fom::Handle> released;
+    std::istringstream in(reply.text);
+    for (fom::Handle a; in >> a;) released.push_back(a);
+    std::lock_guard<std::mutex> lock(mu_);
+    auto it = objects_.find(object);
+    if (it != objects_.end()) {
+        LocalObject& obj = it->second;
+        for (auto a : attributes) obj.release_requested.erase(a);
+        for (auto a : released) {
+            obj.owned.erase(a);
+            obj.divesting.erase(a);
+        }
+        sync_privilege(obj);
+    }
+    return released;
+}
+
+// §7.12.
+void Client::cancel_negotiated_divestiture(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        LocalObject& obj = ownership_object(object, attributes);
+        for (auto a : attributes) {
+            if (!obj.owned.count(a))
+                raise(ErrorCode::AttributeNotOwned, describe(*fom_, obj, a) + " is not owned by this federate");
+            if (!obj.divesting.count(a))
+                raise(ErrorCode::AttributeDivestitureWasNotRequested,
+                      "no negotiated divestiture of " + describe(*fom_, obj, a) + " is in progress");
+        }
+        for (auto a : attributes) obj.divesting.erase(a);
+    }
+    send(wire::CancelNegotiatedDivestiture{object, attributes});
+}
+
+// §7.13: confirmAttributeOwnershipAcquisitionCancellation follows for what was still awaited; an
+// attribute acquired meanwhile arrives with attributeOwnershipAcquisitionNotification instead.
+void Client::cancel_ownership_acquisition(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        LocalObject& obj = ownership_object(object, attributes);
+        for (auto a : attributes) {
+            if (obj.owned.count(a))
+                raise(ErrorCode::AttributeAlreadyOwned, describe(*fom_, obj, a) + " is already owned by this federate");
+            if (!obj.acquiring.count(a))
+                raise(ErrorCode::AttributeAcquisitionWasNotRequested,
+                      "no acquisition of " + describe(*fom_, obj, a) + " is pending");
+        }
+    }
+    send(wire::CancelOwnershipAcquisition{object, attributes});
+}
+
+// §7.15: answered by informAttributeOwnership, attributeIsNotOwned or attributeOwnedByRTI.
+void Client::query_ownership(std::uint32_t object, fom::Handle attribute) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        ownership_object(object, {attribute});
+    }
+    send(wire::QueryOwnership{object, attribute});
+}
+
+// §7.17: answered locally, from the notifications delivered so far.
+bool Client::is_owned(std::uint32_t object, fom::Handle attribute) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const LocalObject& obj = known_object(object);
+    const auto& cls = *fom_->object_class(obj.object_class);
+    if (!cls.attribute(attribute))
+        raise(ErrorCode::AttributeNotDefined, "attribute handle " + std::to_string(attribute) +
+                                                  " is not defined for class '" + cls.qualified_name + "'");
+    return obj.owned.count(attribute) > 0;
+}
+
+// Called under mu_ when a callback is popped: the federate's view follows what it is told.
+void Client::apply_ownership_callback(const wire::Message& m) {
+    auto object = [&](std::uint32_t h) -> LocalObject* {
+        auto it = objects_.find(h);
+        return it == objects_.end() ? nullptr : &it->second;
+    };
+    if (const auto* n = std::get_if<wire::AcquisitionNotification>(&m)) {
+        if (LocalObject* obj = object(n->object)) {
+            for (auto a : n->attributes) {
+                obj->owned.insert(a);
+                obj->acquiring.erase(a);
+                obj->acquiring_if_available.erase(a);
+            }
+            sync_privilege(*obj);
+        }
+    } else if (const auto* d = std::get_if<wire::DivestitureNotification>(&m)) {
+        if (LocalObject* obj = object(d->object)) {
+            for (auto a : d->attributes) {
+                obj->owned.erase(a);
+                obj->divesting.erase(a);
+                obj->release_requested.erase(a);
+            }
+            sync_privilege(*obj);
+        }
+    } else if (const auto* u = std::get_if<wire::OwnershipUnavailable>(&m)) {
+        if (LocalObject* obj = object(u->object))
+            for (auto a : u->attributes) obj->acquiring_if_available.erase(a);
+    } else if (const auto* r = std::get_if<wire::RequestOwnershipRelease>(&m)) {
+        if (LocalObject* obj = object(r->object))
+            for (auto a : r->attributes)
+                if (obj->owned.count(a)) obj->release_requested.insert(a);
+    } else if (const auto* c = std::get_if<wire::ConfirmAcquisitionCancellation>(&m)) {
+        if (LocalObject* obj = object(c->object))
+            for (auto a : c->attributes) obj->acquiring.erase(a);
+    }
+}
+
+}  // namespace hlacore

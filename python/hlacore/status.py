@@ -28,7 +28,7 @@ def status(address: Optional[str] = None) -> dict[str, Any]:
     "queued_tso", "queued_ro", "lbts", "output_bound"}]}]}``. On the wire infinite times are null; here
     they are ``math.inf`` (``output_bound`` is inf for a federate that is not regulating).
     """
-    report = json.loads(_raw_status(address))
+    report: dict[str, Any] = json.loads(_raw_status(address))
     for federation in report["federations"]:
         for federate in federation["federates"]:
             for key in _NUMBERS:

@@ -130,12 +130,14 @@ Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
     if (wake_fd_ < 0) fail("eventfd");
     loop_.add(listen_fd_, EPOLLIN);
     loop_.add(wake_fd_, EPOLLIN);
+    reserve_fd_ = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
 }
 
 Gateway::~Gateway() {
     for (auto& [fd, c] : connections_) ::close(fd);
     if (listen_fd_ >= 0) ::close(listen_fd_);
     if (wake_fd_ >= 0) ::close(wake_fd_);
+    if (reserve_fd_ >= 0) ::close(reserve_fd_);
 }
 
 void Gateway::stop() {
@@ -178,6 +180,22 @@ void Gateway::accept_all() {
         int fd = accept4(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len, SOCK_NONBLOCK | SOCK_CLOEXEC);
         if (fd < 0) {
             if (errno == EINTR || errno == ECONNABORTED) continue;
+            if ((errno == EMFILE || errno == ENFILE) && reserve_fd_ >= 0) {
+                // Out of file descriptors: the pending connection would keep the (level-triggered) listening
+                // socket readable and this loop spinning. Free the reserve, take the connection and close it,
+                // take the reserve back. The peer sees EOF; the joined federates are unaffected.
+                const int saved = errno;
+                ::close(reserve_fd_);
+                reserve_fd_ = -1;
+                const int refused = accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
+                if (refused >= 0) ::close(refused);
+                reserve_fd_ = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+                // accept4 reports EMFILE before looking at the queue: there may have been nothing to refuse.
+                if (refused < 0) return;
+                log(std::string("refused a connection: ") + std::strerror(saved) + " (" +
+                    std::to_string(connections_.size()) + " connections open)");
+                continue;
+            }
             if (errno != EAGAIN && errno != EWOULDBLOCK) log(std::string("accept failed: ") + std::strerror(errno));
             return;
         }

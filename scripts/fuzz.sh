@@ -3,6 +3,7 @@
 # build/fuzz/, then run each for SECONDS (default 60) from the committed seed corpus:
 #   fuzz_wire  next_frame + decode of arbitrary bytes (seeds: cpp/fuzz/corpus/wire/, make_wire_seeds.py)
 #   fuzz_fed   fom::parse_fed of arbitrary text (seeds: tests/data/fed/good and bad, dictionary fed.dict)
+#   fuzz_gateway  a joined federate's arbitrary bytes to a real in-process Gateway (seeds: the wire corpus)
 # and replay the committed regression inputs (cpp/fuzz/regressions/). A crash leaves its input in
 # build/fuzz/artifacts/ and makes the script fail; it then belongs in cpp/fuzz/regressions/TARGET/.
 #
@@ -49,12 +50,12 @@ mkdir -p build/fuzz
 .venv/bin/cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
     -DHLACORE_FUZZ=ON -DHLACORE_PYTHON=OFF -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" \
     >build/fuzz-configure.log 2>&1 || { cat build/fuzz-configure.log; exit 1; }
-.venv/bin/cmake --build build/fuzz --target fuzz_wire fuzz_fed >build/fuzz-build.log 2>&1 \
+.venv/bin/cmake --build build/fuzz --target fuzz_wire fuzz_fed fuzz_gateway >build/fuzz-build.log 2>&1 \
     || { cat build/fuzz-build.log; exit 1; }
 [ "$build_only" = 1 ] && exit 0
 
 status=0
-for target in wire fed; do
+for target in wire fed gateway; do
     bin=build/fuzz/fuzz_$target
     # Replay the inputs that once failed (each file run once).
     regressions=(cpp/fuzz/regressions/$target/*)
@@ -65,7 +66,7 @@ for target in wire fed; do
     # New inputs go to a scratch corpus under build/, the committed seeds are read only.
     mkdir -p build/fuzz/corpus-$target build/fuzz/artifacts
     case $target in
-        wire) inputs=(cpp/fuzz/corpus/wire) ;;
+        wire | gateway) inputs=(cpp/fuzz/corpus/wire) ;;
         fed) inputs=(-dict=cpp/fuzz/fed.dict tests/data/fed/good tests/data/fed/bad) ;;
     esac
     log=build/fuzz/run-$target.log

@@ -1,5 +1,5 @@
-"""Short runs of the libFuzzer targets of cpp/fuzz (the wire decoder and the .fed parser), and replays of their
-seed corpus and of the inputs that once failed (cpp/fuzz/regressions/).
+"""Short runs of the libFuzzer targets of cpp/fuzz (the wire decoder, the .fed parser, a gateway session), and
+replays of their seed corpus and of the inputs that once failed (cpp/fuzz/regressions/).
 
 scripts/test.sh builds the targets (`scripts/fuzz.sh --build-only`, which installs clang when missing) and
 points $HLACORE_TEST_FUZZERS at them. Without them these tests skip, except under CI=true where they fail.
@@ -21,8 +21,10 @@ SECONDS = int(os.environ.get("HLACORE_TEST_FUZZ_SECONDS", "10"))
 SEEDS = {
     "wire": [FUZZ / "corpus" / "wire"],
     "fed": [FED_DATA / "good", FED_DATA / "bad"],
+    "gateway": [FUZZ / "corpus" / "wire"],
 }
-OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"]}
+OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"], "gateway": []}
+TARGETS = list(SEEDS)
 FAILURE = re.compile(r"ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|deadly signal|SUMMARY:")
 
 
@@ -41,10 +43,11 @@ def files_of(*directories: pathlib.Path) -> list[str]:
     return sorted(str(p) for d in directories for p in d.rglob("*") if p.is_file() and not p.name.startswith(".") and p.name != "README.md")
 
 
-@pytest.mark.parametrize("target", ["wire", "fed"])
+@pytest.mark.parametrize("target", TARGETS)
 def test_short_fuzz_run(target: str, tmp_path: pathlib.Path) -> None:
     """Each target runs SECONDS (10) from the committed seeds without a crash, a sanitizer report, a leak, a
-    timeout or a failed consistency check (round trip of every decoded frame, handles of every parsed FOM)."""
+    timeout or a failed consistency check (round trip of every decoded frame, handles of every parsed FOM, the
+    gateway closing every session)."""
     binary = fuzzer(target)
     scratch = tmp_path / "corpus"
     scratch.mkdir()
@@ -62,7 +65,7 @@ def test_short_fuzz_run(target: str, tmp_path: pathlib.Path) -> None:
     print(f"fuzz_{target}: {executions} executions in {SECONDS} s, cov {coverage[-1] if coverage else '?'}")
 
 
-@pytest.mark.parametrize("target", ["wire", "fed"])
+@pytest.mark.parametrize("target", TARGETS)
 def test_seeds_and_regressions_replay(target: str) -> None:
     """Every committed seed and regression input runs once through its target cleanly; the wire seeds are all
     valid frames (HLACORE_FUZZ_EXPECT_VALID: a complete frame that does not decode aborts)."""

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Install hlacore and its test dependencies into .venv, build an ASan+UBSan rtig for the tests that run
 # against the real executable (and the bench's C++ TCP floor program, for its smoke test), then run the
-# whole test suite. Arguments go to pytest.
+# whole test suite. Arguments go to pytest. It also builds the libFuzzer targets (scripts/fuzz.sh --build-only,
+# which installs clang from Debian's packages when missing) for tests/test_fuzz.py's short fuzz runs; outside
+# CI (CI=true) a machine where clang cannot be installed only skips those.
 source "$(dirname "$0")/env.sh"
 pip_install ".[test]" cmake ninja
 mkdir -p build
@@ -9,5 +11,12 @@ mkdir -p build
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/asan-configure.log 2>&1 \
     || { cat build/asan-configure.log; exit 1; }
 .venv/bin/cmake --build build/asan --target rtig tcp_floor >build/asan-build.log 2>&1 || { cat build/asan-build.log; exit 1; }
+if ./scripts/fuzz.sh --build-only; then
+    export HLACORE_TEST_FUZZERS="$PWD/build/fuzz"
+elif [ "${CI:-}" = true ]; then
+    exit 1
+else
+    echo "test.sh: the fuzz targets could not be built; tests/test_fuzz.py will skip" >&2
+fi
 export HLACORE_TEST_RTIG="$PWD/build/asan/rtig" HLACORE_TEST_TCP_FLOOR="$PWD/build/asan/tcp_floor"
 exec .venv/bin/python -m pytest "$@"

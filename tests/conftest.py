@@ -41,11 +41,11 @@ def rtig_executable() -> str:
 class RtigProcess:
     """A running `rtig --port 0`; its stderr goes to a file so that tests can read the log."""
 
-    def __init__(self, tmp_path: pathlib.Path, *args: str) -> None:
+    def __init__(self, tmp_path: pathlib.Path, *args: str, executable: Optional[str] = None) -> None:
         self.log_path = tmp_path / f"rtig-{len(list(tmp_path.glob('rtig-*.log')))}.log"
         self._log = open(self.log_path, "wb")
         self.proc = subprocess.Popen(
-            [rtig_executable(), "--port", "0", *args],
+            [executable or rtig_executable(), "--port", "0", *args],
             stdout=subprocess.PIPE,
             stderr=self._log,
             stdin=subprocess.DEVNULL,
@@ -80,9 +80,9 @@ class RtigProcess:
 
 
 @contextlib.contextmanager
-def running_rtig(tmp_path: pathlib.Path, *args: str) -> Iterator[RtigProcess]:
+def running_rtig(tmp_path: pathlib.Path, *args: str, executable: Optional[str] = None) -> Iterator[RtigProcess]:
     """An rtig with the given arguments; fails if it exits uncleanly or reports a sanitizer error."""
-    server = RtigProcess(tmp_path, *args)
+    server = RtigProcess(tmp_path, *args, executable=executable)
     try:
         yield server
     finally:

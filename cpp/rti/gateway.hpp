@@ -60,6 +60,7 @@ private:
     GatewayOptions options_;
     int listen_fd_ = -1;
     int wake_fd_ = -1;
+    int reserve_fd_ = -1;  // kept open to accept-and-close a connection when out of file descriptors
     std::uint16_t port_ = 0;
     EventLoop loop_;
     std::map<int, std::unique_ptr<Connection>> connections_;

@@ -1,0 +1,121 @@
+"""Writes the wire fuzzer's seed corpus (cpp/fuzz/corpus/wire/): valid frames of most message types, one file
+each, plus a few multi-frame streams as a federate would send them. Field layouts follow
+cpp/rti/wire/messages.hpp (little-endian; string = u32 length + bytes; vector = u32 count + elements;
+optional time = u8 flag [+ f64]). Run it again after changing the message list: python3 make_wire_seeds.py"""
+
+import pathlib
+import struct
+
+NAMES = [
+    "Hello", "Welcome", "CreateFederation", "DestroyFederation", "JoinFederation", "ResignFederation",
+    "RegisterSyncPoint", "SyncPointAchieved", "PublishObjectClass", "UnpublishObjectClass",
+    "SubscribeObjectClass", "UnsubscribeObjectClass", "PublishInteractionClass", "UnpublishInteractionClass",
+    "SubscribeInteractionClass", "UnsubscribeInteractionClass", "RegisterObject", "UpdateAttributes",
+    "SendInteraction", "DeleteObject", "LocalDeleteObject", "RequestObjectUpdate", "RequestClassUpdate",
+    "SetAdvisorySwitch", "Reply", "SyncPointRegistrationSucceeded", "SyncPointRegistrationFailed",
+    "AnnounceSyncPoint", "FederationSynchronized", "StartRegistration", "StopRegistration", "TurnInteractionsOn",
+    "TurnInteractionsOff", "DiscoverObject", "ReflectAttributes", "ReceiveInteraction", "RemoveObject",
+    "ProvideAttributeValueUpdate", "EnableTimeRegulation", "DisableTimeRegulation", "EnableTimeConstrained",
+    "DisableTimeConstrained", "TimeAdvance", "ModifyLookahead", "SetAsynchronousDelivery", "Retract", "QueryTime",
+    "TimeRegulationEnabled", "TimeConstrainedEnabled", "TimeAdvanceGrant", "RequestRetraction", "QueryStatus",
+]  # fmt: skip
+CODE = {name: i for i, name in enumerate(NAMES, start=1)}
+
+
+def u8(v): return struct.pack("<B", v)
+def u16(v): return struct.pack("<H", v)
+def u32(v): return struct.pack("<I", v)
+def u64(v): return struct.pack("<Q", v)
+def f64(v): return struct.pack("<d", v)
+def b(v): return u8(1 if v else 0)
+def s(v): data = v.encode() if isinstance(v, str) else v; return u32(len(data)) + data
+def hs(v): return u32(len(v)) + b"".join(u32(h) for h in v)
+def hv(v): return u32(len(v)) + b"".join(u32(h) + s(x) for h, x in v)
+def t(v): return b(False) if v is None else b(True) + f64(v)
+
+
+def frame(name, payload=b""):
+    return u32(2 + len(payload)) + u16(CODE[name]) + payload
+
+
+FED = (pathlib.Path(__file__).resolve().parents[2] / "tests" / "data" / "robot.fed").read_text()
+MESSAGES = {
+    "Hello": u32(0x484C4143) + u16(1),
+    "Welcome": u16(1) + s("hlacore rtig"),
+    "CreateFederation": u32(1) + s("TestFed") + s("robot.fed") + s(FED),
+    "CreateFederation-by-name": u32(1) + s("TestFed") + s("robot.fed") + s(""),
+    "DestroyFederation": u32(2) + s("TestFed"),
+    "JoinFederation": u32(3) + s("alice") + s("TestFed"),
+    "ResignFederation": u32(4) + u8(3),
+    "RegisterSyncPoint": s("start") + s("tag") + b(False) + hs([1, 2]),
+    "SyncPointAchieved": s("start"),
+    "PublishObjectClass": u32(1) + hs([1, 2]),
+    "UnpublishObjectClass": u32(1),
+    "SubscribeObjectClass": u32(1) + hs([2]) + b(True),
+    "UnsubscribeObjectClass": u32(1),
+    "PublishInteractionClass": u32(1),
+    "UnpublishInteractionClass": u32(1),
+    "SubscribeInteractionClass": u32(1) + b(False),
+    "UnsubscribeInteractionClass": u32(1),
+    "RegisterObject": u32(5) + u32(1) + s("robot-1"),
+    "UpdateAttributes": u32(7) + hv([(1, b"\x00\x01"), (2, b"on")]) + s("tag") + t(3.5) + u64(9),
+    "UpdateAttributes-receive-order": u32(7) + hv([(2, b"x" * 40)]) + s("") + t(None) + u64(0),
+    "SendInteraction": u32(1) + hv([(1, b"go")]) + s("cmd") + t(2.0) + u64(1),
+    "DeleteObject": u32(7) + s("bye") + t(None) + u64(2),
+    "LocalDeleteObject": u32(7),
+    "RequestObjectUpdate": u32(7) + hs([1]),
+    "RequestClassUpdate": u32(1) + hs([1, 2]),
+    "SetAdvisorySwitch": u8(1) + b(True),
+    "Reply": u32(3) + u16(0) + s("") + u32(2) + s(FED) + s("robot.fed") + f64(0.0),
+    "Reply-error": u32(3) + u16(12) + s("FederationExecutionDoesNotExist") + u32(0) + s("") + s("") + f64(0.0),
+    "SyncPointRegistrationSucceeded": s("start"),
+    "SyncPointRegistrationFailed": s("start"),
+    "AnnounceSyncPoint": s("start") + s("tag"),
+    "FederationSynchronized": s("start"),
+    "StartRegistration": u32(1),
+    "StopRegistration": u32(1),
+    "TurnInteractionsOn": u32(1),
+    "TurnInteractionsOff": u32(1),
+    "DiscoverObject": u32(7) + u32(1) + s("robot-1"),
+    "ReflectAttributes": u32(7) + hv([(1, b"\x00\x01")]) + s("tag") + u8(2) + u8(1) + t(3.5) + u32(1) + u64(9),
+    "ReceiveInteraction": u32(1) + hv([(1, b"go")]) + s("cmd") + u8(1) + u8(2) + t(None) + u32(2) + u64(1),
+    "RemoveObject": u32(7) + s("bye") + t(4.0) + u32(1) + u64(2),
+    "ProvideAttributeValueUpdate": u32(7) + hs([1, 2]),
+    "EnableTimeRegulation": f64(0.0) + f64(1.0),
+    "DisableTimeRegulation": b"",
+    "EnableTimeConstrained": b"",
+    "DisableTimeConstrained": b"",
+    "TimeAdvance": u8(1) + f64(10.0),
+    "TimeAdvance-NER": u8(3) + f64(float("inf")),
+    "ModifyLookahead": f64(0.5),
+    "SetAsynchronousDelivery": b(True),
+    "Retract": u64(9),
+    "QueryTime": u32(8) + u8(1),
+    "TimeRegulationEnabled": f64(0.0),
+    "TimeConstrainedEnabled": f64(0.0),
+    "TimeAdvanceGrant": f64(10.0),
+    "RequestRetraction": u32(1) + u64(9),
+    "QueryStatus": u32(1),
+}
+STREAMS = {
+    "stream-join-publish-update": ["Hello", "JoinFederation", "PublishObjectClass", "RegisterObject", "UpdateAttributes"],
+    "stream-time": ["EnableTimeRegulation", "EnableTimeConstrained", "SendInteraction", "TimeAdvance", "Retract"],
+    "stream-gateway": ["Welcome", "Reply", "DiscoverObject", "ReflectAttributes", "TimeAdvanceGrant"],
+}
+
+
+def main():
+    out = pathlib.Path(__file__).resolve().parent / "corpus" / "wire"
+    out.mkdir(parents=True, exist_ok=True)
+    for old in out.glob("*.bin"):
+        old.unlink()
+    for key, payload in MESSAGES.items():
+        (out / f"{key}.bin").write_bytes(frame(key.split("-")[0], payload))
+    for key, names in STREAMS.items():
+        (out / f"{key}.bin").write_bytes(b"".join(frame(n, MESSAGES[n]) for n in names))
+    # a frame cut short, as a read would leave it
+    (out / "partial-frame.bin").write_bytes(frame("Hello", MESSAGES["Hello"]) + frame("JoinFederation", MESSAGES["JoinFederation"])[:9])
+
+
+if __name__ == "__main__":
+    main()

@@ -3,6 +3,7 @@
 # against the real executable (and the bench's C++ TCP floor program, for its smoke test), then run the
 # whole test suite. Arguments go to pytest.
 source "$(dirname "$0")/env.sh"
+./scripts/install-ros.sh   # ROS 1 from Debian for the ROS bridge tests (docs/ros-bridge.md)
 pip_install ".[test]" cmake ninja
 mkdir -p build
 .venv/bin/cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHLACORE_SANITIZE=ON -DHLACORE_PYTHON=OFF -DHLACORE_BENCH=ON \

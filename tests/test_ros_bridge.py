@@ -288,3 +288,21 @@ def test_only_ros_modules_come_from_dist_packages(ros: None) -> None:
     seen = json.loads(done.stdout)
     assert seen["rospy"].startswith(DIST) and seen["std_msgs"].startswith(DIST)
     assert seen["dist_on_path"] is False and seen["paramiko"] is False
+
+
+def test_paper1_through_ros(roscore: dict[str, str], gateway_address: str, tmp_path: pathlib.Path) -> None:
+    """Paper 1 through ROS, one command: the world federate and the bridge in one process, the controllers
+    as a ROS node in another; the avatar never collides, passes once the obstacles have gone, stops
+    before the wall (the checks of hlacore.federates.ros_bridge.paper1.check)."""
+    out = tmp_path / "out"
+    done = subprocess.run([sys.executable, "-m", "hlacore.federates.ros_bridge.paper1", str(out), "--rtig",
+                           gateway_address], capture_output=True, text=True, env=roscore, timeout=300,
+                          stdin=subprocess.DEVNULL)
+    assert done.returncode == 0, done.stdout + done.stderr
+    summary = json.loads(done.stdout.strip().splitlines()[-1])
+    assert summary["checks"] == {"no_stall": True, "no_overlap": True, "obstacles_crossed": True,
+                                 "held_back": True, "stopped_before_wall": True}
+    assert summary["grants"] == 301 and summary["end"] == pytest.approx(30.0)
+    assert 0.0 < summary["wall_gap"] <= 0.5 and summary["sent"] > 4 * 250
+    assert (out / "paper1-ros-trace.csv").read_text().count("\n") == 302
+    assert (out / "paper1-ros-snapshot.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -19,7 +19,10 @@ world's current step and reflections arrive in receive order, stamped with ``ros
 is regulating (``lookahead``) and constrained and advances by ``period`` (``timeAdvanceRequest(k *
 period)``), optionally paced at ``rate`` federation seconds per wall second; reflections carry their
 federation timestamp into ``header.stamp``; with ``clock=True`` it sets ``/use_sim_time`` and publishes
-each grant on ``/clock`` (``rosgraph_msgs/Clock``), so that ROS time is federation time.
+each grant on ``/clock`` (``rosgraph_msgs/Clock``), so that ROS time is federation time. With
+``await_inputs`` (wall seconds) the bridge, after each grant at which it published something to ROS, waits
+until every mapped Twist topic has spoken since the last grant (for ROS controllers that answer each
+published state: a lockstep through ROS).
 """
 
 from __future__ import annotations
@@ -179,7 +182,7 @@ class RosBridge:
                  federation: str = codec.FEDERATION, federate_name: str = "ros_bridge",
                  node_name: str = "hla_bridge", timed: bool = True, period: float = 0.1,
                  lookahead: Optional[float] = None, clock: bool = False, rate: Optional[float] = None,
-                 create: bool = True) -> None:
+                 create: bool = True, await_inputs: Optional[float] = None) -> None:
         self.mappings = list(mappings)
         self.address = address
         self.federation = federation
@@ -191,6 +194,8 @@ class RosBridge:
         self.clock = clock
         self.rate = rate
         self.create = create
+        self.await_inputs = await_inputs
+        self.late_cycles = 0  #: timed grants after which ``await_inputs`` ran out before every Twist topic spoke
         self.rtia: Optional[rti.RTIAmbassador] = None
         self.sent = 0  #: cmd_vel interactions sent
         self.published = 0  #: ROS messages published from reflections
@@ -198,6 +203,9 @@ class RosBridge:
         self._amb = _Ambassador(self)
         self._pending: "queue.SimpleQueue[tuple[str, float, float]]" = queue.SimpleQueue()
         self._stop = threading.Event()
+        self._arrived: set[str] = set()
+        self._published_before = 0
+        self._inputs = threading.Condition()
         self._publishers: list[tuple[Mapping, Any]] = []
         self._subscribers: list[Any] = []
         self._velocity: dict[str, tuple[float, float]] = {}
@@ -289,6 +297,14 @@ class RosBridge:
                     self._stop.wait(delay)
         return self.time
 
+    def connections(self) -> dict[str, int]:
+        """The number of ROS connections of each bridged topic (publishers' subscribers, subscribers'
+        publishers): to wait until the nodes on the other side are wired before spinning."""
+        out = {m.topic: pub.get_num_connections() for m, pub in self._publishers}
+        for sub in self._subscribers:
+            out[sub.resolved_name] = sub.get_num_connections()
+        return out
+
     def stop(self) -> None:
         """Ask :meth:`spin` to return (safe from any thread and from a signal handler)."""
         self._stop.set()
@@ -309,7 +325,10 @@ class RosBridge:
         """rospy's thread: untimed, send now (receive order); timed, queue for the bridge's thread."""
         linear, angular = float(msg.linear.x), float(msg.angular.z)
         if self.timed:
-            self._pending.put((robot, linear, angular))
+            with self._inputs:
+                self._pending.put((robot, linear, angular))
+                self._arrived.add(robot)
+                self._inputs.notify_all()
         elif self.rtia is not None:
             self._send(robot, linear, angular, None)
 
@@ -328,6 +347,14 @@ class RosBridge:
         """After a grant, on the bridge's thread: /clock, then the queued commands stamped G + lookahead."""
         if self._clock_pub is not None:
             self._clock_pub.publish(Clock(rospy.Time.from_sec(self.time)))
+        if self.await_inputs is not None and self.published > self._published_before:
+            wanted = {m.robot for m in self.mappings if isinstance(m, TwistIn)}
+            with self._inputs:
+                if not self._inputs.wait_for(lambda: wanted <= self._arrived or self._stop.is_set(),
+                                             self.await_inputs):
+                    self.late_cycles += 1
+                self._arrived.clear()
+        self._published_before = self.published
         while True:
             try:
                 robot, linear, angular = self._pending.get_nowait()

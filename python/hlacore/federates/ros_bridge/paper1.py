@@ -22,6 +22,7 @@ import contextlib
 import json
 import os
 import pathlib
+import shutil
 import signal
 import socket
 import subprocess
@@ -157,8 +158,8 @@ def _master_online(uri: str) -> bool:
 @contextlib.contextmanager
 def ros_master(timeout: float = 30.0) -> Iterator[str]:
     """``$ROS_MASTER_URI`` when a master answers there, else a roscore started on a free loopback port
-    (``ROS_HOME`` in a temporary directory; the environment variables set for this process and its
-    children), stopped by pid at the end."""
+    (``ROS_HOME`` in a temporary directory, removed afterwards unless roscore failed; the environment
+    variables set for this process and its children), stopped by pid at the end."""
     uri = os.environ.get("ROS_MASTER_URI")
     if uri and _master_online(uri):
         yield uri
@@ -184,6 +185,8 @@ def ros_master(timeout: float = 30.0) -> Iterator[str]:
                 except subprocess.TimeoutExpired:
                     proc.kill()
                     proc.wait()
+    if proc.returncode == 0 or proc.returncode == -signal.SIGINT:
+        shutil.rmtree(home, ignore_errors=True)  # logs kept only when roscore failed
 
 
 def run(address: str, duration: float = 30.0, period: float = 0.1, dt: float = 0.01,

@@ -79,14 +79,26 @@ def enable() -> RosFinder:
     return finder
 
 
+#: The message modules the bridge uses (imported, and so checked, by :func:`import_rospy`).
+MESSAGE_MODULES = ("std_msgs.msg", "geometry_msgs.msg", "nav_msgs.msg", "sensor_msgs.msg", "rosgraph_msgs.msg")
+
+
+def _import_all() -> ModuleType:
+    rospy = importlib.import_module("rospy")
+    for name in MESSAGE_MODULES:
+        importlib.import_module(name)
+    return rospy
+
+
 def import_rospy() -> ModuleType:
-    """Import rospy (from the venv if it has one, else Debian's); ImportError saying what to install."""
+    """Import rospy and the bridge's message packages (from the venv if it has them, else Debian's) and
+    return rospy; an ImportError saying what to install when one is missing."""
     try:
-        return importlib.import_module("rospy")
+        return _import_all()
     except ImportError:
         pass
     enable()
     try:
-        return importlib.import_module("rospy")
+        return _import_all()
     except ImportError as error:
         raise ImportError(f"{INSTALL_HINT}; looked in {dist_packages()} ({error})") from error

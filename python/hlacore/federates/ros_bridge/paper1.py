@@ -54,6 +54,7 @@ class Result:
     late_cycles: int = 0
     sent: int = 0
     checks: dict[str, bool] = field(default_factory=dict)
+    world: Optional[World] = None  #: the world at the end of the run
 
     @property
     def ok(self) -> bool:
@@ -159,7 +160,10 @@ def _master_online(uri: str) -> bool:
 def ros_master(timeout: float = 30.0) -> Iterator[str]:
     """``$ROS_MASTER_URI`` when a master answers there, else a roscore started on a free loopback port
     (``ROS_HOME`` in a temporary directory, removed afterwards unless roscore failed; the environment
-    variables set for this process and its children), stopped by pid at the end."""
+    variables set for this process and its children), stopped by pid at the end. ``ROS_IP`` defaults to
+    127.0.0.1 either way."""
+    if not os.environ.get("ROS_HOSTNAME"):
+        os.environ.setdefault("ROS_IP", "127.0.0.1")  # loopback: never advertise another interface
     uri = os.environ.get("ROS_MASTER_URI")
     if uri and _master_online(uri):
         yield uri
@@ -250,7 +254,7 @@ def run(address: str, duration: float = 30.0, period: float = 0.1, dt: float = 0
     result.poses = [p for _, p in world.history]
     result.stall_steps = {r.name: r.stall_steps for r in world.world.robots}
     result.checks = check(result)
-    result.world = world.world  # type: ignore[attr-defined]
+    result.world = world.world
     return result
 
 
@@ -261,7 +265,9 @@ def write_outputs(result: Result, directory: str) -> list[str]:
 
     out = pathlib.Path(directory)
     out.mkdir(parents=True, exist_ok=True)
-    world: World = result.world  # type: ignore[attr-defined]
+    world = result.world
+    if world is None:
+        raise ValueError("the result holds no world")
     names = [r.name for r in world.robots]
     with open(out / "paper1-ros-trace.csv", "w", newline="") as f:
         writer = csv.writer(f)

@@ -5,6 +5,7 @@
 # which installs clang from Debian's packages when missing) for tests/test_fuzz.py's short fuzz runs; outside
 # CI (CI=true) a machine where clang cannot be installed only skips those.
 source "$(dirname "$0")/env.sh"
+./scripts/install-ros.sh   # ROS 1 from Debian for the ROS bridge tests (docs/ros-bridge.md)
 pip_install ".[test]" cmake ninja
 mkdir -p build
 .venv/bin/cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHLACORE_SANITIZE=ON -DHLACORE_PYTHON=OFF -DHLACORE_BENCH=ON \

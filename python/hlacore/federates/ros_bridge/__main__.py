@@ -1,0 +1,68 @@
+"""``python -m hlacore.federates.ros_bridge``: run the ROS bridge for robots of the robot world.
+
+    python -m hlacore.federates.ros_bridge --rtig HOST:PORT --robot avatar [--robot ...] [--world FILE]
+        [--untimed] [--period 0.1] [--lookahead 0.1] [--clock] [--rate R] [--until T]
+
+The ROS master is ``$ROS_MASTER_URI`` (set ``ROS_IP=127.0.0.1`` on loopback). Prints ``ros_bridge ready``
+once the node is up and the federate joined (and time-enabled), ``ros_bridge stopped at T`` at the end;
+SIGTERM or SIGINT stops it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import signal
+import sys
+from typing import Any, Optional, Sequence
+
+from hlacore.federates.robot_world import read_world
+
+from .bridge import Mapping, RosBridge, stage_mappings, world_mappings
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """Parse the arguments, start the bridge, spin until stopped; returns the exit status."""
+    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.ros_bridge", description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default $HLACORE_RTIG)")
+    parser.add_argument("--federation", default="RobotWorld")
+    parser.add_argument("--robot", action="append", default=[], help="a robot to bridge (repeatable)")
+    parser.add_argument("--world", help="a .world file: bridge its robots (or the --robot ones) with their "
+                                        "ranger's field of view and range")
+    parser.add_argument("--untimed", action="store_true", help="neither regulating nor constrained")
+    parser.add_argument("--period", type=float, default=0.1)
+    parser.add_argument("--lookahead", type=float, default=None, help="default: the period")
+    parser.add_argument("--clock", action="store_true", help="publish /clock and set /use_sim_time")
+    parser.add_argument("--rate", type=float, default=None,
+                        help="federation seconds per wall second (default: as fast as granted)")
+    parser.add_argument("--until", type=float, default=None, help="stop at this federation time")
+    parser.add_argument("--node-name", default="hla_bridge")
+    args = parser.parse_args(argv)
+    if args.world:
+        mappings: list[Mapping] = world_mappings(read_world(args.world), args.robot or None)
+    else:
+        mappings = [m for robot in args.robot for m in stage_mappings(robot)]
+    if not mappings:
+        parser.error("nothing to bridge: give --robot or --world")
+    bridge = RosBridge(mappings, args.rtig, federation=args.federation, node_name=args.node_name,
+                       timed=not args.untimed, period=args.period, lookahead=args.lookahead, clock=args.clock,
+                       rate=args.rate)
+
+    def on_signal(signum: int, frame: Any) -> None:
+        bridge.stop()
+
+    signal.signal(signal.SIGTERM, on_signal)
+    signal.signal(signal.SIGINT, on_signal)
+    bridge.start()
+    try:
+        print("ros_bridge ready", flush=True)
+        end = bridge.spin(args.until)
+    finally:
+        bridge.close()
+    print(f"ros_bridge stopped at {end!r} (sent {bridge.sent} cmd_vel, published {bridge.published})",
+          flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,431 @@
+"""The ROS 1 bridge: one rospy node and one HLA federate of the robot world's federation in one process.
+
+ROS → HLA: each :class:`TwistIn` subscribes a ``geometry_msgs/Twist`` topic and turns every message into a
+``cmd_vel`` interaction (``linear.x``, ``angular.z``) for its robot. HLA → ROS: the ``WorldRobot``
+reflections of the mapped robots are published as ``nav_msgs/Odometry`` (:class:`OdometryOut`, from the
+``odometry`` or the ground-truth ``pose`` attribute), ``sensor_msgs/LaserScan`` (:class:`ScanOut`),
+``sensor_msgs/Range`` (:class:`RangeOut`, the nearest beam) and ``std_msgs/Bool`` (:class:`StallOut`).
+
+Threads: rospy calls the subscriber callbacks on its own threads (one per connection). The bridge's thread
+(the one calling :meth:`RosBridge.spin`) is the only one that ticks the RTI, so the federate-ambassador
+callbacks, and with them every ROS publication of a reflection, run there (rospy's ``publish`` is
+thread-safe). Untimed, a callback sends its interaction at once, in receive order, from rospy's thread
+(hlacore's sends are thread-safe). Timed, callbacks only queue the commands; the bridge's thread sends
+them after each grant ``G`` stamped ``G + lookahead`` (a send from another thread could race the
+advance and break the sending rule).
+
+Time: untimed (``timed=False``), the bridge is neither regulating nor constrained: commands apply from the
+world's current step and reflections arrive in receive order, stamped with ``rospy.Time.now()``. Timed, it
+is regulating (``lookahead``) and constrained and advances by ``period`` (``timeAdvanceRequest(k *
+period)``), optionally paced at ``rate`` federation seconds per wall second; reflections carry their
+federation timestamp into ``header.stamp``; with ``clock=True`` it sets ``/use_sim_time`` and publishes
+each grant on ``/clock`` (``rosgraph_msgs/Clock``), so that ROS time is federation time. With
+``await_inputs`` (wall seconds) the bridge, after each grant at which it published something to ROS, waits
+until every mapped Twist topic has spoken since the last grant (for ROS controllers that answer each
+published state: a lockstep through ROS).
+"""
+
+from __future__ import annotations
+
+import math
+import queue
+import threading
+import time as _time
+from dataclasses import dataclass
+from typing import Any, Callable, Optional, Sequence, Union
+
+import hlacore.rti as rti
+from hlacore.federates.robot_world import codec
+from hlacore.federates.robot_world.worldfile import WorldSpec
+
+from .ros_import import import_rospy
+
+rospy = import_rospy()
+from geometry_msgs.msg import Quaternion, Twist  # noqa: E402
+from nav_msgs.msg import Odometry  # noqa: E402
+from rosgraph_msgs.msg import Clock  # noqa: E402
+from sensor_msgs.msg import LaserScan, Range  # noqa: E402
+from std_msgs.msg import Bool  # noqa: E402
+
+_AlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
+
+
+@dataclass(frozen=True)
+class TwistIn:
+    """ROS → HLA: ``geometry_msgs/Twist`` on ``topic`` becomes ``cmd_vel(robot, linear.x, angular.z)``."""
+
+    topic: str
+    robot: str
+
+
+@dataclass(frozen=True)
+class OdometryOut:
+    """HLA → ROS: the robot's ``odometry`` (``source="odometry"``) or ground-truth ``pose``
+    (``source="pose"``, with the odometry's velocities) as ``nav_msgs/Odometry`` on ``topic``."""
+
+    robot: str
+    topic: str
+    source: str = "odometry"
+    frame_id: str = "odom"
+    child_frame_id: str = "base_footprint"
+
+
+@dataclass(frozen=True)
+class ScanOut:
+    """HLA → ROS: the robot's ``ranges`` as ``sensor_msgs/LaserScan`` (beams from ``-fov/2`` to ``+fov/2``)."""
+
+    robot: str
+    topic: str
+    fov: float = 0.1  # radians
+    range_min: float = 0.0
+    range_max: float = 5.0
+    frame_id: str = "base_laser_link"
+
+
+@dataclass(frozen=True)
+class RangeOut:
+    """HLA → ROS: the robot's nearest beam as ``sensor_msgs/Range`` (ULTRASOUND)."""
+
+    robot: str
+    topic: str
+    fov: float = 0.1
+    range_min: float = 0.0
+    range_max: float = 5.0
+    frame_id: str = "base_laser_link"
+
+
+@dataclass(frozen=True)
+class StallOut:
+    """HLA → ROS: the robot's ``stall`` flag as ``std_msgs/Bool``."""
+
+    robot: str
+    topic: str
+
+
+Mapping = Union[TwistIn, OdometryOut, ScanOut, RangeOut, StallOut]
+
+
+def stage_mappings(robot: str, prefix: Optional[str] = None, fov: float = 0.1, range_min: float = 0.0,
+                   range_max: float = 5.0) -> list[Mapping]:
+    """stageros' topics for one robot under ``prefix`` (default ``/<robot>``): ``cmd_vel`` in; ``odom``,
+    ``base_pose_ground_truth``, ``base_scan`` out; plus ``range`` (nearest beam) and ``stall``."""
+    p = f"/{robot}" if prefix is None else prefix.rstrip("/")
+    frame = p.lstrip("/")
+    odom_frame = f"{frame}/odom" if frame else "odom"
+    laser_frame = f"{frame}/base_laser_link" if frame else "base_laser_link"
+    return [
+        TwistIn(f"{p}/cmd_vel", robot),
+        OdometryOut(robot, f"{p}/odom", "odometry", odom_frame),
+        OdometryOut(robot, f"{p}/base_pose_ground_truth", "pose", odom_frame),
+        ScanOut(robot, f"{p}/base_scan", fov, range_min, range_max, laser_frame),
+        RangeOut(robot, f"{p}/range", fov, range_min, range_max, laser_frame),
+        StallOut(robot, f"{p}/stall"),
+    ]
+
+
+def world_mappings(spec: WorldSpec, robots: Optional[Sequence[str]] = None) -> list[Mapping]:
+    """:func:`stage_mappings` for each robot of a world (or the named ones), with the first ranger's
+    field of view and range limits."""
+    out: list[Mapping] = []
+    for r in spec.robots:
+        if robots is not None and r.name not in robots:
+            continue
+        s = r.sensors[0] if r.sensors else None
+        kwargs = {} if s is None else {"fov": s.fov, "range_min": s.range_min, "range_max": s.range_max}
+        out.extend(stage_mappings(r.name, **kwargs))
+    return out
+
+
+def yaw_quaternion(theta: float) -> Quaternion:
+    """The quaternion of a rotation by ``theta`` about z."""
+    return Quaternion(0.0, 0.0, math.sin(theta / 2.0), math.cos(theta / 2.0))
+
+
+class _Ambassador(rti.FederateAmbassador):
+    def __init__(self, bridge: "RosBridge") -> None:
+        self.bridge = bridge
+        self.names: dict[Any, str] = {}
+        self.attributes: dict[Any, str] = {}
+        self.regulation = self.constrained = False
+
+    def timeRegulationEnabled(self, t: float) -> None:
+        self.regulation = True
+
+    def timeConstrainedEnabled(self, t: float) -> None:
+        self.constrained = True
+
+    def discoverObjectInstance(self, obj: Any, cls: Any, name: str) -> None:
+        self.names[obj] = str(name)
+
+    def removeObjectInstance(self, obj: Any, tag: Any, time: Any = None, retraction: Any = None) -> None:
+        self.names.pop(obj, None)
+
+    def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], tag: Any, order: Any,
+                               transport: Any, t: Optional[float] = None, retraction: Any = None) -> None:
+        name = self.names.get(obj)
+        if name is None:
+            return
+        kinds = {"pose": codec.POSE, "odometry": codec.ODOMETRY, "ranges": codec.RANGES, "stall": codec.STALL}
+        values: dict[str, Any] = {}
+        for handle, data in attributes.items():
+            attr = self.attributes.get(handle)
+            if attr in kinds:
+                values[attr] = codec.unpack(kinds[attr], data)
+        self.bridge._reflected(name, values, None if t is None else float(t))
+
+
+class RosBridge:
+    """The bridge (see the module docstring). Build it, :meth:`start` it (init the ROS node, join the
+    federation), :meth:`spin` on the thread that owns it until :meth:`stop`, then :meth:`close`."""
+
+    def __init__(self, mappings: Sequence[Mapping], address: Optional[str] = None,
+                 federation: str = codec.FEDERATION, federate_name: str = "ros_bridge",
+                 node_name: str = "hla_bridge", timed: bool = True, period: float = 0.1,
+                 lookahead: Optional[float] = None, clock: bool = False, rate: Optional[float] = None,
+                 create: bool = True, await_inputs: Optional[float] = None) -> None:
+        self.mappings = list(mappings)
+        self.address = address
+        self.federation = federation
+        self.federate_name = federate_name
+        self.node_name = node_name
+        self.timed = timed
+        self.period = float(period)
+        self.lookahead = self.period if lookahead is None else float(lookahead)
+        self.clock = clock
+        self.rate = rate
+        self.create = create
+        self.await_inputs = await_inputs
+        self.late_cycles = 0  #: timed grants after which ``await_inputs`` ran out before every Twist topic spoke
+        self.rtia: Optional[rti.RTIAmbassador] = None
+        self.sent = 0  #: cmd_vel interactions sent
+        self.published = 0  #: ROS messages published from reflections
+        self.time = 0.0  #: the federate's time (the last grant)
+        self._amb = _Ambassador(self)
+        self._pending: "queue.SimpleQueue[tuple[str, float, float]]" = queue.SimpleQueue()
+        self._stop = threading.Event()
+        self._arrived: set[str] = set()
+        self._published_before = 0
+        self._inputs = threading.Condition()
+        self._publishers: list[tuple[Mapping, Any]] = []
+        self._subscribers: list[Any] = []
+        self._velocity: dict[str, tuple[float, float]] = {}
+        self._clock_pub: Any = None
+        self._cmd: Any = None
+        self._params: dict[str, Any] = {}
+        if self.timed and not self.lookahead > 0:
+            raise ValueError("lookahead must be positive")
+
+    # ---- life cycle ----
+
+    def start(self, master_timeout: float = 10.0, timeout: float = 10.0) -> None:
+        """Init the ROS node (once per process; the master must answer within ``master_timeout`` s), join
+        the federation (creating it from the robot world's FOM when ``create``), enable time management when
+        timed, then advertise and subscribe the ROS topics."""
+        import rosgraph
+
+        deadline = _time.monotonic() + master_timeout
+        while not rosgraph.is_master_online():
+            if _time.monotonic() > deadline:
+                raise TimeoutError(f"no ROS master at {rosgraph.get_master_uri()} within {master_timeout} s")
+            _time.sleep(0.05)
+        rospy.init_node(self.node_name, anonymous=False, disable_signals=True)
+        if self.clock:
+            rospy.set_param("/use_sim_time", True)
+            self._clock_pub = rospy.Publisher("/clock", Clock, queue_size=10)
+        kinds = {OdometryOut: Odometry, ScanOut: LaserScan, RangeOut: Range, StallOut: Bool}
+        for m in self.mappings:
+            if not isinstance(m, TwistIn):
+                self._publishers.append((m, rospy.Publisher(m.topic, kinds[type(m)], queue_size=100)))
+
+        rtia = rti.RTIAmbassador(self.address)
+        if self.create:
+            try:
+                rtia.createFederationExecution(self.federation, str(codec.FOM_PATH))
+            except _AlreadyExists:
+                pass
+        rtia.joinFederationExecution(self.federate_name, self.federation, self._amb)
+        self.rtia = rtia
+        try:
+            robot = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
+            self._amb.attributes = {rtia.getAttributeHandle(n, robot): n for n in codec.ATTRIBUTES}
+            rtia.subscribeObjectClassAttributes(robot, list(self._amb.attributes))
+            self._cmd = rtia.getInteractionClassHandle(codec.INTERACTION)
+            self._params = {n: rtia.getParameterHandle(n, self._cmd) for n in codec.PARAMETERS}
+            rtia.publishInteractionClass(self._cmd)
+            if self.timed:
+                rtia.enableTimeRegulation(rtia.queryFederateTime(), self.lookahead)
+                self._tick_until(lambda: self._amb.regulation, timeout)
+                rtia.enableTimeConstrained()
+                self._tick_until(lambda: self._amb.constrained, timeout)
+                self.time = float(rtia.queryFederateTime())
+        except BaseException:
+            rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+            self.rtia = None
+            raise
+        for m in self.mappings:
+            if isinstance(m, TwistIn):
+                self._subscribers.append(rospy.Subscriber(m.topic, Twist, self._on_twist, m.robot,
+                                                          queue_size=100))
+
+    def spin(self, until: Optional[float] = None, cycle_timeout: float = 0.05) -> float:
+        """Run the bridge on this thread until :meth:`stop` (or, timed, federation time ``until``); returns
+        the federate's time. Timed: one ``timeAdvanceRequest`` per period, waiting for each grant in slices
+        of ``cycle_timeout`` s so that a stop is seen. Untimed: ticks."""
+        rtia = self._rtia()
+        if not self.timed:
+            while not self._stop.is_set() and not rospy.is_shutdown():
+                rtia.tick(0.01, cycle_timeout)
+            return self.time
+        wall0, fed0 = _time.monotonic(), self.time
+        k = round(self.time / self.period)
+        while not self._stop.is_set() and not rospy.is_shutdown():
+            if until is not None and self.time >= until - 1e-9:
+                break
+            k += 1
+            rtia.timeAdvanceRequest(k * self.period)
+            while True:
+                try:
+                    self.time = rtia.await_grant(cycle_timeout)
+                    break
+                except TimeoutError:
+                    if self._stop.is_set() or rospy.is_shutdown():
+                        return self.time
+            self._granted()
+            if self.rate:
+                delay = wall0 + (self.time - fed0) / self.rate - _time.monotonic()
+                if delay > 0:
+                    self._stop.wait(delay)
+        return self.time
+
+    def connections(self) -> dict[str, int]:
+        """The number of ROS connections of each bridged topic (publishers' subscribers, subscribers'
+        publishers): to wait until the nodes on the other side are wired before spinning."""
+        out = {m.topic: pub.get_num_connections() for m, pub in self._publishers}
+        for sub in self._subscribers:
+            out[sub.resolved_name] = sub.get_num_connections()
+        return out
+
+    def stop(self) -> None:
+        """Ask :meth:`spin` to return (safe from any thread and from a signal handler)."""
+        self._stop.set()
+
+    def close(self, reason: str = "bridge closed") -> None:
+        """Unsubscribe, resign (deleting nothing: the bridge owns no object), and shut the ROS node down."""
+        for sub in self._subscribers:
+            sub.unregister()
+        self._subscribers.clear()
+        if self.rtia is not None:
+            self.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+            self.rtia = None
+        rospy.signal_shutdown(reason)
+
+    # ---- ROS → HLA ----
+
+    def _on_twist(self, msg: Twist, robot: str) -> None:
+        """rospy's thread: untimed, send now (receive order); timed, queue for the bridge's thread."""
+        linear, angular = float(msg.linear.x), float(msg.angular.z)
+        if self.timed:
+            with self._inputs:
+                self._pending.put((robot, linear, angular))
+                self._arrived.add(robot)
+                self._inputs.notify_all()
+        elif self.rtia is not None:
+            self._send(robot, linear, angular, None)
+
+    def _send(self, robot: str, linear: float, angular: float, stamp: Optional[float]) -> None:
+        p = self._params
+        values = {p["robot"]: codec.NAME.pack(robot), p["linear"]: codec.SPEED.pack(linear),
+                  p["angular"]: codec.SPEED.pack(angular)}
+        rtia = self._rtia()
+        if stamp is None:
+            rtia.sendInteraction(self._cmd, values, "ros")
+        else:
+            rtia.sendInteraction(self._cmd, values, "ros", stamp)
+        self.sent += 1
+
+    def _granted(self) -> None:
+        """After a grant, on the bridge's thread: /clock, then the queued commands stamped G + lookahead."""
+        if self._clock_pub is not None:
+            self._clock_pub.publish(Clock(rospy.Time.from_sec(self.time)))
+        if self.await_inputs is not None and self.published > self._published_before:
+            wanted = {m.robot for m in self.mappings if isinstance(m, TwistIn)}
+            with self._inputs:
+                if not self._inputs.wait_for(lambda: wanted <= self._arrived or self._stop.is_set(),
+                                             self.await_inputs):
+                    self.late_cycles += 1
+                self._arrived.clear()
+        self._published_before = self.published
+        while True:
+            try:
+                robot, linear, angular = self._pending.get_nowait()
+            except queue.Empty:
+                break
+            self._send(robot, linear, angular, self.time + self.lookahead)
+
+    # ---- HLA → ROS ----
+
+    def _reflected(self, robot: str, values: dict[str, Any], stamp: Optional[float]) -> None:
+        odom = values.get("odometry")
+        if odom is not None:
+            self._velocity[robot] = (float(odom[3]), float(odom[4]))
+        when = rospy.Time.now() if stamp is None else rospy.Time.from_sec(stamp)
+        for m, pub in self._publishers:
+            if m.robot != robot:
+                continue
+            msg = self._message(m, values, when)
+            if msg is not None:
+                pub.publish(msg)
+                self.published += 1
+
+    def _message(self, m: Mapping, values: dict[str, Any], when: Any) -> Any:
+        if isinstance(m, OdometryOut):
+            data = values.get(m.source)
+            if data is None:
+                return None
+            msg = Odometry()
+            msg.header.stamp = when
+            msg.header.frame_id = m.frame_id
+            msg.child_frame_id = m.child_frame_id
+            msg.pose.pose.position.x, msg.pose.pose.position.y = float(data[0]), float(data[1])
+            msg.pose.pose.orientation = yaw_quaternion(float(data[2]))
+            v, w = self._velocity.get(m.robot, (0.0, 0.0))
+            msg.twist.twist.linear.x, msg.twist.twist.angular.z = v, w
+            return msg
+        if isinstance(m, StallOut):
+            stall = values.get("stall")
+            return None if stall is None else Bool(bool(stall))
+        ranges = values.get("ranges")
+        if ranges is None or len(ranges) == 0:
+            return None
+        if isinstance(m, ScanOut):
+            msg = LaserScan()
+            msg.header.stamp = when
+            msg.header.frame_id = m.frame_id
+            n = len(ranges)
+            msg.angle_min, msg.angle_max = (-m.fov / 2, m.fov / 2) if n > 1 else (0.0, 0.0)
+            msg.angle_increment = m.fov / (n - 1) if n > 1 else 0.0
+            msg.range_min, msg.range_max = m.range_min, m.range_max
+            msg.ranges = [float(r) for r in ranges]
+            return msg
+        msg = Range()
+        msg.header.stamp = when
+        msg.header.frame_id = m.frame_id
+        msg.radiation_type = Range.ULTRASOUND
+        msg.field_of_view = m.fov
+        msg.min_range, msg.max_range = m.range_min, m.range_max
+        msg.range = float(min(ranges))
+        return msg
+
+    # ---- helpers ----
+
+    def _rtia(self) -> rti.RTIAmbassador:
+        if self.rtia is None:
+            raise RuntimeError("the bridge is not started")
+        return self.rtia
+
+    def _tick_until(self, done: Callable[[], bool], timeout: float) -> None:
+        deadline = _time.monotonic() + timeout
+        while not done():
+            if _time.monotonic() > deadline:
+                raise TimeoutError("the RTI did not confirm time regulation/constraint in time")
+            self._rtia().tick(0.01, 0.05)

@@ -1,0 +1,311 @@
+"""Paper 1's scenario through ROS: the robot world federate, the ROS bridge, and the paper's controllers
+as a plain ROS node in another process, as in ros-ptolemy-hla-iess2015 (Stage behind a ROS bridge, the
+"Control" script commanding the avatar, a Python ROS node driving the obstacles).
+
+    python -m hlacore.federates.ros_bridge.paper1 [OUTDIR] [--rtig HOST:PORT] [--duration 30]
+
+One process holds the world federate (on a thread) and the bridge (timed, ``/clock``, waiting each cycle
+for the controllers' answers: a lockstep through ROS); the node process (``--node``) subscribes
+``/avatar/range`` and answers each reading with a go / slow / stop Twist on ``/avatar/cmd_vel``
+(:class:`hlacore.federates.robot_world.paper1.Controller`), and drives each obstacle at 0.3 m/s on
+``/obstacle<i>/cmd_vel`` until its ground truth (``/obstacle<i>/base_pose_ground_truth``) has travelled 5 m.
+Without a ROS master at ``$ROS_MASTER_URI`` it starts ``roscore`` on a free loopback port and stops it (by
+pid) at the end; without ``--rtig`` it uses an in-process gateway. It prints the checks and one JSON summary
+line, writes ``paper1-ros-trace.csv`` and a snapshot (and, with matplotlib, the trajectory plot) into
+OUTDIR (default ``paper1-ros-out``), and exits 1 if a check fails.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import json
+import os
+import pathlib
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from dataclasses import dataclass, field
+from typing import Any, Iterator, Optional, Sequence
+
+import hlacore
+import hlacore.rti as rti
+from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, paper1, render
+from hlacore.federates.robot_world.world import Pose
+
+from .bridge import RosBridge, world_mappings
+
+HALF = 0.33 / 2  #: the robots' half size
+WALL_FACE = 7.0 - 0.1  #: x of the wall's face
+
+
+@dataclass
+class Result:
+    """What a run recorded, and its checks."""
+
+    times: list[float] = field(default_factory=list)
+    poses: list[dict[str, Pose]] = field(default_factory=list)
+    stall_steps: dict[str, int] = field(default_factory=dict)
+    late_cycles: int = 0
+    sent: int = 0
+    checks: dict[str, bool] = field(default_factory=dict)
+    world: Optional[World] = None  #: the world at the end of the run
+
+    @property
+    def ok(self) -> bool:
+        """All checks passed."""
+        return bool(self.checks) and all(self.checks.values())
+
+    def summary(self) -> dict[str, Any]:
+        """The JSON-able summary printed by the command."""
+        final = self.poses[-1]["avatar"]
+        return {"checks": self.checks, "ok": self.ok, "grants": len(self.times), "end": self.times[-1],
+                "avatar_x": final.x, "wall_gap": WALL_FACE - (final.x + HALF), "stall_steps": self.stall_steps,
+                "late_cycles": self.late_cycles, "sent": self.sent,
+                "obstacles_y": {n: self.poses[-1][n].y for n in paper1.OBSTACLES}}
+
+
+def check(result: Result) -> dict[str, bool]:
+    """Paper 1's checks on the poses at every grant: no robot ever blocked, the avatar and an obstacle never
+    overlap, every obstacle crossed, the avatar was held back by an obstacle at some point, and it ends
+    past the obstacles, stopped, its front less than the controller's stop distance from the wall."""
+    avatar = [p["avatar"] for p in result.poses]
+    apart = True
+    for name in paper1.OBSTACLES:
+        for a, o in zip(avatar, (p[name] for p in result.poses)):
+            if abs(a.x - o.x) < 2 * HALF and abs(a.y - o.y) <= 2 * HALF:
+                apart = False
+    xs = [a.x for a in avatar]
+    held = any(x1 == x0 for x0, x1 in zip(xs[:150], xs[1:150]) if x0 > 0)
+    gap = WALL_FACE - (avatar[-1].x + HALF)
+    return {
+        "no_stall": all(v == 0 for v in result.stall_steps.values()),
+        "no_overlap": apart,
+        "obstacles_crossed": all(result.poses[-1][n].y > 2.0 for n in paper1.OBSTACLES),
+        "held_back": held,
+        "stopped_before_wall": avatar[-1].x > 5.0 and 0.0 < gap <= paper1.Controller().stop_below
+        and xs[-1] == xs[-20],
+    }
+
+
+# ---- the ROS node (the paper's controllers), in its own process ----
+
+def node_main(timeout: float = 600.0) -> int:
+    """The controllers' ROS node: answers each avatar Range and each obstacle pose with a Twist."""
+    from .ros_import import import_rospy
+
+    rospy = import_rospy()
+    from geometry_msgs.msg import Twist
+    from nav_msgs.msg import Odometry
+    from sensor_msgs.msg import Range
+
+    rospy.init_node("paper1_control", disable_signals=True)
+    controller = paper1.Controller()
+    starts: dict[str, float] = {}
+    pubs = {name: rospy.Publisher(f"/{name}/cmd_vel", Twist, queue_size=100)
+            for name in ("avatar",) + paper1.OBSTACLES}
+
+    def twist(linear: float) -> Twist:
+        msg = Twist()
+        msg.linear.x = linear
+        return msg
+
+    def on_range(msg: Range) -> None:
+        pubs["avatar"].publish(twist(controller(msg.range)))
+
+    def on_pose(msg: Odometry, name: str) -> None:
+        y = msg.pose.pose.position.y
+        start = starts.setdefault(name, y)
+        pubs[name].publish(twist(0.3 if y - start < 5.0 else 0.0))
+
+    subs = [rospy.Subscriber("/avatar/range", Range, on_range, queue_size=100)]
+    subs += [rospy.Subscriber(f"/{n}/base_pose_ground_truth", Odometry, on_pose, n, queue_size=100)
+             for n in paper1.OBSTACLES]
+    stop = threading.Event()
+    signal.signal(signal.SIGTERM, lambda *_: stop.set())
+    signal.signal(signal.SIGINT, lambda *_: stop.set())
+    print("paper1_control ready", flush=True)
+    stop.wait(timeout)
+    for sub in subs:
+        sub.unregister()
+    rospy.signal_shutdown("done")
+    return 0
+
+
+# ---- the scenario ----
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+def _master_online(uri: str) -> bool:
+    import xmlrpc.client
+
+    try:
+        with xmlrpc.client.ServerProxy(uri) as master:
+            master.getPid("/paper1")
+        return True
+    except OSError:
+        return False
+
+
+@contextlib.contextmanager
+def ros_master(timeout: float = 30.0) -> Iterator[str]:
+    """``$ROS_MASTER_URI`` when a master answers there, else a roscore started on a free loopback port
+    (``ROS_HOME`` in a temporary directory, removed afterwards unless roscore failed; the environment
+    variables set for this process and its children), stopped by pid at the end. ``ROS_IP`` defaults to
+    127.0.0.1 either way."""
+    if not os.environ.get("ROS_HOSTNAME"):
+        os.environ.setdefault("ROS_IP", "127.0.0.1")  # loopback: never advertise another interface
+    uri = os.environ.get("ROS_MASTER_URI")
+    if uri and _master_online(uri):
+        yield uri
+        return
+    home = tempfile.mkdtemp(prefix="hlacore-ros-")
+    uri = f"http://127.0.0.1:{_free_port()}"
+    os.environ.update(ROS_MASTER_URI=uri, ROS_IP="127.0.0.1", ROS_HOME=home, ROS_LOG_DIR=f"{home}/log")
+    with open(f"{home}/roscore.log", "wb") as log:
+        proc = subprocess.Popen(["roscore", "-p", uri.rsplit(":", 1)[1]], stdout=log, stderr=subprocess.STDOUT,
+                                stdin=subprocess.DEVNULL)
+        try:
+            deadline = time.monotonic() + timeout
+            while not _master_online(uri):
+                if proc.poll() is not None or time.monotonic() > deadline:
+                    raise RuntimeError(f"roscore did not start (log: {home}/roscore.log)")
+                time.sleep(0.1)
+            yield uri
+        finally:
+            if proc.poll() is None:
+                proc.send_signal(signal.SIGINT)
+                try:
+                    proc.wait(15)
+                except subprocess.TimeoutExpired:
+                    proc.kill()
+                    proc.wait()
+    if proc.returncode == 0 or proc.returncode == -signal.SIGINT:
+        shutil.rmtree(home, ignore_errors=True)  # logs kept only when roscore failed
+
+
+def run(address: str, duration: float = 30.0, period: float = 0.1, dt: float = 0.01,
+        node_timeout: float = 60.0, cycle_timeout: float = 30.0, input_timeout: float = 5.0) -> Result:
+    """Play the scenario on the gateway at ``address`` with the ROS master of ``$ROS_MASTER_URI`` (this
+    process's ROS node is the bridge: call once per process)."""
+    creator = rti.RTIAmbassador(address)
+    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
+    world = WorldFederate.join(World(paper1.world_spec(), dt=dt, watchdog=0.2), address, period=period,
+                               lookahead=period)
+    result = Result()
+    node: Optional[subprocess.Popen[str]] = None
+    bridge = RosBridge(world_mappings(paper1.world_spec()), address, period=period, clock=True,
+                       await_inputs=input_timeout)
+    try:
+        bridge.start()
+        node = subprocess.Popen([sys.executable, "-m", "hlacore.federates.ros_bridge.paper1", "--node"],
+                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                text=True)
+        wired = ["/avatar/range", "/avatar/cmd_vel"] + [f"/{n}/{t}" for n in paper1.OBSTACLES
+                                                        for t in ("base_pose_ground_truth", "cmd_vel")]
+        deadline = time.monotonic() + node_timeout
+        while not all(bridge.connections().get(t, 0) > 0 for t in wired):
+            if node.poll() is not None or time.monotonic() > deadline:
+                raise RuntimeError(f"the control node did not connect: {bridge.connections()}")
+            time.sleep(0.05)
+        failure: list[BaseException] = []
+
+        def run_world() -> None:
+            try:
+                world.run_until(duration, timeout=cycle_timeout)
+            except BaseException as exc:  # reported on the main thread
+                failure.append(exc)
+                bridge.stop()
+
+        thread = threading.Thread(target=run_world, name="world")
+        thread.start()
+        bridge.spin(until=duration, cycle_timeout=0.05)
+        thread.join(cycle_timeout)
+        if failure:
+            raise failure[0]
+        if thread.is_alive():
+            raise TimeoutError("the world federate did not finish")
+    finally:
+        if node is not None:
+            if node.poll() is None:
+                node.send_signal(signal.SIGTERM)
+                try:
+                    node.wait(15)
+                except subprocess.TimeoutExpired:
+                    node.kill()
+                    node.wait()
+            if node.stdout is not None:
+                node.stdout.close()
+        result.late_cycles, result.sent = bridge.late_cycles, bridge.sent
+        if bridge.rtia is not None:
+            bridge.close()
+        world.resign()
+        creator.destroyFederationExecution(FEDERATION)
+    result.times = [t for t, _ in world.history]
+    result.poses = [p for _, p in world.history]
+    result.stall_steps = {r.name: r.stall_steps for r in world.world.robots}
+    result.checks = check(result)
+    result.world = world.world
+    return result
+
+
+def write_outputs(result: Result, directory: str) -> list[str]:
+    """The trace (CSV: grant time and every robot's x, y), a snapshot with trails and, with matplotlib, the
+    trajectory plot; returns the files written."""
+    import csv
+
+    out = pathlib.Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    world = result.world
+    if world is None:
+        raise ValueError("the result holds no world")
+    names = [r.name for r in world.robots]
+    with open(out / "paper1-ros-trace.csv", "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["time"] + [f"{n}_{c}" for n in names for c in "xy"])
+        for t, poses in zip(result.times, result.poses):
+            writer.writerow([repr(t)] + [repr(c) for n in names for c in (poses[n].x, poses[n].y)])
+    written = [str(out / "paper1-ros-trace.csv")]
+    tracks = render.trajectories(result.poses)
+    written.append(str(render.write_snapshot(world, out / "paper1-ros-snapshot.png", trails=tracks)))
+    try:
+        written.append(str(render.plot_trajectories(world, result.poses, out / "paper1-ros-trajectories.png",
+                                                    title="paper 1 through ROS")))
+    except ImportError as exc:
+        print(f"no trajectory plot: {exc}")
+    return written
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """The command (see the module docstring)."""
+    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.ros_bridge.paper1")
+    parser.add_argument("outdir", nargs="?", default="paper1-ros-out")
+    parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default: an in-process gateway)")
+    parser.add_argument("--duration", type=float, default=30.0)
+    parser.add_argument("--node", action="store_true", help=argparse.SUPPRESS)
+    args = parser.parse_args(argv)
+    if args.node:
+        return node_main()
+    with contextlib.ExitStack() as stack:
+        stack.enter_context(ros_master())
+        address = args.rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
+        result = run(address, duration=args.duration)
+    for name, passed in result.checks.items():
+        print(f"{'ok  ' if passed else 'FAIL'} {name}")
+    for path in write_outputs(result, args.outdir):
+        print(f"wrote {path}")
+    print(json.dumps(result.summary()), flush=True)
+    return 0 if result.ok else 1
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

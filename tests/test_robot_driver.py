@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import sys
 
 import pytest
 
@@ -129,11 +130,7 @@ def test_driver_talks_to_the_simulated_device_over_a_pty():
     assert device.process.returncode is not None
 
 
-def test_serial_transport_without_pyserial_says_what_to_install():
-    try:
-        import serial  # noqa: F401
-    except ImportError:
-        with pytest.raises(RuntimeError, match="pip install pyserial"):
-            SerialTransport("/dev/null")
-    else:
-        pytest.skip("pyserial is installed")
+def test_serial_transport_without_pyserial_says_what_to_install(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setitem(sys.modules, "serial", None)  # as if pyserial were not installed
+    with pytest.raises(RuntimeError, match="pip install pyserial"):
+        SerialTransport("/dev/null")

@@ -42,7 +42,8 @@ def test_status_reports_each_federates_time_state(inprocess_gateway: hlacore.Gat
     assert federation["name"] == "TestFed" and federation["fed"] == ROBOT_FED
     alpha, beta = federation["federates"]
     assert alpha == {
-        "handle": 1, "name": "alpha", "time": 0.0, "lookahead": 1.0, "regulating": True, "constrained": True,
+        "handle": 1, "name": "alpha", "time": 0.0, "lookahead": 1.0, "regulating": True,
+        "enabling_regulation": False, "constrained": True,
         "asynchronous_delivery": False, "pending": {"request": "TAR", "time": 3.0}, "queued_tso": 0,
         "queued_ro": 0, "lbts": 2.0, "output_bound": 4.0,
     }

@@ -77,6 +77,7 @@ void Federation::write_status(std::string& out) {
         out += ",\"lookahead\":";
         json_number(out, t.lookahead);
         out += std::string(",\"regulating\":") + (t.regulating ? "true" : "false");
+        out += std::string(",\"enabling_regulation\":") + (t.enabling_regulation ? "true" : "false");
         out += std::string(",\"constrained\":") + (t.constrained ? "true" : "false");
         out += std::string(",\"asynchronous_delivery\":") + (t.asynchronous_delivery ? "true" : "false");
         out += ",\"pending\":";

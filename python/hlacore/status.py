@@ -23,7 +23,7 @@ def status(address: Optional[str] = None) -> dict[str, Any]:
     """The gateway's report as a dict; ``address`` as for :class:`hlacore.rti.RTIAmbassador`.
 
     ``{"server", "address", "connections", "federations": [{"name", "fed", "objects", "sync_points",
-    "federates": [{"handle", "name", "time", "lookahead", "regulating", "constrained",
+    "federates": [{"handle", "name", "time", "lookahead", "regulating", "enabling_regulation", "constrained",
     "asynchronous_delivery", "pending": None | {"request": "TAR"|"TARA"|"NER"|"NERA"|"FQR", "time"},
     "queued_tso", "queued_ro", "lbts", "output_bound"}]}]}``. On the wire infinite times are null; here
     they are ``math.inf`` (``output_bound`` is inf for a federate that is not regulating).

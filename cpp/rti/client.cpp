@@ -588,6 +588,90 @@ void Client::request_class_update(fom::Handle cls, const std::vector<fom::Handle
     send(wire::RequestClassUpdate{cls, attributes});
 }
 
+// ---- transport and order changes (HLA 1.3 §6.19-6.22) ----
+
+namespace {
+
+std::uint8_t transport_value(std::uint32_t transport) {
+    if (transport != static_cast<std::uint32_t>(fom::Transport::Reliable) &&
+        transport != static_cast<std::uint32_t>(fom::Transport::BestEffort))
+        raise(ErrorCode::InvalidTransportationHandle,
+              "transportation handle " + handle_text(transport) + " is not a transportation type");
+    return static_cast<std::uint8_t>(transport);
+}
+
+std::uint8_t order_value(std::uint32_t order) {
+    if (order != static_cast<std::uint32_t>(fom::Order::Receive) &&
+        order != static_cast<std::uint32_t>(fom::Order::Timestamp))
+        raise(ErrorCode::InvalidOrderingHandle, "ordering handle " + handle_text(order) + " is not an ordering type");
+    return static_cast<std::uint8_t>(order);
+}
+
+}  // namespace
+
+void Client::change_attribute_transportation(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                             std::uint32_t transport) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    change_attribute_delivery(object, attributes, 0, transport_value(transport));
+}
+
+void Client::change_attribute_order(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                    std::uint32_t order) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    change_attribute_delivery(object, attributes, order_value(order), 0);
+}
+
+void Client::change_interaction_transportation(fom::Handle cls, std::uint32_t transport) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    change_interaction_delivery(cls, 0, transport_value(transport));
+}
+
+void Client::change_interaction_order(fom::Handle cls, std::uint32_t order) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    change_interaction_delivery(cls, order_value(order), 0);
+}
+
+// §6.19, §6.21: only the owner of every named attribute may change them.
+void Client::change_attribute_delivery(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                       std::uint8_t order, std::uint8_t transport) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const LocalObject& obj = known_object(object);
+        const auto& cls = *fom_->object_class(obj.object_class);
+        check_attributes(cls, attributes);
+        for (auto a : attributes) {
+            if (!obj.owned.count(a))
+                raise(ErrorCode::AttributeNotOwned, "attribute '" + cls.attribute(a)->name + "' of object '" +
+                                                        obj.name + "' is not owned by this federate");
+        }
+    }
+    send(wire::ChangeAttributeDelivery{object, attributes, order, transport});
+}
+
+// §6.20, §6.22: only a publisher of the class may change it.
+void Client::change_interaction_delivery(fom::Handle cls, std::uint8_t order, std::uint8_t transport) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_interaction_class(cls);
+        if (!published_interactions_.count(cls))
+            raise(ErrorCode::InteractionClassNotPublished,
+                  "interaction class '" + c.qualified_name + "' is not published");
+    }
+    send(wire::ChangeInteractionDelivery{cls, order, transport});
+}
+
 // ---- support services ----
 
 fom::Handle Client::object_class_handle(const std::string& name) const {

@@ -69,6 +69,18 @@ public:
     void request_object_update(std::uint32_t object, const std::vector<fom::Handle>& attributes);
     void request_class_update(fom::Handle cls, const std::vector<fom::Handle>& attributes);
 
+    // ---- transport and order changes (HLA 1.3 §6.19-6.22) ----
+    // Handles are fom::Transport / fom::Order values (InvalidTransportationHandle / InvalidOrderingHandle
+    // otherwise). They apply to this federate's later updates of the owned attributes (forgotten by the
+    // gateway when the attribute changes owner or the object is deleted) and its later interactions of a
+    // published class (until it unpublishes it).
+    void change_attribute_transportation(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                         std::uint32_t transport);
+    void change_attribute_order(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                std::uint32_t order);
+    void change_interaction_transportation(fom::Handle cls, std::uint32_t transport);
+    void change_interaction_order(fom::Handle cls, std::uint32_t order);
+
     // ---- ownership management (HLA 1.3 §7) ----
     // The federate's owned attributes change when the notifications are popped (acquisition, divestiture)
     // or when a call gives them up (unconditional divestiture, release response).
@@ -197,6 +209,10 @@ private:
     LocalObject& ownership_object(std::uint32_t object, const std::vector<fom::Handle>& attributes);
     LocalObject make_local_object(fom::Handle cls, const std::string& name) const;
     void apply_ownership_callback(const wire::Message& m);
+    // The checks and message behind the transport and order changes (order, transport: 0 = unchanged).
+    void change_attribute_delivery(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                   std::uint8_t order, std::uint8_t transport);
+    void change_interaction_delivery(fom::Handle cls, std::uint8_t order, std::uint8_t transport);
     // Whether this federate publishes the attribute at the class it knows the object as; privilegeToDelete
     // counts as published with its class.
     bool publishes(const LocalObject& obj, fom::Handle attribute) const;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <optional>
 
 namespace hlacore {
 
@@ -420,8 +421,11 @@ void Federation::on(FederateHandle from, const wire::PublishInteractionClass& m)
 
 void Federation::on(FederateHandle from, const wire::UnpublishInteractionClass& m) {
     interaction_class(m.interaction_class);
-    federate(from).published_interactions.erase(m.interaction_class);
-    federate(from).interactions_turned_on.erase(m.interaction_class);
+    auto& f = federate(from);
+    f.published_interactions.erase(m.interaction_class);
+    f.interactions_turned_on.erase(m.interaction_class);
+    f.interaction_order.erase(m.interaction_class);
+    f.interaction_transport.erase(m.interaction_class);
     update_advisories();
 }
 
@@ -469,14 +473,30 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
             throw WireError("attribute handle " + std::to_string(attr) + " is not defined for class '" +
                             cls.qualified_name + "'");
     }
-    wire::ReflectAttributes reflect;
-    reflect.object = m.object;
-    reflect.tag = m.tag;
-    reflect.sender = from;
-    reflect.serial = m.serial;
-    wire::ReflectAttributes timed = reflect;
-    timed.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
-    timed.time = m.time;
+    // Each attribute's order and transport: its owner's change (HLA 1.3 §6.19, §6.21), else the FOM's.
+    // Only the sender's own attributes are reflected, so only its changes matter.
+    auto order_of = [&](fom::Handle attr) {
+        auto it = obj.order.find(attr);
+        return it != obj.order.end() ? it->second : cls.attribute(attr)->order;
+    };
+    auto transport_of = [&](fom::Handle attr) {
+        auto it = obj.transport.find(attr);
+        return it != obj.transport.end() ? it->second : cls.attribute(attr)->transport;
+    };
+    // out[tso][transport - 1]: one reflection per order and transport actually used.
+    wire::ReflectAttributes out[2][2];
+    for (int tso = 0; tso < 2; ++tso) {
+        for (int tr = 0; tr < 2; ++tr) {
+            auto& r = out[tso][tr];
+            r.object = m.object;
+            r.tag = m.tag;
+            r.sender = from;
+            r.serial = m.serial;
+            r.order = static_cast<std::uint8_t>(tso ? fom::Order::Timestamp : fom::Order::Receive);
+            r.transport = static_cast<std::uint8_t>(tr + 1);
+            if (tso) r.time = m.time;
+        }
+    }
     for (auto& [gh, g] : federates_) {
         if (gh == from) continue;
         const fom::Handle known = known_class(g, obj.object_class);
@@ -484,25 +504,22 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
         if (!g.known.count(m.object)) discover(gh, g, m.object, obj);
         const auto& wanted = g.subscribed.at(known);
         // HLA 1.3 §8.1.1: timestamp order needs a time, a regulating sender, a constrained receiver and
-        // `timestamp` in the FOM; each attribute goes its own way, so one update may split in two.
+        // `timestamp` as the attribute's order; each attribute goes its own way, so one update may split.
         const bool tso = m.time && time_.is_tso(from, gh);
-        reflect.values.clear();
-        timed.values.clear();
+        for (auto& row : out)
+            for (auto& r : row) r.values.clear();
         for (const auto& pair : m.values) {
             // Values of attributes the sender does not own are not reflected (clients check this first).
             auto owner = obj.owners.find(pair.first);
             if (!wanted.count(pair.first) || owner == obj.owners.end() || owner->second != from) continue;
-            const auto* attr = cls.attribute(pair.first);
-            (tso && attr->order == fom::Order::Timestamp ? timed : reflect).values.push_back(pair);
+            const bool timed = tso && order_of(pair.first) == fom::Order::Timestamp;
+            const int tr = transport_of(pair.first) == fom::Transport::BestEffort ? 1 : 0;
+            out[timed][tr].values.push_back(pair);
         }
-        if (!timed.values.empty()) {
-            timed.transport = static_cast<std::uint8_t>(cls.attribute(timed.values.front().first)->transport);
-            deliver_timestamp_order(gh, timed, from, m.serial, *m.time);
-        }
-        if (!reflect.values.empty()) {
-            reflect.transport = static_cast<std::uint8_t>(cls.attribute(reflect.values.front().first)->transport);
-            deliver_receive_order(gh, reflect);
-        }
+        for (auto& r : out[1])
+            if (!r.values.empty()) deliver_timestamp_order(gh, r, from, m.serial, *m.time);
+        for (auto& r : out[0])
+            if (!r.values.empty()) deliver_receive_order(gh, r);
     }
     release_time();
 }
@@ -520,8 +537,15 @@ void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
     receive.tag = m.tag;
     receive.sender = from;
     receive.serial = m.serial;
-    receive.transport = static_cast<std::uint8_t>(sent_class.transport);
-    const bool timestamped = m.time && sent_class.order == fom::Order::Timestamp;
+    // The sender's change of the class's transport or order (HLA 1.3 §6.20, §6.22), else the FOM's.
+    const auto& sender = federates_.at(from);
+    auto changed_transport = sender.interaction_transport.find(m.interaction_class);
+    auto changed_order = sender.interaction_order.find(m.interaction_class);
+    const fom::Transport transport =
+        changed_transport != sender.interaction_transport.end() ? changed_transport->second : sent_class.transport;
+    const fom::Order order = changed_order != sender.interaction_order.end() ? changed_order->second : sent_class.order;
+    receive.transport = static_cast<std::uint8_t>(transport);
+    const bool timestamped = m.time && order == fom::Order::Timestamp;
     for (auto& [gh, g] : federates_) {
         if (gh == from) continue;
         const fom::Handle as = receiving_interaction_class(g, m.interaction_class);
@@ -699,6 +723,7 @@ void Federation::transfer(ObjectInstance& obj, fom::Handle attr, FederateHandle 
     if (owner != obj.owners.end() && owner->second != to && obj.divesting.count(attr))
         notices.divested[owner->second].push_back(attr);
     obj.divesting.erase(attr);
+    if (owner == obj.owners.end() || owner->second != to) forget_delivery(obj, attr);
     obj.owners[attr] = to;
     auto waiting = obj.acquirers.find(attr);
     if (waiting != obj.acquirers.end()) {
@@ -712,6 +737,7 @@ void Federation::transfer(ObjectInstance& obj, fom::Handle attr, FederateHandle 
 
 void Federation::release_attribute(ObjectInstance& obj, fom::Handle attr, OwnershipNotices& notices) {
     obj.owners.erase(attr);
+    forget_delivery(obj, attr);
     obj.divesting.erase(attr);
     auto waiting = obj.acquirers.find(attr);
     if (waiting != obj.acquirers.end() && !waiting->second.empty())
@@ -888,6 +914,50 @@ void Federation::on(FederateHandle from, const wire::QueryOwnership& m) {
         info.owner = owner->second;
     }
     outbox_.send(from, info);
+}
+
+// ---- transport and order changes (HLA 1.3 §6.19-6.22) ----
+// The client raises the exceptions; here a change applies to the attributes the sender still owns (an
+// ownership transfer may be on its way) and to classes it still publishes.
+
+namespace {
+
+template <class E>
+std::optional<E> delivery_value(std::uint8_t v, const char* what) {
+    if (v == 0) return std::nullopt;
+    if (v > 2) throw WireError(std::string("invalid ") + what + " " + std::to_string(v));
+    return static_cast<E>(v);
+}
+
+}  // namespace
+
+void Federation::forget_delivery(ObjectInstance& obj, fom::Handle attr) {
+    obj.order.erase(attr);
+    obj.transport.erase(attr);
+}
+
+void Federation::on(FederateHandle from, const wire::ChangeAttributeDelivery& m) {
+    federate(from);
+    const auto order = delivery_value<fom::Order>(m.order, "ordering handle");
+    const auto transport = delivery_value<fom::Transport>(m.transport, "transportation handle");
+    ObjectInstance* obj = owned_object(m.object, m.attributes);
+    if (!obj) return;
+    for (auto attr : m.attributes) {
+        auto owner = obj->owners.find(attr);
+        if (owner == obj->owners.end() || owner->second != from) continue;
+        if (order) obj->order[attr] = *order;
+        if (transport) obj->transport[attr] = *transport;
+    }
+}
+
+void Federation::on(FederateHandle from, const wire::ChangeInteractionDelivery& m) {
+    auto& f = federate(from);
+    interaction_class(m.interaction_class);
+    const auto order = delivery_value<fom::Order>(m.order, "ordering handle");
+    const auto transport = delivery_value<fom::Transport>(m.transport, "transportation handle");
+    if (!f.published_interactions.count(m.interaction_class)) return;
+    if (order) f.interaction_order[m.interaction_class] = *order;
+    if (transport) f.interaction_transport[m.interaction_class] = *transport;
 }
 
 }  // namespace hlacore

@@ -82,6 +82,10 @@ private:
         bool interaction_relevance = true;
         bool attribute_relevance = false;
         bool attribute_scope = false;
+        // changeInteractionOrderType / changeInteractionTransportationType (HLA 1.3 §6.20, §6.22): this
+        // federate's interactions of a class go this way instead of the FOM's, until it unpublishes the class.
+        std::map<fom::Handle, fom::Order> interaction_order;
+        std::map<fom::Handle, fom::Transport> interaction_transport;
     };
     struct ObjectInstance {
         fom::Handle object_class = 0;
@@ -96,6 +100,10 @@ private:
         // request order.
         std::map<fom::Handle, std::string> divesting;
         std::map<fom::Handle, std::vector<FederateHandle>> acquirers;
+        // changeAttributeOrderType / changeAttributeTransportationType (HLA 1.3 §6.19, §6.21) by the
+        // attribute's owner; forgotten when the attribute changes owner.
+        std::map<fom::Handle, fom::Order> order;
+        std::map<fom::Handle, fom::Transport> transport;
     };
     // Ownership callbacks gathered while handling one request, one message per federate and kind.
     struct OwnershipNotices {
@@ -130,6 +138,8 @@ private:
     // The attribute loses its owner; the first federate waiting to acquire it gets it.
     void release_attribute(ObjectInstance& obj, fom::Handle attribute, OwnershipNotices& notices);
     void send_notices(ObjectHandle object, OwnershipNotices& notices);
+    // Drops the owner's transport and order changes of an attribute that changes owner.
+    static void forget_delivery(ObjectInstance& obj, fom::Handle attribute);
     // The object a federate names in an ownership service, or null when it vanished meanwhile; its
     // attribute handles are checked against the FOM.
     ObjectInstance* owned_object(ObjectHandle object, const wire::Handles& attributes);
@@ -178,6 +188,8 @@ private:
     void on(FederateHandle from, const wire::OwnershipAcquisitionIfAvailable& m);
     void on(FederateHandle from, const wire::CancelOwnershipAcquisition& m);
     void on(FederateHandle from, const wire::QueryOwnership& m);
+    void on(FederateHandle from, const wire::ChangeAttributeDelivery& m);
+    void on(FederateHandle from, const wire::ChangeInteractionDelivery& m);
     template <class M>
     void on(FederateHandle from, const M& m);  // anything else: protocol violation
 

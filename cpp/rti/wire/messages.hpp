@@ -96,7 +96,10 @@ using OptionalTime = std::optional<double>;
     X(OwnershipUnavailable)          \
     X(RequestOwnershipRelease)       \
     X(ConfirmAcquisitionCancellation) \
-    X(OwnershipInformation)
+    X(OwnershipInformation)          \
+    /* transport and order changes (HLA 1.3 §6.19-6.22): federate -> gateway */ \
+    X(ChangeAttributeDelivery)       \
+    X(ChangeInteractionDelivery)
 
 enum class MessageType : std::uint16_t {
     Invalid = 0,
@@ -570,6 +573,27 @@ struct OwnershipInformation {
     std::uint8_t kind = 0;   // OwnershipKind
     std::uint32_t owner = 0;  // when OwnedByFederate
     HLACORE_FIELDS(object, attribute, kind, owner)
+};
+
+// ---- transport and order changes (HLA 1.3 §6.19-6.22) ----
+// Federate -> gateway; order and transport are fom::Order / fom::Transport values, 0 = left as it is.
+// The gateway applies an attribute's change only while the sender owns it (the client checks the
+// exceptions), and forgets it when the object is deleted or the attribute changes owner.
+struct ChangeAttributeDelivery {
+    HLACORE_TYPE(ChangeAttributeDelivery)
+    std::uint32_t object = 0;
+    Handles attributes;
+    std::uint8_t order = 0;
+    std::uint8_t transport = 0;
+    HLACORE_FIELDS(object, attributes, order, transport)
+};
+// For the sender's own interactions of that class, until it unpublishes the class.
+struct ChangeInteractionDelivery {
+    HLACORE_TYPE(ChangeInteractionDelivery)
+    std::uint32_t interaction_class = 0;
+    std::uint8_t order = 0;
+    std::uint8_t transport = 0;
+    HLACORE_FIELDS(interaction_class, order, transport)
 };
 
 // Index in the variant == wire code.

@@ -4,6 +4,8 @@ condition holds. Everything started here is stopped here, by pid."""
 from __future__ import annotations
 
 import contextlib
+import select
+import json
 import os
 import pathlib
 import re
@@ -239,6 +241,62 @@ def federation(gateway_address: str) -> Iterator[Callable[[str], Federate]]:
         except rti.FederateNotExecutionMember:
             pass
     creator.destroyFederationExecution("TestFed")
+
+
+def read_json(proc: subprocess.Popen[str], timeout: float = 30.0) -> dict[str, Any]:
+    """The next JSON line a peer prints; fails (killing the peer) if none comes within timeout seconds."""
+    assert proc.stdout is not None
+    ready, _, _ = select.select([proc.stdout], [], [], timeout)
+    line = proc.stdout.readline() if ready else ""
+    if not line:
+        proc.kill()
+        proc.wait()
+        raise AssertionError(f"no line from pid {proc.pid} within {timeout:.0f} s: {proc.stderr.read() if proc.stderr else ''}")
+    return dict(json.loads(line))
+
+
+class Conductor:
+    """The test's own federate: creates TestFed, starts peer processes (each prints {"ready": true} when
+    set up) and releases them all at once with synchronization point 'start'."""
+
+    def __init__(self, address: str) -> None:
+        self.address = address
+        self.rtia = rti.RTIAmbassador(address)
+        self.rtia.createFederationExecution("TestFed", ROBOT_FED)
+        self.amb = Recorder()
+        self.rtia.joinFederationExecution("conductor", "TestFed", self.amb)
+        self.peers: dict[str, subprocess.Popen[str]] = {}
+
+    def start(self, script: str, args: dict[str, list[str]], timeout: float = 30.0) -> None:
+        """Start tests/peers/<script> once per name with its arguments; wait until each is ready."""
+        for name, peer_args in args.items():
+            self.peers[name] = python_subprocess(script, *peer_args)
+        for name in args:
+            assert read_json(self.peers[name], timeout) == {"ready": True}
+
+    def synchronize(self, timeout: float = 30.0) -> None:
+        self.rtia.registerFederationSynchronizationPoint("start", "")
+        tick_until(lambda: bool(self.amb.named("announceSynchronizationPoint")), self.rtia)
+        self.rtia.synchronizationPointAchieved("start")
+        tick_until(lambda: bool(self.amb.named("federationSynchronized")), self.rtia, timeout=timeout)
+
+    def close(self) -> None:
+        for peer in self.peers.values():
+            if peer.poll() is None:
+                peer.kill()
+            peer.wait()
+            for stream in (peer.stdout, peer.stderr):
+                if stream:
+                    stream.close()
+        self.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+        self.rtia.destroyFederationExecution("TestFed")
+
+
+@pytest.fixture
+def conductor(rtig: RtigProcess) -> Iterator[Conductor]:
+    c = Conductor(rtig.address)
+    yield c
+    c.close()
 
 
 def python_subprocess(script: str, *args: str, env: Optional[dict[str, str]] = None) -> subprocess.Popen[str]:

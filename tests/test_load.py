@@ -7,18 +7,10 @@ figures. Sizes come from $HLACORE_LOAD_FEDERATES and $HLACORE_LOAD_UPDATES."""
 
 from __future__ import annotations
 
-import json
 import os
-import select
 import signal
-import subprocess
-from typing import Any, Iterator
 
-import pytest
-
-import hlacore.rti as rti
-
-from conftest import ROBOT_FED, Recorder, RtigProcess, python_subprocess, tick_until
+from conftest import Conductor, read_json
 
 FEDERATES = int(os.environ.get("HLACORE_LOAD_FEDERATES", "8"))
 UPDATES = int(os.environ.get("HLACORE_LOAD_UPDATES", "200"))
@@ -26,55 +18,8 @@ UPDATES = int(os.environ.get("HLACORE_LOAD_UPDATES", "200"))
 RUN_TIMEOUT = 120 + FEDERATES * UPDATES * 0.01
 
 
-def read_json(proc: subprocess.Popen[str], timeout: float) -> dict[str, Any]:
-    assert proc.stdout is not None
-    ready, _, _ = select.select([proc.stdout], [], [], timeout)
-    line = proc.stdout.readline() if ready else ""
-    if not line:
-        proc.kill()
-        proc.wait()
-        raise AssertionError(f"no line from pid {proc.pid} within {timeout:.0f} s: {proc.stderr.read() if proc.stderr else ''}")
-    return dict(json.loads(line))
-
-
-class Conductor:
-    """Creates TestFed, starts the peers and releases them all at once with sync point 'start'."""
-
-    def __init__(self, address: str) -> None:
-        self.address = address
-        self.rtia = rti.RTIAmbassador(address)
-        self.rtia.createFederationExecution("TestFed", ROBOT_FED)
-        self.amb = Recorder()
-        self.rtia.joinFederationExecution("conductor", "TestFed", self.amb)
-        self.peers: dict[str, subprocess.Popen[str]] = {}
-
-    def start(self, names: list[str], *flags: str) -> None:
-        for name in names:
-            self.peers[name] = python_subprocess("load_peer.py", self.address, name, str(UPDATES), ",".join(names), *flags)
-        for peer in self.peers.values():
-            assert read_json(peer, 120) == {"ready": True}
-        self.rtia.registerFederationSynchronizationPoint("start", "")
-        tick_until(lambda: bool(self.amb.named("announceSynchronizationPoint")), self.rtia)
-        self.rtia.synchronizationPointAchieved("start")
-        tick_until(lambda: bool(self.amb.named("federationSynchronized")), self.rtia, timeout=120)
-
-    def close(self) -> None:
-        for peer in self.peers.values():
-            if peer.poll() is None:
-                peer.kill()
-            peer.wait()
-            for stream in (peer.stdout, peer.stderr):
-                if stream:
-                    stream.close()
-        self.rtia.resignFederationExecution(rti.ResignAction.NoAction)
-        self.rtia.destroyFederationExecution("TestFed")
-
-
-@pytest.fixture
-def conductor(rtig: RtigProcess) -> Iterator[Conductor]:
-    c = Conductor(rtig.address)
-    yield c
-    c.close()
+def peer_args(conductor: Conductor, names: list[str], *flags: str) -> dict[str, list[str]]:
+    return {name: [conductor.address, name, str(UPDATES), ",".join(names), *flags] for name in names}
 
 
 def check_results(conductor: Conductor, survivors: list[str], victims: list[str], die_at: int) -> None:
@@ -96,7 +41,8 @@ def check_results(conductor: Conductor, survivors: list[str], victims: list[str]
 
 def test_lockstep_load_every_message_once_in_order(conductor: Conductor) -> None:
     names = [f"p{i}" for i in range(FEDERATES)]
-    conductor.start(names)
+    conductor.start("load_peer.py", peer_args(conductor, names), timeout=120)
+    conductor.synchronize(timeout=120)
     check_results(conductor, names, [], 0)
 
 
@@ -105,7 +51,9 @@ def test_lockstep_load_with_two_federates_killed_midway(conductor: Conductor) ->
     sender they got exactly its updates 1..UPDATES/2, from every living one all UPDATES."""
     names = [f"p{i}" for i in range(FEDERATES)]
     victims, die_at = names[1:3], UPDATES // 2
-    conductor.start(names, "--victims", ",".join(victims), "--die-at", str(die_at))
+    conductor.start("load_peer.py", peer_args(conductor, names, "--victims", ",".join(victims), "--die-at", str(die_at)),
+                    timeout=120)
+    conductor.synchronize(timeout=120)
     for name in victims:
         assert read_json(conductor.peers[name], RUN_TIMEOUT) == {"dying": die_at}
         conductor.peers[name].send_signal(signal.SIGKILL)

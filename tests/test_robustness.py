@@ -19,7 +19,7 @@ from typing import Any, Iterator, Optional
 
 import pytest
 
-from hlacore import rti
+from hlacore import _core, rti
 
 from conftest import (
     ROBOT_FED,
@@ -37,19 +37,7 @@ from conftest import (
 MAGIC = 0x484C4143
 VERSION = 1
 MAX_FRAME = 64 << 20
-MESSAGE_TYPES = [
-    "Hello", "Welcome", "CreateFederation", "DestroyFederation", "JoinFederation", "ResignFederation",
-    "RegisterSyncPoint", "SyncPointAchieved", "PublishObjectClass", "UnpublishObjectClass",
-    "SubscribeObjectClass", "UnsubscribeObjectClass", "PublishInteractionClass", "UnpublishInteractionClass",
-    "SubscribeInteractionClass", "UnsubscribeInteractionClass", "RegisterObject", "UpdateAttributes",
-    "SendInteraction", "DeleteObject", "LocalDeleteObject", "RequestObjectUpdate", "RequestClassUpdate",
-    "SetAdvisorySwitch", "Reply", "SyncPointRegistrationSucceeded", "SyncPointRegistrationFailed",
-    "AnnounceSyncPoint", "FederationSynchronized", "StartRegistration", "StopRegistration", "TurnInteractionsOn",
-    "TurnInteractionsOff", "DiscoverObject", "ReflectAttributes", "ReceiveInteraction", "RemoveObject",
-    "ProvideAttributeValueUpdate", "EnableTimeRegulation", "DisableTimeRegulation", "EnableTimeConstrained",
-    "DisableTimeConstrained", "TimeAdvance", "ModifyLookahead", "SetAsynchronousDelivery", "Retract", "QueryTime",
-    "TimeRegulationEnabled", "TimeConstrainedEnabled", "TimeAdvanceGrant", "RequestRetraction",
-]  # fmt: skip
+MESSAGE_TYPES = _core._message_names()  # the list of cpp/rti/wire/messages.hpp, in code order
 T = {name: code for code, name in enumerate(MESSAGE_TYPES, start=1)}
 
 

@@ -1,19 +1,11 @@
 """Two federates in two processes exchange an object, an interaction and a synchronization point."""
 
-import json
-
 import hlacore.rti as rti
 
-from conftest import ROBOT_FED, python_subprocess
+from conftest import ROBOT_FED, python_subprocess, read_json
 
 LOCATION = bytes(range(256)) + b"\x00tail"
 COMMAND = b"go\x00\xff\xfe"
-
-
-def read_json_line(proc):
-    line = proc.stdout.readline()
-    assert line, f"peer exited early: {proc.stderr.read()}"
-    return json.loads(line)
 
 
 def test_robot_update_interaction_and_sync_point_across_processes(gateway_address):
@@ -23,10 +15,10 @@ def test_robot_update_interaction_and_sync_point_across_processes(gateway_addres
     receiver = python_subprocess("robot_pair.py", gateway_address, "receiver")
     sender = None
     try:
-        assert read_json_line(receiver) == {"joined": True}
+        assert read_json(receiver) == {"joined": True}
         sender = python_subprocess("robot_pair.py", gateway_address, "sender")
-        sent = read_json_line(sender)
-        got = read_json_line(receiver)
+        sent = read_json(sender)
+        got = read_json(receiver)
         assert sender.wait(timeout=20) == 0, sender.stderr.read()
         assert receiver.wait(timeout=20) == 0, receiver.stderr.read()
     finally:

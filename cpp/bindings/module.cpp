@@ -765,6 +765,13 @@ PYBIND11_MODULE(_core, m) {
             return out;
         });
 
+    // The wire message names in code order (code = index + 1), for the hostile-client tests.
+    m.def("_message_names", [] {
+        std::vector<std::string> names;
+        for (int i = 1; i < static_cast<int>(wire::MessageType::Count); ++i)
+            names.emplace_back(wire::message_name(static_cast<wire::MessageType>(i)));
+        return names;
+    });
     m.def("_transportation_handle", [](std::uint32_t v) { return TransportationHandle{v}; });
     m.def("_ordering_handle", [](std::uint32_t v) { return OrderingHandle{v}; });
     m.def("_federate_handle_of", [](std::uint32_t v) { return FederateHandle{v}; });

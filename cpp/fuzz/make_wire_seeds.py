@@ -4,21 +4,13 @@ cpp/rti/wire/messages.hpp (little-endian; string = u32 length + bytes; vector = 
 optional time = u8 flag [+ f64]). Run it again after changing the message list: python3 make_wire_seeds.py"""
 
 import pathlib
+import re
 import struct
 
-NAMES = [
-    "Hello", "Welcome", "CreateFederation", "DestroyFederation", "JoinFederation", "ResignFederation",
-    "RegisterSyncPoint", "SyncPointAchieved", "PublishObjectClass", "UnpublishObjectClass",
-    "SubscribeObjectClass", "UnsubscribeObjectClass", "PublishInteractionClass", "UnpublishInteractionClass",
-    "SubscribeInteractionClass", "UnsubscribeInteractionClass", "RegisterObject", "UpdateAttributes",
-    "SendInteraction", "DeleteObject", "LocalDeleteObject", "RequestObjectUpdate", "RequestClassUpdate",
-    "SetAdvisorySwitch", "Reply", "SyncPointRegistrationSucceeded", "SyncPointRegistrationFailed",
-    "AnnounceSyncPoint", "FederationSynchronized", "StartRegistration", "StopRegistration", "TurnInteractionsOn",
-    "TurnInteractionsOff", "DiscoverObject", "ReflectAttributes", "ReceiveInteraction", "RemoveObject",
-    "ProvideAttributeValueUpdate", "EnableTimeRegulation", "DisableTimeRegulation", "EnableTimeConstrained",
-    "DisableTimeConstrained", "TimeAdvance", "ModifyLookahead", "SetAsynchronousDelivery", "Retract", "QueryTime",
-    "TimeRegulationEnabled", "TimeConstrainedEnabled", "TimeAdvanceGrant", "RequestRetraction", "QueryStatus",
-]  # fmt: skip
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+# The message list, read from its one declaration (X(Name) entries of HLACORE_MESSAGES, in code order).
+_LIST = (ROOT / "cpp" / "rti" / "wire" / "messages.hpp").read_text().split("#define HLACORE_MESSAGES(X)")[1]
+NAMES = re.findall(r"X\((\w+)\)", _LIST.split("enum class MessageType")[0])
 CODE = {name: i for i, name in enumerate(NAMES, start=1)}
 
 
@@ -38,7 +30,7 @@ def frame(name, payload=b""):
     return u32(2 + len(payload)) + u16(CODE[name]) + payload
 
 
-FED = (pathlib.Path(__file__).resolve().parents[2] / "tests" / "data" / "robot.fed").read_text()
+FED = (ROOT / "tests" / "data" / "robot.fed").read_text()
 MESSAGES = {
     "Hello": u32(0x484C4143) + u16(1),
     "Welcome": u16(1) + s("hlacore rtig"),

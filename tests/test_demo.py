@@ -17,6 +17,7 @@ def test_demo_runs_the_experiment_with_no_configuration(tmp_path: pathlib.Path):
     folder = re.search(r"output in (\S+)", out)
     assert folder is not None
     written = {p.name for p in (tmp_path / folder.group(1)).iterdir()}
-    assert {"scenario.txt", "robot.log", "trace.csv", "delays.md"} <= written
-    assert "| d_RT |" in out
+    assert {"scenario.txt", "robot.log", "trace.csv", "delays.md", "gateway-trace.csv"} <= written
+    for row in ("t_cycle^emb", "C_RTI^emb", "t_cycle^RTI", "C_PT^RTI", "t_cycle^DE", "d_RT"):
+        assert f"| {row} |" in out
     assert out.rstrip().endswith("experiment finished: checker passed")

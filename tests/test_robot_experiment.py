@@ -6,10 +6,13 @@ from __future__ import annotations
 
 import csv
 import pathlib
+import re
 import subprocess
 import sys
 
 from hlacore.federates.robot_driver import MISCALIBRATED, PAPER_5X5, Body, commands_for_move
+
+from conftest import running_rtig
 
 PAPER_PATH = [(0, 0), (0, 1), (0, 2), (0, 3), (1, 3), (2, 3), (2, 2), (2, 1), (2, 0), (3, 0), (4, 0), (4, 1), (4, 2),
               (4, 3), (4, 4)]
@@ -46,14 +49,21 @@ def first_divergence_of_the_device() -> int:
     raise AssertionError("the miscalibrated body never diverges")
 
 
-def test_calibrated_robot_follows_the_papers_path_over_the_real_rtig(rtig, tmp_path):
-    done, rows = run_demo(tmp_path, "--rtig", rtig.address, "--time-scale", "0")
+def test_calibrated_robot_follows_the_papers_path_over_the_real_rtig(tmp_path):
+    trace = tmp_path / "rtig-trace.csv"
+    with running_rtig(tmp_path, "--trace", str(trace)) as rtig:
+        done, rows = run_demo(tmp_path, "--rtig", rtig.address, "--gateway-trace", str(trace), "--time-scale", "0")
     assert done.returncode == 0, done.stdout + done.stderr
     assert robot_cells(rows) == PAPER_PATH
     assert [(int(r["ref_a"]), int(r["ref_b"])) for r in rows] == PAPER_PATH
     assert all(r["value_error"] == "0" and r["time_error"] == "0" for r in rows)
     assert "checker: 15 cycles, 0 value errors, 0 time errors" in done.stdout
     assert done.stdout.rstrip().endswith("experiment finished: checker passed")
+    # rtig's trace splits the robot -> testbench delay of every cycle into its three hops.
+    table = (tmp_path / "out" / "delays.md").read_text()
+    for row in ("C_RTI^emb", "t_cycle^RTI", "C_PT^RTI"):
+        assert re.search(rf"^\| {re.escape(row)} \|", table, re.M), table
+    assert "| delay (15 cycles, ms) |" in table
 
 
 def test_miscalibrated_robot_has_value_errors_from_the_first_diverging_cycle(tmp_path):

@@ -10,12 +10,14 @@ import pytest
 
 from hlacore.federates.de import Director, Received, Recorder, TimedSource
 from hlacore.federates.robot_driver import PAPER_5X5, LocationReport
+from hlacore.trace import Hop
 from hlacore.federates.testbench import (
     Checker,
     Display,
     ReferenceModel,
     Sequencer,
     Stats,
+    cycle_hops,
     delay_table,
     format_table,
     write_plot,
@@ -101,6 +103,19 @@ def test_stats_and_table_form():
     assert text.splitlines()[0] == "| delay (4 cycles, ms) | mean | max | min | std |"
     assert [line.split("|")[1].strip() for line in text.splitlines()[2:]] == ["t_cycle^emb", "C^emb->DE",
                                                                               "t_cycle^DE", "d_RT"]
+
+
+def test_the_gateways_marks_split_the_communication_delay():
+    checker, _, _ = bench([received(k, PAPER_PATH[k], k + 0.5) for k in range(4)])
+    # report k: sent at 100.001; the gateway read it 1 ms later and wrote it on 3 ms after that.
+    marks = cycle_hops([Hop(k + 1, k + 0.5, 100.002, 100.005) for k in range(4)])
+    table = delay_table(checker.verdicts, {k: 100.006 for k in range(4)}, marks)
+    assert table["C_RTI^emb"].mean == pytest.approx(1.0)
+    assert table["t_cycle^RTI"].mean == pytest.approx(3.0)
+    assert table["C_PT^RTI"].mean == pytest.approx(1.0)
+    assert table["C^emb->DE"].mean == pytest.approx(5.0)  # the three hops together
+    assert [line.split("|")[1].strip() for line in format_table(table).splitlines()[2:]] == [
+        "t_cycle^emb", "C_RTI^emb", "t_cycle^RTI", "C_PT^RTI", "C^emb->DE", "t_cycle^DE", "d_RT"]
 
 
 def test_trace_has_a_row_per_cycle_and_plot_is_optional(tmp_path: pathlib.Path):

@@ -325,12 +325,14 @@ bool wait_for_callback(Client& c, double timeout_s) {
 
 class BackgroundGateway {
 public:
-    BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose) {
+    BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose,
+                      std::string trace_path) {
         GatewayOptions options;
         options.host = host;
         options.port = port;
         options.fom_path = std::move(fom_path);
         options.verbose = verbose;
+        options.trace_path = std::move(trace_path);
         gateway_ = std::make_unique<Gateway>(options);
         thread_ = std::thread([this] { gateway_->run(); });
     }
@@ -380,8 +382,9 @@ PYBIND11_MODULE(_core, m) {
     bind_fed(m);
 
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
-        .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool>(), py::arg("host"),
-             py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::call_guard<py::gil_scoped_release>())
+        .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, std::string>(),
+             py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("trace_path") = "",
+             py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)
         .def_property_readonly("port", &BackgroundGateway::port)

@@ -43,6 +43,8 @@ struct Gateway::Connection {
     FederationEntry* federation = nullptr;
     FederateHandle federate = 0;
     Clock::time_point partial_since{};
+    std::int64_t read_ns = 0;  // when the bytes being decoded were read (message trace only)
+    std::size_t traced = 0;    // out[0, traced) went through the message trace
 };
 
 class Gateway::ConnectionOutbox : public Outbox {
@@ -131,6 +133,7 @@ Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
     loop_.add(listen_fd_, EPOLLIN);
     loop_.add(wake_fd_, EPOLLIN);
     reserve_fd_ = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+    if (!options_.trace_path.empty()) trace_ = std::make_unique<MessageTrace>(options_.trace_path);
 }
 
 Gateway::~Gateway() {
@@ -156,6 +159,7 @@ void Gateway::run() {
                 std::uint64_t v;
                 [[maybe_unused]] auto n = ::read(wake_fd_, &v, sizeof v);
                 flush_dirty();
+                if (trace_) trace_->flush();
                 return;
             }
             if (fd == listen_fd_) {
@@ -170,6 +174,7 @@ void Gateway::run() {
         }
         flush_dirty();
         if (partial_pending) drop_stale_partials();
+        if (trace_) trace_->flush();
     }
 }
 
@@ -232,6 +237,7 @@ void Gateway::on_readable(Connection& c) {
         close(fd, std::string("read failed: ") + std::strerror(errno));
         return;
     }
+    if (trace_) c.read_ns = MessageTrace::now_ns();
     try {
         wire::Frame frame;
         while (std::size_t used = wire::next_frame(std::string_view(c.in).substr(c.in_offset), frame)) {
@@ -274,6 +280,7 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
         mark_dirty(c);
         return;
     }
+    if (trace_ && c.federation) trace_->received(c.federation->federation.name(), c.federate, message, c.read_ns);
     on_request(c, message);
 }
 
@@ -353,6 +360,7 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
             entry.outbox.peers_[h] = &c;
             reply(c, wire::Reply{m->request, 0, "", h, entry.federation.fed_text(), entry.federation.fed_name(), 0});
             entry.federation.announce_pending(h);
+            if (trace_) trace_->joined(m->federation, h, m->federate, c.read_ns);
             if (options_.verbose) log("'" + m->federate + "' joined '" + m->federation + "' as federate " + std::to_string(h));
         } catch (const RtiError& e) {
             error_reply(m->request, e);
@@ -470,6 +478,11 @@ void Gateway::flush_dirty() {
 }
 
 void Gateway::flush(Connection& c) {
+    if (trace_ && c.federation && c.traced < c.out.size()) {
+        trace_->sending(c.federation->federation.name(), c.federate,
+                        std::string_view(c.out).substr(c.traced), MessageTrace::now_ns());
+        c.traced = c.out.size();
+    }
     while (c.out_offset < c.out.size()) {
         ssize_t n = ::send(c.fd, c.out.data() + c.out_offset, c.out.size() - c.out_offset, MSG_NOSIGNAL);
         if (n > 0) {
@@ -487,6 +500,7 @@ void Gateway::flush(Connection& c) {
         if (c.out.capacity() > kKeptBufferBytes) std::string().swap(c.out);
         c.out.clear();
         c.out_offset = 0;
+        c.traced = 0;
         if (c.write_armed) {
             loop_.modify(c.fd, EPOLLIN);
             c.write_armed = false;
@@ -500,6 +514,7 @@ void Gateway::flush(Connection& c) {
     }
     if (c.out_offset > (1u << 20) && c.out_offset > c.out.size() / 2) {
         c.out.erase(0, c.out_offset);
+        c.traced = c.traced > c.out_offset ? c.traced - c.out_offset : 0;
         c.out_offset = 0;
     }
     if (!c.write_armed) {

@@ -11,6 +11,7 @@
 
 #include "rti/event_loop.hpp"
 #include "rti/federation.hpp"
+#include "rti/trace.hpp"
 
 namespace hlacore {
 
@@ -21,6 +22,7 @@ struct GatewayOptions {
     bool verbose = false;
     double partial_frame_timeout_s = 10.0;     // a half-sent frame older than this drops the connection
     std::size_t max_queued_output = 64u << 20;  // a client that stops reading is dropped beyond this
+    std::string trace_path;  // non-empty: write the message trace there (trace.hpp)
 };
 
 class Gateway {
@@ -66,6 +68,7 @@ private:
     std::map<int, std::unique_ptr<Connection>> connections_;
     std::map<std::string, std::unique_ptr<FederationEntry>> federations_;
     std::vector<int> dirty_;
+    std::unique_ptr<MessageTrace> trace_;
 };
 
 }  // namespace hlacore

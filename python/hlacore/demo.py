@@ -30,6 +30,9 @@ def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
     parser = argparse.ArgumentParser(prog="python -m hlacore.demo", description=__doc__.splitlines()[0])
     parser.add_argument("--rtig", metavar="HOST:PORT", default=None,
                         help="a running rtig instead of the in-process gateway")
+    parser.add_argument("--gateway-trace", metavar="FILE", type=pathlib.Path, default=None,
+                        help="with --rtig: the message trace it writes (rtig --trace FILE), to split the "
+                             "communication delay into its hops")
     parser.add_argument("--miscalibrated", action="store_true", help="the device's motors are miscalibrated")
     parser.add_argument("--grid", type=_grid, default="5x5", help="5x5 (the paper's, default) or 6x6 (ours)")
     parser.add_argument("--scenario", type=pathlib.Path, default=None, help="a scenario file (overrides --grid)")
@@ -43,12 +46,15 @@ def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
     parser.add_argument("--out", type=pathlib.Path, default=None,
                         help="output folder (default ./robot-experiment-<UTC time>)")
     args = parser.parse_args(argv)
+    if args.gateway_trace is not None and args.rtig is None:
+        parser.error("--gateway-trace goes with --rtig (the in-process gateway writes its own trace)")
     if args.cycles < 1:
         parser.error("--cycles must be at least 1")
     out = args.out or pathlib.Path(f"robot-experiment-{datetime.datetime.now(datetime.timezone.utc):%Y%m%d-%H%M%S}")
     return ExperimentOptions(out=out, rtig=args.rtig, grid=args.grid, scenario_file=args.scenario,
                              miscalibrated=args.miscalibrated, best_effort=args.best_effort, cycles=args.cycles,
-                             time_scale=args.time_scale, precision=args.precision, federation=args.federation)
+                             time_scale=args.time_scale, precision=args.precision, federation=args.federation,
+                             gateway_trace=args.gateway_trace)
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:

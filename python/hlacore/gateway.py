@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from types import TracebackType
 from typing import Any, Iterable, Optional
 
@@ -17,7 +18,9 @@ class Gateway:
             rtia = hlacore.rti.RTIAmbassador(gw.address)
 
     The gateway listens from construction until :meth:`stop` (or the end of the ``with`` block).
-    It logs dropped connections to stderr; ``verbose=True`` logs joins and federations too.
+    It logs dropped connections to stderr; ``verbose=True`` logs joins and federations too. ``trace``
+    names a CSV file for the message trace (``rtig --trace``): when each update and interaction arrived and
+    each reflection of it left, on the host's monotonic clock (read by :mod:`hlacore.trace`).
     """
 
     def __init__(
@@ -26,8 +29,10 @@ class Gateway:
         port: int = 60400,
         fom_path: Iterable[str] = (),
         verbose: bool = False,
+        trace: Optional[str | os.PathLike[str]] = None,
     ) -> None:
-        self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose)
+        self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose,
+                                                os.fspath(trace) if trace is not None else "")
 
     @property
     def host(self) -> str:

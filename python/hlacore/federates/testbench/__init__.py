@@ -14,7 +14,7 @@
 
 from .bench import ArrivalClock, Testbench, TestbenchResult
 from .checker import Checker, Verdict
-from .delays import ROWS, Stats, delay_table, format_table
+from .delays import ROWS, Stats, cycle_hops, delay_table, format_table
 from .display import Display, format_verdict
 from .plotter import write_plot, write_trace
 from .reference import Expected, ReferenceModel
@@ -32,6 +32,7 @@ __all__ = [
     "Testbench",
     "TestbenchResult",
     "Verdict",
+    "cycle_hops",
     "delay_table",
     "format_table",
     "format_verdict",

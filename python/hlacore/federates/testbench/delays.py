@@ -1,14 +1,19 @@
-"""The delay decomposition of the paper's Table 1, from wall-clock marks of the robot and the testbench.
+"""The delay decomposition of the paper's Table 1, from wall-clock marks of the robot, the gateway and the
+testbench.
 
-Per cycle (all ``time.monotonic()``, one clock for every process on a host):
+Per cycle (all ``time.monotonic()``, one clock for every process on a host; the gateway's marks come from
+its message trace, :mod:`hlacore.trace`, and the three rows that need them are left out without one):
 
 =====================  =====================================================================================
 row                    what
 =====================  =====================================================================================
 ``t_cycle^emb``        the robot's control cycle: sense, decide, command the device, publish
-``C^emb->DE``          from the robot's ``updateAttributeValues`` to the reflection callback in the
-                       testbench: the paper's ``C_RTI^emb + t_cycle^RTI + C_PT^RTI``, which the gateway does
-                       not let us split
+``C_RTI^emb``          from the robot's ``updateAttributeValues`` to the gateway reading it
+``t_cycle^RTI``        from the gateway reading the update to its writing the reflection to the testbench's
+                       socket (a timestamp-ordered one waits there until the testbench's grant allows it)
+``C_PT^RTI``           from that write to the reflection callback in the testbench
+``C^emb->DE``          from the robot's ``updateAttributeValues`` to the reflection callback: the sum of the
+                       three rows above
 ``t_cycle^DE``         from the reflection to the checker's verdict: the DE side's cycle (waiting for its
                        grant, firing the model)
 ``d_RT``               from the end of the robot's action to the verdict: ``t_obs - t_action``
@@ -19,13 +24,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Iterable, Mapping, Sequence
+from typing import Iterable, Mapping, Optional, Sequence
+
+from hlacore.trace import Hop
 
 from .checker import Verdict
 
-__all__ = ["ROWS", "Stats", "decompose", "delay_table", "format_table"]
+__all__ = ["ROWS", "Stats", "cycle_hops", "decompose", "delay_table", "format_table"]
 
-ROWS = ("t_cycle^emb", "C^emb->DE", "t_cycle^DE", "d_RT")
+ROWS = ("t_cycle^emb", "C_RTI^emb", "t_cycle^RTI", "C_PT^RTI", "C^emb->DE", "t_cycle^DE", "d_RT")
 
 
 @dataclass(frozen=True)
@@ -50,34 +57,52 @@ class Stats:
         return cls(mean, max(ms), min(ms), std, len(ms))
 
 
-def decompose(verdict: Verdict, reflected_at: float) -> dict[str, float]:
-    """The four delays (seconds) of one checked cycle whose reflection came at wall time ``reflected_at``."""
+def decompose(verdict: Verdict, reflected_at: float, hop: Optional[Hop] = None) -> dict[str, float]:
+    """The delays (seconds) of one checked cycle whose reflection came at wall time ``reflected_at``;
+    with the gateway's ``hop`` of its report, the communication split in three."""
     report = verdict.report
     if report is None:
         raise ValueError(f"cycle {verdict.cycle} has no report")
-    return {
+    delays = {
         "t_cycle^emb": report.t_cycle,
         "C^emb->DE": reflected_at - report.t_send,
         "t_cycle^DE": verdict.observed - reflected_at,
         "d_RT": verdict.observed - report.t_action,
     }
+    if hop is not None:
+        delays["C_RTI^emb"] = hop.received - report.t_send
+        delays["t_cycle^RTI"] = hop.forwarded - hop.received
+        delays["C_PT^RTI"] = reflected_at - hop.forwarded
+    return delays
 
 
-def delay_table(verdicts: Iterable[Verdict], reflected_at: Mapping[int, float]) -> dict[str, Stats]:
-    """Table 1 over the cycles that have a report and a reflection time."""
+def delay_table(
+    verdicts: Iterable[Verdict], reflected_at: Mapping[int, float], hops: Optional[Mapping[int, Hop]] = None
+) -> dict[str, Stats]:
+    """Table 1 over the cycles that have a report and a reflection time; ``hops``: the gateway's marks of
+    each cycle's report (:func:`cycle_hops`), without which the split rows have no sample."""
     samples: dict[str, list[float]] = {row: [] for row in ROWS}
     for verdict in verdicts:
         if verdict.report is None or verdict.cycle not in reflected_at:
             continue
-        for row, value in decompose(verdict, reflected_at[verdict.cycle]).items():
+        hop = hops.get(verdict.cycle) if hops is not None else None
+        for row, value in decompose(verdict, reflected_at[verdict.cycle], hop).items():
             samples[row].append(value)
     return {row: Stats.of(values) for row, values in samples.items()}
 
 
+def cycle_hops(hops: Sequence[Hop]) -> dict[int, Hop]:
+    """The robot's reports by cycle: it sends exactly one update per cycle, from cycle 0, so its k-th
+    message through the gateway is cycle k's report."""
+    return dict(enumerate(hops))
+
+
 def format_table(table: Mapping[str, Stats]) -> str:
-    """Table 1's form as a Markdown table (ms)."""
+    """Table 1's form as a Markdown table (ms); rows without samples are left out."""
     count = max((s.count for s in table.values()), default=0)
     lines = [f"| delay ({count} cycles, ms) | mean | max | min | std |", "|---|---:|---:|---:|---:|"]
     for row, s in table.items():
+        if s.count == 0:
+            continue
         lines.append(f"| {row} | {s.mean:.3f} | {s.max:.3f} | {s.min:.3f} | {s.std:.3f} |")
     return "\n".join(lines) + "\n"

@@ -8,12 +8,15 @@ runs the testbench, waits for the robot, and writes into the folder:
 - ``scenario.txt``: the stimulus file; ``robot.log``: the robot process's output;
 - ``trace.csv``: one row per cycle (:data:`~.plotter.TRACE_COLUMNS`);
 - ``trajectory.png``: robot vs reference (when matplotlib is installed);
-- ``delays.md``: the delay decomposition in Table 1's form.
+- ``delays.md``: the delay decomposition in Table 1's form;
+- ``gateway-trace.csv``: the in-process gateway's message trace, whose marks split the communication delay
+  (with ``rtig``, pass the file it writes with ``--trace`` as ``gateway_trace`` for the same).
 """
 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import pathlib
 import subprocess
 import sys
@@ -22,11 +25,12 @@ from importlib import resources
 from typing import Callable, Iterator, Optional
 
 from hlacore import rti
+from hlacore.trace import hops
 from hlacore.federates.de import HlaDirector
 from hlacore.federates.robot_driver.navigation import Scenario, scenario_named
 
 from .bench import Testbench, TestbenchResult
-from .delays import format_table
+from .delays import cycle_hops, delay_table, format_table
 from .plotter import write_plot, write_trace
 
 __all__ = ["ExperimentOptions", "Experiment", "run_experiment", "write_outputs"]
@@ -48,6 +52,7 @@ class ExperimentOptions:
     precision: float = 0.25
     federation: str = "TestFed"
     timeout: float = 60.0
+    gateway_trace: Optional[pathlib.Path] = None  # what `rtig --trace` writes, when rtig is given
 
 
 @dataclass
@@ -61,13 +66,13 @@ class Experiment:
 
 
 @contextlib.contextmanager
-def _gateway(address: Optional[str]) -> Iterator[str]:
+def _gateway(address: Optional[str], trace: pathlib.Path) -> Iterator[str]:
     if address is not None:
         yield address
         return
     from hlacore.gateway import Gateway
 
-    with Gateway(port=0) as gateway:
+    with Gateway(port=0, trace=trace) as gateway:
         yield str(gateway.address)
 
 
@@ -97,7 +102,8 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
     calibration = "miscalibrated" if options.miscalibrated else "calibrated"
     # Best effort: the model keeps the pace of a straight cell (2 simulated seconds per cycle).
     pace = max(2.0 * options.time_scale, 0.01) if options.best_effort else None
-    with _gateway(options.rtig) as address:
+    trace = out / "gateway-trace.csv" if options.rtig is None else options.gateway_trace
+    with _gateway(options.rtig, out / "gateway-trace.csv") as address:
         write(f"gateway {address} ({'in-process' if options.rtig is None else 'rtig'}); "
               f"{calibration} robot, {mode} mode, {options.cycles} cycles; output in {out}")
         director = HlaDirector.join("testbench", options.federation, fom, address=address, mode="TAR",
@@ -123,6 +129,10 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
             director.rtia.destroyFederationExecution(options.federation)
         except getattr(rti, "FederatesCurrentlyJoined"):
             pass
+    if trace is not None:
+        # The gateway's marks split the robot -> testbench delay into its three hops.
+        by_cycle = cycle_hops(hops(trace, "robot", "testbench", options.federation))
+        result = dataclasses.replace(result, delays=delay_table(result.verdicts, result.reflected_at, by_cycle))
     title = f"{scenario.width}x{scenario.height}, {calibration}, {mode}"
     messages = write_outputs(out, result, scenario, title)
     return Experiment(result, out, int(robot.returncode), messages)

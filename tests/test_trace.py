@@ -4,6 +4,7 @@ time.monotonic() reads, and a timestamp-ordered one only leaves once the receive
 
 from __future__ import annotations
 
+import contextlib
 import pathlib
 import subprocess
 import time
@@ -30,11 +31,21 @@ def traced(request: pytest.FixtureRequest, tmp_path: pathlib.Path) -> Iterator[t
             yield server.address, trace
 
 
-def test_each_message_is_stamped_in_and_out_in_order(traced: tuple[str, pathlib.Path]) -> None:
-    address, trace = traced
+@contextlib.contextmanager
+def sender_and_receiver(address: str) -> Iterator[tuple[Federate, Federate]]:
+    """Federates "sender" and "receiver" in TraceFed; on exit they leave and the trace has been flushed."""
     creator = rti.RTIAmbassador(address)
     creator.createFederationExecution("TraceFed", ROBOT_FED)
-    a, b = Federate(address, "sender", "TraceFed"), Federate(address, "receiver", "TraceFed")
+    pair = Federate(address, "sender", "TraceFed"), Federate(address, "receiver", "TraceFed")
+    yield pair
+    for fed in pair:
+        fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+    creator.destroyFederationExecution("TraceFed")
+    time.sleep(0.1)  # the gateway flushes its trace once per turn of its loop
+
+
+def robot_location(a: Federate, b: Federate) -> tuple[rti.ObjectHandle, rti.AttributeHandle]:
+    """a registers a robot whose location b subscribes to and has discovered."""
     robot = a.rtia.getObjectClassHandle("robot")
     location = a.rtia.getAttributeHandle("location", robot)
     a.rtia.publishObjectClass(robot, [location])
@@ -42,15 +53,18 @@ def test_each_message_is_stamped_in_and_out_in_order(traced: tuple[str, pathlib.
     barrier(b.rtia)
     obj = a.rtia.registerObjectInstance(robot, "r1")
     tick_until(lambda: bool(b.amb.named("discoverObjectInstance")), b.rtia)
-    before = time.monotonic()
-    for k in range(5):
-        a.rtia.updateAttributeValues(obj, {location: str(k).encode()}, "ro")
-    tick_until(lambda: len(b.amb.named("reflectAttributeValues")) == 5, b.rtia)
-    after = time.monotonic()
-    for fed in (a, b):
-        fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-    creator.destroyFederationExecution("TraceFed")
-    time.sleep(0.1)  # the gateway flushes its trace once per turn of its loop
+    return obj, location
+
+
+def test_each_message_is_stamped_in_and_out_in_order(traced: tuple[str, pathlib.Path]) -> None:
+    address, trace = traced
+    with sender_and_receiver(address) as (a, b):
+        obj, location = robot_location(a, b)
+        before = time.monotonic()
+        for k in range(5):
+            a.rtia.updateAttributeValues(obj, {location: str(k).encode()}, "ro")
+        tick_until(lambda: len(b.amb.named("reflectAttributeValues")) == 5, b.rtia)
+        after = time.monotonic()
 
     events = [row.event for row in read_trace(trace)]
     assert events.count("join") == 2 and events.count("update") == 5 and events.count("reflect") == 5
@@ -64,28 +78,16 @@ def test_each_message_is_stamped_in_and_out_in_order(traced: tuple[str, pathlib.
 
 def test_a_timestamped_update_leaves_when_the_receivers_grant_allows(traced: tuple[str, pathlib.Path]) -> None:
     address, trace = traced
-    creator = rti.RTIAmbassador(address)
-    creator.createFederationExecution("TraceFed", ROBOT_FED)
-    a, b = Federate(address, "sender", "TraceFed"), Federate(address, "receiver", "TraceFed")
-    robot = a.rtia.getObjectClassHandle("robot")
-    location = a.rtia.getAttributeHandle("location", robot)
-    a.rtia.publishObjectClass(robot, [location])
-    b.rtia.subscribeObjectClassAttributes(robot, [location])
-    barrier(b.rtia)
-    obj = a.rtia.registerObjectInstance(robot, "r1")
-    tick_until(lambda: bool(b.amb.named("discoverObjectInstance")), b.rtia)
-    a.enable_time(lookahead=1.0, constrained=False)
-    b.enable_time(lookahead=None)
-    a.rtia.updateAttributeValues(obj, {location: b"at 5"}, "tso", 5.0)
-    barrier(a.rtia)  # the gateway has the update queued for b
-    requested = time.monotonic()
-    b.rtia.timeAdvanceRequest(10.0)
-    a.rtia.timeAdvanceRequest(20.0)  # lets b's LBTS pass 5
-    tick_until(lambda: bool(b.amb.named("reflectAttributeValues")), b.rtia, a.rtia)
-    for fed in (a, b):
-        fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-    creator.destroyFederationExecution("TraceFed")
-    time.sleep(0.1)
+    with sender_and_receiver(address) as (a, b):
+        obj, location = robot_location(a, b)
+        a.enable_time(lookahead=1.0, constrained=False)
+        b.enable_time(lookahead=None)
+        a.rtia.updateAttributeValues(obj, {location: b"at 5"}, "tso", 5.0)
+        barrier(a.rtia)  # the gateway has the update queued for b
+        requested = time.monotonic()
+        b.rtia.timeAdvanceRequest(10.0)
+        a.rtia.timeAdvanceRequest(20.0)  # lets b's LBTS pass 5
+        tick_until(lambda: bool(b.amb.named("reflectAttributeValues")), b.rtia, a.rtia)
 
     (hop,) = hops(trace, "sender", "receiver", "TraceFed")
     assert hop.time == 5.0
@@ -94,19 +96,14 @@ def test_a_timestamped_update_leaves_when_the_receivers_grant_allows(traced: tup
 
 def test_interactions_are_traced_too(traced: tuple[str, pathlib.Path]) -> None:
     address, trace = traced
-    creator = rti.RTIAmbassador(address)
-    creator.createFederationExecution("TraceFed", ROBOT_FED)
-    a, b = Federate(address, "sender", "TraceFed"), Federate(address, "receiver", "TraceFed")
-    cls = a.rtia.getInteractionClassHandle("reply")
-    a.rtia.publishInteractionClass(cls)
-    b.rtia.subscribeInteractionClass(cls)
-    barrier(b.rtia)
-    a.rtia.sendInteraction(cls, {}, "hello")
-    tick_until(lambda: bool(b.amb.named("receiveInteraction")), b.rtia)
-    for fed in (a, b):
-        fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-    creator.destroyFederationExecution("TraceFed")
-    time.sleep(0.1)
+    with sender_and_receiver(address) as (a, b):
+        reply = a.rtia.getInteractionClassHandle("reply")
+        a.rtia.publishInteractionClass(reply)
+        b.rtia.subscribeInteractionClass(reply)
+        barrier(b.rtia)
+        a.rtia.sendInteraction(reply, {}, "hello")
+        tick_until(lambda: bool(b.amb.named("receiveInteraction")), b.rtia)
+
     events = [row.event for row in read_trace(trace)]
     assert events.count("interaction") == 1 and events.count("receive") == 1
     assert len(hops(trace, "sender", "receiver")) == 1

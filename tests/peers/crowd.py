@@ -18,6 +18,7 @@ import sys
 import time
 
 import hlacore.rti as rti
+from peerlib import linger
 
 
 class Ambassador(rti.FederateAmbassador):
@@ -90,9 +91,7 @@ def main() -> None:
         for rtia, _ in feds:
             rtia.timeAdvanceRequest(args.tar)
     print("ready " + " ".join(map(str, handles)), flush=True)
-    deadline = time.monotonic() + 120
-    while time.monotonic() < deadline:
-        time.sleep(0.2)
+    linger(120)
 
 
 if __name__ == "__main__":

@@ -14,48 +14,20 @@ Prints {"name", "steps", "received", "last": {sender: last sequence number}, "er
 """
 
 import argparse
-import json
-import sys
 import time
 
 import hlacore.rti as rti
+from peerlib import PeerAmbassador, join_lockstep, say, tick_until
 
 
-def say(**fields):
-    print(json.dumps(fields), flush=True)
-
-
-class Ambassador(rti.FederateAmbassador):
+class Ambassador(PeerAmbassador):
     def __init__(self):
-        self.announced = False
-        self.synchronized = False
-        self.enabled = 0
+        super().__init__()
         self.step = []  # (time, sending federate handle, value) since the last grant
-
-    def timeRegulationEnabled(self, time):
-        self.enabled += 1
-
-    def timeConstrainedEnabled(self, time):
-        self.enabled += 1
-
-    def announceSynchronizationPoint(self, label, tag):
-        self.announced = True
-
-    def federationSynchronized(self, label):
-        self.synchronized = True
 
     def reflectAttributeValues(self, obj, attributes, tag, order, transport, time=None, retraction=None):
         for value in attributes.values():
             self.step.append((time, int(retraction.sendingFederate) if retraction else None, bytes(value)))
-
-
-def tick_until(rtia, predicate, timeout):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        if time.monotonic() > deadline:
-            say(error="timeout")
-            sys.exit(3)
-        rtia.tick(0.05, 0.1)
 
 
 def main():
@@ -71,21 +43,12 @@ def main():
     victims = set(filter(None, args.victims.split(",")))
     others = [n for n in names if n != args.name]
 
-    rtia = rti.RTIAmbassador(args.address)
     amb = Ambassador()
-    rtia.joinFederationExecution(args.name, "TestFed", amb)
-    robot = rtia.getObjectClassHandle("robot")
-    location = rtia.getAttributeHandle("location", robot)
-    rtia.publishObjectClass(robot, [location])
-    rtia.subscribeObjectClassAttributes(robot, [location])
-    obj = rtia.registerObjectInstance(robot, args.name)
-    rtia.enableTimeRegulation(0.0, 1.0)
-    rtia.enableTimeConstrained()
-    tick_until(rtia, lambda: amb.enabled == 2, 60)
+    rtia, location, obj = join_lockstep(args.address, args.name, amb)
     say(ready=True)
-    tick_until(rtia, lambda: amb.announced, 120)
+    tick_until(rtia, lambda: "start" in amb.announced, 120)
     rtia.synchronizationPointAchieved("start")
-    tick_until(rtia, lambda: amb.synchronized, 120)
+    tick_until(rtia, lambda: "start" in amb.synchronized, 120)
 
     errors = []
     last = {n: 0 for n in others}

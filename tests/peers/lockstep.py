@@ -10,68 +10,30 @@ in timestamp order (ties by sending federate). Prints {"name", "steps", "receive
 "seconds"} and resigns. With --stall it stops after synchronizing and sleeps (to be killed).
 """
 
-import json
 import sys
 import time
 
 import hlacore.rti as rti
+from peerlib import PeerAmbassador, join_lockstep, say, synchronize
 
 
-def say(**fields):
-    print(json.dumps(fields), flush=True)
-
-
-class Ambassador(rti.FederateAmbassador):
+class Ambassador(PeerAmbassador):
     def __init__(self):
-        self.announced = False
-        self.synchronized = False
+        super().__init__()
         self.step_reflections = []
-        self.enabled = 0
-
-    def timeRegulationEnabled(self, time):
-        self.enabled += 1
-
-    def timeConstrainedEnabled(self, time):
-        self.enabled += 1
-
-    def announceSynchronizationPoint(self, label, tag):
-        self.announced = True
-
-    def federationSynchronized(self, label):
-        self.synchronized = True
 
     def reflectAttributeValues(self, obj, attributes, tag, order, transport, time=None, retraction=None):
         for value in attributes.values():
             self.step_reflections.append((time, retraction.sendingFederate if retraction else None, value))
 
 
-def tick_until(rtia, predicate, timeout=30.0):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        if time.monotonic() > deadline:
-            say(error="timeout")
-            sys.exit(3)
-        rtia.tick(0.05, 0.1)
-
-
 def main():
     address, name, steps, federates = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
     stall = "--stall" in sys.argv[5:]
-    rtia = rti.RTIAmbassador(address)
     amb = Ambassador()
-    rtia.joinFederationExecution(name, "TestFed", amb)
-    robot = rtia.getObjectClassHandle("robot")
-    location = rtia.getAttributeHandle("location", robot)
-    rtia.publishObjectClass(robot, [location])
-    rtia.subscribeObjectClassAttributes(robot, [location])
-    obj = rtia.registerObjectInstance(robot, name)
-    rtia.enableTimeRegulation(0.0, 1.0)
-    rtia.enableTimeConstrained()
-    tick_until(rtia, lambda: amb.enabled == 2)
+    rtia, location, obj = join_lockstep(address, name, amb)
     say(ready=True)
-    tick_until(rtia, lambda: amb.announced)
-    rtia.synchronizationPointAchieved("start")
-    tick_until(rtia, lambda: amb.synchronized)
+    synchronize(rtia, amb)
     if stall:
         time.sleep(120)
         return

@@ -7,9 +7,9 @@ request); it exits by itself after 60 s as a safety net.
 """
 
 import sys
-import time
 
 import hlacore.rti as rti
+from peerlib import linger, tick_until
 
 
 class Ambassador(rti.FederateAmbassador):
@@ -22,15 +22,6 @@ class Ambassador(rti.FederateAmbassador):
 
     def attributeOwnershipAcquisitionNotification(self, obj, attributes):
         self.acquired.update(attributes)
-
-
-def tick_until(rtia, predicate, timeout=10.0):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        if time.monotonic() > deadline:
-            print("timeout", flush=True)
-            sys.exit(3)
-        rtia.tick(0.05, 0.1)
 
 
 def main():
@@ -48,9 +39,7 @@ def main():
     tick_until(rtia, lambda: amb.acquired == {location, battery})
     rtia.updateAttributeValues(obj, {location: b"victim"}, "alive")
     print(f"owner {int(handle)}", flush=True)
-    deadline = time.monotonic() + 60
-    while time.monotonic() < deadline:
-        time.sleep(0.2)
+    linger(60)
 
 
 if __name__ == "__main__":

@@ -6,34 +6,22 @@ whole federation; after both are synchronized the sender registers a robot, upda
 exact bytes and sends a command; the receiver answers the command with a reply carrying the same value.
 """
 
-import json
 import sys
-import time
 
 import hlacore.rti as rti
+from peerlib import PeerAmbassador, say, synchronize, tick_until
 
 LOCATION = bytes(range(256)) + b"\x00tail"
 COMMAND = b"go\x00\xff\xfe"
 
 
-def say(**fields):
-    print(json.dumps(fields), flush=True)
-
-
-class Ambassador(rti.FederateAmbassador):
+class Ambassador(PeerAmbassador):
     def __init__(self):
-        self.announced = set()
-        self.synchronized = set()
+        super().__init__()
         self.discovered = []
         self.reflected = []
         self.interactions = []
         self.removed = []
-
-    def announceSynchronizationPoint(self, label, tag):
-        self.announced.add(label)
-
-    def federationSynchronized(self, label):
-        self.synchronized.add(label)
 
     def discoverObjectInstance(self, obj, cls, name):
         self.discovered.append((obj, cls, name))
@@ -46,15 +34,6 @@ class Ambassador(rti.FederateAmbassador):
 
     def removeObjectInstance(self, obj, tag, time=None, retraction=None):
         self.removed.append(obj)
-
-
-def tick_until(rtia, predicate, timeout=10.0):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        if time.monotonic() > deadline:
-            say(error="timeout")
-            sys.exit(3)
-        rtia.tick(0.05, 0.1)
 
 
 def main():
@@ -74,9 +53,7 @@ def main():
         rtia.subscribeInteractionClass(command)
         rtia.publishInteractionClass(reply)
         say(joined=True)
-        tick_until(rtia, lambda: "start" in amb.announced)
-        rtia.synchronizationPointAchieved("start")
-        tick_until(rtia, lambda: "start" in amb.synchronized)
+        synchronize(rtia, amb)
         tick_until(rtia, lambda: amb.reflected and amb.interactions)
         _, params, _ = amb.interactions[0]
         rtia.sendInteraction(reply, {reply_value: params[value]}, "reply")
@@ -98,9 +75,7 @@ def main():
         rtia.publishInteractionClass(command)
         rtia.subscribeInteractionClass(reply)
         rtia.registerFederationSynchronizationPoint("start", "both joined")
-        tick_until(rtia, lambda: "start" in amb.announced)
-        rtia.synchronizationPointAchieved("start")
-        tick_until(rtia, lambda: "start" in amb.synchronized)
+        synchronize(rtia, amb)
         obj = rtia.registerObjectInstance(robot, "robot-1")
         rtia.updateAttributeValues(obj, {location: LOCATION}, "first fix")
         rtia.sendInteraction(command, {name: b"move", value: COMMAND}, "cmd")

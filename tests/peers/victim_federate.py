@@ -7,9 +7,9 @@ It never ticks, so it never achieves a synchronization point. It exits by itself
 from __future__ import annotations
 
 import sys
-import time
 
 import hlacore.rti as rti
+from peerlib import linger
 
 
 class Silent(rti.FederateAmbassador):
@@ -25,9 +25,7 @@ def main() -> None:
     obj = rtia.registerObjectInstance(robot, "victim")
     rtia.updateAttributeValues(obj, {location: b"here"}, "alive")
     print(f"ready {int(handle)} {int(obj)}", flush=True)
-    deadline = time.monotonic() + 60
-    while time.monotonic() < deadline:
-        time.sleep(0.2)
+    linger(60)
 
 
 if __name__ == "__main__":

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Build the libFuzzer targets of cpp/fuzz with clang (installed from Debian's packages when missing) into
 # build/fuzz/, then run each for SECONDS (default 60) from the committed seed corpus:
-#   fuzz_wire  next_frame + decode of arbitrary bytes (seeds: cpp/fuzz/corpus/wire/, make_wire_seeds.py)
+#   fuzz_wire  next_frame + decode of arbitrary bytes (seeds: cpp/fuzz/corpus/wire/ from make_wire_seeds.py,
+#              and a sample frame of every message written by wire_seeds into build/fuzz/seeds-wire/)
 #   fuzz_fed   fom::parse_fed of arbitrary text (seeds: tests/data/fed/good and bad, dictionary fed.dict)
 #   fuzz_gateway  a joined federate's arbitrary bytes to a real in-process Gateway (seeds: the wire corpus)
 # and replay the committed regression inputs (cpp/fuzz/regressions/). A crash leaves its input in
@@ -50,8 +51,10 @@ mkdir -p build/fuzz
 .venv/bin/cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
     -DHLACORE_FUZZ=ON -DHLACORE_PYTHON=OFF -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" \
     >build/fuzz-configure.log 2>&1 || { cat build/fuzz-configure.log; exit 1; }
-.venv/bin/cmake --build build/fuzz --target fuzz_wire fuzz_fed fuzz_gateway >build/fuzz-build.log 2>&1 \
+.venv/bin/cmake --build build/fuzz --target fuzz_wire fuzz_fed fuzz_gateway wire_seeds >build/fuzz-build.log 2>&1 \
     || { cat build/fuzz-build.log; exit 1; }
+# A sample frame of every message (the committed seeds are hand-written and may lag the message list).
+rm -rf build/fuzz/seeds-wire && mkdir -p build/fuzz/seeds-wire && build/fuzz/wire_seeds build/fuzz/seeds-wire
 [ "$build_only" = 1 ] && exit 0
 
 status=0
@@ -66,7 +69,7 @@ for target in wire fed gateway; do
     # New inputs go to a scratch corpus under build/, the committed seeds are read only.
     mkdir -p build/fuzz/corpus-$target build/fuzz/artifacts
     case $target in
-        wire | gateway) inputs=(cpp/fuzz/corpus/wire) ;;
+        wire | gateway) inputs=(cpp/fuzz/corpus/wire build/fuzz/seeds-wire) ;;
         fed) inputs=(-dict=cpp/fuzz/fed.dict tests/data/fed/good tests/data/fed/bad) ;;
     esac
     log=build/fuzz/run-$target.log

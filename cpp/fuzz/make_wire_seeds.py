@@ -1,5 +1,6 @@
 """Writes the wire fuzzer's seed corpus (cpp/fuzz/corpus/wire/): valid frames of most message types, one file
-each, plus a few multi-frame streams as a federate would send them. Field layouts follow
+each, plus a few multi-frame streams as a federate would send them (every message also gets a generated
+sample frame from wire_seeds.cpp, so this list may lag the message list). Field layouts follow
 cpp/rti/wire/messages.hpp (little-endian; string = u32 length + bytes; vector = u32 count + elements;
 optional time = u8 flag [+ f64]). Run it again after changing the message list: python3 make_wire_seeds.py"""
 

@@ -1,7 +1,8 @@
 """Paper 2 §6.2 end to end: ``python -m hlacore.federates.mirror`` against a real rtig and a real roscore
 (both started here, ended by pid). The command runs the world federate and the ROS bridge; the robot
 federate (with its simulated device process on a pty) and the ROS robot's rospy node are processes of
-their own. The checks read the command's JSON summary, its CSV trace and its PNG.
+their own. The checks read the command's JSON summary, its CSV trace and its PNG. Last, a robot whose
+mirror never appears (in-process gateway, no ROS).
 
 Figures (ours, docs/mirror.md): a 0.4 m box 1.6 m ahead; a robot clears it when its centre stays more than
 its half diagonal (0.233 m) from the box; the defective wheel is the right wheel 5 % slow.
@@ -138,3 +139,19 @@ def test_mirror_of_the_odometry_redetects_the_box(roscore: dict[str, str], rtig:
     with open(tmp_path / "mirror-trace.csv", newline="") as f:
         rows = list(csv.DictReader(f))
     assert any((r["linear"], r["angular"]) != (r["mirror_linear"], r["mirror_angular"]) for r in rows)
+
+
+def test_robot_without_its_mirror_times_out_and_leaves(inprocess_gateway: Any) -> None:
+    """No world robot of that name in the federation: joining raises a TimeoutError naming it, and the
+    robot has resigned (the federation can be destroyed at once)."""
+    import hlacore.rti as rti
+    from hlacore.federates.robot_driver.avoid import OpenLoopAvoid
+    from hlacore.federates.robot_driver.mirrored import MirroredRobotFederate
+    from hlacore.federates.robot_world import FEDERATION
+
+    address = str(inprocess_gateway.address)
+    robot = MirroredRobotFederate(None, OpenLoopAvoid(), mirror="nobody", address=address)  # type: ignore[arg-type]
+    with pytest.raises(TimeoutError, match="the mirror robot 'nobody'"):
+        robot.join(timeout=0.5)
+    assert robot.rtia is None
+    rti.RTIAmbassador(address).destroyFederationExecution(FEDERATION)

@@ -89,13 +89,15 @@ def test_open_loop_controller_plays_the_side_step_then_goes_on() -> None:
     p = AvoidParams()
     control = OpenLoopAvoid(p)
     assert control.decide((0.0, 0.0, 0.0), 1.5) == (p.speed, 0.0) and control.mode == "forward"
-    plan = [control.decide((9.0, 9.0, 9.0), 2.0 if k else 0.3) for k in range(14)]  # the pose is ignored
-    modes = [control.mode]
-    assert control.avoidances == 1 and modes == ["turn-right"]
-    turns = sum(w for v, w in plan if v == 0.0) * p.cycle
+    plan, modes = [], []
+    for k in range(14):  # the pose is ignored; the range only matters before the manoeuvre
+        plan.append(control.decide((9.0, 9.0, 9.0), 0.3 if k == 0 else 2.0))
+        modes.append(control.mode)
+    assert modes == ["turn-left"] * 4 + ["sidestep"] * 6 + ["turn-right"] * 4 and control.avoidances == 1
     assert sum(w * p.cycle for v, w in plan[:4]) == pytest.approx(math.pi / 2)
-    assert turns == pytest.approx(0.0, abs=1e-12)  # left then right
+    assert sum(w * p.cycle for v, w in plan) == pytest.approx(0.0, abs=1e-12)  # left then right
     assert sum(v * p.cycle for v, w in plan) == pytest.approx(p.sidestep)
+    assert control.decide((0.0, 0.0, 0.0), 2.0) == (p.speed, 0.0) and control.mode == "forward"
     assert control.decide((0.0, 0.0, 0.0), 0.3) == (0.0, pytest.approx(math.pi / 4))  # detected again
 
 

@@ -29,7 +29,7 @@ from hlacore.federates.robot_world import codec
 from .avoid import CorrectedAvoid, OpenLoopAvoid, wrap
 from .driver import TxRxDriver
 
-__all__ = ["MirroredRobotFederate", "CycleRecord", "executed_velocity", "MIRROR_SOURCES"]
+__all__ = ["MirroredRobotFederate", "CycleRecord", "executed_velocity", "record_json", "MIRROR_SOURCES"]
 
 _AlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
 #: What the mirror is sent: the commanded velocities, or those the odometry measured.
@@ -124,6 +124,14 @@ class MirroredRobotFederate:
             pass
         rtia.joinFederationExecution(f"robot_{self.name}", codec.FEDERATION, self._amb)
         self.rtia = rtia
+        try:
+            self._declare_and_enable(timeout)
+        except BaseException:
+            self.resign()
+            raise
+
+    def _declare_and_enable(self, timeout: float) -> None:
+        rtia = self._rtia()
         amb = self._amb
         robot = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
         self._attrs = {n: rtia.getAttributeHandle(n, robot) for n in codec.ATTRIBUTES}

@@ -179,9 +179,25 @@ def run(address: str, corrected: bool = False, defective_wheel: float = 0.0, cyc
                 failure.append(exc)
                 bridge.stop()
 
+        finished = threading.Event()
+        ros_node = node
+
+        def watch_node() -> None:
+            # a dead node would leave the bridge waiting ``await_inputs`` at every grant: end the run instead
+            while not finished.wait(0.2):
+                if ros_node.poll() is not None:
+                    failure.append(RuntimeError(f"the ROS node ended early (status {ros_node.returncode}): "
+                                                f"{node_out.lines[-20:]}"))
+                    bridge.stop()
+                    return
+
         thread = threading.Thread(target=run_world, name="world")
         thread.start()
+        threading.Thread(target=watch_node, name="watch-node", daemon=True).start()
         bridge.spin(until=duration, cycle_timeout=0.05)
+        finished.set()
+        if failure:
+            bridge.close()  # resigned: the world's remaining grants no longer wait for the bridge
         thread.join(cycle_timeout)
         if failure:
             raise failure[0]

@@ -25,7 +25,7 @@ from typing import Callable, Optional, Sequence
 
 from .kinematics import Body, Calibration
 from .navigation import Scenario
-from .protocol import COMMANDS, format_reply
+from .protocol import COMMANDS, DRIVE, format_reply, parse_drive
 
 __all__ = ["DeviceServer", "SimulatedDevice", "spawn_simulated_device", "main"]
 
@@ -46,6 +46,15 @@ class DeviceServer:
         """The reply to one request line (without its newline)."""
         command = line.decode("ascii", "replace").strip()
         body = self.body
+        if command.split(" ", 1)[0] == DRIVE:
+            try:
+                linear, angular, nominal = parse_drive(command.split()[1:])
+            except ValueError as error:
+                return format_reply(error=str(error))
+            seconds = body.drive_velocity(linear, angular, nominal)
+            if self.time_scale > 0:
+                self._sleep(seconds * self.time_scale)
+            return format_reply((seconds,))
         if command not in COMMANDS:
             return format_reply(error=f"unknown command {command!r}")
         if command == "readSensors":
@@ -120,6 +129,7 @@ def spawn_simulated_device(
     time_scale: float = 0.0,
     heading_deg: float = 90.0,
     idle_timeout: float = 120.0,
+    open_floor: bool = False,
 ) -> SimulatedDevice:
     """Start the device process on a new pty; returns it with the slave path for the driver."""
     master, slave = os.openpty()
@@ -130,7 +140,8 @@ def spawn_simulated_device(
             "--world", scenario.to_text(), "--time-scale", repr(time_scale), "--heading", repr(heading_deg),
             "--motor-time-error", repr(calibration.motor_time_error), "--friction", repr(calibration.friction),
             "--wheel-bias", repr(calibration.wheel_bias), "--idle-timeout", repr(idle_timeout),
-        ]
+            "--defective-wheel", repr(calibration.defective_wheel),
+        ] + (["--open-floor"] if open_floor else [])
         process = subprocess.Popen(args, pass_fds=(master,), stdin=subprocess.DEVNULL)
     except BaseException:
         os.close(slave)
@@ -150,10 +161,12 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--motor-time-error", type=float, default=0.0)
     parser.add_argument("--friction", type=float, default=0.0)
     parser.add_argument("--wheel-bias", type=float, default=0.0)
+    parser.add_argument("--defective-wheel", type=float, default=0.0, help="fraction of speed the right wheel loses")
+    parser.add_argument("--open-floor", action="store_true", help="no wall or border stops the body")
     parser.add_argument("--idle-timeout", type=float, default=120.0, help="exit after this long without input")
     args = parser.parse_args(argv)
-    calibration = Calibration(args.motor_time_error, args.friction, args.wheel_bias)
-    body = Body(Scenario.parse(args.world), calibration, args.heading)
+    calibration = Calibration(args.motor_time_error, args.friction, args.wheel_bias, args.defective_wheel)
+    body = Body(Scenario.parse(args.world), calibration, args.heading, open_floor=args.open_floor)
     try:
         DeviceServer(body, args.time_scale).serve(args.fd, args.idle_timeout)
     except KeyboardInterrupt:

@@ -12,7 +12,7 @@ import select
 import time
 from typing import Any, Protocol
 
-from .protocol import Reply, encode_request, parse_reply
+from .protocol import Reply, encode_drive, encode_request, parse_reply
 
 __all__ = ["Transport", "FdTransport", "SerialTransport", "TxRxDriver", "Pose", "Ranges"]
 
@@ -144,6 +144,12 @@ class TxRxDriver:
     def command(self, name: str) -> float:
         """Any motor command by its protocol name; returns the simulated seconds."""
         return self.request(name).fields[0]
+
+    def drive(self, linear: float, angular: float, seconds: float) -> float:
+        """``drive``: motors at ``linear`` m/s and ``angular`` rad/s for ``seconds``; returns the simulated
+        seconds the motors ran (ValueError before sending for non-finite numbers or a bad duration)."""
+        self.transport.write(encode_drive(linear, angular, seconds))
+        return parse_reply(self.transport.read_line(self.timeout)).fields[0]
 
     def read_sensors(self) -> Ranges:
         """``readSensors``: front, left and right distances in metres."""

@@ -6,7 +6,12 @@ A :class:`Calibration` describes how the real robot departs from it:
 * ``motor_time_error``: the motors run ``(1 + e)`` times the nominal time (moves too long or too short);
 * ``friction``: the wheels lose this fraction of their speed (moves and turns fall short);
 * ``wheel_bias``: the right wheel is ``(1 + bias/2)`` and the left ``(1 - bias/2)`` times as fast, so a
-  straight move curves (to the left for a positive bias).
+  straight move curves (to the left for a positive bias);
+* ``defective_wheel``: the right wheel loses this fraction of its speed (paper 2 §6.2's modified wheel):
+  forward moves curve to the right and turns in place fall short.
+
+Besides the protocol's unit moves, :meth:`Body.drive_velocity` runs the motors at a linear and an angular
+velocity for a time (the wheels' speeds follow from them), as a ROS robot is driven by cmd_vel.
 
 The body moves in small steps; it stops (stalls) where the next step would enter a wall cell or leave the
 grid, as a real robot stopped by a wall. The range sensors measure the distance along a ray to the first
@@ -39,6 +44,7 @@ class Calibration:
     motor_time_error: float = 0.0
     friction: float = 0.0
     wheel_bias: float = 0.0
+    defective_wheel: float = 0.0
 
 
 CALIBRATED = Calibration()
@@ -49,8 +55,11 @@ MISCALIBRATED = Calibration(motor_time_error=0.08, friction=0.05, wheel_bias=0.0
 class Body:
     """Pose ``(x, y, heading)`` in metres and radians on ``scenario``'s floor, moved by motor commands."""
 
-    def __init__(self, scenario: Scenario, calibration: Calibration = CALIBRATED, heading_deg: float = 90.0) -> None:
+    def __init__(self, scenario: Scenario, calibration: Calibration = CALIBRATED, heading_deg: float = 90.0,
+                 open_floor: bool = False) -> None:
         self.scenario = scenario
+        #: No wall and no border stops the body (a lab floor whose obstacles are virtual ones).
+        self.open_floor = open_floor
         self.calibration = calibration
         self.x = scenario.start[0] * CELL
         self.y = scenario.start[1] * CELL
@@ -64,6 +73,8 @@ class Body:
         return (round(self.x / CELL), round(self.y / CELL))
 
     def _blocked(self, x: float, y: float) -> bool:
+        if self.open_floor:
+            return False
         return not self.scenario.free((round(x / CELL), round(y / CELL)))
 
     def drive(self, direction: int, nominal: float) -> float:
@@ -71,7 +82,7 @@ class Body:
         c = self.calibration
         duration = nominal * (1 + c.motor_time_error)
         speed = LINEAR_SPEED * (1 - c.friction)
-        right, left = speed * (1 + c.wheel_bias / 2), speed * (1 - c.wheel_bias / 2)
+        right, left = speed * (1 + c.wheel_bias / 2) * (1 - c.defective_wheel), speed * (1 - c.wheel_bias / 2)
         self._integrate(direction * (right + left) / 2, direction * (right - left) / TRACK, duration)
         return duration
 
@@ -79,7 +90,20 @@ class Body:
         """Rotate in place, ``direction`` +1 left (counter-clockwise), -1 right; returns the real time."""
         c = self.calibration
         duration = nominal * (1 + c.motor_time_error)
+        if c.defective_wheel:
+            return self.drive_velocity(0.0, direction * TURN_RATE, nominal)
         self._integrate(0.0, direction * TURN_RATE * (1 - c.friction), duration)
+        return duration
+
+    def drive_velocity(self, linear: float, angular: float, nominal: float) -> float:
+        """Motors at ``linear`` m/s and ``angular`` rad/s (counter-clockwise) for ``nominal`` seconds, through
+        the wheels and the calibration; returns the real time the motors ran."""
+        c = self.calibration
+        duration = nominal * (1 + c.motor_time_error)
+        scale = 1 - c.friction
+        right = (linear + angular * TRACK / 2) * scale * (1 + c.wheel_bias / 2) * (1 - c.defective_wheel)
+        left = (linear - angular * TRACK / 2) * scale * (1 - c.wheel_bias / 2)
+        self._integrate((right + left) / 2, (right - left) / TRACK, duration)
         return duration
 
     def _integrate(self, v: float, omega: float, duration: float) -> None:
@@ -98,6 +122,8 @@ class Body:
         """Distance (m) from the centre along ``heading + relative_deg`` to the first wall or the border."""
         angle = self.heading + math.radians(relative_deg)
         limit = CELL * (self.scenario.width + self.scenario.height)
+        if self.open_floor:
+            return round(limit, 3)
         distance = 0.0
         while distance < limit:
             distance += _RANGE_STEP

@@ -1,0 +1,14 @@
+"""Paper 2 §6.2 (testing-rtes-hla-2016): a "real" robot mirrored by a world robot whose virtual sonar it
+reads, a third robot driven by a plain ROS node, the reference trajectory, and their comparison
+(docs/mirror.md).
+
+- :mod:`.scenario` — the world: two lanes, a box on each;
+- :mod:`.reference` — the ideal controller on an ideal body (computed);
+- :mod:`.node` — the ROS robot's controller, a plain rospy node;
+- :mod:`.run` — one run: world federate + bridge here, robot federate + device and the node as processes;
+- :mod:`.metrics` — Hausdorff distance between paths, box clearance;
+- :mod:`.outputs` — CSV trace and trajectory plot;
+- :mod:`.ros` — a roscore for the run when none is running.
+
+``python -m hlacore.federates.mirror --help`` runs it.
+"""

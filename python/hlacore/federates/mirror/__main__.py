@@ -1,0 +1,58 @@
+"""``python -m hlacore.federates.mirror [OUTDIR] [--defective-wheel [F]] [--corrected] [--mirror-from
+commands|odometry] [--cycles N] [--rtig HOST:PORT]``: paper 2 §6.2 in one command (docs/mirror.md).
+
+Without ``--rtig`` it runs an in-process gateway; without a ROS master at ``$ROS_MASTER_URI`` it starts
+``roscore`` on a free loopback port and stops it by pid at the end. Writes ``mirror-trace.csv`` and
+``mirror-trajectories.png`` (with matplotlib) into OUTDIR (default ``mirror-out``), prints the figures and
+one JSON summary line last; exits 0 when the run completed (the figures are for the reader to judge: a
+defective wheel is meant to diverge).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import json
+import pathlib
+from typing import Optional, Sequence
+
+import hlacore
+
+from .outputs import plot, write_trace
+from .ros import ros_master
+from .run import run
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """The command (see the module docstring)."""
+    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.mirror")
+    parser.add_argument("outdir", nargs="?", default="mirror-out")
+    parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default: an in-process gateway)")
+    parser.add_argument("--defective-wheel", nargs="?", type=float, const=0.05, default=0.0,
+                        help="the real robot's right wheel loses this fraction of its speed (alone: 0.05)")
+    parser.add_argument("--corrected", action="store_true", help="the control that corrects its pose each cycle")
+    parser.add_argument("--mirror-from", default="commands", choices=("commands", "odometry"))
+    parser.add_argument("--cycles", type=int, default=50, help="control cycles of 0.5 s")
+    args = parser.parse_args(argv)
+    with contextlib.ExitStack() as stack:
+        stack.enter_context(ros_master())
+        address = args.rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
+        result = run(address, args.corrected, args.defective_wheel, args.cycles, args.mirror_from)
+    out = pathlib.Path(args.outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    print(f"wrote {write_trace(result, out / 'mirror-trace.csv')}")
+    try:
+        print(f"wrote {plot(result, out / 'mirror-trajectories.png')}")
+    except ImportError as exc:
+        print(f"no trajectory plot: {exc}")
+    summary = result.summary()
+    for who in ("real", "mirror", "rosbot"):
+        f = summary[who]
+        print(f"{who:7s} {f['vs_reference']:.3f} m from the reference path, {f['box_clearance']:.3f} m from the box, "
+              f"ends at ({f['end'][0]:.2f}, {f['end'][1]:.2f}), avoidances {f.get('avoidances', '-')}")
+    print(json.dumps(summary), flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -51,6 +51,21 @@ class Controller:
 
 
 @dataclass
+class ObstacleDriver:
+    """The obstacles' driver: each crosses at ``speed`` until it has travelled ``travel`` m from where it
+    was first seen (y grows: they cross from the avatar's right to its left), then stops."""
+
+    speed: float = 0.3  # m/s
+    travel: float = 5.0  # m
+    starts: dict[str, float] = field(default_factory=dict)  # obstacle -> first y seen
+
+    def __call__(self, name: str, y: float) -> float:
+        """The obstacle's linear velocity at lateral position ``y``."""
+        start = self.starts.setdefault(name, y)
+        return self.speed if y - start < self.travel else 0.0
+
+
+@dataclass
 class Trace:
     """What a run recorded at every control cycle."""
 

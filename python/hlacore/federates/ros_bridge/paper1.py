@@ -3,6 +3,12 @@ as a plain ROS node in another process, as in ros-ptolemy-hla-iess2015 (Stage be
 "Control" script commanding the avatar, a Python ROS node driving the obstacles).
 
     python -m hlacore.federates.ros_bridge.paper1 [OUTDIR] [--rtig HOST:PORT] [--duration 30]
+        [--controller node|de]
+
+``--controller de`` plays paper 1's own chain instead (:mod:`.paper1_chain`): the controller a DE-engine
+federate, the world a stageros-style ROS node, the bridge between them, each in its own process; it writes
+``paper1-de-trace.csv``, ``paper1-de-snapshot.png`` and ``paper1-de-trajectories.png``. The default
+(``node``) is described below.
 
 One process holds the world federate (on a thread) and the bridge (timed, ``/clock``, waiting each cycle
 for the controllers' answers: a lockstep through ROS); the node process (``--node``) subscribes
@@ -291,10 +297,15 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("outdir", nargs="?", default="paper1-ros-out")
     parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default: an in-process gateway)")
     parser.add_argument("--duration", type=float, default=30.0)
+    parser.add_argument("--controller", choices=("node", "de"), default="node",
+                        help="node: world federate + bridge + the controllers as a rospy node; de: the DE "
+                             "controller federate + bridge + the world as a stageros-style ROS node")
     parser.add_argument("--node", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.node:
         return node_main()
+    if args.controller == "de":
+        return _main_de(args.outdir, args.rtig, args.duration)
     with contextlib.ExitStack() as stack:
         stack.enter_context(ros_master())
         address = args.rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
@@ -302,6 +313,21 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     for name, passed in result.checks.items():
         print(f"{'ok  ' if passed else 'FAIL'} {name}")
     for path in write_outputs(result, args.outdir):
+        print(f"wrote {path}")
+    print(json.dumps(result.summary()), flush=True)
+    return 0 if result.ok else 1
+
+
+def _main_de(outdir: str, rtig: Optional[str], duration: float) -> int:
+    from . import paper1_chain
+
+    with contextlib.ExitStack() as stack:
+        stack.enter_context(ros_master())
+        address = rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
+        result = paper1_chain.run(address, outdir, duration=duration)
+    for name, passed in result.checks.items():
+        print(f"{'ok  ' if passed else 'FAIL'} {name}")
+    for path in paper1_chain.write_outputs(result, outdir):
         print(f"wrote {path}")
     print(json.dumps(result.summary()), flush=True)
     return 0 if result.ok else 1

@@ -13,6 +13,7 @@ import math
 import pathlib
 import subprocess
 import sys
+import time
 from typing import Any, Optional
 
 import pytest
@@ -82,12 +83,15 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
         roscore: dict[str, str], gateway_address: str, tmp_path: pathlib.Path) -> None:
     """A federate sends cmd_vel interactions; the bridge publishes them as Twist to the stage node, which
     drives its robot; the node's odometry, ground truth and scan come back as WorldRobot reflections stamped
-    with federation time G + L, holding exactly the state a World alone had at G with the same commands."""
+    with federation time G + L, holding exactly the state a World alone had at G with the same commands.
+    A command for a robot the node does not have is dropped by the bridge, a NaN one by the node (counted;
+    both keep serving)."""
     world_file = tmp_path / "rover.world"
     world_file.write_text(WORLD)
     creator = rti.RTIAmbassador(gateway_address)
     creator.createFederationExecution(FEDERATION, str(FOM_PATH))
-    stage, stage_out = start_stage(roscore, world_file)
+    summary = tmp_path / "stage.json"
+    stage, stage_out = start_stage(roscore, world_file, "--summary", str(summary))
     fed: Optional[Federate] = None
     bridge: Optional[subprocess.Popen[str]] = None
     commands: list[tuple[float, float, float]] = []
@@ -113,20 +117,29 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
                                        params["linear"]: codec.SPEED.pack(linear),
                                        params["angular"]: codec.SPEED.pack(angular)}, "test", stamp)
             commands.append((stamp, linear, angular))
+            if k == 5:  # bad input: an unknown robot, then a NaN speed
+                for robot, bad in (("ghost", 0.3), ("rover", math.nan)):
+                    rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack(robot),
+                                               params["linear"]: codec.SPEED.pack(bad),
+                                               params["angular"]: codec.SPEED.pack(0.0)}, "test", stamp)
             now += PERIOD  # the bridge's grid when it serves a node: sums
             rtia.timeAdvanceRequest(now)
             assert rtia.await_grant(30) == now
     finally:
+        lines: list[str] = []
         if bridge is not None:
             status, lines = stop(bridge), bridge_out.rest()
             assert status == 0, lines
         stop(stage)
-        stage_out.rest()
+        stage_lines = stage_out.rest()
         if fed is not None:
             fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
         creator.destroyFederationExecution(FEDERATION)
 
     assert fed is not None
+    assert any(line.startswith("ros_bridge stopped") and " 1 ignored" in line for line in lines), lines
+    ran = json.loads(summary.read_text())
+    assert ran["rejected"] == 1 and ran["commands"] >= 20, stage_lines
     names = {args[0]: args[2] for args in fed.amb.named("discoverObjectInstance")}
     assert set(names.values()) == {"rover"}
     reflections: list[tuple[float, dict[str, Any]]] = []
@@ -188,3 +201,59 @@ def test_stage_node_on_its_own_clock(roscore: dict[str, str], tmp_path: pathlib.
     assert seen["use_sim_time"] is True and seen["clock"] >= odom["stamp"]
     ran = json.loads(summary.read_text())
     assert ran["commands"] > 0 and ran["ticks"] == len(ran["times"]) > 0
+
+
+def test_untimed_bridge_to_a_free_running_node(roscore: dict[str, str], inprocess_gateway: Any,
+                                               tmp_path: pathlib.Path) -> None:
+    """Untimed, against a node on its own clock: cmd_vel interactions in receive order become Twists at
+    once, and the node's state comes back as receive-order reflections (no timestamp), each a state the
+    node had."""
+    address = str(inprocess_gateway.address)
+    world_file = tmp_path / "rover.world"
+    world_file.write_text(WORLD)
+    summary = tmp_path / "stage.json"
+    creator = rti.RTIAmbassador(address)
+    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
+    stage, stage_out = start_stage(roscore, world_file, "--rate", "1", "--summary", str(summary))
+    fed: Optional[Federate] = None
+    bridge: Optional[subprocess.Popen[str]] = None
+    try:
+        stage_out.wait_for("stage_node ready", 60)
+        fed = Federate(address, "driver", FEDERATION)
+        rtia = fed.rtia
+        robot_class = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
+        attributes = {rtia.getAttributeHandle(n, robot_class): n for n in codec.ATTRIBUTES}
+        rtia.subscribeObjectClassAttributes(robot_class, list(attributes))
+        cmd = rtia.getInteractionClassHandle(codec.INTERACTION)
+        params = {n: rtia.getParameterHandle(n, cmd) for n in codec.PARAMETERS}
+        rtia.publishInteractionClass(cmd)
+        bridge, bridge_out = start_bridge(roscore, address, "--world-node", str(world_file), "--untimed",
+                                          "--wait-connections", "60")
+        bridge_out.wait_for("ros_bridge ready", 60)
+        poses: list[tuple[float, float]] = []
+        deadline = time.monotonic() + 60
+        while not poses or poses[-1][0] <= 0.3:
+            assert time.monotonic() < deadline, f"the robot did not get past x = 0.3: {poses[-3:]}"
+            rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack("rover"),
+                                       params["linear"]: codec.SPEED.pack(0.5),
+                                       params["angular"]: codec.SPEED.pack(0.0)}, "test")
+            rtia.tick(0.05, 0.05)
+            for obj, values, _tag, _order, _transport, *rest in fed.amb.named("reflectAttributeValues"):
+                assert not rest, "untimed: receive order, no timestamp"
+                for h, v in values.items():
+                    if attributes[h] == "pose":
+                        x, y, _theta = codec.unpack(codec.POSE, v)  # type: ignore[misc]
+                        poses.append((x, y))
+            fed.amb.calls.clear()
+    finally:
+        lines: list[str] = []
+        if bridge is not None:
+            status, lines = stop(bridge), bridge_out.rest()
+            assert status == 0, lines
+        stop(stage)
+        stage_out.rest()
+        if fed is not None:
+            fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        creator.destroyFederationExecution(FEDERATION)
+    had = {(p[0], p[1]) for p in [[0.0, 0.0]] + [ps["rover"] for ps in json.loads(summary.read_text())["poses"]]}
+    assert set(poses) <= had and poses[-1][0] > 0.3

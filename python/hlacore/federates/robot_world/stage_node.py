@@ -7,7 +7,8 @@ the HLA side reached through the ROS bridge.
 Topics, per robot (named by the world file's ``name``, else ``robot_<index>``, as stageros with ``-u``):
 
 * in: ``/<robot>/cmd_vel`` (``geometry_msgs/Twist``: ``linear.x``, ``angular.z``), applied from the next
-  physics step, as stageros' ``SetSpeed``;
+  physics step, as stageros' ``SetSpeed`` (clipped to the robot's bounds; a non-finite one is rejected,
+  counted and logged once, and the robot keeps its previous command);
 * out, once per clock tick, stamped with it: ``/<robot>/odom`` (``nav_msgs/Odometry``: integrated
   odometry, with the applied velocities in the twist), ``/<robot>/base_pose_ground_truth`` (ground truth),
   ``/<robot>/base_scan`` (``sensor_msgs/LaserScan``: every beam of the robot's rangers) and our own
@@ -52,6 +53,7 @@ class StageNode:
         #: (world time, poses) after every tick that stepped (the world time is the tick on the step grid)
         self.history: list[tuple[float, dict[str, Pose]]] = []
         self.commands = 0  #: cmd_vel messages applied
+        self.rejected = 0  #: cmd_vel messages rejected (non-finite velocities)
         self.ticks = 0  #: clock ticks handled
         self.time = world.time  #: the last tick
         self._pubs: dict[str, dict[str, Any]] = {}
@@ -99,8 +101,14 @@ class StageNode:
     # ---- the world's side ----
 
     def _on_cmd(self, msg: Any, robot: str) -> None:
+        linear, angular = float(msg.linear.x), float(msg.angular.z)
         with self.lock:
-            self.world.command(robot, float(msg.linear.x), float(msg.angular.z))
+            if not (math.isfinite(linear) and math.isfinite(angular)):
+                self.rejected += 1  # NaN or inf would poison the physics; the robot keeps its command
+                if self.rejected == 1:
+                    print(f"stage_node: rejected a non-finite cmd_vel for {robot} ({linear}, {angular})", flush=True)
+                return
+            self.world.command(robot, linear, angular)
             self.commands += 1
 
     def _on_clock(self, msg: Any) -> None:
@@ -178,7 +186,8 @@ class StageNode:
             return {"times": [t for t, _ in self.history],
                     "poses": [{n: [p.x, p.y, p.theta] for n, p in poses.items()} for _, poses in self.history],
                     "stall_steps": {r.name: r.stall_steps for r in self.world.robots},
-                    "commands": self.commands, "ticks": self.ticks, "time": self.world.time}
+                    "commands": self.commands, "rejected": self.rejected, "ticks": self.ticks,
+                    "time": self.world.time}
 
 
 def last_step_at_or_before(t: float, dt: float) -> int:

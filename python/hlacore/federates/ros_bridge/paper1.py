@@ -112,7 +112,7 @@ def node_main(timeout: float = 600.0) -> int:
 
     rospy.init_node("paper1_control", disable_signals=True)
     controller = paper1.Controller()
-    starts: dict[str, float] = {}
+    drive = paper1.ObstacleDriver()
     pubs = {name: rospy.Publisher(f"/{name}/cmd_vel", Twist, queue_size=100)
             for name in ("avatar",) + paper1.OBSTACLES}
 
@@ -125,9 +125,7 @@ def node_main(timeout: float = 600.0) -> int:
         pubs["avatar"].publish(twist(controller(msg.range)))
 
     def on_pose(msg: Odometry, name: str) -> None:
-        y = msg.pose.pose.position.y
-        start = starts.setdefault(name, y)
-        pubs[name].publish(twist(0.3 if y - start < 5.0 else 0.0))
+        pubs[name].publish(twist(drive(name, msg.pose.pose.position.y)))
 
     subs = [rospy.Subscriber("/avatar/range", Range, on_range, queue_size=100)]
     subs += [rospy.Subscriber(f"/{n}/base_pose_ground_truth", Odometry, on_pose, n, queue_size=100)

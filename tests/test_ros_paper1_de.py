@@ -84,8 +84,8 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
     """A federate sends cmd_vel interactions; the bridge publishes them as Twist to the stage node, which
     drives its robot; the node's odometry, ground truth and scan come back as WorldRobot reflections stamped
     with federation time G + L, holding exactly the state a World alone had at G with the same commands.
-    A command for a robot the node does not have is dropped by the bridge, a NaN one by the node (counted;
-    both keep serving)."""
+    A command for a robot the node does not have, or that does not decode, is dropped by the bridge, a NaN
+    one by the node (counted; both keep serving)."""
     world_file = tmp_path / "rover.world"
     world_file.write_text(WORLD)
     creator = rti.RTIAmbassador(gateway_address)
@@ -117,10 +117,10 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
                                        params["linear"]: codec.SPEED.pack(linear),
                                        params["angular"]: codec.SPEED.pack(angular)}, "test", stamp)
             commands.append((stamp, linear, angular))
-            if k == 5:  # bad input: an unknown robot, then a NaN speed
-                for robot, bad in (("ghost", 0.3), ("rover", math.nan)):
-                    rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack(robot),
-                                               params["linear"]: codec.SPEED.pack(bad),
+            if k == 5:  # bad input: an unknown robot, a speed that does not decode, a NaN speed
+                for robot, bad in (("ghost", codec.SPEED.pack(0.3)), ("rover", b"\x00"),
+                                   ("rover", codec.SPEED.pack(math.nan))):
+                    rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack(robot), params["linear"]: bad,
                                                params["angular"]: codec.SPEED.pack(0.0)}, "test", stamp)
             now += PERIOD  # the bridge's grid when it serves a node: sums
             rtia.timeAdvanceRequest(now)
@@ -137,7 +137,7 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
         creator.destroyFederationExecution(FEDERATION)
 
     assert fed is not None
-    assert any(line.startswith("ros_bridge stopped") and " 1 ignored" in line for line in lines), lines
+    assert any(line.startswith("ros_bridge stopped") and " 2 ignored" in line for line in lines), lines
     ran = json.loads(summary.read_text())
     assert ran["rejected"] == 1 and ran["commands"] >= 20, stage_lines
     names = {args[0]: args[2] for args in fed.amb.named("discoverObjectInstance")}

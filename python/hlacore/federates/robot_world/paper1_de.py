@@ -2,11 +2,10 @@
 :mod:`hlacore.federates.de`, commanding the robots through the RTI (and, in paper 1's chain, the ROS bridge
 and a stageros-style node).
 
-    python -m hlacore.federates.robot_world.paper1_de --rtig HOST:PORT [--duration 30] [--mode NER]
-        [--out FILE.json]
+    python -m hlacore.federates.robot_world.paper1_de --rtig HOST:PORT [--duration 30] [--out FILE.json]
 
 The model: an :class:`~hlacore.federates.de.HlaDirector` (regulating and constrained, lookahead 0.1 s,
-event-driven NER by default, as Ptolemy's default for HLA), an ``ObjectSubscriber`` of the ``WorldRobot``
+event-driven NER: each reflected state is granted at its own timestamp), an ``ObjectSubscriber`` of the ``WorldRobot``
 ``pose`` and ``ranges``, the paper's "Control" actor (:class:`AvatarControl`, the go / slow / stop rule of
 :class:`~.paper1.Controller`) and the obstacles' driver (:class:`ObstacleDrivers`, :class:`~.paper1.ObstacleDriver`;
 in the paper a Python ROS node drove them, here the DE model does, so that the whole scenario is in lockstep),
@@ -182,12 +181,11 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                                      description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default $HLACORE_RTIG)")
     parser.add_argument("--duration", type=float, default=30.0)
-    parser.add_argument("--period", type=float, default=0.1, help="lookahead (and TAR step)")
-    parser.add_argument("--mode", choices=("NER", "TAR"), default="NER")
+    parser.add_argument("--period", type=float, default=0.1, help="the lookahead (the world's period)")
     parser.add_argument("--timeout", type=float, default=60.0, help="wall seconds for each wait")
     parser.add_argument("--out", help="write the summary (JSON) here")
     args = parser.parse_args(argv)
-    model = join(args.rtig, args.period, args.mode, args.timeout)
+    model = join(args.rtig, args.period, grant_timeout=args.timeout)
     try:
         print("paper1_de joined", flush=True)
         await_robots(model, timeout=args.timeout)

@@ -19,6 +19,7 @@ from ``G + 2L``), so the robots' poses are those of the RTI-only run.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import json
 import math
@@ -92,8 +93,11 @@ def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, 
                     raise RuntimeError(child.report(f"exited with status {child.proc.returncode}"))
             if stage.stop() != 0:
                 raise RuntimeError(stage.report(f"exited with status {stage.proc.returncode}"))
-    finally:
-        creator.destroyFederationExecution(FEDERATION)
+    except BaseException:
+        with contextlib.suppress(Exception):  # a killed child may not have been dropped yet: keep the cause
+            creator.destroyFederationExecution(FEDERATION)
+        raise
+    creator.destroyFederationExecution(FEDERATION)
     stage_summary = json.loads(stage_json.read_text())
     de_summary = json.loads(de_json.read_text())
     result.times = list(stage_summary["times"])

@@ -51,7 +51,7 @@ def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_addre
     assert summary["checks"] == {"no_stall": True, "no_overlap": True, "obstacles_crossed": True,
                                  "held_back": True, "stopped_before_wall": True}
     assert summary["controller"] == "de" and summary["grants"] == 300 and summary["end"] == pytest.approx(30.0)
-    assert summary["late_states"] == 0 and 0.0 < summary["wall_gap"] <= 0.5
+    assert summary["late_states"] == 0 and summary["late_acks"] == 0 and 0.0 < summary["wall_gap"] <= 0.5
     assert summary["avatar_commands"] == 299 and summary["sent"] == 299 + 3 * 299
 
     stage = json.loads((out / "stage-node.json").read_text())
@@ -106,8 +106,8 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
         params = {n: rtia.getParameterHandle(n, cmd) for n in codec.PARAMETERS}
         rtia.publishInteractionClass(cmd)
         fed.enable_time(lookahead=PERIOD)
-        bridge, bridge_out = start_bridge(roscore, gateway_address, "--world-node", str(world_file), "--clock",
-                                          "--await-state", "5", "--wait-connections", "60")
+        bridge, bridge_out = start_bridge(roscore, gateway_address, "--world-node", str(world_file), "--acks",
+                                          "--clock", "--await-state", "5", "--wait-connections", "60")
         bridge_out.wait_for("ros_bridge ready", 60)
         now = 0.0
         for k in range(20):
@@ -137,7 +137,8 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
         creator.destroyFederationExecution(FEDERATION)
 
     assert fed is not None
-    assert any(line.startswith("ros_bridge stopped") and " 2 ignored" in line for line in lines), lines
+    assert any(line.startswith("ros_bridge stopped") and " 0 late acks" in line and " 2 ignored" in line
+               for line in lines), lines
     ran = json.loads(summary.read_text())
     assert ran["rejected"] == 1 and ran["commands"] >= 20, stage_lines
     names = {args[0]: args[2] for args in fed.amb.named("discoverObjectInstance")}

@@ -12,7 +12,9 @@ Topics, per robot (named by the world file's ``name``, else ``robot_<index>``, a
 * out, once per clock tick, stamped with it: ``/<robot>/odom`` (``nav_msgs/Odometry``: integrated
   odometry, with the applied velocities in the twist), ``/<robot>/base_pose_ground_truth`` (ground truth),
   ``/<robot>/base_scan`` (``sensor_msgs/LaserScan``: every beam of the robot's rangers) and our own
-  ``/<robot>/range`` (``sensor_msgs/Range``, the nearest beam) and ``/<robot>/stall`` (``std_msgs/Bool``).
+  ``/<robot>/range`` (``sensor_msgs/Range``, the nearest beam) and ``/<robot>/stall`` (``std_msgs/Bool``);
+* out, after each Twist taken (applied or rejected), ours: ``/<robot>/cmd_vel_received`` (``std_msgs/UInt32``,
+  how many so far), so that a bridge can hold the next clock tick until the node has its commands.
 
 Pacing. By default the node has no clock of its own: it follows ``/clock`` (ROS time with
 ``use_sim_time``, published by the ROS bridge at every federation grant). Each tick ``t`` steps the world
@@ -57,6 +59,8 @@ class StageNode:
         self.ticks = 0  #: clock ticks handled
         self.time = world.time  #: the last tick
         self._pubs: dict[str, dict[str, Any]] = {}
+        self._received: dict[str, int] = {}  # robot -> Twists taken
+        self._uint32: Any = None
         self._subs: list[Any] = []
         self._msgs: Any = None
 
@@ -70,15 +74,19 @@ class StageNode:
         from nav_msgs.msg import Odometry
         from rosgraph_msgs.msg import Clock
         from sensor_msgs.msg import LaserScan, Range
-        from std_msgs.msg import Bool
+        from std_msgs.msg import Bool, UInt32
 
         self._msgs = (rospy, Odometry, LaserScan, Range, Bool, Clock)
+        self._uint32 = UInt32
         rospy.init_node(self.node_name, anonymous=False, disable_signals=True)
         kinds = {"odom": Odometry, "base_pose_ground_truth": Odometry, "base_scan": LaserScan, "range": Range,
                  "stall": Bool}
         for robot in self.world.robots:
             self._pubs[robot.name] = {t: rospy.Publisher(f"/{robot.name}/{t}", k, queue_size=100)
                                       for t, k in kinds.items()}
+            self._pubs[robot.name]["cmd_vel_received"] = rospy.Publisher(f"/{robot.name}/cmd_vel_received", UInt32,
+                                                                         queue_size=100)
+            self._received[robot.name] = 0
             self._subs.append(rospy.Subscriber(f"/{robot.name}/cmd_vel", Twist, self._on_cmd, robot.name,
                                                queue_size=100))
         if follow_clock:
@@ -103,13 +111,16 @@ class StageNode:
     def _on_cmd(self, msg: Any, robot: str) -> None:
         linear, angular = float(msg.linear.x), float(msg.angular.z)
         with self.lock:
-            if not (math.isfinite(linear) and math.isfinite(angular)):
+            if math.isfinite(linear) and math.isfinite(angular):
+                self.world.command(robot, linear, angular)
+                self.commands += 1
+            else:
                 self.rejected += 1  # NaN or inf would poison the physics; the robot keeps its command
                 if self.rejected == 1:
                     print(f"stage_node: rejected a non-finite cmd_vel for {robot} ({linear}, {angular})", flush=True)
-                return
-            self.world.command(robot, linear, angular)
-            self.commands += 1
+            self._received[robot] += 1
+            # published under the lock: the counts go out in order, after the command took effect
+            self._pubs[robot]["cmd_vel_received"].publish(self._uint32(self._received[robot]))
 
     def _on_clock(self, msg: Any) -> None:
         self.tick(msg.clock.to_sec())

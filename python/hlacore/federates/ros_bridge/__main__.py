@@ -40,6 +40,9 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                                              "robots (or the --robot ones) the other way")
     parser.add_argument("--await-state", type=float, default=None, metavar="SECONDS",
                         help="after each /clock, wait for the node's state stamped with it (lockstep)")
+    parser.add_argument("--acks", action="store_true",
+                        help="with --world-node: before each /clock, wait until the node has counted every Twist "
+                             "on /<robot>/cmd_vel_received (hlacore's stage node; stageros has no such topic)")
     parser.add_argument("--wait-connections", type=float, default=None, metavar="SECONDS",
                         help="before advancing, wait until every bridged topic is connected")
     parser.add_argument("--untimed", action="store_true", help="neither regulating nor constrained")
@@ -56,7 +59,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         if args.world:
             mappings += world_mappings(read_world(args.world), args.robot or None)
         if args.world_node:
-            mappings += world_node_mappings(read_world(args.world_node), args.robot or None)
+            mappings += world_node_mappings(read_world(args.world_node), args.robot or None, acks=args.acks)
     else:
         mappings = [m for robot in args.robot for m in stage_mappings(robot)]
     if not mappings:
@@ -80,6 +83,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         bridge.close()
     print(f"ros_bridge stopped at {end!r} (sent {bridge.sent} cmd_vel, published {bridge.published}; "
           f"{bridge.updates} updates, {bridge.commands_out} Twists out, {bridge.late_states} late states, "
+          f"{bridge.late_acks} late acks, "
           f"{bridge.ignored} ignored)", flush=True)
     return 0
 

@@ -61,7 +61,7 @@ from geometry_msgs.msg import Quaternion, Twist  # noqa: E402
 from nav_msgs.msg import Odometry  # noqa: E402
 from rosgraph_msgs.msg import Clock  # noqa: E402
 from sensor_msgs.msg import LaserScan, Range  # noqa: E402
-from std_msgs.msg import Bool  # noqa: E402
+from std_msgs.msg import Bool, UInt32  # noqa: E402
 
 _AlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
 
@@ -121,10 +121,16 @@ class StallOut:
 @dataclass(frozen=True)
 class TwistOut:
     """HLA → ROS: every ``cmd_vel`` interaction naming ``robot`` is published as ``geometry_msgs/Twist``
-    (``linear.x``, ``angular.z``) on ``topic``."""
+    (``linear.x``, ``angular.z``) on ``topic``.
+
+    ``ack``: a ``std_msgs/UInt32`` topic on which the node counts the Twists it has taken from ``topic``
+    (our stage node's ``/<robot>/cmd_vel_received``; stageros has none). Timed, the bridge then publishes
+    the next ``/clock`` only once the count has caught up with what it published: the node cannot step
+    before it has applied the commands (ROS keeps no order across topics)."""
 
     robot: str
     topic: str
+    ack: Optional[str] = None
 
 
 @dataclass(frozen=True)
@@ -203,13 +209,16 @@ def world_mappings(spec: WorldSpec, robots: Optional[Sequence[str]] = None) -> l
     return out
 
 
-def node_mappings(robot: str, prefix: Optional[str] = None, sensor: str = "scan") -> list[Mapping]:
+def node_mappings(robot: str, prefix: Optional[str] = None, sensor: Optional[str] = "scan",
+                  acks: bool = False) -> list[Mapping]:
     """The other direction of :func:`stage_mappings`, for a robot simulated by a stageros-style ROS node
-    under ``prefix`` (default ``/<robot>``): ``cmd_vel`` interactions out as Twist on ``cmd_vel``;
-    ``odom`` → ``odometry``, ``base_pose_ground_truth`` → ``pose``, ``base_scan`` (``sensor="scan"``) or
-    ``range`` (``sensor="range"``; ``None``: no sensor) → ``ranges``, ``stall`` → ``stall`` in."""
+    under ``prefix`` (default ``/<robot>``): ``cmd_vel`` interactions out as Twist on ``cmd_vel`` (with
+    ``acks``, acknowledged on ``cmd_vel_received``: our stage node's); ``odom`` → ``odometry``,
+    ``base_pose_ground_truth`` → ``pose``, ``base_scan`` (``sensor="scan"``) or ``range``
+    (``sensor="range"``; ``None``: no sensor) → ``ranges``, ``stall`` → ``stall`` in."""
     p = f"/{robot}" if prefix is None else prefix.rstrip("/")
-    out: list[Mapping] = [TwistOut(robot, f"{p}/cmd_vel"), OdometryIn(f"{p}/odom", robot, "odometry"),
+    ack = f"{p}/cmd_vel_received" if acks else None
+    out: list[Mapping] = [TwistOut(robot, f"{p}/cmd_vel", ack), OdometryIn(f"{p}/odom", robot, "odometry"),
                           OdometryIn(f"{p}/base_pose_ground_truth", robot, "pose")]
     if sensor == "scan":
         out.append(ScanIn(f"{p}/base_scan", robot))
@@ -221,11 +230,12 @@ def node_mappings(robot: str, prefix: Optional[str] = None, sensor: str = "scan"
     return out
 
 
-def world_node_mappings(spec: WorldSpec, robots: Optional[Sequence[str]] = None) -> list[Mapping]:
+def world_node_mappings(spec: WorldSpec, robots: Optional[Sequence[str]] = None,
+                        acks: bool = False) -> list[Mapping]:
     """:func:`node_mappings` for each robot of a world simulated by a ROS node (or the named ones); robots
     without a ranger get no sensor mapping."""
     return [m for r in spec.robots if robots is None or r.name in robots
-            for m in node_mappings(r.name, sensor="scan" if r.sensors else None)]
+            for m in node_mappings(r.name, sensor="scan" if r.sensors else None, acks=acks)]
 
 
 def yaw_of(q: Any) -> float:
@@ -314,6 +324,7 @@ class RosBridge:
                             else step_by_sum)
         self.late_cycles = 0  #: timed grants after which ``await_inputs`` ran out before every Twist topic spoke
         self.late_states = 0  #: timed grants after which ``await_state`` ran out before every state topic spoke
+        self.late_acks = 0  #: timed grants before which the nodes' Twist counts did not catch up in time
         self.updates = 0  #: WorldRobot updates sent from ROS state
         self.commands_out = 0  #: Twists published from cmd_vel interactions
         self.ignored = 0  #: cmd_vel interactions dropped (naming no TwistOut robot, or malformed)
@@ -334,6 +345,9 @@ class RosBridge:
         self._cmd: Any = None
         self._params: dict[str, Any] = {}
         self._twist_out: dict[str, list[Any]] = {}  # robot -> its TwistOut publishers
+        self._acked: dict[str, int] = {}  # ack topic -> Twists published on its topic
+        self._acks: dict[str, int] = {}  # ack topic -> the node's count
+        self._ack_of: dict[int, str] = {}  # id(TwistOut publisher) -> its ack topic
         self._commands: list[tuple[str, float, float]] = []  # cmd_vel interactions to publish (timed)
         self._objects: dict[str, Any] = {}  # robot -> the WorldRobot instance the bridge registered
         self._handles: dict[str, Any] = {}  # attribute name -> handle
@@ -370,6 +384,9 @@ class RosBridge:
                     pub = rospy.Publisher(m.topic, Twist, queue_size=None)
                 self._publishers.append((m, pub))
                 self._twist_out.setdefault(m.robot, []).append(pub)
+                if m.ack is not None:
+                    self._ack_of[id(pub)] = m.ack
+                    self._acked[m.ack] = self._acks[m.ack] = 0
 
         rtia = rti.RTIAmbassador(self.address)
         if self.create:
@@ -419,6 +436,8 @@ class RosBridge:
             elif isinstance(m, StateIn):
                 self._subscribers.append(rospy.Subscriber(m.topic, state_kinds[type(m)], self._on_state, m,
                                                           queue_size=100))
+            elif isinstance(m, TwistOut) and m.ack is not None:
+                self._subscribers.append(rospy.Subscriber(m.ack, UInt32, self._on_ack, m.ack, queue_size=100))
 
     def spin(self, until: Optional[float] = None, cycle_timeout: float = 0.05) -> float:
         """Run the bridge on this thread until :meth:`stop` (or, timed, federation time ``until``); returns
@@ -518,6 +537,7 @@ class RosBridge:
     def _granted(self) -> None:
         """After a grant, on the bridge's thread: /clock, the nodes' state stamped G + lookahead, the cmd_vel
         interactions delivered with the grant as Twists, then the queued commands stamped G + lookahead."""
+        self._await_acks()
         self._tick_clock()
         if self._objects:
             self._sync_state()
@@ -606,6 +626,29 @@ class RosBridge:
             for pub in self._twist_out[robot]:
                 pub.publish(msg)
                 self.commands_out += 1
+                ack = self._ack_of.get(id(pub))
+                if ack is not None:
+                    with self._state_lock:
+                        self._acked[ack] += 1
+
+    def _on_ack(self, msg: Any, ack: str) -> None:
+        """rospy's thread: the node's count of the Twists it took."""
+        with self._state_lock:
+            self._acks[ack] = int(msg.data)
+            self._state_lock.notify_all()
+
+    def _await_acks(self) -> None:
+        """Timed, before the next /clock: wait (``await_state`` s at most) until every acknowledging node
+        has taken every Twist published to it."""
+        if not self._acked:
+            return
+
+        def caught_up() -> bool:
+            return self._stop.is_set() or all(self._acks[a] >= n for a, n in self._acked.items())
+
+        with self._state_lock:
+            if not self._state_lock.wait_for(caught_up, self.await_state or 5.0):
+                self.late_acks += 1
 
     def _tick_clock(self) -> None:
         if self._clock_pub is not None:

@@ -48,11 +48,13 @@ class ChainResult(Result):
     control: list[tuple[float, float, float]] = field(default_factory=list)  # (DE time, distance, speed)
     de_grants: int = 0
     late_states: int = 0
+    late_acks: int = 0
     bridge: str = ""  #: the bridge's last line
 
     def summary(self) -> dict[str, Any]:
         out = super().summary()
         out.update(controller="de", de_grants=self.de_grants, late_states=self.late_states,
+                   late_acks=self.late_acks,
                    avatar_commands=len(self.control))
         return out
 
@@ -81,7 +83,7 @@ def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, 
                                             "--timeout", repr(timeout), "--out", str(de_json)])
             de.wait_for("paper1_de joined", timeout)  # regulating before the bridge can advance
             bridge = kids.start("bridge", ["-m", "hlacore.federates.ros_bridge", "--rtig", address,
-                                           "--world-node", str(world_file), "--clock", "--period", repr(period),
+                                           "--world-node", str(world_file), "--acks", "--clock", "--period", repr(period),
                                            "--await-state", repr(state_timeout), "--wait-connections",
                                            repr(timeout), "--until", repr(duration)])
             bridge.wait_for("ros_bridge ready", timeout)
@@ -106,8 +108,9 @@ def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, 
     result.sent = int(de_summary["sent"])
     result.de_grants = int(de_summary["grants"])
     result.control = [tuple(c) for c in de_summary["control"]]  # type: ignore[misc]
-    late = re.search(r"(\d+) late states", result.bridge)
+    late = re.search(r"(\d+) late states, (\d+) late acks", result.bridge)
     result.late_states = int(late.group(1)) if late else -1
+    result.late_acks = int(late.group(2)) if late else -1
     result.checks = check(result)
     return result
 

@@ -92,12 +92,6 @@ class StageNode:
         if follow_clock:
             self._subs.append(rospy.Subscriber("/clock", Clock, self._on_clock, queue_size=100))
 
-    def connections(self) -> dict[str, int]:
-        """The number of ROS connections of each topic."""
-        out = {f"/{r}/{t}": p.get_num_connections() for r, pubs in self._pubs.items() for t, p in pubs.items()}
-        out.update({s.resolved_name: s.get_num_connections() for s in self._subs})
-        return out
-
     def close(self) -> None:
         """Unsubscribe and shut the ROS node down."""
         for sub in self._subs:

@@ -3,7 +3,7 @@ through the RTI, the ROS bridge and ROS topics (ros-ptolemy-hla-iess2015, Fig. 1
 
     DE federate (Ptolemy's role)  <->  RTI  <->  ROS bridge (federate + ROS node)  <->  ROS  <->  stage node
 
-Four processes besides roscore and the gateway, each started here and ended by pid:
+Three processes besides roscore, the gateway and this one, each started here and ended by pid:
 
 * ``python -m hlacore.federates.robot_world.stage_node paper1.world`` — the world as a ROS node stepping on
   ``/clock`` (Stage's role);

@@ -51,6 +51,21 @@ class Controller:
 
 
 @dataclass
+class ObstacleDriver:
+    """The obstacles' driver: each crosses at ``speed`` until it has travelled ``travel`` m from where it
+    was first seen (y grows: they cross from the avatar's right to its left), then stops."""
+
+    speed: float = 0.3  # m/s
+    travel: float = 5.0  # m
+    starts: dict[str, float] = field(default_factory=dict)  # obstacle -> first y seen
+
+    def __call__(self, name: str, y: float) -> float:
+        """The obstacle's linear velocity at lateral position ``y``."""
+        start = self.starts.setdefault(name, y)
+        return self.speed if y - start < self.travel else 0.0
+
+
+@dataclass
 class Trace:
     """What a run recorded at every control cycle."""
 
@@ -74,8 +89,8 @@ def run(duration: float = 30.0, period: float = 0.1, dt: float = 0.01, obstacle_
     Obstacles drive at ``obstacle_speed`` until they have travelled ``obstacle_travel`` m, then stop;
     every command is re-sent each cycle (the watchdog is 0.2 s)."""
     control = controller or Controller()
+    drive = ObstacleDriver(obstacle_speed, obstacle_travel)
     world = World(world_spec(), dt=dt, watchdog=0.2)
-    start = {name: world.robot(name).pose for name in OBSTACLES}
     trace = Trace()
     per_cycle = round(period / dt)
     for _cycle in range(round(duration / period)):
@@ -84,8 +99,7 @@ def run(duration: float = 30.0, period: float = 0.1, dt: float = 0.01, obstacle_
         speed = control(distance)
         world.command("avatar", speed, 0.0)
         for name in OBSTACLES:
-            travelled = world.robot(name).pose.y - start[name].y
-            world.command(name, obstacle_speed if travelled < obstacle_travel else 0.0, 0.0)
+            world.command(name, drive(name, world.robot(name).pose.y), 0.0)
         for _ in range(per_cycle):
             world.step()
             trace.touching.append(world.touching("avatar"))

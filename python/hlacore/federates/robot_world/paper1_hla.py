@@ -92,13 +92,11 @@ class ControllerFederate:
         speed = self.controller(min(avatar["ranges"])) if "ranges" in avatar else 0.0
         self.speeds.append(speed)
         self.send("avatar", speed, now + self.lookahead)
+        drive = paper1.ObstacleDriver(self.obstacle_speed, self.obstacle_travel, self.starts)
         for name in paper1.OBSTACLES:
             pose = self.amb.latest.get(name, {}).get("pose")
-            if pose is None:
-                continue
-            self.starts.setdefault(name, pose[1])
-            moving = pose[1] - self.starts[name] < self.obstacle_travel
-            self.send(name, self.obstacle_speed if moving else 0.0, now + self.lookahead)
+            if pose is not None:
+                self.send(name, drive(name, pose[1]), now + self.lookahead)
 
     def resign(self) -> None:
         """Resign from the federation."""

@@ -2,6 +2,13 @@
 
     python -m hlacore.federates.ros_bridge --rtig HOST:PORT --robot avatar [--robot ...] [--world FILE]
         [--untimed] [--period 0.1] [--lookahead 0.1] [--clock] [--rate R] [--until T]
+    python -m hlacore.federates.ros_bridge --rtig HOST:PORT --world-node FILE [--robot ...] --clock
+        [--await-state 5] [--wait-connections 30] ...
+
+``--world`` bridges robots simulated by an HLA federate (the robot world) to ROS; ``--world-node`` bridges
+robots simulated by a ROS node (``python -m hlacore.federates.robot_world.stage_node FILE``) to HLA: the
+``cmd_vel`` interactions go out as Twist, the node's odometry, ground truth, scan and stall come back as
+``WorldRobot`` attributes of instances the bridge registers.
 
 The ROS master is ``$ROS_MASTER_URI`` (set ``ROS_IP=127.0.0.1`` on loopback). Prints ``ros_bridge ready``
 once the node is up and the federate joined (and time-enabled), ``ros_bridge stopped at T`` at the end;
@@ -17,7 +24,7 @@ from typing import Any, Optional, Sequence
 
 from hlacore.federates.robot_world import read_world
 
-from .bridge import Mapping, RosBridge, stage_mappings, world_mappings
+from .bridge import Mapping, RosBridge, stage_mappings, world_mappings, world_node_mappings
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
@@ -29,6 +36,15 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--robot", action="append", default=[], help="a robot to bridge (repeatable)")
     parser.add_argument("--world", help="a .world file: bridge its robots (or the --robot ones) with their "
                                         "ranger's field of view and range")
+    parser.add_argument("--world-node", help="a .world file simulated by a stageros-style ROS node: bridge its "
+                                             "robots (or the --robot ones) the other way")
+    parser.add_argument("--await-state", type=float, default=None, metavar="SECONDS",
+                        help="after each /clock, wait for the node's state stamped with it (lockstep)")
+    parser.add_argument("--acks", action="store_true",
+                        help="with --world-node: before each /clock, wait until the node has counted every Twist "
+                             "on /<robot>/cmd_vel_received (hlacore's stage node; stageros has no such topic)")
+    parser.add_argument("--wait-connections", type=float, default=None, metavar="SECONDS",
+                        help="before advancing, wait until every bridged topic is connected")
     parser.add_argument("--untimed", action="store_true", help="neither regulating nor constrained")
     parser.add_argument("--period", type=float, default=0.1)
     parser.add_argument("--lookahead", type=float, default=None, help="default: the period")
@@ -38,15 +54,19 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--until", type=float, default=None, help="stop at this federation time")
     parser.add_argument("--node-name", default="hla_bridge")
     args = parser.parse_args(argv)
-    if args.world:
-        mappings: list[Mapping] = world_mappings(read_world(args.world), args.robot or None)
+    if args.world or args.world_node:
+        mappings: list[Mapping] = []
+        if args.world:
+            mappings += world_mappings(read_world(args.world), args.robot or None)
+        if args.world_node:
+            mappings += world_node_mappings(read_world(args.world_node), args.robot or None, acks=args.acks)
     else:
         mappings = [m for robot in args.robot for m in stage_mappings(robot)]
     if not mappings:
         parser.error("nothing to bridge: give --robot or --world")
     bridge = RosBridge(mappings, args.rtig, federation=args.federation, node_name=args.node_name,
                        timed=not args.untimed, period=args.period, lookahead=args.lookahead, clock=args.clock,
-                       rate=args.rate)
+                       rate=args.rate, await_state=args.await_state)
 
     def on_signal(signum: int, frame: Any) -> None:
         bridge.stop()
@@ -55,12 +75,16 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     signal.signal(signal.SIGINT, on_signal)
     bridge.start()
     try:
+        if args.wait_connections is not None:
+            bridge.wait_connected(args.wait_connections)
         print("ros_bridge ready", flush=True)
         end = bridge.spin(args.until)
     finally:
         bridge.close()
-    print(f"ros_bridge stopped at {end!r} (sent {bridge.sent} cmd_vel, published {bridge.published})",
-          flush=True)
+    print(f"ros_bridge stopped at {end!r} (sent {bridge.sent} cmd_vel, published {bridge.published}; "
+          f"{bridge.updates} updates, {bridge.commands_out} Twists out, {bridge.late_states} late states, "
+          f"{bridge.late_acks} late acks, "
+          f"{bridge.ignored} ignored)", flush=True)
     return 0
 
 

@@ -6,6 +6,12 @@ reflections of the mapped robots are published as ``nav_msgs/Odometry`` (:class:
 ``odometry`` or the ground-truth ``pose`` attribute), ``sensor_msgs/LaserScan`` (:class:`ScanOut`),
 ``sensor_msgs/Range`` (:class:`RangeOut`, the nearest beam) and ``std_msgs/Bool`` (:class:`StallOut`).
 
+The other direction, for robots simulated by a ROS node (a stageros-style simulator,
+:mod:`hlacore.federates.robot_world.stage_node`): HLA → ROS, each :class:`TwistOut` publishes the ``cmd_vel``
+interactions naming its robot as ``geometry_msgs/Twist``; ROS → HLA, :class:`OdometryIn` (``odometry`` or
+``pose``), :class:`ScanIn` and :class:`RangeIn` (``ranges``) and :class:`StallIn` (``stall``) become the
+attributes of a ``WorldRobot`` instance that the bridge registers under the robot's name.
+
 Threads: rospy calls the subscriber callbacks on its own threads (one per connection). The bridge's thread
 (the one calling :meth:`RosBridge.spin`) is the only one that ticks the RTI, so the federate-ambassador
 callbacks, and with them every ROS publication of a reflection, run there (rospy's ``publish`` is
@@ -22,7 +28,16 @@ federation timestamp into ``header.stamp``; with ``clock=True`` it sets ``/use_s
 each grant on ``/clock`` (``rosgraph_msgs/Clock``), so that ROS time is federation time. With
 ``await_inputs`` (wall seconds) the bridge, after each grant at which it published something to ROS, waits
 until every mapped Twist topic has spoken since the last grant (for ROS controllers that answer each
-published state: a lockstep through ROS).
+published state: a lockstep through ROS). With ``await_state`` (wall seconds) it waits, after publishing
+each grant ``G`` on ``/clock``, until every stamped state topic (Odometry, LaserScan, Range) has a message
+stamped ``G`` or later (for a simulator node that steps on ``/clock``), sends the state as updates stamped
+``G + lookahead``, and only then publishes the ``cmd_vel`` interactions delivered with the grant.
+
+The grid: the bridge requests ``k * period`` (like the world federate), except when it serves a simulator
+node (``step_by_sum``, default: when it has state mappings), where it requests ``G + period``: with
+``lookahead == period`` a federate answering a state stamped ``G + L`` with a command stamped ``(G + L) + L``
+then hits a later grant exactly (``k * period`` would miss it by a rounding error now and then, and the
+command would reach the node one period late).
 """
 
 from __future__ import annotations
@@ -31,6 +46,7 @@ import math
 import queue
 import threading
 import time as _time
+import warnings
 from dataclasses import dataclass
 from typing import Any, Callable, Optional, Sequence, Union
 
@@ -45,7 +61,7 @@ from geometry_msgs.msg import Quaternion, Twist  # noqa: E402
 from nav_msgs.msg import Odometry  # noqa: E402
 from rosgraph_msgs.msg import Clock  # noqa: E402
 from sensor_msgs.msg import LaserScan, Range  # noqa: E402
-from std_msgs.msg import Bool  # noqa: E402
+from std_msgs.msg import Bool, UInt32  # noqa: E402
 
 _AlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
 
@@ -102,7 +118,64 @@ class StallOut:
     topic: str
 
 
-Mapping = Union[TwistIn, OdometryOut, ScanOut, RangeOut, StallOut]
+@dataclass(frozen=True)
+class TwistOut:
+    """HLA → ROS: every ``cmd_vel`` interaction naming ``robot`` is published as ``geometry_msgs/Twist``
+    (``linear.x``, ``angular.z``) on ``topic``.
+
+    ``ack``: a ``std_msgs/UInt32`` topic on which the node counts the Twists it has taken from ``topic``
+    (our stage node's ``/<robot>/cmd_vel_received``; stageros has none). Timed, the bridge then publishes
+    the next ``/clock`` only once the count has caught up with what it published: the node cannot step
+    before it has applied the commands (ROS keeps no order across topics)."""
+
+    robot: str
+    topic: str
+    ack: Optional[str] = None
+
+
+@dataclass(frozen=True)
+class OdometryIn:
+    """ROS → HLA: ``nav_msgs/Odometry`` on ``topic`` becomes the robot's ``odometry`` attribute (x, y, yaw,
+    ``twist.linear.x``, ``twist.angular.z``; ``attribute="odometry"``) or its ground-truth ``pose``
+    (x, y, yaw; ``attribute="pose"``)."""
+
+    topic: str
+    robot: str
+    attribute: str = "odometry"
+
+    def __post_init__(self) -> None:
+        if self.attribute not in ("odometry", "pose"):
+            raise ValueError(f"OdometryIn feeds 'odometry' or 'pose', not {self.attribute!r}")
+
+
+@dataclass(frozen=True)
+class ScanIn:
+    """ROS → HLA: ``sensor_msgs/LaserScan`` on ``topic`` becomes the robot's ``ranges`` (every beam)."""
+
+    topic: str
+    robot: str
+
+
+@dataclass(frozen=True)
+class RangeIn:
+    """ROS → HLA: ``sensor_msgs/Range`` on ``topic`` becomes the robot's ``ranges`` as one beam (for a
+    robot whose only sensor is a sonar; do not map a ScanIn of the same robot too)."""
+
+    topic: str
+    robot: str
+
+
+@dataclass(frozen=True)
+class StallIn:
+    """ROS → HLA: ``std_msgs/Bool`` on ``topic`` becomes the robot's ``stall`` flag (not stamped: it
+    travels with the next update of the robot, never awaited)."""
+
+    topic: str
+    robot: str
+
+
+Mapping = Union[TwistIn, OdometryOut, ScanOut, RangeOut, StallOut, TwistOut, OdometryIn, ScanIn, RangeIn, StallIn]
+StateIn = (OdometryIn, ScanIn, RangeIn, StallIn)  #: the ROS → HLA state mappings
 
 
 def stage_mappings(robot: str, prefix: Optional[str] = None, fov: float = 0.1, range_min: float = 0.0,
@@ -136,6 +209,40 @@ def world_mappings(spec: WorldSpec, robots: Optional[Sequence[str]] = None) -> l
     return out
 
 
+def node_mappings(robot: str, prefix: Optional[str] = None, sensor: Optional[str] = "scan",
+                  acks: bool = False) -> list[Mapping]:
+    """The other direction of :func:`stage_mappings`, for a robot simulated by a stageros-style ROS node
+    under ``prefix`` (default ``/<robot>``): ``cmd_vel`` interactions out as Twist on ``cmd_vel`` (with
+    ``acks``, acknowledged on ``cmd_vel_received``: our stage node's); ``odom`` → ``odometry``,
+    ``base_pose_ground_truth`` → ``pose``, ``base_scan`` (``sensor="scan"``) or ``range``
+    (``sensor="range"``; ``None``: no sensor) → ``ranges``, ``stall`` → ``stall`` in."""
+    p = f"/{robot}" if prefix is None else prefix.rstrip("/")
+    ack = f"{p}/cmd_vel_received" if acks else None
+    out: list[Mapping] = [TwistOut(robot, f"{p}/cmd_vel", ack), OdometryIn(f"{p}/odom", robot, "odometry"),
+                          OdometryIn(f"{p}/base_pose_ground_truth", robot, "pose")]
+    if sensor == "scan":
+        out.append(ScanIn(f"{p}/base_scan", robot))
+    elif sensor == "range":
+        out.append(RangeIn(f"{p}/range", robot))
+    elif sensor is not None:
+        raise ValueError(f"sensor is 'scan', 'range' or None, not {sensor!r}")
+    out.append(StallIn(f"{p}/stall", robot))
+    return out
+
+
+def world_node_mappings(spec: WorldSpec, robots: Optional[Sequence[str]] = None,
+                        acks: bool = False) -> list[Mapping]:
+    """:func:`node_mappings` for each robot of a world simulated by a ROS node (or the named ones); robots
+    without a ranger get no sensor mapping."""
+    return [m for r in spec.robots if robots is None or r.name in robots
+            for m in node_mappings(r.name, sensor="scan" if r.sensors else None, acks=acks)]
+
+
+def yaw_of(q: Any) -> float:
+    """The heading (rotation about z) of a quaternion."""
+    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+
+
 def yaw_quaternion(theta: float) -> Quaternion:
     """The quaternion of a rotation by ``theta`` about z."""
     return Quaternion(0.0, 0.0, math.sin(theta / 2.0), math.cos(theta / 2.0))
@@ -146,6 +253,7 @@ class _Ambassador(rti.FederateAmbassador):
         self.bridge = bridge
         self.names: dict[Any, str] = {}
         self.attributes: dict[Any, str] = {}
+        self.parameters: dict[Any, str] = {}
         self.regulation = self.constrained = False
 
     def timeRegulationEnabled(self, t: float) -> None:
@@ -173,6 +281,21 @@ class _Ambassador(rti.FederateAmbassador):
                 values[attr] = codec.unpack(kinds[attr], data)
         self.bridge._reflected(name, values, None if t is None else float(t))
 
+    def receiveInteraction(self, cls: Any, parameters: dict[Any, bytes], tag: Any, order: Any, transport: Any,
+                           t: Optional[float] = None, retraction: Any = None) -> None:
+        values = {self.parameters[h]: v for h, v in parameters.items() if h in self.parameters}
+        if set(values) != set(codec.PARAMETERS):
+            self.bridge.ignored += 1  # an incomplete command
+            return
+        try:
+            robot = codec.unpack_name(values["robot"])
+            linear = float(codec.unpack(codec.SPEED, values["linear"]))  # type: ignore[arg-type]
+            angular = float(codec.unpack(codec.SPEED, values["angular"]))  # type: ignore[arg-type]
+        except ValueError:
+            self.bridge.ignored += 1  # undecodable: dropped, the bridge keeps serving
+            return
+        self.bridge._commanded(robot, linear, angular)
+
 
 class RosBridge:
     """The bridge (see the module docstring). Build it, :meth:`start` it (init the ROS node, join the
@@ -182,7 +305,8 @@ class RosBridge:
                  federation: str = codec.FEDERATION, federate_name: str = "ros_bridge",
                  node_name: str = "hla_bridge", timed: bool = True, period: float = 0.1,
                  lookahead: Optional[float] = None, clock: bool = False, rate: Optional[float] = None,
-                 create: bool = True, await_inputs: Optional[float] = None) -> None:
+                 create: bool = True, await_inputs: Optional[float] = None,
+                 await_state: Optional[float] = None, step_by_sum: Optional[bool] = None) -> None:
         self.mappings = list(mappings)
         self.address = address
         self.federation = federation
@@ -195,7 +319,15 @@ class RosBridge:
         self.rate = rate
         self.create = create
         self.await_inputs = await_inputs
+        self.await_state = await_state
+        self.step_by_sum = (any(isinstance(m, StateIn) for m in self.mappings) if step_by_sum is None
+                            else step_by_sum)
         self.late_cycles = 0  #: timed grants after which ``await_inputs`` ran out before every Twist topic spoke
+        self.late_states = 0  #: timed grants after which ``await_state`` ran out before every state topic spoke
+        self.late_acks = 0  #: timed grants before which the nodes' Twist counts did not catch up in time
+        self.updates = 0  #: WorldRobot updates sent from ROS state
+        self.commands_out = 0  #: Twists published from cmd_vel interactions
+        self.ignored = 0  #: cmd_vel interactions dropped (naming no TwistOut robot, or malformed)
         self.rtia: Optional[rti.RTIAmbassador] = None
         self.sent = 0  #: cmd_vel interactions sent
         self.published = 0  #: ROS messages published from reflections
@@ -212,6 +344,16 @@ class RosBridge:
         self._clock_pub: Any = None
         self._cmd: Any = None
         self._params: dict[str, Any] = {}
+        self._twist_out: dict[str, list[Any]] = {}  # robot -> its TwistOut publishers
+        self._acked: dict[str, int] = {}  # ack topic -> Twists published on its topic
+        self._acks: dict[str, int] = {}  # ack topic -> the node's count
+        self._ack_of: dict[int, str] = {}  # id(TwistOut publisher) -> its ack topic
+        self._commands: list[tuple[str, float, float]] = []  # cmd_vel interactions to publish (timed)
+        self._objects: dict[str, Any] = {}  # robot -> the WorldRobot instance the bridge registered
+        self._handles: dict[str, Any] = {}  # attribute name -> handle
+        self._state: dict[str, dict[str, bytes]] = {}  # robot -> attribute -> encoded value, not sent yet
+        self._stamps: dict[str, float] = {}  # stamped state topic -> stamp of its latest message
+        self._state_lock = threading.Condition()
         if self.timed and not self.lookahead > 0:
             raise ValueError("lookahead must be positive")
 
@@ -234,8 +376,17 @@ class RosBridge:
             self._clock_pub = rospy.Publisher("/clock", Clock, queue_size=10)
         kinds = {OdometryOut: Odometry, ScanOut: LaserScan, RangeOut: Range, StallOut: Bool}
         for m in self.mappings:
-            if not isinstance(m, TwistIn):
+            if type(m) in kinds:
                 self._publishers.append((m, rospy.Publisher(m.topic, kinds[type(m)], queue_size=100)))
+            elif isinstance(m, TwistOut):
+                with warnings.catch_warnings():  # queue_size=None: publish() writes before it returns,
+                    warnings.simplefilter("ignore", SyntaxWarning)  # so a Twist leaves before the next /clock
+                    pub = rospy.Publisher(m.topic, Twist, queue_size=None)
+                self._publishers.append((m, pub))
+                self._twist_out.setdefault(m.robot, []).append(pub)
+                if m.ack is not None:
+                    self._ack_of[id(pub)] = m.ack
+                    self._acked[m.ack] = self._acks[m.ack] = 0
 
         rtia = rti.RTIAmbassador(self.address)
         if self.create:
@@ -252,20 +403,41 @@ class RosBridge:
             self._cmd = rtia.getInteractionClassHandle(codec.INTERACTION)
             self._params = {n: rtia.getParameterHandle(n, self._cmd) for n in codec.PARAMETERS}
             rtia.publishInteractionClass(self._cmd)
+            if self._twist_out:
+                self._amb.parameters = {h: n for n, h in self._params.items()}
+                rtia.subscribeInteractionClass(self._cmd)
             if self.timed:
                 rtia.enableTimeRegulation(rtia.queryFederateTime(), self.lookahead)
                 self._tick_until(lambda: self._amb.regulation, timeout)
                 rtia.enableTimeConstrained()
                 self._tick_until(lambda: self._amb.constrained, timeout)
                 self.time = float(rtia.queryFederateTime())
+            # registered once time is enabled: a federate that discovers them knows the bridge regulates
+            state_robots = list(dict.fromkeys(m.robot for m in self.mappings if isinstance(m, StateIn)))
+            if state_robots:
+                self._handles = {n: h for h, n in self._amb.attributes.items()}
+                rtia.publishObjectClass(robot, list(self._amb.attributes))
+                for name in state_robots:
+                    self._objects[name] = rtia.registerObjectInstance(robot, name)
+                    if self.timed:
+                        self._state[name] = {"name": codec.NAME.pack(name)}  # sent with the first state
+                    else:
+                        rtia.updateAttributeValues(self._objects[name],
+                                                   {self._handles["name"]: codec.NAME.pack(name)}, "ros")
         except BaseException:
             rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
             self.rtia = None
             raise
+        state_kinds = {OdometryIn: Odometry, ScanIn: LaserScan, RangeIn: Range, StallIn: Bool}
         for m in self.mappings:
             if isinstance(m, TwistIn):
                 self._subscribers.append(rospy.Subscriber(m.topic, Twist, self._on_twist, m.robot,
                                                           queue_size=100))
+            elif isinstance(m, StateIn):
+                self._subscribers.append(rospy.Subscriber(m.topic, state_kinds[type(m)], self._on_state, m,
+                                                          queue_size=100))
+            elif isinstance(m, TwistOut) and m.ack is not None:
+                self._subscribers.append(rospy.Subscriber(m.ack, UInt32, self._on_ack, m.ack, queue_size=100))
 
     def spin(self, until: Optional[float] = None, cycle_timeout: float = 0.05) -> float:
         """Run the bridge on this thread until :meth:`stop` (or, timed, federation time ``until``); returns
@@ -278,11 +450,15 @@ class RosBridge:
             return self.time
         wall0, fed0 = _time.monotonic(), self.time
         k = round(self.time / self.period)
+        if self._objects:  # the node's initial state, as the world federate publishes its own at 0 + L
+            self._tick_clock()
+            self._sync_state()
         while not self._stop.is_set() and not rospy.is_shutdown():
             if until is not None and self.time >= until - 1e-9:
                 break
             k += 1
-            rtia.timeAdvanceRequest(k * self.period)
+            # by sums when serving a node: a reply stamped (G + L) + L is then exactly a later grant
+            rtia.timeAdvanceRequest(self.time + self.period if self.step_by_sum else k * self.period)
             while True:
                 try:
                     self.time = rtia.await_grant(cycle_timeout)
@@ -303,7 +479,22 @@ class RosBridge:
         out = {m.topic: pub.get_num_connections() for m, pub in self._publishers}
         for sub in self._subscribers:
             out[sub.resolved_name] = sub.get_num_connections()
+        if self._clock_pub is not None:
+            out["/clock"] = self._clock_pub.get_num_connections()
         return out
+
+    def wait_connected(self, timeout: float, topics: Optional[Sequence[str]] = None) -> None:
+        """Wait until each of ``topics`` (default: every bridged topic, and ``/clock`` for the nodes that
+        follow it when the bridge publishes it) has a connection; TimeoutError names the unconnected ones."""
+        deadline = _time.monotonic() + timeout
+        while True:
+            seen = self.connections()
+            missing = [t for t in (seen if topics is None else topics) if seen.get(t, 0) == 0]
+            if not missing:
+                return
+            if _time.monotonic() > deadline:
+                raise TimeoutError(f"no ROS connection within {timeout} s on {missing}")
+            self._stop.wait(0.05)
 
     def stop(self) -> None:
         """Ask :meth:`spin` to return (safe from any thread and from a signal handler)."""
@@ -344,9 +535,13 @@ class RosBridge:
         self.sent += 1
 
     def _granted(self) -> None:
-        """After a grant, on the bridge's thread: /clock, then the queued commands stamped G + lookahead."""
-        if self._clock_pub is not None:
-            self._clock_pub.publish(Clock(rospy.Time.from_sec(self.time)))
+        """After a grant, on the bridge's thread: /clock, the nodes' state stamped G + lookahead, the cmd_vel
+        interactions delivered with the grant as Twists, then the queued commands stamped G + lookahead."""
+        self._await_acks()
+        self._tick_clock()
+        if self._objects:
+            self._sync_state()
+        self._publish_commands()
         if self.await_inputs is not None and self.published > self._published_before:
             wanted = {m.robot for m in self.mappings if isinstance(m, TwistIn)}
             with self._inputs:
@@ -362,6 +557,103 @@ class RosBridge:
                 break
             self._send(robot, linear, angular, self.time + self.lookahead)
 
+    def _on_state(self, msg: Any, m: Mapping) -> None:
+        """rospy's thread: a robot's state from a simulator node; untimed, sent at once (receive order);
+        timed, kept (the latest value of each attribute wins) until the bridge's thread sends it."""
+        if isinstance(m, OdometryIn):
+            p, q = msg.pose.pose.position, msg.pose.pose.orientation
+            if m.attribute == "pose":
+                value = codec.POSE.pack([float(p.x), float(p.y), yaw_of(q)])
+            else:
+                t = msg.twist.twist
+                value = codec.ODOMETRY.pack([float(p.x), float(p.y), yaw_of(q), float(t.linear.x),
+                                             float(t.angular.z)])
+            attribute = m.attribute
+        elif isinstance(m, ScanIn):
+            value, attribute = codec.RANGES.pack([float(r) for r in msg.ranges]), "ranges"
+        elif isinstance(m, RangeIn):
+            value, attribute = codec.RANGES.pack([float(msg.range)]), "ranges"
+        else:
+            value, attribute = codec.STALL.pack(bool(msg.data)), "stall"
+        robot = getattr(m, "robot")
+        if not self.timed:
+            if self.rtia is not None:
+                self.rtia.updateAttributeValues(self._objects[robot], {self._handles[attribute]: value}, "ros")
+                self.updates += 1
+            return
+        with self._state_lock:
+            self._state.setdefault(robot, {})[attribute] = value
+            if hasattr(msg, "header"):
+                self._stamps[m.topic] = msg.header.stamp.to_sec()
+            self._state_lock.notify_all()
+
+    def _sync_state(self) -> None:
+        """Timed, on the bridge's thread at time ``G``: with ``await_state``, wait until every stamped state
+        topic has a message stamped ``G`` or later; then send each robot's new values stamped ``G + L``."""
+        if self.await_state is not None:
+            stamped = [m.topic for m in self.mappings if isinstance(m, (OdometryIn, ScanIn, RangeIn))]
+            fresh = self.time - 2e-9 - 1e-9 * abs(self.time)  # ROS stamps are truncated to nanoseconds
+
+            def arrived() -> bool:
+                return self._stop.is_set() or all(self._stamps.get(t, -math.inf) >= fresh for t in stamped)
+
+            with self._state_lock:
+                if not self._state_lock.wait_for(arrived, self.await_state):
+                    self.late_states += 1
+        with self._state_lock:
+            pending, self._state = self._state, {}
+        rtia = self._rtia()
+        for robot, values in pending.items():
+            if values:
+                rtia.updateAttributeValues(self._objects[robot], {self._handles[a]: v for a, v in values.items()},
+                                           "ros", self.time + self.lookahead)
+                self.updates += 1
+
+    def _commanded(self, robot: str, linear: float, angular: float) -> None:
+        """The bridge's thread (a cmd_vel interaction): untimed, publish at once; timed, after the grant."""
+        if robot not in self._twist_out:
+            self.ignored += 1
+            return
+        self._commands.append((robot, linear, angular))
+        if not self.timed:
+            self._publish_commands()
+
+    def _publish_commands(self) -> None:
+        commands, self._commands = self._commands, []
+        for robot, linear, angular in commands:
+            msg = Twist()
+            msg.linear.x, msg.angular.z = linear, angular
+            for pub in self._twist_out[robot]:
+                pub.publish(msg)
+                self.commands_out += 1
+                ack = self._ack_of.get(id(pub))
+                if ack is not None:
+                    with self._state_lock:
+                        self._acked[ack] += 1
+
+    def _on_ack(self, msg: Any, ack: str) -> None:
+        """rospy's thread: the node's count of the Twists it took."""
+        with self._state_lock:
+            self._acks[ack] = int(msg.data)
+            self._state_lock.notify_all()
+
+    def _await_acks(self) -> None:
+        """Timed, before the next /clock: wait (``await_state`` s at most) until every acknowledging node
+        has taken every Twist published to it."""
+        if not self._acked:
+            return
+
+        def caught_up() -> bool:
+            return self._stop.is_set() or all(self._acks[a] >= n for a, n in self._acked.items())
+
+        with self._state_lock:
+            if not self._state_lock.wait_for(caught_up, self.await_state or 5.0):
+                self.late_acks += 1
+
+    def _tick_clock(self) -> None:
+        if self._clock_pub is not None:
+            self._clock_pub.publish(Clock(rospy.Time.from_sec(self.time)))
+
     # ---- HLA → ROS ----
 
     def _reflected(self, robot: str, values: dict[str, Any], stamp: Optional[float]) -> None:
@@ -370,7 +662,7 @@ class RosBridge:
             self._velocity[robot] = (float(odom[3]), float(odom[4]))
         when = rospy.Time.now() if stamp is None else rospy.Time.from_sec(stamp)
         for m, pub in self._publishers:
-            if m.robot != robot:
+            if m.robot != robot or isinstance(m, TwistOut):
                 continue
             msg = self._message(m, values, when)
             if msg is not None:

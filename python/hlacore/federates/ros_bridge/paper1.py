@@ -3,6 +3,12 @@ as a plain ROS node in another process, as in ros-ptolemy-hla-iess2015 (Stage be
 "Control" script commanding the avatar, a Python ROS node driving the obstacles).
 
     python -m hlacore.federates.ros_bridge.paper1 [OUTDIR] [--rtig HOST:PORT] [--duration 30]
+        [--controller node|de]
+
+``--controller de`` plays paper 1's own chain instead (:mod:`.paper1_chain`): the controller a DE-engine
+federate, the world a stageros-style ROS node, the bridge between them, each in its own process; it writes
+``paper1-de-trace.csv``, ``paper1-de-snapshot.png`` and ``paper1-de-trajectories.png``. The default
+(``node``) is described below.
 
 One process holds the world federate (on a thread) and the bridge (timed, ``/clock``, waiting each cycle
 for the controllers' answers: a lockstep through ROS); the node process (``--node``) subscribes
@@ -106,7 +112,7 @@ def node_main(timeout: float = 600.0) -> int:
 
     rospy.init_node("paper1_control", disable_signals=True)
     controller = paper1.Controller()
-    starts: dict[str, float] = {}
+    drive = paper1.ObstacleDriver()
     pubs = {name: rospy.Publisher(f"/{name}/cmd_vel", Twist, queue_size=100)
             for name in ("avatar",) + paper1.OBSTACLES}
 
@@ -119,9 +125,7 @@ def node_main(timeout: float = 600.0) -> int:
         pubs["avatar"].publish(twist(controller(msg.range)))
 
     def on_pose(msg: Odometry, name: str) -> None:
-        y = msg.pose.pose.position.y
-        start = starts.setdefault(name, y)
-        pubs[name].publish(twist(0.3 if y - start < 5.0 else 0.0))
+        pubs[name].publish(twist(drive(name, msg.pose.pose.position.y)))
 
     subs = [rospy.Subscriber("/avatar/range", Range, on_range, queue_size=100)]
     subs += [rospy.Subscriber(f"/{n}/base_pose_ground_truth", Odometry, on_pose, n, queue_size=100)
@@ -291,10 +295,15 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("outdir", nargs="?", default="paper1-ros-out")
     parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default: an in-process gateway)")
     parser.add_argument("--duration", type=float, default=30.0)
+    parser.add_argument("--controller", choices=("node", "de"), default="node",
+                        help="node: world federate + bridge + the controllers as a rospy node; de: the DE "
+                             "controller federate + bridge + the world as a stageros-style ROS node")
     parser.add_argument("--node", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.node:
         return node_main()
+    if args.controller == "de":
+        return _main_de(args.outdir, args.rtig, args.duration)
     with contextlib.ExitStack() as stack:
         stack.enter_context(ros_master())
         address = args.rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
@@ -302,6 +311,21 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     for name, passed in result.checks.items():
         print(f"{'ok  ' if passed else 'FAIL'} {name}")
     for path in write_outputs(result, args.outdir):
+        print(f"wrote {path}")
+    print(json.dumps(result.summary()), flush=True)
+    return 0 if result.ok else 1
+
+
+def _main_de(outdir: str, rtig: Optional[str], duration: float) -> int:
+    from . import paper1_chain
+
+    with contextlib.ExitStack() as stack:
+        stack.enter_context(ros_master())
+        address = rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
+        result = paper1_chain.run(address, outdir, duration=duration)
+    for name, passed in result.checks.items():
+        print(f"{'ok  ' if passed else 'FAIL'} {name}")
+    for path in paper1_chain.write_outputs(result, outdir):
         print(f"wrote {path}")
     print(json.dumps(result.summary()), flush=True)
     return 0 if result.ok else 1

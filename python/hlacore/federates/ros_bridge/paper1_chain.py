@@ -1,0 +1,150 @@
+"""Paper 1 with paper 1's architecture: the DE-engine controller federate commands a stageros-style world
+through the RTI, the ROS bridge and ROS topics (ros-ptolemy-hla-iess2015, Fig. 1 and 4):
+
+    DE federate (Ptolemy's role)  <->  RTI  <->  ROS bridge (federate + ROS node)  <->  ROS  <->  stage node
+
+Three processes besides roscore, the gateway and this one, each started here and ended by pid:
+
+* ``python -m hlacore.federates.robot_world.stage_node paper1.world`` — the world as a ROS node stepping on
+  ``/clock`` (Stage's role);
+* ``python -m hlacore.federates.robot_world.paper1_de`` — the controller federate (the avatar's go / slow /
+  stop "Control" actor and the obstacles' driver on the DE engine);
+* ``python -m hlacore.federates.ros_bridge --world-node paper1.world --clock --await-state ...`` — the
+  bridge: each grant ``G`` on ``/clock``, the node's state of ``G`` back as ``WorldRobot`` updates stamped
+  ``G + L``, the ``cmd_vel`` interactions as Twists on ``/<robot>/cmd_vel``.
+
+The loop's delays are those of ``paper1_hla`` (the state of ``G`` is read at ``G + L``, the command acts
+from ``G + 2L``), so the robots' poses are those of the RTI-only run.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import csv
+import json
+import math
+import os
+import pathlib
+import re
+from dataclasses import dataclass, field
+from typing import Any, Optional
+
+import hlacore.rti as rti
+from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, paper1, render
+from hlacore.federates.robot_world.world import Pose
+
+from .children import Children
+from .paper1 import Result, check
+
+TRACE = "paper1-de-trace.csv"
+SNAPSHOT = "paper1-de-snapshot.png"
+PLOT = "paper1-de-trajectories.png"
+
+
+@dataclass
+class ChainResult(Result):
+    """A :class:`~.paper1.Result` from the stage node's ticks, plus the DE federate's view."""
+
+    control: list[tuple[float, float, float]] = field(default_factory=list)  # (DE time, distance, speed)
+    de_grants: int = 0
+    late_states: int = 0
+    late_acks: int = 0
+    bridge: str = ""  #: the bridge's last line
+
+    def summary(self) -> dict[str, Any]:
+        out = super().summary()
+        out.update(controller="de", de_grants=self.de_grants, late_states=self.late_states,
+                   late_acks=self.late_acks,
+                   avatar_commands=len(self.control))
+        return out
+
+
+def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, timeout: float = 60.0,
+        state_timeout: float = 5.0) -> ChainResult:
+    """Play the scenario on the gateway at ``address`` with the ROS master of ``$ROS_MASTER_URI``; the
+    children's files (world file, summaries, snapshot) go to ``outdir``."""
+    out = pathlib.Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    world_file = out / "paper1.world"
+    world_file.write_text(paper1.WORLD)
+    stage_json, de_json = out / "stage-node.json", out / "de-federate.json"
+    for stale in (stage_json, de_json):
+        stale.unlink(missing_ok=True)
+    creator = rti.RTIAmbassador(address)
+    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
+    result = ChainResult()
+    try:
+        with Children(dict(os.environ)) as kids:
+            stage = kids.start("stage node", ["-m", "hlacore.federates.robot_world.stage_node", str(world_file),
+                                              "--summary", str(stage_json), "--snapshot", str(out / SNAPSHOT)])
+            stage.wait_for("stage_node ready", timeout)
+            de = kids.start("DE federate", ["-m", "hlacore.federates.robot_world.paper1_de", "--rtig", address,
+                                            "--duration", repr(duration), "--period", repr(period),
+                                            "--timeout", repr(timeout), "--out", str(de_json)])
+            de.wait_for("paper1_de joined", timeout)  # regulating before the bridge can advance
+            bridge = kids.start("bridge", ["-m", "hlacore.federates.ros_bridge", "--rtig", address,
+                                           "--world-node", str(world_file), "--acks", "--clock", "--period", repr(period),
+                                           "--await-state", repr(state_timeout), "--wait-connections",
+                                           repr(timeout), "--until", repr(duration)])
+            bridge.wait_for("ros_bridge ready", timeout)
+            de.wait_for("paper1_de ready", timeout)
+            cycles = math.ceil(duration / period)
+            result.bridge = bridge.wait_for("ros_bridge stopped", timeout + cycles * state_timeout)
+            for child in (bridge, de):
+                if child.wait(timeout) != 0:
+                    raise RuntimeError(child.report(f"exited with status {child.proc.returncode}"))
+            if stage.stop() != 0:
+                raise RuntimeError(stage.report(f"exited with status {stage.proc.returncode}"))
+    except BaseException:
+        with contextlib.suppress(Exception):  # a killed child may not have been dropped yet: keep the cause
+            creator.destroyFederationExecution(FEDERATION)
+        raise
+    creator.destroyFederationExecution(FEDERATION)
+    stage_summary = json.loads(stage_json.read_text())
+    de_summary = json.loads(de_json.read_text())
+    result.times = list(stage_summary["times"])
+    result.poses = [{n: Pose(*p) for n, p in poses.items()} for poses in stage_summary["poses"]]
+    result.stall_steps = dict(stage_summary["stall_steps"])
+    result.sent = int(de_summary["sent"])
+    result.de_grants = int(de_summary["grants"])
+    result.control = [tuple(c) for c in de_summary["control"]]  # type: ignore[misc]
+    late = re.search(r"(\d+) late states, (\d+) late acks", result.bridge)
+    result.late_states = int(late.group(1)) if late else -1
+    result.late_acks = int(late.group(2)) if late else -1
+    result.checks = check(result)
+    return result
+
+
+def write_outputs(result: ChainResult, directory: str, period: float = 0.1) -> list[str]:
+    """The trace (CSV per stage tick: time, the distance the controller read from that state and the speed
+    it commanded, every robot's x and y) and, with matplotlib, the trajectory plot; the snapshot was
+    written by the stage node. Returns the files written."""
+    out = pathlib.Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    world = World(paper1.world_spec())
+    names = [r.name for r in world.robots]
+    by_state = {round(t / period) - 1: (d, v) for t, d, v in result.control}  # read at G + L: state of G
+    with open(out / TRACE, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["time", "distance", "avatar_speed"] + [f"{n}_{c}" for n in names for c in "xy"])
+        for t, poses in zip(result.times, result.poses):
+            d, v = by_state.get(round(t / period), ("", ""))
+            writer.writerow([repr(t), repr(d), repr(v)] + [repr(c) for n in names for c in (poses[n].x, poses[n].y)])
+    written = [str(out / TRACE)]
+    if (out / SNAPSHOT).exists():
+        written.append(str(out / SNAPSHOT))
+    try:
+        written.append(str(render.plot_trajectories(world, result.poses, out / PLOT,
+                                                    title="paper 1: DE controller through ROS")))
+    except ImportError as exc:
+        print(f"no trajectory plot: {exc}")
+    return written
+
+
+def compare_with_rti_only(result: ChainResult, rti_poses: list[dict[str, Pose]]) -> Optional[float]:
+    """The largest difference in x or y between the chain's poses and an RTI-only run's at the same grants
+    (None when the runs have different lengths)."""
+    if len(rti_poses) != len(result.poses):
+        return None
+    return max((abs(a[n].x - b[n].x) + abs(a[n].y - b[n].y) for a, b in zip(result.poses, rti_poses) for n in a),
+               default=0.0)

@@ -75,7 +75,7 @@ def test_infinite_bounds_are_null_on_the_wire_and_inf_in_python(rtig: RtigProces
                            timeout=10)
     assert table.returncode == 0, table.stderr
     assert "federation TestFed" in table.stdout
-    row = next(line for line in table.stdout.splitlines() if "lone" in line)
+    row = next(line for line in table.stdout.splitlines() if line.split()[1:2] == ["lone"])
     assert row.split() == ["1", "lone", "0", "1", "R", "C", "-", "0", "0", "inf"]
     lone.resignFederationExecution(rti.ResignAction.NoAction)
     creator.destroyFederationExecution("TestFed")

@@ -12,60 +12,24 @@ from __future__ import annotations
 
 import csv
 import json
-import os
 import pathlib
-import signal
-import socket
 import subprocess
 import sys
-import time
-import xmlrpc.client
 from typing import Any, Iterator
 
 import pytest
 
-DIST = os.environ.get("HLACORE_ROS_DIST_PACKAGES", "/usr/lib/python3/dist-packages")
+from test_ros_bridge import require_ros, running_roscore
 CLEAR = 0.33 / 2 * 2 ** 0.5  # the robot's half diagonal
 CYCLES = 50
 
 
 @pytest.fixture(scope="module")
 def roscore(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]]:
-    """A real roscore on a free loopback port for the module; yields the environment for the runs."""
-    if not (os.path.exists("/usr/bin/roscore") and os.path.isdir(os.path.join(DIST, "rospy"))):
-        message = "ROS 1 is not installed (./scripts/install-ros.sh installs it from Debian)"
-        if os.environ.get("CI"):
-            pytest.fail(message + "; CI=true requires it")
-        pytest.skip(message)
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = s.getsockname()[1]
-    home = tmp_path_factory.mktemp("ros")
-    env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1", ROS_HOME=str(home),
-               ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
-    env.pop("ROS_HOSTNAME", None)
-    with open(home / "roscore.log", "wb") as log:
-        proc = subprocess.Popen(["roscore", "-p", str(port)], stdout=log, stderr=subprocess.STDOUT,
-                                stdin=subprocess.DEVNULL, env=env)
-        try:
-            deadline = time.monotonic() + 30
-            while True:
-                try:
-                    with xmlrpc.client.ServerProxy(env["ROS_MASTER_URI"]) as master:
-                        master.getPid("/hlacore_test")
-                    break
-                except OSError:
-                    if proc.poll() is not None or time.monotonic() > deadline:
-                        raise AssertionError("roscore did not start: " + (home / "roscore.log").read_text())
-                    time.sleep(0.1)
-            yield env
-        finally:
-            proc.send_signal(signal.SIGINT)
-            try:
-                proc.wait(15)
-            except subprocess.TimeoutExpired:
-                proc.kill()
-                proc.wait()
+    """A real roscore for the module; yields the environment for the runs."""
+    require_ros()
+    with running_roscore(tmp_path_factory.mktemp("ros")) as env:
+        yield env
 
 
 def run_mirror(env: dict[str, str], address: str, out: pathlib.Path, *options: str) -> dict[str, Any]:

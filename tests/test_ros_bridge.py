@@ -46,14 +46,18 @@ def ros_installed() -> bool:
     return os.path.exists("/usr/bin/roscore") and os.path.isdir(os.path.join(DIST, "rospy"))
 
 
-@pytest.fixture
-def ros() -> None:
+def require_ros() -> None:
     """Skip without ROS, except under CI where scripts/test.sh must have installed it."""
     if not ros_installed():
         message = "ROS 1 is not installed (./scripts/install-ros.sh installs it from Debian)"
         if os.environ.get("CI"):
             pytest.fail(message + "; CI=true requires it")
         pytest.skip(message)
+
+
+@pytest.fixture
+def ros() -> None:
+    require_ros()
 
 
 def free_port() -> int:
@@ -109,33 +113,40 @@ def stop(proc: subprocess.Popen[str], sig: int = signal.SIGTERM, timeout: float 
     return proc.returncode
 
 
-@pytest.fixture
-def roscore(ros: None, tmp_path: pathlib.Path) -> Iterator[dict[str, str]]:
-    """A real roscore on a free loopback port; yields the environment for ROS processes."""
+@contextlib.contextmanager
+def running_roscore(home: pathlib.Path) -> Iterator[dict[str, str]]:
+    """A real roscore on a free loopback port, its ROS_HOME (and log) in `home`, stopped by pid at the end;
+    yields the environment for ROS processes."""
+    home.mkdir(parents=True, exist_ok=True)
     port = free_port()
-    home = tmp_path / "ros"
     env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1", ROS_HOME=str(home),
                ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
     env.pop("ROS_HOSTNAME", None)
-    log = open(tmp_path / "roscore.log", "wb")
-    proc = subprocess.Popen(["roscore", "-p", str(port)], stdout=log, stderr=subprocess.STDOUT,
-                            stdin=subprocess.DEVNULL, env=env)
-    try:
-        deadline = time.monotonic() + 30
-        while True:
-            try:
-                with xmlrpc.client.ServerProxy(env["ROS_MASTER_URI"]) as master:
-                    master.getPid("/hlacore_test")
-                break
-            except OSError:
-                if proc.poll() is not None or time.monotonic() > deadline:
-                    raise AssertionError("roscore did not start: "
-                                         + (tmp_path / "roscore.log").read_text(errors="replace"))
-                time.sleep(0.1)
+    with open(home / "roscore.log", "wb") as log:
+        proc = subprocess.Popen(["roscore", "-p", str(port)], stdout=log, stderr=subprocess.STDOUT,
+                                stdin=subprocess.DEVNULL, env=env)
+        try:
+            deadline = time.monotonic() + 30
+            while True:
+                try:
+                    with xmlrpc.client.ServerProxy(env["ROS_MASTER_URI"]) as master:
+                        master.getPid("/hlacore_test")
+                    break
+                except OSError:
+                    if proc.poll() is not None or time.monotonic() > deadline:
+                        raise AssertionError("roscore did not start: "
+                                             + (home / "roscore.log").read_text(errors="replace"))
+                    time.sleep(0.1)
+            yield env
+        finally:
+            stop(proc, signal.SIGINT)
+
+
+@pytest.fixture
+def roscore(ros: None, tmp_path: pathlib.Path) -> Iterator[dict[str, str]]:
+    """A real roscore for the test (running_roscore)."""
+    with running_roscore(tmp_path / "ros") as env:
         yield env
-    finally:
-        stop(proc, signal.SIGINT)
-        log.close()
 
 
 def start_bridge(env: dict[str, str], address: str, *args: str) -> tuple[subprocess.Popen[str], Lines]:

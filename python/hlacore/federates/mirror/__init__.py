@@ -8,7 +8,7 @@ reads, a third robot driven by a plain ROS node, the reference trajectory, and t
 - :mod:`.run` — one run: world federate + bridge here, robot federate + device and the node as processes;
 - :mod:`.metrics` — Hausdorff distance between paths, box clearance;
 - :mod:`.outputs` — CSV trace and trajectory plot;
-- :mod:`.ros` — a roscore for the run when none is running.
+(the run's ROS master, started when none answers, comes from :mod:`hlacore.federates.ros_bridge.master`).
 
 ``python -m hlacore.federates.mirror --help`` runs it.
 """

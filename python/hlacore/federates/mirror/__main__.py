@@ -17,9 +17,9 @@ import pathlib
 from typing import Optional, Sequence
 
 import hlacore
+from hlacore.federates.ros_bridge.master import ros_master
 
 from .outputs import plot, write_trace
-from .ros import ros_master
 from .run import run
 
 

@@ -26,18 +26,14 @@ from __future__ import annotations
 import argparse
 import contextlib
 import json
-import os
 import pathlib
-import shutil
 import signal
-import socket
 import subprocess
 import sys
-import tempfile
 import threading
 import time
 from dataclasses import dataclass, field
-from typing import Any, Iterator, Optional, Sequence
+from typing import Any, Optional, Sequence
 
 import hlacore
 import hlacore.rti as rti
@@ -45,6 +41,7 @@ from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFede
 from hlacore.federates.robot_world.world import Pose
 
 from .bridge import RosBridge, world_mappings
+from .master import ros_master
 
 HALF = 0.33 / 2  #: the robots' half size
 WALL_FACE = 7.0 - 0.1  #: x of the wall's face
@@ -142,60 +139,6 @@ def node_main(timeout: float = 600.0) -> int:
 
 
 # ---- the scenario ----
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
-
-
-def _master_online(uri: str) -> bool:
-    import xmlrpc.client
-
-    try:
-        with xmlrpc.client.ServerProxy(uri) as master:
-            master.getPid("/paper1")
-        return True
-    except OSError:
-        return False
-
-
-@contextlib.contextmanager
-def ros_master(timeout: float = 30.0) -> Iterator[str]:
-    """``$ROS_MASTER_URI`` when a master answers there, else a roscore started on a free loopback port
-    (``ROS_HOME`` in a temporary directory, removed afterwards unless roscore failed; the environment
-    variables set for this process and its children), stopped by pid at the end. ``ROS_IP`` defaults to
-    127.0.0.1 either way."""
-    if not os.environ.get("ROS_HOSTNAME"):
-        os.environ.setdefault("ROS_IP", "127.0.0.1")  # loopback: never advertise another interface
-    uri = os.environ.get("ROS_MASTER_URI")
-    if uri and _master_online(uri):
-        yield uri
-        return
-    home = tempfile.mkdtemp(prefix="hlacore-ros-")
-    uri = f"http://127.0.0.1:{_free_port()}"
-    os.environ.update(ROS_MASTER_URI=uri, ROS_IP="127.0.0.1", ROS_HOME=home, ROS_LOG_DIR=f"{home}/log")
-    with open(f"{home}/roscore.log", "wb") as log:
-        proc = subprocess.Popen(["roscore", "-p", uri.rsplit(":", 1)[1]], stdout=log, stderr=subprocess.STDOUT,
-                                stdin=subprocess.DEVNULL)
-        try:
-            deadline = time.monotonic() + timeout
-            while not _master_online(uri):
-                if proc.poll() is not None or time.monotonic() > deadline:
-                    raise RuntimeError(f"roscore did not start (log: {home}/roscore.log)")
-                time.sleep(0.1)
-            yield uri
-        finally:
-            if proc.poll() is None:
-                proc.send_signal(signal.SIGINT)
-                try:
-                    proc.wait(15)
-                except subprocess.TimeoutExpired:
-                    proc.kill()
-                    proc.wait()
-    if proc.returncode == 0 or proc.returncode == -signal.SIGINT:
-        shutil.rmtree(home, ignore_errors=True)  # logs kept only when roscore failed
-
 
 def run(address: str, duration: float = 30.0, period: float = 0.1, dt: float = 0.01,
         node_timeout: float = 60.0, cycle_timeout: float = 30.0, input_timeout: float = 5.0) -> Result:

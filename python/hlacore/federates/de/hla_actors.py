@@ -56,6 +56,19 @@ def _decoder(codec: Codec) -> Callable[[bytes], Any]:
     return codec[1]
 
 
+def _decode(values: Mapping[Any, bytes], names: Mapping[Any, str], codecs: Mapping[str, Codec]) -> dict[str, Any]:
+    """The values of the handles in ``names``, by name, decoded; other handles are dropped."""
+    return {names[h]: _decoder(codecs[names[h]])(data) for h, data in values.items() if h in names}
+
+
+def _send_received(inbox: InputPort, ports: Mapping[str, OutputPort], received: OutputPort) -> None:
+    """Fire an incoming actor: each :class:`Received` in ``inbox`` as tokens on its values' ports."""
+    for record in inbox.tokens:
+        for name, value in record.values.items():
+            ports[name].send(value)
+        received.send(record)
+
+
 def _codecs(names: Union[Mapping[str, Codec], Iterable[str]]) -> dict[str, Codec]:
     if isinstance(names, Mapping):
         return dict(names)
@@ -203,9 +216,7 @@ class ObjectSubscriber(HlaActor):
         """Called by the director for a reflection of the subscribed class: schedule it at ``at``."""
         if self.instance_name is not None and instance != self.instance_name:
             return
-        decoded = {
-            self._names[h]: _decoder(self.codecs[self._names[h]])(data) for h, data in values.items() if h in self._names
-        }
+        decoded = _decode(values, self._names, self.codecs)
         if not decoded:
             return
         director = self.hla()
@@ -213,10 +224,7 @@ class ObjectSubscriber(HlaActor):
         director.inject(self.reflections, Received(instance, decoded, timestamp, time, tag), at)
 
     def fire(self) -> None:
-        for record in self.reflections.tokens:
-            for attr, value in record.values.items():
-                self.ports[attr].send(value)
-            self.received.send(record)
+        _send_received(self.reflections, self.ports, self.received)
 
 
 class InteractionSender(HlaActor):
@@ -298,15 +306,10 @@ class InteractionReceiver(HlaActor):
         self, values: Mapping[rti.ParameterHandle, bytes], tag: str, timestamp: Optional[float], at: float
     ) -> None:
         """Called by the director for an interaction of the subscribed class: schedule it at ``at``."""
-        decoded = {
-            self._names[h]: _decoder(self.codecs[self._names[h]])(data) for h, data in values.items() if h in self._names
-        }
+        decoded = _decode(values, self._names, self.codecs)
         director = self.hla()
         time = max(at, director.now)
         director.inject(self.interactions, Received(self.interaction_class, decoded, timestamp, time, tag), at)
 
     def fire(self) -> None:
-        for record in self.interactions.tokens:
-            for param, value in record.values.items():
-                self.ports[param].send(value)
-            self.received.send(record)
+        _send_received(self.interactions, self.ports, self.received)

@@ -18,6 +18,8 @@ class Gateway:
 
     The gateway listens from construction until :meth:`stop` (or the end of the ``with`` block).
     It logs dropped connections to stderr; ``verbose=True`` logs joins and federations too.
+    ``save_dir`` is ``rtig --save-dir``: federation saves are written there as files and can be restored
+    by a later gateway; without it saves are kept in memory only (docs/save-restore.md).
     """
 
     def __init__(
@@ -26,8 +28,9 @@ class Gateway:
         port: int = 60400,
         fom_path: Iterable[str] = (),
         verbose: bool = False,
+        save_dir: Optional[str] = None,
     ) -> None:
-        self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose)
+        self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose, str(save_dir or ""))
 
     @property
     def host(self) -> str:

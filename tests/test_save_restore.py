@@ -4,6 +4,7 @@ saves, save files, restoring after `rtig` was restarted, and unusable saves. Con
 
 from __future__ import annotations
 
+import json
 import pathlib
 import subprocess
 from typing import Any, Optional
@@ -14,7 +15,7 @@ import hlacore
 import hlacore.rti as rti
 import hlacore.status
 
-from conftest import ROBOT_FED, Recorder, python_subprocess, read_json, running_rtig, settle, tick_until
+from conftest import ROBOT_FED, Recorder, python_subprocess, running_rtig, settle, tick_until
 
 SAVE_CALLBACKS = (
     "initiateFederateSave",
@@ -397,15 +398,15 @@ def test_save_file_and_restore_after_rtig_restart(tmp_path: pathlib.Path):
         a.rtia.publishObjectClass(a.robot, [a.location, a.battery])
         peer = python_subprocess("save_peer.py", server.address)
         try:
-            assert read_json(peer) == {"ready": True, "handle": 2}
+            assert peer_says(peer) == {"ready": True, "handle": 2}
             r1 = a.rtia.registerObjectInstance(a.robot, "r1")
             a.rtia.updateAttributeValues(r1, {a.location: b"queued at 3"}, "before", 3.0)
             a.rtia.requestFederationSave("snap")
             tick_all(lambda: a.named("initiateFederateSave"), a)
             a.rtia.federateSaveComplete()
             tick_all(lambda: a.named("federationSaved"), a)
-            assert read_json(peer) == {"event": "initiateFederateSave", "label": "snap"}
-            assert read_json(peer) == {"event": "federationSaved"}
+            assert peer_says(peer) == {"event": "initiateFederateSave", "label": "snap"}
+            assert peer_says(peer) == {"event": "federationSaved"}
             before = saved_view(federation_status(server.address))
         finally:
             peer.kill()
@@ -419,29 +420,40 @@ def test_save_file_and_restore_after_rtig_restart(tmp_path: pathlib.Path):
         creator.createFederationExecution("TestFed", ROBOT_FED)
         peer = python_subprocess("save_peer.py", server.address)
         try:
-            assert read_json(peer) == {"ready": True, "handle": 1}  # b joins first this time
+            assert peer_says(peer) == {"ready": True, "handle": 1}  # b joins first this time
             a = Fed(server.address, "a")
             assert int(a.handle) == 2
             restore("snap", a, a)
             [(label, handle)] = a.named("initiateFederateRestore")
             assert (label, int(handle)) == ("snap", 1)  # a's handle in the save
             assert int(a.rtia._federate_handle()) == 1
-            assert read_json(peer) == {"event": "initiateFederateRestore", "label": "snap", "handle": 2,
+            assert peer_says(peer) == {"event": "initiateFederateRestore", "label": "snap", "handle": 2,
                                        "time": 0.0, "lookahead": 1.0, "knows": ["r1"]}
-            assert read_json(peer) == {"event": "federationRestored"}
+            assert peer_says(peer) == {"event": "federationRestored"}
             assert saved_view(federation_status(server.address)) == before
             assert a.rtia.isAttributeOwnedByFederate(r1, a.location)
             assert a.rtia.getObjectInstanceName(r1) == "r1"
             # Advancing together delivers the restored queued message to b.
             a.rtia.timeAdvanceRequest(5.0)
             tick_all(lambda: a.named("timeAdvanceGrant"), a, timeout=10)
-            assert read_json(peer) == {"event": "reflect", "time": 3.0, "location": "queued at 3"}
+            assert peer_says(peer) == {"event": "reflect", "time": 3.0, "location": "queued at 3"}
             a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-            assert read_json(peer) == {"event": "granted", "time": 5.0}
+            assert peer_says(peer) == {"event": "granted", "time": 5.0}
         finally:
             peer.kill()
             peer.wait()
             close_pipes(peer)
+
+
+def peer_says(peer: subprocess.Popen[str]) -> dict[str, Any]:
+    """The next JSON line of tests/peers/save_peer.py. A plain readline, because the peer often prints
+    two lines at once (select() would not see the second one, already buffered here); it is bounded by
+    the peer, which exits after 60 s at most."""
+    assert peer.stdout is not None
+    line = peer.stdout.readline()
+    if not line:
+        raise AssertionError(f"save_peer.py ended: {peer.stderr.read() if peer.stderr else ''}")
+    return dict(json.loads(line))
 
 
 def close_pipes(proc: subprocess.Popen[str]) -> None:
@@ -455,18 +467,26 @@ def test_corrupt_or_missing_save_file_fails_the_restore_and_rtig_keeps_serving(t
     with running_rtig(tmp_path, "--save-dir", str(save_dir)) as server:
         creator = rti.RTIAmbassador(server.address)
         creator.createFederationExecution("TestFed", ROBOT_FED)
-        a = Fed(server.address, "a")
+        a, b = Fed(server.address, "a"), Fed(server.address, "b")
+        for f in (a, b):
+            f.enable_time(1.0)
         a.rtia.publishObjectClass(a.robot, [a.location])
-        a.rtia.registerObjectInstance(a.robot, "r1")
-        save("good/../label", a, a)
+        b.rtia.subscribeObjectClassAttributes(b.robot, [b.location])
+        r1 = a.rtia.registerObjectInstance(a.robot, "r1")
+        a.rtia.updateAttributeValues(r1, {a.location: b"queued at 3"}, "t", 3.0)  # queued for b
+        save("good/../label", a, a, b)
         [written] = list(save_dir.iterdir())
         assert written.name == "TestFed--good%2F..%2Flabel.hlasave"  # no label leaves the directory
         data = written.read_bytes()
         (save_dir / "TestFed--truncated.hlasave").write_bytes(data[: len(data) // 2])
         (save_dir / "TestFed--garbage.hlasave").write_bytes(b"not a save at all")
         (save_dir / "TestFed--version.hlasave").write_bytes(data[:8] + b"\x63\x00\x00\x00" + data[12:])
+        # The queued reflection's frame: u32 length, u16 type, u32 object, u32 count, u32 attribute, u32 size,
+        # then the value. An unknown type inside it leaves the file's structure intact.
+        type_at = data.index(b"queued at 3") - 18
+        (save_dir / "TestFed--frame.hlasave").write_bytes(data[:type_at] + b"\xff\xff" + data[type_at + 2 :])
         reasons = {}
-        for label in ("missing", "truncated", "garbage", "version"):
+        for label in ("missing", "truncated", "garbage", "version", "frame"):
             a.amb.calls.clear()
             a.rtia.requestFederationRestore(label)
             tick_all(lambda: a.named("requestFederationRestoreFailed"), a)
@@ -477,9 +497,16 @@ def test_corrupt_or_missing_save_file_fails_the_restore_and_rtig_keeps_serving(t
         assert "is unusable: " in reasons["truncated"] and reasons["truncated"].endswith(" in the save")
         assert "is unusable: not an hlacore save" in reasons["garbage"]
         assert "save format version 99" in reasons["version"]
+        assert "is unusable: unknown message type" in reasons["frame"]
+        assert not b.named("federationRestoreBegun")
         a.amb.calls.clear()
-        restore("good/../label", a, a)  # the good one still restores
-        a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        restore("good/../label", a, a, b)  # the good one still restores
+        for f in (a, b):
+            f.rtia.timeAdvanceRequest(4.0)
+        tick_all(lambda: a.named("timeAdvanceGrant") and b.named("timeAdvanceGrant"), a, b)
+        assert [args[1] for args in b.named("reflectAttributeValues")] == [{b.location: b"queued at 3"}]
+        for f in (a, b):
+            f.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
         creator.destroyFederationExecution("TestFed")
 
 
@@ -491,11 +518,11 @@ def test_a_federate_dying_during_a_save_makes_it_fail(tmp_path: pathlib.Path):
         a.enable_time(1.0)
         peer = python_subprocess("save_peer.py", server.address, "--no-answer")
         try:
-            assert read_json(peer) == {"ready": True, "handle": 2}
+            assert peer_says(peer) == {"ready": True, "handle": 2}
             a.rtia.requestFederationSave("doomed")
             tick_all(lambda: a.named("initiateFederateSave"), a)
             a.rtia.federateSaveComplete()
-            assert read_json(peer) == {"event": "initiateFederateSave", "label": "doomed"}
+            assert peer_says(peer) == {"event": "initiateFederateSave", "label": "doomed"}
             peer.kill()
             peer.wait()
             tick_all(lambda: a.named("federationNotSaved"), a)
@@ -528,4 +555,25 @@ def test_inprocess_gateway_writes_saves_to_its_save_dir(tmp_path: pathlib.Path):
         a = Fed(gw.address, "a")
         restore("mem", a, a)
         a.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+        creator.destroyFederationExecution("TestFed")
+
+
+def test_a_save_that_cannot_be_written_is_not_saved(tmp_path: pathlib.Path):
+    """A save directory that cannot be created (here a regular file is in the way) fails the save:
+    federationNotSaved, and the reason in the status; the federation goes on."""
+    blocker = tmp_path / "not a directory"
+    blocker.write_text("")
+    with hlacore.Gateway(port=0, save_dir=blocker) as gw:
+        creator = rti.RTIAmbassador(gw.address)
+        creator.createFederationExecution("TestFed", ROBOT_FED)
+        a = Fed(gw.address, "a")
+        a.rtia.requestFederationSave("lost")
+        tick_all(lambda: a.named("initiateFederateSave"), a)
+        a.rtia.federateSaveComplete()
+        tick_all(lambda: a.named("federationNotSaved"), a)
+        status = federation_status(gw.address)["save_restore"]
+        assert status["saves"] == [] and status["save_error"].startswith(f"cannot write {blocker}/TestFed--lost")
+        a.rtia.publishObjectClass(a.robot, [a.location])
+        a.rtia.registerObjectInstance(a.robot, "still serving")
+        a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
         creator.destroyFederationExecution("TestFed")

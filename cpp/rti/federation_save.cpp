@@ -141,6 +141,20 @@ std::string join_names(const std::set<std::string>& names) {
     return out.empty() ? "none" : out;
 }
 
+// A queued or held frame from a save must be one whole message the gateway could have sent: a corrupt
+// one would make the receiving client drop its connection.
+void check_frame(const std::string& frame) {
+    wire::Frame f;
+    if (wire::next_frame(frame, f) != frame.size()) throw WireError("a saved message is not one whole frame");
+    wire::decode(f);
+}
+
+template <class Pairs_>
+void check_delivery_values(const Pairs_& values, const std::string& whose) {
+    for (const auto& [handle, v] : values)
+        if (v < 1 || v > 2) throw WireError("bad order or transport value in " + whose);
+}
+
 std::string time_text(double t) {
     std::ostringstream s;
     s.precision(17);
@@ -407,7 +421,11 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
         if (f.handle >= s.next_federate) throw WireError("federate handle beyond the saved next handle");
     }
     std::set<std::uint32_t> objects_seen;
+    std::set<std::string> object_names;
     for (const auto& o : s.objects) {
+        if (!object_names.insert(o.name).second) throw WireError("duplicate object name '" + o.name + "'");
+        check_delivery_values(o.order, "object '" + o.name + "'");
+        check_delivery_values(o.transport, "object '" + o.name + "'");
         const auto& cls = object_class(o.object_class);
         for (const auto& [attr, owner] : o.owners) {
             if (!cls.attribute(attr) || !handles_seen.count(owner)) throw WireError("bad owner of object '" + o.name + "'");
@@ -418,8 +436,14 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
     for (const auto& f : s.federates) {
         for (auto oh : f.known)
             if (!objects_seen.count(oh)) throw WireError("federate '" + f.name + "' knows an unsaved object");
-        for (const auto& m : f.tso)
+        for (const auto& m : f.tso) {
             if (!handles_seen.count(m.second.first)) throw WireError("queued message from an unsaved federate");
+            check_frame(m.second.second.second);
+        }
+        for (const auto& frame : f.held_ro) check_frame(frame);
+        for (const auto& frame : f.held_after_save) check_frame(frame);
+        check_delivery_values(f.interaction_order, "federate '" + f.name + "'");
+        check_delivery_values(f.interaction_transport, "federate '" + f.name + "'");
     }
     return s;
 }

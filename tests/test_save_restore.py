@@ -262,10 +262,15 @@ def test_restore_brings_back_objects_owners_times_and_queued_messages(testfed, g
     settle(a.rtia, b.rtia)  # b is not advancing: the message stays queued at the gateway
     assert not b.named("reflectAttributeValues")
 
-    save("s", a, a, b)
+    # A save at time 2: both advance there, then save; the message at 3 stays queued for b.
+    a.rtia.requestFederationSave("s", 2.0)
+    a.rtia.timeAdvanceRequest(2.0)
+    b.rtia.timeAdvanceRequest(2.0)
+    complete_save("s", a, b)
     before = saved_view(federation_status(gateway_address))
     [b_before] = [f for f in before["federates"] if f["name"] == "b"]
-    assert b_before["queued_tso"] == 1 and b_before["time"] == 0
+    assert b_before["queued_tso"] == 1 and b_before["time"] == 2.0
+    assert not b.named("reflectAttributeValues")
     assert before["instances"] == [
         {"handle": int(r1), "name": "r1", "class": "robot",
          "owners": {"privilegeToDelete": int(a.handle), "battery": int(a.handle), "location": int(a.handle)}}
@@ -275,7 +280,7 @@ def test_restore_brings_back_objects_owners_times_and_queued_messages(testfed, g
     # another timestamped message in flight.
     a.rtia.timeAdvanceRequest(5.0)
     b.rtia.timeAdvanceRequest(5.0)
-    tick_all(lambda: a.named("timeAdvanceGrant") and b.named("timeAdvanceGrant"), a, b)
+    tick_all(lambda: len(a.named("timeAdvanceGrant")) == 2 and len(b.named("timeAdvanceGrant")) == 2, a, b)
     assert [args[1] for args in b.named("reflectAttributeValues")] == [{b.location: b"queued at 3"}]
     r2 = a.rtia.registerObjectInstance(a.robot, "r2")
     a.rtia.unconditionalAttributeOwnershipDivestiture(r1, [a.battery])
@@ -295,18 +300,20 @@ def test_restore_brings_back_objects_owners_times_and_queued_messages(testfed, g
     assert saved_view(federation_status(gateway_address)) == before
     # The clients' mirrors are the saved ones too.
     for f in (a, b):
-        assert f.rtia.queryFederateTime() == 0.0
+        assert f.rtia.queryFederateTime() == 2.0
         assert f.rtia.queryLookahead() == 1.0
     assert a.rtia.isAttributeOwnedByFederate(r1, a.battery)
     assert not b.rtia.isAttributeOwnedByFederate(r1, b.battery)
     with pytest.raises(rti.AttributeNotOwned):
         b.rtia.updateAttributeValues(r1, {b.battery: b"mine?"}, "t", 4.0)
+    with pytest.raises(rti.InvalidFederationTime):  # the sending rule is the restored one: time 2 + lookahead 1
+        a.rtia.updateAttributeValues(r1, {a.location: b"too early"}, "t", 2.5)
     for f in (a, b):
         with pytest.raises(rti.ObjectNotKnown):
             f.rtia.getObjectInstanceName(r2)
     assert b.rtia.getObjectInstanceHandle("r1") == r1
     with pytest.raises(rti.FederationTimeAlreadyPassed):
-        a.rtia.timeAdvanceRequest(-1.0)  # the restored time is 0
+        a.rtia.timeAdvanceRequest(1.0)  # the restored time is 2
 
     # The queued message is delivered again after the restore; the one sent after the save is gone.
     a.rtia.timeAdvanceRequest(8.0)

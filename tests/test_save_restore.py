@@ -584,3 +584,30 @@ def test_a_save_that_cannot_be_written_is_not_saved(tmp_path: pathlib.Path):
         a.rtia.registerObjectInstance(a.robot, "still serving")
         a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
         creator.destroyFederationExecution("TestFed")
+
+
+def test_what_is_sent_to_a_saving_federate_waits_and_is_part_of_the_save(testfed, gateway_address):
+    """b registers an object while a is already saving (b has not been delivered initiateFederateSave yet):
+    a discovers it only after federationSaved, and again after a restore of that save, since a's own
+    saved state does not have it."""
+    a, b = testfed("a"), testfed("b")
+    a.rtia.subscribeObjectClassAttributes(a.robot, [a.location])
+    b.rtia.publishObjectClass(b.robot, [b.location])
+    a.rtia.requestFederationSave("window")
+    tick_all(lambda: a.named("initiateFederateSave"), a)  # b does not tick yet
+    b.rtia.registerObjectInstance(b.robot, "during")
+    settle(a.rtia)
+    assert not a.named("discoverObjectInstance")
+    a.rtia.federateSaveComplete()
+    complete_save("window", b)
+    tick_all(lambda: a.named("discoverObjectInstance"), a)
+    order = [n for n, _ in a.amb.calls if n in ("federationSaved", "discoverObjectInstance")]
+    assert order == ["federationSaved", "discoverObjectInstance"]
+
+    for f in (a, b):
+        f.amb.calls.clear()
+    restore("window", a, a, b)
+    tick_all(lambda: a.named("discoverObjectInstance"), a)
+    order = [n for n, _ in a.amb.calls if n in ("federationRestored", "discoverObjectInstance")]
+    assert order == ["federationRestored", "discoverObjectInstance"]
+    assert [args[2] for args in a.named("discoverObjectInstance")] == ["during"]

@@ -243,10 +243,6 @@ void Federation::check_timestamp(FederateHandle from, const wire::OptionalTime& 
 
 template <class M>
 void Federation::deliver_receive_order(FederateHandle to, const M& message) {
-    if (auto* held = held_frames(to)) {  // saving or restoring: delivered after federationSaved/Restored
-        wire::encode(held->emplace_back(), message);
-        return;
-    }
     if (!time_.holds_receive_order(to)) {
         outbox_.send(to, message);
         return;

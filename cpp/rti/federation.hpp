@@ -28,11 +28,21 @@ public:
 
     template <class M>
     void send(FederateHandle federate, const M& message) {
+        if (holding) {  // a save or restore is under way: see federation_save.cpp
+            auto held = holding->find(federate);
+            if (held != holding->end()) {
+                wire::encode(held->second.emplace_back(), message);
+                return;
+            }
+        }
         wire::encode(buffer(federate), message);
     }
     void send_frame(FederateHandle federate, const std::string& frame) { buffer(federate).append(frame); }
     // A restore gives the joined federates the handles they had in the save: old handle -> new handle.
     virtual void rehandle(const std::map<FederateHandle, FederateHandle>& new_handles) { (void)new_handles; }
+    // While set, what send() would write for a federate with an entry here is kept there instead (the
+    // federate is saving or restoring); buffer() and send_frame() are not held.
+    std::map<FederateHandle, std::vector<std::string>>* holding = nullptr;
 };
 
 class Federation {
@@ -216,7 +226,7 @@ private:
         std::set<FederateHandle> told;        // sent initiateFederateSave
         std::map<FederateHandle, bool> answered;  // federateSaveComplete (true) / NotComplete (false)
         bool failed = false;                  // a federate left meanwhile
-        std::map<FederateHandle, std::vector<std::string>> held;  // receive-order frames held from told federates
+        std::map<FederateHandle, std::vector<std::string>> held;  // frames held from told federates
     };
     struct RestoreRun {
         bool active = false;
@@ -237,10 +247,9 @@ private:
     Snapshot decode_snapshot(const std::string& bytes) const;  // throws wire::WireError
     std::string save_file(const std::string& label) const;
     // Hooks into the rest of the federation: grants and deliveries wait while every federate saves or
-    // restores; receive-order frames for a federate saving or restoring are held (null: deliver).
+    // restores; what is sent to a federate saving or restoring is held (Outbox::holding).
     bool time_frozen() const;
-    std::vector<std::string>* held_frames(FederateHandle to);
-    // Delivers frames held during a save or restore, as deliver_receive_order would have.
+    // Delivers frames held during a save or restore: receive-order ones as deliver_receive_order would.
     void deliver_held(FederateHandle to, std::vector<std::string>& frames);
     void save_restore_departed(FederateHandle federate);
     bool ignored_while_restoring(FederateHandle from, const wire::Message& message) const;

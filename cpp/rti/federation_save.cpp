@@ -2,8 +2,9 @@
 // format and the choices made where HLA 1.3 leaves room are in docs/save-restore.md.
 //
 // A save: initiateFederateSave goes to every federate (for a timed save, to a time-managed federate once
-// it is granted the save time or beyond); from then on receive-order frames for it are held, and once
-// every federate was told, grants and timestamped deliveries wait too. When every federate has answered
+// it is granted the save time or beyond); from then on what the federation sends it is held (delivered
+// after federationSaved, and part of the save), and once every federate was told, grants and timestamped
+// deliveries wait too. When every federate has answered
 // federateSaveComplete the gateway encodes its own part (declarations, objects and owners, time state,
 // queued and held messages), keeps it by label and, with a save directory, writes it to a file.
 //
@@ -65,7 +66,7 @@ struct FederateRecord {
     double promise = 0;
     TsoRecords tso;
     std::vector<std::string> held_ro;          // held by time management (constrained, not advancing)
-    std::vector<std::string> held_after_save;  // held during the save, delivered after federationSaved
+    std::vector<std::string> held_after_save;  // sent during the save, delivered after federationSaved
     HLACORE_FIELDS(handle, name, published, subscribed, published_interactions, subscribed_interactions, known,
                    registration_started, interactions_turned_on, class_relevance, interaction_relevance,
                    attribute_relevance, attribute_scope, interaction_order, interaction_transport, time, lookahead,
@@ -210,6 +211,7 @@ void Federation::request_save(FederateHandle from, const std::string& label, con
     save_.active = true;
     save_.label = label;
     save_.time = time;
+    outbox_.holding = &save_.held;
     tell_savers();
     release_time();  // for a timed save: pending requests beyond its time now stop there
 }
@@ -225,7 +227,8 @@ void Federation::tell_savers() {
             (time_.advancing(h) || time_.federate_time(h) < *save_.time))
             continue;
         save_.told.insert(h);
-        outbox_.send(h, wire::InitiateFederateSave{save_.label});
+        wire::encode(outbox_.buffer(h), wire::InitiateFederateSave{save_.label});
+        save_.held[h];  // from now on, what is sent to h waits
     }
 }
 
@@ -271,6 +274,7 @@ void Federation::finish_save_if_answered() {
         }
         if (success) saves_[save_.label] = std::move(bytes);
     }
+    outbox_.holding = nullptr;
     SaveRun done = std::move(save_);
     save_ = SaveRun{};
     for (const auto& [h, f] : federates_) {
@@ -287,20 +291,10 @@ bool Federation::time_frozen() const {
     return restore_.active || (save_.active && save_.told.size() >= federates_.size());
 }
 
-std::vector<std::string>* Federation::held_frames(FederateHandle to) {
-    if (restore_.active) return &restore_.held[to];
-    if (save_.active && save_.told.count(to)) return &save_.held[to];
-    return nullptr;
-}
-
+// Receive-order messages that time management holds (constrained, not advancing) never reach the
+// outbox: what was held here would have been written at once.
 void Federation::deliver_held(FederateHandle to, std::vector<std::string>& frames) {
-    for (auto& frame : frames) {
-        if (time_.holds_receive_order(to)) {
-            time_.enqueue_receive_order(to, std::move(frame));
-        } else {
-            outbox_.send_frame(to, frame);
-        }
-    }
+    for (const auto& frame : frames) outbox_.send_frame(to, frame);
     frames.clear();
 }
 
@@ -593,6 +587,9 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         }
         outbox_.send(h, m);
     }
+    // Until federationRestored, what is sent to the federates waits.
+    for (const auto& [h, f] : federates_) restore_.held[h];
+    outbox_.holding = &restore_.held;
 }
 
 // §4.21: federateRestoreComplete / federateRestoreNotComplete.
@@ -611,6 +608,7 @@ void Federation::finish_restore_if_answered() {
         if (!restore_.answered.count(h)) return;
     bool success = !restore_.failed;
     for (const auto& [h, ok] : restore_.answered) success = success && ok;
+    outbox_.holding = nullptr;
     RestoreRun done = std::move(restore_);
     restore_ = RestoreRun{};
     for (const auto& [h, f] : federates_) {

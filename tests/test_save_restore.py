@@ -563,6 +563,17 @@ def test_inprocess_gateway_writes_saves_to_its_save_dir(tmp_path: pathlib.Path):
         restore("mem", a, a)
         a.rtia.resignFederationExecution(rti.ResignAction.NoAction)
         creator.destroyFederationExecution("TestFed")
+        # The same federation name with another FOM: the save does not fit it.
+        other_fom = tmp_path / "other.fed"
+        other_fom.write_text(pathlib.Path(ROBOT_FED).read_text().replace("(parameter priority)", "(parameter level)"))
+        creator.createFederationExecution("TestFed", str(other_fom))
+        a = Fed(gw.address, "a")
+        a.rtia.requestFederationRestore("mem")
+        tick_all(lambda: a.named("requestFederationRestoreFailed"), a)
+        [(label, reason)] = a.named("requestFederationRestoreFailed")
+        assert label == "mem" and reason.startswith("the save was made with another FOM")
+        a.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+        creator.destroyFederationExecution("TestFed")
 
 
 def test_a_save_that_cannot_be_written_is_not_saved(tmp_path: pathlib.Path):

@@ -14,6 +14,7 @@ from bench.lockstep import Lockstep
 from bench.outputs import results_markdown
 from bench.pingpong import PingPong
 from bench.report import Report, expected_keys
+from bench.save_restore import SaveRestore
 from bench.throughput import Fanout
 from hlacore import _core
 
@@ -122,3 +123,13 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     assert "| receive order one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× C++ one-way: met (1.00×) |" in text
     assert "200.0 k/s (1600.0 k/s in all)" in text
     assert "≥ 200 000/s: met" in text and text.count("< 20 ms: met") == 2
+
+
+def test_save_restore_body(inprocess_gateway) -> None:
+    bench = SaveRestore(inprocess_gateway.address, 20)
+    try:
+        bench.save()
+        bench.restore()
+        bench.restore()
+    finally:
+        bench.close()

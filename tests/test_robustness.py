@@ -507,6 +507,8 @@ def test_request_before_join_gets_an_error_reply(rtig: RtigProcess) -> None:
         client.handshake()
         assert client.call("RegisterObject", u32(1) + string("")).error != 0
         assert client.call("ResignFederation", u8(3)).error != 0
+        assert client.call("RequestFederationSave", string("s") + boolean(False)).error != 0
+        assert client.call("RequestFederationRestore", string("s")).error != 0
         client.ping()
     assert "dropped" not in rtig.log()
 
@@ -563,11 +565,12 @@ def test_undefined_handles_drop_and_resign_the_federate(
     [
         ("Reply", u32(1) + u16(0) + string("") + u32(0) + string("") + string("") + struct.pack("<d", 0.0), "Reply is not a federation service message"),
         ("Hello", u32(MAGIC) + u16(VERSION), "Hello is not a federation service message"),
+        ("InitiateFederateSave", string("s"), "InitiateFederateSave is not a federation service message"),
         ("SetAdvisorySwitch", u8(77) + boolean(True), "unknown advisory switch 77"),
         ("SubscribeInteractionClass", u32(1) + u8(2), "bad boolean in SubscribeInteractionClass message"),
         ("SubscribeObjectClass", u32(1) + u32(0x40000000) + boolean(True), "element count exceeds frame in SubscribeObjectClass"),
     ],
-    ids=["reply", "second-hello", "advisory-77", "bad-bool", "huge-count"],
+    ids=["reply", "second-hello", "initiate-save", "advisory-77", "bad-bool", "huge-count"],
 )
 def test_joined_federate_sending_nonsense_is_dropped(
     rtig: RtigProcess, legit: Legit, message: str, payload: bytes, why: str

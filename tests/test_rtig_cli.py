@@ -90,7 +90,7 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
     result = run_rtig("--help")
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith("usage: rtig")
-    for option in ("--host", "--port", "--fom-path", "--frame-timeout", "--verbose"):
+    for option in ("--host", "--port", "--fom-path", "--frame-timeout", "--save-dir", "--verbose"):
         assert option in result.stdout
     assert "rtig listening" not in result.stdout
 
@@ -112,6 +112,8 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
         (["--frame-timeout", "-1"], "invalid --frame-timeout '-1'"),
         (["--frame-timeout", "soon"], "invalid --frame-timeout 'soon'"),
         (["--port", "0", "extra"], "unknown argument 'extra'"),
+        (["--save-dir"], "--save-dir needs a value"),
+        (["--save-dir", ""], "--save-dir needs a directory"),
     ],
 )
 def test_bad_arguments_exit_2_with_a_message(args: list[str], message: str) -> None:

@@ -271,6 +271,21 @@ py::object to_callback(const wire::Message& message) {
                         return py::make_tuple("attributeIsNotOwned",
                                               py::make_tuple(ObjectHandle{m.object}, AttributeHandle{m.attribute}));
                 }
+            // save/restore (HLA 1.3 §4.11-4.22)
+            } else if constexpr (std::is_same_v<M, wire::InitiateFederateSave>) {
+                return py::make_tuple("initiateFederateSave", py::make_tuple(to_str(m.label)));
+            } else if constexpr (std::is_same_v<M, wire::FederationSaved>) {
+                return py::make_tuple(m.success ? "federationSaved" : "federationNotSaved", py::tuple());
+            } else if constexpr (std::is_same_v<M, wire::RestoreRequestAnswer>) {
+                if (m.succeeded)
+                    return py::make_tuple("requestFederationRestoreSucceeded", py::make_tuple(to_str(m.label)));
+                return py::make_tuple("requestFederationRestoreFailed", py::make_tuple(to_str(m.label), to_str(m.reason)));
+            } else if constexpr (std::is_same_v<M, wire::FederationRestoreBegun>) {
+                return py::make_tuple("federationRestoreBegun", py::tuple());
+            } else if constexpr (std::is_same_v<M, wire::InitiateFederateRestore>) {
+                return py::make_tuple("initiateFederateRestore", py::make_tuple(to_str(m.label), FederateHandle{m.federate}));
+            } else if constexpr (std::is_same_v<M, wire::FederationRestored>) {
+                return py::make_tuple(m.success ? "federationRestored" : "federationNotRestored", py::tuple());
             } else {
                 throw RtiError(ErrorCode::RTIinternalError, "unexpected message from the gateway");
             }
@@ -326,8 +341,9 @@ bool wait_for_callback(Client& c, double timeout_s) {
 class BackgroundGateway {
 public:
     BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose,
-                      std::string trace_path) {
+                      const std::string& save_dir, std::string trace_path) {
         GatewayOptions options;
+        options.save_dir = save_dir;
         options.host = host;
         options.port = port;
         options.fom_path = std::move(fom_path);
@@ -382,8 +398,10 @@ PYBIND11_MODULE(_core, m) {
     bind_fed(m);
 
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
-        .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, std::string>(),
-             py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("trace_path") = "",
+        .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
+                      std::string>(),
+             py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
+             py::arg("trace_path") = "",
              py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)
@@ -571,6 +589,31 @@ PYBIND11_MODULE(_core, m) {
              [](Client& c, ObjectHandle obj, AttributeHandle attr) { return c.is_owned(obj.value, attr.value); },
              py::arg("object"), py::arg("attribute"),
              "Whether this federate owns the attribute (HLA 1.3 §7.17), as of the ownership notifications delivered so far; answered locally. Raises ObjectNotKnown, AttributeNotDefined.")
+        // save/restore (HLA 1.3 §4.11-4.22; docs/save-restore.md)
+        .def("requestFederationSave",
+             [](Client& c, py::object label, std::optional<double> time) {
+                 const std::string l = to_bytes(label, "label");
+                 py::gil_scoped_release release;
+                 c.request_federation_save(l, time);
+             }, py::arg("label"), py::arg("theTime") = py::none(),
+             "Ask every federate to save (HLA 1.3 §4.11): initiateFederateSave(label) goes to each, then federationSaved() or federationNotSaved(). With theTime, a regulating or constrained federate is told once granted theTime or beyond; the others at once. The gateway keeps its part (in --save-dir as a file). Raises FederationTimeAlreadyPassed, InvalidFederationTime, SaveInProgress, RestoreInProgress.")
+        .def("federateSaveBegun", &Client::federate_save_begun,
+             "Tell the RTI this federate started saving (HLA 1.3 §4.13). Raises SaveNotInitiated.")
+        .def("federateSaveComplete", [](Client& c) { c.federate_save_complete(true); },
+             "Tell the RTI this federate saved its state (HLA 1.3 §4.14). Raises SaveNotInitiated.")
+        .def("federateSaveNotComplete", [](Client& c) { c.federate_save_complete(false); },
+             "Tell the RTI this federate could not save (HLA 1.3 §4.14): everyone gets federationNotSaved(). Raises SaveNotInitiated.")
+        .def("requestFederationRestore",
+             [](Client& c, py::object label) {
+                 const std::string l = to_bytes(label, "label");
+                 py::gil_scoped_release release;
+                 c.request_federation_restore(l);
+             }, py::arg("label"),
+             "Ask to restore the save `label` (HLA 1.3 §4.17), from memory or the gateway's --save-dir; the joined federates must have the names of those saved. requestFederationRestoreSucceeded(label) or requestFederationRestoreFailed(label, reason) follows, then federationRestoreBegun(), initiateFederateRestore(label, federateHandle) and federationRestored() / federationNotRestored() at every federate. Raises SaveInProgress, RestoreInProgress.")
+        .def("federateRestoreComplete", [](Client& c) { c.federate_restore_complete(true); },
+             "Tell the RTI this federate restored its state (HLA 1.3 §4.21). Raises RestoreNotRequested.")
+        .def("federateRestoreNotComplete", [](Client& c) { c.federate_restore_complete(false); },
+             "Tell the RTI this federate could not restore (HLA 1.3 §4.21): everyone gets federationNotRestored(). Raises RestoreNotRequested.")
         // support services
         .def("getObjectClassHandle", [](Client& c, const std::string& n) { return ObjectClassHandle{c.object_class_handle(n)}; },
              py::arg("name"),

@@ -89,11 +89,24 @@ MESSAGES = {
     "TimeAdvanceGrant": f64(10.0),
     "RequestRetraction": u32(1) + u64(9),
     "QueryStatus": u32(1),
+    "RequestFederationSave": u32(9) + s("snap") + t(5.0),
+    "FederateSaveComplete": b(True),
+    "RequestFederationRestore": u32(10) + s("snap"),
+    "FederateRestoreComplete": b(False),
+    "InitiateFederateSave": s("snap"),
+    "FederationSaved": b(True),
+    "RestoreRequestAnswer": s("snap") + b(False) + s("no save labelled 'snap'"),
+    "FederationRestoreBegun": b"",
+    "InitiateFederateRestore": s("snap") + u32(2) + f64(5.0) + f64(1.0) + b(True) + b(True) + b(False) + b(True)
+    + f64(6.0) + u64(3) + u32(1) + u32(1) + hs([1, 2]) + u32(1) + u32(1) + hs([2]) + hs([1]) + hs([])
+    + hs([7]) + hs([1]) + u32(1) + s("robot-1") + u32(1) + hs([1, 2]) + hs([1]),
+    "FederationRestored": b(True),
 }
 STREAMS = {
     "stream-join-publish-update": ["Hello", "JoinFederation", "PublishObjectClass", "RegisterObject", "UpdateAttributes"],
     "stream-time": ["EnableTimeRegulation", "EnableTimeConstrained", "SendInteraction", "TimeAdvance", "Retract"],
     "stream-gateway": ["Welcome", "Reply", "DiscoverObject", "ReflectAttributes", "TimeAdvanceGrant"],
+    "stream-save": ["RequestFederationSave", "FederateSaveComplete", "RequestFederationRestore", "FederateRestoreComplete"],
 }
 
 

@@ -244,6 +244,7 @@ std::optional<wire::Message> Client::pop_callback() {
     callbacks_.pop_front();
     apply_time_callback(m);
     apply_ownership_callback(m);
+    apply_save_callback(m);
     return m;
 }
 
@@ -325,6 +326,7 @@ void Client::resign(std::uint8_t action) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
+        check_not_saving_or_restoring("resignFederationExecution");
         if (action < 1 || action > 4)
             raise(ErrorCode::InvalidResignAction, "resign action " + std::to_string(action) + " is not one of 1-4");
     }
@@ -340,6 +342,8 @@ void Client::resign(std::uint8_t action) {
     objects_.clear();
     announced_.clear();
     time_ = TimeState{};
+    save_phase_ = SavePhase::None;
+    restore_phase_ = RestorePhase::None;
 }
 
 void Client::register_sync_point(const std::string& label, const std::string& tag,
@@ -480,6 +484,7 @@ std::uint32_t Client::register_object(fom::Handle cls, const std::string& name) 
     {
         std::lock_guard<std::mutex> lock(mu_);
         const auto& c = defined_object_class(cls);
+        check_not_saving_or_restoring("registerObjectInstance");
         auto it = published_.find(cls);
         if (it == published_.end())
             raise(ErrorCode::ObjectClassNotPublished, "object class '" + c.qualified_name + "' is not published");
@@ -503,6 +508,7 @@ std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues
     {
         std::lock_guard<std::mutex> lock(mu_);
         const LocalObject& obj = known_object(object);
+        check_not_saving_or_restoring("updateAttributeValues");
         const auto& cls = *fom_->object_class(obj.object_class);
         for (const auto& [attr, value] : values) {
             if (!cls.attribute(attr))
@@ -526,6 +532,7 @@ std::uint64_t Client::send_interaction(fom::Handle cls, wire::HandleValues value
     {
         std::lock_guard<std::mutex> lock(mu_);
         const auto& c = defined_interaction_class(cls);
+        check_not_saving_or_restoring("sendInteraction");
         if (!published_interactions_.count(cls))
             raise(ErrorCode::InteractionClassNotPublished,
                   "interaction class '" + c.qualified_name + "' is not published");
@@ -548,6 +555,7 @@ std::uint64_t Client::delete_object(std::uint32_t object, const std::string& tag
     {
         std::lock_guard<std::mutex> lock(mu_);
         const LocalObject& obj = known_object(object);
+        check_not_saving_or_restoring("deleteObjectInstance");
         if (!obj.privilege_to_delete)
             raise(ErrorCode::DeletePrivilegeNotHeld, "this federate may not delete object '" + obj.name + "'");
         check_send_time(time);

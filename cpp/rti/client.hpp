@@ -117,6 +117,16 @@ public:
     // The lowest timestamp the sending rule allows now (-inf when not regulating).
     Time lowest_sendable_time() const;
 
+    // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/client_save.cpp, docs/save-restore.md) ----
+    // The save and restore states change when their callbacks are popped. From initiateFederateSave until
+    // federationSaved/NotSaved (and from federationRestoreBegun until federationRestored/NotRestored) the
+    // services that change the federation's state raise SaveInProgress (RestoreInProgress).
+    void request_federation_save(const std::string& label, const wire::OptionalTime& time);
+    void federate_save_begun();
+    void federate_save_complete(bool success);
+    void request_federation_restore(const std::string& label);
+    void federate_restore_complete(bool success);
+
     // ---- support services (local: answered from the FOM and what this federate knows) ----
     fom::Handle object_class_handle(const std::string& name) const;
     std::string object_class_name(fom::Handle cls) const;
@@ -223,6 +233,12 @@ private:
         if (obj.privilege_attribute) obj.privilege_to_delete = obj.owned.count(obj.privilege_attribute) > 0;
     }
     [[noreturn]] void connection_lost() const;
+    // Save/restore (client_save.cpp; callers hold mu_): refuses `service` during a save or restore, and
+    // applies the save/restore callbacks when popped (initiateFederateRestore replaces the mirrored state).
+    void check_not_saving_or_restoring(const char* service) const;
+    void apply_save_callback(const wire::Message& m);
+    enum class SavePhase : std::uint8_t { None, Initiated, Begun, Answered };
+    enum class RestorePhase : std::uint8_t { None, Begun, Initiated, Answered };
     // The lowest timestamp this federate may send now, and the checks of the sending rule (callers hold mu_).
     Time lowest_sendable() const;
     void check_send_time(const wire::OptionalTime& time) const;
@@ -256,6 +272,9 @@ private:
     std::set<std::string> announced_;
     std::uint64_t serial_ = 0;
     TimeState time_;
+    SavePhase save_phase_ = SavePhase::None;
+    RestorePhase restore_phase_ = RestorePhase::None;
+    std::string save_label_;
 };
 
 }  // namespace hlacore

@@ -102,6 +102,7 @@ void Client::enable_time_regulation(Time time, Time lookahead) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
+        check_not_saving_or_restoring("enableTimeRegulation");
         if (time_.regulating) raise(ErrorCode::TimeRegulationAlreadyEnabled, "time regulation is already enabled");
         if (time_.regulation_pending)
             raise(ErrorCode::EnableTimeRegulationPending, "enableTimeRegulation is already pending");
@@ -123,6 +124,7 @@ void Client::disable_time_regulation() {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
+        check_not_saving_or_restoring("disableTimeRegulation");
         if (!time_.regulating)
             raise(ErrorCode::TimeRegulationWasNotEnabled,
                   time_.regulation_pending ? "time regulation is still being enabled (timeRegulationEnabled not yet delivered)"
@@ -137,6 +139,7 @@ void Client::enable_time_constrained() {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
+        check_not_saving_or_restoring("enableTimeConstrained");
         if (time_.constrained) raise(ErrorCode::TimeConstrainedAlreadyEnabled, "time constrained is already enabled");
         if (time_.constrained_pending)
             raise(ErrorCode::EnableTimeConstrainedPending, "enableTimeConstrained is already pending");
@@ -152,6 +155,7 @@ void Client::disable_time_constrained() {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
+        check_not_saving_or_restoring("disableTimeConstrained");
         if (!time_.constrained)
             raise(ErrorCode::TimeConstrainedWasNotEnabled,
                   time_.constrained_pending ? "time constrained is still being enabled (timeConstrainedEnabled not yet delivered)"
@@ -167,6 +171,7 @@ void Client::time_advance(AdvanceKind kind, Time time) {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
         const char* name = service_name(kind);
+        check_not_saving_or_restoring(name);
         if (std::isnan(time)) raise(ErrorCode::InvalidFederationTime, std::string(name) + ": the time is NaN");
         if (time_.pending != AdvanceKind::None)
             raise(ErrorCode::TimeAdvanceAlreadyInProgress,
@@ -190,6 +195,7 @@ void Client::modify_lookahead(Time lookahead) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
+        check_not_saving_or_restoring("modifyLookahead");
         if (!(lookahead >= 0) || !std::isfinite(lookahead))
             raise(ErrorCode::InvalidLookahead, "lookahead " + text(lookahead) + " is not a finite value >= 0");
         if (time_.regulating) time_.floor = lowest_sendable();

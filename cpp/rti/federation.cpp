@@ -107,6 +107,7 @@ void Federation::resign(FederateHandle h, wire::ResignAction action) {
         labels.push_back(label);
     }
     for (const auto& label : labels) check_sync_point(label);
+    save_restore_departed(h);
     update_advisories();
     release_time();  // those blocked on the departed federate may advance now
 }
@@ -115,6 +116,7 @@ std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle 
                                                                  const std::string& requested_name) {
     const auto& cls = object_class(cls_handle);
     auto& f = federate(h);
+    check_not_restoring(h);
     auto pub = f.published.find(cls_handle);
     if (pub == f.published.end())
         throw RtiError(ErrorCode::ObjectClassNotPublished, "object class '" + cls.qualified_name + "' is not published");
@@ -147,6 +149,7 @@ std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle 
 }
 
 void Federation::handle(FederateHandle from, const wire::Message& message) {
+    if (ignored_while_restoring(from, message)) return;
     std::visit([&](const auto& m) { on(from, m); }, message);
 }
 
@@ -261,6 +264,8 @@ void Federation::deliver_timestamp_order(FederateHandle to, const M& message, Fe
 }
 
 void Federation::release_time() {
+    if (time_frozen()) return;  // every federate is saving or restoring
+    if (save_.active && save_.time) cap_requests_at_save_time();
     // A message at or below the sender's time can no longer be retracted (HLA 1.3 §8.21).
     auto forget_retractable = [&](FederateHandle sender, double time) {
         auto routed = routed_.find(sender);
@@ -283,6 +288,7 @@ void Federation::release_time() {
             forget_retractable(r.federate, *r.grant);
         }
     }
+    if (save_.active && save_.time) tell_savers();  // a timed save starts at the grants reaching its time
 }
 
 double Federation::query_time(FederateHandle f, wire::TimeQuery which) {

@@ -28,9 +28,21 @@ public:
 
     template <class M>
     void send(FederateHandle federate, const M& message) {
+        if (holding) {  // a save or restore is under way: see federation_save.cpp
+            auto held = holding->find(federate);
+            if (held != holding->end()) {
+                wire::encode(held->second.emplace_back(), message);
+                return;
+            }
+        }
         wire::encode(buffer(federate), message);
     }
     void send_frame(FederateHandle federate, const std::string& frame) { buffer(federate).append(frame); }
+    // A restore gives the joined federates the handles they had in the save: old handle -> new handle.
+    virtual void rehandle(const std::map<FederateHandle, FederateHandle>& new_handles) { (void)new_handles; }
+    // While set, what send() would write for a federate with an entry here is kept there instead (the
+    // federate is saving or restoring); buffer() and send_frame() are not held.
+    std::map<FederateHandle, std::vector<std::string>>* holding = nullptr;
 };
 
 class Federation {
@@ -63,6 +75,18 @@ public:
     double query_time(FederateHandle federate, wire::TimeQuery which);
     // Appends this federation's state as a JSON object (federates, time state, objects, sync points).
     void write_status(std::string& json);
+
+    // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/federation_save.cpp, docs/save-restore.md) ----
+    // Where saves are written as files ("" keeps them in memory only).
+    void set_save_dir(std::string dir) { save_dir_ = std::move(dir); }
+    // requestFederationSave: throws SaveInProgress, RestoreInProgress, FederationTimeAlreadyPassed,
+    // InvalidFederationTime.
+    void request_save(FederateHandle federate, const std::string& label, const wire::OptionalTime& time);
+    // requestFederationRestore: throws SaveInProgress, RestoreInProgress; a save that is missing, corrupt
+    // or does not fit the joined federates is answered with requestFederationRestoreFailed.
+    void request_restore(FederateHandle federate, const std::string& label);
+    // Joining and resigning are refused during a save or a restore (SaveInProgress, RestoreInProgress).
+    void check_membership_change(const char* service) const;
 
     // Everything else a federate sends once joined. Handles are checked against the FOM (a bad one is a
     // protocol violation: wire::WireError); objects that vanished meanwhile are ignored.
@@ -193,6 +217,45 @@ private:
     template <class M>
     void on(FederateHandle from, const M& m);  // anything else: protocol violation
 
+    // ---- save/restore (cpp/rti/federation_save.cpp) ----
+    struct Snapshot;  // a decoded save
+    struct SaveRun {
+        bool active = false;
+        std::string label;
+        wire::OptionalTime time;              // a timed save
+        std::set<FederateHandle> told;        // sent initiateFederateSave
+        std::map<FederateHandle, bool> answered;  // federateSaveComplete (true) / NotComplete (false)
+        bool failed = false;                  // a federate left meanwhile
+        std::map<FederateHandle, std::vector<std::string>> held;  // frames held from told federates
+    };
+    struct RestoreRun {
+        bool active = false;
+        std::string label;
+        std::map<FederateHandle, bool> answered;
+        bool failed = false;
+        std::map<FederateHandle, std::vector<std::string>> held;
+    };
+    void on(FederateHandle from, const wire::FederateSaveComplete& m);
+    void on(FederateHandle from, const wire::FederateRestoreComplete& m);
+    // Tells the federates that may save now (all of them, or for a timed save those granted its time).
+    void tell_savers();
+    // During a timed save, time-managed federates not yet told are granted at most the save time.
+    void cap_requests_at_save_time();
+    void finish_save_if_answered();
+    void finish_restore_if_answered();
+    std::string encode_snapshot() const;
+    Snapshot decode_snapshot(const std::string& bytes) const;  // throws wire::WireError
+    std::string save_file(const std::string& label) const;
+    // Hooks into the rest of the federation: grants and deliveries wait while every federate saves or
+    // restores; what is sent to a federate saving or restoring is held (Outbox::holding).
+    bool time_frozen() const;
+    // Delivers frames held during a save or restore: receive-order ones as deliver_receive_order would.
+    void deliver_held(FederateHandle to, std::vector<std::string>& frames);
+    void save_restore_departed(FederateHandle federate);
+    bool ignored_while_restoring(FederateHandle from, const wire::Message& message) const;
+    void check_not_restoring(FederateHandle federate) const;
+    void write_save_status(std::string& json) const;
+
     std::string name_;
     fom::Fom fom_;
     std::string fed_name_;
@@ -212,6 +275,13 @@ private:
         std::vector<FederateHandle> receivers;
     };
     std::map<FederateHandle, std::map<std::uint64_t, Routed>> routed_;
+
+    // Save/restore state.
+    std::string save_dir_;
+    std::map<std::string, std::string> saves_;  // label -> encoded save, this gateway's run
+    SaveRun save_;
+    RestoreRun restore_;
+    std::string save_error_;  // why the gateway could not keep the last save, if it could not
 };
 
 }  // namespace hlacore

@@ -56,6 +56,15 @@ public:
         gateway_.mark_dirty(*it->second);
         return it->second->out;
     }
+    void rehandle(const std::map<FederateHandle, FederateHandle>& new_handles) override {
+        std::unordered_map<FederateHandle, Connection*> peers;
+        for (auto& [old_handle, c] : peers_) {
+            auto it = new_handles.find(old_handle);
+            c->federate = it == new_handles.end() ? old_handle : it->second;
+            peers[c->federate] = c;
+        }
+        peers_.swap(peers);
+    }
     std::unordered_map<FederateHandle, Connection*> peers_;
 
 private:
@@ -320,6 +329,7 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
             }
             federations_[m->federation] =
                 std::make_unique<FederationEntry>(*this, m->federation, std::move(fom), m->fed_name, std::move(text));
+            federations_[m->federation]->federation.set_save_dir(options_.save_dir);
             if (options_.verbose) log("created federation '" + m->federation + "' from " + source);
             reply(c, wire::Reply{m->request, 0, "", 0, "", "", 0});
         } catch (const RtiError& e) {
@@ -354,6 +364,7 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
                 throw RtiError(ErrorCode::FederationExecutionDoesNotExist,
                                "federation '" + m->federation + "' does not exist");
             FederationEntry& entry = *it->second;
+            entry.federation.check_membership_change("joinFederationExecution");
             const FederateHandle h = entry.federation.join(m->federate);
             c.federation = &entry;
             c.federate = h;
@@ -370,6 +381,7 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
     if (const auto* m = std::get_if<wire::ResignFederation>(&message)) {
         try {
             if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
+            c.federation->federation.check_membership_change("resignFederationExecution");
             c.federation->federation.resign(c.federate, static_cast<wire::ResignAction>(m->action));
             c.federation->outbox.peers_.erase(c.federate);
             c.federation = nullptr;
@@ -385,6 +397,28 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
             if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
             auto [handle, name] = c.federation->federation.register_object(c.federate, m->object_class, m->name);
             reply(c, wire::Reply{m->request, 0, "", handle, name, "", 0});
+        } catch (const RtiError& e) {
+            error_reply(m->request, e);
+        }
+        return;
+    }
+    // Save/restore requests (HLA 1.3 §4.11, §4.17): the outcome comes as callbacks, refusals in the Reply.
+    if (const auto* m = std::get_if<wire::RequestFederationSave>(&message)) {
+        try {
+            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
+            c.federation->federation.request_save(c.federate, m->label, m->time);
+            reply(c, wire::Reply{m->request, 0, "", 0, "", "", 0});
+        } catch (const RtiError& e) {
+            error_reply(m->request, e);
+        }
+        return;
+    }
+    if (const auto* m = std::get_if<wire::RequestFederationRestore>(&message)) {
+        try {
+            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
+            c.federation->federation.request_restore(c.federate, m->label);
+            reply(c, wire::Reply{m->request, 0, "", c.federate, "", "", 0});
+            if (options_.verbose) log("federation '" + c.federation->federation.name() + "' restore '" + m->label + "' requested");
         } catch (const RtiError& e) {
             error_reply(m->request, e);
         }

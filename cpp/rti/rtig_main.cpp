@@ -19,12 +19,15 @@ void on_signal(int) {
 
 int usage(int status) {
     std::fprintf(status ? stderr : stdout,
-                 "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--trace FILE] [--verbose]\n"
+                 "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--save-dir DIR]\n"
+                 "            [--trace FILE] [--verbose]\n"
                  "       rtig --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
                  "  --fom-path DIR     where to look for FED files a federate could not read itself\n"
                  "  --frame-timeout S  drop a client whose frame stays incomplete S seconds (default 10)\n"
+                 "  --save-dir DIR     write federation saves to DIR (created if missing) and restore from\n"
+                 "                     there, also after a restart; without it saves live in memory only\n"
                  "  --trace FILE       write when each update/interaction arrived and each reflection of it left,\n"
                  "                     on the host's monotonic clock, as CSV (docs/robot.md, delay decomposition)\n"
                  "  --verbose          log connections, joins and federations to stderr\n"
@@ -90,6 +93,12 @@ int main(int argc, char** argv) {
                 return usage(2);
             }
             options.partial_frame_timeout_s = seconds;
+        } else if (arg == "--save-dir") {
+            options.save_dir = value("--save-dir");
+            if (options.save_dir.empty()) {
+                std::fprintf(stderr, "rtig: --save-dir needs a directory\n");
+                return usage(2);
+            }
         } else if (arg == "--trace") {
             options.trace_path = value("--trace");
         } else if (arg == "--verbose" || arg == "-v") {

@@ -96,7 +96,9 @@ void Federation::write_status(std::string& out) {
         json_number(out, t.output_bound);
         out += '}';
     }
-    out += "]}";
+    out += ']';
+    write_save_status(out);
+    out += '}';
 }
 
 }  // namespace hlacore

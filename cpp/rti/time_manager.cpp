@@ -399,4 +399,51 @@ std::vector<TimeFederateStatus> TimeManager::status() {
     return out;
 }
 
+// ---- save/restore ----
+
+bool TimeManager::constrained(std::uint32_t f) const { return state(f).constrained; }
+
+void TimeManager::cap_request(std::uint32_t f, Time t) {
+    State& s = state(f);
+    if (s.pending == AdvanceKind::None || s.pending_time <= t) return;
+    s.pending_time = t;
+    changed_ = true;
+}
+
+TimeManager::SavedState TimeManager::save_state(std::uint32_t f) const {
+    const State& s = state(f);
+    SavedState out;
+    out.time = s.time;
+    out.lookahead = s.lookahead;
+    // A regulation enable whose callback is still held is not kept (nor is its bound: dropping a bound
+    // never lets a message into anyone's past).
+    out.regulating = s.regulating && !s.enabling;
+    out.constrained = s.constrained;
+    out.asynchronous_delivery = s.asynchronous_delivery;
+    out.strict_after_grant = s.strict_after_grant;
+    out.receives_above_time = s.receives_above_time;
+    out.promise = out.regulating ? s.promise : -kInfinity;
+    for (const auto& [key, frame] : s.tso) out.tso.push_back(TsoMessage{key.first, key.second.first, key.second.second, frame});
+    out.held_ro = s.held_ro;
+    return out;
+}
+
+void TimeManager::restore_state(std::uint32_t f, SavedState saved) {
+    changed_ = true;
+    regulating_.clear();  // recomputed by the next compute_bounds()
+    State& s = federates_[f];
+    s = State{};
+    s.time = saved.time;
+    s.lookahead = saved.lookahead;
+    s.regulating = saved.regulating;
+    s.constrained = saved.constrained;
+    s.asynchronous_delivery = saved.asynchronous_delivery;
+    s.strict_after_grant = saved.strict_after_grant;
+    s.receives_above_time = saved.receives_above_time;
+    s.promise = saved.regulating ? saved.promise : -kInfinity;
+    for (auto& m : saved.tso)
+        s.tso.emplace(std::make_pair(m.time, std::make_pair(m.sender, m.serial)), std::move(m.frame));
+    s.held_ro = std::move(saved.held_ro);
+}
+
 }  // namespace hlacore

@@ -125,6 +125,28 @@ public:
     bool advancing(std::uint32_t f) const;            // a time advance request is pending
     std::vector<TimeFederateStatus> status();
 
+    // ---- save/restore (docs/save-restore.md) ----
+    // What a federation save keeps of one federate. A pending time advance request or enable is not
+    // kept: the restored federate is granted at its time, with only the switches already enabled.
+    struct SavedState {
+        Time time = 0;
+        Time lookahead = 0;
+        bool regulating = false;
+        bool constrained = false;
+        bool asynchronous_delivery = false;
+        bool strict_after_grant = false;
+        bool receives_above_time = false;
+        Time promise = -kInfinity;
+        std::vector<TsoMessage> tso;  // in delivery order
+        std::vector<std::string> held_ro;
+    };
+    bool constrained(std::uint32_t f) const;
+    // A timed save at `t`: a pending request beyond it is granted at most `t`.
+    void cap_request(std::uint32_t f, Time t);
+    SavedState save_state(std::uint32_t f) const;
+    // Adds the federate, or replaces its state.
+    void restore_state(std::uint32_t f, SavedState saved);
+
 private:
     struct State {
         Time time = 0;

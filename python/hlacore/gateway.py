@@ -18,9 +18,11 @@ class Gateway:
             rtia = hlacore.rti.RTIAmbassador(gw.address)
 
     The gateway listens from construction until :meth:`stop` (or the end of the ``with`` block).
-    It logs dropped connections to stderr; ``verbose=True`` logs joins and federations too. ``trace``
-    names a CSV file for the message trace (``rtig --trace``): when each update and interaction arrived and
-    each reflection of it left, on the host's monotonic clock (read by :mod:`hlacore.trace`).
+    It logs dropped connections to stderr; ``verbose=True`` logs joins and federations too.
+    ``save_dir`` is ``rtig --save-dir``: federation saves are written there as files and can be restored
+    by a later gateway; without it saves are kept in memory only (docs/save-restore.md).
+    ``trace`` names a CSV file for the message trace (``rtig --trace``): when each update and interaction
+    arrived and each reflection of it left, on the host's monotonic clock (read by :mod:`hlacore.trace`).
     """
 
     def __init__(
@@ -29,9 +31,11 @@ class Gateway:
         port: int = 60400,
         fom_path: Iterable[str] = (),
         verbose: bool = False,
+        save_dir: Optional[str | os.PathLike[str]] = None,
         trace: Optional[str | os.PathLike[str]] = None,
     ) -> None:
         self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose,
+                                                os.fspath(save_dir) if save_dir is not None else "",
                                                 os.fspath(trace) if trace is not None else "")
 
     @property

@@ -92,7 +92,12 @@ class FederateAmbassador:
     ``requestAttributeOwnershipRelease(object, attributes, tag)``,
     ``confirmAttributeOwnershipAcquisitionCancellation(object, attributes)``,
     ``informAttributeOwnership(object, attribute, owner)``, ``attributeIsNotOwned(object, attribute)`` and
-    ``attributeOwnedByRTI(object, attribute)`` (never called: hlacore has no RTI-owned attributes).
+    ``attributeOwnedByRTI(object, attribute)`` (never called: hlacore has no RTI-owned attributes),
+    and for save/restore (HLA 1.3 §4.11-4.22, docs/save-restore.md) ``initiateFederateSave(label)``,
+    ``federationSaved()``, ``federationNotSaved()``, ``requestFederationRestoreSucceeded(label)``,
+    ``requestFederationRestoreFailed(label, reason)``, ``federationRestoreBegun()``,
+    ``initiateFederateRestore(label, federateHandle)``, ``federationRestored()`` and
+    ``federationNotRestored()``.
     """
 
 

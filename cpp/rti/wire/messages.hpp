@@ -99,7 +99,19 @@ using OptionalTime = std::optional<double>;
     X(OwnershipInformation)          \
     /* transport and order changes (HLA 1.3 §6.19-6.22): federate -> gateway */ \
     X(ChangeAttributeDelivery)       \
-    X(ChangeInteractionDelivery)
+    X(ChangeInteractionDelivery)     \
+    /* save/restore (HLA 1.3 §4.11-4.22): federate -> gateway */ \
+    X(RequestFederationSave)         \
+    X(FederateSaveComplete)          \
+    X(RequestFederationRestore)      \
+    X(FederateRestoreComplete)       \
+    /* save/restore: gateway -> federate */ \
+    X(InitiateFederateSave)          \
+    X(FederationSaved)               \
+    X(RestoreRequestAnswer)          \
+    X(FederationRestoreBegun)        \
+    X(InitiateFederateRestore)       \
+    X(FederationRestored)
 
 enum class MessageType : std::uint16_t {
     Invalid = 0,
@@ -594,6 +606,89 @@ struct ChangeInteractionDelivery {
     std::uint8_t order = 0;
     std::uint8_t transport = 0;
     HLACORE_FIELDS(interaction_class, order, transport)
+};
+
+// ---- save/restore (HLA 1.3 §4.11-4.22; docs/save-restore.md) ----
+// Federate -> gateway. The two requests are answered with a Reply (SaveInProgress, RestoreInProgress,
+// FederationTimeAlreadyPassed); the outcome comes as callbacks.
+struct RequestFederationSave {
+    HLACORE_TYPE(RequestFederationSave)
+    std::uint32_t request = 0;
+    std::string label;
+    OptionalTime time;  // timed save: time-managed federates save at their first grant at or beyond it
+    HLACORE_FIELDS(request, label, time)
+};
+struct FederateSaveComplete {  // federateSaveComplete, or federateSaveNotComplete when !success
+    HLACORE_TYPE(FederateSaveComplete)
+    bool success = true;
+    HLACORE_FIELDS(success)
+};
+struct RequestFederationRestore {
+    HLACORE_TYPE(RequestFederationRestore)
+    std::uint32_t request = 0;
+    std::string label;
+    HLACORE_FIELDS(request, label)
+};
+struct FederateRestoreComplete {  // federateRestoreComplete, or federateRestoreNotComplete when !success
+    HLACORE_TYPE(FederateRestoreComplete)
+    bool success = true;
+    HLACORE_FIELDS(success)
+};
+
+// Gateway -> federate.
+struct InitiateFederateSave {
+    HLACORE_TYPE(InitiateFederateSave)
+    std::string label;
+    HLACORE_FIELDS(label)
+};
+struct FederationSaved {  // federationSaved, or federationNotSaved when !success
+    HLACORE_TYPE(FederationSaved)
+    bool success = true;
+    HLACORE_FIELDS(success)
+};
+// requestFederationRestoreSucceeded(label), or requestFederationRestoreFailed(label, reason).
+struct RestoreRequestAnswer {
+    HLACORE_TYPE(RestoreRequestAnswer)
+    std::string label;
+    bool succeeded = false;
+    std::string reason;
+    HLACORE_FIELDS(label, succeeded, reason)
+};
+struct FederationRestoreBegun {
+    HLACORE_TYPE(FederationRestoreBegun)
+    HLACORE_NO_FIELDS()
+};
+// initiateFederateRestore(label, federate), carrying what the client mirrors of the restored federate:
+// its handle in the save, time state, declarations and the objects it knows (parallel vectors).
+struct InitiateFederateRestore {
+    HLACORE_TYPE(InitiateFederateRestore)
+    std::string label;
+    std::uint32_t federate = 0;
+    double time = 0;
+    double lookahead = 0;
+    bool regulating = false;
+    bool constrained = false;
+    bool asynchronous_delivery = false;
+    bool strict = false;        // the last grant was TAR/NER/FQR: with zero lookahead, sends must be > time
+    double floor = 0;           // the lowest timestamp it may send (its promise), when regulating
+    std::uint64_t next_serial = 0;  // serials at or below this are held by restored queues
+    std::vector<std::pair<std::uint32_t, Handles>> published;   // object class -> attributes
+    std::vector<std::pair<std::uint32_t, Handles>> subscribed;
+    Handles published_interactions;
+    Handles subscribed_interactions;
+    Handles objects;
+    Handles object_classes;  // the class the federate knows each object as
+    std::vector<std::string> object_names;
+    std::vector<Handles> owned;       // the attributes it owns of each object
+    Handles may_delete;               // 1 when it holds the privilege to delete the object
+    HLACORE_FIELDS(label, federate, time, lookahead, regulating, constrained, asynchronous_delivery, strict, floor,
+                   next_serial, published, subscribed, published_interactions, subscribed_interactions, objects,
+                   object_classes, object_names, owned, may_delete)
+};
+struct FederationRestored {  // federationRestored, or federationNotRestored when !success
+    HLACORE_TYPE(FederationRestored)
+    bool success = true;
+    HLACORE_FIELDS(success)
 };
 
 // Index in the variant == wire code.

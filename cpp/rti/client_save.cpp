@@ -1,0 +1,137 @@
+// The federate side of federation save and restore (HLA 1.3 §4.11-4.22): the services with their
+// exceptions, and the save/restore state that the callbacks change when popped (as time state does in
+// client_time.cpp). initiateFederateRestore carries the restored federate's handle, time state,
+// declarations and known objects, which replace what this client mirrors. docs/save-restore.md.
+#include <algorithm>
+#include <cmath>
+
+#include "rti/client.hpp"
+
+namespace hlacore {
+
+namespace {
+
+[[noreturn]] void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
+
+}  // namespace
+
+void Client::check_not_saving_or_restoring(const char* service) const {
+    if (save_phase_ != SavePhase::None)
+        raise(ErrorCode::SaveInProgress, std::string(service) + " refused: the federation save '" + save_label_ +
+                                             "' is in progress (until federationSaved or federationNotSaved)");
+    if (restore_phase_ != RestorePhase::None)
+        raise(ErrorCode::RestoreInProgress,
+              std::string(service) +
+                  " refused: a federation restore is in progress (until federationRestored or federationNotRestored)");
+}
+
+// §4.11. The gateway refuses too when another federate's save or restore is under way.
+void Client::request_federation_save(const std::string& label, const wire::OptionalTime& time) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        check_not_saving_or_restoring("requestFederationSave");
+        if (time && std::isnan(*time)) raise(ErrorCode::InvalidFederationTime, "the save time is NaN");
+    }
+    const auto id = next_request();
+    call(wire::RequestFederationSave{id, label, time}, id);
+}
+
+// §4.13: only noted here; the gateway needs nothing before federateSaveComplete.
+void Client::federate_save_begun() {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    if (save_phase_ != SavePhase::Initiated)
+        raise(ErrorCode::SaveNotInitiated, save_phase_ == SavePhase::None
+                                               ? "no initiateFederateSave was delivered to this federate"
+                                               : "federateSaveBegun was already called for this save");
+    save_phase_ = SavePhase::Begun;
+}
+
+// §4.14-4.15.
+void Client::federate_save_complete(bool success) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        if (save_phase_ != SavePhase::Initiated && save_phase_ != SavePhase::Begun)
+            raise(ErrorCode::SaveNotInitiated, save_phase_ == SavePhase::None
+                                                   ? "no initiateFederateSave was delivered to this federate"
+                                                   : "this federate already reported its save");
+        save_phase_ = SavePhase::Answered;
+    }
+    send(wire::FederateSaveComplete{success});
+}
+
+// §4.17: requestFederationRestoreSucceeded/Failed follows.
+void Client::request_federation_restore(const std::string& label) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        check_not_saving_or_restoring("requestFederationRestore");
+    }
+    const auto id = next_request();
+    call(wire::RequestFederationRestore{id, label}, id);
+}
+
+// §4.21.
+void Client::federate_restore_complete(bool success) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        if (restore_phase_ != RestorePhase::Initiated)
+            raise(ErrorCode::RestoreNotRequested, restore_phase_ == RestorePhase::Answered
+                                                      ? "this federate already reported its restore"
+                                                      : "no initiateFederateRestore was delivered to this federate");
+        restore_phase_ = RestorePhase::Answered;
+    }
+    send(wire::FederateRestoreComplete{success});
+}
+
+void Client::apply_save_callback(const wire::Message& message) {
+    if (const auto* m = std::get_if<wire::InitiateFederateSave>(&message)) {
+        save_phase_ = SavePhase::Initiated;
+        save_label_ = m->label;
+    } else if (std::holds_alternative<wire::FederationSaved>(message)) {
+        save_phase_ = SavePhase::None;
+    } else if (std::holds_alternative<wire::FederationRestoreBegun>(message)) {
+        restore_phase_ = RestorePhase::Begun;
+        save_phase_ = SavePhase::None;
+    } else if (std::holds_alternative<wire::FederationRestored>(message)) {
+        restore_phase_ = RestorePhase::None;
+    } else if (const auto* m = std::get_if<wire::InitiateFederateRestore>(&message)) {
+        restore_phase_ = RestorePhase::Initiated;
+        // The federation as it was saved: this federate's handle, declarations, objects and time state.
+        federate_ = m->federate;
+        published_.clear();
+        for (const auto& [cls, attrs] : m->published) published_[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        subscribed_.clear();
+        for (const auto& [cls, attrs] : m->subscribed) subscribed_[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        published_interactions_ = std::set<fom::Handle>(m->published_interactions.begin(), m->published_interactions.end());
+        subscribed_interactions_ =
+            std::set<fom::Handle>(m->subscribed_interactions.begin(), m->subscribed_interactions.end());
+        objects_.clear();
+        const std::size_t n = std::min({m->objects.size(), m->object_classes.size(), m->object_names.size(),
+                                        m->owned.size(), m->may_delete.size()});
+        for (std::size_t i = 0; i < n; ++i) {
+            LocalObject obj = make_local_object(m->object_classes[i], m->object_names[i]);
+            obj.owned = std::set<fom::Handle>(m->owned[i].begin(), m->owned[i].end());
+            obj.privilege_to_delete = m->may_delete[i] != 0;
+            objects_[m->objects[i]] = std::move(obj);
+        }
+        announced_.clear();  // synchronization points are not saved
+        TimeState t;
+        t.time = m->time;
+        t.lookahead = m->lookahead;
+        t.enable_lookahead = m->lookahead;
+        t.regulating = m->regulating;
+        t.constrained = m->constrained;
+        t.asynchronous_delivery = m->asynchronous_delivery;
+        t.strict = m->strict;
+        t.floor = m->regulating ? m->floor : -kInfinity;
+        time_ = std::move(t);
+        // Restored queues hold messages with serials up to next_serial: new ones must not collide.
+        serial_ = std::max(serial_, m->next_serial);
+    }
+}
+
+}  // namespace hlacore

@@ -1,0 +1,694 @@
+// Federation save and restore (HLA 1.3 §4.11-4.22) as the gateway runs them; the contract, the file
+// format and the choices made where HLA 1.3 leaves room are in docs/save-restore.md.
+//
+// A save: initiateFederateSave goes to every federate (for a timed save, to a time-managed federate once
+// it is granted the save time or beyond); from then on what the federation sends it is held (delivered
+// after federationSaved, and part of the save), and once every federate was told, grants and timestamped
+// deliveries wait too. When every federate has answered
+// federateSaveComplete the gateway encodes its own part (declarations, objects and owners, time state,
+// queued and held messages), keeps it by label and, with a save directory, writes it to a file.
+//
+// A restore replaces the federation's state by a save whose federates have the names of those joined
+// now; they get back the handles they had in the save, and each is sent its mirrored state with
+// initiateFederateRestore. Until a federate answers, what it sends is ignored: it belongs to the world
+// being replaced.
+#include "rti/federation.hpp"
+#include "rti/status.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <sys/stat.h>
+
+namespace hlacore {
+
+using wire::WireError;
+
+namespace {
+
+constexpr char kFileMagic[8] = {'H', 'L', 'A', 'C', 'S', 'A', 'V', 'E'};
+constexpr std::uint32_t kFormatVersion = 1;
+
+using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+using Declarations = std::vector<std::pair<std::uint32_t, wire::Handles>>;
+// (time, (sender, (serial, frame))): a queued timestamped message.
+using TsoRecords = std::vector<std::pair<double, std::pair<std::uint32_t, std::pair<std::uint64_t, std::string>>>>;
+
+struct FederateRecord {
+    std::uint32_t handle = 0;
+    std::string name;
+    Declarations published;
+    Declarations subscribed;
+    wire::Handles published_interactions;
+    wire::Handles subscribed_interactions;
+    wire::Handles known;
+    wire::Handles registration_started;
+    wire::Handles interactions_turned_on;
+    bool class_relevance = true;
+    bool interaction_relevance = true;
+    bool attribute_relevance = false;
+    bool attribute_scope = false;
+    Pairs interaction_order;
+    Pairs interaction_transport;
+    double time = 0;
+    double lookahead = 0;
+    bool regulating = false;
+    bool constrained = false;
+    bool asynchronous_delivery = false;
+    bool strict_after_grant = false;
+    bool receives_above_time = false;
+    double promise = 0;
+    TsoRecords tso;
+    std::vector<std::string> held_ro;          // held by time management (constrained, not advancing)
+    std::vector<std::string> held_after_save;  // sent during the save, delivered after federationSaved
+    HLACORE_FIELDS(handle, name, published, subscribed, published_interactions, subscribed_interactions, known,
+                   registration_started, interactions_turned_on, class_relevance, interaction_relevance,
+                   attribute_relevance, attribute_scope, interaction_order, interaction_transport, time, lookahead,
+                   regulating, constrained, asynchronous_delivery, strict_after_grant, receives_above_time, promise,
+                   tso, held_ro, held_after_save)
+};
+
+struct ObjectRecord {
+    std::uint32_t handle = 0;
+    std::uint32_t object_class = 0;
+    std::string name;
+    std::uint32_t privilege_attribute = 0;
+    std::uint32_t privilege_holder = 0;
+    Pairs owners;  // attribute -> owner
+    Pairs order;
+    Pairs transport;
+    HLACORE_FIELDS(handle, object_class, name, privilege_attribute, privilege_holder, owners, order, transport)
+};
+
+template <class Map>
+Declarations declarations(const Map& m) {
+    Declarations out;
+    for (const auto& [cls, attrs] : m) out.emplace_back(cls, wire::Handles(attrs.begin(), attrs.end()));
+    return out;
+}
+
+template <class Map>
+Pairs pairs(const Map& m) {
+    Pairs out;
+    for (const auto& [k, v] : m) out.emplace_back(k, static_cast<std::uint32_t>(v));
+    return out;
+}
+
+template <class Set>
+wire::Handles handles(const Set& s) {
+    return wire::Handles(s.begin(), s.end());
+}
+
+template <class Record>
+void put_records(wire::Writer& w, const std::vector<Record>& records) {
+    w.put(static_cast<std::uint32_t>(records.size()));
+    for (const auto& r : records) r.fields(w);
+}
+
+template <class Record>
+void get_records(wire::Reader& r, std::vector<Record>& records) {
+    std::uint32_t n = 0;
+    r.get(n);
+    if (n > r.remaining() / 4) r.fail("record count exceeds the file");
+    records.resize(n);
+    for (auto& record : records) record.fields(r);
+}
+
+// File names keep letters, digits, '_' and '.'; anything else becomes %XX, so that no label reaches
+// outside the save directory and "--" can separate the federation from the label.
+std::string file_component(const std::string& s) {
+    std::string out;
+    for (unsigned char c : s) {
+        if (std::isalnum(c) || c == '_' || (c == '.' && !out.empty())) {
+            out += static_cast<char>(c);
+        } else {
+            char hex[4];
+            std::snprintf(hex, sizeof hex, "%%%02X", c);
+            out += hex;
+        }
+    }
+    return out.empty() ? "%" : out;
+}
+
+std::string join_names(const std::set<std::string>& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? "none" : out;
+}
+
+// A queued or held frame from a save must be one whole message the gateway could have sent: a corrupt
+// one would make the receiving client drop its connection.
+void check_frame(const std::string& frame) {
+    wire::Frame f;
+    if (wire::next_frame(frame, f) != frame.size()) throw WireError("a saved message is not one whole frame");
+    wire::decode(f);
+}
+
+template <class Pairs_>
+void check_delivery_values(const Pairs_& values, const std::string& whose) {
+    for (const auto& [handle, v] : values)
+        if (v < 1 || v > 2) throw WireError("bad order or transport value in " + whose);
+}
+
+std::string time_text(double t) {
+    std::ostringstream s;
+    s.precision(17);
+    s << t;
+    return s.str();
+}
+
+}  // namespace
+
+struct Federation::Snapshot {
+    std::string label;
+    std::string federation;
+    std::string fed_name;
+    std::string fed_text;
+    std::uint32_t next_federate = 1;
+    std::uint32_t next_object = 1;
+    wire::OptionalTime time;
+    std::vector<FederateRecord> federates;
+    std::vector<ObjectRecord> objects;
+};
+
+// ---- requests ----
+
+void Federation::check_membership_change(const char* service) const {
+    if (save_.active)
+        throw RtiError(ErrorCode::SaveInProgress,
+                       std::string(service) + " refused: the federation save '" + save_.label + "' is in progress");
+    if (restore_.active)
+        throw RtiError(ErrorCode::RestoreInProgress,
+                       std::string(service) + " refused: the federation restore '" + restore_.label + "' is in progress");
+}
+
+void Federation::check_not_restoring(FederateHandle) const {
+    if (restore_.active)
+        throw RtiError(ErrorCode::RestoreInProgress, "the federation restore '" + restore_.label + "' is in progress");
+}
+
+// HLA 1.3 §4.11.
+void Federation::request_save(FederateHandle from, const std::string& label, const wire::OptionalTime& time) {
+    federate(from);
+    check_membership_change("requestFederationSave");
+    if (time) {
+        if (std::isnan(*time)) throw RtiError(ErrorCode::InvalidFederationTime, "the save time is NaN");
+        // A time-managed federate already past the save time could not save at it.
+        for (const auto& [h, f] : federates_) {
+            if ((time_.regulating(h) || time_.constrained(h)) && time_.federate_time(h) > *time)
+                throw RtiError(ErrorCode::FederationTimeAlreadyPassed,
+                               "federate '" + f.name + "' is at time " + time_text(time_.federate_time(h)) +
+                                   ", past the save time " + time_text(*time));
+        }
+    }
+    save_ = SaveRun{};
+    save_.active = true;
+    save_.label = label;
+    save_.time = time;
+    outbox_.holding = &save_.held;
+    tell_savers();
+    release_time();  // for a timed save: pending requests beyond its time now stop there
+}
+
+// initiateFederateSave (§4.12) to whoever may save now: everyone for an untimed save; for a timed one,
+// federates that are neither regulating nor constrained at once, the others once granted the save time
+// or beyond and not advancing (a regulator told at once could not advance, and could hold the
+// constrained federates below the save time for ever).
+void Federation::tell_savers() {
+    for (const auto& [h, f] : federates_) {
+        if (save_.told.count(h)) continue;
+        if (save_.time && (time_.regulating(h) || time_.constrained(h)) &&
+            (time_.advancing(h) || time_.federate_time(h) < *save_.time))
+            continue;
+        save_.told.insert(h);
+        wire::encode(outbox_.buffer(h), wire::InitiateFederateSave{save_.label});
+        save_.held[h];  // from now on, what is sent to h waits
+    }
+}
+
+// A federate told to save stays at its time until federationSaved; one that asked to advance beyond
+// time + lookahead of such a federate could never be granted, nor told. So while a timed save waits, a
+// request beyond the save time is granted the save time (HLA 1.3 leaves this open).
+void Federation::cap_requests_at_save_time() {
+    for (const auto& [h, f] : federates_)
+        if (!save_.told.count(h)) time_.cap_request(h, *save_.time);
+}
+
+// §4.14-4.15: federateSaveComplete / federateSaveNotComplete.
+void Federation::on(FederateHandle from, const wire::FederateSaveComplete& m) {
+    federate(from);
+    if (!save_.active || !save_.told.count(from)) return;  // the client raises SaveNotInitiated
+    save_.answered[from] = m.success;
+    finish_save_if_answered();
+}
+
+// §4.16: federationSaved once every federate saved, federationNotSaved if one did not (or left).
+void Federation::finish_save_if_answered() {
+    if (!save_.active) return;
+    for (const auto& [h, f] : federates_)
+        if (!save_.answered.count(h)) return;
+    bool success = !save_.failed;
+    for (const auto& [h, ok] : save_.answered) success = success && ok;
+    if (success) {
+        std::string bytes = encode_snapshot();
+        save_error_.clear();
+        if (!save_dir_.empty()) {
+            // Written beside, then renamed: a crash never leaves half a save under the label's name.
+            const std::string path = save_file(save_.label);
+            const std::string partial = path + ".partial";
+            ::mkdir(save_dir_.c_str(), 0777);
+            std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+            out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+            out.close();
+            if (!out || std::rename(partial.c_str(), path.c_str()) != 0) {
+                save_error_ = "cannot write " + path + ": " + std::strerror(errno);
+                std::remove(partial.c_str());
+                success = false;
+            }
+        }
+        if (success) saves_[save_.label] = std::move(bytes);
+    }
+    outbox_.holding = nullptr;
+    SaveRun done = std::move(save_);
+    save_ = SaveRun{};
+    for (const auto& [h, f] : federates_) {
+        outbox_.send(h, wire::FederationSaved{success});
+        auto held = done.held.find(h);
+        if (held != done.held.end()) deliver_held(h, held->second);
+    }
+    release_time();
+}
+
+// ---- hooks ----
+
+bool Federation::time_frozen() const {
+    return restore_.active || (save_.active && save_.told.size() >= federates_.size());
+}
+
+// Receive-order messages that time management holds (constrained, not advancing) never reach the
+// outbox: what was held here would have been written at once.
+void Federation::deliver_held(FederateHandle to, std::vector<std::string>& frames) {
+    for (const auto& frame : frames) outbox_.send_frame(to, frame);
+    frames.clear();
+}
+
+// A federate that leaves (only by a dropped connection: resigning is refused) fails the save or restore.
+void Federation::save_restore_departed(FederateHandle h) {
+    if (save_.active) {
+        save_.told.erase(h);
+        save_.answered.erase(h);
+        save_.held.erase(h);
+        save_.failed = true;
+        finish_save_if_answered();
+    }
+    if (restore_.active) {
+        restore_.answered.erase(h);
+        restore_.held.erase(h);
+        restore_.failed = true;
+        finish_restore_if_answered();
+    }
+}
+
+bool Federation::ignored_while_restoring(FederateHandle from, const wire::Message& message) const {
+    return restore_.active && !restore_.answered.count(from) &&
+           !std::holds_alternative<wire::FederateRestoreComplete>(message);
+}
+
+// ---- the file ----
+
+std::string Federation::save_file(const std::string& label) const {
+    return save_dir_ + "/" + file_component(name_) + "--" + file_component(label) + ".hlasave";
+}
+
+std::string Federation::encode_snapshot() const {
+    std::string out(kFileMagic, sizeof kFileMagic);
+    wire::Writer w(out);
+    w(kFormatVersion, save_.label, name_, fed_name_, fed_text_, next_federate_, next_object_, save_.time);
+    std::vector<FederateRecord> federates;
+    for (const auto& [h, f] : federates_) {
+        FederateRecord r;
+        r.handle = h;
+        r.name = f.name;
+        r.published = declarations(f.published);
+        r.subscribed = declarations(f.subscribed);
+        r.published_interactions = handles(f.published_interactions);
+        r.subscribed_interactions = handles(f.subscribed_interactions);
+        r.known = handles(f.known);
+        r.registration_started = handles(f.registration_started);
+        r.interactions_turned_on = handles(f.interactions_turned_on);
+        r.class_relevance = f.class_relevance;
+        r.interaction_relevance = f.interaction_relevance;
+        r.attribute_relevance = f.attribute_relevance;
+        r.attribute_scope = f.attribute_scope;
+        r.interaction_order = pairs(f.interaction_order);
+        r.interaction_transport = pairs(f.interaction_transport);
+        const auto t = time_.save_state(h);
+        r.time = t.time;
+        r.lookahead = t.lookahead;
+        r.regulating = t.regulating;
+        r.constrained = t.constrained;
+        r.asynchronous_delivery = t.asynchronous_delivery;
+        r.strict_after_grant = t.strict_after_grant;
+        r.receives_above_time = t.receives_above_time;
+        r.promise = t.promise;
+        for (const auto& m : t.tso) r.tso.push_back({m.time, {m.sender, {m.serial, m.frame}}});
+        r.held_ro = t.held_ro;
+        auto held = save_.held.find(h);
+        if (held != save_.held.end()) r.held_after_save = held->second;
+        federates.push_back(std::move(r));
+    }
+    std::vector<ObjectRecord> objects;
+    for (const auto& [oh, obj] : objects_) {
+        ObjectRecord r;
+        r.handle = oh;
+        r.object_class = obj.object_class;
+        r.name = obj.name;
+        r.privilege_attribute = obj.privilege_attribute;
+        r.privilege_holder = obj.privilege_holder;
+        r.owners = pairs(obj.owners);
+        r.order = pairs(obj.order);
+        r.transport = pairs(obj.transport);
+        objects.push_back(std::move(r));
+    }
+    put_records(w, federates);
+    put_records(w, objects);
+    return out;
+}
+
+Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const {
+    if (bytes.size() < sizeof kFileMagic || std::memcmp(bytes.data(), kFileMagic, sizeof kFileMagic) != 0)
+        throw WireError("not an hlacore save (bad magic)");
+    wire::Reader r(std::string_view(bytes).substr(sizeof kFileMagic), wire::MessageType::Invalid);
+    std::uint32_t version = 0;
+    r(version);
+    if (version != kFormatVersion)
+        throw WireError("save format version " + std::to_string(version) + " (this gateway reads version " +
+                        std::to_string(kFormatVersion) + ")");
+    Snapshot s;
+    try {
+        r(s.label, s.federation, s.fed_name, s.fed_text, s.next_federate, s.next_object, s.time);
+        get_records(r, s.federates);
+        get_records(r, s.objects);
+        if (r.remaining() != 0) r.fail("trailing bytes");
+    } catch (const WireError& e) {
+        // The codec names the message it was decoding; here it is the file.
+        std::string what = e.what();
+        const auto at = what.rfind(" in unknown message");
+        throw WireError((at == std::string::npos ? what : what.substr(0, at)) + " in the save");
+    }
+    // Cross-references are checked here so that applying a save cannot fail halfway.
+    std::set<std::uint32_t> handles_seen;
+    std::set<std::string> names_seen;
+    for (const auto& f : s.federates) {
+        if (f.handle == 0 || !handles_seen.insert(f.handle).second || !names_seen.insert(f.name).second)
+            throw WireError("duplicate federate '" + f.name + "'");
+        for (const auto& d : f.published) check_attributes(object_class(d.first), d.second);
+        for (const auto& d : f.subscribed) check_attributes(object_class(d.first), d.second);
+        for (auto ic : f.published_interactions) interaction_class(ic);
+        for (auto ic : f.subscribed_interactions) interaction_class(ic);
+        if (f.handle >= s.next_federate) throw WireError("federate handle beyond the saved next handle");
+    }
+    std::set<std::uint32_t> objects_seen;
+    std::set<std::string> object_names;
+    for (const auto& o : s.objects) {
+        if (!object_names.insert(o.name).second) throw WireError("duplicate object name '" + o.name + "'");
+        check_delivery_values(o.order, "object '" + o.name + "'");
+        check_delivery_values(o.transport, "object '" + o.name + "'");
+        const auto& cls = object_class(o.object_class);
+        for (const auto& [attr, owner] : o.owners) {
+            if (!cls.attribute(attr) || !handles_seen.count(owner)) throw WireError("bad owner of object '" + o.name + "'");
+        }
+        if (o.handle == 0 || o.handle >= s.next_object || !objects_seen.insert(o.handle).second)
+            throw WireError("bad handle of object '" + o.name + "'");
+    }
+    for (const auto& f : s.federates) {
+        for (auto oh : f.known)
+            if (!objects_seen.count(oh)) throw WireError("federate '" + f.name + "' knows an unsaved object");
+        for (const auto& m : f.tso) {
+            if (!handles_seen.count(m.second.first)) throw WireError("queued message from an unsaved federate");
+            check_frame(m.second.second.second);
+        }
+        for (const auto& frame : f.held_ro) check_frame(frame);
+        for (const auto& frame : f.held_after_save) check_frame(frame);
+        check_delivery_values(f.interaction_order, "federate '" + f.name + "'");
+        check_delivery_values(f.interaction_transport, "federate '" + f.name + "'");
+    }
+    return s;
+}
+
+// ---- restore (HLA 1.3 §4.17-4.22) ----
+
+void Federation::request_restore(FederateHandle from, const std::string& label) {
+    federate(from);
+    check_membership_change("requestFederationRestore");
+    auto fail = [&](const std::string& reason) {
+        outbox_.send(from, wire::RestoreRequestAnswer{label, false, reason});
+    };
+    std::string bytes;
+    std::string source = "this gateway's memory";
+    if (auto kept = saves_.find(label); kept != saves_.end()) {
+        bytes = kept->second;
+    } else if (!save_dir_.empty()) {
+        source = save_file(label);
+        std::ifstream in(source, std::ios::binary);
+        if (!in) return fail("no save labelled '" + label + "': cannot open " + source + ": " + std::strerror(errno));
+        std::ostringstream text;
+        text << in.rdbuf();
+        bytes = text.str();
+    } else {
+        return fail("no save labelled '" + label + "' in this gateway's memory (rtig keeps saves in files only "
+                    "with --save-dir)");
+    }
+    Snapshot snap;
+    try {
+        snap = decode_snapshot(bytes);
+    } catch (const WireError& e) {
+        return fail("the save in " + source + " is unusable: " + e.what());
+    }
+    if (snap.fed_text != fed_text_) return fail("the save was made with another FOM (" + snap.fed_name + ")");
+    std::map<std::string, FederateHandle> joined;
+    std::set<std::string> joined_names, saved_names;
+    for (const auto& [h, f] : federates_) {
+        joined[f.name] = h;
+        joined_names.insert(f.name);
+    }
+    for (const auto& f : snap.federates) saved_names.insert(f.name);
+    if (joined_names != saved_names)
+        return fail("the federates joined now (" + join_names(joined_names) + ") are not those of the save (" +
+                    join_names(saved_names) + ")");
+
+    // §4.18-4.19: the requester hears it succeeded, every federate that the restore begins.
+    outbox_.send(from, wire::RestoreRequestAnswer{label, true, ""});
+    for (const auto& [h, f] : federates_) outbox_.send(h, wire::FederationRestoreBegun{});
+
+    std::map<FederateHandle, FederateHandle> new_handles;
+    for (const auto& f : snap.federates) new_handles[joined.at(f.name)] = f.handle;
+    federates_.clear();
+    objects_.clear();
+    object_names_.clear();
+    sync_points_.clear();  // their members' handles are gone; see docs/save-restore.md
+    routed_.clear();
+    time_ = TimeManager{};
+    restore_ = RestoreRun{};
+    restore_.active = true;
+    restore_.label = label;
+    std::map<FederateHandle, std::uint64_t> last_serial;
+    for (auto& r : snap.federates) {
+        FederateState& f = federates_[r.handle];
+        f.name = r.name;
+        for (const auto& [cls, attrs] : r.published) f.published[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        for (const auto& [cls, attrs] : r.subscribed) f.subscribed[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        f.published_interactions.insert(r.published_interactions.begin(), r.published_interactions.end());
+        f.subscribed_interactions.insert(r.subscribed_interactions.begin(), r.subscribed_interactions.end());
+        f.known.insert(r.known.begin(), r.known.end());
+        f.registration_started.insert(r.registration_started.begin(), r.registration_started.end());
+        f.interactions_turned_on.insert(r.interactions_turned_on.begin(), r.interactions_turned_on.end());
+        f.class_relevance = r.class_relevance;
+        f.interaction_relevance = r.interaction_relevance;
+        f.attribute_relevance = r.attribute_relevance;
+        f.attribute_scope = r.attribute_scope;
+        for (const auto& [ic, v] : r.interaction_order) f.interaction_order[ic] = static_cast<fom::Order>(v);
+        for (const auto& [ic, v] : r.interaction_transport) f.interaction_transport[ic] = static_cast<fom::Transport>(v);
+        TimeManager::SavedState t;
+        t.time = r.time;
+        t.lookahead = r.lookahead;
+        t.regulating = r.regulating;
+        t.constrained = r.constrained;
+        t.asynchronous_delivery = r.asynchronous_delivery;
+        t.strict_after_grant = r.strict_after_grant;
+        t.receives_above_time = r.receives_above_time;
+        t.promise = r.promise;
+        for (auto& m : r.tso) {
+            const auto sender = m.second.first;
+            const auto serial = m.second.second.first;
+            last_serial[sender] = std::max(last_serial[sender], serial);
+            t.tso.push_back(TsoMessage{m.first, sender, serial, std::move(m.second.second.second)});
+        }
+        t.held_ro = std::move(r.held_ro);
+        time_.restore_state(r.handle, std::move(t));
+        // What the save held back is delivered after federationRestored, as it was after federationSaved.
+        if (!r.held_after_save.empty()) restore_.held[r.handle] = std::move(r.held_after_save);
+    }
+    for (const auto& r : snap.objects) {
+        ObjectInstance& obj = objects_[r.handle];
+        obj.object_class = r.object_class;
+        obj.name = r.name;
+        obj.privilege_attribute = r.privilege_attribute;
+        obj.privilege_holder = federates_.count(r.privilege_holder) ? r.privilege_holder : 0;
+        for (const auto& [attr, owner] : r.owners) obj.owners[attr] = owner;
+        for (const auto& [attr, v] : r.order) obj.order[attr] = static_cast<fom::Order>(v);
+        for (const auto& [attr, v] : r.transport) obj.transport[attr] = static_cast<fom::Transport>(v);
+        object_names_[r.name] = r.handle;
+    }
+    // Handles given out since the save are never reused.
+    next_federate_ = std::max(next_federate_, static_cast<FederateHandle>(snap.next_federate));
+    next_object_ = std::max(next_object_, static_cast<ObjectHandle>(snap.next_object));
+    outbox_.rehandle(new_handles);
+
+    // §4.20 initiateFederateRestore, with what the client mirrors of the restored federate.
+    for (const auto& [h, f] : federates_) {
+        const auto t = time_.save_state(h);
+        wire::InitiateFederateRestore m;
+        m.label = label;
+        m.federate = h;
+        m.time = t.time;
+        m.lookahead = t.lookahead;
+        m.regulating = t.regulating;
+        m.constrained = t.constrained;
+        m.asynchronous_delivery = t.asynchronous_delivery;
+        m.strict = t.strict_after_grant;
+        m.floor = t.regulating ? t.promise : 0;
+        m.next_serial = last_serial[h];
+        m.published = declarations(f.published);
+        m.subscribed = declarations(f.subscribed);
+        m.published_interactions = handles(f.published_interactions);
+        m.subscribed_interactions = handles(f.subscribed_interactions);
+        for (ObjectHandle oh : f.known) {
+            const ObjectInstance& obj = objects_.at(oh);
+            fom::Handle as = obj.object_class;
+            if (!f.published.count(as)) {
+                const fom::Handle subscribed_as = known_class(f, as);
+                if (subscribed_as) as = subscribed_as;
+            }
+            wire::Handles owned;
+            for (const auto& [attr, owner] : obj.owners)
+                if (owner == h) owned.push_back(attr);
+            m.objects.push_back(oh);
+            m.object_classes.push_back(as);
+            m.object_names.push_back(obj.name);
+            m.owned.push_back(std::move(owned));
+            m.may_delete.push_back(deleter(obj) == h ? 1 : 0);
+        }
+        outbox_.send(h, m);
+    }
+    // Until federationRestored, what is sent to the federates waits.
+    for (const auto& [h, f] : federates_) restore_.held[h];
+    outbox_.holding = &restore_.held;
+}
+
+// §4.21: federateRestoreComplete / federateRestoreNotComplete.
+void Federation::on(FederateHandle from, const wire::FederateRestoreComplete& m) {
+    federate(from);
+    if (!restore_.active || restore_.answered.count(from)) return;  // the client raises RestoreNotRequested
+    restore_.answered[from] = m.success;
+    finish_restore_if_answered();
+}
+
+// §4.22: federationRestored, or federationNotRestored if a federate could not restore (or left); the
+// gateway's state is the save's either way.
+void Federation::finish_restore_if_answered() {
+    if (!restore_.active) return;
+    for (const auto& [h, f] : federates_)
+        if (!restore_.answered.count(h)) return;
+    bool success = !restore_.failed;
+    for (const auto& [h, ok] : restore_.answered) success = success && ok;
+    outbox_.holding = nullptr;
+    RestoreRun done = std::move(restore_);
+    restore_ = RestoreRun{};
+    for (const auto& [h, f] : federates_) {
+        outbox_.send(h, wire::FederationRestored{success});
+        auto held = done.held.find(h);
+        if (held != done.held.end()) deliver_held(h, held->second);
+    }
+    update_advisories();
+    release_time();
+}
+
+// ---- introspection ----
+
+void Federation::write_save_status(std::string& out) const {
+    out += ",\"save_restore\":{\"state\":";
+    if (restore_.active) {
+        out += "\"restoring\",\"label\":";
+        json_string(out, restore_.label);
+    } else if (save_.active) {
+        out += save_.told.size() >= federates_.size() ? "\"saving\"" : "\"waiting for the save time\"";
+        out += ",\"label\":";
+        json_string(out, save_.label);
+        out += ",\"time\":";
+        if (save_.time) {
+            json_number(out, *save_.time);
+        } else {
+            out += "null";
+        }
+        out += ",\"told\":[";
+        bool first = true;
+        for (auto h : save_.told) {
+            out += (first ? "" : ",") + std::to_string(h);
+            first = false;
+        }
+        out += ']';
+    } else {
+        out += "\"idle\"";
+    }
+    if (restore_.active || save_.active) {
+        out += ",\"answered\":[";
+        bool first = true;
+        for (const auto& [h, ok] : restore_.active ? restore_.answered : save_.answered) {
+            out += (first ? "" : ",") + std::to_string(h);
+            first = false;
+        }
+        out += ']';
+    }
+    out += ",\"saves\":[";
+    bool first = true;
+    for (const auto& [label, bytes] : saves_) {
+        if (!first) out += ',';
+        first = false;
+        json_string(out, label);
+    }
+    out += "],\"save_dir\":";
+    json_string(out, save_dir_);
+    out += ",\"save_error\":";
+    json_string(out, save_error_);
+    out += "},\"instances\":[";
+    first = true;
+    for (const auto& [oh, obj] : objects_) {
+        if (!first) out += ',';
+        first = false;
+        const auto* cls = fom_.object_class(obj.object_class);
+        out += "{\"handle\":" + std::to_string(oh) + ",\"name\":";
+        json_string(out, obj.name);
+        out += ",\"class\":";
+        json_string(out, cls ? cls->qualified_name : std::to_string(obj.object_class));
+        out += ",\"owners\":{";
+        bool first_owner = true;
+        for (const auto& [attr, owner] : obj.owners) {
+            if (!first_owner) out += ',';
+            first_owner = false;
+            const auto* a = cls ? cls->attribute(attr) : nullptr;
+            json_string(out, a ? a->name : std::to_string(attr));
+            out += ':' + std::to_string(owner);
+        }
+        out += "}}";
+    }
+    out += ']';
+}
+
+}  // namespace hlacore

@@ -340,6 +340,7 @@ void Client::resign(std::uint8_t action) {
     objects_.clear();
     announced_.clear();
     time_ = TimeState{};
+    ddm_ = DdmState{};
 }
 
 void Client::register_sync_point(const std::string& label, const std::string& tag,

@@ -36,9 +36,14 @@ from ._core import (  # noqa: F401  (re-exported handle types)
     ObjectHandle,
     OrderingHandle,
     ParameterHandle,
+    RegionHandle,
     SpaceHandle,
     TransportationHandle,
 )
+
+# Bounds of a region's ranges (data distribution management, docs/ddm.md): closed ranges within them.
+MIN_EXTENT: int = _core.MIN_EXTENT
+MAX_EXTENT: int = _core.MAX_EXTENT
 
 DEFAULT_ADDRESS = "127.0.0.1:60400"
 
@@ -334,7 +339,10 @@ __all__ = [
     "ObjectHandle",
     "OrderingHandle",
     "ParameterHandle",
+    "RegionHandle",
     "SpaceHandle",
+    "MIN_EXTENT",
+    "MAX_EXTENT",
     "TransportationHandle",
     *_EXCEPTION_NAMES,
 ]

@@ -5,6 +5,7 @@ every exception. The FOM is tests/data/ddm.fed; the contract is docs/ddm.md."""
 
 from __future__ import annotations
 
+import json
 import pathlib
 from dataclasses import dataclass
 from typing import Any, Callable, Iterator
@@ -116,6 +117,19 @@ def test_spaces_dimensions_and_region_extents(ddm: Join) -> None:
     a.rtia.deleteRegion(other)
     with pytest.raises(rti.RegionNotKnown):
         a.rtia.getRegionExtent(other)
+
+
+def test_status_counts_each_federates_regions(ddm: Join) -> None:
+    a, b = ddm("a"), ddm("b")
+    h = fom_of(a.rtia)
+    for _ in range(2):
+        a.rtia.createRegion(h.geo, [])
+    gone = b.rtia.createRegion(h.band, [])
+    b.rtia.deleteRegion(gone)
+    barrier(a.rtia)
+    barrier(b.rtia)
+    (federation,) = [f for f in json.loads(a.rtia._status())["federations"] if f["name"] == "DdmFed"]
+    assert {f["name"]: f["regions"] for f in federation["federates"]} == {"a": 2, "b": 0}
 
 
 # ---- the acceptance cases ----

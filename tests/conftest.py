@@ -170,6 +170,8 @@ class Recorder(rti.FederateAmbassador):
         "informAttributeOwnership",
         "attributeIsNotOwned",
         "attributeOwnedByRTI",
+        "attributesInScope",
+        "attributesOutOfScope",
     ):
         locals()[_name] = _record(_name)
     del _name, _record

@@ -385,6 +385,58 @@ def test_deleted_regions_and_resigned_subscribers_leave_routing_intact(ddm: Join
     assert reflected(sub)[1] == (w, {h.position: b"2"})
 
 
+# ---- attribute scope advisories (HLA 1.3 §6.13-6.14) ----
+
+
+def scope_events(fed: Federate) -> list[tuple[str, Any, set]]:
+    return [(name, args[0], set(args[1])) for name, args in fed.amb.calls
+            if name in ("attributesInScope", "attributesOutOfScope")]
+
+
+def test_attributes_come_into_and_go_out_of_scope(ddm: Join) -> None:
+    pub, sub, quiet = ddm("pub"), ddm("sub"), ddm("quiet")
+    h = fom_of(pub.rtia)
+    pub.rtia.publishObjectClass(h.vehicle, [h.position, h.speed, h.name])
+    sub.rtia.enableAttributeScopeAdvisorySwitch()
+    wanted = sub.rtia.createRegion(h.geo, [(h.x, (0, 99))])
+    sub.rtia.subscribeObjectClassAttributesWithRegion(h.vehicle, wanted, [h.position, h.speed])
+    sub.rtia.subscribeObjectClassAttributes(h.vehicle, [h.name])
+    quiet.rtia.subscribeObjectClassAttributes(h.vehicle, [h.position])  # its switch stays off
+    barrier(sub.rtia)
+    barrier(quiet.rtia)
+    at = pub.rtia.createRegion(h.geo, [(h.x, (50, 50))])
+    v = pub.rtia.registerObjectInstanceWithRegion(h.vehicle, [(h.position, at), (h.speed, at)], "v")
+    tick_until(lambda: len(scope_events(sub)) == 1, sub.rtia)
+    assert [name for name, _ in sub.amb.calls][:2] == ["discoverObjectInstance", "attributesInScope"]
+    # The region moves away: position and speed leave the scope, name (no routing space) stays.
+    pub.rtia.notifyAboutRegionModification(at, [(h.x, (500, 500))])
+    tick_until(lambda: len(scope_events(sub)) == 2, sub.rtia)
+    # Unassociated, both go back to the default region; position alone is associated again.
+    pub.rtia.unassociateRegionForUpdates(at, v)
+    tick_until(lambda: len(scope_events(sub)) == 3, sub.rtia)
+    pub.rtia.associateRegionForUpdates(at, v, [h.position])
+    tick_until(lambda: len(scope_events(sub)) == 4, sub.rtia)
+    pub.rtia.notifyAboutRegionModification(at, [(h.x, (60, 60))])
+    tick_until(lambda: len(scope_events(sub)) == 5, sub.rtia)
+    # An unowned attribute is out of scope.
+    pub.rtia.unconditionalAttributeOwnershipDivestiture(v, [h.position])
+    tick_until(lambda: len(scope_events(sub)) == 6, sub.rtia)
+    sub.rtia.disableAttributeScopeAdvisorySwitch()
+    barrier(sub.rtia)
+    pub.rtia.unconditionalAttributeOwnershipDivestiture(v, [h.speed])
+    barrier(pub.rtia)
+    settle(sub.rtia, quiet.rtia)
+    assert scope_events(sub) == [
+        ("attributesInScope", v, {h.position, h.speed, h.name}),
+        ("attributesOutOfScope", v, {h.position, h.speed}),
+        ("attributesInScope", v, {h.position, h.speed}),
+        ("attributesOutOfScope", v, {h.position}),
+        ("attributesInScope", v, {h.position}),
+        ("attributesOutOfScope", v, {h.position}),
+    ]
+    assert scope_events(quiet) == []
+
+
 # ---- exceptions ----
 
 

@@ -108,6 +108,7 @@ void Federation::resign(FederateHandle h, wire::ResignAction action) {
     }
     for (const auto& label : labels) check_sync_point(label);
     update_advisories();
+    refresh_scope();
     release_time();  // those blocked on the departed federate may advance now
 }
 
@@ -143,11 +144,13 @@ std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle 
     for (auto& [gh, g] : federates_) {
         if (gh != h && discovers(gh, g, oh, obj)) discover(gh, g, oh, obj);
     }
+    refresh_scope();
     return {oh, name};
 }
 
 void Federation::handle(FederateHandle from, const wire::Message& message) {
     std::visit([&](const auto& m) { on(from, m); }, message);
+    refresh_scope();
 }
 
 template <class M>
@@ -913,6 +916,7 @@ wire::Handles Federation::release_response(FederateHandle from, const wire::Rele
         released.push_back(attr);
     }
     send_notices(m.object, notices);
+    refresh_scope();
     return released;
 }
 

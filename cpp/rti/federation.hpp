@@ -90,6 +90,8 @@ private:
         std::map<fom::Handle, std::set<RegionHandle>> interaction_subscriptions;
         // This federate's update regions: object -> attribute -> region (absent: the default region).
         std::map<ObjectHandle, std::map<fom::Handle, RegionHandle>> update_regions;
+        // The attributes last reported in scope, while the attribute scope advisory switch is on.
+        std::map<ObjectHandle, std::set<fom::Handle>> in_scope;
     };
     struct FederateState;
     struct ObjectInstance;
@@ -107,6 +109,11 @@ private:
     // The class a federate receives an interaction sent in `region` (null: default region) as, or 0.
     fom::Handle interaction_receiver(const FederateState& g, fom::Handle cls, const Region* region) const;
     void discover_in_scope();  // after regions, associations or subscriptions changed
+    // The known object's attributes in scope for federate `gh` (HLA 1.3 §6.13).
+    std::set<fom::Handle> scope_of(FederateHandle gh, const FederateState& g, ObjectHandle object,
+                                   const ObjectInstance& obj) const;
+    // Sends attributesInScope / attributesOutOfScope to the federates whose switch is on; after each request.
+    void refresh_scope();
     void forget_update_regions(ObjectHandle object);
     void route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region);
     void on(FederateHandle from, const wire::CreateRegion& m);

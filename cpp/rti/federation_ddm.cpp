@@ -112,6 +112,55 @@ void Federation::discover_in_scope() {
     for (auto& [h, f] : federates_) discover_all_for(h);
 }
 
+std::set<fom::Handle> Federation::scope_of(FederateHandle gh, const FederateState& g, ObjectHandle object,
+                                           const ObjectInstance& obj) const {
+    std::set<fom::Handle> scope;
+    const fom::Handle known = known_class(g, obj.object_class);
+    if (known == 0) return scope;
+    auto plain = g.subscribed.find(known);
+    for (const auto& [attr, owner] : obj.owners) {
+        if (owner == gh) continue;
+        if ((plain != g.subscribed.end() && plain->second.count(attr)) || region_wanted(g, known, owner, object, attr))
+            scope.insert(attr);
+    }
+    return scope;
+}
+
+// Scope changes with subscriptions, regions, associations, ownership, discovery and deletion; recomputing
+// it for the federates that asked is simpler than following each of those, and costs nothing otherwise.
+void Federation::refresh_scope() {
+    for (auto& [gh, g] : federates_) {
+        auto& before = g.ddm.in_scope;
+        if (!g.attribute_scope) {
+            before.clear();
+            continue;
+        }
+        std::map<ObjectHandle, std::set<fom::Handle>> now;
+        for (ObjectHandle oh : g.known) {
+            auto obj = objects_.find(oh);
+            if (obj == objects_.end()) continue;
+            auto scope = scope_of(gh, g, oh, obj->second);
+            if (!scope.empty()) now[oh] = std::move(scope);
+        }
+        for (const auto& [oh, attrs] : before) {
+            if (!g.known.count(oh)) continue;  // removed or forgotten: no out-of-scope notice
+            auto still = now.find(oh);
+            wire::AttributesOutOfScope out{oh, {}};
+            for (auto attr : attrs)
+                if (still == now.end() || !still->second.count(attr)) out.attributes.push_back(attr);
+            if (!out.attributes.empty()) outbox_.send(gh, out);
+        }
+        for (const auto& [oh, attrs] : now) {
+            auto was = before.find(oh);
+            wire::AttributesInScope in{oh, {}};
+            for (auto attr : attrs)
+                if (was == before.end() || !was->second.count(attr)) in.attributes.push_back(attr);
+            if (!in.attributes.empty()) outbox_.send(gh, in);
+        }
+        before = std::move(now);
+    }
+}
+
 void Federation::forget_update_regions(ObjectHandle object) {
     for (auto& [h, f] : federates_) f.ddm.update_regions.erase(object);
 }

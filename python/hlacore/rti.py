@@ -97,7 +97,9 @@ class FederateAmbassador:
     ``requestAttributeOwnershipRelease(object, attributes, tag)``,
     ``confirmAttributeOwnershipAcquisitionCancellation(object, attributes)``,
     ``informAttributeOwnership(object, attribute, owner)``, ``attributeIsNotOwned(object, attribute)`` and
-    ``attributeOwnedByRTI(object, attribute)`` (never called: hlacore has no RTI-owned attributes).
+    ``attributeOwnedByRTI(object, attribute)`` (never called: hlacore has no RTI-owned attributes);
+    with the attribute scope advisory switch on (HLA 1.3 §6.13-6.14, docs/ddm.md)
+    ``attributesInScope(object, attributes)`` and ``attributesOutOfScope(object, attributes)``.
     """
 
 
@@ -201,11 +203,13 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         self._set_advisory_switch(_SWITCH_ATTRIBUTE, False)
 
     def enableAttributeScopeAdvisorySwitch(self) -> None:
-        """Record the attribute scope switch (its callbacks come with data distribution management)."""
+        """Turn on ``attributesInScope``/``attributesOutOfScope`` (HLA 1.3 §6.13-6.14): an attribute of a known
+        object is in scope while it is subscribed (through a region overlapping its owner's update region,
+        if by region) and owned by another federate."""
         self._set_advisory_switch(_SWITCH_SCOPE, True)
 
     def disableAttributeScopeAdvisorySwitch(self) -> None:
-        """Record the attribute scope switch as off (the default)."""
+        """Turn off ``attributesInScope``/``attributesOutOfScope`` (the default)."""
         self._set_advisory_switch(_SWITCH_SCOPE, False)
 
     # ---- transportation and ordering (answered locally, usable before joining) ----

@@ -112,7 +112,10 @@ using OptionalTime = std::optional<double>;
     X(SubscribeInteractionClassWithRegion) \
     X(UnsubscribeInteractionClassWithRegion) \
     X(SendInteractionWithRegion)     \
-    X(RequestClassUpdateWithRegion)
+    X(RequestClassUpdateWithRegion)  \
+    /* data distribution management: gateway -> federate */ \
+    X(AttributesInScope)             \
+    X(AttributesOutOfScope)
 
 enum class MessageType : std::uint16_t {
     Invalid = 0,
@@ -701,6 +704,22 @@ struct RequestClassUpdateWithRegion {
     Handles attributes;
     std::uint32_t region = 0;
     HLACORE_FIELDS(object_class, attributes, region)
+};
+
+// Gateway -> federate, while its attribute scope advisory switch is on (HLA 1.3 §6.13-6.14): attributes of
+// a known object that came into scope (subscribed, through a region overlapping the owner's update region
+// if by region, and owned by another federate) or left it.
+struct AttributesInScope {
+    HLACORE_TYPE(AttributesInScope)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct AttributesOutOfScope {
+    HLACORE_TYPE(AttributesOutOfScope)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
 };
 
 // Index in the variant == wire code.

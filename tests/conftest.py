@@ -172,6 +172,8 @@ class Recorder(rti.FederateAmbassador):
         "attributeOwnedByRTI",
         "attributesInScope",
         "attributesOutOfScope",
+        "turnUpdatesOnForObjectInstance",
+        "turnUpdatesOffForObjectInstance",
     ):
         locals()[_name] = _record(_name)
     del _name, _record

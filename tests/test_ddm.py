@@ -437,6 +437,43 @@ def test_attributes_come_into_and_go_out_of_scope(ddm: Join) -> None:
     assert scope_events(quiet) == []
 
 
+def relevance_events(fed: Federate) -> list[tuple[str, Any, set]]:
+    return [(name, args[0], set(args[1])) for name, args in fed.amb.calls
+            if name in ("turnUpdatesOnForObjectInstance", "turnUpdatesOffForObjectInstance")]
+
+
+def test_owners_are_told_when_their_attributes_are_wanted(ddm: Join) -> None:
+    pub, west, east = ddm("pub"), ddm("west"), ddm("east")
+    h = fom_of(pub.rtia)
+    pub.rtia.enableAttributeRelevanceAdvisorySwitch()
+    pub.rtia.publishObjectClass(h.vehicle, [h.position, h.speed])
+    at = pub.rtia.createRegion(h.geo, [(h.x, (50, 50))])
+    v = pub.rtia.registerObjectInstanceWithRegion(h.vehicle, [(h.position, at), (h.speed, at)], "v")
+    barrier(pub.rtia)
+    settle(pub.rtia)
+    assert relevance_events(pub) == []  # nobody subscribes yet
+    west_region = west.rtia.createRegion(h.geo, [(h.x, (0, 99))])
+    west.rtia.subscribeObjectClassAttributesWithRegion(h.vehicle, west_region, [h.position])
+    tick_until(lambda: len(relevance_events(pub)) == 1, pub.rtia)
+    east.rtia.subscribeObjectClassAttributes(h.vehicle, [h.position, h.speed])  # plain: speed too
+    tick_until(lambda: len(relevance_events(pub)) == 2, pub.rtia)
+    east.rtia.unsubscribeObjectClass(h.vehicle)
+    tick_until(lambda: len(relevance_events(pub)) == 3, pub.rtia)
+    # The update region moves away from west's: nobody wants position any more.
+    pub.rtia.notifyAboutRegionModification(at, [(h.x, (500, 500))])
+    tick_until(lambda: len(relevance_events(pub)) == 4, pub.rtia)
+    pub.rtia.disableAttributeRelevanceAdvisorySwitch()
+    pub.rtia.notifyAboutRegionModification(at, [(h.x, (50, 50))])
+    barrier(pub.rtia)
+    settle(pub.rtia)
+    assert relevance_events(pub) == [
+        ("turnUpdatesOnForObjectInstance", v, {h.position}),
+        ("turnUpdatesOnForObjectInstance", v, {h.speed}),
+        ("turnUpdatesOffForObjectInstance", v, {h.speed}),
+        ("turnUpdatesOffForObjectInstance", v, {h.position}),
+    ]
+
+
 # ---- exceptions ----
 
 

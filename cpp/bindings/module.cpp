@@ -273,6 +273,12 @@ py::object to_callback(const wire::Message& message) {
             } else if constexpr (std::is_same_v<M, wire::AttributesOutOfScope>) {
                 return py::make_tuple("attributesOutOfScope",
                                       py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOn>) {
+                return py::make_tuple("turnUpdatesOnForObjectInstance",
+                                      py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOff>) {
+                return py::make_tuple("turnUpdatesOffForObjectInstance",
+                                      py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
             } else if constexpr (std::is_same_v<M, wire::OwnershipInformation>) {
                 switch (static_cast<wire::OwnershipKind>(m.kind)) {
                     case wire::OwnershipKind::OwnedByFederate:

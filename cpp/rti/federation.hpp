@@ -92,6 +92,8 @@ private:
         std::map<ObjectHandle, std::map<fom::Handle, RegionHandle>> update_regions;
         // The attributes last reported in scope, while the attribute scope advisory switch is on.
         std::map<ObjectHandle, std::set<fom::Handle>> in_scope;
+        // Owned attributes last reported relevant (turnUpdatesOn), while the relevance switch is on.
+        std::map<ObjectHandle, std::set<fom::Handle>> relevant;
     };
     struct FederateState;
     struct ObjectInstance;
@@ -112,7 +114,9 @@ private:
     // The known object's attributes in scope for federate `gh` (HLA 1.3 §6.13).
     std::set<fom::Handle> scope_of(FederateHandle gh, const FederateState& g, ObjectHandle object,
                                    const ObjectInstance& obj) const;
-    // Sends attributesInScope / attributesOutOfScope to the federates whose switch is on; after each request.
+    // Sends attributesInScope / attributesOutOfScope (scope switch) and turnUpdatesOn/OffForObjectInstance
+    // (attribute relevance switch: some other federate has the owned attribute in scope) to the federates
+    // whose switch is on; after each request.
     void refresh_scope();
     void forget_update_regions(ObjectHandle object);
     void route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region);

@@ -126,38 +126,71 @@ std::set<fom::Handle> Federation::scope_of(FederateHandle gh, const FederateStat
     return scope;
 }
 
-// Scope changes with subscriptions, regions, associations, ownership, discovery and deletion; recomputing
-// it for the federates that asked is simpler than following each of those, and costs nothing otherwise.
+namespace {
+
+// Sends `M` (AttributesInScope/OutOfScope, TurnUpdatesOn/Off) for each object's attributes in `from`
+// missing from `to`, where keep(object, attribute) still allows a notice.
+template <class M, class Keep>
+void send_difference(Outbox& outbox, FederateHandle federate,
+                     const std::map<std::uint32_t, std::set<fom::Handle>>& from,
+                     const std::map<std::uint32_t, std::set<fom::Handle>>& to, Keep keep) {
+    for (const auto& [object, attrs] : from) {
+        auto other = to.find(object);
+        M notice;
+        notice.object = object;
+        for (auto attr : attrs)
+            if ((other == to.end() || !other->second.count(attr)) && keep(object, attr)) notice.attributes.push_back(attr);
+        if (!notice.attributes.empty()) outbox.send(federate, notice);
+    }
+}
+
+}  // namespace
+
+// Scope (and so relevance) changes with subscriptions, regions, associations, ownership, discovery and
+// deletion; recomputing it for the federates that asked is simpler than following each of those, and
+// costs nothing when no federate has either switch on.
 void Federation::refresh_scope() {
+    bool relevance_wanted = false;
+    for (auto& [h, f] : federates_) {
+        if (!f.attribute_scope) f.ddm.in_scope.clear();
+        if (!f.attribute_relevance) f.ddm.relevant.clear();
+        relevance_wanted = relevance_wanted || f.attribute_relevance;
+    }
+    using Scopes = std::map<ObjectHandle, std::set<fom::Handle>>;
+    std::map<FederateHandle, Scopes> relevant;  // owner -> what some other federate has in scope
     for (auto& [gh, g] : federates_) {
-        auto& before = g.ddm.in_scope;
-        if (!g.attribute_scope) {
-            before.clear();
-            continue;
-        }
-        std::map<ObjectHandle, std::set<fom::Handle>> now;
+        if (!g.attribute_scope && !relevance_wanted) continue;
+        Scopes now;
         for (ObjectHandle oh : g.known) {
             auto obj = objects_.find(oh);
             if (obj == objects_.end()) continue;
             auto scope = scope_of(gh, g, oh, obj->second);
+            for (auto attr : scope) relevant[obj->second.owners.at(attr)][oh].insert(attr);
             if (!scope.empty()) now[oh] = std::move(scope);
         }
-        for (const auto& [oh, attrs] : before) {
-            if (!g.known.count(oh)) continue;  // removed or forgotten: no out-of-scope notice
-            auto still = now.find(oh);
-            wire::AttributesOutOfScope out{oh, {}};
-            for (auto attr : attrs)
-                if (still == now.end() || !still->second.count(attr)) out.attributes.push_back(attr);
-            if (!out.attributes.empty()) outbox_.send(gh, out);
-        }
-        for (const auto& [oh, attrs] : now) {
-            auto was = before.find(oh);
-            wire::AttributesInScope in{oh, {}};
-            for (auto attr : attrs)
-                if (was == before.end() || !was->second.count(attr)) in.attributes.push_back(attr);
-            if (!in.attributes.empty()) outbox_.send(gh, in);
-        }
-        before = std::move(now);
+        if (!g.attribute_scope) continue;
+        // No out-of-scope notice for an object removed or forgotten meanwhile.
+        send_difference<wire::AttributesOutOfScope>(outbox_, gh, g.ddm.in_scope, now,
+                                                    [&](ObjectHandle oh, fom::Handle) { return g.known.count(oh) > 0; });
+        send_difference<wire::AttributesInScope>(outbox_, gh, now, g.ddm.in_scope,
+                                                 [](ObjectHandle, fom::Handle) { return true; });
+        g.ddm.in_scope = std::move(now);
+    }
+    if (!relevance_wanted) return;
+    for (auto& [ph, p] : federates_) {
+        if (!p.attribute_relevance) continue;
+        Scopes& now = relevant[ph];
+        // turnUpdatesOff only for attributes the federate still owns.
+        auto owned = [&](ObjectHandle oh, fom::Handle attr) {
+            auto obj = objects_.find(oh);
+            if (obj == objects_.end()) return false;
+            auto owner = obj->second.owners.find(attr);
+            return owner != obj->second.owners.end() && owner->second == ph;
+        };
+        send_difference<wire::TurnUpdatesOff>(outbox_, ph, p.ddm.relevant, now, owned);
+        send_difference<wire::TurnUpdatesOn>(outbox_, ph, now, p.ddm.relevant,
+                                             [](ObjectHandle, fom::Handle) { return true; });
+        p.ddm.relevant = std::move(now);
     }
 }
 

@@ -99,7 +99,9 @@ class FederateAmbassador:
     ``informAttributeOwnership(object, attribute, owner)``, ``attributeIsNotOwned(object, attribute)`` and
     ``attributeOwnedByRTI(object, attribute)`` (never called: hlacore has no RTI-owned attributes);
     with the attribute scope advisory switch on (HLA 1.3 §6.13-6.14, docs/ddm.md)
-    ``attributesInScope(object, attributes)`` and ``attributesOutOfScope(object, attributes)``.
+    ``attributesInScope(object, attributes)`` and ``attributesOutOfScope(object, attributes)``; with the
+    attribute relevance advisory switch on, ``turnUpdatesOnForObjectInstance(object, attributes)`` and
+    ``turnUpdatesOffForObjectInstance(object, attributes)``.
     """
 
 
@@ -195,11 +197,12 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         self._set_advisory_switch(_SWITCH_INTERACTION, False)
 
     def enableAttributeRelevanceAdvisorySwitch(self) -> None:
-        """Record the attribute relevance switch (its callbacks come with data distribution management)."""
+        """Turn on ``turnUpdatesOnForObjectInstance``/``turnUpdatesOffForObjectInstance``: whether some other
+        federate has an attribute this federate owns in scope (see :meth:`enableAttributeScopeAdvisorySwitch`)."""
         self._set_advisory_switch(_SWITCH_ATTRIBUTE, True)
 
     def disableAttributeRelevanceAdvisorySwitch(self) -> None:
-        """Record the attribute relevance switch as off (the default)."""
+        """Turn off ``turnUpdatesOnForObjectInstance``/``turnUpdatesOffForObjectInstance`` (the default)."""
         self._set_advisory_switch(_SWITCH_ATTRIBUTE, False)
 
     def enableAttributeScopeAdvisorySwitch(self) -> None:

@@ -115,7 +115,9 @@ using OptionalTime = std::optional<double>;
     X(RequestClassUpdateWithRegion)  \
     /* data distribution management: gateway -> federate */ \
     X(AttributesInScope)             \
-    X(AttributesOutOfScope)
+    X(AttributesOutOfScope)          \
+    X(TurnUpdatesOn)                 \
+    X(TurnUpdatesOff)
 
 enum class MessageType : std::uint16_t {
     Invalid = 0,
@@ -717,6 +719,21 @@ struct AttributesInScope {
 };
 struct AttributesOutOfScope {
     HLACORE_TYPE(AttributesOutOfScope)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+
+// Gateway -> federate, while its attribute relevance advisory switch is on: owned attributes that some other
+// federate now has in scope (turnUpdatesOnForObjectInstance), or that nobody has any more.
+struct TurnUpdatesOn {
+    HLACORE_TYPE(TurnUpdatesOn)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct TurnUpdatesOff {
+    HLACORE_TYPE(TurnUpdatesOff)
     std::uint32_t object = 0;
     Handles attributes;
     HLACORE_FIELDS(object, attributes)

@@ -507,14 +507,14 @@ def test_exceptions(ddm: Join, gateway_address: str, tmp_path: pathlib.Path) -> 
     finally:
         other.destroyFederationExecution("S")
 
-    # A region this federate did not create (handles are numbered per federate), or deleted.
+    # A region of another federate, or a deleted one.
     b_region = b.rtia.createRegion(h.geo, [])
-    b.rtia.createRegion(h.geo, [])
-    b_third = b.rtia.createRegion(h.geo, [])  # a has created two regions only
-    b.rtia.deleteRegion(b_region)
-    for unknown, fed in ((b_third, a), (b_region, b)):
+    gone = b.rtia.createRegion(h.geo, [])
+    b.rtia.deleteRegion(gone)
+    for unknown, fed in ((b_region, a), (gone, b)):
         for call in (lambda: fed.rtia.notifyAboutRegionModification(unknown),
                      lambda: fed.rtia.deleteRegion(unknown),
+                     lambda: fed.rtia.getRegionExtent(unknown),
                      lambda: fed.rtia.subscribeObjectClassAttributesWithRegion(h.vehicle, unknown, [h.position]),
                      lambda: fed.rtia.subscribeInteractionClassWithRegion(h.radio, unknown),
                      lambda: fed.rtia.requestClassAttributeValueUpdateWithRegion(h.vehicle, [h.position], unknown)):
@@ -547,7 +547,7 @@ def test_exceptions(ddm: Join, gateway_address: str, tmp_path: pathlib.Path) -> 
     with pytest.raises(rti.InvalidRegionContext):
         a.rtia.associateRegionForUpdates(geo_region, v, [h.name])
     with pytest.raises(rti.ObjectNotKnown):
-        b.rtia.associateRegionForUpdates(b_third, v, [h.position])
+        b.rtia.associateRegionForUpdates(b_region, v, [h.position])
     with pytest.raises(rti.RegionInUse):
         a.rtia.deleteRegion(geo_region)  # v's position is updated in it
     a.rtia.unassociateRegionForUpdates(geo_region, v)

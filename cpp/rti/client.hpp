@@ -220,7 +220,6 @@ private:
         wire::Handles bounds;  // lower, upper per dimension of the space, as sent to the gateway
     };
     struct DdmState {
-        std::uint32_t last_region = 0;
         std::map<std::uint32_t, LocalRegion> regions;
         std::map<fom::Handle, std::map<std::uint32_t, std::set<fom::Handle>>> object_subscriptions;
         std::map<fom::Handle, std::set<std::uint32_t>> interaction_subscriptions;

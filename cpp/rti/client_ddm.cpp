@@ -2,6 +2,7 @@
 // every service checks HLA 1.3's exceptions against this federate's regions, subscriptions and
 // associations, and the gateway does the routing (federation_ddm.cpp).
 #include <algorithm>
+#include <atomic>
 
 #include "rti/client.hpp"
 
@@ -12,6 +13,13 @@ namespace {
 [[noreturn]] void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
 
 std::string region_text(std::uint32_t region) { return "region " + std::to_string(region); }
+
+// Region numbers are unique in the process, not only per federate: a RegionHandle of another ambassador
+// then raises RegionNotKnown instead of naming this federate's region of the same number.
+std::uint32_t next_region_number() {
+    static std::atomic<std::uint32_t> last{0};
+    return ++last;
+}
 
 void check_attributes_defined(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes) {
     for (auto a : attributes) {
@@ -93,7 +101,7 @@ std::uint32_t Client::create_region(fom::Handle space, const Extent& extent) {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
         bounds = region_bounds(space, extent);
-        region = ++ddm_.last_region;
+        region = next_region_number();
         ddm_.regions[region] = LocalRegion{space, bounds};
     }
     send(wire::CreateRegion{region, space, std::move(bounds)});

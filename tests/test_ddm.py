@@ -237,6 +237,27 @@ def test_ranges_are_closed_and_every_dimension_must_overlap(ddm: Join) -> None:
     assert sorted(values[h.position].decode() for _, values in reflected(sub)) == inside
 
 
+def test_subclass_instances_are_filtered_at_the_class_the_subscriber_knows(ddm: Join) -> None:
+    pub, sub = ddm("pub"), ddm("sub")
+    h = fom_of(pub.rtia)
+    load = pub.rtia.getAttributeHandle("load", h.truck)
+    pub.rtia.publishObjectClass(h.truck, [h.position, load])
+    region = sub.rtia.createRegion(h.geo, [(h.y, (0, 10))])
+    sub.rtia.subscribeObjectClassAttributesWithRegion(h.vehicle, region, [h.position])
+    barrier(sub.rtia)
+    near, far = pub.rtia.createRegion(h.geo, [(h.y, (10, 10))]), pub.rtia.createRegion(h.geo, [(h.y, (11, 11))])
+    t1 = pub.rtia.registerObjectInstanceWithRegion(h.truck, [(h.position, near), (load, far)], "t1")
+    t2 = pub.rtia.registerObjectInstanceWithRegion(h.truck, [(h.position, far), (load, near)], "t2")
+    for t in (t1, t2):
+        pub.rtia.updateAttributeValues(t, {h.position: b"p", load: b"l"}, "")
+    barrier(pub.rtia)
+    barrier(sub.rtia)
+    sub.rtia.tick()
+    # Discovered as vehicle, the class subscribed; load is not a vehicle attribute, so never reflected.
+    assert sub.amb.named("discoverObjectInstance") == [(t1, h.vehicle, "t1")]
+    assert reflected(sub) == [(t1, {h.position: b"p"})]
+
+
 def test_associating_and_unassociating_an_update_region(ddm: Join) -> None:
     pub, west, east = ddm("pub"), ddm("west"), ddm("east")
     h = fom_of(pub.rtia)

@@ -170,6 +170,10 @@ class Recorder(rti.FederateAmbassador):
         "informAttributeOwnership",
         "attributeIsNotOwned",
         "attributeOwnedByRTI",
+        "attributesInScope",
+        "attributesOutOfScope",
+        "turnUpdatesOnForObjectInstance",
+        "turnUpdatesOffForObjectInstance",
     ):
         locals()[_name] = _record(_name)
     del _name, _record

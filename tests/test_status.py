@@ -45,7 +45,7 @@ def test_status_reports_each_federates_time_state(inprocess_gateway: hlacore.Gat
         "handle": 1, "name": "alpha", "time": 0.0, "lookahead": 1.0, "regulating": True,
         "enabling_regulation": False, "constrained": True,
         "asynchronous_delivery": False, "pending": {"request": "TAR", "time": 3.0}, "queued_tso": 0,
-        "queued_ro": 0, "lbts": 2.0, "output_bound": 4.0,
+        "queued_ro": 0, "regions": 0, "lbts": 2.0, "output_bound": 4.0,
     }
     assert beta["pending"] is None and beta["queued_tso"] == 1 and beta["lbts"] == 4.0
     assert beta["output_bound"] == 2.0

@@ -344,6 +344,7 @@ void Client::resign(std::uint8_t action) {
     time_ = TimeState{};
     save_phase_ = SavePhase::None;
     restore_phase_ = RestorePhase::None;
+    ddm_ = DdmState{};
 }
 
 void Client::register_sync_point(const std::string& label, const std::string& tag,

@@ -97,6 +97,39 @@ public:
     void query_ownership(std::uint32_t object, fom::Handle attribute);
     bool is_owned(std::uint32_t object, fom::Handle attribute) const;
 
+    // ---- data distribution management (HLA 1.3 §9), client_ddm.cpp ----
+    // A region's handle is chosen here (regions belong to their creator). An extent lists closed ranges
+    // (dimension, lower, upper) with kMinExtent <= lower <= upper <= kMaxExtent; the dimensions it does not
+    // list span the whole axis.
+    static constexpr std::int64_t kMinExtent = 0;
+    static constexpr std::int64_t kMaxExtent = 0xFFFFFFFF;
+    struct Range {
+        fom::Handle dimension = 0;
+        std::int64_t lower = 0;
+        std::int64_t upper = 0;
+    };
+    using Extent = std::vector<Range>;
+    std::uint32_t create_region(fom::Handle space, const Extent& extent);
+    // notifyAboutRegionModification: the region takes `extent` (or keeps its own) from the next message on.
+    void modify_region(std::uint32_t region, const std::optional<Extent>& extent);
+    void delete_region(std::uint32_t region);
+    // The region's routing space and its ranges, one per dimension of the space in the FOM's order.
+    std::pair<fom::Handle, Extent> region_extent(std::uint32_t region) const;
+    std::uint32_t register_object_with_region(fom::Handle cls,
+                                              const std::vector<std::pair<fom::Handle, std::uint32_t>>& regions,
+                                              const std::string& name);
+    void associate_region(std::uint32_t region, std::uint32_t object, const std::vector<fom::Handle>& attributes);
+    void unassociate_region(std::uint32_t region, std::uint32_t object);
+    void subscribe_object_class_with_region(fom::Handle cls, std::uint32_t region,
+                                            const std::vector<fom::Handle>& attributes, bool active);
+    void unsubscribe_object_class_with_region(fom::Handle cls, std::uint32_t region);
+    void subscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region, bool active);
+    void unsubscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region);
+    std::uint64_t send_interaction_with_region(fom::Handle cls, wire::HandleValues values, std::uint32_t region,
+                                               const std::string& tag, wire::OptionalTime time);
+    void request_class_update_with_region(fom::Handle cls, const std::vector<fom::Handle>& attributes,
+                                          std::uint32_t region);
+
     // ---- time management (HLA 1.3 §8; the rules are in docs/time-management.md) ----
     // The federate's time state changes when its callbacks are popped (timeRegulationEnabled,
     // timeConstrainedEnabled, timeAdvanceGrant), as HLA says: at delivery, not at arrival.
@@ -191,6 +224,23 @@ private:
         std::set<fom::Handle> release_requested;
     };
 
+    // Data distribution management state (client_ddm.cpp), under mu_.
+    struct LocalRegion {
+        fom::Handle space = 0;
+        wire::Handles bounds;  // lower, upper per dimension of the space, as sent to the gateway
+    };
+    struct DdmState {
+        std::map<std::uint32_t, LocalRegion> regions;
+        std::map<fom::Handle, std::map<std::uint32_t, std::set<fom::Handle>>> object_subscriptions;
+        std::map<fom::Handle, std::set<std::uint32_t>> interaction_subscriptions;
+        std::map<std::uint32_t, std::map<fom::Handle, std::uint32_t>> update_regions;  // object -> attribute -> region
+    };
+    const LocalRegion& known_region(std::uint32_t region) const;  // RegionNotKnown
+    wire::Handles region_bounds(fom::Handle space, const Extent& extent) const;  // DimensionNotDefined, InvalidExtents
+    // InvalidRegionContext unless the attribute's routing space is the region's.
+    void check_region_space(const LocalRegion& region, const fom::ObjectClass& cls, fom::Handle attribute) const;
+    bool region_in_use(std::uint32_t region) const;
+
     template <class M>
     void send(const M& message) {
         std::lock_guard<std::mutex> lock(send_mu_);
@@ -275,6 +325,7 @@ private:
     SavePhase save_phase_ = SavePhase::None;
     RestorePhase restore_phase_ = RestorePhase::None;
     std::string save_label_;
+    DdmState ddm_;
 };
 
 }  // namespace hlacore

@@ -109,6 +109,7 @@ void Federation::resign(FederateHandle h, wire::ResignAction action) {
     for (const auto& label : labels) check_sync_point(label);
     save_restore_departed(h);
     update_advisories();
+    refresh_scope();
     release_time();  // those blocked on the departed federate may advance now
 }
 
@@ -143,14 +144,16 @@ std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle 
     object_names_[name] = oh;
     f.known.insert(oh);
     for (auto& [gh, g] : federates_) {
-        if (gh != h && known_class(g, cls_handle) != 0) discover(gh, g, oh, obj);
+        if (gh != h && discovers(gh, g, oh, obj)) discover(gh, g, oh, obj);
     }
+    refresh_scope();
     return {oh, name};
 }
 
 void Federation::handle(FederateHandle from, const wire::Message& message) {
     if (ignored_while_restoring(from, message)) return;
     std::visit([&](const auto& m) { on(from, m); }, message);
+    refresh_scope();
 }
 
 template <class M>
@@ -192,14 +195,14 @@ void Federation::check_attributes(const fom::ObjectClass& cls, const wire::Handl
 
 fom::Handle Federation::known_class(const FederateState& f, fom::Handle cls) const {
     for (fom::Handle c = cls; c != 0; c = fom_.object_class(c)->parent) {
-        if (f.subscribed.count(c)) return c;
+        if (f.subscribed.count(c) || f.ddm.object_subscriptions.count(c)) return c;
     }
     return 0;
 }
 
 fom::Handle Federation::receiving_interaction_class(const FederateState& f, fom::Handle cls) const {
     for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent) {
-        if (f.subscribed_interactions.count(c)) return c;
+        if (f.subscribed_interactions.count(c) || f.ddm.interaction_subscriptions.count(c)) return c;
     }
     return 0;
 }
@@ -212,7 +215,7 @@ void Federation::discover(FederateHandle to, FederateState& f, ObjectHandle oh, 
 void Federation::discover_all_for(FederateHandle h) {
     auto& f = federates_.at(h);
     for (const auto& [oh, obj] : objects_) {
-        if (!f.known.count(oh) && known_class(f, obj.object_class) != 0) discover(h, f, oh, obj);
+        if (!f.known.count(oh) && discovers(h, f, oh, obj)) discover(h, f, oh, obj);
     }
 }
 
@@ -230,6 +233,7 @@ void Federation::remove_object(ObjectHandle oh, FederateHandle by, const std::st
     }
     object_names_.erase(it->second.name);
     objects_.erase(it);
+    forget_update_regions(oh);
 }
 
 // HLA 1.3 §8.1.1: receivers were granted on the regulating sender's bound, so a timestamp below it could
@@ -507,8 +511,9 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
         if (gh == from) continue;
         const fom::Handle known = known_class(g, obj.object_class);
         if (known == 0) continue;
-        if (!g.known.count(m.object)) discover(gh, g, m.object, obj);
-        const auto& wanted = g.subscribed.at(known);
+        // A plain subscription (the default region) wants every subscribed attribute; a subscription
+        // region only those whose update region overlaps it (HLA 1.3 §9).
+        const auto plain = g.subscribed.find(known);
         // HLA 1.3 §8.1.1: timestamp order needs a time, a regulating sender, a constrained receiver and
         // `timestamp` as the attribute's order; each attribute goes its own way, so one update may split.
         const bool tso = m.time && time_.is_tso(from, gh);
@@ -517,10 +522,21 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
         for (const auto& pair : m.values) {
             // Values of attributes the sender does not own are not reflected (clients check this first).
             auto owner = obj.owners.find(pair.first);
-            if (!wanted.count(pair.first) || owner == obj.owners.end() || owner->second != from) continue;
+            if (owner == obj.owners.end() || owner->second != from) continue;
+            if (!(plain != g.subscribed.end() && plain->second.count(pair.first)) &&
+                !region_wanted(g, known, from, m.object, pair.first))
+                continue;
             const bool timed = tso && order_of(pair.first) == fom::Order::Timestamp;
             const int tr = transport_of(pair.first) == fom::Transport::BestEffort ? 1 : 0;
             out[timed][tr].values.push_back(pair);
+        }
+        if (!g.known.count(m.object)) {
+            // Discovered when an attribute comes into scope; a plain subscriber as before DDM.
+            bool in_scope = plain != g.subscribed.end();
+            for (const auto& row : out)
+                for (const auto& r : row) in_scope = in_scope || !r.values.empty();
+            if (!in_scope) continue;
+            discover(gh, g, m.object, obj);
         }
         for (auto& r : out[1])
             if (!r.values.empty()) deliver_timestamp_order(gh, r, from, m.serial, *m.time);
@@ -532,6 +548,12 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
 
 void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
     federate(from);
+    route_interaction(from, m, nullptr);
+}
+
+// `region`: the region the interaction was sent with (sendInteractionWithRegion), null for the default
+// region, which reaches every subscriber of the class.
+void Federation::route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region) {
     check_timestamp(from, m.time, "interaction");
     const auto& sent_class = interaction_class(m.interaction_class);
     for (const auto& [param, value] : m.values) {
@@ -554,7 +576,7 @@ void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
     const bool timestamped = m.time && order == fom::Order::Timestamp;
     for (auto& [gh, g] : federates_) {
         if (gh == from) continue;
-        const fom::Handle as = receiving_interaction_class(g, m.interaction_class);
+        const fom::Handle as = interaction_receiver(g, m.interaction_class, region);
         if (as == 0) continue;
         // Received as the subscribed superclass: only the parameters that class defines.
         const auto* received_class = fom_.interaction_class(as);
@@ -900,6 +922,7 @@ wire::Handles Federation::release_response(FederateHandle from, const wire::Rele
         released.push_back(attr);
     }
     send_notices(m.object, notices);
+    refresh_scope();
     return released;
 }
 

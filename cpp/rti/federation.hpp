@@ -67,6 +67,11 @@ public:
     std::pair<ObjectHandle, std::string> register_object(FederateHandle federate, fom::Handle object_class,
                                                          const std::string& name);
 
+    // registerObjectInstanceWithRegion (HLA 1.3 §9.5): register_object with the attributes' update regions
+    // in place before anyone discovers the instance (federation_ddm.cpp).
+    std::pair<ObjectHandle, std::string> register_object_with_region(FederateHandle federate,
+                                                                     const wire::RegisterObjectWithRegion& m);
+
     // attributeOwnershipReleaseResponse (HLA 1.3 §7.11): returns the attributes actually released, those
     // some federate is waiting to acquire.
     wire::Handles release_response(FederateHandle federate, const wire::ReleaseResponse& m);
@@ -93,6 +98,65 @@ public:
     void handle(FederateHandle from, const wire::Message& message);
 
 private:
+    // ---- data distribution management (HLA 1.3 §9), in federation_ddm.cpp ----
+    // A region belongs to the federate that created it; its handle is chosen by that federate's client.
+    using RegionHandle = std::uint32_t;
+    using Range = std::pair<std::uint32_t, std::uint32_t>;  // closed: lower <= value <= upper
+    struct Region {
+        fom::Handle space = 0;
+        std::vector<std::vector<Range>> extents;  // each extent: one range per dimension, in the FOM's order
+    };
+    struct FederateRegions {
+        std::map<RegionHandle, Region> regions;
+        // Subscriptions through a region; the plain ones (default region: the whole space) stay in
+        // FederateState::subscribed / subscribed_interactions.
+        std::map<fom::Handle, std::map<RegionHandle, std::set<fom::Handle>>> object_subscriptions;
+        std::map<fom::Handle, std::set<RegionHandle>> interaction_subscriptions;
+        // This federate's update regions: object -> attribute -> region (absent: the default region).
+        std::map<ObjectHandle, std::map<fom::Handle, RegionHandle>> update_regions;
+        // The attributes last reported in scope, while the attribute scope advisory switch is on.
+        std::map<ObjectHandle, std::set<fom::Handle>> in_scope;
+        // Owned attributes last reported relevant (turnUpdatesOn), while the relevance switch is on.
+        std::map<ObjectHandle, std::set<fom::Handle>> relevant;
+    };
+    struct FederateState;
+    struct ObjectInstance;
+    static bool overlap(const Region& a, const Region& b);
+    Region make_region(fom::Handle space, const wire::Handles& bounds) const;  // WireError on bad extents
+    const Region& region_of(const FederateState& f, RegionHandle r) const;   // WireError when unknown
+    // The region `owner` updates the attribute of the object in, or null for the default region.
+    const Region* update_region(FederateHandle owner, ObjectHandle object, fom::Handle attribute) const;
+    // Is the attribute subscribed at class `known` through a region overlapping the owner's update region?
+    bool region_wanted(const FederateState& g, fom::Handle known, FederateHandle owner, ObjectHandle object,
+                       fom::Handle attribute) const;
+    // Does federate `gh` discover the object now: a plain subscription to its class (as before DDM), or
+    // an owned attribute in scope through one of its subscription regions.
+    bool discovers(FederateHandle gh, const FederateState& g, ObjectHandle object, const ObjectInstance& obj) const;
+    // The class a federate receives an interaction sent in `region` (null: default region) as, or 0.
+    fom::Handle interaction_receiver(const FederateState& g, fom::Handle cls, const Region* region) const;
+    void discover_in_scope();  // after regions, associations or subscriptions changed
+    // The known object's attributes in scope for federate `gh` (HLA 1.3 §6.13).
+    std::set<fom::Handle> scope_of(FederateHandle gh, const FederateState& g, ObjectHandle object,
+                                   const ObjectInstance& obj) const;
+    // Sends attributesInScope / attributesOutOfScope (scope switch) and turnUpdatesOn/OffForObjectInstance
+    // (attribute relevance switch: some other federate has the owned attribute in scope) to the federates
+    // whose switch is on; after each request.
+    void refresh_scope();
+    void forget_update_regions(ObjectHandle object);
+    void route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region);
+    void on(FederateHandle from, const wire::CreateRegion& m);
+    void on(FederateHandle from, const wire::ModifyRegion& m);
+    void on(FederateHandle from, const wire::DeleteRegion& m);
+    void on(FederateHandle from, const wire::AssociateRegion& m);
+    void on(FederateHandle from, const wire::UnassociateRegion& m);
+    void on(FederateHandle from, const wire::SubscribeObjectClassWithRegion& m);
+    void on(FederateHandle from, const wire::UnsubscribeObjectClassWithRegion& m);
+    void on(FederateHandle from, const wire::SubscribeInteractionClassWithRegion& m);
+    void on(FederateHandle from, const wire::UnsubscribeInteractionClassWithRegion& m);
+    void on(FederateHandle from, const wire::SendInteractionWithRegion& m);
+    void on(FederateHandle from, const wire::RequestClassUpdateWithRegion& m);
+    // ---- end of data distribution management ----
+
     struct FederateState {
         std::string name;
         std::map<fom::Handle, std::set<fom::Handle>> published;   // object class -> attributes
@@ -110,6 +174,7 @@ private:
         // federate's interactions of a class go this way instead of the FOM's, until it unpublishes the class.
         std::map<fom::Handle, fom::Order> interaction_order;
         std::map<fom::Handle, fom::Transport> interaction_transport;
+        FederateRegions ddm;  // data distribution management (HLA 1.3 §9)
     };
     struct ObjectInstance {
         fom::Handle object_class = 0;

@@ -424,6 +424,16 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
         }
         return;
     }
+    if (const auto* m = std::get_if<wire::RegisterObjectWithRegion>(&message)) {
+        try {
+            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
+            auto [handle, name] = c.federation->federation.register_object_with_region(c.federate, *m);
+            reply(c, wire::Reply{m->request, 0, "", handle, name, "", 0});
+        } catch (const RtiError& e) {
+            error_reply(m->request, e);
+        }
+        return;
+    }
     if (const auto* m = std::get_if<wire::ReleaseResponse>(&message)) {
         try {
             if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");

@@ -90,6 +90,7 @@ void Federation::write_status(std::string& out) {
         }
         out += ",\"queued_tso\":" + std::to_string(t.queued_tso);
         out += ",\"queued_ro\":" + std::to_string(t.queued_ro);
+        out += ",\"regions\":" + std::to_string(f.ddm.regions.size());  // data distribution management
         out += ",\"lbts\":";
         json_number(out, t.lbts);
         out += ",\"output_bound\":";

@@ -36,9 +36,14 @@ from ._core import (  # noqa: F401  (re-exported handle types)
     ObjectHandle,
     OrderingHandle,
     ParameterHandle,
+    RegionHandle,
     SpaceHandle,
     TransportationHandle,
 )
+
+# Bounds of a region's ranges (data distribution management, docs/ddm.md): closed ranges within them.
+MIN_EXTENT: int = _core.MIN_EXTENT
+MAX_EXTENT: int = _core.MAX_EXTENT
 
 DEFAULT_ADDRESS = "127.0.0.1:60400"
 
@@ -92,12 +97,15 @@ class FederateAmbassador:
     ``requestAttributeOwnershipRelease(object, attributes, tag)``,
     ``confirmAttributeOwnershipAcquisitionCancellation(object, attributes)``,
     ``informAttributeOwnership(object, attribute, owner)``, ``attributeIsNotOwned(object, attribute)`` and
-    ``attributeOwnedByRTI(object, attribute)`` (never called: hlacore has no RTI-owned attributes),
-    and for save/restore (HLA 1.3 §4.11-4.22, docs/save-restore.md) ``initiateFederateSave(label)``,
-    ``federationSaved()``, ``federationNotSaved()``, ``requestFederationRestoreSucceeded(label)``,
-    ``requestFederationRestoreFailed(label, reason)``, ``federationRestoreBegun()``,
-    ``initiateFederateRestore(label, federateHandle)``, ``federationRestored()`` and
-    ``federationNotRestored()``.
+    ``attributeOwnedByRTI(object, attribute)`` (never called: hlacore has no RTI-owned attributes);
+    with the attribute scope advisory switch on (HLA 1.3 §6.13-6.14, docs/ddm.md)
+    ``attributesInScope(object, attributes)`` and ``attributesOutOfScope(object, attributes)``; with the
+    attribute relevance advisory switch on, ``turnUpdatesOnForObjectInstance(object, attributes)`` and
+    ``turnUpdatesOffForObjectInstance(object, attributes)``; and for save/restore (HLA 1.3 §4.11-4.22,
+    docs/save-restore.md) ``initiateFederateSave(label)``, ``federationSaved()``, ``federationNotSaved()``,
+    ``requestFederationRestoreSucceeded(label)``, ``requestFederationRestoreFailed(label, reason)``,
+    ``federationRestoreBegun()``, ``initiateFederateRestore(label, federateHandle)``, ``federationRestored()``
+    and ``federationNotRestored()``.
     """
 
 
@@ -193,19 +201,22 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         self._set_advisory_switch(_SWITCH_INTERACTION, False)
 
     def enableAttributeRelevanceAdvisorySwitch(self) -> None:
-        """Record the attribute relevance switch (its callbacks come with data distribution management)."""
+        """Turn on ``turnUpdatesOnForObjectInstance``/``turnUpdatesOffForObjectInstance``: whether some other
+        federate has an attribute this federate owns in scope (see :meth:`enableAttributeScopeAdvisorySwitch`)."""
         self._set_advisory_switch(_SWITCH_ATTRIBUTE, True)
 
     def disableAttributeRelevanceAdvisorySwitch(self) -> None:
-        """Record the attribute relevance switch as off (the default)."""
+        """Turn off ``turnUpdatesOnForObjectInstance``/``turnUpdatesOffForObjectInstance`` (the default)."""
         self._set_advisory_switch(_SWITCH_ATTRIBUTE, False)
 
     def enableAttributeScopeAdvisorySwitch(self) -> None:
-        """Record the attribute scope switch (its callbacks come with data distribution management)."""
+        """Turn on ``attributesInScope``/``attributesOutOfScope`` (HLA 1.3 §6.13-6.14): an attribute of a known
+        object is in scope while it is subscribed (through a region overlapping its owner's update region,
+        if by region) and owned by another federate."""
         self._set_advisory_switch(_SWITCH_SCOPE, True)
 
     def disableAttributeScopeAdvisorySwitch(self) -> None:
-        """Record the attribute scope switch as off (the default)."""
+        """Turn off ``attributesInScope``/``attributesOutOfScope`` (the default)."""
         self._set_advisory_switch(_SWITCH_SCOPE, False)
 
     # ---- transportation and ordering (answered locally, usable before joining) ----
@@ -339,7 +350,10 @@ __all__ = [
     "ObjectHandle",
     "OrderingHandle",
     "ParameterHandle",
+    "RegionHandle",
     "SpaceHandle",
+    "MIN_EXTENT",
+    "MAX_EXTENT",
     "TransportationHandle",
     *_EXCEPTION_NAMES,
 ]

@@ -25,7 +25,8 @@ def status(address: Optional[str] = None) -> dict[str, Any]:
     ``{"server", "address", "connections", "federations": [{"name", "fed", "objects", "sync_points",
     "federates": [{"handle", "name", "time", "lookahead", "regulating", "enabling_regulation", "constrained",
     "asynchronous_delivery", "pending": None | {"request": "TAR"|"TARA"|"NER"|"NERA"|"FQR", "time"},
-    "queued_tso", "queued_ro", "lbts", "output_bound"}]}]}``. On the wire infinite times are null; here
+    "queued_tso", "queued_ro", "regions", "lbts", "output_bound"}]}]}`` ("regions": how many the federate
+    has, docs/ddm.md). On the wire infinite times are null; here
     they are ``math.inf`` (``output_bound`` is inf for a federate that is not regulating).
     """
     report: dict[str, Any] = json.loads(_raw_status(address))

@@ -111,7 +111,25 @@ using OptionalTime = std::optional<double>;
     X(RestoreRequestAnswer)          \
     X(FederationRestoreBegun)        \
     X(InitiateFederateRestore)       \
-    X(FederationRestored)
+    X(FederationRestored)            \
+    /* data distribution management (HLA 1.3 §9): federate -> gateway */ \
+    X(CreateRegion)                  \
+    X(ModifyRegion)                  \
+    X(DeleteRegion)                  \
+    X(RegisterObjectWithRegion)      \
+    X(AssociateRegion)               \
+    X(UnassociateRegion)             \
+    X(SubscribeObjectClassWithRegion) \
+    X(UnsubscribeObjectClassWithRegion) \
+    X(SubscribeInteractionClassWithRegion) \
+    X(UnsubscribeInteractionClassWithRegion) \
+    X(SendInteractionWithRegion)     \
+    X(RequestClassUpdateWithRegion)  \
+    /* data distribution management: gateway -> federate */ \
+    X(AttributesInScope)             \
+    X(AttributesOutOfScope)          \
+    X(TurnUpdatesOn)                 \
+    X(TurnUpdatesOff)
 
 enum class MessageType : std::uint16_t {
     Invalid = 0,
@@ -689,6 +707,131 @@ struct FederationRestored {  // federationRestored, or federationNotRestored whe
     HLACORE_TYPE(FederationRestored)
     bool success = true;
     HLACORE_FIELDS(success)
+};
+
+// ---- data distribution management (HLA 1.3 §9) ----
+// Regions belong to the federate that created them; its client picks their handles (1, 2, ...), so the
+// gateway keys them by (federate, region) and creating one needs no round trip. The client checks the
+// exceptions (RegionNotKnown, InvalidExtents, InvalidRegionContext, ...); the gateway treats what it
+// would have refused as a protocol violation. `bounds` lists each extent's ranges in the space's
+// dimension order as lower, upper pairs (closed ranges): 2 * dimensions values per extent.
+struct CreateRegion {
+    HLACORE_TYPE(CreateRegion)
+    std::uint32_t region = 0;
+    std::uint32_t space = 0;
+    Handles bounds;
+    HLACORE_FIELDS(region, space, bounds)
+};
+// notifyAboutRegionModification: the region's new extents, used from the next message routed on.
+struct ModifyRegion {
+    HLACORE_TYPE(ModifyRegion)
+    std::uint32_t region = 0;
+    Handles bounds;
+    HLACORE_FIELDS(region, bounds)
+};
+struct DeleteRegion {
+    HLACORE_TYPE(DeleteRegion)
+    std::uint32_t region = 0;
+    HLACORE_FIELDS(region)
+};
+// Answered like RegisterObject; attributes[i] is associated with regions[i] for this federate's updates
+// before the instance is discovered by anyone.
+struct RegisterObjectWithRegion {
+    HLACORE_TYPE(RegisterObjectWithRegion)
+    std::uint32_t request = 0;
+    std::uint32_t object_class = 0;
+    std::string name;
+    Handles attributes;
+    Handles regions;
+    HLACORE_FIELDS(request, object_class, name, attributes, regions)
+};
+struct AssociateRegion {
+    HLACORE_TYPE(AssociateRegion)
+    std::uint32_t region = 0;
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(region, object, attributes)
+};
+struct UnassociateRegion {
+    HLACORE_TYPE(UnassociateRegion)
+    std::uint32_t region = 0;
+    std::uint32_t object = 0;
+    HLACORE_FIELDS(region, object)
+};
+struct SubscribeObjectClassWithRegion {
+    HLACORE_TYPE(SubscribeObjectClassWithRegion)
+    std::uint32_t object_class = 0;
+    std::uint32_t region = 0;
+    Handles attributes;
+    bool active = true;
+    HLACORE_FIELDS(object_class, region, attributes, active)
+};
+struct UnsubscribeObjectClassWithRegion {
+    HLACORE_TYPE(UnsubscribeObjectClassWithRegion)
+    std::uint32_t object_class = 0;
+    std::uint32_t region = 0;
+    HLACORE_FIELDS(object_class, region)
+};
+struct SubscribeInteractionClassWithRegion {
+    HLACORE_TYPE(SubscribeInteractionClassWithRegion)
+    std::uint32_t interaction_class = 0;
+    std::uint32_t region = 0;
+    bool active = true;
+    HLACORE_FIELDS(interaction_class, region, active)
+};
+struct UnsubscribeInteractionClassWithRegion {
+    HLACORE_TYPE(UnsubscribeInteractionClassWithRegion)
+    std::uint32_t interaction_class = 0;
+    std::uint32_t region = 0;
+    HLACORE_FIELDS(interaction_class, region)
+};
+struct SendInteractionWithRegion {
+    HLACORE_TYPE(SendInteractionWithRegion)
+    std::uint32_t interaction_class = 0;
+    HandleValues values;
+    std::string tag;
+    OptionalTime time;
+    std::uint64_t serial = 0;
+    std::uint32_t region = 0;
+    HLACORE_FIELDS(interaction_class, values, tag, time, serial, region)
+};
+struct RequestClassUpdateWithRegion {
+    HLACORE_TYPE(RequestClassUpdateWithRegion)
+    std::uint32_t object_class = 0;
+    Handles attributes;
+    std::uint32_t region = 0;
+    HLACORE_FIELDS(object_class, attributes, region)
+};
+
+// Gateway -> federate, while its attribute scope advisory switch is on (HLA 1.3 §6.13-6.14): attributes of
+// a known object that came into scope (subscribed, through a region overlapping the owner's update region
+// if by region, and owned by another federate) or left it.
+struct AttributesInScope {
+    HLACORE_TYPE(AttributesInScope)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct AttributesOutOfScope {
+    HLACORE_TYPE(AttributesOutOfScope)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+
+// Gateway -> federate, while its attribute relevance advisory switch is on: owned attributes that some other
+// federate now has in scope (turnUpdatesOnForObjectInstance), or that nobody has any more.
+struct TurnUpdatesOn {
+    HLACORE_TYPE(TurnUpdatesOn)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct TurnUpdatesOff {
+    HLACORE_TYPE(TurnUpdatesOff)
+    std::uint32_t object = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object, attributes)
 };
 
 // Index in the variant == wire code.

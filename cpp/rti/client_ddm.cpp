@@ -1,0 +1,326 @@
+// The federate side of data distribution management (HLA 1.3 §9): regions are created and numbered here,
+// every service checks HLA 1.3's exceptions against this federate's regions, subscriptions and
+// associations, and the gateway does the routing (federation_ddm.cpp).
+#include <algorithm>
+#include <atomic>
+
+#include "rti/client.hpp"
+
+namespace hlacore {
+
+namespace {
+
+[[noreturn]] void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
+
+std::string region_text(std::uint32_t region) { return "region " + std::to_string(region); }
+
+// Region numbers are unique in the process, not only per federate: a RegionHandle of another ambassador
+// then raises RegionNotKnown instead of naming this federate's region of the same number.
+std::uint32_t next_region_number() {
+    static std::atomic<std::uint32_t> last{0};
+    return ++last;
+}
+
+void check_attributes_defined(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes) {
+    for (auto a : attributes) {
+        if (!cls.attribute(a))
+            raise(ErrorCode::AttributeNotDefined, "attribute handle " + std::to_string(a) +
+                                                      " is not defined for class '" + cls.qualified_name + "'");
+    }
+}
+
+}  // namespace
+
+// ---- checks ----
+
+const Client::LocalRegion& Client::known_region(std::uint32_t region) const {
+    require_joined();
+    auto it = ddm_.regions.find(region);
+    if (it == ddm_.regions.end()) raise(ErrorCode::RegionNotKnown, region_text(region) + " is not known");
+    return it->second;
+}
+
+wire::Handles Client::region_bounds(fom::Handle space, const Extent& extent) const {
+    const auto* s = fom_->space(space);
+    if (!s) raise(ErrorCode::SpaceNotDefined, "routing space handle " + std::to_string(space) + " is not defined");
+    // Dimensions not given span the whole axis.
+    wire::Handles bounds;
+    for (std::size_t d = 0; d < s->dimensions.size(); ++d) {
+        bounds.push_back(static_cast<std::uint32_t>(kMinExtent));
+        bounds.push_back(static_cast<std::uint32_t>(kMaxExtent));
+    }
+    std::set<fom::Handle> given;
+    for (const auto& range : extent) {
+        auto dim = std::find_if(s->dimensions.begin(), s->dimensions.end(),
+                                [&](const fom::Dimension& d) { return d.handle == range.dimension; });
+        if (dim == s->dimensions.end())
+            raise(ErrorCode::DimensionNotDefined, "dimension handle " + std::to_string(range.dimension) +
+                                                      " is not defined in routing space '" + s->name + "'");
+        if (!given.insert(range.dimension).second)
+            raise(ErrorCode::InvalidExtents, "dimension '" + dim->name + "' is given twice");
+        if (range.lower < kMinExtent || range.upper > kMaxExtent || range.lower > range.upper)
+            raise(ErrorCode::InvalidExtents, "range [" + std::to_string(range.lower) + ", " +
+                                                 std::to_string(range.upper) + "] of dimension '" + dim->name +
+                                                 "' is not within [MIN_EXTENT, MAX_EXTENT] with lower <= upper");
+        const auto i = 2 * static_cast<std::size_t>(dim - s->dimensions.begin());
+        bounds[i] = static_cast<std::uint32_t>(range.lower);
+        bounds[i + 1] = static_cast<std::uint32_t>(range.upper);
+    }
+    return bounds;
+}
+
+void Client::check_region_space(const LocalRegion& region, const fom::ObjectClass& cls, fom::Handle attribute) const {
+    const auto* a = cls.attribute(attribute);
+    const auto* s = a && !a->space.empty() ? fom_->find_space(a->space) : nullptr;
+    if (!s || s->handle != region.space)
+        raise(ErrorCode::InvalidRegionContext,
+              "attribute '" + (a ? a->name : std::to_string(attribute)) + "' of class '" + cls.qualified_name +
+                  "' is not in the region's routing space '" + fom_->space(region.space)->name + "'");
+}
+
+// Used by a subscription, or by an update association of an object this federate still knows.
+bool Client::region_in_use(std::uint32_t region) const {
+    for (const auto& [cls, by_region] : ddm_.object_subscriptions)
+        if (by_region.count(region)) return true;
+    for (const auto& [cls, regions] : ddm_.interaction_subscriptions)
+        if (regions.count(region)) return true;
+    for (const auto& [object, associations] : ddm_.update_regions) {
+        if (!objects_.count(object)) continue;
+        for (const auto& [attr, r] : associations)
+            if (r == region) return true;
+    }
+    return false;
+}
+
+// ---- regions (HLA 1.3 §9.2-9.4) ----
+
+std::uint32_t Client::create_region(fom::Handle space, const Extent& extent) {
+    std::uint32_t region;
+    wire::Handles bounds;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+        bounds = region_bounds(space, extent);
+        region = next_region_number();
+        ddm_.regions[region] = LocalRegion{space, bounds};
+    }
+    send(wire::CreateRegion{region, space, std::move(bounds)});
+    return region;
+}
+
+void Client::modify_region(std::uint32_t region, const std::optional<Extent>& extent) {
+    wire::Handles bounds;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const LocalRegion& r = known_region(region);
+        if (extent) {
+            bounds = region_bounds(r.space, *extent);
+            ddm_.regions[region].bounds = bounds;
+        } else {
+            bounds = r.bounds;
+        }
+    }
+    send(wire::ModifyRegion{region, std::move(bounds)});
+}
+
+void Client::delete_region(std::uint32_t region) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        known_region(region);
+        if (region_in_use(region))
+            raise(ErrorCode::RegionInUse, region_text(region) + " is used by a subscription or an update association");
+        ddm_.regions.erase(region);
+        for (auto& [object, associations] : ddm_.update_regions) {
+            for (auto it = associations.begin(); it != associations.end();)
+                it = it->second == region ? associations.erase(it) : std::next(it);
+        }
+    }
+    send(wire::DeleteRegion{region});
+}
+
+std::pair<fom::Handle, Client::Extent> Client::region_extent(std::uint32_t region) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const LocalRegion& r = known_region(region);
+    const auto* s = fom_->space(r.space);
+    Extent extent;
+    for (std::size_t d = 0; d < s->dimensions.size(); ++d)
+        extent.push_back(Range{s->dimensions[d].handle, r.bounds[2 * d], r.bounds[2 * d + 1]});
+    return {r.space, extent};
+}
+
+// ---- update regions (HLA 1.3 §9.5-9.7) ----
+
+std::uint32_t Client::register_object_with_region(fom::Handle cls,
+                                                  const std::vector<std::pair<fom::Handle, std::uint32_t>>& regions,
+                                                  const std::string& name) {
+    std::set<fom::Handle> owned;
+    wire::Handles attributes, region_handles;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_object_class(cls);
+        auto published = published_.find(cls);
+        if (published == published_.end())
+            raise(ErrorCode::ObjectClassNotPublished, "object class '" + c.qualified_name + "' is not published");
+        for (const auto& [attr, region] : regions) {
+            check_attributes_defined(c, {attr});
+            if (!published->second.count(attr))
+                raise(ErrorCode::AttributeNotPublished,
+                      "attribute '" + c.attribute(attr)->name + "' of class '" + c.qualified_name + "' is not published");
+            check_region_space(known_region(region), c, attr);
+            attributes.push_back(attr);
+            region_handles.push_back(region);
+        }
+        owned = published->second;
+    }
+    const auto id = next_request();
+    wire::Reply reply = call(wire::RegisterObjectWithRegion{id, cls, name, attributes, region_handles}, id);
+    std::lock_guard<std::mutex> lock(mu_);
+    LocalObject obj = make_local_object(cls, reply.text);
+    obj.owned = std::move(owned);
+    if (obj.privilege_attribute) obj.owned.insert(obj.privilege_attribute);
+    obj.privilege_to_delete = true;
+    objects_[reply.handle] = std::move(obj);
+    for (std::size_t i = 0; i < attributes.size(); ++i) ddm_.update_regions[reply.handle][attributes[i]] = region_handles[i];
+    return reply.handle;
+}
+
+void Client::associate_region(std::uint32_t region, std::uint32_t object, const std::vector<fom::Handle>& attributes) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const LocalObject& obj = known_object(object);
+        const auto& cls = *fom_->object_class(obj.object_class);
+        check_attributes_defined(cls, attributes);
+        const LocalRegion& r = known_region(region);
+        for (auto attr : attributes) check_region_space(r, cls, attr);
+        for (auto attr : attributes) ddm_.update_regions[object][attr] = region;
+    }
+    send(wire::AssociateRegion{region, object, attributes});
+}
+
+void Client::unassociate_region(std::uint32_t region, std::uint32_t object) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const LocalObject& obj = known_object(object);
+        known_region(region);
+        auto associations = ddm_.update_regions.find(object);
+        bool associated = false;
+        if (associations != ddm_.update_regions.end()) {
+            for (auto it = associations->second.begin(); it != associations->second.end();) {
+                associated = associated || it->second == region;
+                it = it->second == region ? associations->second.erase(it) : std::next(it);
+            }
+            if (associations->second.empty()) ddm_.update_regions.erase(associations);
+        }
+        if (!associated)
+            raise(ErrorCode::InvalidRegionContext,
+                  region_text(region) + " is not associated with attributes of object '" + obj.name + "'");
+    }
+    send(wire::UnassociateRegion{region, object});
+}
+
+// ---- subscriptions through regions (HLA 1.3 §9.8-9.11) ----
+
+void Client::subscribe_object_class_with_region(fom::Handle cls, std::uint32_t region,
+                                                const std::vector<fom::Handle>& attributes, bool active) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_object_class(cls);
+        check_attributes_defined(c, attributes);
+        const LocalRegion& r = known_region(region);
+        for (auto attr : attributes) check_region_space(r, c, attr);
+        auto& by_region = ddm_.object_subscriptions[cls];
+        if (attributes.empty()) {
+            by_region.erase(region);
+            if (by_region.empty()) ddm_.object_subscriptions.erase(cls);
+        } else {
+            by_region[region] = std::set<fom::Handle>(attributes.begin(), attributes.end());
+        }
+    }
+    send(wire::SubscribeObjectClassWithRegion{cls, region, attributes, active});
+}
+
+void Client::unsubscribe_object_class_with_region(fom::Handle cls, std::uint32_t region) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_object_class(cls);
+        known_region(region);
+        auto by_class = ddm_.object_subscriptions.find(cls);
+        if (by_class == ddm_.object_subscriptions.end() || !by_class->second.erase(region))
+            raise(ErrorCode::ObjectClassNotSubscribed,
+                  "object class '" + c.qualified_name + "' is not subscribed with " + region_text(region));
+        if (by_class->second.empty()) ddm_.object_subscriptions.erase(by_class);
+    }
+    send(wire::UnsubscribeObjectClassWithRegion{cls, region});
+}
+
+void Client::subscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region, bool active) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_interaction_class(cls);
+        const LocalRegion& r = known_region(region);
+        const auto* s = c.space.empty() ? nullptr : fom_->find_space(c.space);
+        if (!s || s->handle != r.space)
+            raise(ErrorCode::InvalidRegionContext, "interaction class '" + c.qualified_name +
+                                                       "' is not in the region's routing space '" +
+                                                       fom_->space(r.space)->name + "'");
+        ddm_.interaction_subscriptions[cls].insert(region);
+    }
+    send(wire::SubscribeInteractionClassWithRegion{cls, region, active});
+}
+
+void Client::unsubscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_interaction_class(cls);
+        known_region(region);
+        auto by_class = ddm_.interaction_subscriptions.find(cls);
+        if (by_class == ddm_.interaction_subscriptions.end() || !by_class->second.erase(region))
+            raise(ErrorCode::InteractionClassNotSubscribed,
+                  "interaction class '" + c.qualified_name + "' is not subscribed with " + region_text(region));
+        if (by_class->second.empty()) ddm_.interaction_subscriptions.erase(by_class);
+    }
+    send(wire::UnsubscribeInteractionClassWithRegion{cls, region});
+}
+
+// ---- sending and requesting through regions (HLA 1.3 §9.12-9.13) ----
+
+std::uint64_t Client::send_interaction_with_region(fom::Handle cls, wire::HandleValues values, std::uint32_t region,
+                                                   const std::string& tag, wire::OptionalTime time) {
+    std::uint64_t serial;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_interaction_class(cls);
+        if (!published_interactions_.count(cls))
+            raise(ErrorCode::InteractionClassNotPublished,
+                  "interaction class '" + c.qualified_name + "' is not published");
+        for (const auto& [param, value] : values) {
+            if (!c.parameter(param))
+                raise(ErrorCode::InteractionParameterNotDefined, "parameter handle " + std::to_string(param) +
+                                                                     " is not defined for interaction '" +
+                                                                     c.qualified_name + "'");
+        }
+        const LocalRegion& r = known_region(region);
+        const auto* s = c.space.empty() ? nullptr : fom_->find_space(c.space);
+        if (!s || s->handle != r.space)
+            raise(ErrorCode::InvalidRegionContext, "interaction class '" + c.qualified_name +
+                                                       "' is not in the region's routing space '" +
+                                                       fom_->space(r.space)->name + "'");
+        check_send_time(time);
+        serial = ++serial_;
+        note_sent(serial, time);
+    }
+    send(wire::SendInteractionWithRegion{cls, std::move(values), tag, time, serial, region});
+    return serial;
+}
+
+void Client::request_class_update_with_region(fom::Handle cls, const std::vector<fom::Handle>& attributes,
+                                              std::uint32_t region) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        check_attributes_defined(defined_object_class(cls), attributes);
+        known_region(region);
+    }
+    send(wire::RequestClassUpdateWithRegion{cls, attributes, region});
+}
+
+}  // namespace hlacore

@@ -1,0 +1,381 @@
+// Data distribution management (HLA 1.3 §9), the gateway side: regions, subscriptions and update
+// associations through regions, and the overlap test that decides who receives what. The filtering is
+// done here, so an update or interaction whose region misses a subscriber's never leaves the gateway.
+//
+// Contract (docs/ddm.md): ranges are closed ([lower, upper] with lower <= upper); two regions overlap when
+// some extent of one and some extent of the other overlap in every dimension; the default region (a plain
+// subscription, an unassociated attribute, an interaction sent without region) is the whole space and
+// overlaps every region.
+#include "rti/federation.hpp"
+
+namespace hlacore {
+
+using wire::WireError;
+
+bool Federation::overlap(const Region& a, const Region& b) {
+    for (const auto& ea : a.extents) {
+        for (const auto& eb : b.extents) {
+            bool all = ea.size() == eb.size();
+            for (std::size_t d = 0; all && d < ea.size(); ++d)
+                all = ea[d].first <= eb[d].second && eb[d].first <= ea[d].second;
+            if (all) return true;
+        }
+    }
+    return false;
+}
+
+Federation::Region Federation::make_region(fom::Handle space, const wire::Handles& bounds) const {
+    const auto* s = fom_.space(space);
+    if (!s) throw WireError("routing space handle " + std::to_string(space) + " is not defined in the FOM");
+    const std::size_t per_extent = 2 * s->dimensions.size();
+    Region region;
+    region.space = space;
+    if (per_extent == 0) {
+        // A space without dimensions: its one extent covers the whole (empty) space.
+        if (!bounds.empty()) throw WireError("routing space '" + s->name + "' has no dimensions");
+        region.extents.emplace_back();
+        return region;
+    }
+    if (bounds.empty() || bounds.size() % per_extent != 0)
+        throw WireError("region bounds do not match the dimensions of routing space '" + s->name + "'");
+    for (std::size_t i = 0; i < bounds.size(); i += per_extent) {
+        std::vector<Range> extent;
+        for (std::size_t d = 0; d < per_extent; d += 2) {
+            if (bounds[i + d] > bounds[i + d + 1]) throw WireError("region range with lower bound above upper bound");
+            extent.emplace_back(bounds[i + d], bounds[i + d + 1]);
+        }
+        region.extents.push_back(std::move(extent));
+    }
+    return region;
+}
+
+const Federation::Region& Federation::region_of(const FederateState& f, RegionHandle r) const {
+    auto it = f.ddm.regions.find(r);
+    if (it == f.ddm.regions.end()) throw WireError("region " + std::to_string(r) + " is not known");
+    return it->second;
+}
+
+const Federation::Region* Federation::update_region(FederateHandle owner, ObjectHandle object,
+                                                    fom::Handle attribute) const {
+    auto f = federates_.find(owner);
+    if (f == federates_.end()) return nullptr;
+    const auto& ddm = f->second.ddm;
+    auto obj = ddm.update_regions.find(object);
+    if (obj == ddm.update_regions.end()) return nullptr;
+    auto attr = obj->second.find(attribute);
+    if (attr == obj->second.end()) return nullptr;
+    auto region = ddm.regions.find(attr->second);
+    return region == ddm.regions.end() ? nullptr : &region->second;
+}
+
+bool Federation::region_wanted(const FederateState& g, fom::Handle known, FederateHandle owner, ObjectHandle object,
+                               fom::Handle attribute) const {
+    auto by_class = g.ddm.object_subscriptions.find(known);
+    if (by_class == g.ddm.object_subscriptions.end()) return false;
+    const Region* updated_in = update_region(owner, object, attribute);
+    for (const auto& [r, attributes] : by_class->second) {
+        if (!attributes.count(attribute)) continue;
+        if (!updated_in) return true;  // the default region overlaps every region
+        auto region = g.ddm.regions.find(r);
+        if (region != g.ddm.regions.end() && overlap(region->second, *updated_in)) return true;
+    }
+    return false;
+}
+
+bool Federation::discovers(FederateHandle gh, const FederateState& g, ObjectHandle object,
+                           const ObjectInstance& obj) const {
+    const fom::Handle known = known_class(g, obj.object_class);
+    if (known == 0) return false;
+    if (g.subscribed.count(known)) return true;
+    for (const auto& [attr, owner] : obj.owners) {
+        if (owner != gh && region_wanted(g, known, owner, object, attr)) return true;
+    }
+    return false;
+}
+
+fom::Handle Federation::interaction_receiver(const FederateState& g, fom::Handle cls, const Region* region) const {
+    // Received as the nearest class through which it is in scope.
+    for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent) {
+        if (g.subscribed_interactions.count(c)) return c;
+        auto by_class = g.ddm.interaction_subscriptions.find(c);
+        if (by_class == g.ddm.interaction_subscriptions.end()) continue;
+        if (!region) return c;
+        for (RegionHandle r : by_class->second) {
+            auto subscribed = g.ddm.regions.find(r);
+            if (subscribed != g.ddm.regions.end() && overlap(subscribed->second, *region)) return c;
+        }
+    }
+    return 0;
+}
+
+void Federation::discover_in_scope() {
+    for (auto& [h, f] : federates_) discover_all_for(h);
+}
+
+std::set<fom::Handle> Federation::scope_of(FederateHandle gh, const FederateState& g, ObjectHandle object,
+                                           const ObjectInstance& obj) const {
+    std::set<fom::Handle> scope;
+    const fom::Handle known = known_class(g, obj.object_class);
+    if (known == 0) return scope;
+    auto plain = g.subscribed.find(known);
+    for (const auto& [attr, owner] : obj.owners) {
+        if (owner == gh) continue;
+        if ((plain != g.subscribed.end() && plain->second.count(attr)) || region_wanted(g, known, owner, object, attr))
+            scope.insert(attr);
+    }
+    return scope;
+}
+
+namespace {
+
+// Sends `M` (AttributesInScope/OutOfScope, TurnUpdatesOn/Off) for each object's attributes in `from`
+// missing from `to`, where keep(object, attribute) still allows a notice.
+template <class M, class Keep>
+void send_difference(Outbox& outbox, FederateHandle federate,
+                     const std::map<std::uint32_t, std::set<fom::Handle>>& from,
+                     const std::map<std::uint32_t, std::set<fom::Handle>>& to, Keep keep) {
+    for (const auto& [object, attrs] : from) {
+        auto other = to.find(object);
+        M notice;
+        notice.object = object;
+        for (auto attr : attrs)
+            if ((other == to.end() || !other->second.count(attr)) && keep(object, attr)) notice.attributes.push_back(attr);
+        if (!notice.attributes.empty()) outbox.send(federate, notice);
+    }
+}
+
+}  // namespace
+
+// Scope (and so relevance) changes with subscriptions, regions, associations, ownership, discovery and
+// deletion; recomputing it for the federates that asked is simpler than following each of those, and
+// costs nothing when no federate has either switch on.
+void Federation::refresh_scope() {
+    bool relevance_wanted = false;
+    for (auto& [h, f] : federates_) {
+        if (!f.attribute_scope) f.ddm.in_scope.clear();
+        if (!f.attribute_relevance) f.ddm.relevant.clear();
+        relevance_wanted = relevance_wanted || f.attribute_relevance;
+    }
+    using Scopes = std::map<ObjectHandle, std::set<fom::Handle>>;
+    std::map<FederateHandle, Scopes> relevant;  // owner -> what some other federate has in scope
+    for (auto& [gh, g] : federates_) {
+        if (!g.attribute_scope && !relevance_wanted) continue;
+        Scopes now;
+        for (ObjectHandle oh : g.known) {
+            auto obj = objects_.find(oh);
+            if (obj == objects_.end()) continue;
+            auto scope = scope_of(gh, g, oh, obj->second);
+            for (auto attr : scope) relevant[obj->second.owners.at(attr)][oh].insert(attr);
+            if (!scope.empty()) now[oh] = std::move(scope);
+        }
+        if (!g.attribute_scope) continue;
+        // No out-of-scope notice for an object removed or forgotten meanwhile.
+        send_difference<wire::AttributesOutOfScope>(outbox_, gh, g.ddm.in_scope, now,
+                                                    [&](ObjectHandle oh, fom::Handle) { return g.known.count(oh) > 0; });
+        send_difference<wire::AttributesInScope>(outbox_, gh, now, g.ddm.in_scope,
+                                                 [](ObjectHandle, fom::Handle) { return true; });
+        g.ddm.in_scope = std::move(now);
+    }
+    if (!relevance_wanted) return;
+    for (auto& [ph, p] : federates_) {
+        if (!p.attribute_relevance) continue;
+        Scopes& now = relevant[ph];
+        // turnUpdatesOff only for attributes the federate still owns.
+        auto owned = [&](ObjectHandle oh, fom::Handle attr) {
+            auto obj = objects_.find(oh);
+            if (obj == objects_.end()) return false;
+            auto owner = obj->second.owners.find(attr);
+            return owner != obj->second.owners.end() && owner->second == ph;
+        };
+        send_difference<wire::TurnUpdatesOff>(outbox_, ph, p.ddm.relevant, now, owned);
+        send_difference<wire::TurnUpdatesOn>(outbox_, ph, now, p.ddm.relevant,
+                                             [](ObjectHandle, fom::Handle) { return true; });
+        p.ddm.relevant = std::move(now);
+    }
+}
+
+void Federation::forget_update_regions(ObjectHandle object) {
+    for (auto& [h, f] : federates_) f.ddm.update_regions.erase(object);
+}
+
+std::pair<ObjectHandle, std::string> Federation::register_object_with_region(FederateHandle h,
+                                                                             const wire::RegisterObjectWithRegion& m) {
+    auto& f = federate(h);
+    const auto& cls = object_class(m.object_class);
+    if (m.attributes.size() != m.regions.size()) throw WireError("as many regions as attributes are required");
+    check_attributes(cls, m.attributes);
+    std::map<fom::Handle, RegionHandle> associations;
+    for (std::size_t i = 0; i < m.attributes.size(); ++i) {
+        const Region& region = region_of(f, m.regions[i]);
+        const auto* space = fom_.find_space(cls.attribute(m.attributes[i])->space);
+        if (!space || space->handle != region.space)
+            throw WireError("region " + std::to_string(m.regions[i]) + " is not in the routing space of attribute " +
+                            std::to_string(m.attributes[i]));
+        associations[m.attributes[i]] = m.regions[i];
+    }
+    // register_object discovers the instance at once: the associations must be there under the handle it
+    // is about to give (handles are never reused), and go if the registration is refused.
+    const ObjectHandle next = next_object_;
+    if (!associations.empty()) f.ddm.update_regions[next] = std::move(associations);
+    try {
+        return register_object(h, m.object_class, m.name);
+    } catch (...) {
+        f.ddm.update_regions.erase(next);
+        throw;
+    }
+}
+
+void Federation::on(FederateHandle from, const wire::CreateRegion& m) {
+    auto& f = federate(from);
+    if (m.region == 0 || f.ddm.regions.count(m.region))
+        throw WireError("region handle " + std::to_string(m.region) + " is 0 or already in use");
+    f.ddm.regions[m.region] = make_region(m.space, m.bounds);
+}
+
+// §9.3: from now on, routing uses the new extents; instances that come into scope are discovered.
+void Federation::on(FederateHandle from, const wire::ModifyRegion& m) {
+    auto& f = federate(from);
+    const fom::Handle space = region_of(f, m.region).space;
+    f.ddm.regions[m.region] = make_region(space, m.bounds);
+    discover_in_scope();
+}
+
+// §9.4: the client refuses a region in use (RegionInUse); here whatever still refers to it goes with it.
+void Federation::on(FederateHandle from, const wire::DeleteRegion& m) {
+    auto& f = federate(from);
+    region_of(f, m.region);
+    f.ddm.regions.erase(m.region);
+    for (auto it = f.ddm.object_subscriptions.begin(); it != f.ddm.object_subscriptions.end();) {
+        it->second.erase(m.region);
+        it = it->second.empty() ? f.ddm.object_subscriptions.erase(it) : std::next(it);
+    }
+    for (auto it = f.ddm.interaction_subscriptions.begin(); it != f.ddm.interaction_subscriptions.end();) {
+        it->second.erase(m.region);
+        it = it->second.empty() ? f.ddm.interaction_subscriptions.erase(it) : std::next(it);
+    }
+    for (auto& [object, attributes] : f.ddm.update_regions) {
+        for (auto it = attributes.begin(); it != attributes.end();)
+            it = it->second == m.region ? attributes.erase(it) : std::next(it);
+    }
+    update_advisories();
+}
+
+// §9.6: an attribute has one update region per federate; associating replaces the previous one.
+void Federation::on(FederateHandle from, const wire::AssociateRegion& m) {
+    auto& f = federate(from);
+    const Region& region = region_of(f, m.region);
+    auto obj = objects_.find(m.object);
+    if (obj == objects_.end()) return;  // deleted meanwhile
+    const auto& cls = object_class(obj->second.object_class);
+    check_attributes(cls, m.attributes);
+    for (auto attr : m.attributes) {
+        const auto* space = fom_.find_space(cls.attribute(attr)->space);
+        if (!space || space->handle != region.space)
+            throw WireError("region " + std::to_string(m.region) + " is not in the routing space of attribute " +
+                            std::to_string(attr));
+    }
+    auto& associations = f.ddm.update_regions[m.object];
+    for (auto attr : m.attributes) associations[attr] = m.region;
+    discover_in_scope();
+}
+
+// §9.7: the object's attributes associated with this region go back to the default region.
+void Federation::on(FederateHandle from, const wire::UnassociateRegion& m) {
+    auto& f = federate(from);
+    region_of(f, m.region);
+    auto obj = f.ddm.update_regions.find(m.object);
+    if (obj == f.ddm.update_regions.end()) return;
+    for (auto it = obj->second.begin(); it != obj->second.end();)
+        it = it->second == m.region ? obj->second.erase(it) : std::next(it);
+    if (obj->second.empty()) f.ddm.update_regions.erase(obj);
+    discover_in_scope();
+}
+
+// §9.8: the attribute set replaces the previous one for this class and region; an empty one unsubscribes.
+void Federation::on(FederateHandle from, const wire::SubscribeObjectClassWithRegion& m) {
+    auto& f = federate(from);
+    const Region& region = region_of(f, m.region);
+    const auto& cls = object_class(m.object_class);
+    check_attributes(cls, m.attributes);
+    for (auto attr : m.attributes) {
+        const auto* space = fom_.find_space(cls.attribute(attr)->space);
+        if (!space || space->handle != region.space)
+            throw WireError("region " + std::to_string(m.region) + " is not in the routing space of attribute " +
+                            std::to_string(attr));
+    }
+    auto& by_region = f.ddm.object_subscriptions[m.object_class];
+    if (m.attributes.empty()) {
+        by_region.erase(m.region);
+        if (by_region.empty()) f.ddm.object_subscriptions.erase(m.object_class);
+    } else {
+        by_region[m.region] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
+        discover_all_for(from);
+    }
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnsubscribeObjectClassWithRegion& m) {
+    auto& f = federate(from);
+    region_of(f, m.region);
+    object_class(m.object_class);
+    auto by_class = f.ddm.object_subscriptions.find(m.object_class);
+    if (by_class == f.ddm.object_subscriptions.end()) return;
+    by_class->second.erase(m.region);
+    if (by_class->second.empty()) f.ddm.object_subscriptions.erase(by_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::SubscribeInteractionClassWithRegion& m) {
+    auto& f = federate(from);
+    const Region& region = region_of(f, m.region);
+    const auto& cls = interaction_class(m.interaction_class);
+    const auto* space = fom_.find_space(cls.space);
+    if (!space || space->handle != region.space)
+        throw WireError("region " + std::to_string(m.region) + " is not in the routing space of interaction '" +
+                        cls.qualified_name + "'");
+    f.ddm.interaction_subscriptions[m.interaction_class].insert(m.region);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClassWithRegion& m) {
+    auto& f = federate(from);
+    region_of(f, m.region);
+    interaction_class(m.interaction_class);
+    auto by_class = f.ddm.interaction_subscriptions.find(m.interaction_class);
+    if (by_class == f.ddm.interaction_subscriptions.end()) return;
+    by_class->second.erase(m.region);
+    if (by_class->second.empty()) f.ddm.interaction_subscriptions.erase(by_class);
+    update_advisories();
+}
+
+// §9.12: reaches the plain subscribers and those whose subscription region overlaps `region`.
+void Federation::on(FederateHandle from, const wire::SendInteractionWithRegion& m) {
+    auto& f = federate(from);
+    const Region& region = region_of(f, m.region);
+    const auto& cls = interaction_class(m.interaction_class);
+    const auto* space = fom_.find_space(cls.space);
+    if (!space || space->handle != region.space)
+        throw WireError("region " + std::to_string(m.region) + " is not in the routing space of interaction '" +
+                        cls.qualified_name + "'");
+    route_interaction(from, wire::SendInteraction{m.interaction_class, m.values, m.tag, m.time, m.serial}, &region);
+}
+
+// §9.13: the owners of attributes whose update region overlaps `region` are asked to provide them.
+void Federation::on(FederateHandle from, const wire::RequestClassUpdateWithRegion& m) {
+    auto& f = federate(from);
+    const Region& region = region_of(f, m.region);
+    check_attributes(object_class(m.object_class), m.attributes);
+    for (const auto& [oh, obj] : objects_) {
+        if (!fom_.is_object_subclass(obj.object_class, m.object_class)) continue;
+        std::map<FederateHandle, wire::Handles> by_owner;
+        for (auto attr : m.attributes) {
+            auto owner = obj.owners.find(attr);
+            if (owner == obj.owners.end() || owner->second == from) continue;
+            const Region* updated_in = update_region(owner->second, oh, attr);
+            if (!updated_in || overlap(region, *updated_in)) by_owner[owner->second].push_back(attr);
+        }
+        for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{oh, attrs});
+    }
+}
+
+}  // namespace hlacore

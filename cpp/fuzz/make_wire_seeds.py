@@ -60,7 +60,7 @@ MESSAGES = {
     "RequestClassUpdate": u32(1) + hs([1, 2]),
     "SetAdvisorySwitch": u8(1) + b(True),
     "Reply": u32(3) + u16(0) + s("") + u32(2) + s(FED) + s("robot.fed") + f64(0.0),
-    "Reply-error": u32(3) + u16(12) + s("FederationExecutionDoesNotExist") + u32(0) + s("") + s("") + f64(0.0),
+    "Reply-error": u32(3) + u16(34) + s("FederationExecutionDoesNotExist") + u32(0) + s("") + s("") + f64(0.0),
     "SyncPointRegistrationSucceeded": s("start"),
     "SyncPointRegistrationFailed": s("start"),
     "AnnounceSyncPoint": s("start") + s("tag"),

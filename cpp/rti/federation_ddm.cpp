@@ -170,8 +170,9 @@ void Federation::refresh_scope() {
         }
         if (!g.attribute_scope) continue;
         // No out-of-scope notice for an object removed or forgotten meanwhile.
+        const auto& known = g.known;  // C++17 lambdas cannot capture structured bindings (clang refuses)
         send_difference<wire::AttributesOutOfScope>(outbox_, gh, g.ddm.in_scope, now,
-                                                    [&](ObjectHandle oh, fom::Handle) { return g.known.count(oh) > 0; });
+                                                    [&](ObjectHandle oh, fom::Handle) { return known.count(oh) > 0; });
         send_difference<wire::AttributesInScope>(outbox_, gh, now, g.ddm.in_scope,
                                                  [](ObjectHandle, fom::Handle) { return true; });
         g.ddm.in_scope = std::move(now);
@@ -181,11 +182,12 @@ void Federation::refresh_scope() {
         if (!p.attribute_relevance) continue;
         Scopes& now = relevant[ph];
         // turnUpdatesOff only for attributes the federate still owns.
+        const FederateHandle owner_handle = ph;
         auto owned = [&](ObjectHandle oh, fom::Handle attr) {
             auto obj = objects_.find(oh);
             if (obj == objects_.end()) return false;
             auto owner = obj->second.owners.find(attr);
-            return owner != obj->second.owners.end() && owner->second == ph;
+            return owner != obj->second.owners.end() && owner->second == owner_handle;
         };
         send_difference<wire::TurnUpdatesOff>(outbox_, ph, p.ddm.relevant, now, owned);
         send_difference<wire::TurnUpdatesOn>(outbox_, ph, now, p.ddm.relevant,

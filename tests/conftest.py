@@ -4,16 +4,18 @@ condition holds. Everything started here is stopped here, by pid."""
 from __future__ import annotations
 
 import contextlib
-import select
 import json
 import os
 import pathlib
+import queue
 import re
 import shutil
 import signal
 import subprocess
 import sys
+import threading
 import time
+import weakref
 from typing import Any, Callable, Iterator, Optional
 
 import pytest
@@ -256,11 +258,36 @@ def federation(gateway_address: str) -> Iterator[Callable[[str], Federate]]:
     creator.destroyFederationExecution("TestFed")
 
 
+_peer_lines: "weakref.WeakKeyDictionary[subprocess.Popen[str], queue.Queue[str]]" = weakref.WeakKeyDictionary()
+
+
+def _lines_of(proc: subprocess.Popen[str]) -> "queue.Queue[str]":
+    """The peer's stdout lines, read by a thread of their own: select() on the pipe would miss a second
+    line already in the file object's buffer."""
+    if proc not in _peer_lines:
+        lines: "queue.Queue[str]" = queue.Queue()
+        assert proc.stdout is not None
+        stdout = proc.stdout
+
+        def pump() -> None:
+            try:
+                for line in stdout:
+                    lines.put(line)
+            except (OSError, ValueError):  # the test closed the pipe
+                pass
+            lines.put("")  # end of output
+
+        threading.Thread(target=pump, name=f"peer-{proc.pid}", daemon=True).start()
+        _peer_lines[proc] = lines
+    return _peer_lines[proc]
+
+
 def read_json(proc: subprocess.Popen[str], timeout: float = 30.0) -> dict[str, Any]:
     """The next JSON line a peer prints; fails (killing the peer) if none comes within timeout seconds."""
-    assert proc.stdout is not None
-    ready, _, _ = select.select([proc.stdout], [], [], timeout)
-    line = proc.stdout.readline() if ready else ""
+    try:
+        line = _lines_of(proc).get(timeout=timeout)
+    except queue.Empty:
+        line = ""
     if not line:
         proc.kill()
         proc.wait()

@@ -152,7 +152,7 @@ class _ClassIndex:
     by_leaf: dict[str, Any]
 
     @staticmethod
-    def of(classes: Sequence[ObjectClass] | Sequence[InteractionClass]) -> _ClassIndex:
+    def of(classes: Sequence[ObjectClass | InteractionClass]) -> _ClassIndex:
         # Built from the end so that the first declared class wins a shared leaf name.
         return _ClassIndex(
             {c.handle: c for c in classes},

@@ -85,7 +85,9 @@ class _Ambassador(rti.FederateAmbassador):
         name = self.names.get(obj)
         data = attributes.get(self.ranges_handle)
         if name is not None and data is not None:
-            self.ranges[name] = [float(r) for r in codec.unpack(codec.RANGES, data)]  # type: ignore[union-attr]
+            ranges = codec.unpack(codec.RANGES, data)
+            assert isinstance(ranges, (list, tuple)), ranges
+            self.ranges[name] = [float(r) for r in ranges]
 
 
 class MirroredRobotFederate:

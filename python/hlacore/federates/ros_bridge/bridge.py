@@ -203,9 +203,11 @@ def world_mappings(spec: WorldSpec, robots: Optional[Sequence[str]] = None) -> l
     for r in spec.robots:
         if robots is not None and r.name not in robots:
             continue
-        s = r.sensors[0] if r.sensors else None
-        kwargs = {} if s is None else {"fov": s.fov, "range_min": s.range_min, "range_max": s.range_max}
-        out.extend(stage_mappings(r.name, **kwargs))
+        if r.sensors:
+            s = r.sensors[0]
+            out.extend(stage_mappings(r.name, fov=s.fov, range_min=s.range_min, range_max=s.range_max))
+        else:
+            out.extend(stage_mappings(r.name))
     return out
 
 
@@ -699,6 +701,7 @@ class RosBridge:
             msg.range_min, msg.range_max = m.range_min, m.range_max
             msg.ranges = [float(r) for r in ranges]
             return msg
+        assert isinstance(m, RangeOut), m
         msg = Range()
         msg.header.stamp = when
         msg.header.frame_id = m.frame_id

@@ -16,9 +16,16 @@ std::string region_text(std::uint32_t region) { return "region " + std::to_strin
 
 // Region numbers are unique in the process, not only per federate: a RegionHandle of another ambassador
 // then raises RegionNotKnown instead of naming this federate's region of the same number.
-std::uint32_t next_region_number() {
-    static std::atomic<std::uint32_t> last{0};
-    return ++last;
+std::atomic<std::uint32_t> last_region_number{0};
+
+std::uint32_t next_region_number() { return ++last_region_number; }
+
+// A restored federate keeps its saved region numbers; new regions are numbered above them (and above
+// any the federate had before the save) even in a process that never created them.
+void reserve_region_numbers(std::uint32_t up_to) {
+    std::uint32_t last = last_region_number.load();
+    while (last < up_to && !last_region_number.compare_exchange_weak(last, up_to)) {
+    }
 }
 
 void check_attributes_defined(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes) {
@@ -90,6 +97,18 @@ bool Client::region_in_use(std::uint32_t region) const {
             if (r == region) return true;
     }
     return false;
+}
+
+// ---- restore (HLA 1.3 §4.20; client_save.cpp) ----
+
+void Client::restore_regions(const wire::InitiateFederateRestore& m) {
+    ddm_ = DdmState{};
+    for (const auto& [region, saved] : m.regions) ddm_.regions[region] = LocalRegion{saved.first, saved.second};
+    for (const auto& [key, attrs] : m.region_subscriptions)
+        ddm_.object_subscriptions[key.first][key.second] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+    for (const auto& [ic, region] : m.region_interaction_subscriptions) ddm_.interaction_subscriptions[ic].insert(region);
+    for (const auto& [object, association] : m.update_regions) ddm_.update_regions[object][association.first] = association.second;
+    reserve_region_numbers(m.last_region);
 }
 
 // ---- regions (HLA 1.3 §9.2-9.4) ----

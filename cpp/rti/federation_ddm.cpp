@@ -8,6 +8,8 @@
 // overlaps every region.
 #include "rti/federation.hpp"
 
+#include <algorithm>
+
 namespace hlacore {
 
 using wire::WireError;
@@ -171,7 +173,7 @@ void Federation::refresh_scope() {
         if (!g.attribute_scope) continue;
         // No out-of-scope notice for an object removed or forgotten meanwhile.
         send_difference<wire::AttributesOutOfScope>(outbox_, gh, g.ddm.in_scope, now,
-                                                    [&](ObjectHandle oh, fom::Handle) { return g.known.count(oh) > 0; });
+                                                    [&known = g.known](ObjectHandle oh, fom::Handle) { return known.count(oh) > 0; });
         send_difference<wire::AttributesInScope>(outbox_, gh, now, g.ddm.in_scope,
                                                  [](ObjectHandle, fom::Handle) { return true; });
         g.ddm.in_scope = std::move(now);
@@ -181,7 +183,8 @@ void Federation::refresh_scope() {
         if (!p.attribute_relevance) continue;
         Scopes& now = relevant[ph];
         // turnUpdatesOff only for attributes the federate still owns.
-        auto owned = [&](ObjectHandle oh, fom::Handle attr) {
+        // (ph is copied: clang does not let a C++17 lambda capture a structured binding.)
+        auto owned = [&, ph = ph](ObjectHandle oh, fom::Handle attr) {
             auto obj = objects_.find(oh);
             if (obj == objects_.end()) return false;
             auto owner = obj->second.owners.find(attr);
@@ -230,6 +233,7 @@ void Federation::on(FederateHandle from, const wire::CreateRegion& m) {
     if (m.region == 0 || f.ddm.regions.count(m.region))
         throw WireError("region handle " + std::to_string(m.region) + " is 0 or already in use");
     f.ddm.regions[m.region] = make_region(m.space, m.bounds);
+    f.ddm.last_region = std::max(f.ddm.last_region, m.region);
 }
 
 // §9.3: from now on, routing uses the new extents; instances that come into scope are discovered.

@@ -14,7 +14,7 @@ import pytest
 
 import hlacore.rti as rti
 
-from conftest import barrier, python_subprocess, running_rtig, tick_until
+from conftest import barrier, python_subprocess, running_rtig, settle, tick_until
 from test_ddm import DDM_FED, Fom, fom_of
 from test_save_restore import SaveRecorder, close_pipes, peer_says
 
@@ -288,3 +288,105 @@ def test_regions_come_back_after_rtig_restarts_on_its_save_dir(tmp_path: pathlib
             peer.kill()
             peer.wait()
             close_pipes(peer)
+
+
+def advisories(fed: Fed) -> list[tuple[str, set]]:
+    names = ("attributesInScope", "attributesOutOfScope", "turnUpdatesOnForObjectInstance",
+             "turnUpdatesOffForObjectInstance")
+    return [(name, set(args[1])) for name, args in fed.amb.calls if name in names]
+
+
+def test_scope_and_relevance_already_announced_are_part_of_the_save(gateway_address: str) -> None:
+    """s1 (scope switch on) was told v1's position is in scope and p (relevance switch on) to turn its
+    updates on when the save was made; after the changes and the restore neither hears it again, and the
+    next change is announced relative to the save."""
+    creator = rti.RTIAmbassador(gateway_address)
+    creator.createFederationExecution("DdmFed", DDM_FED)
+    feds = [Fed(gateway_address, name) for name in ("p", "s1", "s2")]
+    p, s1, s2 = feds
+    try:
+        p.rtia.enableAttributeRelevanceAdvisorySwitch()
+        s1.rtia.enableAttributeScopeAdvisorySwitch()
+        barrier(p.rtia)
+        barrier(s1.rtia)
+        world = World(p, s1, s2)
+        h = p.h
+        tick_all(lambda: bool(advisories(s1) and advisories(p)), feds)
+        assert advisories(s1) == [("attributesInScope", {h.position})]
+        assert advisories(p) == [("turnUpdatesOnForObjectInstance", {h.position})]
+        save("snap", feds)
+        for f in feds:
+            f.forget()
+        p.rtia.notifyAboutRegionModification(world.u, [(h.x, (500, 500))])  # out of r1 and r2
+        tick_all(lambda: bool(advisories(s1) and advisories(p)), feds)
+        assert advisories(s1) == [("attributesOutOfScope", {h.position})]
+        assert advisories(p) == [("turnUpdatesOffForObjectInstance", {h.position})]
+        for f in feds:
+            f.forget()
+        restore("snap", feds)
+        for f in feds:
+            barrier(f.rtia)
+        settle(*(f.rtia for f in feds))
+        assert advisories(s1) == [] and advisories(p) == []
+        p.rtia.notifyAboutRegionModification(world.u, [(h.x, (500, 500))])
+        tick_all(lambda: bool(advisories(s1) and advisories(p)), feds)
+        settle(*(f.rtia for f in feds))
+        assert advisories(s1) == [("attributesOutOfScope", {h.position})]
+        assert advisories(p) == [("turnUpdatesOffForObjectInstance", {h.position})]
+    finally:
+        for f in feds:
+            f.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        creator.destroyFederationExecution("DdmFed")
+
+
+def test_region_services_refused_during_a_save_or_a_restore(gateway_address: str) -> None:
+    """Registering with regions and sending with a region cross the snapshot like their plain forms
+    (SaveInProgress, RestoreInProgress); changing regions, associations or region subscriptions is refused
+    during a restore, whose regions replace this federate's (RestoreInProgress), and allowed again after."""
+    creator = rti.RTIAmbassador(gateway_address)
+    creator.createFederationExecution("DdmFed", DDM_FED)
+    feds = [Fed(gateway_address, name) for name in ("p", "s1", "s2")]
+    p = feds[0]
+    h = p.h
+    try:
+        world = World(*feds)
+        p.rtia.requestFederationSave("snap")
+        tick_all(lambda: bool(p.named("initiateFederateSave")), [p])
+        with pytest.raises(rti.SaveInProgress):
+            p.rtia.registerObjectInstanceWithRegion(h.vehicle, [(h.position, world.u)], "v2")
+        with pytest.raises(rti.SaveInProgress):
+            p.rtia.sendInteractionWithRegion(h.radio, {h.text: b"x"}, world.u, "x")
+        tick_all(lambda: all(f.named("initiateFederateSave") for f in feds), feds)
+        for f in feds:
+            f.rtia.federateSaveComplete()
+        tick_all(lambda: all(f.named("federationSaved") for f in feds), feds)
+
+        p.rtia.requestFederationRestore("snap")
+        tick_all(lambda: bool(p.named("initiateFederateRestore")), [p])
+        refused = [
+            lambda: p.rtia.createRegion(h.geo, []),
+            lambda: p.rtia.notifyAboutRegionModification(world.u, [(h.x, (1, 1))]),
+            lambda: p.rtia.deleteRegion(world.u),
+            lambda: p.rtia.associateRegionForUpdates(world.u, world.v1, [h.position]),
+            lambda: p.rtia.unassociateRegionForUpdates(world.u, world.v1),
+            lambda: p.rtia.subscribeObjectClassAttributesWithRegion(h.vehicle, world.u, [h.position]),
+            lambda: p.rtia.unsubscribeObjectClassWithRegion(h.vehicle, world.u),
+            lambda: p.rtia.subscribeInteractionClassWithRegion(h.radio, world.u),
+            lambda: p.rtia.unsubscribeInteractionClassWithRegion(h.radio, world.u),
+            lambda: p.rtia.registerObjectInstanceWithRegion(h.vehicle, [(h.position, world.u)], "v2"),
+            lambda: p.rtia.sendInteractionWithRegion(h.radio, {h.text: b"x"}, world.u, "x"),
+        ]
+        for service in refused:
+            with pytest.raises(rti.RestoreInProgress):
+                service()
+        assert p.rtia.getRegionExtent(world.u) == (h.geo, [(h.x, (5, 5)), (h.y, FULL)])  # queries answer
+        for f in feds:
+            tick_all(lambda f=f: bool(f.named("initiateFederateRestore")), [f])
+            f.rtia.federateRestoreComplete()
+        tick_all(lambda: all(f.named("federationRestored") for f in feds), feds)
+        p.rtia.deleteRegion(p.rtia.createRegion(h.geo, []))
+        assert world.send_round("after") == (["radio after", "reflect after"], [])
+    finally:
+        for f in feds:
+            f.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        creator.destroyFederationExecution("DdmFed")

@@ -243,6 +243,7 @@ private:
     // initiateFederateRestore: the regions, region subscriptions and update associations as saved,
     // under their saved numbers (callers hold mu_).
     void restore_regions(const wire::InitiateFederateRestore& m);
+    void refuse_region_change_while_restoring(const char* service) const;  // RestoreInProgress
 
     template <class M>
     void send(const M& message) {

@@ -99,7 +99,10 @@ MESSAGES = {
     "FederationRestoreBegun": b"",
     "InitiateFederateRestore": s("snap") + u32(2) + f64(5.0) + f64(1.0) + b(True) + b(True) + b(False) + b(True)
     + f64(6.0) + u64(3) + u32(1) + u32(1) + hs([1, 2]) + u32(1) + u32(1) + hs([2]) + hs([1]) + hs([])
-    + hs([7]) + hs([1]) + u32(1) + s("robot-1") + u32(1) + hs([1, 2]) + hs([1]),
+    + hs([7]) + hs([1]) + u32(1) + s("robot-1") + u32(1) + hs([1, 2]) + hs([1])
+    # DDM: region 3 in space 1, subscribed for class 2 and interaction 4, associated with object 7's attribute 1.
+    + u32(1) + u32(3) + u32(1) + hs([10, 20, 0, 100]) + u32(1) + u32(2) + u32(3) + hs([1])
+    + u32(1) + u32(4) + u32(3) + u32(1) + u32(7) + u32(1) + u32(3) + u32(3),
     "FederationRestored": b(True),
 }
 STREAMS = {

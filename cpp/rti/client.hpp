@@ -240,6 +240,10 @@ private:
     // InvalidRegionContext unless the attribute's routing space is the region's.
     void check_region_space(const LocalRegion& region, const fom::ObjectClass& cls, fom::Handle attribute) const;
     bool region_in_use(std::uint32_t region) const;
+    // initiateFederateRestore: the regions, region subscriptions and update associations as saved,
+    // under their saved numbers (callers hold mu_).
+    void restore_regions(const wire::InitiateFederateRestore& m);
+    void refuse_region_change_while_restoring(const char* service) const;  // RestoreInProgress
 
     template <class M>
     void send(const M& message) {

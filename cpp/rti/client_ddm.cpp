@@ -16,9 +16,16 @@ std::string region_text(std::uint32_t region) { return "region " + std::to_strin
 
 // Region numbers are unique in the process, not only per federate: a RegionHandle of another ambassador
 // then raises RegionNotKnown instead of naming this federate's region of the same number.
-std::uint32_t next_region_number() {
-    static std::atomic<std::uint32_t> last{0};
-    return ++last;
+std::atomic<std::uint32_t> last_region_number{0};
+
+std::uint32_t next_region_number() { return ++last_region_number; }
+
+// A restored federate keeps its saved region numbers; new regions are numbered above them (and above
+// any the federate had before the save) even in a process that never created them.
+void reserve_region_numbers(std::uint32_t up_to) {
+    std::uint32_t last = last_region_number.load();
+    while (last < up_to && !last_region_number.compare_exchange_weak(last, up_to)) {
+    }
 }
 
 void check_attributes_defined(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes) {
@@ -92,6 +99,27 @@ bool Client::region_in_use(std::uint32_t region) const {
     return false;
 }
 
+// ---- restore (HLA 1.3 §4.20; client_save.cpp) ----
+
+// During a restore the gateway ignores what a federate sends until it answers initiateFederateRestore,
+// and the restore replaces this federate's regions: a region change made meanwhile would leave the two
+// tables apart (and a later use of the region would get the federate dropped), so it is refused.
+void Client::refuse_region_change_while_restoring(const char* service) const {
+    if (restore_phase_ != RestorePhase::None)
+        raise(ErrorCode::RestoreInProgress, std::string(service) + " refused: a federation restore is in progress "
+                                                                   "(until federationRestored or federationNotRestored)");
+}
+
+void Client::restore_regions(const wire::InitiateFederateRestore& m) {
+    ddm_ = DdmState{};
+    for (const auto& [region, saved] : m.regions) ddm_.regions[region] = LocalRegion{saved.first, saved.second};
+    for (const auto& [key, attrs] : m.region_subscriptions)
+        ddm_.object_subscriptions[key.first][key.second] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+    for (const auto& [ic, region] : m.region_interaction_subscriptions) ddm_.interaction_subscriptions[ic].insert(region);
+    for (const auto& [object, association] : m.update_regions) ddm_.update_regions[object][association.first] = association.second;
+    reserve_region_numbers(m.last_region);
+}
+
 // ---- regions (HLA 1.3 §9.2-9.4) ----
 
 std::uint32_t Client::create_region(fom::Handle space, const Extent& extent) {
@@ -99,6 +127,7 @@ std::uint32_t Client::create_region(fom::Handle space, const Extent& extent) {
     wire::Handles bounds;
     {
         std::lock_guard<std::mutex> lock(mu_);
+        refuse_region_change_while_restoring("createRegion");
         require_joined();
         bounds = region_bounds(space, extent);
         region = next_region_number();
@@ -112,6 +141,7 @@ void Client::modify_region(std::uint32_t region, const std::optional<Extent>& ex
     wire::Handles bounds;
     {
         std::lock_guard<std::mutex> lock(mu_);
+        refuse_region_change_while_restoring("notifyAboutRegionModification");
         const LocalRegion& r = known_region(region);
         if (extent) {
             bounds = region_bounds(r.space, *extent);
@@ -126,6 +156,7 @@ void Client::modify_region(std::uint32_t region, const std::optional<Extent>& ex
 void Client::delete_region(std::uint32_t region) {
     {
         std::lock_guard<std::mutex> lock(mu_);
+        refuse_region_change_while_restoring("deleteRegion");
         known_region(region);
         if (region_in_use(region))
             raise(ErrorCode::RegionInUse, region_text(region) + " is used by a subscription or an update association");
@@ -157,6 +188,7 @@ std::uint32_t Client::register_object_with_region(fom::Handle cls,
     wire::Handles attributes, region_handles;
     {
         std::lock_guard<std::mutex> lock(mu_);
+        check_not_saving_or_restoring("registerObjectInstanceWithRegion");
         const auto& c = defined_object_class(cls);
         auto published = published_.find(cls);
         if (published == published_.end())
@@ -187,6 +219,7 @@ std::uint32_t Client::register_object_with_region(fom::Handle cls,
 void Client::associate_region(std::uint32_t region, std::uint32_t object, const std::vector<fom::Handle>& attributes) {
     {
         std::lock_guard<std::mutex> lock(mu_);
+        refuse_region_change_while_restoring("associateRegionForUpdates");
         const LocalObject& obj = known_object(object);
         const auto& cls = *fom_->object_class(obj.object_class);
         check_attributes_defined(cls, attributes);
@@ -200,6 +233,7 @@ void Client::associate_region(std::uint32_t region, std::uint32_t object, const 
 void Client::unassociate_region(std::uint32_t region, std::uint32_t object) {
     {
         std::lock_guard<std::mutex> lock(mu_);
+        refuse_region_change_while_restoring("unassociateRegionForUpdates");
         const LocalObject& obj = known_object(object);
         known_region(region);
         auto associations = ddm_.update_regions.find(object);
@@ -224,6 +258,7 @@ void Client::subscribe_object_class_with_region(fom::Handle cls, std::uint32_t r
                                                 const std::vector<fom::Handle>& attributes, bool active) {
     {
         std::lock_guard<std::mutex> lock(mu_);
+        refuse_region_change_while_restoring("subscribeObjectClassAttributesWithRegion");
         const auto& c = defined_object_class(cls);
         check_attributes_defined(c, attributes);
         const LocalRegion& r = known_region(region);
@@ -242,6 +277,7 @@ void Client::subscribe_object_class_with_region(fom::Handle cls, std::uint32_t r
 void Client::unsubscribe_object_class_with_region(fom::Handle cls, std::uint32_t region) {
     {
         std::lock_guard<std::mutex> lock(mu_);
+        refuse_region_change_while_restoring("unsubscribeObjectClassWithRegion");
         const auto& c = defined_object_class(cls);
         known_region(region);
         auto by_class = ddm_.object_subscriptions.find(cls);
@@ -256,6 +292,7 @@ void Client::unsubscribe_object_class_with_region(fom::Handle cls, std::uint32_t
 void Client::subscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region, bool active) {
     {
         std::lock_guard<std::mutex> lock(mu_);
+        refuse_region_change_while_restoring("subscribeInteractionClassWithRegion");
         const auto& c = defined_interaction_class(cls);
         const LocalRegion& r = known_region(region);
         const auto* s = c.space.empty() ? nullptr : fom_->find_space(c.space);
@@ -271,6 +308,7 @@ void Client::subscribe_interaction_class_with_region(fom::Handle cls, std::uint3
 void Client::unsubscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region) {
     {
         std::lock_guard<std::mutex> lock(mu_);
+        refuse_region_change_while_restoring("unsubscribeInteractionClassWithRegion");
         const auto& c = defined_interaction_class(cls);
         known_region(region);
         auto by_class = ddm_.interaction_subscriptions.find(cls);
@@ -289,6 +327,7 @@ std::uint64_t Client::send_interaction_with_region(fom::Handle cls, wire::Handle
     std::uint64_t serial;
     {
         std::lock_guard<std::mutex> lock(mu_);
+        check_not_saving_or_restoring("sendInteractionWithRegion");
         const auto& c = defined_interaction_class(cls);
         if (!published_interactions_.count(cls))
             raise(ErrorCode::InteractionClassNotPublished,

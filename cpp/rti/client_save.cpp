@@ -1,7 +1,7 @@
 // The federate side of federation save and restore (HLA 1.3 §4.11-4.22): the services with their
 // exceptions, and the save/restore state that the callbacks change when popped (as time state does in
 // client_time.cpp). initiateFederateRestore carries the restored federate's handle, time state,
-// declarations and known objects, which replace what this client mirrors. docs/save-restore.md.
+// declarations, known objects and regions, which replace what this client mirrors. docs/save-restore.md.
 #include <algorithm>
 #include <cmath>
 
@@ -119,6 +119,7 @@ void Client::apply_save_callback(const wire::Message& message) {
             objects_[m->objects[i]] = std::move(obj);
         }
         announced_.clear();  // synchronization points are not saved
+        restore_regions(*m);
         TimeState t;
         t.time = m->time;
         t.lookahead = m->lookahead;

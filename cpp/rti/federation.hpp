@@ -118,6 +118,9 @@ private:
         std::map<ObjectHandle, std::set<fom::Handle>> in_scope;
         // Owned attributes last reported relevant (turnUpdatesOn), while the relevance switch is on.
         std::map<ObjectHandle, std::set<fom::Handle>> relevant;
+        // The highest region number the federate created: saved, so that a restored client never numbers
+        // a new region like one the federate had before the save (federation_save.cpp).
+        RegionHandle last_region = 0;
     };
     struct FederateState;
     struct ObjectInstance;

@@ -8,6 +8,8 @@
 // overlaps every region.
 #include "rti/federation.hpp"
 
+#include <algorithm>
+
 namespace hlacore {
 
 using wire::WireError;
@@ -232,6 +234,7 @@ void Federation::on(FederateHandle from, const wire::CreateRegion& m) {
     if (m.region == 0 || f.ddm.regions.count(m.region))
         throw WireError("region handle " + std::to_string(m.region) + " is 0 or already in use");
     f.ddm.regions[m.region] = make_region(m.space, m.bounds);
+    f.ddm.last_region = std::max(f.ddm.last_region, m.region);
 }
 
 // §9.3: from now on, routing uses the new extents; instances that come into scope are discovered.

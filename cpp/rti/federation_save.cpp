@@ -33,12 +33,18 @@ using wire::WireError;
 namespace {
 
 constexpr char kFileMagic[8] = {'H', 'L', 'A', 'C', 'S', 'A', 'V', 'E'};
-constexpr std::uint32_t kFormatVersion = 1;
+// Version 2 added data distribution management; version 1 files (no regions) are refused, since
+// restoring one would silently drop the regions federates hold handles to.
+constexpr std::uint32_t kFormatVersion = 2;
 
 using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 using Declarations = std::vector<std::pair<std::uint32_t, wire::Handles>>;
 // (time, (sender, (serial, frame))): a queued timestamped message.
 using TsoRecords = std::vector<std::pair<double, std::pair<std::uint32_t, std::pair<std::uint64_t, std::string>>>>;
+// Data distribution management, encoded as initiateFederateRestore carries it to the client.
+using RegionRecords = decltype(wire::InitiateFederateRestore::regions);
+using RegionSubscriptions = decltype(wire::InitiateFederateRestore::region_subscriptions);
+using UpdateRegions = decltype(wire::InitiateFederateRestore::update_regions);
 
 struct FederateRecord {
     std::uint32_t handle = 0;
@@ -67,11 +73,20 @@ struct FederateRecord {
     TsoRecords tso;
     std::vector<std::string> held_ro;          // held by time management (constrained, not advancing)
     std::vector<std::string> held_after_save;  // sent during the save, delivered after federationSaved
+    // Data distribution management (HLA 1.3 §9).
+    RegionRecords regions;
+    RegionSubscriptions region_subscriptions;
+    Pairs region_interaction_subscriptions;
+    UpdateRegions update_regions;
+    Declarations in_scope;  // object -> attributes last reported in scope (attribute scope advisory)
+    Declarations relevant;  // object -> owned attributes last reported relevant (turnUpdatesOn)
+    std::uint32_t last_region = 0;
     HLACORE_FIELDS(handle, name, published, subscribed, published_interactions, subscribed_interactions, known,
                    registration_started, interactions_turned_on, class_relevance, interaction_relevance,
                    attribute_relevance, attribute_scope, interaction_order, interaction_transport, time, lookahead,
                    regulating, constrained, asynchronous_delivery, strict_after_grant, receives_above_time, promise,
-                   tso, held_ro, held_after_save)
+                   tso, held_ro, held_after_save, regions, region_subscriptions, region_interaction_subscriptions,
+                   update_regions, in_scope, relevant, last_region)
 };
 
 struct ObjectRecord {
@@ -103,6 +118,29 @@ Pairs pairs(const Map& m) {
 template <class Set>
 wire::Handles handles(const Set& s) {
     return wire::Handles(s.begin(), s.end());
+}
+
+// A federate's regions, region subscriptions and update associations into a FederateRecord or an
+// initiateFederateRestore (same field names); a region's extents are flattened into lower, upper pairs.
+template <class Ddm, class Target>
+void put_ddm(const Ddm& ddm, Target& out) {
+    for (const auto& [handle, region] : ddm.regions) {
+        wire::Handles bounds;
+        for (const auto& extent : region.extents) {
+            for (const auto& [lower, upper] : extent) {
+                bounds.push_back(lower);
+                bounds.push_back(upper);
+            }
+        }
+        out.regions.push_back({handle, {region.space, std::move(bounds)}});
+    }
+    for (const auto& [cls, by_region] : ddm.object_subscriptions)
+        for (const auto& [region, attrs] : by_region) out.region_subscriptions.push_back({{cls, region}, handles(attrs)});
+    for (const auto& [ic, regions] : ddm.interaction_subscriptions)
+        for (auto region : regions) out.region_interaction_subscriptions.push_back({ic, region});
+    for (const auto& [object, associations] : ddm.update_regions)
+        for (const auto& [attr, region] : associations) out.update_regions.push_back({object, {attr, region}});
+    out.last_region = ddm.last_region;
 }
 
 template <class Record>
@@ -361,6 +399,9 @@ std::string Federation::encode_snapshot() const {
         r.held_ro = t.held_ro;
         auto held = save_.held.find(h);
         if (held != save_.held.end()) r.held_after_save = held->second;
+        put_ddm(f.ddm, r);
+        r.in_scope = declarations(f.ddm.in_scope);
+        r.relevant = declarations(f.ddm.relevant);
         federates.push_back(std::move(r));
     }
     std::vector<ObjectRecord> objects;
@@ -403,6 +444,49 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
         throw WireError((at == std::string::npos ? what : what.substr(0, at)) + " in the save");
     }
     // Cross-references are checked here so that applying a save cannot fail halfway.
+    // A federate's DDM state: regions fit the FOM's spaces, and whatever uses a region names one of the
+    // federate's saved regions, in the routing space of the attribute or interaction it is used for.
+    auto check_saved_ddm = [&](const FederateRecord& f, const std::map<std::uint32_t, std::uint32_t>& objects) {
+        const std::string whose = " of federate '" + f.name + "'";
+        std::map<std::uint32_t, fom::Handle> spaces;  // region -> space
+        for (const auto& [region, saved] : f.regions) {
+            if (region == 0 || region > f.last_region || !spaces.emplace(region, saved.first).second)
+                throw WireError("bad region handle " + std::to_string(region) + whose);
+            make_region(saved.first, saved.second);  // the space exists, the bounds fit its dimensions
+        }
+        auto space_of = [&](std::uint32_t region) {
+            auto it = spaces.find(region);
+            if (it == spaces.end()) throw WireError("unsaved region " + std::to_string(region) + whose);
+            return it->second;
+        };
+        auto check_attribute_space = [&](const fom::ObjectClass& cls, fom::Handle attr, std::uint32_t region) {
+            const auto* a = cls.attribute(attr);
+            const auto* space = a ? fom_.find_space(a->space) : nullptr;
+            if (!space || space->handle != space_of(region))
+                throw WireError("region " + std::to_string(region) + whose + " is not in the routing space of an "
+                                "attribute of class '" + cls.qualified_name + "'");
+        };
+        for (const auto& [key, attrs] : f.region_subscriptions) {
+            const auto& cls = object_class(key.first);
+            check_attributes(cls, attrs);
+            for (auto attr : attrs) check_attribute_space(cls, attr, key.second);
+        }
+        for (const auto& [ic, region] : f.region_interaction_subscriptions) {
+            const auto* space = fom_.find_space(interaction_class(ic).space);
+            if (!space || space->handle != space_of(region))
+                throw WireError("region " + std::to_string(region) + whose + " is not in the routing space of "
+                                "interaction class " + std::to_string(ic));
+        }
+        auto class_of = [&](std::uint32_t object) -> const fom::ObjectClass& {
+            auto it = objects.find(object);
+            if (it == objects.end()) throw WireError("DDM state" + whose + " names an unsaved object");
+            return object_class(it->second);
+        };
+        for (const auto& [object, association] : f.update_regions)
+            check_attribute_space(class_of(object), association.first, association.second);
+        for (const auto* advised : {&f.in_scope, &f.relevant})
+            for (const auto& [object, attrs] : *advised) check_attributes(class_of(object), attrs);
+    };
     std::set<std::uint32_t> handles_seen;
     std::set<std::string> names_seen;
     for (const auto& f : s.federates) {
@@ -414,7 +498,7 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
         for (auto ic : f.subscribed_interactions) interaction_class(ic);
         if (f.handle >= s.next_federate) throw WireError("federate handle beyond the saved next handle");
     }
-    std::set<std::uint32_t> objects_seen;
+    std::map<std::uint32_t, std::uint32_t> objects_seen;  // object -> class
     std::set<std::string> object_names;
     for (const auto& o : s.objects) {
         if (!object_names.insert(o.name).second) throw WireError("duplicate object name '" + o.name + "'");
@@ -424,7 +508,7 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
         for (const auto& [attr, owner] : o.owners) {
             if (!cls.attribute(attr) || !handles_seen.count(owner)) throw WireError("bad owner of object '" + o.name + "'");
         }
-        if (o.handle == 0 || o.handle >= s.next_object || !objects_seen.insert(o.handle).second)
+        if (o.handle == 0 || o.handle >= s.next_object || !objects_seen.emplace(o.handle, o.object_class).second)
             throw WireError("bad handle of object '" + o.name + "'");
     }
     for (const auto& f : s.federates) {
@@ -438,6 +522,7 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
         for (const auto& frame : f.held_after_save) check_frame(frame);
         check_delivery_values(f.interaction_order, "federate '" + f.name + "'");
         check_delivery_values(f.interaction_transport, "federate '" + f.name + "'");
+        check_saved_ddm(f, objects_seen);
     }
     return s;
 }
@@ -532,6 +617,15 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         }
         t.held_ro = std::move(r.held_ro);
         time_.restore_state(r.handle, std::move(t));
+        for (const auto& [region, saved] : r.regions) f.ddm.regions[region] = make_region(saved.first, saved.second);
+        for (const auto& [key, attrs] : r.region_subscriptions)
+            f.ddm.object_subscriptions[key.first][key.second] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        for (const auto& [ic, region] : r.region_interaction_subscriptions) f.ddm.interaction_subscriptions[ic].insert(region);
+        for (const auto& [object, association] : r.update_regions)
+            f.ddm.update_regions[object][association.first] = association.second;
+        for (const auto& [object, attrs] : r.in_scope) f.ddm.in_scope[object].insert(attrs.begin(), attrs.end());
+        for (const auto& [object, attrs] : r.relevant) f.ddm.relevant[object].insert(attrs.begin(), attrs.end());
+        f.ddm.last_region = r.last_region;
         // What the save held back is delivered after federationRestored, as it was after federationSaved.
         if (!r.held_after_save.empty()) restore_.held[r.handle] = std::move(r.held_after_save);
     }
@@ -585,6 +679,7 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
             m.owned.push_back(std::move(owned));
             m.may_delete.push_back(deleter(obj) == h ? 1 : 0);
         }
+        put_ddm(f.ddm, m);
         outbox_.send(h, m);
     }
     // Until federationRestored, what is sent to the federates waits.
@@ -617,6 +712,7 @@ void Federation::finish_restore_if_answered() {
         if (held != done.held.end()) deliver_held(h, held->second);
     }
     update_advisories();
+    refresh_scope();  // from the scope and relevance already announced in the save
     release_time();
 }
 

@@ -699,9 +699,17 @@ struct InitiateFederateRestore {
     std::vector<std::string> object_names;
     std::vector<Handles> owned;       // the attributes it owns of each object
     Handles may_delete;               // 1 when it holds the privilege to delete the object
+    // Data distribution management (HLA 1.3 §9) as saved: this federate's regions under their saved
+    // numbers, its subscriptions through them and its update associations.
+    std::vector<std::pair<std::uint32_t, std::pair<std::uint32_t, Handles>>> regions;  // region -> (space, bounds)
+    std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, Handles>> region_subscriptions;  // (class, region) -> attributes
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> region_interaction_subscriptions;  // (interaction class, region)
+    std::vector<std::pair<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>>> update_regions;  // object -> (attribute, region)
+    std::uint32_t last_region = 0;    // the highest region number this federate ever created
     HLACORE_FIELDS(label, federate, time, lookahead, regulating, constrained, asynchronous_delivery, strict, floor,
                    next_serial, published, subscribed, published_interactions, subscribed_interactions, objects,
-                   object_classes, object_names, owned, may_delete)
+                   object_classes, object_names, owned, may_delete, regions, region_subscriptions,
+                   region_interaction_subscriptions, update_regions, last_region)
 };
 struct FederationRestored {  // federationRestored, or federationNotRestored when !success
     HLACORE_TYPE(FederationRestored)

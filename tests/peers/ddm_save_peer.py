@@ -1,0 +1,90 @@
+"""Federate 's2' of tests/test_save_restore_ddm.py, in its own process (so its region numbers start at 1).
+
+Usage: ddm_save_peer.py HOST:PORT first|restart.
+- first: joins DdmFed as 's2', creates a Geo region with X in [20, 30], subscribes vehicle.position and
+  radio through it and broadcast plainly, and prints {"ready": true, "region": N} once the gateway has them.
+- restart: joins DdmFed as 's2' and prints {"ready": true}; its subscriptions come back with a restore.
+Then it ticks, printing one JSON line per event: it answers initiateFederateSave and
+initiateFederateRestore at once; after federationRestored it creates a region and prints its number
+({"event": "federationRestored", "new_region": N}); discoveries, reflections (tag), radio interactions
+(text) and the broadcast marker are printed as they come. Exits when the connection ends, or after 60 s.
+"""
+
+import json
+import sys
+import time
+
+import hlacore.rti as rti
+
+
+def say(**fields):
+    print(json.dumps(fields), flush=True)
+
+
+class Ambassador(rti.FederateAmbassador):
+    def __init__(self, rtia):
+        self.rtia = rtia
+        self.radio = None
+        self.geo = None
+        self.names = {}
+
+    def initiateFederateSave(self, label):
+        say(event="initiateFederateSave", label=label)
+        self.rtia.federateSaveComplete()
+
+    def federationSaved(self):
+        say(event="federationSaved")
+
+    def initiateFederateRestore(self, label, handle):
+        say(event="initiateFederateRestore", label=label)
+        self.rtia.federateRestoreComplete()
+
+    def federationRestored(self):
+        region = self.rtia.createRegion(self.geo, [])
+        say(event="federationRestored", new_region=int(region))
+        self.rtia.deleteRegion(region)
+
+    def discoverObjectInstance(self, obj, cls, name):
+        self.names[obj] = name
+        say(event="discover", name=name)
+
+    def reflectAttributeValues(self, obj, attributes, tag, *rest):
+        say(event="reflect", tag=tag.decode() if isinstance(tag, bytes) else tag)
+
+    def receiveInteraction(self, cls, parameters, tag, *rest):
+        if cls == self.radio:
+            say(event="radio", text=b"".join(parameters.values()).decode())
+        else:
+            say(event="marker")
+
+
+def main():
+    address, mode = sys.argv[1], sys.argv[2]
+    rtia = rti.RTIAmbassador(address)
+    amb = Ambassador(rtia)
+    rtia.joinFederationExecution("s2", "DdmFed", amb)
+    amb.geo = rtia.getRoutingSpaceHandle("Geo")
+    amb.radio = rtia.getInteractionClassHandle("radio")
+    if mode == "first":
+        vehicle = rtia.getObjectClassHandle("vehicle")
+        region = rtia.createRegion(amb.geo, [(rtia.getDimensionHandle("X", amb.geo), (20, 30))])
+        rtia.subscribeObjectClassAttributesWithRegion(vehicle, region, [rtia.getAttributeHandle("position", vehicle)])
+        rtia.subscribeInteractionClassWithRegion(amb.radio, region)
+        rtia.subscribeInteractionClass(rtia.getInteractionClassHandle("broadcast"))
+        try:  # a round trip: the gateway has handled the subscriptions once it is answered
+            rtia.destroyFederationExecution("ddm-save-peer-barrier")
+        except rti.FederationExecutionDoesNotExist:
+            pass
+        say(ready=True, region=int(region))
+    else:
+        say(ready=True)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline:
+        try:
+            rtia.tick(0.05, 0.1)
+        except rti.RTIinternalError:
+            return  # the gateway stopped
+
+
+if __name__ == "__main__":
+    main()

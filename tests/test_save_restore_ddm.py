@@ -255,7 +255,8 @@ def test_regions_come_back_after_rtig_restarts_on_its_save_dir(tmp_path: pathlib
             restore("snap", [p, s1])
             assert peer_says(peer) == {"event": "initiateFederateRestore", "label": "snap"}
             # s2's restored region is number 1 in its new process: the next one is numbered above it.
-            assert peer_says(peer) == {"event": "federationRestored", "new_region": 2}
+            # getRegions() gives the new process handles for its restored regions.
+            assert peer_says(peer) == {"event": "federationRestored", "new_region": 2, "restored": [1], "x": [20, 30]}
             # The handles kept from before the restart name the saved regions in the new ambassadors.
             assert s1.rtia.getRegionExtent(r1) == (h.geo, [(h.x, (0, 10)), (h.y, FULL)])
             assert p.rtia.getRegionExtent(u) == (h.geo, [(h.x, (5, 5)), (h.y, FULL)])

@@ -726,6 +726,13 @@ PYBIND11_MODULE(_core, m) {
                  return py::make_tuple(SpaceHandle{space}, ranges);
              }, py::arg("region"),
              "(SpaceHandle, [(DimensionHandle, (lower, upper)), ...]) of a region of this federate, every dimension listed. Raises RegionNotKnown.")
+        .def("getRegions",
+             [](Client& c) {
+                 py::list out;
+                 for (auto handle : c.regions()) out.append(RegionHandle{handle});
+                 return out;
+             },
+             "hlacore extension: the RegionHandles of the regions this federate holds, in creation order. After a restore they are the saved regions, so a federate restored in a new process (rtig restarted on its --save-dir) gets handles for them here.")
         .def("registerObjectInstanceWithRegion",
              [](Client& c, ObjectClassHandle cls, std::vector<std::pair<AttributeHandle, RegionHandle>> pairs,
                 std::optional<std::string> name) {

@@ -115,6 +115,8 @@ public:
     void delete_region(std::uint32_t region);
     // The region's routing space and its ranges, one per dimension of the space in the FOM's order.
     std::pair<fom::Handle, Extent> region_extent(std::uint32_t region) const;
+    // The regions this federate holds, in handle order (after a restore: the saved ones).
+    std::vector<std::uint32_t> regions() const;
     std::uint32_t register_object_with_region(fom::Handle cls,
                                               const std::vector<std::pair<fom::Handle, std::uint32_t>>& regions,
                                               const std::string& name);

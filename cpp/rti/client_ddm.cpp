@@ -179,6 +179,13 @@ std::pair<fom::Handle, Client::Extent> Client::region_extent(std::uint32_t regio
     return {r.space, extent};
 }
 
+std::vector<std::uint32_t> Client::regions() const {
+    std::lock_guard<std::mutex> lock(mu_);
+    std::vector<std::uint32_t> handles;
+    for (const auto& [handle, region] : ddm_.regions) handles.push_back(handle);
+    return handles;
+}
+
 // ---- update regions (HLA 1.3 §9.5-9.7) ----
 
 std::uint32_t Client::register_object_with_region(fom::Handle cls,

@@ -819,6 +819,10 @@ class RTIAmbassadorBase:
         """
         (SpaceHandle, [(DimensionHandle, (lower, upper)), ...]) of a region of this federate, every dimension listed. Raises RegionNotKnown.
         """
+    def getRegions(self) -> list:
+        """
+        hlacore extension: the RegionHandles of the regions this federate holds, in creation order. After a restore they are the saved regions, so a federate restored in a new process (rtig restarted on its --save-dir) gets handles for them here.
+        """
     def getRoutingSpaceHandle(self, name: str) -> SpaceHandle:
         """
         Handle of a routing space of the FOM. Raises NameNotFound.

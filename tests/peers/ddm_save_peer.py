@@ -6,7 +6,8 @@ Usage: ddm_save_peer.py HOST:PORT first|restart.
 - restart: joins DdmFed as 's2' and prints {"ready": true}; its subscriptions come back with a restore.
 Then it ticks, printing one JSON line per event: it answers initiateFederateSave and
 initiateFederateRestore at once; after federationRestored it creates a region and prints its number
-({"event": "federationRestored", "new_region": N}); discoveries, reflections (tag), radio interactions
+({"event": "federationRestored", "new_region": N, "restored": [its regions], "x": [lower, upper] of the
+first}); discoveries, reflections (tag), radio interactions
 (text) and the broadcast marker are printed as they come. Exits when the connection ends, or after 60 s.
 """
 
@@ -40,8 +41,11 @@ class Ambassador(rti.FederateAmbassador):
         self.rtia.federateRestoreComplete()
 
     def federationRestored(self):
+        # A new process holds no RegionHandle of its saved regions: getRegions() hands them out.
+        restored = self.rtia.getRegions()
+        x_range = [list(r) for d, r in self.rtia.getRegionExtent(restored[0])[1]][0] if restored else None
         region = self.rtia.createRegion(self.geo, [])
-        say(event="federationRestored", new_region=int(region))
+        say(event="federationRestored", new_region=int(region), restored=[int(r) for r in restored], x=x_range)
         self.rtia.deleteRegion(region)
 
     def discoverObjectInstance(self, obj, cls, name):

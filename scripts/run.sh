@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The main job on the embedded default: install hlacore into .venv and run the demo federation
-# on an in-process gateway. Arguments go to the demo (./scripts/run.sh --help).
+# The main job on the embedded default: install hlacore (with matplotlib, for the trajectory plot) into
+# .venv and run the demo federation on an in-process gateway. Arguments go to the demo (./scripts/run.sh --help).
 source "$(dirname "$0")/env.sh"
-pip_install .
+pip_install ".[plot]"
 exec .venv/bin/python -m hlacore.demo "$@"

@@ -14,7 +14,9 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -32,7 +34,7 @@ std::string fed_text;
 unsigned counter = 0;
 
 [[noreturn]] void die(const char* what) {
-    std::fprintf(stderr, "fuzz_gateway: %s\n", what);
+    std::fprintf(stderr, "fuzz_gateway: %s: %s\n", what, std::strerror(errno));
     std::abort();
 }
 }  // namespace

@@ -61,7 +61,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     addr.sin_family = AF_INET;
     addr.sin_port = htons(port);
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) die("connect");
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
+        // libFuzzer's timer signal can interrupt a connect that waits (a busy machine, a full backlog):
+        // the connection goes on, so wait until it is made (seen in CI: "connect: Interrupted system call").
+        if (errno != EINTR) die("connect");
+        pollfd p{fd, POLLOUT, 0};
+        while (::poll(&p, 1, 10000) < 0)
+            if (errno != EINTR) die("poll after an interrupted connect");
+        int error = 0;
+        socklen_t length = sizeof error;
+        getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &length);
+        if (error != 0) {
+            errno = error;
+            die("connect");
+        }
+    }
     int one = 1;
     setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
 

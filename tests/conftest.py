@@ -237,15 +237,17 @@ class Federate:
             tick_until(lambda: bool(self.amb.named("timeConstrainedEnabled")), self.rtia)
 
 
-@pytest.fixture
-def federation(gateway_address: str) -> Iterator[Callable[[str], Federate]]:
-    """Creates TestFed from tests/data/robot.fed; returns a function joining federates to it."""
-    creator = rti.RTIAmbassador(gateway_address)
-    creator.createFederationExecution("TestFed", ROBOT_FED)
-    joined: list[Federate] = []
+@contextlib.contextmanager
+def joined_federation(address: str, federation: str, fed_file: str,
+                      make: Callable[[str, str], Any]) -> Iterator[Callable[[str], Any]]:
+    """Creates `federation` from `fed_file`; yields join(name) -> make(address, name); at the end every
+    federate joined so resigns (best effort: it may be gone or mid-save) and the federation is destroyed."""
+    creator = rti.RTIAmbassador(address)
+    creator.createFederationExecution(federation, fed_file)
+    joined: list[Any] = []
 
-    def join(name: str) -> Federate:
-        fed = Federate(gateway_address, name)
+    def join(name: str) -> Any:
+        fed = make(address, name)
         joined.append(fed)
         return fed
 
@@ -253,9 +255,16 @@ def federation(gateway_address: str) -> Iterator[Callable[[str], Federate]]:
     for fed in joined:
         try:
             fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-        except rti.FederateNotExecutionMember:
+        except (rti.FederateNotExecutionMember, rti.SaveInProgress, rti.RestoreInProgress):
             pass
-    creator.destroyFederationExecution("TestFed")
+    creator.destroyFederationExecution(federation)
+
+
+@pytest.fixture
+def federation(gateway_address: str) -> Iterator[Callable[[str], Federate]]:
+    """Creates TestFed from tests/data/robot.fed; returns a function joining federates to it."""
+    with joined_federation(gateway_address, "TestFed", ROBOT_FED, Federate) as join:
+        yield join
 
 
 _peer_lines: "weakref.WeakKeyDictionary[subprocess.Popen[str], queue.Queue[str]]" = weakref.WeakKeyDictionary()

@@ -14,7 +14,7 @@ import pytest
 
 import hlacore.rti as rti
 
-from conftest import DATA, Federate, RtigProcess, barrier, python_subprocess, read_json, settle, tick_until
+from conftest import DATA, Federate, RtigProcess, barrier, joined_federation, python_subprocess, read_json, settle, tick_until
 from test_robustness import Legit, dropped_line, frame, handles, legit, raw_client, u32  # noqa: F401 (legit: fixture)
 
 DDM_FED = str(DATA / "ddm.fed")
@@ -61,22 +61,8 @@ def fom_of(rtia: rti.RTIAmbassador) -> Fom:
 @pytest.fixture
 def ddm(gateway_address: str) -> Iterator[Join]:
     """Creates DdmFed from tests/data/ddm.fed; returns a function joining federates to it."""
-    creator = rti.RTIAmbassador(gateway_address)
-    creator.createFederationExecution("DdmFed", DDM_FED)
-    joined: list[Federate] = []
-
-    def join(name: str) -> Federate:
-        fed = Federate(gateway_address, name, "DdmFed")
-        joined.append(fed)
-        return fed
-
-    yield join
-    for fed in joined:
-        try:
-            fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-        except rti.FederateNotExecutionMember:
-            pass
-    creator.destroyFederationExecution("DdmFed")
+    with joined_federation(gateway_address, "DdmFed", DDM_FED, lambda address, name: Federate(address, name, "DdmFed")) as join:
+        yield join
 
 
 def reflected(fed: Federate) -> list[tuple[Any, dict]]:

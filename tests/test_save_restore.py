@@ -15,44 +15,15 @@ import hlacore
 import hlacore.rti as rti
 import hlacore.status
 
-from conftest import ROBOT_FED, Recorder, python_subprocess, running_rtig, settle, tick_until
-
-SAVE_CALLBACKS = (
-    "initiateFederateSave",
-    "federationSaved",
-    "federationNotSaved",
-    "requestFederationRestoreSucceeded",
-    "requestFederationRestoreFailed",
-    "federationRestoreBegun",
-    "initiateFederateRestore",
-    "federationRestored",
-    "federationNotRestored",
-)
-
-
-class SaveRecorder(Recorder):
-    """A Recorder that also records the save/restore callbacks."""
-
-
-def _record(name: str):
-    def callback(self: SaveRecorder, *args: Any) -> None:
-        self.calls.append((name, args))
-
-    callback.__name__ = name
-    return callback
-
-
-for _name in SAVE_CALLBACKS:
-    setattr(SaveRecorder, _name, _record(_name))
-
+from conftest import ROBOT_FED, Recorder, joined_federation, python_subprocess, running_rtig, settle, tick_until
 
 class Fed:
-    """One joined federate with a SaveRecorder, and the robot class handles."""
+    """One joined federate with a Recorder, and the robot class handles."""
 
     def __init__(self, address: str, name: str) -> None:
         self.name = name
         self.rtia = rti.RTIAmbassador(address)
-        self.amb = SaveRecorder()
+        self.amb = Recorder()
         self.handle = self.rtia.joinFederationExecution(name, "TestFed", self.amb)
         self.robot = self.rtia.getObjectClassHandle("robot")
         self.location = self.rtia.getAttributeHandle("location", self.robot)
@@ -116,22 +87,8 @@ def saved_view(status: dict[str, Any]) -> dict[str, Any]:
 @pytest.fixture
 def testfed(gateway_address: str):
     """Creates TestFed; yields a function joining a Fed; resigns and destroys at the end."""
-    creator = rti.RTIAmbassador(gateway_address)
-    creator.createFederationExecution("TestFed", ROBOT_FED)
-    joined: list[Fed] = []
-
-    def join(name: str) -> Fed:
-        fed = Fed(gateway_address, name)
-        joined.append(fed)
-        return fed
-
-    yield join
-    for fed in joined:
-        try:
-            fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-        except (rti.FederateNotExecutionMember, rti.RTIinternalError, rti.SaveInProgress, rti.RestoreInProgress):
-            pass
-    creator.destroyFederationExecution("TestFed")
+    with joined_federation(gateway_address, "TestFed", ROBOT_FED, Fed) as join:
+        yield join
 
 
 # ---- the state machine ----

@@ -14,9 +14,9 @@ import pytest
 
 import hlacore.rti as rti
 
-from conftest import barrier, python_subprocess, running_rtig, settle, tick_until
+from conftest import Recorder, barrier, python_subprocess, running_rtig, settle, tick_until
 from test_ddm import DDM_FED, Fom, fom_of
-from test_save_restore import SaveRecorder, close_pipes, peer_says
+from test_save_restore import close_pipes, peer_says
 
 FULL = (rti.MIN_EXTENT, rti.MAX_EXTENT)
 
@@ -26,7 +26,7 @@ class Fed:
 
     def __init__(self, address: str, name: str) -> None:
         self.rtia = rti.RTIAmbassador(address)
-        self.amb = SaveRecorder()
+        self.amb = Recorder()
         self.handle = self.rtia.joinFederationExecution(name, "DdmFed", self.amb)
         self.h: Fom = fom_of(self.rtia)
 

@@ -127,6 +127,8 @@ private:
     static bool overlap(const Region& a, const Region& b);
     Region make_region(fom::Handle space, const wire::Handles& bounds) const;  // WireError on bad extents
     const Region& region_of(const FederateState& f, RegionHandle r) const;   // WireError when unknown
+    // The federate's region `r`, which must be in the routing space of interaction class `cls` (WireError).
+    const Region& interaction_region(const FederateState& f, RegionHandle r, fom::Handle cls) const;
     // The region `owner` updates the attribute of the object in, or null for the default region.
     const Region* update_region(FederateHandle owner, ObjectHandle object, fom::Handle attribute) const;
     // Is the attribute subscribed at class `known` through a region overlapping the owner's update region?

@@ -330,14 +330,20 @@ void Federation::on(FederateHandle from, const wire::UnsubscribeObjectClassWithR
     update_advisories();
 }
 
+const Federation::Region& Federation::interaction_region(const FederateState& f, RegionHandle r,
+                                                         fom::Handle cls) const {
+    const Region& region = region_of(f, r);
+    const auto& ic = interaction_class(cls);
+    const auto* space = fom_.find_space(ic.space);
+    if (!space || space->handle != region.space)
+        throw WireError("region " + std::to_string(r) + " is not in the routing space of interaction '" +
+                        ic.qualified_name + "'");
+    return region;
+}
+
 void Federation::on(FederateHandle from, const wire::SubscribeInteractionClassWithRegion& m) {
     auto& f = federate(from);
-    const Region& region = region_of(f, m.region);
-    const auto& cls = interaction_class(m.interaction_class);
-    const auto* space = fom_.find_space(cls.space);
-    if (!space || space->handle != region.space)
-        throw WireError("region " + std::to_string(m.region) + " is not in the routing space of interaction '" +
-                        cls.qualified_name + "'");
+    interaction_region(f, m.region, m.interaction_class);
     f.ddm.interaction_subscriptions[m.interaction_class].insert(m.region);
     update_advisories();
 }
@@ -355,13 +361,7 @@ void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClass
 
 // §9.12: reaches the plain subscribers and those whose subscription region overlaps `region`.
 void Federation::on(FederateHandle from, const wire::SendInteractionWithRegion& m) {
-    auto& f = federate(from);
-    const Region& region = region_of(f, m.region);
-    const auto& cls = interaction_class(m.interaction_class);
-    const auto* space = fom_.find_space(cls.space);
-    if (!space || space->handle != region.space)
-        throw WireError("region " + std::to_string(m.region) + " is not in the routing space of interaction '" +
-                        cls.qualified_name + "'");
+    const Region& region = interaction_region(federate(from), m.region, m.interaction_class);
     route_interaction(from, wire::SendInteraction{m.interaction_class, m.values, m.tag, m.time, m.serial}, &region);
 }
 

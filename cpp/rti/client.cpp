@@ -219,7 +219,7 @@ void Client::file(std::vector<wire::Message>& got) {
         } else if (auto* s = std::get_if<wire::FederationSynchronized>(&m)) {
             announced_.erase(s->label);
         }
-        callbacks_.push_back(std::move(m));
+        callbacks_.push(std::move(m));
     }
 }
 
@@ -240,8 +240,7 @@ std::optional<wire::Message> Client::pop_callback() {
         if (closed_) connection_lost();
         return std::nullopt;
     }
-    wire::Message m = std::move(callbacks_.front());
-    callbacks_.pop_front();
+    wire::Message m = callbacks_.pop();
     apply_time_callback(m);
     apply_ownership_callback(m);
     apply_save_callback(m);

@@ -2,10 +2,11 @@
 //
 // One Gateway runs on a background thread for the whole fuzzing process (its federations persist from input
 // to input, like a long-running rtig). For each input the target connects, sends a Hello, creates federation
-// "F" from tests/data/robot.fed (an error reply when it exists), joins it under a fresh name, then sends the
-// input's bytes (normally frames: the wire seed corpus suits it), a QueryStatus, and shuts its sending side.
-// It then reads until the gateway closes the connection. Failures: a crash, a sanitizer report, an exception
-// escaping the gateway thread (std::terminate), or the gateway not closing within 10 s (a hang).
+// "F" from cpp/fuzz/gateway.fed (robot.fed's handles plus routing spaces, so that DDM is reached too; an
+// error reply when it exists), joins it under a fresh name, then sends the input's bytes (normally frames:
+// the wire seed corpus suits it), a QueryStatus, and shuts its sending side. It then reads until the
+// gateway closes the connection. Failures: a crash, a sanitizer report, an exception escaping the gateway
+// thread (std::terminate), or the gateway not closing within 10 s (a hang).
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
@@ -40,11 +41,11 @@ unsigned counter = 0;
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    std::ifstream in(HLACORE_SOURCE_DIR "/tests/data/robot.fed");
+    std::ifstream in(HLACORE_SOURCE_DIR "/cpp/fuzz/gateway.fed");
     std::stringstream text;
     text << in.rdbuf();
     fed_text = text.str();
-    if (fed_text.empty()) die("cannot read tests/data/robot.fed");
+    if (fed_text.empty()) die("cannot read cpp/fuzz/gateway.fed");
     GatewayOptions options;
     options.host = "127.0.0.1";
     options.port = 0;
@@ -81,7 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     std::string out;
     wire::encode(out, wire::Hello{});
-    wire::encode(out, wire::CreateFederation{1, "F", "robot.fed", fed_text});
+    wire::encode(out, wire::CreateFederation{1, "F", "gateway.fed", fed_text});
     wire::encode(out, wire::JoinFederation{2, "f" + std::to_string(counter++), "F"});
     out.append(reinterpret_cast<const char*>(data), size);
     wire::encode(out, wire::QueryStatus{3});

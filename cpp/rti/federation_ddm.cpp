@@ -149,15 +149,18 @@ void send_difference(Outbox& outbox, FederateHandle federate,
 }  // namespace
 
 // Scope (and so relevance) changes with subscriptions, regions, associations, ownership, discovery and
-// deletion; recomputing it for the federates that asked is simpler than following each of those, and
-// costs nothing when no federate has either switch on.
+// deletion; recomputing it for the federates that asked is simpler than following each of those. It runs
+// after every message: with no switch on (the default) it is one pass over the federates.
 void Federation::refresh_scope() {
+    bool scope_wanted = false;
     bool relevance_wanted = false;
     for (auto& [h, f] : federates_) {
         if (!f.attribute_scope) f.ddm.in_scope.clear();
         if (!f.attribute_relevance) f.ddm.relevant.clear();
+        scope_wanted = scope_wanted || f.attribute_scope;
         relevance_wanted = relevance_wanted || f.attribute_relevance;
     }
+    if (!scope_wanted && !relevance_wanted) return;
     using Scopes = std::map<ObjectHandle, std::set<fom::Handle>>;
     std::map<FederateHandle, Scopes> relevant;  // owner -> what some other federate has in scope
     for (auto& [gh, g] : federates_) {

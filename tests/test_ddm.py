@@ -149,15 +149,21 @@ def test_two_subscribers_with_disjoint_regions_receive_only_overlapping_updates(
     assert reflected(east) == [(ve, {h.position: b"e%d" % i}) for i in range(3)]
 
 
-def test_modifying_a_region_changes_delivery_from_the_next_update(ddm: Join) -> None:
+def vehicle_in_region(ddm: Join, x: tuple[int, int], name: str):
+    """"sub" subscribes vehicle.position through a region X in [0, 99]; "pub" registers vehicle `name` whose
+    position updates in a region of X in `x`. Returns pub, sub, the FOM handles, both regions, the object."""
     pub, sub = ddm("pub"), ddm("sub")
     h = fom_of(pub.rtia)
     pub.rtia.publishObjectClass(h.vehicle, [h.position])
     wanted = sub.rtia.createRegion(h.geo, [(h.x, (0, 99))])
     sub.rtia.subscribeObjectClassAttributesWithRegion(h.vehicle, wanted, [h.position])
     barrier(sub.rtia)
-    at = pub.rtia.createRegion(h.geo, [(h.x, (10, 20))])
-    v = pub.rtia.registerObjectInstanceWithRegion(h.vehicle, [(h.position, at)], "v")
+    at = pub.rtia.createRegion(h.geo, [(h.x, x)])
+    return pub, sub, h, wanted, at, pub.rtia.registerObjectInstanceWithRegion(h.vehicle, [(h.position, at)], name)
+
+
+def test_modifying_a_region_changes_delivery_from_the_next_update(ddm: Join) -> None:
+    pub, sub, h, wanted, at, v = vehicle_in_region(ddm, (10, 20), "v")
     pub.rtia.updateAttributeValues(v, {h.position: b"a: inside"}, "")
     tick_until(lambda: len(reflected(sub)) == 1, sub.rtia)
     # The publisher's region moves out: the next update stays in the gateway.
@@ -174,14 +180,7 @@ def test_modifying_a_region_changes_delivery_from_the_next_update(ddm: Join) -> 
 
 
 def test_an_instance_is_discovered_when_it_comes_into_scope(ddm: Join) -> None:
-    pub, sub = ddm("pub"), ddm("sub")
-    h = fom_of(pub.rtia)
-    pub.rtia.publishObjectClass(h.vehicle, [h.position])
-    wanted = sub.rtia.createRegion(h.geo, [(h.x, (0, 99))])
-    sub.rtia.subscribeObjectClassAttributesWithRegion(h.vehicle, wanted, [h.position])
-    barrier(sub.rtia)
-    at = pub.rtia.createRegion(h.geo, [(h.x, (500, 600))])
-    v = pub.rtia.registerObjectInstanceWithRegion(h.vehicle, [(h.position, at)], "far")
+    pub, sub, h, wanted, at, v = vehicle_in_region(ddm, (500, 600), "far")
     pub.rtia.updateAttributeValues(v, {h.position: b"far away"}, "")
     barrier(pub.rtia)
     settle(sub.rtia)

@@ -3,4 +3,4 @@
 # .venv and run the demo federation on an in-process gateway. Arguments go to the demo (./scripts/run.sh --help).
 source "$(dirname "$0")/env.sh"
 pip_install ".[plot]"
-exec .venv/bin/python -m hlacore.demo "$@"
+exec .venv/bin/python -m hlacore.experiments.robot_in_the_loop "$@"

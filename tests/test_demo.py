@@ -1,4 +1,4 @@
-"""The README's main job: `python -m hlacore.demo` runs the robot A* experiment with no configuration."""
+"""The README's main job: `python -m hlacore.experiments.robot_in_the_loop` runs the robot A* experiment with no configuration."""
 
 import pathlib
 import re
@@ -8,7 +8,7 @@ import sys
 
 def test_demo_runs_the_experiment_with_no_configuration(tmp_path: pathlib.Path):
     """No option: in-process gateway, calibrated robot on the paper's grid; names its output folder."""
-    done = subprocess.run([sys.executable, "-m", "hlacore.demo"], capture_output=True, text=True, timeout=110,
+    done = subprocess.run([sys.executable, "-m", "hlacore.experiments.robot_in_the_loop"], capture_output=True, text=True, timeout=110,
                           cwd=tmp_path, stdin=subprocess.DEVNULL)
     assert done.returncode == 0, done.stdout + done.stderr
     out = done.stdout

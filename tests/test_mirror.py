@@ -1,4 +1,4 @@
-"""Paper 2 §6.2 end to end: ``python -m hlacore.federates.mirror`` against a real rtig and a real roscore
+"""Paper 2 §6.2 end to end: ``python -m hlacore.experiments.mirror`` against a real rtig and a real roscore
 (both started here, ended by pid). The command runs the world federate and the ROS bridge; the robot
 federate (with its simulated device process on a pty) and the ROS robot's rospy node are processes of
 their own. The checks read the command's JSON summary, its CSV trace and its PNG. Last, a robot whose
@@ -34,7 +34,7 @@ def roscore(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]
 
 def run_mirror(env: dict[str, str], address: str, out: pathlib.Path, *options: str) -> dict[str, Any]:
     """Run the command; its exit status must be 0; returns the JSON summary (its last line)."""
-    done = subprocess.run([sys.executable, "-m", "hlacore.federates.mirror", str(out), "--rtig", address,
+    done = subprocess.run([sys.executable, "-m", "hlacore.experiments.mirror", str(out), "--rtig", address,
                            "--cycles", str(CYCLES), *options], capture_output=True, text=True, env=env,
                           timeout=300, stdin=subprocess.DEVNULL)
     assert done.returncode == 0, done.stdout + done.stderr

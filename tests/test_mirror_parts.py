@@ -7,9 +7,9 @@ import math
 
 import pytest
 
-from hlacore.federates.mirror import metrics
-from hlacore.federates.mirror.reference import reference_trajectory
-from hlacore.federates.mirror.scenario import BOX_SIZE, BOX_X, HALF
+from hlacore.experiments.mirror import metrics
+from hlacore.experiments.mirror.reference import reference_trajectory
+from hlacore.experiments.mirror.scenario import BOX_SIZE, BOX_X, HALF
 from hlacore.federates.robot_driver import Body, Calibration, DeviceServer, Scenario, TxRxDriver, spawn_simulated_device
 from hlacore.federates.robot_driver.avoid import AvoidParams, CorrectedAvoid, OpenLoopAvoid
 from hlacore.federates.robot_driver.mirrored import MirroredRobotFederate, executed_velocity

@@ -1,4 +1,4 @@
-"""The paper's A* experiment end to end (issue 7 acceptance): `python -m hlacore.demo` in its own process,
+"""The paper's A* experiment end to end (issue 7 acceptance): `python -m hlacore.experiments.robot_in_the_loop` in its own process,
 the Robot Federate in another, the simulated device in a third, over the real rtig or the in-process
 gateway."""
 
@@ -21,7 +21,7 @@ PAPER_PATH = [(0, 0), (0, 1), (0, 2), (0, 3), (1, 3), (2, 3), (2, 2), (2, 1), (2
 def run_demo(tmp_path: pathlib.Path, *args: str) -> tuple[subprocess.CompletedProcess[str], list[dict[str, str]]]:
     """Run the main job into tmp_path/out; returns the process and the trace rows."""
     out = tmp_path / "out"
-    done = subprocess.run([sys.executable, "-m", "hlacore.demo", "--out", str(out), *args],
+    done = subprocess.run([sys.executable, "-m", "hlacore.experiments.robot_in_the_loop", "--out", str(out), *args],
                           capture_output=True, text=True, timeout=110, stdin=subprocess.DEVNULL)
     assert "experiment finished:" in done.stdout, done.stdout + done.stderr
     assert (out / "delays.md").exists() and (out / "scenario.txt").exists()

@@ -9,7 +9,8 @@ import sys
 
 import pytest
 
-from hlacore.federates.robot_world import World, paper1
+from hlacore.experiments.paper1 import scenario as paper1
+from hlacore.federates.robot_world import World
 from hlacore.federates.robot_world.render import trajectories
 
 WALL_FACE = 7.0 - 0.1

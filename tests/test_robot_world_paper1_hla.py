@@ -9,7 +9,9 @@ from typing import Iterator
 import pytest
 
 import hlacore.rti as rti
-from hlacore.federates.robot_world import FEDERATION, FOM_PATH, paper1, paper1_hla
+from hlacore.experiments.paper1 import hla as paper1_hla
+from hlacore.experiments.paper1 import scenario as paper1
+from hlacore.federates.robot_world import FEDERATION, FOM_PATH
 
 HALF = 0.33 / 2
 WALL_FACE = 7.0 - 0.1

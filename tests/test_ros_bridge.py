@@ -304,9 +304,9 @@ def test_only_ros_modules_come_from_dist_packages(ros: None) -> None:
 def test_paper1_through_ros(roscore: dict[str, str], gateway_address: str, tmp_path: pathlib.Path) -> None:
     """Paper 1 through ROS, one command: the world federate and the bridge in one process, the controllers
     as a ROS node in another; the avatar never collides, passes once the obstacles have gone, stops
-    before the wall (the checks of hlacore.federates.ros_bridge.paper1.check)."""
+    before the wall (the checks of hlacore.experiments.paper1.checks.check)."""
     out = tmp_path / "out"
-    done = subprocess.run([sys.executable, "-m", "hlacore.federates.ros_bridge.paper1", str(out), "--rtig",
+    done = subprocess.run([sys.executable, "-m", "hlacore.experiments.paper1.ros", str(out), "--rtig",
                            gateway_address], capture_output=True, text=True, env=roscore, timeout=300,
                           stdin=subprocess.DEVNULL)
     assert done.returncode == 0, done.stdout + done.stderr

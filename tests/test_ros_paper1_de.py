@@ -22,14 +22,15 @@ from test_ros_bridge import WORLD, Lines, f32, ros, roscore, start_bridge, start
 
 import hlacore.rti as rti
 from hlacore import omt
-from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, codec, load_world, paper1
-from hlacore.federates.robot_world.stage_node import last_step_at_or_before
+from hlacore.experiments.paper1 import scenario as paper1
+from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, codec, load_world
+from hlacore.federates.ros_bridge.stage_node import last_step_at_or_before
 
 PERIOD, DT = 0.1, 0.01
 
 
 def start_stage(env: dict[str, str], world_file: pathlib.Path, *args: str) -> tuple[subprocess.Popen[str], Lines]:
-    proc = subprocess.Popen([sys.executable, "-m", "hlacore.federates.robot_world.stage_node", str(world_file),
+    proc = subprocess.Popen([sys.executable, "-m", "hlacore.federates.ros_bridge.stage_node", str(world_file),
                              *args], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                             text=True, env=env)
     return proc, Lines(proc)
@@ -43,7 +44,7 @@ def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_addre
     alone with the DE federate's commands scheduled at their timestamps (so every command reached the node
     exactly at its federation time); the poses the DE model received are the node's, one lookahead later."""
     out = tmp_path / "out"
-    done = subprocess.run([sys.executable, "-m", "hlacore.federates.ros_bridge.paper1", str(out), "--controller",
+    done = subprocess.run([sys.executable, "-m", "hlacore.experiments.paper1.ros", str(out), "--controller",
                            "de", "--rtig", gateway_address], capture_output=True, text=True, env=roscore,
                           timeout=300, stdin=subprocess.DEVNULL)
     assert done.returncode == 0, done.stdout + done.stderr

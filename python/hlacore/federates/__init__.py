@@ -1,6 +1,14 @@
-"""Ready-made federates (discrete-event engine, robot world, ROS bridge, robot driver, test bench).
+"""Reusable federates: the library's middle layer, above the core (:mod:`hlacore.rti`, ...) and below the
+papers' experiments (:mod:`hlacore.experiments`), which nothing here imports.
 
-- :mod:`hlacore.federates.de` — the discrete-event engine and its HLA-aware director (``docs/de.md``).
+Lowest first (a package imports only lower ones; tests/test_layers.py checks it):
 
-The others are tracked by their own issues.
+- :mod:`.de` — the discrete-event engine and its HLA-aware director (``docs/de.md``);
+- :mod:`.robot_world` — the pymunk world of Stage-style robots and its federate (``docs/robot-world.md``);
+- :mod:`.robot_driver` — the Robot Federate and its device (``docs/robot.md``);
+- :mod:`.ros_bridge` — the ROS 1 bridge and the stageros-style world node (``docs/ros-bridge.md``);
+- :mod:`.testbench` — the UVM-style testbench on the DE engine (``docs/robot.md``).
+
+``mirror`` and the ``paper1*`` modules here are deprecated aliases of their new homes under
+:mod:`hlacore.experiments`, kept for one release.
 """

@@ -26,12 +26,13 @@ from typing import TYPE_CHECKING, Any, Callable, Optional, Union
 
 from hlacore import rti
 
+from .actor import Actor
 from .director import Director, EmptySchedule
 
 if TYPE_CHECKING:
     from .hla_actors import InteractionReceiver, ObjectSubscriber
 
-__all__ = ["HlaDirector", "TimeMode", "DirectorAmbassador"]
+__all__ = ["HlaActor", "HlaDirector", "TimeMode", "DirectorAmbassador"]
 
 # Made at import time by hlacore.rti from the native module, so looked up by name.
 _FederationExecutionAlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
@@ -205,8 +206,6 @@ class HlaDirector(Director):
         self.start_time = self.granted = start
         self._set_time(start)
         self._timestamp_order = self.rtia.getOrderingHandle("Timestamp")
-        from .hla_actors import HlaActor
-
         hla_actors = [a for a in self.actors if isinstance(a, HlaActor)]
         for actor in hla_actors:
             actor.declare(self)
@@ -361,3 +360,24 @@ class DirectorAmbassador(rti.FederateAmbassador):
     def timeAdvanceGrant(self, time: float) -> None:
         """Passed on to the delegate (the director reads the grant from ``await_grant``)."""
         self._forward("timeAdvanceGrant", time)
+
+
+class HlaActor(Actor):
+    """Base class of actors that talk to the RTI through an :class:`HlaDirector`.
+
+    The director calls :meth:`declare` on every HLA actor (publish, subscribe) and then
+    :meth:`register` on every one (register object instances) before any actor's ``initialize()``.
+    """
+
+    def hla(self) -> HlaDirector:
+        """The actor's director, which must be an :class:`HlaDirector` (TypeError otherwise)."""
+        director = self.director_or_raise()
+        if not isinstance(director, HlaDirector):
+            raise TypeError(f"{type(self).__name__} {self.name!r} needs an HlaDirector, not {type(director).__name__}")
+        return director
+
+    def declare(self, director: HlaDirector) -> None:
+        """Publish and subscribe (called once, after time regulation is set up)."""
+
+    def register(self, director: HlaDirector) -> None:
+        """Register object instances (called once, after every HLA actor declared)."""

@@ -16,14 +16,12 @@ Values are encoded with a :data:`Codec` per attribute or parameter: an :mod:`hla
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Callable, Iterable, Mapping, Optional, Union
+from typing import Any, Callable, Iterable, Mapping, Optional, Union
 
 from hlacore import omt, rti
 
-from .actor import Actor, InputPort, OutputPort
-
-if TYPE_CHECKING:
-    from .hla import HlaDirector
+from .actor import InputPort, OutputPort
+from .hla import HlaActor, HlaDirector
 
 __all__ = [
     "Codec",
@@ -91,29 +89,6 @@ class Received:
     timestamp: Optional[float]
     time: float
     tag: str
-
-
-class HlaActor(Actor):
-    """Base class of actors that talk to the RTI through an :class:`HlaDirector`.
-
-    The director calls :meth:`declare` on every HLA actor (publish, subscribe) and then
-    :meth:`register` on every one (register object instances) before any actor's ``initialize()``.
-    """
-
-    def hla(self) -> "HlaDirector":
-        """The actor's director, which must be an :class:`HlaDirector` (TypeError otherwise)."""
-        from .hla import HlaDirector
-
-        director = self.director_or_raise()
-        if not isinstance(director, HlaDirector):
-            raise TypeError(f"{type(self).__name__} {self.name!r} needs an HlaDirector, not {type(director).__name__}")
-        return director
-
-    def declare(self, director: "HlaDirector") -> None:
-        """Publish and subscribe (called once, after time regulation is set up)."""
-
-    def register(self, director: "HlaDirector") -> None:
-        """Register object instances (called once, after every HLA actor declared)."""
 
 
 class ObjectPublisher(HlaActor):

@@ -9,7 +9,11 @@
 - :mod:`.report` — the per-cycle ``location`` report;
 - :mod:`.federate` — the control loop as a federate (stepped or best-effort).
 
-``python -m hlacore.federates.robot_driver --help`` runs the federate. See ``docs/robot.md``.
+``python -m hlacore.federates.robot_driver --help`` runs the federate. See ``docs/robot.md``. The §6.2 robot
+(:mod:`.mirrored`, with the :mod:`.avoid` controllers) is a federate too, parameterised by its mirror; the
+scenario that uses it is :mod:`hlacore.experiments.mirror`.
+
+Federates layer: imports the core and :mod:`hlacore.federates.robot_world` (the world's FOM codec).
 """
 
 from .controller import commands_for_move

@@ -1,5 +1,9 @@
 """The robot world: a pymunk 2-D world of Stage-style differential-drive robots, loaded from Stage
-``.world`` files, stepped with a fixed dt, and joinable to a federation (docs/robot-world.md)."""
+``.world`` files, stepped with a fixed dt, and joinable to a federation (docs/robot-world.md).
+
+Federates layer: imports only the core; it knows nothing of ROS (the stageros-style node is
+:mod:`hlacore.federates.ros_bridge.stage_node`). Paper 1's scenario is :mod:`hlacore.experiments.paper1`.
+"""
 
 from .codec import FEDERATION, FOM_PATH
 from .federate import Command, WorldFederate

@@ -1,7 +1,10 @@
 """The ROS 1 bridge: a rospy node and an HLA federate of the robot world in one process (docs/ros-bridge.md).
 
 Importing it imports Debian's rospy (see :mod:`.ros_import`); without ROS installed it raises an
-ImportError that names the Debian packages to install.
+ImportError that names the Debian packages to install. Also here: :mod:`.stage_node` (the robot world as a
+stageros-style ROS node), :mod:`.master` (a ROS master for one run) and :mod:`.children` (child processes).
+
+Federates layer: imports the core and :mod:`hlacore.federates.robot_world`.
 """
 
 from .ros_import import INSTALL_HINT, import_rospy

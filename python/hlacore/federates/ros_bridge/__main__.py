@@ -6,7 +6,7 @@
         [--await-state 5] [--wait-connections 30] ...
 
 ``--world`` bridges robots simulated by an HLA federate (the robot world) to ROS; ``--world-node`` bridges
-robots simulated by a ROS node (``python -m hlacore.federates.robot_world.stage_node FILE``) to HLA: the
+robots simulated by a ROS node (``python -m hlacore.federates.ros_bridge.stage_node FILE``) to HLA: the
 ``cmd_vel`` interactions go out as Twist, the node's odometry, ground truth, scan and stall come back as
 ``WorldRobot`` attributes of instances the bridge registers.
 

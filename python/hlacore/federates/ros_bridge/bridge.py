@@ -7,7 +7,7 @@ reflections of the mapped robots are published as ``nav_msgs/Odometry`` (:class:
 ``sensor_msgs/Range`` (:class:`RangeOut`, the nearest beam) and ``std_msgs/Bool`` (:class:`StallOut`).
 
 The other direction, for robots simulated by a ROS node (a stageros-style simulator,
-:mod:`hlacore.federates.robot_world.stage_node`): HLA → ROS, each :class:`TwistOut` publishes the ``cmd_vel``
+:mod:`.stage_node`): HLA → ROS, each :class:`TwistOut` publishes the ``cmd_vel``
 interactions naming its robot as ``geometry_msgs/Twist``; ROS → HLA, :class:`OdometryIn` (``odometry`` or
 ``pose``), :class:`ScanIn` and :class:`RangeIn` (``ranges``) and :class:`StallIn` (``stall``) become the
 attributes of a ``WorldRobot`` instance that the bridge registers under the robot's name.

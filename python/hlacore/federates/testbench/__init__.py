@@ -6,8 +6,11 @@
 - :mod:`.display` — a progress line per cycle;
 - :mod:`.plotter` — CSV trace and trajectory PNG (matplotlib optional);
 - :mod:`.delays` — the delay decomposition in Table 1's form;
-- :mod:`.bench` — the model on an :class:`~hlacore.federates.de.HlaDirector`, run and result;
-- :mod:`.experiment` — the whole experiment (testbench here, robot in its own process), the main job's body.
+- :mod:`.bench` — the model on an :class:`~hlacore.federates.de.HlaDirector`, run and result.
+
+Federates layer: imports the core, :mod:`hlacore.federates.de` and :mod:`hlacore.federates.robot_driver`.
+The whole experiment (testbench here, robot in its own process) is
+:mod:`hlacore.experiments.robot_in_the_loop`.
 
 ``python -m hlacore.federates.testbench --help`` runs the testbench federate alone. See ``docs/robot.md``.
 """

@@ -19,7 +19,7 @@ from hlacore.federates.robot_driver.navigation import Scenario, scenario_named
 
 from .bench import Testbench
 from .delays import format_table
-from .experiment import write_outputs
+from .plotter import write_outputs
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:

@@ -1,4 +1,5 @@
-"""The plotter: a CSV trace of every checked cycle and a trajectory PNG (robot vs reference, Fig. 8/9).
+"""The plotter: a CSV trace of every checked cycle and a trajectory PNG (robot vs reference, Fig. 8/9),
+and :func:`write_outputs`, which writes both and the delay table.
 
 The PNG needs matplotlib (the ``bench`` extra: ``pip install hlacore[bench]``); without it
 :func:`write_plot` returns a message saying so and writes nothing.
@@ -12,10 +13,11 @@ from typing import Mapping, Optional, Sequence
 
 from hlacore.federates.robot_driver.navigation import CELL, Scenario
 
+from .bench import TestbenchResult
 from .checker import Verdict
-from .delays import decompose
+from .delays import decompose, format_table
 
-__all__ = ["TRACE_COLUMNS", "write_trace", "write_plot"]
+__all__ = ["TRACE_COLUMNS", "write_trace", "write_plot", "write_outputs"]
 
 TRACE_COLUMNS = (
     "cycle", "expected_time", "arrival", "timestamp", "ref_a", "ref_b", "robot_a", "robot_b", "x", "y",
@@ -87,3 +89,12 @@ def write_plot(path: pathlib.Path, verdicts: Sequence[Verdict], scenario: Scenar
     figure.savefig(path, dpi=110)
     plt.close(figure)
     return f"plot: {path}"
+
+
+def write_outputs(out: pathlib.Path, result: TestbenchResult, scenario: Scenario, title: str) -> list[str]:
+    """Write ``trace.csv``, ``trajectory.png`` (if matplotlib) and ``delays.md`` into ``out``; returns a
+    line about each."""
+    write_trace(out / "trace.csv", result.verdicts, result.reflected_at, result.precision)
+    (out / "delays.md").write_text(format_table(result.delays))
+    return [f"trace: {out / 'trace.csv'}", write_plot(out / "trajectory.png", result.verdicts, scenario, title),
+            f"delay table: {out / 'delays.md'}"]

@@ -5,15 +5,15 @@ through the RTI, the ROS bridge and ROS topics (ros-ptolemy-hla-iess2015, Fig. 1
 
 Three processes besides roscore, the gateway and this one, each started here and ended by pid:
 
-* ``python -m hlacore.federates.robot_world.stage_node paper1.world`` — the world as a ROS node stepping on
+* ``python -m hlacore.federates.ros_bridge.stage_node paper1.world`` — the world as a ROS node stepping on
   ``/clock`` (Stage's role);
-* ``python -m hlacore.federates.robot_world.paper1_de`` — the controller federate (the avatar's go / slow /
+* ``python -m hlacore.experiments.paper1.de_controller`` — the controller federate (the avatar's go / slow /
   stop "Control" actor and the obstacles' driver on the DE engine);
 * ``python -m hlacore.federates.ros_bridge --world-node paper1.world --clock --await-state ...`` — the
   bridge: each grant ``G`` on ``/clock``, the node's state of ``G`` back as ``WorldRobot`` updates stamped
   ``G + L``, the ``cmd_vel`` interactions as Twists on ``/<robot>/cmd_vel``.
 
-The loop's delays are those of ``paper1_hla`` (the state of ``G`` is read at ``G + L``, the command acts
+The loop's delays are those of ``paper1.hla`` (the state of ``G`` is read at ``G + L``, the command acts
 from ``G + 2L``), so the robots' poses are those of the RTI-only run.
 """
 
@@ -30,11 +30,12 @@ from dataclasses import dataclass, field
 from typing import Any, Optional
 
 import hlacore.rti as rti
-from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, paper1, render
+from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, render
 from hlacore.federates.robot_world.world import Pose
+from hlacore.federates.ros_bridge.children import Children
 
-from .children import Children
-from .paper1 import Result, check
+from . import scenario as paper1
+from .checks import Result, check
 
 TRACE = "paper1-de-trace.csv"
 SNAPSHOT = "paper1-de-snapshot.png"
@@ -43,7 +44,7 @@ PLOT = "paper1-de-trajectories.png"
 
 @dataclass
 class ChainResult(Result):
-    """A :class:`~.paper1.Result` from the stage node's ticks, plus the DE federate's view."""
+    """A :class:`~.checks.Result` from the stage node's ticks, plus the DE federate's view."""
 
     control: list[tuple[float, float, float]] = field(default_factory=list)  # (DE time, distance, speed)
     de_grants: int = 0
@@ -75,10 +76,10 @@ def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, 
     result = ChainResult()
     try:
         with Children(dict(os.environ)) as kids:
-            stage = kids.start("stage node", ["-m", "hlacore.federates.robot_world.stage_node", str(world_file),
+            stage = kids.start("stage node", ["-m", "hlacore.federates.ros_bridge.stage_node", str(world_file),
                                               "--summary", str(stage_json), "--snapshot", str(out / SNAPSHOT)])
             stage.wait_for("stage_node ready", timeout)
-            de = kids.start("DE federate", ["-m", "hlacore.federates.robot_world.paper1_de", "--rtig", address,
+            de = kids.start("DE federate", ["-m", "hlacore.experiments.paper1.de_controller", "--rtig", address,
                                             "--duration", repr(duration), "--period", repr(period),
                                             "--timeout", repr(timeout), "--out", str(de_json)])
             de.wait_for("paper1_de joined", timeout)  # regulating before the bridge can advance

@@ -6,7 +6,7 @@ own process (``python -m hlacore.federates.robot_driver``, which starts the simu
 runs the testbench, waits for the robot, and writes into the folder:
 
 - ``scenario.txt``: the stimulus file; ``robot.log``: the robot process's output;
-- ``trace.csv``: one row per cycle (:data:`~.plotter.TRACE_COLUMNS`);
+- ``trace.csv``: one row per cycle (:data:`hlacore.federates.testbench.plotter.TRACE_COLUMNS`);
 - ``trajectory.png``: robot vs reference (when matplotlib is installed);
 - ``delays.md``: the delay decomposition in Table 1's form;
 - ``gateway-trace.csv``: the in-process gateway's message trace, whose marks split the communication delay
@@ -29,9 +29,9 @@ from hlacore.trace import hops
 from hlacore.federates.de import HlaDirector
 from hlacore.federates.robot_driver.navigation import Scenario, scenario_named
 
-from .bench import Testbench, TestbenchResult
-from .delays import cycle_hops, delay_table, format_table
-from .plotter import write_plot, write_trace
+from hlacore.federates.testbench.bench import Testbench, TestbenchResult
+from hlacore.federates.testbench.delays import cycle_hops, delay_table
+from hlacore.federates.testbench.plotter import write_outputs
 
 __all__ = ["ExperimentOptions", "Experiment", "run_experiment", "write_outputs"]
 
@@ -137,11 +137,3 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
     messages = write_outputs(out, result, scenario, title)
     return Experiment(result, out, int(robot.returncode), messages)
 
-
-def write_outputs(out: pathlib.Path, result: TestbenchResult, scenario: Scenario, title: str) -> list[str]:
-    """Write ``trace.csv``, ``trajectory.png`` (if matplotlib) and ``delays.md`` into ``out``; returns a
-    line about each."""
-    write_trace(out / "trace.csv", result.verdicts, result.reflected_at, result.precision)
-    (out / "delays.md").write_text(format_table(result.delays))
-    return [f"trace: {out / 'trace.csv'}", write_plot(out / "trajectory.png", result.verdicts, scenario, title),
-            f"delay table: {out / 'delays.md'}"]

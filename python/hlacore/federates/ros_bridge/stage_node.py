@@ -1,7 +1,8 @@
 """The robot world as a stageros-style ROS node: Stage's role in paper 1 (ros-ptolemy-hla-iess2015), with
-the HLA side reached through the ROS bridge.
+the HLA side reached through the ROS bridge (``--world-node``). It lives with the bridge because it is ROS
+code (rospy, the bridge's message conversions); the robot world itself knows nothing of ROS.
 
-    python -m hlacore.federates.robot_world.stage_node WORLD [--dt 0.01] [--watchdog 0.2]
+    python -m hlacore.federates.ros_bridge.stage_node WORLD [--dt 0.01] [--watchdog 0.2]
         [--rate R] [--summary FILE.json] [--snapshot FILE.png] [--until T]
 
 Topics, per robot (named by the world file's ``name``, else ``robot_<index>``, as stageros with ``-u``):
@@ -39,9 +40,12 @@ import threading
 import time as _time
 from typing import Any, Optional, Sequence
 
-from .render import trajectories, write_snapshot
-from .world import Pose, World
-from .worldfile import read_world
+from hlacore.federates.robot_world.render import trajectories, write_snapshot
+from hlacore.federates.robot_world.world import Pose, World
+from hlacore.federates.robot_world.worldfile import read_world
+
+from .bridge import yaw_quaternion
+from .ros_import import import_rospy
 
 
 class StageNode:
@@ -67,8 +71,6 @@ class StageNode:
     def start(self, follow_clock: bool = True) -> None:
         """Init the ROS node, advertise every robot's topics, subscribe its ``cmd_vel`` (and ``/clock`` when
         ``follow_clock``)."""
-        from hlacore.federates.ros_bridge.ros_import import import_rospy
-
         rospy = import_rospy()
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
@@ -152,8 +154,6 @@ class StageNode:
 
     def _publish(self, t: float) -> None:
         rospy, Odometry, LaserScan, Range, Bool, _ = self._msgs
-        from hlacore.federates.ros_bridge.bridge import yaw_quaternion
-
         stamp = rospy.Time.from_sec(t)
         for robot in self.world.robots:
             pubs = self._pubs[robot.name]
@@ -208,7 +208,7 @@ def last_step_at_or_before(t: float, dt: float) -> int:
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """The command (see the module docstring)."""
-    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.robot_world.stage_node",
+    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.ros_bridge.stage_node",
                                      description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("world", help="a Stage .world file")
     parser.add_argument("--dt", type=float, default=0.01, help="physics step (s)")

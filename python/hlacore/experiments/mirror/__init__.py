@@ -10,5 +10,8 @@ reads, a third robot driven by a plain ROS node, the reference trajectory, and t
 - :mod:`.outputs` — CSV trace and trajectory plot;
 (the run's ROS master, started when none answers, comes from :mod:`hlacore.federates.ros_bridge.master`).
 
-``python -m hlacore.federates.mirror --help`` runs it.
+``python -m hlacore.experiments.mirror --help`` runs it.
+
+Experiments layer: built on :mod:`hlacore.federates.robot_world`, :mod:`~hlacore.federates.robot_driver`
+(the §6.2 robot, :mod:`~hlacore.federates.robot_driver.mirrored`) and :mod:`~hlacore.federates.ros_bridge`.
 """

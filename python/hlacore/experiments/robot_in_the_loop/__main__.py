@@ -1,6 +1,7 @@
 """The main job: the robot-in-the-loop A* experiment of testing-rtes-hla-2016 §6, end to end.
 
-Run with ``python -m hlacore.demo`` (or ``./scripts/run.sh``). With no option it runs the paper's calibrated
+Run with ``python -m hlacore.experiments.robot_in_the_loop`` (or ``./scripts/run.sh``; the old
+``python -m hlacore.demo`` still works for one release). With no option it runs the paper's calibrated
 robot on the 5x5 grid on an in-process gateway: the testbench federate (sequencer, reference model,
 checker, display) here, the Robot Federate in its own process, the simulated device behind a pty. It prints
 a line per cycle, writes the trace, the trajectory plot and the delay table into the output folder it
@@ -15,8 +16,9 @@ import pathlib
 import sys
 from typing import Optional, Sequence
 
-from .federates.testbench.delays import format_table
-from .federates.testbench.experiment import ExperimentOptions, run_experiment
+from hlacore.federates.testbench.delays import format_table
+
+from .experiment import ExperimentOptions, run_experiment
 
 
 def _grid(text: str) -> str:
@@ -27,7 +29,7 @@ def _grid(text: str) -> str:
 
 def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
     """The command line as :class:`ExperimentOptions`."""
-    parser = argparse.ArgumentParser(prog="python -m hlacore.demo", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(prog="python -m hlacore.experiments.robot_in_the_loop", description=__doc__.splitlines()[0])
     parser.add_argument("--rtig", metavar="HOST:PORT", default=None,
                         help="a running rtig instead of the in-process gateway")
     parser.add_argument("--gateway-trace", metavar="FILE", type=pathlib.Path, default=None,

@@ -1,4 +1,4 @@
-"""``python -m hlacore.federates.mirror [OUTDIR] [--defective-wheel [F]] [--corrected] [--mirror-from
+"""``python -m hlacore.experiments.mirror [OUTDIR] [--defective-wheel [F]] [--corrected] [--mirror-from
 commands|odometry] [--cycles N] [--rtig HOST:PORT]``: paper 2 §6.2 in one command (docs/mirror.md).
 
 Without ``--rtig`` it runs an in-process gateway; without a ROS master at ``$ROS_MASTER_URI`` it starts
@@ -25,7 +25,7 @@ from .run import run
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """The command (see the module docstring)."""
-    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.mirror")
+    parser = argparse.ArgumentParser(prog="python -m hlacore.experiments.mirror")
     parser.add_argument("outdir", nargs="?", default="mirror-out")
     parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default: an in-process gateway)")
     parser.add_argument("--defective-wheel", nargs="?", type=float, const=0.05, default=0.0,

@@ -2,12 +2,12 @@
 :mod:`hlacore.federates.de`, commanding the robots through the RTI (and, in paper 1's chain, the ROS bridge
 and a stageros-style node).
 
-    python -m hlacore.federates.robot_world.paper1_de --rtig HOST:PORT [--duration 30] [--out FILE.json]
+    python -m hlacore.experiments.paper1.de_controller --rtig HOST:PORT [--duration 30] [--out FILE.json]
 
 The model: an :class:`~hlacore.federates.de.HlaDirector` (regulating and constrained, lookahead 0.1 s,
 event-driven NER: each reflected state is granted at its own timestamp), an ``ObjectSubscriber`` of the ``WorldRobot``
 ``pose`` and ``ranges``, the paper's "Control" actor (:class:`AvatarControl`, the go / slow / stop rule of
-:class:`~.paper1.Controller`) and the obstacles' driver (:class:`ObstacleDrivers`, :class:`~.paper1.ObstacleDriver`;
+:class:`~.scenario.Controller`) and the obstacles' driver (:class:`ObstacleDrivers`, :class:`~.scenario.ObstacleDriver`;
 in the paper a Python ROS node drove them, here the DE model does, so that the whole scenario is in lockstep),
 both feeding an ``InteractionSender`` of ``cmd_vel``. Each reflected state is an event at its timestamp; the
 actors answer it at the same tag, and the commands go out stamped that time plus the lookahead.
@@ -28,7 +28,9 @@ from typing import Any, Optional, Sequence
 import hlacore.rti as rti
 from hlacore.federates.de import Actor, HlaDirector, InteractionSender, ObjectSubscriber
 
-from . import codec, paper1
+from hlacore.federates.robot_world import codec
+
+from . import scenario as paper1
 
 ROBOTS = ("avatar",) + paper1.OBSTACLES
 
@@ -177,7 +179,7 @@ def await_robots(model: Model, robots: Sequence[str] = ROBOTS, timeout: float = 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """The command (see the module docstring)."""
-    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.robot_world.paper1_de",
+    parser = argparse.ArgumentParser(prog="python -m hlacore.experiments.paper1.de_controller",
                                      description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default $HLACORE_RTIG)")
     parser.add_argument("--duration", type=float, default=30.0)

@@ -158,7 +158,7 @@ def run(address: str, corrected: bool = False, defective_wheel: float = 0.0, cyc
     try:
         bridge.start()
         flags = ["--corrected"] if corrected else []
-        node, node_out = _spawn(["-m", "hlacore.federates.mirror.node", "--robot", ROSBOT, "--cycle",
+        node, node_out = _spawn(["-m", "hlacore.experiments.mirror.node", "--robot", ROSBOT, "--cycle",
                                  repr(params.cycle), "--lookahead", repr(PERIOD), *flags])
         robot, robot_out = _spawn(["-m", "hlacore.federates.robot_driver", "--rtig", address, "--mirror", MIRROR,
                                    "--cycles", str(cycles), "--cycle", repr(params.cycle), "--defective-wheel",

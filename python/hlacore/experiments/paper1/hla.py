@@ -13,9 +13,11 @@ from typing import Any, Optional
 
 import hlacore.rti as rti
 
-from . import codec, paper1
-from .federate import WorldFederate
-from .world import World
+from hlacore.federates.robot_world import codec
+from hlacore.federates.robot_world.federate import WorldFederate
+from hlacore.federates.robot_world.world import World
+
+from . import scenario as paper1
 
 
 class _Reflections(rti.FederateAmbassador):

@@ -2,10 +2,10 @@
 as a plain ROS node in another process, as in ros-ptolemy-hla-iess2015 (Stage behind a ROS bridge, the
 "Control" script commanding the avatar, a Python ROS node driving the obstacles).
 
-    python -m hlacore.federates.ros_bridge.paper1 [OUTDIR] [--rtig HOST:PORT] [--duration 30]
+    python -m hlacore.experiments.paper1.ros [OUTDIR] [--rtig HOST:PORT] [--duration 30]
         [--controller node|de]
 
-``--controller de`` plays paper 1's own chain instead (:mod:`.paper1_chain`): the controller a DE-engine
+``--controller de`` plays paper 1's own chain instead (:mod:`.chain`): the controller a DE-engine
 federate, the world a stageros-style ROS node, the bridge between them, each in its own process; it writes
 ``paper1-de-trace.csv``, ``paper1-de-snapshot.png`` and ``paper1-de-trajectories.png``. The default
 (``node``) is described below.
@@ -13,7 +13,7 @@ federate, the world a stageros-style ROS node, the bridge between them, each in 
 One process holds the world federate (on a thread) and the bridge (timed, ``/clock``, waiting each cycle
 for the controllers' answers: a lockstep through ROS); the node process (``--node``) subscribes
 ``/avatar/range`` and answers each reading with a go / slow / stop Twist on ``/avatar/cmd_vel``
-(:class:`hlacore.federates.robot_world.paper1.Controller`), and drives each obstacle at 0.3 m/s on
+(:class:`.scenario.Controller`), and drives each obstacle at 0.3 m/s on
 ``/obstacle<i>/cmd_vel`` until its ground truth (``/obstacle<i>/base_pose_ground_truth``) has travelled 5 m.
 Without a ROS master at ``$ROS_MASTER_URI`` it starts ``roscore`` on a free loopback port and stops it (by
 pid) at the end; without ``--rtig`` it uses an in-process gateway. It prints the checks and one JSON summary
@@ -32,75 +32,22 @@ import subprocess
 import sys
 import threading
 import time
-from dataclasses import dataclass, field
-from typing import Any, Optional, Sequence
+from typing import Optional, Sequence
 
 import hlacore
 import hlacore.rti as rti
-from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, paper1, render
-from hlacore.federates.robot_world.world import Pose
+from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, render
+from hlacore.federates.ros_bridge.bridge import RosBridge, world_mappings
+from hlacore.federates.ros_bridge.master import ros_master
 
-from .bridge import RosBridge, world_mappings
-from .master import ros_master
-
-HALF = 0.33 / 2  #: the robots' half size
-WALL_FACE = 7.0 - 0.1  #: x of the wall's face
-
-
-@dataclass
-class Result:
-    """What a run recorded, and its checks."""
-
-    times: list[float] = field(default_factory=list)
-    poses: list[dict[str, Pose]] = field(default_factory=list)
-    stall_steps: dict[str, int] = field(default_factory=dict)
-    late_cycles: int = 0
-    sent: int = 0
-    checks: dict[str, bool] = field(default_factory=dict)
-    world: Optional[World] = None  #: the world at the end of the run
-
-    @property
-    def ok(self) -> bool:
-        """All checks passed."""
-        return bool(self.checks) and all(self.checks.values())
-
-    def summary(self) -> dict[str, Any]:
-        """The JSON-able summary printed by the command."""
-        final = self.poses[-1]["avatar"]
-        return {"checks": self.checks, "ok": self.ok, "grants": len(self.times), "end": self.times[-1],
-                "avatar_x": final.x, "wall_gap": WALL_FACE - (final.x + HALF), "stall_steps": self.stall_steps,
-                "late_cycles": self.late_cycles, "sent": self.sent,
-                "obstacles_y": {n: self.poses[-1][n].y for n in paper1.OBSTACLES}}
-
-
-def check(result: Result) -> dict[str, bool]:
-    """Paper 1's checks on the poses at every grant: no robot ever blocked, the avatar and an obstacle never
-    overlap, every obstacle crossed, the avatar was held back by an obstacle at some point, and it ends
-    past the obstacles, stopped, its front less than the controller's stop distance from the wall."""
-    avatar = [p["avatar"] for p in result.poses]
-    apart = True
-    for name in paper1.OBSTACLES:
-        for a, o in zip(avatar, (p[name] for p in result.poses)):
-            if abs(a.x - o.x) < 2 * HALF and abs(a.y - o.y) <= 2 * HALF:
-                apart = False
-    xs = [a.x for a in avatar]
-    held = any(x1 == x0 for x0, x1 in zip(xs[:150], xs[1:150]) if x0 > 0)
-    gap = WALL_FACE - (avatar[-1].x + HALF)
-    return {
-        "no_stall": all(v == 0 for v in result.stall_steps.values()),
-        "no_overlap": apart,
-        "obstacles_crossed": all(result.poses[-1][n].y > 2.0 for n in paper1.OBSTACLES),
-        "held_back": held,
-        "stopped_before_wall": avatar[-1].x > 5.0 and 0.0 < gap <= paper1.Controller().stop_below
-        and xs[-1] == xs[-20],
-    }
-
+from . import scenario as paper1
+from .checks import HALF, WALL_FACE, Result, check  # noqa: F401  (HALF, WALL_FACE: re-exported, they were here)
 
 # ---- the ROS node (the paper's controllers), in its own process ----
 
 def node_main(timeout: float = 600.0) -> int:
     """The controllers' ROS node: answers each avatar Range and each obstacle pose with a Twist."""
-    from .ros_import import import_rospy
+    from hlacore.federates.ros_bridge.ros_import import import_rospy
 
     rospy = import_rospy()
     from geometry_msgs.msg import Twist
@@ -154,7 +101,7 @@ def run(address: str, duration: float = 30.0, period: float = 0.1, dt: float = 0
                        await_inputs=input_timeout)
     try:
         bridge.start()
-        node = subprocess.Popen([sys.executable, "-m", "hlacore.federates.ros_bridge.paper1", "--node"],
+        node = subprocess.Popen([sys.executable, "-m", "hlacore.experiments.paper1.ros", "--node"],
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                                 text=True)
         wired = ["/avatar/range", "/avatar/cmd_vel"] + [f"/{n}/{t}" for n in paper1.OBSTACLES
@@ -234,7 +181,7 @@ def write_outputs(result: Result, directory: str) -> list[str]:
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """The command (see the module docstring)."""
-    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.ros_bridge.paper1")
+    parser = argparse.ArgumentParser(prog="python -m hlacore.experiments.paper1.ros")
     parser.add_argument("outdir", nargs="?", default="paper1-ros-out")
     parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default: an in-process gateway)")
     parser.add_argument("--duration", type=float, default=30.0)
@@ -260,7 +207,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
 
 
 def _main_de(outdir: str, rtig: Optional[str], duration: float) -> int:
-    from . import paper1_chain
+    from . import chain as paper1_chain
 
     with contextlib.ExitStack() as stack:
         stack.enter_context(ros_master())

@@ -1,7 +1,7 @@
 """The third robot's controller: a plain rospy node (no HLA) running the same "go forward, avoid what the
 sonar sees" rule from the robot's ROS odometry and range, publishing Twist.
 
-    python -m hlacore.federates.mirror.node [--robot rosbot] [--corrected] [--cycle 0.5] [--lookahead 0.1]
+    python -m hlacore.experiments.mirror.node [--robot rosbot] [--corrected] [--cycle 0.5] [--lookahead 0.1]
 
 It pairs ``/<robot>/odom`` and ``/<robot>/range`` by header stamp (the bridge stamps both with the
 federation time ``G + lookahead`` of the state of ``G``). For a state taken at a multiple of the control
@@ -24,7 +24,7 @@ from hlacore.federates.robot_driver.avoid import AvoidParams, make_controller
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """Run the node until SIGTERM/SIGINT or ``--timeout`` wall seconds."""
-    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.mirror.node")
+    parser = argparse.ArgumentParser(prog="python -m hlacore.experiments.mirror.node")
     parser.add_argument("--robot", default="rosbot")
     parser.add_argument("--corrected", action="store_true")
     parser.add_argument("--cycle", type=float, default=0.5)

@@ -10,8 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Optional
 
-from .world import Pose, World
-from .worldfile import WorldSpec, load_world
+from hlacore.federates.robot_world.world import Pose, World
+from hlacore.federates.robot_world.worldfile import WorldSpec, load_world
 
 #: The world (Stage syntax). The avatar faces +x; the obstacles start on its right (y < 0) heading +y.
 WORLD = """
@@ -117,7 +117,7 @@ def write_outputs(world: World, trace: Trace, directory: str) -> list[str]:
     import csv
     import pathlib
 
-    from . import render
+    from hlacore.federates.robot_world import render
 
     out = pathlib.Path(directory)
     out.mkdir(parents=True, exist_ok=True)
@@ -142,7 +142,7 @@ def write_outputs(world: World, trace: Trace, directory: str) -> list[str]:
 
 
 def main(argv: Optional[list[str]] = None) -> int:
-    """``python -m hlacore.federates.robot_world.paper1 [OUTDIR]``: run the scenario, print its checks,
+    """``python -m hlacore.experiments.paper1.scenario [OUTDIR]``: run the scenario, print its checks,
     write the trace and pictures (default directory: paper1-out)."""
     import sys
 

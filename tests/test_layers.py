@@ -215,3 +215,44 @@ def test_the_graph_sees_relative_function_level_and_aliased_imports() -> None:
     assert layer("hlacore.federates.ros_bridge.bridge") > layer("hlacore.federates.robot_world.world")
     assert find_cycles({"a": Module("a", PACKAGE, False, {"b": 1}), "b": Module("b", PACKAGE, False, {"a": 2})}) \
         == [["a", "b", "a"]]
+
+
+def aliases() -> dict[str, str]:
+    """The deprecated old paths and where each moved."""
+    return {m.name: m.moved_to for m in graph().values() if m.moved_to is not None}
+
+
+def test_nothing_in_the_package_imports_a_deprecated_alias() -> None:
+    modules, old = graph(), aliases()
+    assert old, "the old paths keep working for one release"
+    for module in modules.values():
+        assert not set(module.imports) & set(old), f"{module.name} imports a deprecated path"
+    for new in old.values():
+        assert new in modules or f"{new}.__main__" in modules, new
+
+
+@pytest.mark.parametrize("old", sorted(aliases()))
+def test_old_path_still_imports_and_warns(old: str) -> None:
+    new = aliases()[old]
+    saved = {name: sys.modules.pop(name) for name in list(sys.modules) if name == old or name.startswith(old + ".")}
+    try:
+        with pytest.warns(DeprecationWarning, match=new.removesuffix(".__main__").replace(".", r"\.")):
+            module = importlib.import_module(old)
+        if not module.__spec__ or module.__spec__.submodule_search_locations is None or module.__name__ != old:
+            assert module is importlib.import_module(new)  # the very module, not a copy
+    finally:
+        for name in [name for name in sys.modules if name == old or name.startswith(old + ".")]:
+            del sys.modules[name]
+        sys.modules.update(saved)
+
+
+RUNNABLE = ["hlacore.demo", "hlacore.federates.mirror", "hlacore.federates.robot_world.paper1_de",
+            "hlacore.federates.robot_world.stage_node", "hlacore.federates.ros_bridge.paper1"]
+
+
+@pytest.mark.parametrize("old", RUNNABLE)
+def test_python_m_old_path_still_runs(old: str) -> None:
+    done = subprocess.run([sys.executable, "-m", old, "--help"], capture_output=True, text=True, timeout=60,
+                          stdin=subprocess.DEVNULL)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "usage: python -m hlacore." in done.stdout and "DeprecationWarning" in done.stderr, done.stderr

@@ -11,10 +11,11 @@ loses F of its speed); each cycle is printed as one JSON line.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import sys
 from importlib import resources
-from typing import Optional, Sequence
+from typing import Callable, Iterator, Optional, Sequence
 
 from .driver import TxRxDriver
 from .device import SimulatedDevice, spawn_simulated_device
@@ -57,31 +58,34 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         return _mirrored(args)
 
     scenario = Scenario.load(args.scenario) if args.scenario else scenario_named(args.grid)
-    simulated: Optional[SimulatedDevice] = None
-    if args.device is None:
-        calibration = MISCALIBRATED if args.miscalibrated else CALIBRATED
-        simulated = spawn_simulated_device(scenario, calibration, args.time_scale)
-        path, transport = simulated.path, "pty"
-    else:
-        path, transport = args.device, args.transport
+    calibration = MISCALIBRATED if args.miscalibrated else CALIBRATED
+    with _driver(args, lambda: spawn_simulated_device(scenario, calibration, args.time_scale)) as driver:
+        mode = SyncMode.BEST_EFFORT if args.best_effort else SyncMode.STEPPED
+        robot = RobotFederate.join(args.rtig, args.federation, args.fed_file, driver, scenario,
+                                   mode=mode, lookahead=args.lookahead, on_cycle=_print)
+        print("robot ready", flush=True)
+        try:
+            robot.setup(args.timeout)
+            robot.run(args.cycles, args.timeout)
+        finally:
+            robot.resign()
+    return 0
+
+
+@contextlib.contextmanager
+def _driver(args: argparse.Namespace, simulate: Callable[[], SimulatedDevice]) -> Iterator[TxRxDriver]:
+    """The driver on ``--device``, or on a simulated device (``simulate()``) closed with it."""
+    simulated = simulate() if args.device is None else None
+    path, transport = (simulated.path, "pty") if simulated is not None else (args.device, args.transport)
     try:
         driver = TxRxDriver.open(path, transport)
         try:
-            mode = SyncMode.BEST_EFFORT if args.best_effort else SyncMode.STEPPED
-            robot = RobotFederate.join(args.rtig, args.federation, args.fed_file, driver, scenario,
-                                       mode=mode, lookahead=args.lookahead, on_cycle=_print)
-            print("robot ready", flush=True)
-            try:
-                robot.setup(args.timeout)
-                robot.run(args.cycles, args.timeout)
-            finally:
-                robot.resign()
+            yield driver
         finally:
             driver.close()
     finally:
         if simulated is not None:
             simulated.close()
-    return 0
 
 
 def _mirrored(args: argparse.Namespace) -> int:
@@ -89,31 +93,19 @@ def _mirrored(args: argparse.Namespace) -> int:
     from .mirrored import MirroredRobotFederate, record_json
 
     floor = Scenario(1, 1)  # the start cell at the origin; the open floor has no wall and no border
-    simulated: Optional[SimulatedDevice] = None
-    if args.device is None:
-        calibration = Calibration(defective_wheel=args.defective_wheel)
-        simulated = spawn_simulated_device(floor, calibration, args.time_scale, heading_deg=0.0, open_floor=True)
-        path, transport = simulated.path, "pty"
-    else:
-        path, transport = args.device, args.transport
-    try:
-        driver = TxRxDriver.open(path, transport)
+    calibration = Calibration(defective_wheel=args.defective_wheel)
+    with _driver(args, lambda: spawn_simulated_device(floor, calibration, args.time_scale, heading_deg=0.0,
+                                                      open_floor=True)) as driver:
+        robot = MirroredRobotFederate(
+            driver, make_controller(args.corrected), args.mirror, address=args.rtig, cycle=args.cycle,
+            lookahead=min(0.1, args.cycle), mirror_from=args.mirror_from,
+            on_cycle=lambda r: print(json.dumps(record_json(r)), flush=True))
+        robot.join(args.timeout)
+        print("robot ready", flush=True)
         try:
-            robot = MirroredRobotFederate(
-                driver, make_controller(args.corrected), args.mirror, address=args.rtig, cycle=args.cycle,
-                lookahead=min(0.1, args.cycle), mirror_from=args.mirror_from,
-                on_cycle=lambda r: print(json.dumps(record_json(r)), flush=True))
-            robot.join(args.timeout)
-            print("robot ready", flush=True)
-            try:
-                robot.run(args.cycles, args.timeout)
-            finally:
-                robot.resign()
+            robot.run(args.cycles, args.timeout)
         finally:
-            driver.close()
-    finally:
-        if simulated is not None:
-            simulated.close()
+            robot.resign()
     print("robot done", flush=True)
     return 0
 

@@ -1,0 +1,5 @@
+"""Deprecated alias of :mod:`hlacore.experiments.mirror.metrics` (moved in issue 14); removed in the next release."""
+
+from hlacore._deprecated import moved
+
+moved(__name__, "hlacore.experiments.mirror.metrics")

@@ -115,18 +115,6 @@ class _Lines:
         return self.lines
 
 
-def _stop(proc: "subprocess.Popen[str]", timeout: float = 15.0) -> int:
-    """SIGTERM by pid, then SIGKILL by pid if it lingers; the exit status."""
-    if proc.poll() is None:
-        proc.terminate()
-        try:
-            proc.wait(timeout)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
-    return int(proc.returncode)
-
-
 def _spawn(args: list[str]) -> "tuple[subprocess.Popen[str], _Lines]":
     proc = subprocess.Popen([sys.executable, *args], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                             stdin=subprocess.DEVNULL, text=True)
@@ -139,6 +127,7 @@ def run(address: str, corrected: bool = False, defective_wheel: float = 0.0, cyc
     """One run on the gateway at ``address`` with the ROS master of ``$ROS_MASTER_URI`` (the bridge is this
     process's ROS node: call once per process)."""
     from hlacore.federates.ros_bridge import OdometryOut, RosBridge, stage_mappings
+    from hlacore.federates.ros_bridge.children import stop_process
 
     params = params or AvoidParams()
     duration = (cycles + 1) * params.cycle  # the world carries out the last command too
@@ -206,12 +195,12 @@ def run(address: str, corrected: bool = False, defective_wheel: float = 0.0, cyc
         if robot.wait(cycle_timeout) != 0:
             raise RuntimeError(f"the robot federate failed: {robot_out.finish()[-20:]}")
         result.real = [json.loads(line) for line in robot_out.finish() if line.startswith('{"cycle"')]
-        _stop(node)
+        stop_process(node)
         result.node = next((json.loads(line) for line in reversed(node_out.finish()) if line.startswith("{")), {})
     finally:
         for proc in (robot, node):
             if proc is not None:
-                _stop(proc)
+                stop_process(proc)
                 if proc.stdout is not None:
                     proc.stdout.close()
         result.late_cycles = bridge.late_cycles

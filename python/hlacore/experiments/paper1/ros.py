@@ -38,6 +38,7 @@ import hlacore
 import hlacore.rti as rti
 from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, render
 from hlacore.federates.ros_bridge.bridge import RosBridge, world_mappings
+from hlacore.federates.ros_bridge.children import stop_process
 from hlacore.federates.ros_bridge.master import ros_master
 
 from . import scenario as paper1
@@ -130,13 +131,7 @@ def run(address: str, duration: float = 30.0, period: float = 0.1, dt: float = 0
             raise TimeoutError("the world federate did not finish")
     finally:
         if node is not None:
-            if node.poll() is None:
-                node.send_signal(signal.SIGTERM)
-                try:
-                    node.wait(15)
-                except subprocess.TimeoutExpired:
-                    node.kill()
-                    node.wait()
+            stop_process(node)
             if node.stdout is not None:
                 node.stdout.close()
         result.late_cycles, result.sent = bridge.late_cycles, bridge.sent

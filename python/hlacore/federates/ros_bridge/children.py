@@ -9,7 +9,22 @@ import subprocess
 import sys
 import threading
 import time
-from typing import Optional, Sequence
+from typing import Any, Optional, Sequence
+
+__all__ = ["Child", "Children", "stop_process"]
+
+
+def stop_process(proc: "subprocess.Popen[Any]", sig: int = signal.SIGTERM, timeout: float = 15.0) -> int:
+    """Send ``sig`` to ``proc`` by pid, wait up to ``timeout`` s, SIGKILL it by pid if it lingers; returns
+    its exit status."""
+    if proc.poll() is None:
+        proc.send_signal(sig)
+        try:
+            proc.wait(timeout)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+    return int(proc.returncode)
 
 
 class Child:
@@ -58,13 +73,7 @@ class Child:
 
     def stop(self, timeout: float = 15.0) -> int:
         """SIGTERM by pid, wait, SIGKILL by pid if it lingers; returns the exit status."""
-        if self.proc.poll() is None:
-            self.proc.send_signal(signal.SIGTERM)
-            try:
-                self.proc.wait(timeout)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
-                self.proc.wait()
+        stop_process(self.proc, timeout=timeout)
         self._reader.join(5.0)
         while not self._lines.empty():
             line = self._lines.get()

@@ -15,6 +15,8 @@ import time
 import xmlrpc.client
 from typing import Iterator
 
+from .children import stop_process
+
 
 def master_online(uri: str) -> bool:
     """Whether a ROS master answers at ``uri``."""
@@ -54,12 +56,6 @@ def ros_master(timeout: float = 30.0) -> Iterator[str]:
                 time.sleep(0.1)
             yield uri
         finally:
-            if proc.poll() is None:
-                proc.send_signal(signal.SIGINT)
-                try:
-                    proc.wait(15)
-                except subprocess.TimeoutExpired:
-                    proc.kill()
-                    proc.wait()
+            stop_process(proc, signal.SIGINT)
     if proc.returncode in (0, -signal.SIGINT):
         shutil.rmtree(home, ignore_errors=True)

@@ -26,7 +26,7 @@ class PingPong:
         self.federation = create(address)
         self.fed, self.amb = join(address, self.federation, "ping")
         if self.tso:
-            self.fed.enable_time(lambda: self.amb.enabled == 2)
+            self.fed.enable_time()
         self.peer: Child = python_peer("pong_peer.py", address, self.federation, mode)
         try:
             assert self.peer.read_json(timeout=60.0) == {"ready": True}

@@ -229,12 +229,9 @@ class Federate:
 
     def enable_time(self, lookahead: Optional[float] = 1.0, constrained: bool = True) -> None:
         """Enable regulation (unless lookahead is None) and/or constrained, waiting for each callback."""
-        if lookahead is not None:
-            self.rtia.enableTimeRegulation(self.rtia.queryFederateTime(), lookahead)
-            tick_until(lambda: bool(self.amb.named("timeRegulationEnabled")), self.rtia)
-        if constrained:
-            self.rtia.enableTimeConstrained()
-            tick_until(lambda: bool(self.amb.named("timeConstrainedEnabled")), self.rtia)
+        self.rtia.enable_time_management(
+            lookahead or 0.0, timeout=5.0, regulating=lookahead is not None, constrained=constrained
+        )
 
 
 @contextlib.contextmanager

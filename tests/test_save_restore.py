@@ -33,10 +33,7 @@ class Fed:
         return self.amb.named(name)
 
     def enable_time(self, lookahead: float = 1.0) -> None:
-        self.rtia.enableTimeRegulation(self.rtia.queryFederateTime(), lookahead)
-        tick_until(lambda: bool(self.named("timeRegulationEnabled")), self.rtia)
-        self.rtia.enableTimeConstrained()
-        tick_until(lambda: bool(self.named("timeConstrainedEnabled")), self.rtia)
+        self.rtia.enable_time_management(lookahead, timeout=5.0)
 
 
 def tick_all(predicate, *feds: Fed, timeout: float = 5.0) -> None:

@@ -11,15 +11,13 @@ import hlacore
 import hlacore.rti as rti
 from hlacore.status import status
 
-from conftest import ROBOT_FED, Recorder, RtigProcess, rtig_executable, tick_until
+from conftest import ROBOT_FED, Recorder, RtigProcess, rtig_executable
 
 
 def join_timed(address: str, name: str, lookahead: float) -> tuple[rti.RTIAmbassador, Recorder]:
     rtia, amb = rti.RTIAmbassador(address), Recorder()
     rtia.joinFederationExecution(name, "TestFed", amb)
-    rtia.enableTimeRegulation(0.0, lookahead)
-    rtia.enableTimeConstrained()
-    tick_until(lambda: bool(amb.named("timeConstrainedEnabled")), rtia)
+    rtia.enable_time_management(lookahead, timeout=5.0)
     return rtia, amb
 
 

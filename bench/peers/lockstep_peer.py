@@ -36,7 +36,7 @@ def main() -> None:
     pure = sys.argv[6:] == ["pure"]
     amb = Ambassador()
     fed = Joined(address, federation, name, amb)
-    fed.enable_time(lambda: amb.enabled == 2)
+    fed.enable_time()
     say(ready=True)
     await_start(fed, amb)
     payload = name.encode()

@@ -47,29 +47,20 @@ class Joined:
             self.rtia.publishObjectClass(robot, [self.location])
             self.obj = self.rtia.registerObjectInstance(robot, name)
 
-    def enable_time(self, enabled: Callable[[], bool]) -> None:
-        """Regulating (lookahead 1) and constrained; `enabled()` turns true on both callbacks."""
-        self.rtia.enableTimeRegulation(0.0, 1.0)
-        self.rtia.enableTimeConstrained()
-        tick_until(self.rtia, enabled)
+    def enable_time(self) -> None:
+        """Regulating (lookahead 1) and constrained, waiting for both callbacks."""
+        self.rtia.enable_time_management(1.0, timeout=60.0)
 
     def resign(self) -> None:
         self.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
 
 
 class TimeAmbassador(rti.FederateAmbassador):
-    """Counts the time-enabling callbacks and keeps the synchronization point state."""
+    """Keeps the synchronization point state."""
 
     def __init__(self) -> None:
-        self.enabled = 0
         self.announced = False
         self.synchronized = False
-
-    def timeRegulationEnabled(self, time: float) -> None:
-        self.enabled += 1
-
-    def timeConstrainedEnabled(self, time: float) -> None:
-        self.enabled += 1
 
     def announceSynchronizationPoint(self, label: str, tag: str) -> None:
         self.announced = True

@@ -52,7 +52,7 @@ def main() -> None:
     amb = Ambassador()
     fed = Joined(address, federation, "pong", amb)
     if tso:
-        fed.enable_time(lambda: amb.enabled == 2)
+        fed.enable_time()
     tick_until(fed.rtia, lambda: amb.discovered)
     say(ready=True)
     echoed = 0

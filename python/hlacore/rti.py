@@ -47,20 +47,10 @@ MAX_EXTENT: int = _core.MAX_EXTENT
 
 DEFAULT_ADDRESS = "127.0.0.1:60400"
 
-RTIexception = _core.RTIexception
+from . import exceptions as _exceptions
+from .exceptions import *  # noqa: F401,F403  (the HLA 1.3 exceptions, PyHLA exposes them here)
 
-
-def _export_exceptions() -> list[str]:
-    names = []
-    for name in dir(_core):
-        obj = getattr(_core, name)
-        if isinstance(obj, type) and issubclass(obj, _core.RTIexception):
-            globals()[name] = obj
-            names.append(name)
-    return names
-
-
-_EXCEPTION_NAMES = _export_exceptions()
+_EXCEPTION_NAMES = list(_exceptions.__all__)
 # PyHLA's spellings.
 RTIInternalError = _core.RTIinternalError
 Exception = _core.RTIexception  # noqa: A001  (hla.rti.Exception was PyHLA's base class)
@@ -249,6 +239,59 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
             raise _core.InvalidOrderingHandle(f"{handle!r} is not an ordering type")
         return _ORDER_NAMES[int(handle)]
 
+    # ---- conveniences (beyond PyHLA): what every federate writes around the services ----
+
+    def create_or_join(
+        self, federate: str, federation: str, fed_file: Optional[str], ambassador: Any
+    ) -> FederateHandle:
+        """Join ``federation`` as ``federate``, creating it from ``fed_file`` first unless it exists.
+
+        ``createFederationExecution(federation, fed_file)`` (skipped when ``fed_file`` is None; a
+        :class:`FederationExecutionAlreadyExists` is ignored: another federate created it), then
+        ``joinFederationExecution(federate, federation, ambassador)``. Returns the federate handle and
+        raises what those two services raise otherwise.
+        """
+        if fed_file is not None:
+            try:
+                self.createFederationExecution(federation, fed_file)
+            except _exceptions.FederationExecutionAlreadyExists:
+                pass
+        return self.joinFederationExecution(federate, federation, ambassador)
+
+    def enable_time_management(
+        self,
+        lookahead: float,
+        timeout: Optional[float] = None,
+        *,
+        regulating: bool = True,
+        constrained: bool = True,
+    ) -> float:
+        """Become time-regulating and time-constrained and wait until both are enabled; returns the time.
+
+        ``enableTimeRegulation(queryFederateTime(), lookahead)`` and ``enableTimeConstrained()`` (either
+        left out with ``regulating=False`` / ``constrained=False``), then tick until
+        ``timeRegulationEnabled`` and ``timeConstrainedEnabled`` have been delivered, to the federate
+        ambassador as usual (whether or not it defines them). Other callbacks that arrive meanwhile are
+        delivered too. Raises what the two services raise, and :class:`TimeoutError` when ``timeout``
+        seconds pass first (the requests stay pending). Ctrl-C interrupts the wait.
+        """
+        watcher = _EnableWatcher(self._federate_ambassador, regulating, constrained)
+        if regulating:
+            self.enableTimeRegulation(self.queryFederateTime(), lookahead)
+        if constrained:
+            self.enableTimeConstrained()
+        deadline = None if timeout is None else _time.monotonic() + timeout
+        while not watcher.done():
+            if self._dispatch(watcher, False, -1.0):
+                continue
+            remaining = -1.0
+            if deadline is not None:
+                remaining = deadline - _time.monotonic()
+                if remaining <= 0:
+                    raise TimeoutError(f"time management not enabled within {timeout} s")
+            self._wait(remaining)
+        return float(self.queryFederateTime())
+
     # ---- blocking time advance (beyond PyHLA; asyncio forms in hlacore.aio) ----
 
     def advance_to(self, time: float, timeout: Optional[float] = None) -> float:
@@ -333,6 +376,34 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
             self._poll()  # more may have arrived meanwhile: deliver it within the same tick
             if not self._has_callbacks():
                 return
+
+
+class _EnableWatcher:
+    """Forwards callbacks to the federate ambassador, noting the two enable callbacks on the way."""
+
+    def __init__(self, ambassador: Any, regulating: bool, constrained: bool) -> None:
+        self._ambassador = ambassador
+        self.regulation_pending = regulating
+        self.constraint_pending = constrained
+
+    def done(self) -> bool:
+        return not (self.regulation_pending or self.constraint_pending)
+
+    def timeRegulationEnabled(self, time: float) -> None:
+        self.regulation_pending = False
+        self._forward("timeRegulationEnabled", time)
+
+    def timeConstrainedEnabled(self, time: float) -> None:
+        self.constraint_pending = False
+        self._forward("timeConstrainedEnabled", time)
+
+    def _forward(self, name: str, *args: Any) -> None:
+        method = getattr(self._ambassador, name, None)
+        if method is not None:
+            method(*args)
+
+    def __getattr__(self, name: str) -> Any:  # every other callback goes straight to the ambassador
+        return getattr(self._ambassador, name)
 
 
 __all__ = [

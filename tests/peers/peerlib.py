@@ -57,9 +57,7 @@ class PeerAmbassador(rti.FederateAmbassador):
 
 def enable_time(rtia: rti.RTIAmbassador, amb: PeerAmbassador, lookahead: float = 1.0) -> None:
     """Regulating (from time 0, `lookahead`) and constrained, waiting for both callbacks."""
-    rtia.enableTimeRegulation(0.0, lookahead)
-    rtia.enableTimeConstrained()
-    tick_until(rtia, lambda: amb.enabled == 2)
+    rtia.enable_time_management(lookahead, timeout=30.0)
 
 
 def synchronize(rtia: rti.RTIAmbassador, amb: PeerAmbassador, label: str = "start") -> None:
@@ -79,7 +77,5 @@ def join_lockstep(address: str, name: str, amb: PeerAmbassador, timeout: float =
     rtia.publishObjectClass(robot, [location])
     rtia.subscribeObjectClassAttributes(robot, [location])
     obj = rtia.registerObjectInstance(robot, name)
-    rtia.enableTimeRegulation(0.0, 1.0)
-    rtia.enableTimeConstrained()
-    tick_until(rtia, lambda: amb.enabled == 2, timeout)
+    rtia.enable_time_management(1.0, timeout)
     return rtia, location, obj

@@ -25,13 +25,6 @@ class _Reflections(rti.FederateAmbassador):
         self.names: dict[Any, str] = {}
         self.attributes: dict[Any, str] = {}
         self.latest: dict[str, dict[str, Any]] = {}  # robot -> attribute -> value
-        self.regulation = self.constrained = False
-
-    def timeRegulationEnabled(self, t: float) -> None:
-        self.regulation = True
-
-    def timeConstrainedEnabled(self, t: float) -> None:
-        self.constrained = True
 
     def discoverObjectInstance(self, obj: Any, cls: Any, name: str) -> None:
         self.names[obj] = str(name)
@@ -74,10 +67,7 @@ class ControllerFederate:
         fed._cmd = rtia.getInteractionClassHandle(codec.INTERACTION)
         fed._params = {n: rtia.getParameterHandle(n, fed._cmd) for n in codec.PARAMETERS}
         rtia.publishInteractionClass(fed._cmd)
-        rtia.enableTimeRegulation(rtia.queryFederateTime(), lookahead)
-        _tick_until(rtia, lambda: amb.regulation, timeout)
-        rtia.enableTimeConstrained()
-        _tick_until(rtia, lambda: amb.constrained, timeout)
+        rtia.enable_time_management(lookahead, timeout)
         return fed
 
     def send(self, robot: str, linear: float, stamp: float) -> None:
@@ -133,11 +123,3 @@ def run(address: str, duration: float = 30.0, period: float = 0.1, dt: float = 0
                 control.rtia.tick(0.001, 0.01)
         stalls.append(any(r.stall for r in world.world.robots))
     return world, control, stalls
-
-
-def _tick_until(rtia: rti.RTIAmbassador, done: Any, timeout: float) -> None:
-    deadline = time.monotonic() + timeout
-    while not done():
-        if time.monotonic() > deadline:
-            raise TimeoutError("the RTI did not confirm time regulation/constraint in time")
-        rtia.tick(0.01, 0.05)

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from importlib import resources
 from typing import Callable, Iterator, Optional
 
-from hlacore import rti
+from hlacore.exceptions import FederatesCurrentlyJoined
 from hlacore.trace import hops
 from hlacore.federates.de import HlaDirector
 from hlacore.federates.robot_driver.navigation import Scenario, scenario_named
@@ -127,7 +127,7 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
         director.resign()
         try:
             director.rtia.destroyFederationExecution(options.federation)
-        except getattr(rti, "FederatesCurrentlyJoined"):
+        except FederatesCurrentlyJoined:
             pass
     if trace is not None:
         # The gateway's marks split the robot -> testbench delay into its three hops.

@@ -21,8 +21,7 @@ from __future__ import annotations
 
 import enum
 import math
-import time as _time
-from typing import TYPE_CHECKING, Any, Callable, Optional, Union
+from typing import TYPE_CHECKING, Any, Optional, Union
 
 from hlacore import rti
 
@@ -33,9 +32,6 @@ if TYPE_CHECKING:
     from .hla_actors import InteractionReceiver, ObjectSubscriber
 
 __all__ = ["HlaActor", "HlaDirector", "TimeMode", "DirectorAmbassador"]
-
-# Made at import time by hlacore.rti from the native module, so looked up by name.
-_FederationExecutionAlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
 
 
 class TimeMode(enum.Enum):
@@ -101,8 +97,6 @@ class HlaDirector(Director):
         self._interactions_published: set[rti.InteractionClassHandle] = set()
         self._objects: dict[rti.ObjectHandle, tuple[rti.ObjectClassHandle, str]] = {}
         self._registered: dict[tuple[rti.ObjectClassHandle, str], rti.ObjectHandle] = {}
-        self._regulation_enabled = False
-        self._constrained_enabled = False
 
     @classmethod
     def join(
@@ -120,13 +114,8 @@ class HlaDirector(Director):
         Raises what ``createFederationExecution`` and ``joinFederationExecution`` raise.
         """
         rtia = rti.RTIAmbassador(address)
-        if fed_file is not None:
-            try:
-                rtia.createFederationExecution(federation_name, fed_file)
-            except _FederationExecutionAlreadyExists:
-                pass
         director = cls(rtia, **options)
-        rtia.joinFederationExecution(federate_name, federation_name, director.ambassador)
+        rtia.create_or_join(federate_name, federation_name, fed_file, director.ambassador)
         return director
 
     def resign(self, action: int = rti.ResignAction.DeleteObjectsAndReleaseAttributes) -> None:
@@ -196,12 +185,9 @@ class HlaDirector(Director):
     # ---- initialization ----
 
     def _begin(self) -> None:
-        if self.regulating:
-            self.rtia.enableTimeRegulation(self.rtia.queryFederateTime(), self.lookahead)
-            self._wait_for(lambda: self._regulation_enabled, "timeRegulationEnabled")
-        if self.constrained:
-            self.rtia.enableTimeConstrained()
-            self._wait_for(lambda: self._constrained_enabled, "timeConstrainedEnabled")
+        self.rtia.enable_time_management(
+            self.lookahead, self.grant_timeout, regulating=self.regulating, constrained=self.constrained
+        )
         start = float(self.rtia.queryFederateTime())
         self.start_time = self.granted = start
         self._set_time(start)
@@ -211,13 +197,6 @@ class HlaDirector(Director):
             actor.declare(self)
         for actor in hla_actors:
             actor.register(self)
-
-    def _wait_for(self, done: Callable[[], bool], what: str) -> None:
-        deadline = None if self.grant_timeout is None else _time.monotonic() + self.grant_timeout
-        while not done():
-            if deadline is not None and _time.monotonic() > deadline:
-                raise TimeoutError(f"no {what} within {self.grant_timeout} s")
-            self.rtia.tick(0.1, 0.1)
 
     # ---- declarations, used by the HLA actors ----
 
@@ -348,13 +327,11 @@ class DirectorAmbassador(rti.FederateAmbassador):
         self._forward("receiveInteraction", interactionClass, parameters, tag, order, transport, *rest)
 
     def timeRegulationEnabled(self, time: float) -> None:
-        """Note that regulation is on."""
-        self.director._regulation_enabled = True
+        """Passed on to the wrapped ambassador."""
         self._forward("timeRegulationEnabled", time)
 
     def timeConstrainedEnabled(self, time: float) -> None:
-        """Note that constrained is on."""
-        self.director._constrained_enabled = True
+        """Passed on to the wrapped ambassador."""
         self._forward("timeConstrainedEnabled", time)
 
     def timeAdvanceGrant(self, time: float) -> None:

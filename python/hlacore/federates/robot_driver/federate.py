@@ -44,17 +44,7 @@ class RobotAmbassador(rti.FederateAmbassador):
     """Notes the callbacks the robot federate waits for."""
 
     def __init__(self) -> None:
-        self.regulating = False
-        self.constrained = False
         self.registration_started = False
-
-    def timeRegulationEnabled(self, time: float) -> None:
-        """Regulation is on."""
-        self.regulating = True
-
-    def timeConstrainedEnabled(self, time: float) -> None:
-        """Constrained is on."""
-        self.constrained = True
 
     def startRegistrationForObjectClass(self, cls: rti.ObjectClassHandle) -> None:
         """Someone subscribes to the robot class."""
@@ -105,13 +95,8 @@ class RobotFederate:
         """Connect to the RTI at ``address``, create ``federation`` from ``fed_file`` if given and absent,
         join as ``federate_name`` and return the federate (``options`` go to the constructor)."""
         rtia = rti.RTIAmbassador(address)
-        if fed_file is not None:
-            try:
-                rtia.createFederationExecution(federation, fed_file)
-            except getattr(rti, "FederationExecutionAlreadyExists"):
-                pass
         ambassador = RobotAmbassador()
-        rtia.joinFederationExecution(federate_name, federation, ambassador)
+        rtia.create_or_join(federate_name, federation, fed_file, ambassador)
         return cls(rtia, ambassador, driver, scenario, **options)
 
     def _wait(self, done: Callable[[], bool], what: str, timeout: float) -> None:
@@ -126,10 +111,7 @@ class RobotFederate:
         rtia, amb = self.rtia, self.ambassador
         self.driver.read_position()  # the device answers: its start-up is not counted in cycle 0
         if self.mode is SyncMode.STEPPED:
-            rtia.enableTimeRegulation(rtia.queryFederateTime(), self.lookahead)
-            self._wait(lambda: amb.regulating, "timeRegulationEnabled", timeout)
-            rtia.enableTimeConstrained()
-            self._wait(lambda: amb.constrained, "timeConstrainedEnabled", timeout)
+            rtia.enable_time_management(self.lookahead, timeout)
         robot_class = rtia.getObjectClassHandle("robot")
         self._location = rtia.getAttributeHandle("location", robot_class)
         rtia.publishObjectClass(robot_class, [self._location])

@@ -31,7 +31,6 @@ from .driver import TxRxDriver
 
 __all__ = ["MirroredRobotFederate", "CycleRecord", "executed_velocity", "record_json", "MIRROR_SOURCES"]
 
-_AlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
 #: What the mirror is sent: the commanded velocities, or those the odometry measured.
 MIRROR_SOURCES = ("commands", "odometry")
 
@@ -66,16 +65,9 @@ def executed_velocity(before: tuple[float, float, float], after: tuple[float, fl
 
 class _Ambassador(rti.FederateAmbassador):
     def __init__(self) -> None:
-        self.regulating = self.constrained = False
         self.names: dict[Any, str] = {}
         self.ranges: dict[str, list[float]] = {}
         self.ranges_handle: Any = None
-
-    def timeRegulationEnabled(self, time: float) -> None:
-        self.regulating = True
-
-    def timeConstrainedEnabled(self, time: float) -> None:
-        self.constrained = True
 
     def discoverObjectInstance(self, obj: Any, cls: Any, name: str) -> None:
         self.names[obj] = str(name)
@@ -120,11 +112,7 @@ class MirroredRobotFederate:
         """Join ``RobotWorld`` (created from its FOM if missing), enable regulation and constraint, publish
         cmd_vel and this robot's ``WorldRobot`` instance, and wait until the mirror is discovered."""
         rtia = rti.RTIAmbassador(self.address)
-        try:
-            rtia.createFederationExecution(codec.FEDERATION, str(codec.FOM_PATH))
-        except _AlreadyExists:
-            pass
-        rtia.joinFederationExecution(f"robot_{self.name}", codec.FEDERATION, self._amb)
+        rtia.create_or_join(f"robot_{self.name}", codec.FEDERATION, str(codec.FOM_PATH), self._amb)
         self.rtia = rtia
         try:
             self._declare_and_enable(timeout)
@@ -144,10 +132,7 @@ class MirroredRobotFederate:
         self._params = {n: rtia.getParameterHandle(n, self._cmd) for n in codec.PARAMETERS}
         rtia.publishInteractionClass(self._cmd)
         self._object = rtia.registerObjectInstance(robot, self.name)
-        rtia.enableTimeRegulation(rtia.queryFederateTime(), self.lookahead)
-        self._tick_until(lambda: amb.regulating, "timeRegulationEnabled", timeout)
-        rtia.enableTimeConstrained()
-        self._tick_until(lambda: amb.constrained, "timeConstrainedEnabled", timeout)
+        rtia.enable_time_management(self.lookahead, timeout)
         self._tick_until(lambda: self.mirror in amb.names.values(), f"the mirror robot {self.mirror!r}", timeout)
         self.start = float(rtia.queryFederateTime())
 

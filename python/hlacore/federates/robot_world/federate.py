@@ -11,7 +11,6 @@ grant: a grant off the grid raises :class:`~.world.GridError` rather than integr
 
 from __future__ import annotations
 
-import time as _time
 from dataclasses import dataclass
 from typing import Any, Optional
 
@@ -21,7 +20,6 @@ from . import codec
 from .world import Pose, World, steps_at
 
 # exported by hlacore.rti at import time (from the C++ module), so invisible to type checkers
-_AlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
 
 
 @dataclass(frozen=True)
@@ -37,15 +35,7 @@ class Command:
 class _Ambassador(rti.FederateAmbassador):
     def __init__(self) -> None:
         self.commands: list[Command] = []
-        self.regulation = False
-        self.constrained = False
         self.params: dict[Any, str] = {}
-
-    def timeRegulationEnabled(self, time: float) -> None:
-        self.regulation = True
-
-    def timeConstrainedEnabled(self, time: float) -> None:
-        self.constrained = True
 
     def receiveInteraction(self, cls: Any, parameters: dict[Any, bytes], tag: Any, order: Any, transport: Any,
                            time: Optional[float] = None, retraction: Any = None) -> None:
@@ -101,20 +91,11 @@ class WorldFederate:
         if not lookahead > 0:
             raise ValueError("lookahead must be positive (published states are stamped grant + lookahead)")
         rtia = rti.RTIAmbassador(address)
-        if create:
-            try:
-                rtia.createFederationExecution(federation, str(codec.FOM_PATH))
-            except _AlreadyExists:
-                pass
         amb = _Ambassador()
-        rtia.joinFederationExecution(name, federation, amb)
+        rtia.create_or_join(name, federation, str(codec.FOM_PATH) if create else None, amb)
         try:
             fed = cls(world, rtia, amb, period, lookahead)
-            rtia.enableTimeRegulation(rtia.queryFederateTime(), lookahead)
-            _tick_until(rtia, lambda: amb.regulation, timeout)
-            rtia.enableTimeConstrained()
-            _tick_until(rtia, lambda: amb.constrained, timeout)
-            start = float(rtia.queryFederateTime())
+            start = rtia.enable_time_management(lookahead, timeout)
             world.advance_to(start)
             fed.cycle = steps_at(start, period) if start else 0
             fed._publish(start)
@@ -195,11 +176,3 @@ class WorldFederate:
                 a["stall"]: codec.STALL.pack(robot.stall),
             }
             self.rtia.updateAttributeValues(self._objects[robot.name], values, "world", stamp)
-
-
-def _tick_until(rtia: rti.RTIAmbassador, done: Any, timeout: float) -> None:
-    deadline = _time.monotonic() + timeout
-    while not done():
-        if _time.monotonic() > deadline:
-            raise TimeoutError("the RTI did not confirm time regulation/constraint in time")
-        rtia.tick(0.01, 0.05)

@@ -48,7 +48,7 @@ import threading
 import time as _time
 import warnings
 from dataclasses import dataclass
-from typing import Any, Callable, Optional, Sequence, Union
+from typing import Any, Optional, Sequence, Union
 
 import hlacore.rti as rti
 from hlacore.federates.robot_world import codec
@@ -62,8 +62,6 @@ from nav_msgs.msg import Odometry  # noqa: E402
 from rosgraph_msgs.msg import Clock  # noqa: E402
 from sensor_msgs.msg import LaserScan, Range  # noqa: E402
 from std_msgs.msg import Bool, UInt32  # noqa: E402
-
-_AlreadyExists: type[BaseException] = getattr(rti, "FederationExecutionAlreadyExists")
 
 
 @dataclass(frozen=True)
@@ -256,13 +254,6 @@ class _Ambassador(rti.FederateAmbassador):
         self.names: dict[Any, str] = {}
         self.attributes: dict[Any, str] = {}
         self.parameters: dict[Any, str] = {}
-        self.regulation = self.constrained = False
-
-    def timeRegulationEnabled(self, t: float) -> None:
-        self.regulation = True
-
-    def timeConstrainedEnabled(self, t: float) -> None:
-        self.constrained = True
 
     def discoverObjectInstance(self, obj: Any, cls: Any, name: str) -> None:
         self.names[obj] = str(name)
@@ -391,12 +382,8 @@ class RosBridge:
                     self._acked[m.ack] = self._acks[m.ack] = 0
 
         rtia = rti.RTIAmbassador(self.address)
-        if self.create:
-            try:
-                rtia.createFederationExecution(self.federation, str(codec.FOM_PATH))
-            except _AlreadyExists:
-                pass
-        rtia.joinFederationExecution(self.federate_name, self.federation, self._amb)
+        fom = str(codec.FOM_PATH) if self.create else None
+        rtia.create_or_join(self.federate_name, self.federation, fom, self._amb)
         self.rtia = rtia
         try:
             robot = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
@@ -409,11 +396,7 @@ class RosBridge:
                 self._amb.parameters = {h: n for n, h in self._params.items()}
                 rtia.subscribeInteractionClass(self._cmd)
             if self.timed:
-                rtia.enableTimeRegulation(rtia.queryFederateTime(), self.lookahead)
-                self._tick_until(lambda: self._amb.regulation, timeout)
-                rtia.enableTimeConstrained()
-                self._tick_until(lambda: self._amb.constrained, timeout)
-                self.time = float(rtia.queryFederateTime())
+                self.time = rtia.enable_time_management(self.lookahead, timeout)
             # registered once time is enabled: a federate that discovers them knows the bridge regulates
             state_robots = list(dict.fromkeys(m.robot for m in self.mappings if isinstance(m, StateIn)))
             if state_robots:
@@ -717,10 +700,3 @@ class RosBridge:
         if self.rtia is None:
             raise RuntimeError("the bridge is not started")
         return self.rtia
-
-    def _tick_until(self, done: Callable[[], bool], timeout: float) -> None:
-        deadline = _time.monotonic() + timeout
-        while not done():
-            if _time.monotonic() > deadline:
-                raise TimeoutError("the RTI did not confirm time regulation/constraint in time")
-            self._rtia().tick(0.01, 0.05)

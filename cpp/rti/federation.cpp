@@ -150,11 +150,16 @@ std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle 
     return {oh, name};
 }
 
-void Federation::handle(FederateHandle from, const wire::Message& message) {
-    if (ignored_while_restoring(from, message)) return;
-    std::visit([&](const auto& m) { on(from, m); }, message);
+template <class M>
+void Federation::handle(FederateHandle from, const M& message) {
+    if (!std::is_same_v<M, wire::FederateRestoreComplete> && restoring(from)) return;
+    on(from, message);
     refresh_scope();
 }
+template void Federation::handle(FederateHandle, const std::monostate&);
+#define HLACORE_X(name) template void Federation::handle(FederateHandle, const wire::name&);
+HLACORE_MESSAGES(HLACORE_X)
+#undef HLACORE_X
 
 template <class M>
 void Federation::on(FederateHandle, const M&) {

@@ -93,9 +93,11 @@ public:
     // Joining and resigning are refused during a save or a restore (SaveInProgress, RestoreInProgress).
     void check_membership_change(const char* service) const;
 
-    // Everything else a federate sends once joined. Handles are checked against the FOM (a bad one is a
-    // protocol violation: wire::WireError); objects that vanished meanwhile are ignored.
-    void handle(FederateHandle from, const wire::Message& message);
+    // Everything else a federate sends once joined, by type (the gateway's dispatcher has visited the
+    // message already). Handles are checked against the FOM (a bad one is a protocol violation:
+    // wire::WireError); objects that vanished meanwhile are ignored.
+    template <class M>
+    void handle(FederateHandle from, const M& message);
 
 private:
     // ---- data distribution management (HLA 1.3 §9), in federation_ddm.cpp ----
@@ -322,7 +324,8 @@ private:
     // Delivers frames held during a save or restore: receive-order ones as deliver_receive_order would.
     void deliver_held(FederateHandle to, std::vector<std::string>& frames);
     void save_restore_departed(FederateHandle federate);
-    bool ignored_while_restoring(FederateHandle from, const wire::Message& message) const;
+    // While a restore runs, what a federate sends before its federateRestoreComplete is dropped.
+    bool restoring(FederateHandle from) const;
     void check_not_restoring(FederateHandle federate) const;
     void write_save_status(std::string& json) const;
 

@@ -353,9 +353,8 @@ void Federation::save_restore_departed(FederateHandle h) {
     }
 }
 
-bool Federation::ignored_while_restoring(FederateHandle from, const wire::Message& message) const {
-    return restore_.active && !restore_.answered.count(from) &&
-           !std::holds_alternative<wire::FederateRestoreComplete>(message);
+bool Federation::restoring(FederateHandle from) const {
+    return restore_.active && !restore_.answered.count(from);
 }
 
 // ---- the file ----

@@ -293,162 +293,174 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
     on_request(c, message);
 }
 
-void Gateway::reply(Connection& c, wire::Reply r) {
+// The one dispatcher of the gateway process: each message goes to the overload of serve() for its type.
+// Requests with a result are served here; everything else a joined federate sends goes to its federation.
+void Gateway::on_request(Connection& c, const wire::Message& message) {
+    std::visit([&](const auto& m) { serve(c, m); }, message);
+}
+
+template <class F>
+void Gateway::answer(Connection& c, std::uint32_t request, F&& serve_request) {
+    wire::Reply r;
+    try {
+        r = serve_request();
+    } catch (const RtiError& e) {
+        r = wire::Reply{};
+        r.error = static_cast<std::uint16_t>(e.code());
+        r.message = e.what();
+    }
+    r.request = request;
     wire::encode(c.out, r);
     mark_dirty(c);
 }
 
-void Gateway::on_request(Connection& c, const wire::Message& message) {
-    auto error_reply = [&](std::uint32_t request, const RtiError& e) {
-        wire::Reply r;
-        r.request = request;
-        r.error = static_cast<std::uint16_t>(e.code());
-        r.message = e.what();
-        reply(c, std::move(r));
-    };
+Federation& Gateway::joined(const Connection& c) const {
+    if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
+    return c.federation->federation;
+}
 
-    if (const auto* m = std::get_if<wire::CreateFederation>(&message)) {
+namespace {
+template <class M>
+const char* name_of() {
+    if constexpr (std::is_same_v<M, std::monostate>) {
+        return wire::message_name(wire::MessageType::Invalid);
+    } else {
+        return wire::message_name(M::kType);
+    }
+}
+}  // namespace
+
+template <class M>
+void Gateway::serve(Connection& c, const M& m) {
+    if (!c.federation) throw wire::WireError(std::string(name_of<M>()) + " sent before joining a federation");
+    try {
+        c.federation->federation.handle(c.federate, m);
+    } catch (const RtiError& e) {
+        throw wire::WireError(std::string("refused ") + name_of<M>() + ": " + e.what());
+    }
+}
+
+void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
+    answer(c, m.request, [&] {
+        if (federations_.count(m.federation))
+            throw RtiError(ErrorCode::FederationExecutionAlreadyExists, "federation '" + m.federation + "' already exists");
+        std::string text = m.fed_text;
+        std::string source = m.fed_name;
+        if (text.empty()) {
+            source = find_fed_file(m.fed_name);
+            if (source.empty() || !read_file(source, text))
+                throw RtiError(ErrorCode::CouldNotOpenFED, "FED file '" + m.fed_name +
+                                                               "' was not found by the client nor in the gateway's "
+                                                               "--fom-path");
+        }
+        fom::Fom fom;
         try {
-            if (federations_.count(m->federation))
-                throw RtiError(ErrorCode::FederationExecutionAlreadyExists,
-                               "federation '" + m->federation + "' already exists");
-            std::string text = m->fed_text;
-            std::string source = m->fed_name;
-            if (text.empty()) {
-                source = find_fed_file(m->fed_name);
-                if (source.empty() || !read_file(source, text))
-                    throw RtiError(ErrorCode::CouldNotOpenFED, "FED file '" + m->fed_name +
-                                                                   "' was not found by the client nor in the gateway's "
-                                                                   "--fom-path");
-            }
-            fom::Fom fom;
-            try {
-                fom = fom::parse_fed(text, m->fed_name);
-            } catch (const fom::FedError& e) {
-                throw RtiError(ErrorCode::ErrorReadingFED, e.what());
-            }
-            federations_[m->federation] =
-                std::make_unique<FederationEntry>(*this, m->federation, std::move(fom), m->fed_name, std::move(text));
-            federations_[m->federation]->federation.set_save_dir(options_.save_dir);
-            if (options_.verbose) log("created federation '" + m->federation + "' from " + source);
-            reply(c, wire::Reply{m->request, 0, "", 0, "", "", 0});
-        } catch (const RtiError& e) {
-            error_reply(m->request, e);
+            fom = fom::parse_fed(text, m.fed_name);
+        } catch (const fom::FedError& e) {
+            throw RtiError(ErrorCode::ErrorReadingFED, e.what());
         }
-        return;
-    }
-    if (const auto* m = std::get_if<wire::DestroyFederation>(&message)) {
-        auto it = federations_.find(m->federation);
-        if (it == federations_.end()) {
-            error_reply(m->request, RtiError(ErrorCode::FederationExecutionDoesNotExist,
-                                             "federation '" + m->federation + "' does not exist"));
-        } else if (it->second->federation.has_federates()) {
-            error_reply(m->request,
-                        RtiError(ErrorCode::FederatesCurrentlyJoined,
-                                 std::to_string(it->second->federation.federate_count()) +
-                                     " federate(s) still joined to '" + m->federation + "'"));
-        } else {
-            federations_.erase(it);
-            if (options_.verbose) log("destroyed federation '" + m->federation + "'");
-            reply(c, wire::Reply{m->request, 0, "", 0, "", "", 0});
+        auto& entry = federations_[m.federation] =
+            std::make_unique<FederationEntry>(*this, m.federation, std::move(fom), m.fed_name, std::move(text));
+        entry->federation.set_save_dir(options_.save_dir);
+        if (options_.verbose) log("created federation '" + m.federation + "' from " + source);
+        return wire::Reply{};
+    });
+}
+
+void Gateway::serve(Connection& c, const wire::DestroyFederation& m) {
+    answer(c, m.request, [&] {
+        auto it = federations_.find(m.federation);
+        if (it == federations_.end())
+            throw RtiError(ErrorCode::FederationExecutionDoesNotExist, "federation '" + m.federation + "' does not exist");
+        if (it->second->federation.has_federates())
+            throw RtiError(ErrorCode::FederatesCurrentlyJoined, std::to_string(it->second->federation.federate_count()) +
+                                                                    " federate(s) still joined to '" + m.federation + "'");
+        federations_.erase(it);
+        if (options_.verbose) log("destroyed federation '" + m.federation + "'");
+        return wire::Reply{};
+    });
+}
+
+void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
+    FederationEntry* entered = nullptr;
+    answer(c, m.request, [&] {
+        if (c.federation)
+            throw RtiError(ErrorCode::FederateAlreadyExecutionMember,
+                           "this ambassador is already joined to '" + c.federation->federation.name() + "'");
+        auto it = federations_.find(m.federation);
+        if (it == federations_.end())
+            throw RtiError(ErrorCode::FederationExecutionDoesNotExist, "federation '" + m.federation + "' does not exist");
+        FederationEntry& entry = *it->second;
+        entry.federation.check_membership_change("joinFederationExecution");
+        const FederateHandle h = entry.federation.join(m.federate);
+        c.federation = entered = &entry;
+        c.federate = h;
+        entry.outbox.peers_[h] = &c;
+        return wire::Reply{0, 0, "", h, entry.federation.fed_text(), entry.federation.fed_name(), 0};
+    });
+    if (!entered) return;
+    entered->federation.announce_pending(c.federate);  // after the reply: the client is joined by then
+    if (trace_) trace_->joined(m.federation, c.federate, m.federate, c.read_ns);
+    if (options_.verbose)
+        log("'" + m.federate + "' joined '" + m.federation + "' as federate " + std::to_string(c.federate));
+}
+
+void Gateway::serve(Connection& c, const wire::ResignFederation& m) {
+    answer(c, m.request, [&] {
+        Federation& federation = joined(c);
+        federation.check_membership_change("resignFederationExecution");
+        federation.resign(c.federate, static_cast<wire::ResignAction>(m.action));
+        c.federation->outbox.peers_.erase(c.federate);
+        c.federation = nullptr;
+        c.federate = 0;
+        return wire::Reply{};
+    });
+}
+
+void Gateway::serve(Connection& c, const wire::RegisterObject& m) {
+    answer(c, m.request, [&] {
+        auto [handle, name] = joined(c).register_object(c.federate, m.object_class, m.name);
+        return wire::Reply{0, 0, "", handle, std::move(name), "", 0};
+    });
+}
+
+void Gateway::serve(Connection& c, const wire::RegisterObjectWithRegion& m) {
+    answer(c, m.request, [&] {
+        auto [handle, name] = joined(c).register_object_with_region(c.federate, m);
+        return wire::Reply{0, 0, "", handle, std::move(name), "", 0};
+    });
+}
+
+// Save/restore requests (HLA 1.3 §4.11, §4.17): the outcome comes as callbacks, refusals in the Reply.
+void Gateway::serve(Connection& c, const wire::RequestFederationSave& m) {
+    answer(c, m.request, [&] {
+        joined(c).request_save(c.federate, m.label, m.time);
+        return wire::Reply{};
+    });
+}
+
+void Gateway::serve(Connection& c, const wire::RequestFederationRestore& m) {
+    answer(c, m.request, [&] {
+        Federation& federation = joined(c);
+        federation.request_restore(c.federate, m.label);
+        if (options_.verbose) log("federation '" + federation.name() + "' restore '" + m.label + "' requested");
+        return wire::Reply{0, 0, "", c.federate, "", "", 0};
+    });
+}
+
+void Gateway::serve(Connection& c, const wire::ReleaseResponse& m) {
+    answer(c, m.request, [&] {
+        std::string released;
+        for (auto attr : joined(c).release_response(c.federate, m)) {
+            if (!released.empty()) released += ' ';
+            released += std::to_string(attr);
         }
-        return;
-    }
-    if (const auto* m = std::get_if<wire::JoinFederation>(&message)) {
-        try {
-            if (c.federation)
-                throw RtiError(ErrorCode::FederateAlreadyExecutionMember,
-                               "this ambassador is already joined to '" + c.federation->federation.name() + "'");
-            auto it = federations_.find(m->federation);
-            if (it == federations_.end())
-                throw RtiError(ErrorCode::FederationExecutionDoesNotExist,
-                               "federation '" + m->federation + "' does not exist");
-            FederationEntry& entry = *it->second;
-            entry.federation.check_membership_change("joinFederationExecution");
-            const FederateHandle h = entry.federation.join(m->federate);
-            c.federation = &entry;
-            c.federate = h;
-            entry.outbox.peers_[h] = &c;
-            reply(c, wire::Reply{m->request, 0, "", h, entry.federation.fed_text(), entry.federation.fed_name(), 0});
-            entry.federation.announce_pending(h);
-            if (trace_) trace_->joined(m->federation, h, m->federate, c.read_ns);
-            if (options_.verbose) log("'" + m->federate + "' joined '" + m->federation + "' as federate " + std::to_string(h));
-        } catch (const RtiError& e) {
-            error_reply(m->request, e);
-        }
-        return;
-    }
-    if (const auto* m = std::get_if<wire::ResignFederation>(&message)) {
-        try {
-            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
-            c.federation->federation.check_membership_change("resignFederationExecution");
-            c.federation->federation.resign(c.federate, static_cast<wire::ResignAction>(m->action));
-            c.federation->outbox.peers_.erase(c.federate);
-            c.federation = nullptr;
-            c.federate = 0;
-            reply(c, wire::Reply{m->request, 0, "", 0, "", "", 0});
-        } catch (const RtiError& e) {
-            error_reply(m->request, e);
-        }
-        return;
-    }
-    if (const auto* m = std::get_if<wire::RegisterObject>(&message)) {
-        try {
-            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
-            auto [handle, name] = c.federation->federation.register_object(c.federate, m->object_class, m->name);
-            reply(c, wire::Reply{m->request, 0, "", handle, name, "", 0});
-        } catch (const RtiError& e) {
-            error_reply(m->request, e);
-        }
-        return;
-    }
-    // Save/restore requests (HLA 1.3 §4.11, §4.17): the outcome comes as callbacks, refusals in the Reply.
-    if (const auto* m = std::get_if<wire::RequestFederationSave>(&message)) {
-        try {
-            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
-            c.federation->federation.request_save(c.federate, m->label, m->time);
-            reply(c, wire::Reply{m->request, 0, "", 0, "", "", 0});
-        } catch (const RtiError& e) {
-            error_reply(m->request, e);
-        }
-        return;
-    }
-    if (const auto* m = std::get_if<wire::RequestFederationRestore>(&message)) {
-        try {
-            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
-            c.federation->federation.request_restore(c.federate, m->label);
-            reply(c, wire::Reply{m->request, 0, "", c.federate, "", "", 0});
-            if (options_.verbose) log("federation '" + c.federation->federation.name() + "' restore '" + m->label + "' requested");
-        } catch (const RtiError& e) {
-            error_reply(m->request, e);
-        }
-        return;
-    }
-    if (const auto* m = std::get_if<wire::RegisterObjectWithRegion>(&message)) {
-        try {
-            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
-            auto [handle, name] = c.federation->federation.register_object_with_region(c.federate, *m);
-            reply(c, wire::Reply{m->request, 0, "", handle, name, "", 0});
-        } catch (const RtiError& e) {
-            error_reply(m->request, e);
-        }
-        return;
-    }
-    if (const auto* m = std::get_if<wire::ReleaseResponse>(&message)) {
-        try {
-            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
-            std::string released;
-            for (auto attr : c.federation->federation.release_response(c.federate, *m)) {
-                if (!released.empty()) released += ' ';
-                released += std::to_string(attr);
-            }
-            reply(c, wire::Reply{m->request, 0, "", 0, std::move(released), "", 0});
-        } catch (const RtiError& e) {
-            error_reply(m->request, e);
-        }
-        return;
-    }
-    if (const auto* m = std::get_if<wire::QueryStatus>(&message)) {
+        return wire::Reply{0, 0, "", 0, std::move(released), "", 0};
+    });
+}
+
+void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
+    answer(c, m.request, [&] {
         std::string json = "{\"server\":\"hlacore rtig\",\"address\":";
         json_string(json, options_.host + ":" + std::to_string(port_));
         json += ",\"connections\":" + std::to_string(connections_.size()) + ",\"federations\":[";
@@ -459,28 +471,15 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
             entry->federation.write_status(json);
         }
         json += "]}";
-        reply(c, wire::Reply{m->request, 0, "", 0, std::move(json), "", 0});
-        return;
-    }
-    if (const auto* m = std::get_if<wire::QueryTime>(&message)) {
-        try {
-            if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
-            const double value = c.federation->federation.query_time(c.federate, static_cast<wire::TimeQuery>(m->which));
-            reply(c, wire::Reply{m->request, 0, "", 0, "", "", value});
-        } catch (const RtiError& e) {
-            error_reply(m->request, e);
-        }
-        return;
-    }
-    if (!c.federation)
-        throw wire::WireError(std::string(wire::message_name(static_cast<wire::MessageType>(message.index()))) +
-                              " sent before joining a federation");
-    try {
-        c.federation->federation.handle(c.federate, message);
-    } catch (const RtiError& e) {
-        throw wire::WireError(std::string("refused ") +
-                              wire::message_name(static_cast<wire::MessageType>(message.index())) + ": " + e.what());
-    }
+        return wire::Reply{0, 0, "", 0, std::move(json), "", 0};
+    });
+}
+
+void Gateway::serve(Connection& c, const wire::QueryTime& m) {
+    answer(c, m.request, [&] {
+        const double value = joined(c).query_time(c.federate, static_cast<wire::TimeQuery>(m.which));
+        return wire::Reply{0, 0, "", 0, "", "", value};
+    });
 }
 
 std::string Gateway::find_fed_file(const std::string& name) const {

@@ -109,6 +109,7 @@ void Federation::resign(FederateHandle h, wire::ResignAction action) {
     for (const auto& label : labels) check_sync_point(label);
     save_restore_departed(h);
     update_advisories();
+    count_scope_watchers();
     refresh_scope();
     release_time();  // those blocked on the departed federate may advance now
 }
@@ -471,6 +472,7 @@ void Federation::on(FederateHandle from, const wire::SetAdvisorySwitch& m) {
         case wire::AdvisorySwitch::AttributeScope: f.attribute_scope = m.on; break;
         default: throw WireError("unknown advisory switch " + std::to_string(m.which));
     }
+    count_scope_watchers();
     update_advisories();
 }
 

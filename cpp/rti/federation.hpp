@@ -149,6 +149,8 @@ private:
     // (attribute relevance switch: some other federate has the owned attribute in scope) to the federates
     // whose switch is on; after each request.
     void refresh_scope();
+    // After a scope or relevance switch changed or a federate left: how many federates watch scope.
+    void count_scope_watchers();
     void forget_update_regions(ObjectHandle object);
     void route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region);
     void on(FederateHandle from, const wire::CreateRegion& m);
@@ -340,6 +342,7 @@ private:
     std::map<ObjectHandle, ObjectInstance> objects_;
     std::unordered_map<std::string, ObjectHandle> object_names_;
     std::map<std::string, SyncPoint> sync_points_;
+    std::size_t scope_watchers_ = 0;  // federates with the attribute scope or relevance switch on
 
     TimeManager time_;
     // TSO messages routed but perhaps not yet delivered, for retraction: sender -> serial -> receivers.

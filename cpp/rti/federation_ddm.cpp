@@ -150,8 +150,9 @@ void send_difference(Outbox& outbox, FederateHandle federate,
 
 // Scope (and so relevance) changes with subscriptions, regions, associations, ownership, discovery and
 // deletion; recomputing it for the federates that asked is simpler than following each of those. It runs
-// after every message: with no switch on (the default) it is one pass over the federates.
+// after every message: with no switch on (the default) it returns at once.
 void Federation::refresh_scope() {
+    if (scope_watchers_ == 0) return;
     bool scope_wanted = false;
     bool relevance_wanted = false;
     for (auto& [h, f] : federates_) {
@@ -198,6 +199,15 @@ void Federation::refresh_scope() {
         send_difference<wire::TurnUpdatesOn>(outbox_, ph, now, p.ddm.relevant,
                                              [](ObjectHandle, fom::Handle) { return true; });
         p.ddm.relevant = std::move(now);
+    }
+}
+
+void Federation::count_scope_watchers() {
+    scope_watchers_ = 0;
+    for (auto& [h, f] : federates_) {
+        if (!f.attribute_scope) f.ddm.in_scope.clear();
+        if (!f.attribute_relevance) f.ddm.relevant.clear();
+        if (f.attribute_scope || f.attribute_relevance) ++scope_watchers_;
     }
 }
 

@@ -643,6 +643,7 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
     next_federate_ = std::max(next_federate_, static_cast<FederateHandle>(snap.next_federate));
     next_object_ = std::max(next_object_, static_cast<ObjectHandle>(snap.next_object));
     outbox_.rehandle(new_handles);
+    count_scope_watchers();
 
     // §4.20 initiateFederateRestore, with what the client mirrors of the restored federate.
     for (const auto& [h, f] : federates_) {
@@ -711,6 +712,7 @@ void Federation::finish_restore_if_answered() {
         if (held != done.held.end()) deliver_held(h, held->second);
     }
     update_advisories();
+    count_scope_watchers();
     refresh_scope();  // from the scope and relevance already announced in the save
     release_time();
 }

@@ -29,6 +29,7 @@ import pytest
 import hlacore.rti as rti
 from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, load_world
 from hlacore.federates.robot_world.federate import Pose
+from hlacore.federates.ros_bridge.children import stop_process
 
 PEERS = pathlib.Path(__file__).parent / "peers"
 DIST = os.environ.get("HLACORE_ROS_DIST_PACKAGES", "/usr/lib/python3/dist-packages")
@@ -101,18 +102,6 @@ class Lines:
         return self.seen
 
 
-def stop(proc: subprocess.Popen[str], sig: int = signal.SIGTERM, timeout: float = 15.0) -> int:
-    """Signal by pid, wait, kill (by pid) if it lingers; returns the exit status."""
-    if proc.poll() is None:
-        proc.send_signal(sig)
-        try:
-            proc.wait(timeout)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
-    return proc.returncode
-
-
 @contextlib.contextmanager
 def running_roscore(home: pathlib.Path) -> Iterator[dict[str, str]]:
     """A real roscore on a free loopback port, its ROS_HOME (and log) in `home`, stopped by pid at the end;
@@ -139,7 +128,7 @@ def running_roscore(home: pathlib.Path) -> Iterator[dict[str, str]]:
                     time.sleep(0.1)
             yield env
         finally:
-            stop(proc, signal.SIGINT)
+            stop_process(proc, signal.SIGINT)
 
 
 @pytest.fixture
@@ -208,9 +197,9 @@ def test_timed_bridge_round_trip(roscore: dict[str, str], gateway_address: str, 
             seen = json.loads(teleop_out.wait_for("{", 5))
         finally:
             if teleop is not None:
-                stop(teleop)
+                stop_process(teleop)
                 teleop_out.rest()
-            status = stop(bridge)
+            status = stop_process(bridge)
         lines = bridge_out.rest()
         assert status == 0, lines
         assert any(line.startswith("ros_bridge stopped at") for line in lines), lines
@@ -258,9 +247,9 @@ def test_untimed_bridge_round_trip(roscore: dict[str, str], inprocess_gateway: o
             seen = json.loads(teleop_out.wait_for("{", 5))
         finally:
             if teleop is not None:
-                stop(teleop)
+                stop_process(teleop)
                 teleop_out.rest()
-            status = stop(bridge)
+            status = stop_process(bridge)
         lines = bridge_out.rest()
         assert status == 0, lines
     odometries = {(o[0], o[1]) for _pose, o, _ranges in states}

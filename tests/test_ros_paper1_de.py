@@ -18,12 +18,13 @@ from typing import Any, Optional
 
 import pytest
 from conftest import Federate
-from test_ros_bridge import WORLD, Lines, f32, ros, roscore, start_bridge, start_teleop, stop  # noqa: F401
+from test_ros_bridge import WORLD, Lines, f32, ros, roscore, start_bridge, start_teleop  # noqa: F401
 
 import hlacore.rti as rti
 from hlacore import omt
 from hlacore.experiments.paper1 import scenario as paper1
 from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, codec, load_world
+from hlacore.federates.ros_bridge.children import stop_process
 from hlacore.federates.ros_bridge.stage_node import last_step_at_or_before
 
 PERIOD, DT = 0.1, 0.01
@@ -129,9 +130,9 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
     finally:
         lines: list[str] = []
         if bridge is not None:
-            status, lines = stop(bridge), bridge_out.rest()
+            status, lines = stop_process(bridge), bridge_out.rest()
             assert status == 0, lines
-        stop(stage)
+        stop_process(stage)
         stage_lines = stage_out.rest()
         if fed is not None:
             fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
@@ -189,9 +190,9 @@ def test_stage_node_on_its_own_clock(roscore: dict[str, str], tmp_path: pathlib.
         seen = json.loads(teleop_out.wait_for("{", 5))
     finally:
         if teleop is not None:
-            stop(teleop)
+            stop_process(teleop)
             teleop_out.rest()
-        status = stop(stage)
+        status = stop_process(stage)
     lines = stage_out.rest()
     assert status == 0 and any(line.startswith("stage_node stopped at") for line in lines), lines
     odom = seen["odom"]
@@ -250,9 +251,9 @@ def test_untimed_bridge_to_a_free_running_node(roscore: dict[str, str], inproces
     finally:
         lines: list[str] = []
         if bridge is not None:
-            status, lines = stop(bridge), bridge_out.rest()
+            status, lines = stop_process(bridge), bridge_out.rest()
             assert status == 0, lines
-        stop(stage)
+        stop_process(stage)
         stage_out.rest()
         if fed is not None:
             fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)

@@ -10,9 +10,9 @@
 #include <pybind11/stl.h>
 
 #include "fed_parser/fom.hpp"
-#include "rti/client.hpp"
-#include "rti/gateway.hpp"
-#include "rti/time_manager.hpp"
+#include "rti/client/client.hpp"
+#include "rti/server/gateway.hpp"
+#include "rti/server/time_manager.hpp"
 
 namespace py = pybind11;
 namespace fom = hlacore::fom;

@@ -66,6 +66,11 @@ const Attribute* ObjectClass::attribute(std::string_view attribute_name) const {
     return by_name(attributes, attribute_name);
 }
 
+const Attribute* ObjectClass::privilege_to_delete() const {
+    const auto* a = attribute("privilegeToDelete");
+    return a ? a : attribute("HLAprivilegeToDeleteObject");
+}
+
 const Parameter* InteractionClass::parameter(Handle h) const { return by_handle(parameters, h); }
 const Parameter* InteractionClass::parameter(std::string_view parameter_name) const {
     return by_name(parameters, parameter_name);

@@ -34,6 +34,8 @@ struct ObjectClass {
 
     const Attribute* attribute(Handle h) const;
     const Attribute* attribute(std::string_view attribute_name) const;
+    // The attribute that carries the privilege to delete (CERTI/Portico and OpenRTI spellings), or null.
+    const Attribute* privilege_to_delete() const;
 };
 
 struct Parameter {

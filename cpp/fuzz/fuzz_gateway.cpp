@@ -24,7 +24,7 @@
 #include <string>
 #include <thread>
 
-#include "rti/gateway.hpp"
+#include "rti/server/gateway.hpp"
 #include "rti/wire/codec.hpp"
 
 using namespace hlacore;

@@ -110,4 +110,7 @@ private:
     ErrorCode code_;
 };
 
+// Throws the RtiError that becomes the HLA exception `code` at the Python call.
+[[noreturn]] inline void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
+
 }  // namespace hlacore

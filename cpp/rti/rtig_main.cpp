@@ -6,8 +6,8 @@
 #include <exception>
 #include <string>
 
-#include "rti/client.hpp"
-#include "rti/gateway.hpp"
+#include "rti/client/client.hpp"
+#include "rti/server/gateway.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
-#include "rti/gateway.hpp"
-#include "rti/status.hpp"
+#include "rti/server/gateway.hpp"
+#include "rti/server/status.hpp"
 
 #include <cerrno>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "rti/time_manager.hpp"
+#include "rti/server/time_manager.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,31 +1,19 @@
 // The federate side of ownership management (HLA 1.3 §7): the services check HLA 1.3's exceptions
 // against the federate's view of each object; the gateway decides the transfers. What this federate owns
-// changes when a notification callback is popped (as time state does in client_time.cpp), or at once
+// changes when a notification callback is popped (as time state does in client/time.cpp), or at once
 // when a call gives attributes up (unconditional divestiture, release response).
 #include <sstream>
 
-#include "rti/client.hpp"
+#include "rti/client/client.hpp"
 
 namespace hlacore {
-
-namespace {
-
-[[noreturn]] void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
-
-// The attribute that carries the privilege to delete (CERTI/Portico and OpenRTI spellings), or null.
-const fom::Attribute* privilege_to_delete(const fom::ObjectClass& cls) {
-    const auto* a = cls.attribute("privilegeToDelete");
-    return a ? a : cls.attribute("HLAprivilegeToDeleteObject");
-}
-
-}  // namespace
 
 Client::LocalObject Client::make_local_object(fom::Handle cls, const std::string& name) const {
     LocalObject obj;
     obj.object_class = cls;
     obj.name = name;
     if (const auto* c = fom_ ? fom_->object_class(cls) : nullptr) {
-        if (const auto* privilege = privilege_to_delete(*c)) obj.privilege_attribute = privilege->handle;
+        if (const auto* privilege = c->privilege_to_delete()) obj.privilege_attribute = privilege->handle;
     }
     return obj;
 }

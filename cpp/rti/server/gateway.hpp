@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "rti/event_loop.hpp"
-#include "rti/federation.hpp"
+#include "rti/server/event_loop.hpp"
+#include "rti/server/federation.hpp"
 #include "rti/trace.hpp"
 
 namespace hlacore {

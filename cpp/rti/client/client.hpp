@@ -18,7 +18,7 @@
 
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
-#include "rti/time_manager.hpp"
+#include "rti/server/time_manager.hpp"
 #include "rti/wire/codec.hpp"
 
 namespace hlacore {
@@ -96,7 +96,7 @@ public:
     void query_ownership(std::uint32_t object, fom::Handle attribute);
     bool is_owned(std::uint32_t object, fom::Handle attribute) const;
 
-    // ---- data distribution management (HLA 1.3 §9), client_ddm.cpp ----
+    // ---- data distribution management (HLA 1.3 §9), client/regions.cpp ----
     // A region's handle is chosen here (regions belong to their creator). An extent lists closed ranges
     // (dimension, lower, upper) with kMinExtent <= lower <= upper <= kMaxExtent; the dimensions it does not
     // list span the whole axis.
@@ -151,7 +151,7 @@ public:
     // The lowest timestamp the sending rule allows now (-inf when not regulating).
     Time lowest_sendable_time() const;
 
-    // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/client_save.cpp, docs/save-restore.md) ----
+    // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/client/save_restore.cpp, docs/save-restore.md) ----
     // The save and restore states change when their callbacks are popped. From initiateFederateSave until
     // federationSaved/NotSaved (and from federationRestoreBegun until federationRestored/NotRestored) the
     // services that change the federation's state raise SaveInProgress (RestoreInProgress).
@@ -225,7 +225,7 @@ private:
         std::set<fom::Handle> release_requested;
     };
 
-    // Data distribution management state (client_ddm.cpp), under mu_.
+    // Data distribution management state (client/regions.cpp), under mu_.
     struct LocalRegion {
         fom::Handle space = 0;
         wire::Handles bounds;  // lower, upper per dimension of the space, as sent to the gateway
@@ -265,6 +265,8 @@ private:
     // The checks behind the services; callers hold mu_.
     void require_joined() const;
     const fom::ObjectClass& defined_object_class(fom::Handle cls) const;
+    // AttributeNotDefined for a handle the class does not have.
+    static void check_attributes(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes);
     const fom::InteractionClass& defined_interaction_class(fom::Handle cls) const;
     const LocalObject& known_object(std::uint32_t object) const;
     LocalObject& known_object(std::uint32_t object) {
@@ -288,7 +290,7 @@ private:
         if (obj.privilege_attribute) obj.privilege_to_delete = obj.owned.count(obj.privilege_attribute) > 0;
     }
     [[noreturn]] void connection_lost() const;
-    // Save/restore (client_save.cpp; callers hold mu_): refuses `service` during a save or restore, and
+    // Save/restore (client/save_restore.cpp; callers hold mu_): refuses `service` during a save or restore, and
     // applies the save/restore callbacks when popped (initiateFederateRestore replaces the mirrored state).
     void check_not_saving_or_restoring(const char* service) const;
     void apply_save_callback(const wire::Message& m);

@@ -6,7 +6,7 @@
 // some extent of one and some extent of the other overlap in every dimension; the default region (a plain
 // subscription, an unassociated attribute, an interaction sent without region) is the whole space and
 // overlaps every region.
-#include "rti/federation.hpp"
+#include "rti/server/federation.hpp"
 
 #include <algorithm>
 

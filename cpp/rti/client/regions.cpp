@@ -1,16 +1,14 @@
 // The federate side of data distribution management (HLA 1.3 §9): regions are created and numbered here,
 // every service checks HLA 1.3's exceptions against this federate's regions, subscriptions and
-// associations, and the gateway does the routing (federation_ddm.cpp).
+// associations, and the gateway does the routing (server/regions.cpp).
 #include <algorithm>
 #include <atomic>
 
-#include "rti/client.hpp"
+#include "rti/client/client.hpp"
 
 namespace hlacore {
 
 namespace {
-
-[[noreturn]] void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
 
 std::string region_text(std::uint32_t region) { return "region " + std::to_string(region); }
 
@@ -25,14 +23,6 @@ std::uint32_t next_region_number() { return ++last_region_number; }
 void reserve_region_numbers(std::uint32_t up_to) {
     std::uint32_t last = last_region_number.load();
     while (last < up_to && !last_region_number.compare_exchange_weak(last, up_to)) {
-    }
-}
-
-void check_attributes_defined(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes) {
-    for (auto a : attributes) {
-        if (!cls.attribute(a))
-            raise(ErrorCode::AttributeNotDefined, "attribute handle " + std::to_string(a) +
-                                                      " is not defined for class '" + cls.qualified_name + "'");
     }
 }
 
@@ -99,7 +89,7 @@ bool Client::region_in_use(std::uint32_t region) const {
     return false;
 }
 
-// ---- restore (HLA 1.3 §4.20; client_save.cpp) ----
+// ---- restore (HLA 1.3 §4.20; client/save_restore.cpp) ----
 
 // During a restore the gateway ignores what a federate sends until it answers initiateFederateRestore,
 // and the restore replaces this federate's regions: a region change made meanwhile would leave the two
@@ -201,7 +191,7 @@ std::uint32_t Client::register_object_with_region(fom::Handle cls,
         if (published == published_.end())
             raise(ErrorCode::ObjectClassNotPublished, "object class '" + c.qualified_name + "' is not published");
         for (const auto& [attr, region] : regions) {
-            check_attributes_defined(c, {attr});
+            check_attributes(c, {attr});
             if (!published->second.count(attr))
                 raise(ErrorCode::AttributeNotPublished,
                       "attribute '" + c.attribute(attr)->name + "' of class '" + c.qualified_name + "' is not published");
@@ -229,7 +219,7 @@ void Client::associate_region(std::uint32_t region, std::uint32_t object, const 
         refuse_region_change_while_restoring("associateRegionForUpdates");
         const LocalObject& obj = known_object(object);
         const auto& cls = *fom_->object_class(obj.object_class);
-        check_attributes_defined(cls, attributes);
+        check_attributes(cls, attributes);
         const LocalRegion& r = known_region(region);
         for (auto attr : attributes) check_region_space(r, cls, attr);
         for (auto attr : attributes) ddm_.update_regions[object][attr] = region;
@@ -267,7 +257,7 @@ void Client::subscribe_object_class_with_region(fom::Handle cls, std::uint32_t r
         std::lock_guard<std::mutex> lock(mu_);
         refuse_region_change_while_restoring("subscribeObjectClassAttributesWithRegion");
         const auto& c = defined_object_class(cls);
-        check_attributes_defined(c, attributes);
+        check_attributes(c, attributes);
         const LocalRegion& r = known_region(region);
         for (auto attr : attributes) check_region_space(r, c, attr);
         auto& by_region = ddm_.object_subscriptions[cls];
@@ -363,7 +353,7 @@ void Client::request_class_update_with_region(fom::Handle cls, const std::vector
                                               std::uint32_t region) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        check_attributes_defined(defined_object_class(cls), attributes);
+        check_attributes(defined_object_class(cls), attributes);
         known_region(region);
     }
     send(wire::RequestClassUpdateWithRegion{cls, attributes, region});

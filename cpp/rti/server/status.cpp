@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "rti/federation.hpp"
-#include "rti/status.hpp"
+#include "rti/server/federation.hpp"
+#include "rti/server/status.hpp"
 
 namespace hlacore {
 
@@ -57,15 +57,10 @@ void Federation::write_status(std::string& out) {
     out += ",\"fed\":";
     json_string(out, fed_name_);
     out += ",\"objects\":" + std::to_string(objects_.size());
-    out += ",\"sync_points\":[";
+    out += ",\"sync_points\":";
+    sync_points_.write_status(out);
+    out += ",\"federates\":[";
     bool first = true;
-    for (const auto& [label, point] : sync_points_) {
-        if (!first) out += ',';
-        first = false;
-        json_string(out, label);
-    }
-    out += "],\"federates\":[";
-    first = true;
     for (const auto& t : time_.status()) {
         if (!first) out += ',';
         first = false;

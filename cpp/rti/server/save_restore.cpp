@@ -12,8 +12,8 @@
 // now; they get back the handles they had in the save, and each is sent its mirrored state with
 // initiateFederateRestore. Until a federate answers, what it sends is ignored: it belongs to the world
 // being replaced.
-#include "rti/federation.hpp"
-#include "rti/status.hpp"
+#include "rti/server/federation.hpp"
+#include "rti/server/status.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -194,12 +194,6 @@ void check_delivery_values(const Pairs_& values, const std::string& whose) {
         if (v < 1 || v > 2) throw WireError("bad order or transport value in " + whose);
 }
 
-std::string time_text(double t) {
-    std::ostringstream s;
-    s.precision(17);
-    s << t;
-    return s.str();
-}
 
 }  // namespace
 
@@ -576,7 +570,7 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
     federates_.clear();
     objects_.clear();
     object_names_.clear();
-    sync_points_.clear();  // their members' handles are gone; see docs/save-restore.md
+    sync_points_.clear();  // their members' handles are gone
     routed_.clear();
     time_ = TimeManager{};
     restore_ = RestoreRun{};

@@ -3,13 +3,11 @@
 #include <cmath>
 #include <sstream>
 
-#include "rti/client.hpp"
+#include "rti/client/client.hpp"
 
 namespace hlacore {
 
 namespace {
-
-[[noreturn]] void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
 
 std::string text(Time t) {
     std::ostringstream out;

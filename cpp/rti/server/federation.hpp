@@ -12,38 +12,12 @@
 
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
-#include "rti/time_manager.hpp"
+#include "rti/server/outbox.hpp"
+#include "rti/server/sync_points.hpp"
+#include "rti/server/time_manager.hpp"
 #include "rti/wire/codec.hpp"
 
 namespace hlacore {
-
-using FederateHandle = std::uint32_t;
-using ObjectHandle = std::uint32_t;
-
-// Where a federation writes the frames it sends: the output buffer of a federate's connection.
-class Outbox {
-public:
-    virtual ~Outbox() = default;
-    virtual std::string& buffer(FederateHandle federate) = 0;
-
-    template <class M>
-    void send(FederateHandle federate, const M& message) {
-        if (holding) {  // a save or restore is under way: see federation_save.cpp
-            auto held = holding->find(federate);
-            if (held != holding->end()) {
-                wire::encode(held->second.emplace_back(), message);
-                return;
-            }
-        }
-        wire::encode(buffer(federate), message);
-    }
-    void send_frame(FederateHandle federate, const std::string& frame) { buffer(federate).append(frame); }
-    // A restore gives the joined federates the handles they had in the save: old handle -> new handle.
-    virtual void rehandle(const std::map<FederateHandle, FederateHandle>& new_handles) { (void)new_handles; }
-    // While set, what send() would write for a federate with an entry here is kept there instead (the
-    // federate is saving or restoring); buffer() and send_frame() are not held.
-    std::map<FederateHandle, std::vector<std::string>>* holding = nullptr;
-};
 
 class Federation {
 public:
@@ -68,7 +42,7 @@ public:
                                                          const std::string& name);
 
     // registerObjectInstanceWithRegion (HLA 1.3 §9.5): register_object with the attributes' update regions
-    // in place before anyone discovers the instance (federation_ddm.cpp).
+    // in place before anyone discovers the instance (server/regions.cpp).
     std::pair<ObjectHandle, std::string> register_object_with_region(FederateHandle federate,
                                                                      const wire::RegisterObjectWithRegion& m);
 
@@ -81,7 +55,7 @@ public:
     // Appends this federation's state as a JSON object (federates, time state, objects, sync points).
     void write_status(std::string& json);
 
-    // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/federation_save.cpp, docs/save-restore.md) ----
+    // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/server/save_restore.cpp, docs/save-restore.md) ----
     // Where saves are written as files ("" keeps them in memory only).
     void set_save_dir(std::string dir) { save_dir_ = std::move(dir); }
     // requestFederationSave: throws SaveInProgress, RestoreInProgress, FederationTimeAlreadyPassed,
@@ -100,7 +74,7 @@ public:
     void handle(FederateHandle from, const M& message);
 
 private:
-    // ---- data distribution management (HLA 1.3 §9), in federation_ddm.cpp ----
+    // ---- data distribution management (HLA 1.3 §9), in server/regions.cpp ----
     // A region belongs to the federate that created it; its handle is chosen by that federate's client.
     using RegionHandle = std::uint32_t;
     using Range = std::pair<std::uint32_t, std::uint32_t>;  // closed: lower <= value <= upper
@@ -121,7 +95,7 @@ private:
         // Owned attributes last reported relevant (turnUpdatesOn), while the relevance switch is on.
         std::map<ObjectHandle, std::set<fom::Handle>> relevant;
         // The highest region number the federate created: saved, so that a restored client never numbers
-        // a new region like one the federate had before the save (federation_save.cpp).
+        // a new region like one the federate had before the save (server/save_restore.cpp).
         RegionHandle last_region = 0;
     };
     struct FederateState;
@@ -207,12 +181,6 @@ private:
     struct OwnershipNotices {
         std::map<FederateHandle, wire::Handles> acquired, divested, unavailable, cancelled;
     };
-    struct SyncPoint {
-        std::string tag;
-        bool whole_federation = true;
-        std::set<FederateHandle> members;
-        std::set<FederateHandle> achieved;
-    };
 
     FederateState& federate(FederateHandle h);
     const fom::ObjectClass& object_class(fom::Handle h) const;
@@ -252,10 +220,11 @@ private:
     template <class M>
     void deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender, std::uint64_t serial,
                                  double time);
-    void check_sync_point(const std::string& label);
 
+    // -- synchronization points: forwarded to SyncPoints (federation.cpp)
     void on(FederateHandle from, const wire::RegisterSyncPoint& m);
     void on(FederateHandle from, const wire::SyncPointAchieved& m);
+    // -- declaration management (HLA 1.3 §5): declarations.cpp
     void on(FederateHandle from, const wire::PublishObjectClass& m);
     void on(FederateHandle from, const wire::UnpublishObjectClass& m);
     void on(FederateHandle from, const wire::SubscribeObjectClass& m);
@@ -264,13 +233,17 @@ private:
     void on(FederateHandle from, const wire::UnpublishInteractionClass& m);
     void on(FederateHandle from, const wire::SubscribeInteractionClass& m);
     void on(FederateHandle from, const wire::UnsubscribeInteractionClass& m);
+    void on(FederateHandle from, const wire::SetAdvisorySwitch& m);
+    // -- object management (HLA 1.3 §6): objects.cpp
     void on(FederateHandle from, const wire::UpdateAttributes& m);
     void on(FederateHandle from, const wire::SendInteraction& m);
     void on(FederateHandle from, const wire::DeleteObject& m);
     void on(FederateHandle from, const wire::LocalDeleteObject& m);
     void on(FederateHandle from, const wire::RequestObjectUpdate& m);
     void on(FederateHandle from, const wire::RequestClassUpdate& m);
-    void on(FederateHandle from, const wire::SetAdvisorySwitch& m);
+    void on(FederateHandle from, const wire::ChangeAttributeDelivery& m);
+    void on(FederateHandle from, const wire::ChangeInteractionDelivery& m);
+    // -- time management (HLA 1.3 §8): time.cpp
     void on(FederateHandle from, const wire::EnableTimeRegulation& m);
     void on(FederateHandle from, const wire::DisableTimeRegulation& m);
     void on(FederateHandle from, const wire::EnableTimeConstrained& m);
@@ -279,6 +252,7 @@ private:
     void on(FederateHandle from, const wire::ModifyLookahead& m);
     void on(FederateHandle from, const wire::SetAsynchronousDelivery& m);
     void on(FederateHandle from, const wire::Retract& m);
+    // -- ownership management (HLA 1.3 §7): ownership.cpp
     void on(FederateHandle from, const wire::UnconditionalDivestiture& m);
     void on(FederateHandle from, const wire::NegotiatedDivestiture& m);
     void on(FederateHandle from, const wire::CancelNegotiatedDivestiture& m);
@@ -286,12 +260,10 @@ private:
     void on(FederateHandle from, const wire::OwnershipAcquisitionIfAvailable& m);
     void on(FederateHandle from, const wire::CancelOwnershipAcquisition& m);
     void on(FederateHandle from, const wire::QueryOwnership& m);
-    void on(FederateHandle from, const wire::ChangeAttributeDelivery& m);
-    void on(FederateHandle from, const wire::ChangeInteractionDelivery& m);
     template <class M>
     void on(FederateHandle from, const M& m);  // anything else: protocol violation
 
-    // ---- save/restore (cpp/rti/federation_save.cpp) ----
+    // ---- save/restore (cpp/rti/server/save_restore.cpp) ----
     struct Snapshot;  // a decoded save
     struct SaveRun {
         bool active = false;
@@ -341,7 +313,7 @@ private:
     std::map<FederateHandle, FederateState> federates_;
     std::map<ObjectHandle, ObjectInstance> objects_;
     std::unordered_map<std::string, ObjectHandle> object_names_;
-    std::map<std::string, SyncPoint> sync_points_;
+    SyncPoints sync_points_{outbox_};
     std::size_t scope_watchers_ = 0;  // federates with the attribute scope or relevance switch on
 
     TimeManager time_;

@@ -1,4 +1,4 @@
-#include "rti/event_loop.hpp"
+#include "rti/server/event_loop.hpp"
 
 #include <cerrno>
 #include <cstring>

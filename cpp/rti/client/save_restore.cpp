@@ -1,19 +1,13 @@
 // The federate side of federation save and restore (HLA 1.3 §4.11-4.22): the services with their
 // exceptions, and the save/restore state that the callbacks change when popped (as time state does in
-// client_time.cpp). initiateFederateRestore carries the restored federate's handle, time state,
+// client/time.cpp). initiateFederateRestore carries the restored federate's handle, time state,
 // declarations, known objects and regions, which replace what this client mirrors. docs/save-restore.md.
 #include <algorithm>
 #include <cmath>
 
-#include "rti/client.hpp"
+#include "rti/client/client.hpp"
 
 namespace hlacore {
-
-namespace {
-
-[[noreturn]] void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
-
-}  // namespace
 
 void Client::check_not_saving_or_restoring(const char* service) const {
     if (save_phase_ != SavePhase::None)

@@ -1,0 +1,207 @@
+// Object management (HLA 1.3 §6), the federate side: the checks against this federate's view, then the send.
+#include "rti/client/client.hpp"
+
+namespace hlacore {
+
+std::uint32_t Client::register_object(fom::Handle cls, const std::string& name) {
+    std::set<fom::Handle> owned;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_object_class(cls);
+        check_not_saving_or_restoring("registerObjectInstance");
+        auto it = published_.find(cls);
+        if (it == published_.end())
+            raise(ErrorCode::ObjectClassNotPublished, "object class '" + c.qualified_name + "' is not published");
+        owned = it->second;
+    }
+    const auto id = next_request();
+    wire::Reply reply = call(wire::RegisterObject{id, cls, name}, id);
+    std::lock_guard<std::mutex> lock(mu_);
+    LocalObject obj = make_local_object(cls, reply.text);
+    obj.owned = std::move(owned);
+    // The registrant holds the privilege to delete (HLA 1.3 §6.2), the privilegeToDelete attribute if any.
+    if (obj.privilege_attribute) obj.owned.insert(obj.privilege_attribute);
+    obj.privilege_to_delete = true;
+    objects_[reply.handle] = std::move(obj);
+    return reply.handle;
+}
+
+std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues values, const std::string& tag,
+                                        wire::OptionalTime time) {
+    std::uint64_t serial;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const LocalObject& obj = known_object(object);
+        check_not_saving_or_restoring("updateAttributeValues");
+        const auto& cls = *fom_->object_class(obj.object_class);
+        for (const auto& [attr, value] : values) {
+            if (!cls.attribute(attr))
+                raise(ErrorCode::AttributeNotDefined, "attribute handle " + std::to_string(attr) +
+                                                          " is not defined for class '" + cls.qualified_name + "'");
+            if (!obj.owned.count(attr))
+                raise(ErrorCode::AttributeNotOwned, "attribute '" + cls.attribute(attr)->name + "' of object '" +
+                                                        obj.name + "' is not owned by this federate");
+        }
+        check_send_time(time);
+        serial = ++serial_;
+        note_sent(serial, time);
+    }
+    send(wire::UpdateAttributes{object, std::move(values), tag, time, serial});
+    return serial;
+}
+
+std::uint64_t Client::send_interaction(fom::Handle cls, wire::HandleValues values, const std::string& tag,
+                                       wire::OptionalTime time) {
+    std::uint64_t serial;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_interaction_class(cls);
+        check_not_saving_or_restoring("sendInteraction");
+        if (!published_interactions_.count(cls))
+            raise(ErrorCode::InteractionClassNotPublished,
+                  "interaction class '" + c.qualified_name + "' is not published");
+        for (const auto& [param, value] : values) {
+            if (!c.parameter(param))
+                raise(ErrorCode::InteractionParameterNotDefined, "parameter handle " + std::to_string(param) +
+                                                                     " is not defined for interaction '" +
+                                                                     c.qualified_name + "'");
+        }
+        check_send_time(time);
+        serial = ++serial_;
+        note_sent(serial, time);
+    }
+    send(wire::SendInteraction{cls, std::move(values), tag, time, serial});
+    return serial;
+}
+
+std::uint64_t Client::delete_object(std::uint32_t object, const std::string& tag, wire::OptionalTime time) {
+    std::uint64_t serial;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const LocalObject& obj = known_object(object);
+        check_not_saving_or_restoring("deleteObjectInstance");
+        if (!obj.privilege_to_delete)
+            raise(ErrorCode::DeletePrivilegeNotHeld, "this federate may not delete object '" + obj.name + "'");
+        check_send_time(time);
+        objects_.erase(object);
+        serial = ++serial_;
+        note_sent(serial, time);
+    }
+    send(wire::DeleteObject{object, tag, time, serial});
+    return serial;
+}
+
+void Client::local_delete_object(std::uint32_t object) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const LocalObject& obj = known_object(object);
+        if (!obj.owned.empty())
+            raise(ErrorCode::FederateOwnsAttributes,
+                  "this federate owns attributes of object '" + obj.name + "' and cannot delete it locally");
+        objects_.erase(object);
+    }
+    send(wire::LocalDeleteObject{object});
+}
+
+void Client::request_object_update(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const LocalObject& obj = known_object(object);
+        check_attributes(*fom_->object_class(obj.object_class), attributes);
+    }
+    send(wire::RequestObjectUpdate{object, attributes});
+}
+
+void Client::request_class_update(fom::Handle cls, const std::vector<fom::Handle>& attributes) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        check_attributes(defined_object_class(cls), attributes);
+    }
+    send(wire::RequestClassUpdate{cls, attributes});
+}
+
+// ---- transport and order changes (HLA 1.3 §6.19-6.22) ----
+
+namespace {
+
+std::uint8_t transport_value(std::uint32_t transport) {
+    if (transport != static_cast<std::uint32_t>(fom::Transport::Reliable) &&
+        transport != static_cast<std::uint32_t>(fom::Transport::BestEffort))
+        raise(ErrorCode::InvalidTransportationHandle,
+              "transportation handle " + std::to_string(transport) + " is not a transportation type");
+    return static_cast<std::uint8_t>(transport);
+}
+
+std::uint8_t order_value(std::uint32_t order) {
+    if (order != static_cast<std::uint32_t>(fom::Order::Receive) &&
+        order != static_cast<std::uint32_t>(fom::Order::Timestamp))
+        raise(ErrorCode::InvalidOrderingHandle, "ordering handle " + std::to_string(order) + " is not an ordering type");
+    return static_cast<std::uint8_t>(order);
+}
+
+}  // namespace
+
+void Client::change_attribute_transportation(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                             std::uint32_t transport) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    change_attribute_delivery(object, attributes, 0, transport_value(transport));
+}
+
+void Client::change_attribute_order(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                    std::uint32_t order) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    change_attribute_delivery(object, attributes, order_value(order), 0);
+}
+
+void Client::change_interaction_transportation(fom::Handle cls, std::uint32_t transport) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    change_interaction_delivery(cls, 0, transport_value(transport));
+}
+
+void Client::change_interaction_order(fom::Handle cls, std::uint32_t order) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    change_interaction_delivery(cls, order_value(order), 0);
+}
+
+// §6.19, §6.21: only the owner of every named attribute may change them.
+void Client::change_attribute_delivery(std::uint32_t object, const std::vector<fom::Handle>& attributes,
+                                       std::uint8_t order, std::uint8_t transport) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const LocalObject& obj = known_object(object);
+        const auto& cls = *fom_->object_class(obj.object_class);
+        check_attributes(cls, attributes);
+        for (auto a : attributes) {
+            if (!obj.owned.count(a))
+                raise(ErrorCode::AttributeNotOwned, "attribute '" + cls.attribute(a)->name + "' of object '" +
+                                                        obj.name + "' is not owned by this federate");
+        }
+    }
+    send(wire::ChangeAttributeDelivery{object, attributes, order, transport});
+}
+
+// §6.20, §6.22: only a publisher of the class may change it.
+void Client::change_interaction_delivery(fom::Handle cls, std::uint8_t order, std::uint8_t transport) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        const auto& c = defined_interaction_class(cls);
+        if (!published_interactions_.count(cls))
+            raise(ErrorCode::InteractionClassNotPublished,
+                  "interaction class '" + c.qualified_name + "' is not published");
+    }
+    send(wire::ChangeInteractionDelivery{cls, order, transport});
+}
+
+}  // namespace hlacore

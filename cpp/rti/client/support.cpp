@@ -1,0 +1,146 @@
+// Support services (HLA 1.3 §10): names and handles, answered from the FOM without asking the gateway.
+#include "rti/client/client.hpp"
+
+namespace hlacore {
+
+fom::Handle Client::object_class_handle(const std::string& name) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    const auto* c = fom_->find_object_class(name);
+    if (!c) raise(ErrorCode::NameNotFound, "no object class named '" + name + "'");
+    return c->handle;
+}
+
+std::string Client::object_class_name(fom::Handle cls) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    return defined_object_class(cls).qualified_name;
+}
+
+fom::Handle Client::attribute_handle(const std::string& name, fom::Handle cls) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto& c = defined_object_class(cls);
+    const auto* a = c.attribute(name);
+    if (!a) raise(ErrorCode::NameNotFound, "class '" + c.qualified_name + "' has no attribute named '" + name + "'");
+    return a->handle;
+}
+
+std::string Client::attribute_name(fom::Handle attribute, fom::Handle cls) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto& c = defined_object_class(cls);
+    const auto* a = c.attribute(attribute);
+    if (!a)
+        raise(ErrorCode::AttributeNotDefined,
+              "attribute handle " + std::to_string(attribute) + " is not defined for class '" + c.qualified_name + "'");
+    return a->name;
+}
+
+fom::Handle Client::interaction_class_handle(const std::string& name) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    const auto* c = fom_->find_interaction_class(name);
+    if (!c) raise(ErrorCode::NameNotFound, "no interaction class named '" + name + "'");
+    return c->handle;
+}
+
+std::string Client::interaction_class_name(fom::Handle cls) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    return defined_interaction_class(cls).qualified_name;
+}
+
+fom::Handle Client::parameter_handle(const std::string& name, fom::Handle cls) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto& c = defined_interaction_class(cls);
+    const auto* p = c.parameter(name);
+    if (!p) raise(ErrorCode::NameNotFound, "interaction '" + c.qualified_name + "' has no parameter named '" + name + "'");
+    return p->handle;
+}
+
+std::string Client::parameter_name(fom::Handle parameter, fom::Handle cls) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto& c = defined_interaction_class(cls);
+    const auto* p = c.parameter(parameter);
+    if (!p)
+        raise(ErrorCode::InteractionParameterNotDefined, "parameter handle " + std::to_string(parameter) +
+                                                             " is not defined for interaction '" + c.qualified_name + "'");
+    return p->name;
+}
+
+std::uint32_t Client::object_instance_handle(const std::string& name) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    for (const auto& [h, obj] : objects_) {
+        if (obj.name == name) return h;
+    }
+    raise(ErrorCode::ObjectNotKnown, "no object named '" + name + "' is known to this federate");
+}
+
+std::string Client::object_instance_name(std::uint32_t object) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    return known_object(object).name;
+}
+
+fom::Handle Client::object_class_of(std::uint32_t object) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    return known_object(object).object_class;
+}
+
+fom::Handle Client::routing_space_handle(const std::string& name) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    const auto* s = fom_->find_space(name);
+    if (!s) raise(ErrorCode::NameNotFound, "no routing space named '" + name + "'");
+    return s->handle;
+}
+
+std::string Client::routing_space_name(fom::Handle space) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    const auto* s = fom_->space(space);
+    if (!s) raise(ErrorCode::SpaceNotDefined, "routing space handle " + std::to_string(space) + " is not defined");
+    return s->name;
+}
+
+fom::Handle Client::dimension_handle(const std::string& name, fom::Handle space) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    const auto* s = fom_->space(space);
+    if (!s) raise(ErrorCode::SpaceNotDefined, "routing space handle " + std::to_string(space) + " is not defined");
+    for (const auto& d : s->dimensions)
+        if (d.name == name) return d.handle;
+    raise(ErrorCode::NameNotFound, "routing space '" + s->name + "' has no dimension named '" + name + "'");
+}
+
+std::string Client::dimension_name(fom::Handle dimension, fom::Handle space) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    const auto* s = fom_->space(space);
+    if (!s) raise(ErrorCode::SpaceNotDefined, "routing space handle " + std::to_string(space) + " is not defined");
+    for (const auto& d : s->dimensions)
+        if (d.handle == dimension) return d.name;
+    raise(ErrorCode::DimensionNotDefined, "dimension handle " + std::to_string(dimension) + " is not defined in '" +
+                                              s->name + "'");
+}
+
+fom::Handle Client::attribute_routing_space(fom::Handle attribute, fom::Handle cls) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto& c = defined_object_class(cls);
+    const auto* a = c.attribute(attribute);
+    if (!a) raise(ErrorCode::AttributeNotDefined, "attribute handle " + std::to_string(attribute) + " is not defined");
+    const auto* s = a->space.empty() ? nullptr : fom_->find_space(a->space);
+    return s ? s->handle : 0;
+}
+
+fom::Handle Client::interaction_routing_space(fom::Handle cls) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto& c = defined_interaction_class(cls);
+    const auto* s = c.space.empty() ? nullptr : fom_->find_space(c.space);
+    return s ? s->handle : 0;
+}
+
+std::uint32_t Client::federate_handle() const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    return federate_;
+}
+
+}  // namespace hlacore

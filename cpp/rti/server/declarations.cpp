@@ -1,0 +1,147 @@
+// Declaration management (HLA 1.3 §5): publications, subscriptions and the advisories that follow them.
+#include "rti/server/federation.hpp"
+
+namespace hlacore {
+
+using wire::WireError;
+
+fom::Handle Federation::known_class(const FederateState& f, fom::Handle cls) const {
+    for (fom::Handle c = cls; c != 0; c = fom_.object_class(c)->parent) {
+        if (f.subscribed.count(c) || f.ddm.object_subscriptions.count(c)) return c;
+    }
+    return 0;
+}
+
+fom::Handle Federation::receiving_interaction_class(const FederateState& f, fom::Handle cls) const {
+    for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent) {
+        if (f.subscribed_interactions.count(c) || f.ddm.interaction_subscriptions.count(c)) return c;
+    }
+    return 0;
+}
+
+
+// Start/stop registration and turn interactions on/off follow real subscriber changes (HLA 1.3 §5.10-5.13):
+// a published class is relevant when another federate would discover (receive) its instances (interactions).
+void Federation::update_advisories() {
+    for (auto& [ph, p] : federates_) {
+        std::set<fom::Handle> relevant;
+        for (const auto& [cls, attrs] : p.published) {
+            for (const auto& [gh, g] : federates_) {
+                if (gh != ph && known_class(g, cls) != 0) {
+                    relevant.insert(cls);
+                    break;
+                }
+            }
+        }
+        if (p.class_relevance) {
+            for (fom::Handle cls : relevant)
+                if (!p.registration_started.count(cls)) outbox_.send(ph, wire::StartRegistration{cls});
+            for (fom::Handle cls : p.registration_started)
+                if (!relevant.count(cls) && p.published.count(cls)) outbox_.send(ph, wire::StopRegistration{cls});
+            p.registration_started = std::move(relevant);
+        }
+
+        std::set<fom::Handle> wanted;
+        for (fom::Handle ic : p.published_interactions) {
+            for (const auto& [gh, g] : federates_) {
+                if (gh != ph && receiving_interaction_class(g, ic) != 0) {
+                    wanted.insert(ic);
+                    break;
+                }
+            }
+        }
+        if (p.interaction_relevance) {
+            for (fom::Handle ic : wanted)
+                if (!p.interactions_turned_on.count(ic)) outbox_.send(ph, wire::TurnInteractionsOn{ic});
+            for (fom::Handle ic : p.interactions_turned_on)
+                if (!wanted.count(ic) && p.published_interactions.count(ic))
+                    outbox_.send(ph, wire::TurnInteractionsOff{ic});
+            p.interactions_turned_on = std::move(wanted);
+        }
+    }
+}
+
+void Federation::on(FederateHandle from, const wire::PublishObjectClass& m) {
+    auto& f = federate(from);
+    check_attributes(object_class(m.object_class), m.attributes);
+    if (m.attributes.empty()) {
+        f.published.erase(m.object_class);
+    } else {
+        f.published[m.object_class] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
+    }
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnpublishObjectClass& m) {
+    object_class(m.object_class);
+    federate(from).published.erase(m.object_class);
+    federate(from).registration_started.erase(m.object_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::SubscribeObjectClass& m) {
+    auto& f = federate(from);
+    check_attributes(object_class(m.object_class), m.attributes);
+    if (m.attributes.empty()) {
+        f.subscribed.erase(m.object_class);
+    } else {
+        f.subscribed[m.object_class] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
+        discover_all_for(from);
+    }
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnsubscribeObjectClass& m) {
+    object_class(m.object_class);
+    federate(from).subscribed.erase(m.object_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::PublishInteractionClass& m) {
+    interaction_class(m.interaction_class);
+    federate(from).published_interactions.insert(m.interaction_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnpublishInteractionClass& m) {
+    interaction_class(m.interaction_class);
+    auto& f = federate(from);
+    f.published_interactions.erase(m.interaction_class);
+    f.interactions_turned_on.erase(m.interaction_class);
+    f.interaction_order.erase(m.interaction_class);
+    f.interaction_transport.erase(m.interaction_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::SubscribeInteractionClass& m) {
+    interaction_class(m.interaction_class);
+    federate(from).subscribed_interactions.insert(m.interaction_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClass& m) {
+    interaction_class(m.interaction_class);
+    federate(from).subscribed_interactions.erase(m.interaction_class);
+    update_advisories();
+}
+
+void Federation::on(FederateHandle from, const wire::SetAdvisorySwitch& m) {
+    auto& f = federate(from);
+    switch (static_cast<wire::AdvisorySwitch>(m.which)) {
+        case wire::AdvisorySwitch::ClassRelevance:
+            f.class_relevance = m.on;
+            if (!m.on) f.registration_started.clear();
+            break;
+        case wire::AdvisorySwitch::InteractionRelevance:
+            f.interaction_relevance = m.on;
+            if (!m.on) f.interactions_turned_on.clear();
+            break;
+        case wire::AdvisorySwitch::AttributeRelevance: f.attribute_relevance = m.on; break;
+        case wire::AdvisorySwitch::AttributeScope: f.attribute_scope = m.on; break;
+        default: throw WireError("unknown advisory switch " + std::to_string(m.which));
+    }
+    count_scope_watchers();
+    update_advisories();
+}
+
+}  // namespace hlacore

@@ -1,0 +1,329 @@
+// Object management (HLA 1.3 §6): registration, discovery, updates, interactions, deletion, and the
+// transport and order changes (§6.19-6.22).
+#include "rti/server/federation.hpp"
+
+#include <algorithm>
+#include <optional>
+
+namespace hlacore {
+
+using wire::WireError;
+
+std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle h, fom::Handle cls_handle,
+                                                                 const std::string& requested_name) {
+    const auto& cls = object_class(cls_handle);
+    auto& f = federate(h);
+    check_not_restoring(h);
+    auto pub = f.published.find(cls_handle);
+    if (pub == f.published.end())
+        throw RtiError(ErrorCode::ObjectClassNotPublished, "object class '" + cls.qualified_name + "' is not published");
+    std::string name = requested_name;
+    const ObjectHandle oh = next_object_;
+    if (name.empty()) {
+        name = "HLAobject_" + std::to_string(oh);
+        for (int suffix = 1; object_names_.count(name); ++suffix)
+            name = "HLAobject_" + std::to_string(oh) + "_" + std::to_string(suffix);
+    } else if (object_names_.count(name)) {
+        throw RtiError(ErrorCode::ObjectAlreadyRegistered, "an object named '" + name + "' already exists");
+    }
+    ++next_object_;
+    ObjectInstance& obj = objects_[oh];
+    obj.object_class = cls_handle;
+    obj.name = name;
+    obj.privilege_holder = h;
+    for (fom::Handle attr : pub->second) obj.owners[attr] = h;
+    // The registrant holds the privilege to delete, as an attribute that transfers like the others.
+    if (const auto* privilege = cls.privilege_to_delete()) {
+        obj.privilege_attribute = privilege->handle;
+        obj.owners[privilege->handle] = h;
+    }
+    object_names_[name] = oh;
+    f.known.insert(oh);
+    for (auto& [gh, g] : federates_) {
+        if (gh != h && discovers(gh, g, oh, obj)) discover(gh, g, oh, obj);
+    }
+    refresh_scope();
+    return {oh, name};
+}
+
+void Federation::discover(FederateHandle to, FederateState& f, ObjectHandle oh, const ObjectInstance& obj) {
+    f.known.insert(oh);
+    outbox_.send(to, wire::DiscoverObject{oh, known_class(f, obj.object_class), obj.name});
+}
+
+void Federation::discover_all_for(FederateHandle h) {
+    auto& f = federates_.at(h);
+    for (const auto& [oh, obj] : objects_) {
+        if (!f.known.count(oh) && discovers(h, f, oh, obj)) discover(h, f, oh, obj);
+    }
+}
+
+void Federation::remove_object(ObjectHandle oh, FederateHandle by, const std::string& tag,
+                               const wire::OptionalTime& time, std::uint64_t serial) {
+    auto it = objects_.find(oh);
+    if (it == objects_.end()) return;
+    for (auto& [gh, g] : federates_) {
+        if (!g.known.erase(oh) || gh == by) continue;
+        if (time && time_.is_tso(by, gh)) {
+            deliver_timestamp_order(gh, wire::RemoveObject{oh, tag, time, by, serial}, by, serial, *time);
+        } else {
+            deliver_receive_order(gh, wire::RemoveObject{oh, tag, std::nullopt, by, serial});
+        }
+    }
+    object_names_.erase(it->second.name);
+    objects_.erase(it);
+    forget_update_regions(oh);
+}
+
+// ---- delivery: receive order, or timestamp order queued in TimeManager (time.cpp releases it) ----
+
+template <class M>
+void Federation::deliver_receive_order(FederateHandle to, const M& message) {
+    if (!time_.holds_receive_order(to)) {
+        outbox_.send(to, message);
+        return;
+    }
+    std::string frame;
+    wire::encode(frame, message);
+    time_.enqueue_receive_order(to, std::move(frame));
+}
+
+template <class M>
+void Federation::deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender,
+                                         std::uint64_t serial, double time) {
+    TsoMessage queued{time, sender, serial, {}};
+    wire::encode(queued.frame, message);
+    time_.enqueue_tso(to, std::move(queued));
+    Routed& routed = routed_[sender][serial];
+    routed.time = time;
+    routed.receivers.push_back(to);
+}
+
+// ---- object management (HLA 1.3 §6) ----
+
+void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
+    federate(from);
+    check_timestamp(from, m.time, "attribute update");
+    auto it = objects_.find(m.object);
+    if (it == objects_.end()) return;  // deleted meanwhile
+    const ObjectInstance& obj = it->second;
+    const auto& cls = object_class(obj.object_class);
+    for (const auto& [attr, value] : m.values) {
+        if (!cls.attribute(attr))
+            throw WireError("attribute handle " + std::to_string(attr) + " is not defined for class '" +
+                            cls.qualified_name + "'");
+    }
+    // Each attribute's order and transport: its owner's change (HLA 1.3 §6.19, §6.21), else the FOM's.
+    // Only the sender's own attributes are reflected, so only its changes matter.
+    auto order_of = [&](fom::Handle attr) {
+        auto it = obj.order.find(attr);
+        return it != obj.order.end() ? it->second : cls.attribute(attr)->order;
+    };
+    auto transport_of = [&](fom::Handle attr) {
+        auto it = obj.transport.find(attr);
+        return it != obj.transport.end() ? it->second : cls.attribute(attr)->transport;
+    };
+    // out[tso][transport - 1]: one reflection per order and transport actually used.
+    wire::ReflectAttributes out[2][2];
+    for (int tso = 0; tso < 2; ++tso) {
+        for (int tr = 0; tr < 2; ++tr) {
+            auto& r = out[tso][tr];
+            r.object = m.object;
+            r.tag = m.tag;
+            r.sender = from;
+            r.serial = m.serial;
+            r.order = static_cast<std::uint8_t>(tso ? fom::Order::Timestamp : fom::Order::Receive);
+            r.transport = static_cast<std::uint8_t>(tr + 1);
+            if (tso) r.time = m.time;
+        }
+    }
+    for (auto& [gh, g] : federates_) {
+        if (gh == from) continue;
+        const fom::Handle known = known_class(g, obj.object_class);
+        if (known == 0) continue;
+        // A plain subscription (the default region) wants every subscribed attribute; a subscription
+        // region only those whose update region overlaps it (HLA 1.3 §9).
+        const auto plain = g.subscribed.find(known);
+        // HLA 1.3 §8.1.1: timestamp order needs a time, a regulating sender, a constrained receiver and
+        // `timestamp` as the attribute's order; each attribute goes its own way, so one update may split.
+        const bool tso = m.time && time_.is_tso(from, gh);
+        for (auto& row : out)
+            for (auto& r : row) r.values.clear();
+        for (const auto& pair : m.values) {
+            // Values of attributes the sender does not own are not reflected (clients check this first).
+            auto owner = obj.owners.find(pair.first);
+            if (owner == obj.owners.end() || owner->second != from) continue;
+            if (!(plain != g.subscribed.end() && plain->second.count(pair.first)) &&
+                !region_wanted(g, known, from, m.object, pair.first))
+                continue;
+            const bool timed = tso && order_of(pair.first) == fom::Order::Timestamp;
+            const int tr = transport_of(pair.first) == fom::Transport::BestEffort ? 1 : 0;
+            out[timed][tr].values.push_back(pair);
+        }
+        if (!g.known.count(m.object)) {
+            // Discovered when an attribute comes into scope; a plain subscriber as before DDM.
+            bool in_scope = plain != g.subscribed.end();
+            for (const auto& row : out)
+                for (const auto& r : row) in_scope = in_scope || !r.values.empty();
+            if (!in_scope) continue;
+            discover(gh, g, m.object, obj);
+        }
+        for (auto& r : out[1])
+            if (!r.values.empty()) deliver_timestamp_order(gh, r, from, m.serial, *m.time);
+        for (auto& r : out[0])
+            if (!r.values.empty()) deliver_receive_order(gh, r);
+    }
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
+    federate(from);
+    route_interaction(from, m, nullptr);
+}
+
+// `region`: the region the interaction was sent with (sendInteractionWithRegion), null for the default
+// region, which reaches every subscriber of the class.
+void Federation::route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region) {
+    check_timestamp(from, m.time, "interaction");
+    const auto& sent_class = interaction_class(m.interaction_class);
+    for (const auto& [param, value] : m.values) {
+        if (!sent_class.parameter(param))
+            throw WireError("parameter handle " + std::to_string(param) + " is not defined for interaction '" +
+                            sent_class.qualified_name + "'");
+    }
+    wire::ReceiveInteraction receive;
+    receive.tag = m.tag;
+    receive.sender = from;
+    receive.serial = m.serial;
+    // The sender's change of the class's transport or order (HLA 1.3 §6.20, §6.22), else the FOM's.
+    const auto& sender = federates_.at(from);
+    auto changed_transport = sender.interaction_transport.find(m.interaction_class);
+    auto changed_order = sender.interaction_order.find(m.interaction_class);
+    const fom::Transport transport =
+        changed_transport != sender.interaction_transport.end() ? changed_transport->second : sent_class.transport;
+    const fom::Order order = changed_order != sender.interaction_order.end() ? changed_order->second : sent_class.order;
+    receive.transport = static_cast<std::uint8_t>(transport);
+    const bool timestamped = m.time && order == fom::Order::Timestamp;
+    for (auto& [gh, g] : federates_) {
+        if (gh == from) continue;
+        const fom::Handle as = interaction_receiver(g, m.interaction_class, region);
+        if (as == 0) continue;
+        // Received as the subscribed superclass: only the parameters that class defines.
+        const auto* received_class = fom_.interaction_class(as);
+        receive.interaction_class = as;
+        receive.values.clear();
+        for (const auto& pair : m.values)
+            if (received_class->parameter(pair.first)) receive.values.push_back(pair);
+        if (timestamped && time_.is_tso(from, gh)) {
+            receive.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
+            receive.time = m.time;
+            deliver_timestamp_order(gh, receive, from, m.serial, *m.time);
+        } else {
+            receive.order = static_cast<std::uint8_t>(fom::Order::Receive);
+            receive.time.reset();
+            deliver_receive_order(gh, receive);
+        }
+    }
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::DeleteObject& m) {
+    federate(from);
+    check_timestamp(from, m.time, "object deletion");
+    auto it = objects_.find(m.object);
+    if (it == objects_.end() || deleter(it->second) != from) return;  // checked by the client
+    remove_object(m.object, from, m.tag, m.time, m.serial);
+    release_time();
+}
+
+void Federation::on(FederateHandle from, const wire::LocalDeleteObject& m) {
+    federate(from).known.erase(m.object);
+    // A federate that forgot the object no longer waits to acquire its attributes (HLA 1.3 §7.7), and
+    // releases any it was given while its client still thought it owned none.
+    auto it = objects_.find(m.object);
+    if (it == objects_.end()) return;
+    ObjectInstance& obj = it->second;
+    for (auto w = obj.acquirers.begin(); w != obj.acquirers.end();) {
+        w->second.erase(std::remove(w->second.begin(), w->second.end(), from), w->second.end());
+        w = w->second.empty() ? obj.acquirers.erase(w) : std::next(w);
+    }
+    std::vector<fom::Handle> owned;
+    for (const auto& [attr, owner] : obj.owners)
+        if (owner == from) owned.push_back(attr);
+    OwnershipNotices notices;
+    for (fom::Handle attr : owned) release_attribute(obj, attr, notices);
+    send_notices(m.object, notices);
+}
+
+void Federation::on(FederateHandle from, const wire::RequestObjectUpdate& m) {
+    federate(from);
+    auto it = objects_.find(m.object);
+    if (it == objects_.end()) return;
+    check_attributes(object_class(it->second.object_class), m.attributes);
+    std::map<FederateHandle, wire::Handles> by_owner;
+    for (auto attr : m.attributes) {
+        auto owner = it->second.owners.find(attr);
+        if (owner != it->second.owners.end() && owner->second != from) by_owner[owner->second].push_back(attr);
+    }
+    for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{m.object, attrs});
+}
+
+void Federation::on(FederateHandle from, const wire::RequestClassUpdate& m) {
+    federate(from);
+    check_attributes(object_class(m.object_class), m.attributes);
+    for (const auto& [oh, obj] : objects_) {
+        if (!fom_.is_object_subclass(obj.object_class, m.object_class)) continue;
+        std::map<FederateHandle, wire::Handles> by_owner;
+        for (auto attr : m.attributes) {
+            auto owner = obj.owners.find(attr);
+            if (owner != obj.owners.end() && owner->second != from) by_owner[owner->second].push_back(attr);
+        }
+        for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{oh, attrs});
+    }
+}
+
+// ---- transport and order changes (HLA 1.3 §6.19-6.22) ----
+// The client raises the exceptions; here a change applies to the attributes the sender still owns (an
+// ownership transfer may be on its way) and to classes it still publishes.
+
+namespace {
+
+template <class E>
+std::optional<E> delivery_value(std::uint8_t v, const char* what) {
+    if (v == 0) return std::nullopt;
+    if (v > 2) throw WireError(std::string("invalid ") + what + " " + std::to_string(v));
+    return static_cast<E>(v);
+}
+
+}  // namespace
+
+void Federation::forget_delivery(ObjectInstance& obj, fom::Handle attr) {
+    obj.order.erase(attr);
+    obj.transport.erase(attr);
+}
+
+void Federation::on(FederateHandle from, const wire::ChangeAttributeDelivery& m) {
+    federate(from);
+    const auto order = delivery_value<fom::Order>(m.order, "ordering handle");
+    const auto transport = delivery_value<fom::Transport>(m.transport, "transportation handle");
+    ObjectInstance* obj = owned_object(m.object, m.attributes);
+    if (!obj) return;
+    for (auto attr : m.attributes) {
+        auto owner = obj->owners.find(attr);
+        if (owner == obj->owners.end() || owner->second != from) continue;
+        if (order) obj->order[attr] = *order;
+        if (transport) obj->transport[attr] = *transport;
+    }
+}
+
+void Federation::on(FederateHandle from, const wire::ChangeInteractionDelivery& m) {
+    auto& f = federate(from);
+    interaction_class(m.interaction_class);
+    const auto order = delivery_value<fom::Order>(m.order, "ordering handle");
+    const auto transport = delivery_value<fom::Transport>(m.transport, "transportation handle");
+    if (!f.published_interactions.count(m.interaction_class)) return;
+    if (order) f.interaction_order[m.interaction_class] = *order;
+    if (transport) f.interaction_transport[m.interaction_class] = *transport;
+}
+
+}  // namespace hlacore

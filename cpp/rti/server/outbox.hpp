@@ -1,0 +1,45 @@
+// Where a federation's service groups write what they send to federates: the output buffers of the
+// gateway's connections (gateway.cpp), held back while a federate saves or restores (save_restore.cpp).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "rti/wire/codec.hpp"
+
+namespace hlacore {
+
+using FederateHandle = std::uint32_t;
+using ObjectHandle = std::uint32_t;
+
+// Shortest text that reads back as the same double, for error messages.
+std::string time_text(double t);
+
+// Where a federation writes the frames it sends: the output buffer of a federate's connection.
+class Outbox {
+public:
+    virtual ~Outbox() = default;
+    virtual std::string& buffer(FederateHandle federate) = 0;
+
+    template <class M>
+    void send(FederateHandle federate, const M& message) {
+        if (holding) {  // a save or restore is under way: see server/save_restore.cpp
+            auto held = holding->find(federate);
+            if (held != holding->end()) {
+                wire::encode(held->second.emplace_back(), message);
+                return;
+            }
+        }
+        wire::encode(buffer(federate), message);
+    }
+    void send_frame(FederateHandle federate, const std::string& frame) { buffer(federate).append(frame); }
+    // A restore gives the joined federates the handles they had in the save: old handle -> new handle.
+    virtual void rehandle(const std::map<FederateHandle, FederateHandle>& new_handles) { (void)new_handles; }
+    // While set, what send() would write for a federate with an entry here is kept there instead (the
+    // federate is saving or restoring); buffer() and send_frame() are not held.
+    std::map<FederateHandle, std::vector<std::string>>* holding = nullptr;
+};
+
+}  // namespace hlacore

@@ -1,0 +1,232 @@
+// Ownership management (HLA 1.3 §7).
+#include "rti/server/federation.hpp"
+
+#include <algorithm>
+
+namespace hlacore {
+
+using wire::WireError;
+
+// ---- ownership management (HLA 1.3 §7) ----
+// The client raises the exceptions (AttributeNotOwned, AttributeNotPublished, ...) from its own view; here
+// each request acts only on the attributes whose state agrees, since a transfer may already be on its way
+// to a federate that has not evoked the notification yet.
+
+
+FederateHandle Federation::deleter(const ObjectInstance& obj) const {
+    if (obj.privilege_attribute == 0) return obj.privilege_holder;
+    auto owner = obj.owners.find(obj.privilege_attribute);
+    return owner == obj.owners.end() ? 0 : owner->second;
+}
+
+// privilegeToDelete counts as published with its class (the registrant holds it without naming it).
+bool Federation::publishes(const FederateState& f, const ObjectInstance& obj, fom::Handle attribute) const {
+    for (fom::Handle c = obj.object_class; c != 0; c = fom_.object_class(c)->parent) {
+        auto pub = f.published.find(c);
+        if (pub != f.published.end() && (pub->second.count(attribute) || attribute == obj.privilege_attribute))
+            return true;
+    }
+    return false;
+}
+
+void Federation::transfer(ObjectInstance& obj, fom::Handle attr, FederateHandle to, OwnershipNotices& notices) {
+    auto owner = obj.owners.find(attr);
+    // §7.5: a negotiated divestiture completes with attributeOwnershipDivestitureNotification.
+    if (owner != obj.owners.end() && owner->second != to && obj.divesting.count(attr))
+        notices.divested[owner->second].push_back(attr);
+    obj.divesting.erase(attr);
+    if (owner == obj.owners.end() || owner->second != to) forget_delivery(obj, attr);
+    obj.owners[attr] = to;
+    auto waiting = obj.acquirers.find(attr);
+    if (waiting != obj.acquirers.end()) {
+        auto& list = waiting->second;
+        list.erase(std::remove(list.begin(), list.end(), to), list.end());
+        if (list.empty()) obj.acquirers.erase(waiting);
+    }
+    // §7.6: attributeOwnershipAcquisitionNotification.
+    notices.acquired[to].push_back(attr);
+}
+
+void Federation::release_attribute(ObjectInstance& obj, fom::Handle attr, OwnershipNotices& notices) {
+    obj.owners.erase(attr);
+    forget_delivery(obj, attr);
+    obj.divesting.erase(attr);
+    auto waiting = obj.acquirers.find(attr);
+    if (waiting != obj.acquirers.end() && !waiting->second.empty())
+        transfer(obj, attr, waiting->second.front(), notices);
+}
+
+void Federation::send_notices(ObjectHandle oh, OwnershipNotices& notices) {
+    auto send_each = [&](auto message, std::map<FederateHandle, wire::Handles>& by_federate) {
+        for (auto& [to, attrs] : by_federate) {
+            if (!federates_.count(to)) continue;
+            message.object = oh;
+            message.attributes = std::move(attrs);
+            outbox_.send(to, message);
+        }
+        by_federate.clear();
+    };
+    send_each(wire::DivestitureNotification{}, notices.divested);
+    send_each(wire::AcquisitionNotification{}, notices.acquired);
+    send_each(wire::OwnershipUnavailable{}, notices.unavailable);
+    send_each(wire::ConfirmAcquisitionCancellation{}, notices.cancelled);
+}
+
+Federation::ObjectInstance* Federation::owned_object(ObjectHandle oh, const wire::Handles& attributes) {
+    auto it = objects_.find(oh);
+    if (it == objects_.end()) return nullptr;  // deleted meanwhile
+    check_attributes(object_class(it->second.object_class), attributes);
+    return &it->second;
+}
+
+// §7.2: the attributes become unowned at once (or go to a federate waiting to acquire them).
+void Federation::on(FederateHandle from, const wire::UnconditionalDivestiture& m) {
+    federate(from);
+    ObjectInstance* obj = owned_object(m.object, m.attributes);
+    if (!obj) return;
+    OwnershipNotices notices;
+    for (auto attr : m.attributes) {
+        auto owner = obj->owners.find(attr);
+        if (owner != obj->owners.end() && owner->second == from) release_attribute(*obj, attr, notices);
+    }
+    send_notices(m.object, notices);
+}
+
+// §7.3: the owner keeps the attributes until someone takes them. A federate already waiting to acquire
+// one gets it at once; otherwise the publishers that know the object are asked (§7.4,
+// requestAttributeOwnershipAssumption).
+void Federation::on(FederateHandle from, const wire::NegotiatedDivestiture& m) {
+    federate(from);
+    ObjectInstance* obj = owned_object(m.object, m.attributes);
+    if (!obj) return;
+    OwnershipNotices notices;
+    std::map<FederateHandle, wire::Handles> ask;
+    for (auto attr : m.attributes) {
+        auto owner = obj->owners.find(attr);
+        if (owner == obj->owners.end() || owner->second != from) continue;
+        obj->divesting[attr] = m.tag;
+        auto waiting = obj->acquirers.find(attr);
+        if (waiting != obj->acquirers.end() && !waiting->second.empty()) {
+            transfer(*obj, attr, waiting->second.front(), notices);
+            continue;
+        }
+        for (const auto& [gh, g] : federates_) {
+            if (gh != from && g.known.count(m.object) && publishes(g, *obj, attr)) ask[gh].push_back(attr);
+        }
+    }
+    send_notices(m.object, notices);
+    for (auto& [to, attrs] : ask) outbox_.send(to, wire::RequestOwnershipAssumption{m.object, std::move(attrs), m.tag});
+}
+
+// §7.12.
+void Federation::on(FederateHandle from, const wire::CancelNegotiatedDivestiture& m) {
+    federate(from);
+    ObjectInstance* obj = owned_object(m.object, m.attributes);
+    if (!obj) return;
+    for (auto attr : m.attributes) {
+        auto owner = obj->owners.find(attr);
+        if (owner != obj->owners.end() && owner->second == from) obj->divesting.erase(attr);
+    }
+}
+
+// §7.7: an unowned attribute, or one its owner is divesting, is transferred at once; for the others the
+// federate waits and their owners are asked to release them (§7.10, requestAttributeOwnershipRelease).
+void Federation::on(FederateHandle from, const wire::OwnershipAcquisition& m) {
+    const auto& f = federate(from);
+    ObjectInstance* obj = owned_object(m.object, m.attributes);
+    if (!obj || !f.known.count(m.object)) return;
+    OwnershipNotices notices;
+    std::map<FederateHandle, wire::Handles> ask;
+    for (auto attr : m.attributes) {
+        if (!publishes(f, *obj, attr)) continue;  // AttributeNotPublished at the client
+        auto owner = obj->owners.find(attr);
+        if (owner == obj->owners.end() || (owner->second != from && obj->divesting.count(attr))) {
+            transfer(*obj, attr, from, notices);
+        } else if (owner->second != from) {
+            auto& waiting = obj->acquirers[attr];
+            if (std::find(waiting.begin(), waiting.end(), from) == waiting.end()) waiting.push_back(from);
+            ask[owner->second].push_back(attr);
+        }
+    }
+    send_notices(m.object, notices);
+    for (auto& [to, attrs] : ask) outbox_.send(to, wire::RequestOwnershipRelease{m.object, std::move(attrs), m.tag});
+}
+
+// §7.8: granted when unowned or being divested, else attributeOwnershipUnavailable (§7.9).
+void Federation::on(FederateHandle from, const wire::OwnershipAcquisitionIfAvailable& m) {
+    const auto& f = federate(from);
+    ObjectInstance* obj = owned_object(m.object, m.attributes);
+    if (!obj || !f.known.count(m.object)) return;
+    OwnershipNotices notices;
+    for (auto attr : m.attributes) {
+        if (!publishes(f, *obj, attr)) continue;
+        auto owner = obj->owners.find(attr);
+        if (owner == obj->owners.end() || (owner->second != from && obj->divesting.count(attr))) {
+            transfer(*obj, attr, from, notices);
+        } else if (owner->second != from) {
+            notices.unavailable[from].push_back(attr);
+        }
+    }
+    send_notices(m.object, notices);
+}
+
+// §7.13: what is still awaited is cancelled (§7.14, confirmAttributeOwnershipAcquisitionCancellation);
+// an attribute transferred meanwhile stays acquired (its notification was sent first).
+void Federation::on(FederateHandle from, const wire::CancelOwnershipAcquisition& m) {
+    federate(from);
+    ObjectInstance* obj = owned_object(m.object, m.attributes);
+    if (!obj) return;
+    OwnershipNotices notices;
+    for (auto attr : m.attributes) {
+        auto waiting = obj->acquirers.find(attr);
+        if (waiting == obj->acquirers.end()) continue;
+        auto& list = waiting->second;
+        auto it = std::find(list.begin(), list.end(), from);
+        if (it == list.end()) continue;
+        list.erase(it);
+        if (list.empty()) obj->acquirers.erase(waiting);
+        notices.cancelled[from].push_back(attr);
+    }
+    send_notices(m.object, notices);
+}
+
+// §7.11: the attributes some federate waits for go to the first of them; the others stay owned.
+wire::Handles Federation::release_response(FederateHandle from, const wire::ReleaseResponse& m) {
+    federate(from);
+    wire::Handles released;
+    ObjectInstance* obj = owned_object(m.object, m.attributes);
+    if (!obj) return released;
+    OwnershipNotices notices;
+    for (auto attr : m.attributes) {
+        auto owner = obj->owners.find(attr);
+        auto waiting = obj->acquirers.find(attr);
+        if (owner == obj->owners.end() || owner->second != from || waiting == obj->acquirers.end()) continue;
+        obj->divesting.erase(attr);  // the release response itself tells the releasing federate
+        transfer(*obj, attr, waiting->second.front(), notices);
+        released.push_back(attr);
+    }
+    send_notices(m.object, notices);
+    refresh_scope();
+    return released;
+}
+
+// §7.15-7.16: informAttributeOwnership or attributeIsNotOwned (no attribute is owned by the RTI here:
+// hlacore has no management object model).
+void Federation::on(FederateHandle from, const wire::QueryOwnership& m) {
+    federate(from);
+    ObjectInstance* obj = owned_object(m.object, wire::Handles{m.attribute});
+    if (!obj) return;
+    wire::OwnershipInformation info;
+    info.object = m.object;
+    info.attribute = m.attribute;
+    auto owner = obj->owners.find(m.attribute);
+    if (owner == obj->owners.end()) {
+        info.kind = static_cast<std::uint8_t>(wire::OwnershipKind::NotOwned);
+    } else {
+        info.kind = static_cast<std::uint8_t>(wire::OwnershipKind::OwnedByFederate);
+        info.owner = owner->second;
+    }
+    outbox_.send(from, info);
+}
+
+}  // namespace hlacore

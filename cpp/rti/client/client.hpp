@@ -237,6 +237,8 @@ private:
         std::map<std::uint32_t, std::map<fom::Handle, std::uint32_t>> update_regions;  // object -> attribute -> region
     };
     const LocalRegion& known_region(std::uint32_t region) const;  // RegionNotKnown
+    // RegionNotKnown, or InvalidRegionContext when the region is not in the class's routing space.
+    void check_interaction_region(const fom::InteractionClass& c, std::uint32_t region) const;
     wire::Handles region_bounds(fom::Handle space, const Extent& extent) const;  // DimensionNotDefined, InvalidExtents
     // InvalidRegionContext unless the attribute's routing space is the region's.
     void check_region_space(const LocalRegion& region, const fom::ObjectClass& cls, fom::Handle attribute) const;
@@ -267,6 +269,8 @@ private:
     const fom::ObjectClass& defined_object_class(fom::Handle cls) const;
     // AttributeNotDefined for a handle the class does not have.
     static void check_attributes(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes);
+    // What sendInteraction checks before the time: the class is defined and published, the parameters defined.
+    const fom::InteractionClass& check_sendable(fom::Handle cls, const wire::HandleValues& values) const;
     const fom::InteractionClass& defined_interaction_class(fom::Handle cls) const;
     const LocalObject& known_object(std::uint32_t object) const;
     LocalObject& known_object(std::uint32_t object) {
@@ -299,7 +303,8 @@ private:
     // The lowest timestamp this federate may send now, and the checks of the sending rule (callers hold mu_).
     Time lowest_sendable() const;
     void check_send_time(const wire::OptionalTime& time) const;
-    void note_sent(std::uint64_t serial, const wire::OptionalTime& time);
+    // Checks the sending rule for `time` and numbers the message (a timestamped one becomes retractable).
+    std::uint64_t next_serial(const wire::OptionalTime& time);
     void apply_time_callback(const wire::Message& m);
 
     std::string address_;

@@ -42,12 +42,23 @@ std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues
                 raise(ErrorCode::AttributeNotOwned, "attribute '" + cls.attribute(attr)->name + "' of object '" +
                                                         obj.name + "' is not owned by this federate");
         }
-        check_send_time(time);
-        serial = ++serial_;
-        note_sent(serial, time);
+        serial = next_serial(time);
     }
     send(wire::UpdateAttributes{object, std::move(values), tag, time, serial});
     return serial;
+}
+
+const fom::InteractionClass& Client::check_sendable(fom::Handle cls, const wire::HandleValues& values) const {
+    const auto& c = defined_interaction_class(cls);
+    if (!published_interactions_.count(cls))
+        raise(ErrorCode::InteractionClassNotPublished, "interaction class '" + c.qualified_name + "' is not published");
+    for (const auto& [param, value] : values) {
+        if (!c.parameter(param))
+            raise(ErrorCode::InteractionParameterNotDefined, "parameter handle " + std::to_string(param) +
+                                                                 " is not defined for interaction '" +
+                                                                 c.qualified_name + "'");
+    }
+    return c;
 }
 
 std::uint64_t Client::send_interaction(fom::Handle cls, wire::HandleValues values, const std::string& tag,
@@ -55,20 +66,9 @@ std::uint64_t Client::send_interaction(fom::Handle cls, wire::HandleValues value
     std::uint64_t serial;
     {
         std::lock_guard<std::mutex> lock(mu_);
-        const auto& c = defined_interaction_class(cls);
         check_not_saving_or_restoring("sendInteraction");
-        if (!published_interactions_.count(cls))
-            raise(ErrorCode::InteractionClassNotPublished,
-                  "interaction class '" + c.qualified_name + "' is not published");
-        for (const auto& [param, value] : values) {
-            if (!c.parameter(param))
-                raise(ErrorCode::InteractionParameterNotDefined, "parameter handle " + std::to_string(param) +
-                                                                     " is not defined for interaction '" +
-                                                                     c.qualified_name + "'");
-        }
-        check_send_time(time);
-        serial = ++serial_;
-        note_sent(serial, time);
+        check_sendable(cls, values);
+        serial = next_serial(time);
     }
     send(wire::SendInteraction{cls, std::move(values), tag, time, serial});
     return serial;
@@ -82,10 +82,8 @@ std::uint64_t Client::delete_object(std::uint32_t object, const std::string& tag
         check_not_saving_or_restoring("deleteObjectInstance");
         if (!obj.privilege_to_delete)
             raise(ErrorCode::DeletePrivilegeNotHeld, "this federate may not delete object '" + obj.name + "'");
-        check_send_time(time);
+        serial = next_serial(time);
         objects_.erase(object);
-        serial = ++serial_;
-        note_sent(serial, time);
     }
     send(wire::DeleteObject{object, tag, time, serial});
     return serial;

@@ -5,6 +5,7 @@
 #include <atomic>
 
 #include "rti/client/client.hpp"
+#include "rti/erase_nested.hpp"
 
 namespace hlacore {
 
@@ -260,12 +261,10 @@ void Client::subscribe_object_class_with_region(fom::Handle cls, std::uint32_t r
         check_attributes(c, attributes);
         const LocalRegion& r = known_region(region);
         for (auto attr : attributes) check_region_space(r, c, attr);
-        auto& by_region = ddm_.object_subscriptions[cls];
         if (attributes.empty()) {
-            by_region.erase(region);
-            if (by_region.empty()) ddm_.object_subscriptions.erase(cls);
+            erase_nested(ddm_.object_subscriptions, cls, region);
         } else {
-            by_region[region] = std::set<fom::Handle>(attributes.begin(), attributes.end());
+            ddm_.object_subscriptions[cls][region] = std::set<fom::Handle>(attributes.begin(), attributes.end());
         }
     }
     send(wire::SubscribeObjectClassWithRegion{cls, region, attributes, active});
@@ -277,26 +276,27 @@ void Client::unsubscribe_object_class_with_region(fom::Handle cls, std::uint32_t
         refuse_region_change_while_restoring("unsubscribeObjectClassWithRegion");
         const auto& c = defined_object_class(cls);
         known_region(region);
-        auto by_class = ddm_.object_subscriptions.find(cls);
-        if (by_class == ddm_.object_subscriptions.end() || !by_class->second.erase(region))
+        if (!erase_nested(ddm_.object_subscriptions, cls, region))
             raise(ErrorCode::ObjectClassNotSubscribed,
                   "object class '" + c.qualified_name + "' is not subscribed with " + region_text(region));
-        if (by_class->second.empty()) ddm_.object_subscriptions.erase(by_class);
     }
     send(wire::UnsubscribeObjectClassWithRegion{cls, region});
+}
+
+void Client::check_interaction_region(const fom::InteractionClass& c, std::uint32_t region) const {
+    const LocalRegion& r = known_region(region);
+    const auto* s = c.space.empty() ? nullptr : fom_->find_space(c.space);
+    if (!s || s->handle != r.space)
+        raise(ErrorCode::InvalidRegionContext, "interaction class '" + c.qualified_name +
+                                                   "' is not in the region's routing space '" +
+                                                   fom_->space(r.space)->name + "'");
 }
 
 void Client::subscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region, bool active) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         refuse_region_change_while_restoring("subscribeInteractionClassWithRegion");
-        const auto& c = defined_interaction_class(cls);
-        const LocalRegion& r = known_region(region);
-        const auto* s = c.space.empty() ? nullptr : fom_->find_space(c.space);
-        if (!s || s->handle != r.space)
-            raise(ErrorCode::InvalidRegionContext, "interaction class '" + c.qualified_name +
-                                                       "' is not in the region's routing space '" +
-                                                       fom_->space(r.space)->name + "'");
+        check_interaction_region(defined_interaction_class(cls), region);
         ddm_.interaction_subscriptions[cls].insert(region);
     }
     send(wire::SubscribeInteractionClassWithRegion{cls, region, active});
@@ -308,11 +308,9 @@ void Client::unsubscribe_interaction_class_with_region(fom::Handle cls, std::uin
         refuse_region_change_while_restoring("unsubscribeInteractionClassWithRegion");
         const auto& c = defined_interaction_class(cls);
         known_region(region);
-        auto by_class = ddm_.interaction_subscriptions.find(cls);
-        if (by_class == ddm_.interaction_subscriptions.end() || !by_class->second.erase(region))
+        if (!erase_nested(ddm_.interaction_subscriptions, cls, region))
             raise(ErrorCode::InteractionClassNotSubscribed,
                   "interaction class '" + c.qualified_name + "' is not subscribed with " + region_text(region));
-        if (by_class->second.empty()) ddm_.interaction_subscriptions.erase(by_class);
     }
     send(wire::UnsubscribeInteractionClassWithRegion{cls, region});
 }
@@ -325,25 +323,8 @@ std::uint64_t Client::send_interaction_with_region(fom::Handle cls, wire::Handle
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_not_saving_or_restoring("sendInteractionWithRegion");
-        const auto& c = defined_interaction_class(cls);
-        if (!published_interactions_.count(cls))
-            raise(ErrorCode::InteractionClassNotPublished,
-                  "interaction class '" + c.qualified_name + "' is not published");
-        for (const auto& [param, value] : values) {
-            if (!c.parameter(param))
-                raise(ErrorCode::InteractionParameterNotDefined, "parameter handle " + std::to_string(param) +
-                                                                     " is not defined for interaction '" +
-                                                                     c.qualified_name + "'");
-        }
-        const LocalRegion& r = known_region(region);
-        const auto* s = c.space.empty() ? nullptr : fom_->find_space(c.space);
-        if (!s || s->handle != r.space)
-            raise(ErrorCode::InvalidRegionContext, "interaction class '" + c.qualified_name +
-                                                       "' is not in the region's routing space '" +
-                                                       fom_->space(r.space)->name + "'");
-        check_send_time(time);
-        serial = ++serial_;
-        note_sent(serial, time);
+        check_interaction_region(check_sendable(cls, values), region);
+        serial = next_serial(time);
     }
     send(wire::SendInteractionWithRegion{cls, std::move(values), tag, time, serial, region});
     return serial;

@@ -66,8 +66,11 @@ void Client::check_send_time(const wire::OptionalTime& time) const {
     }
 }
 
-void Client::note_sent(std::uint64_t serial, const wire::OptionalTime& time) {
-    if (time && time_.regulating) time_.retractable.emplace(serial, *time);
+std::uint64_t Client::next_serial(const wire::OptionalTime& time) {
+    check_send_time(time);
+    const std::uint64_t serial = ++serial_;
+    if (time && time_.regulating) time_.retractable.emplace(serial, *time);  // until a grant passes it
+    return serial;
 }
 
 // HLA 1.3 §8.3, §8.6, §8.13: the callbacks take effect when the federate receives them.

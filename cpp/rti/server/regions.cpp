@@ -7,6 +7,7 @@
 // subscription, an unassociated attribute, an interaction sent without region) is the whole space and
 // overlaps every region.
 #include "rti/server/federation.hpp"
+#include "rti/erase_nested.hpp"
 
 #include <algorithm>
 
@@ -321,12 +322,10 @@ void Federation::on(FederateHandle from, const wire::SubscribeObjectClassWithReg
             throw WireError("region " + std::to_string(m.region) + " is not in the routing space of attribute " +
                             std::to_string(attr));
     }
-    auto& by_region = f.ddm.object_subscriptions[m.object_class];
     if (m.attributes.empty()) {
-        by_region.erase(m.region);
-        if (by_region.empty()) f.ddm.object_subscriptions.erase(m.object_class);
+        erase_nested(f.ddm.object_subscriptions, m.object_class, m.region);
     } else {
-        by_region[m.region] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
+        f.ddm.object_subscriptions[m.object_class][m.region] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
         discover_all_for(from);
     }
     update_advisories();
@@ -336,11 +335,7 @@ void Federation::on(FederateHandle from, const wire::UnsubscribeObjectClassWithR
     auto& f = federate(from);
     region_of(f, m.region);
     object_class(m.object_class);
-    auto by_class = f.ddm.object_subscriptions.find(m.object_class);
-    if (by_class == f.ddm.object_subscriptions.end()) return;
-    by_class->second.erase(m.region);
-    if (by_class->second.empty()) f.ddm.object_subscriptions.erase(by_class);
-    update_advisories();
+    if (erase_nested(f.ddm.object_subscriptions, m.object_class, m.region)) update_advisories();
 }
 
 const Federation::Region& Federation::interaction_region(const FederateState& f, RegionHandle r,
@@ -365,11 +360,7 @@ void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClass
     auto& f = federate(from);
     region_of(f, m.region);
     interaction_class(m.interaction_class);
-    auto by_class = f.ddm.interaction_subscriptions.find(m.interaction_class);
-    if (by_class == f.ddm.interaction_subscriptions.end()) return;
-    by_class->second.erase(m.region);
-    if (by_class->second.empty()) f.ddm.interaction_subscriptions.erase(by_class);
-    update_advisories();
+    if (erase_nested(f.ddm.interaction_subscriptions, m.interaction_class, m.region)) update_advisories();
 }
 
 // §9.12: reaches the plain subscribers and those whose subscription region overlaps `region`.

@@ -69,7 +69,7 @@ class FederateAmbassador:
     """Base class for a federate's callbacks.
 
     Define the callbacks you need with PyHLA's signatures; a callback you do not define is not called.
-    The callbacks of this release are ``synchronizationPointRegistrationSucceeded(label)``,
+    ``hlacore._core.CALLBACKS`` lists their names (declared once, in ``cpp/rti/wire/callbacks.hpp``): ``synchronizationPointRegistrationSucceeded(label)``,
     ``synchronizationPointRegistrationFailed(label)``, ``announceSynchronizationPoint(label, tag)``,
     ``federationSynchronized(label)``, ``startRegistrationForObjectClass(objectClass)``,
     ``stopRegistrationForObjectClass(objectClass)``, ``turnInteractionsOn(interactionClass)``,

@@ -1,0 +1,191 @@
+// Callbacks: each message from the gateway becomes (name, arguments) with PyHLA's argument order, the
+// names those of wire/callbacks.hpp; dispatch calls the ambassador's method of that name. tick (rti.py)
+// drives _wait and _dispatch.
+#include "bindings/convert.hpp"
+
+#include <array>
+#include <chrono>
+
+#include "rti/wire/callbacks.hpp"
+
+namespace hlacore::bindings {
+
+namespace {
+
+using C = wire::Callback;
+
+// (name, args), the name an interned str made once: the ambassador's method is looked up by it per callback.
+py::object named(C callback, py::tuple args) {
+    static const auto* names = [] {
+        auto* interned = new std::array<py::object, static_cast<std::size_t>(C::Count)>();
+        for (std::size_t i = 0; i < interned->size(); ++i)
+            (*interned)[i] = py::reinterpret_steal<py::object>(PyUnicode_InternFromString(wire::kCallbackNames[i]));
+        return interned;
+    }();
+    return py::make_tuple((*names)[static_cast<std::size_t>(callback)], std::move(args));
+}
+
+// A queued message as (callback name, arguments), with PyHLA's argument order.
+py::object to_callback(const wire::Message& message) {
+    return std::visit(
+        [](const auto& m) -> py::object {
+            using M = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<M, wire::SyncPointRegistrationSucceeded>) {
+                return named(C::synchronizationPointRegistrationSucceeded, py::make_tuple(to_str(m.label)));
+            } else if constexpr (std::is_same_v<M, wire::SyncPointRegistrationFailed>) {
+                return named(C::synchronizationPointRegistrationFailed, py::make_tuple(to_str(m.label)));
+            } else if constexpr (std::is_same_v<M, wire::AnnounceSyncPoint>) {
+                return named(C::announceSynchronizationPoint, py::make_tuple(to_str(m.label), to_str(m.tag)));
+            } else if constexpr (std::is_same_v<M, wire::FederationSynchronized>) {
+                return named(C::federationSynchronized, py::make_tuple(to_str(m.label)));
+            } else if constexpr (std::is_same_v<M, wire::StartRegistration>) {
+                return named(C::startRegistrationForObjectClass, py::make_tuple(ObjectClassHandle{m.object_class}));
+            } else if constexpr (std::is_same_v<M, wire::StopRegistration>) {
+                return named(C::stopRegistrationForObjectClass, py::make_tuple(ObjectClassHandle{m.object_class}));
+            } else if constexpr (std::is_same_v<M, wire::TurnInteractionsOn>) {
+                return named(C::turnInteractionsOn, py::make_tuple(InteractionClassHandle{m.interaction_class}));
+            } else if constexpr (std::is_same_v<M, wire::TurnInteractionsOff>) {
+                return named(C::turnInteractionsOff, py::make_tuple(InteractionClassHandle{m.interaction_class}));
+            } else if constexpr (std::is_same_v<M, wire::DiscoverObject>) {
+                return named(C::discoverObjectInstance, py::make_tuple(handle_of<ObjectHandle>(m.object), ObjectClassHandle{m.object_class}, to_str(m.name)));
+            } else if constexpr (std::is_same_v<M, wire::ReflectAttributes>) {
+                py::tuple args = m.time ? (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_dict<AttributeHandle>(m.values),
+                                                         to_str(m.tag), handle_of<OrderingHandle>(m.order),
+                                                         handle_of<TransportationHandle>(m.transport), *m.time,
+                                                         retraction_or_none(m.serial, m.sender))
+                                        : (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_dict<AttributeHandle>(m.values),
+                                                         to_str(m.tag), handle_of<OrderingHandle>(m.order),
+                                                         handle_of<TransportationHandle>(m.transport));
+                return named(C::reflectAttributeValues, args);
+            } else if constexpr (std::is_same_v<M, wire::ReceiveInteraction>) {
+                py::tuple args = m.time ? (py::tuple)py::make_tuple(handle_of<InteractionClassHandle>(m.interaction_class),
+                                                         to_dict<ParameterHandle>(m.values), to_str(m.tag),
+                                                         handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport),
+                                                         *m.time, retraction_or_none(m.serial, m.sender))
+                                        : (py::tuple)py::make_tuple(handle_of<InteractionClassHandle>(m.interaction_class),
+                                                         to_dict<ParameterHandle>(m.values), to_str(m.tag),
+                                                         handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport));
+                return named(C::receiveInteraction, args);
+            } else if constexpr (std::is_same_v<M, wire::RemoveObject>) {
+                py::tuple args = m.time ? (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_str(m.tag), *m.time,
+                                                         retraction_or_none(m.serial, m.sender))
+                                        : (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_str(m.tag));
+                return named(C::removeObjectInstance, args);
+            } else if constexpr (std::is_same_v<M, wire::TimeRegulationEnabled>) {
+                return named(C::timeRegulationEnabled, py::make_tuple(m.time));
+            } else if constexpr (std::is_same_v<M, wire::TimeConstrainedEnabled>) {
+                return named(C::timeConstrainedEnabled, py::make_tuple(m.time));
+            } else if constexpr (std::is_same_v<M, wire::TimeAdvanceGrant>) {
+                return named(C::timeAdvanceGrant, py::make_tuple(m.time));
+            } else if constexpr (std::is_same_v<M, wire::RequestRetraction>) {
+                return named(C::requestRetraction, py::make_tuple(EventRetractionHandle{m.sender, m.serial}));
+            } else if constexpr (std::is_same_v<M, wire::ProvideAttributeValueUpdate>) {
+                return named(C::provideAttributeValueUpdate, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::RequestOwnershipAssumption>) {
+                return named(C::requestAttributeOwnershipAssumption, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes),
+                                                     to_str(m.tag)));
+            } else if constexpr (std::is_same_v<M, wire::DivestitureNotification>) {
+                return named(C::attributeOwnershipDivestitureNotification, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::AcquisitionNotification>) {
+                return named(C::attributeOwnershipAcquisitionNotification, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::OwnershipUnavailable>) {
+                return named(C::attributeOwnershipUnavailable, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::RequestOwnershipRelease>) {
+                return named(C::requestAttributeOwnershipRelease, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes),
+                                                     to_str(m.tag)));
+            } else if constexpr (std::is_same_v<M, wire::ConfirmAcquisitionCancellation>) {
+                return named(C::confirmAttributeOwnershipAcquisitionCancellation, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::AttributesInScope>) {
+                return named(C::attributesInScope, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::AttributesOutOfScope>) {
+                return named(C::attributesOutOfScope, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOn>) {
+                return named(C::turnUpdatesOnForObjectInstance, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOff>) {
+                return named(C::turnUpdatesOffForObjectInstance, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+            } else if constexpr (std::is_same_v<M, wire::OwnershipInformation>) {
+                switch (static_cast<wire::OwnershipKind>(m.kind)) {
+                    case wire::OwnershipKind::OwnedByFederate:
+                        return named(C::informAttributeOwnership, py::make_tuple(ObjectHandle{m.object}, AttributeHandle{m.attribute},
+                                                             FederateHandle{m.owner}));
+                    case wire::OwnershipKind::OwnedByRti:
+                        return named(C::attributeOwnedByRTI, py::make_tuple(ObjectHandle{m.object}, AttributeHandle{m.attribute}));
+                    default:
+                        return named(C::attributeIsNotOwned, py::make_tuple(ObjectHandle{m.object}, AttributeHandle{m.attribute}));
+                }
+            // save/restore (HLA 1.3 §4.11-4.22)
+            } else if constexpr (std::is_same_v<M, wire::InitiateFederateSave>) {
+                return named(C::initiateFederateSave, py::make_tuple(to_str(m.label)));
+            } else if constexpr (std::is_same_v<M, wire::FederationSaved>) {
+                return named(m.success ? C::federationSaved : C::federationNotSaved, py::tuple());
+            } else if constexpr (std::is_same_v<M, wire::RestoreRequestAnswer>) {
+                if (m.succeeded)
+                    return named(C::requestFederationRestoreSucceeded, py::make_tuple(to_str(m.label)));
+                return named(C::requestFederationRestoreFailed, py::make_tuple(to_str(m.label), to_str(m.reason)));
+            } else if constexpr (std::is_same_v<M, wire::FederationRestoreBegun>) {
+                return named(C::federationRestoreBegun, py::tuple());
+            } else if constexpr (std::is_same_v<M, wire::InitiateFederateRestore>) {
+                return named(C::initiateFederateRestore, py::make_tuple(to_str(m.label), FederateHandle{m.federate}));
+            } else if constexpr (std::is_same_v<M, wire::FederationRestored>) {
+                return named(m.success ? C::federationRestored : C::federationNotRestored, py::tuple());
+            } else {
+                throw RtiError(ErrorCode::RTIinternalError, "unexpected message from the gateway");
+            }
+        },
+        message);
+}
+
+// Delivers queued callbacks to the ambassador's methods of the same name (absent ones are skipped), for
+// at most max_seconds (< 0: no limit), stopping after a time advance grant if asked. Returns how many were
+// delivered. The loop is here rather than in Python because it runs once per reflection.
+int dispatch(Client& c, const py::object& ambassador, bool stop_after_grant, double max_seconds) {
+    const auto deadline = Client::Clock::now() + std::chrono::duration_cast<Client::Clock::duration>(
+                                                      std::chrono::duration<double>(max_seconds < 0 ? 0 : max_seconds));
+    int delivered = 0;
+    for (;;) {
+        auto m = c.pop_callback();
+        if (!m) break;
+        ++delivered;
+        py::tuple callback = to_callback(*m);
+        if (!ambassador.is_none()) {
+            py::object method = py::getattr(ambassador, callback[0], py::none());
+            if (!method.is_none()) method(*callback[1]);
+        }
+        if (stop_after_grant && std::holds_alternative<wire::TimeAdvanceGrant>(*m)) break;
+        if (max_seconds >= 0 && Client::Clock::now() >= deadline) break;
+    }
+    return delivered;
+}
+
+// Waits for a callback with the GIL released; a signal (Ctrl-C) gets to Python between waits.
+bool wait_for_callback(Client& c, double timeout_s) {
+    const auto deadline = timeout_s < 0 ? Client::Clock::time_point::max()
+                                        : Client::Clock::now() + std::chrono::duration_cast<Client::Clock::duration>(
+                                                                     std::chrono::duration<double>(timeout_s));
+    for (;;) {
+        Client::WaitStatus status;
+        {
+            py::gil_scoped_release release;
+            status = c.wait_for_callback(deadline);
+        }
+        if (status != Client::WaitStatus::Interrupted) return status == Client::WaitStatus::Ready;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+}
+
+}  // namespace
+
+void bind_callbacks(Ambassador& rtia) {
+    rtia
+        .def("_poll", &Client::poll_now, py::call_guard<py::gil_scoped_release>())
+        .def("_wait", &wait_for_callback, py::arg("timeout"))
+        .def("_has_callbacks", &Client::has_callbacks)
+        .def("_next_callback", [](Client& c) -> py::object {
+            auto m = c.pop_callback();
+            if (!m) return py::none();
+            return to_callback(*m);
+        })
+        .def("_dispatch", &dispatch, py::arg("ambassador"), py::arg("stop_after_grant"), py::arg("max_seconds"));
+}
+
+}  // namespace hlacore::bindings

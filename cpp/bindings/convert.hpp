@@ -1,0 +1,150 @@
+// What the binding's files share: the typed handles, the conversions between Python values and the wire's,
+// and one bind_<group>() per HLA service group, each adding that group's services to RTIAmbassadorBase
+// from the file of the same name (the groups of cpp/rti/server and cpp/rti/client). The PyHLA-shaped API
+// and its docstrings live in python/hlacore/rti.py, which subclasses RTIAmbassadorBase.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "fed_parser/fom.hpp"
+#include "rti/client/client.hpp"
+
+namespace py = pybind11;
+
+namespace hlacore::bindings {
+
+using Ambassador = py::class_<Client>;
+using H32 = std::uint32_t;
+
+// ---- typed handles: hashable, ordered, never interchangeable ----
+
+template <int Kind>
+struct Handle {
+    std::uint32_t value;
+};
+using ObjectClassHandle = Handle<1>;
+using AttributeHandle = Handle<2>;
+using InteractionClassHandle = Handle<3>;
+using ParameterHandle = Handle<4>;
+using ObjectHandle = Handle<5>;
+using FederateHandle = Handle<6>;
+using OrderingHandle = Handle<7>;
+using TransportationHandle = Handle<8>;
+using SpaceHandle = Handle<9>;
+using DimensionHandle = Handle<10>;
+using RegionHandle = Handle<11>;  // data distribution management: a region of the federate that created it
+
+// createRegion's extent, PyHLA's form: [(DimensionHandle, (lower, upper)), ...].
+using PyExtent = std::vector<std::pair<DimensionHandle, std::pair<std::int64_t, std::int64_t>>>;
+inline Client::Extent to_extent(const PyExtent& ranges) {
+    Client::Extent extent;
+    for (const auto& [dimension, bounds] : ranges) extent.push_back(Client::Range{dimension.value, bounds.first, bounds.second});
+    return extent;
+}
+
+struct EventRetractionHandle {
+    std::uint32_t sender;
+    std::uint64_t serial;
+};
+
+template <class H>
+void bind_handle(py::module_& m, const char* name) {
+    const std::string repr_prefix = std::string("<rti.") + name + "=";
+    py::class_<H>(m, name, (std::string("An HLA ") + name + "; obtained from the RTI, never constructed.").c_str())
+        .def("__eq__", [](const H& a, const H& b) { return a.value == b.value; }, py::is_operator())
+        .def("__ne__", [](const H& a, const H& b) { return a.value != b.value; }, py::is_operator())
+        .def("__lt__", [](const H& a, const H& b) { return a.value < b.value; }, py::is_operator())
+        .def("__le__", [](const H& a, const H& b) { return a.value <= b.value; }, py::is_operator())
+        .def("__gt__", [](const H& a, const H& b) { return a.value > b.value; }, py::is_operator())
+        .def("__ge__", [](const H& a, const H& b) { return a.value >= b.value; }, py::is_operator())
+        .def("__hash__", [name](const H& h) { return py::hash(py::make_tuple(name, h.value)); })
+        .def("__int__", [](const H& h) { return h.value; })
+        .def("__index__", [](const H& h) { return h.value; })
+        .def("__repr__", [repr_prefix](const H& h) { return repr_prefix + std::to_string(h.value) + ">"; });
+}
+
+// ---- value conversions ----
+
+// Tags and labels are bytes on the wire; str goes through UTF-8 with surrogateescape so nothing is lost.
+std::string to_bytes(const py::handle& value, const char* what);
+py::str to_str(const std::string& s);
+
+template <class H>
+wire::HandleValues to_handle_values(const py::handle& mapping, const char* key_name) {
+    if (!PyDict_Check(mapping.ptr()) && !PyMapping_Check(mapping.ptr()))
+        throw py::type_error(std::string("a mapping {") + key_name + ": bytes} is required");
+    py::dict d = py::reinterpret_borrow<py::object>(mapping).cast<py::dict>();
+    wire::HandleValues values;
+    values.reserve(d.size());
+    for (auto item : d) {
+        if (!py::isinstance<H>(item.first)) throw py::type_error(std::string(key_name) + " object required as key");
+        values.emplace_back(item.first.cast<const H&>().value, to_bytes(item.second, "a value"));
+    }
+    return values;
+}
+
+template <class H>
+std::vector<std::uint32_t> to_handles(const std::vector<H>& handles) {
+    std::vector<std::uint32_t> out;
+    out.reserve(handles.size());
+    for (const auto& h : handles) out.push_back(h.value);
+    return out;
+}
+
+// Handle objects are immutable values, so callbacks share them: creating a pybind11 instance costs about
+// as much as the rest of a reflection's conversion. The caches live as long as the interpreter.
+template <class H>
+py::object handle_of(std::uint32_t value) {
+    static auto* cache = new std::unordered_map<std::uint32_t, py::object>();
+    auto it = cache->find(value);
+    if (it != cache->end()) return it->second;
+    py::object h = py::cast(H{value});
+    if (cache->size() < (1u << 16)) cache->emplace(value, h);
+    return h;
+}
+
+template <class H>
+py::dict to_dict(const wire::HandleValues& values) {
+    py::dict d;
+    for (const auto& [h, v] : values) d[handle_of<H>(h)] = py::bytes(v);
+    return d;
+}
+
+template <class H>
+py::tuple to_tuple(const wire::Handles& handles) {
+    py::tuple t(handles.size());
+    for (std::size_t i = 0; i < handles.size(); ++i) t[i] = py::cast(H{handles[i]});
+    return t;
+}
+
+inline py::object retraction_or_none(std::uint64_t serial, std::uint32_t sender) {
+    return py::cast(EventRetractionHandle{sender, serial});
+}
+
+// A timestamped send returns its EventRetractionHandle, an untimed one None (PyHLA).
+py::object serial_result(std::uint64_t serial, const std::optional<double>& time, const Client& c);
+
+// One Python class per HLA 1.3 exception, all under RTIexception, and the translation of RtiError,
+// fom::FedError and wire::WireError into them.
+void register_exceptions(py::module_& m);
+
+void bind_federation(Ambassador& rtia);
+void bind_sync_points(Ambassador& rtia);
+void bind_save_restore(Ambassador& rtia);
+void bind_declarations(Ambassador& rtia);
+void bind_objects(Ambassador& rtia);
+void bind_ownership(Ambassador& rtia);
+void bind_time(Ambassador& rtia);
+void bind_regions(Ambassador& rtia);
+void bind_support(Ambassador& rtia);
+void bind_callbacks(Ambassador& rtia);  // tick's machinery: waiting, popping and dispatching callbacks
+
+}  // namespace hlacore::bindings

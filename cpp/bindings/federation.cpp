@@ -1,0 +1,27 @@
+// Federation management (HLA 1.3 §4.2-4.5): create, destroy, join and resign; rti.py wraps the underscored ones.
+#include "bindings/convert.hpp"
+
+namespace hlacore::bindings {
+
+void bind_federation(Ambassador& rtia) {
+    rtia
+        .def("_create", &Client::create_federation, py::call_guard<py::gil_scoped_release>())
+        .def("destroyFederationExecution", &Client::destroy_federation, py::arg("executionName"),
+             py::call_guard<py::gil_scoped_release>(),
+             "Destroy a federation execution (HLA 1.3 §4.3). Raises FederatesCurrentlyJoined, FederationExecutionDoesNotExist.")
+        .def("_join", [](Client& c, const std::string& federate, const std::string& federation) {
+            H32 h;
+            {
+                py::gil_scoped_release release;
+                h = c.join(federate, federation);
+            }
+            return FederateHandle{h};
+        })
+        .def("_resign", [](Client& c, int action) {
+            if (action < 0 || action > 255) throw RtiError(ErrorCode::InvalidResignAction, "invalid resign action");
+            py::gil_scoped_release release;
+            c.resign(static_cast<std::uint8_t>(action));
+        });
+}
+
+}  // namespace hlacore::bindings

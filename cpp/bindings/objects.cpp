@@ -1,0 +1,73 @@
+// Object management (HLA 1.3 §6), with the transport and order changes (§6.19-6.22).
+#include "bindings/convert.hpp"
+
+namespace hlacore::bindings {
+
+void bind_objects(Ambassador& rtia) {
+    rtia
+        .def("registerObjectInstance",
+             [](Client& c, ObjectClassHandle cls, std::optional<std::string> name) {
+                 H32 h;
+                 {
+                     py::gil_scoped_release release;
+                     h = c.register_object(cls.value, name.value_or(""));
+                 }
+                 return ObjectHandle{h};
+             }, py::arg("objectClass"), py::arg("objectName") = py::none(),
+             "Register an instance of a published class (HLA 1.3 §6.2), optionally named (names are unique in the federation); returns its ObjectHandle and makes this federate the owner of the published attributes. Subscribers get discoverObjectInstance. Raises ObjectClassNotDefined, ObjectClassNotPublished, ObjectAlreadyRegistered.")
+        .def("updateAttributeValues",
+             [](Client& c, ObjectHandle obj, py::handle values, py::handle tag, std::optional<double> time) {
+                 auto serial = c.update_attributes(obj.value, to_handle_values<AttributeHandle>(values, "AttributeHandle"),
+                                                   to_bytes(tag, "tag"), time);
+                 return serial_result(serial, time, c);
+             }, py::arg("object"), py::arg("attributes"), py::arg("tag"), py::arg("time") = py::none(),
+             "Update owned attributes {AttributeHandle: bytes} of an object (HLA 1.3 §6.4); subscribers get reflectAttributeValues with the attributes they subscribed. With a time, returns an EventRetractionHandle. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned.")
+        .def("sendInteraction",
+             [](Client& c, InteractionClassHandle ic, py::handle values, py::handle tag, std::optional<double> time) {
+                 auto serial = c.send_interaction(ic.value, to_handle_values<ParameterHandle>(values, "ParameterHandle"),
+                                                  to_bytes(tag, "tag"), time);
+                 return serial_result(serial, time, c);
+             }, py::arg("interactionClass"), py::arg("parameters"), py::arg("tag"), py::arg("time") = py::none(),
+             "Send an interaction {ParameterHandle: bytes} (HLA 1.3 §6.6); subscribers get receiveInteraction. With a time, returns an EventRetractionHandle. Raises InteractionClassNotDefined, InteractionClassNotPublished, InteractionParameterNotDefined.")
+        .def("deleteObjectInstance",
+             [](Client& c, ObjectHandle obj, py::handle tag, std::optional<double> time) {
+                 auto serial = c.delete_object(obj.value, to_bytes(tag, "tag"), time);
+                 return serial_result(serial, time, c);
+             }, py::arg("object"), py::arg("tag"), py::arg("time") = py::none(),
+             "Delete an object this federate may delete (HLA 1.3 §6.8); the others get removeObjectInstance. Raises ObjectNotKnown, DeletePrivilegeNotHeld.")
+        .def("localDeleteObjectInstance", [](Client& c, ObjectHandle obj) { c.local_delete_object(obj.value); },
+             py::arg("object"),
+             "Forget an object locally (HLA 1.3 §6.10); it may be discovered again. Raises ObjectNotKnown, FederateOwnsAttributes.")
+        .def("requestObjectAttributeValueUpdate",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
+                 c.request_object_update(obj.value, to_handles(attrs));
+             }, py::arg("object"), py::arg("attributes"),
+             "Ask the owners of an object's attributes to update them (HLA 1.3 §6.15); they get provideAttributeValueUpdate. Raises ObjectNotKnown, AttributeNotDefined.")
+        .def("requestClassAttributeValueUpdate",
+             [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs) {
+                 c.request_class_update(cls.value, to_handles(attrs));
+             }, py::arg("objectClass"), py::arg("attributes"),
+             "Ask the owners of attributes of every instance of a class to update them (HLA 1.3 §6.15). Raises ObjectClassNotDefined, AttributeNotDefined.")
+        // transport and order changes (HLA 1.3 §6.19-6.22)
+        .def("changeAttributeTransportationType",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs, TransportationHandle t) {
+                 c.change_attribute_transportation(obj.value, to_handles(attrs), t.value);
+             }, py::arg("object"), py::arg("attributes"), py::arg("transportationHandle"),
+             "Change the transportation of owned attributes (HLA 1.3 §6.19) for this federate's later updates of that object; reflectAttributeValues reports it. Forgotten when the attribute changes owner. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, InvalidTransportationHandle.")
+        .def("changeInteractionTransportationType",
+             [](Client& c, InteractionClassHandle ic, TransportationHandle t) {
+                 c.change_interaction_transportation(ic.value, t.value);
+             }, py::arg("interactionClass"), py::arg("transportationHandle"),
+             "Change the transportation of this federate's later interactions of a published class (HLA 1.3 §6.20), until it unpublishes the class; receiveInteraction reports it. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidTransportationHandle.")
+        .def("changeAttributeOrderType",
+             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs, OrderingHandle o) {
+                 c.change_attribute_order(obj.value, to_handles(attrs), o.value);
+             }, py::arg("object"), py::arg("attributes"), py::arg("orderingHandle"),
+             "Change the order (Receive or Timestamp) of owned attributes (HLA 1.3 §6.21) for this federate's later updates of that object: timestamp order still needs a time, a regulating sender and a constrained receiver; reflectAttributeValues reports the order used. Forgotten when the attribute changes owner. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, InvalidOrderingHandle.")
+        .def("changeInteractionOrderType",
+             [](Client& c, InteractionClassHandle ic, OrderingHandle o) { c.change_interaction_order(ic.value, o.value); },
+             py::arg("interactionClass"), py::arg("orderingHandle"),
+             "Change the order (Receive or Timestamp) of this federate's later interactions of a published class (HLA 1.3 §6.22), until it unpublishes the class; receiveInteraction reports the order used. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidOrderingHandle.");
+}
+
+}  // namespace hlacore::bindings

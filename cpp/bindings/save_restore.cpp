@@ -1,0 +1,34 @@
+// Federation save and restore (HLA 1.3 §4.11-4.22; docs/save-restore.md).
+#include "bindings/convert.hpp"
+
+namespace hlacore::bindings {
+
+void bind_save_restore(Ambassador& rtia) {
+    rtia
+        .def("requestFederationSave",
+             [](Client& c, py::object label, std::optional<double> time) {
+                 const std::string l = to_bytes(label, "label");
+                 py::gil_scoped_release release;
+                 c.request_federation_save(l, time);
+             }, py::arg("label"), py::arg("theTime") = py::none(),
+             "Ask every federate to save (HLA 1.3 §4.11): initiateFederateSave(label) goes to each, then federationSaved() or federationNotSaved(). With theTime, a regulating or constrained federate is told once granted theTime or beyond; the others at once. The gateway keeps its part (in --save-dir as a file). Raises FederationTimeAlreadyPassed, InvalidFederationTime, SaveInProgress, RestoreInProgress.")
+        .def("federateSaveBegun", &Client::federate_save_begun,
+             "Tell the RTI this federate started saving (HLA 1.3 §4.13). Raises SaveNotInitiated.")
+        .def("federateSaveComplete", [](Client& c) { c.federate_save_complete(true); },
+             "Tell the RTI this federate saved its state (HLA 1.3 §4.14). Raises SaveNotInitiated.")
+        .def("federateSaveNotComplete", [](Client& c) { c.federate_save_complete(false); },
+             "Tell the RTI this federate could not save (HLA 1.3 §4.14): everyone gets federationNotSaved(). Raises SaveNotInitiated.")
+        .def("requestFederationRestore",
+             [](Client& c, py::object label) {
+                 const std::string l = to_bytes(label, "label");
+                 py::gil_scoped_release release;
+                 c.request_federation_restore(l);
+             }, py::arg("label"),
+             "Ask to restore the save `label` (HLA 1.3 §4.17), from memory or the gateway's --save-dir; the joined federates must have the names of those saved. requestFederationRestoreSucceeded(label) or requestFederationRestoreFailed(label, reason) follows, then federationRestoreBegun(), initiateFederateRestore(label, federateHandle) and federationRestored() / federationNotRestored() at every federate. Raises SaveInProgress, RestoreInProgress.")
+        .def("federateRestoreComplete", [](Client& c) { c.federate_restore_complete(true); },
+             "Tell the RTI this federate restored its state (HLA 1.3 §4.21). Raises RestoreNotRequested.")
+        .def("federateRestoreNotComplete", [](Client& c) { c.federate_restore_complete(false); },
+             "Tell the RTI this federate could not restore (HLA 1.3 §4.21): everyone gets federationNotRestored(). Raises RestoreNotRequested.");
+}
+
+}  // namespace hlacore::bindings

@@ -1,0 +1,21 @@
+// Synchronization points (HLA 1.3 §4.6-4.10).
+#include "bindings/convert.hpp"
+
+namespace hlacore::bindings {
+
+void bind_sync_points(Ambassador& rtia) {
+    rtia
+        .def("registerFederationSynchronizationPoint",
+             [](Client& c, py::object label, py::object tag, std::optional<std::vector<FederateHandle>> federates) {
+                 std::optional<std::vector<H32>> set;
+                 if (federates) set = to_handles(*federates);
+                 c.register_sync_point(to_bytes(label, "label"), to_bytes(tag, "tag"), set);
+             },
+             py::arg("label"), py::arg("tag"), py::arg("federates") = py::none(),
+             "Register a synchronization point (HLA 1.3 §4.6) for the whole federation or the given FederateHandles. Leads to synchronizationPointRegistrationSucceeded/Failed here and announceSynchronizationPoint at every member.")
+        .def("synchronizationPointAchieved",
+             [](Client& c, py::object label) { c.sync_point_achieved(to_bytes(label, "label")); }, py::arg("label"),
+             "Tell the RTI this federate reached an announced point (HLA 1.3 §4.9); federationSynchronized follows once every member has. Raises SynchronizationPointLabelWasNotAnnounced.");
+}
+
+}  // namespace hlacore::bindings

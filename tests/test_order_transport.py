@@ -29,21 +29,22 @@ def robot_with(a: Federate, b: Federate, name: str = "r1") -> tuple[rti.ObjectHa
     return obj, location, battery
 
 
-def reflections(fed: Federate) -> list[tuple[dict, str, str, object]]:
-    """Each reflectAttributeValues as (values, ordering name, transportation name, time or None)."""
+def delivered(fed: Federate, callback: str) -> list[tuple[dict, str, str, object]]:
+    """Each reflectAttributeValues or receiveInteraction as (values, ordering name, transportation name,
+    time or None)."""
     out = []
-    for args in fed.amb.named("reflectAttributeValues"):
+    for args in fed.amb.named(callback):
         time = args[5] if len(args) == 7 else None
         out.append((args[1], fed.rtia.getOrderingName(args[3]), fed.rtia.getTransportationName(args[4]), time))
     return out
+
+
+def reflections(fed: Federate) -> list[tuple[dict, str, str, object]]:
+    return delivered(fed, "reflectAttributeValues")
 
 
 def receptions(fed: Federate) -> list[tuple[dict, str, str, object]]:
-    out = []
-    for args in fed.amb.named("receiveInteraction"):
-        time = args[5] if len(args) == 7 else None
-        out.append((args[1], fed.rtia.getOrderingName(args[3]), fed.rtia.getTransportationName(args[4]), time))
-    return out
+    return delivered(fed, "receiveInteraction")
 
 
 def test_timestamp_attribute_changed_to_receive_order_arrives_receive_order(federation: Join) -> None:

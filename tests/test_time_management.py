@@ -29,6 +29,20 @@ def command_class(fed: Federate) -> tuple[rti.InteractionClassHandle, rti.Parame
     return command, fed.rtia.getParameterHandle("value", command)
 
 
+def regulating_sender_constrained_receiver(
+    federation: Join,
+) -> tuple[Federate, Federate, rti.InteractionClassHandle, rti.ParameterHandle]:
+    """'a' publishes command and regulates (lookahead 1), 'b' subscribes and is constrained only."""
+    a, b = federation("a"), federation("b")
+    command, value = command_class(a)
+    a.rtia.publishInteractionClass(command)
+    b.rtia.subscribeInteractionClass(command)
+    a.enable_time(lookahead=1.0, constrained=False)
+    b.enable_time(lookahead=None)
+    barrier(b.rtia)
+    return a, b, command, value
+
+
 def timeline(fed: Federate) -> list[tuple[str, float]]:
     """The federate's timestamped callbacks and grants, as (name, time), in delivery order."""
     out = []
@@ -239,13 +253,7 @@ def test_next_event_requests_grant_exactly_at_message_times(federation: Join) ->
 
 
 def test_retraction_removes_queued_messages_and_asks_receivers(federation: Join) -> None:
-    a, b = federation("a"), federation("b")
-    command, value = command_class(a)
-    a.rtia.publishInteractionClass(command)
-    b.rtia.subscribeInteractionClass(command)
-    a.enable_time(lookahead=1.0, constrained=False)
-    b.enable_time(lookahead=None)
-    barrier(b.rtia)
+    a, b, command, value = regulating_sender_constrained_receiver(federation)
     at5 = a.rtia.sendInteraction(command, {value: b"5"}, "", 5.0)
     at7 = a.rtia.sendInteraction(command, {value: b"7"}, "", 7.0)
     a.rtia.retract(at7)  # still queued at b: it disappears
@@ -300,13 +308,7 @@ def test_timestamped_messages_of_a_non_regulating_sender_are_receive_order(feder
 
 
 def test_disabling_constrained_delivers_the_queued_messages(federation: Join) -> None:
-    a, b = federation("a"), federation("b")
-    command, value = command_class(a)
-    a.rtia.publishInteractionClass(command)
-    b.rtia.subscribeInteractionClass(command)
-    a.enable_time(lookahead=1.0, constrained=False)
-    b.enable_time(lookahead=None)
-    barrier(b.rtia)
+    a, b, command, value = regulating_sender_constrained_receiver(federation)
     a.rtia.sendInteraction(command, {value: b"6"}, "", 6.0)
     a.rtia.sendInteraction(command, {value: b"5"}, "", 5.0)
     barrier(a.rtia)

@@ -80,14 +80,20 @@ class Attribute:
 
 
 @dataclass(frozen=True)
-class ObjectClass:
-    """An object class. ``attributes`` holds the inherited attributes first (with the parent's handles)."""
+class _Class:
+    """What object and interaction classes share: their place in the class tree."""
 
     handle: int
     name: str
     qualified_name: str
     parent: int | None
     children: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class ObjectClass(_Class):
+    """An object class. ``attributes`` holds the inherited attributes first (with the parent's handles)."""
+
     attributes: tuple[Attribute, ...]
 
     def attribute(self, name_or_handle: int | str) -> Attribute:
@@ -105,14 +111,9 @@ class Parameter:
 
 
 @dataclass(frozen=True)
-class InteractionClass:
+class InteractionClass(_Class):
     """An interaction class. ``parameters`` holds the inherited parameters first (with the parent's handles)."""
 
-    handle: int
-    name: str
-    qualified_name: str
-    parent: int | None
-    children: tuple[int, ...]
     transport: Transport
     order: Order
     space: str | None

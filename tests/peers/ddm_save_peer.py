@@ -11,15 +11,11 @@ first}); discoveries, reflections (tag), radio interactions
 (text) and the broadcast marker are printed as they come. Exits when the connection ends, or after 60 s.
 """
 
-import json
 import sys
 import time
 
 import hlacore.rti as rti
-
-
-def say(**fields):
-    print(json.dumps(fields), flush=True)
+from peerlib import round_trip, say
 
 
 class Ambassador(rti.FederateAmbassador):
@@ -75,10 +71,7 @@ def main():
         rtia.subscribeObjectClassAttributesWithRegion(vehicle, region, [rtia.getAttributeHandle("position", vehicle)])
         rtia.subscribeInteractionClassWithRegion(amb.radio, region)
         rtia.subscribeInteractionClass(rtia.getInteractionClassHandle("broadcast"))
-        try:  # a round trip: the gateway has handled the subscriptions once it is answered
-            rtia.destroyFederationExecution("ddm-save-peer-barrier")
-        except rti.FederationExecutionDoesNotExist:
-            pass
+        round_trip(rtia)  # the gateway has handled the subscriptions
         say(ready=True, region=int(region))
     else:
         say(ready=True)

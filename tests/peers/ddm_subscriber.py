@@ -17,6 +17,7 @@ import time
 from typing import Any
 
 import hlacore.rti as rti
+from peerlib import round_trip
 
 
 class Ambassador(rti.FederateAmbassador):
@@ -56,10 +57,7 @@ def main() -> None:
     rtia.subscribeObjectClassAttributesWithRegion(vehicle, region, [amb.position])
     rtia.subscribeInteractionClassWithRegion(amb.radio, region)
     rtia.subscribeInteractionClass(rtia.getInteractionClassHandle("broadcast"))
-    try:  # a round trip: the gateway has handled the subscriptions once it is answered
-        rtia.destroyFederationExecution("ddm-subscriber-barrier")
-    except rti.FederationExecutionDoesNotExist:
-        pass
+    round_trip(rtia)  # the gateway has handled the subscriptions
     print(json.dumps({"ready": True}), flush=True)
     deadline = time.monotonic() + 60
     while not amb.stopped and time.monotonic() < deadline:

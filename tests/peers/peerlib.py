@@ -27,6 +27,15 @@ def tick_until(rtia: rti.RTIAmbassador, predicate: Callable[[], bool], timeout: 
         rtia.tick(0.05, 0.1)
 
 
+def round_trip(rtia: rti.RTIAmbassador) -> None:
+    """A request answered by the gateway: whatever this federate sent before has been handled once it returns
+    (asks to destroy a federation that does not exist)."""
+    try:
+        rtia.destroyFederationExecution("peerlib-round-trip")
+    except rti.FederationExecutionDoesNotExist:
+        pass
+
+
 def linger(seconds: float) -> None:
     """Do nothing (never tick) until killed; exit by ourselves after `seconds` as a safety net."""
     deadline = time.monotonic() + seconds

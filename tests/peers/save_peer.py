@@ -8,15 +8,11 @@ handle, time, lookahead and the objects it knows); after federationRestored it a
 prints the reflections and the grant. Exits when the connection ends, or after 60 s as a safety net.
 """
 
-import json
 import sys
 import time
 
 import hlacore.rti as rti
-
-
-def say(**fields):
-    print(json.dumps(fields), flush=True)
+from peerlib import say
 
 
 class Ambassador(rti.FederateAmbassador):

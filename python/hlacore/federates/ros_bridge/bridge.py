@@ -85,8 +85,8 @@ class OdometryOut:
 
 
 @dataclass(frozen=True)
-class ScanOut:
-    """HLA → ROS: the robot's ``ranges`` as ``sensor_msgs/LaserScan`` (beams from ``-fov/2`` to ``+fov/2``)."""
+class _BeamsOut:
+    """HLA → ROS: the robot's ``ranges``, its beams spread over ``fov`` radians."""
 
     robot: str
     topic: str
@@ -97,15 +97,13 @@ class ScanOut:
 
 
 @dataclass(frozen=True)
-class RangeOut:
-    """HLA → ROS: the robot's nearest beam as ``sensor_msgs/Range`` (ULTRASOUND)."""
+class ScanOut(_BeamsOut):
+    """HLA → ROS: the robot's ``ranges`` as ``sensor_msgs/LaserScan`` (beams from ``-fov/2`` to ``+fov/2``)."""
 
-    robot: str
-    topic: str
-    fov: float = 0.1
-    range_min: float = 0.0
-    range_max: float = 5.0
-    frame_id: str = "base_laser_link"
+
+@dataclass(frozen=True)
+class RangeOut(_BeamsOut):
+    """HLA → ROS: the robot's nearest beam as ``sensor_msgs/Range`` (ULTRASOUND)."""
 
 
 @dataclass(frozen=True)

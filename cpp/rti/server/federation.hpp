@@ -127,17 +127,6 @@ private:
     void count_scope_watchers();
     void forget_update_regions(ObjectHandle object);
     void route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region);
-    void on(FederateHandle from, const wire::CreateRegion& m);
-    void on(FederateHandle from, const wire::ModifyRegion& m);
-    void on(FederateHandle from, const wire::DeleteRegion& m);
-    void on(FederateHandle from, const wire::AssociateRegion& m);
-    void on(FederateHandle from, const wire::UnassociateRegion& m);
-    void on(FederateHandle from, const wire::SubscribeObjectClassWithRegion& m);
-    void on(FederateHandle from, const wire::UnsubscribeObjectClassWithRegion& m);
-    void on(FederateHandle from, const wire::SubscribeInteractionClassWithRegion& m);
-    void on(FederateHandle from, const wire::UnsubscribeInteractionClassWithRegion& m);
-    void on(FederateHandle from, const wire::SendInteractionWithRegion& m);
-    void on(FederateHandle from, const wire::RequestClassUpdateWithRegion& m);
     // ---- end of data distribution management ----
 
     struct FederateState {
@@ -221,47 +210,13 @@ private:
     void deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender, std::uint64_t serial,
                                  double time);
 
-    // -- synchronization points: forwarded to SyncPoints (federation.cpp)
-    void on(FederateHandle from, const wire::RegisterSyncPoint& m);
-    void on(FederateHandle from, const wire::SyncPointAchieved& m);
-    // -- declaration management (HLA 1.3 §5): declarations.cpp
-    void on(FederateHandle from, const wire::PublishObjectClass& m);
-    void on(FederateHandle from, const wire::UnpublishObjectClass& m);
-    void on(FederateHandle from, const wire::SubscribeObjectClass& m);
-    void on(FederateHandle from, const wire::UnsubscribeObjectClass& m);
-    void on(FederateHandle from, const wire::PublishInteractionClass& m);
-    void on(FederateHandle from, const wire::UnpublishInteractionClass& m);
-    void on(FederateHandle from, const wire::SubscribeInteractionClass& m);
-    void on(FederateHandle from, const wire::UnsubscribeInteractionClass& m);
-    void on(FederateHandle from, const wire::SetAdvisorySwitch& m);
-    // -- object management (HLA 1.3 §6): objects.cpp
-    void on(FederateHandle from, const wire::UpdateAttributes& m);
-    void on(FederateHandle from, const wire::SendInteraction& m);
-    void on(FederateHandle from, const wire::DeleteObject& m);
-    void on(FederateHandle from, const wire::LocalDeleteObject& m);
-    void on(FederateHandle from, const wire::RequestObjectUpdate& m);
-    void on(FederateHandle from, const wire::RequestClassUpdate& m);
-    void on(FederateHandle from, const wire::ChangeAttributeDelivery& m);
-    void on(FederateHandle from, const wire::ChangeInteractionDelivery& m);
-    // -- time management (HLA 1.3 §8): time.cpp
-    void on(FederateHandle from, const wire::EnableTimeRegulation& m);
-    void on(FederateHandle from, const wire::DisableTimeRegulation& m);
-    void on(FederateHandle from, const wire::EnableTimeConstrained& m);
-    void on(FederateHandle from, const wire::DisableTimeConstrained& m);
-    void on(FederateHandle from, const wire::TimeAdvance& m);
-    void on(FederateHandle from, const wire::ModifyLookahead& m);
-    void on(FederateHandle from, const wire::SetAsynchronousDelivery& m);
-    void on(FederateHandle from, const wire::Retract& m);
-    // -- ownership management (HLA 1.3 §7): ownership.cpp
-    void on(FederateHandle from, const wire::UnconditionalDivestiture& m);
-    void on(FederateHandle from, const wire::NegotiatedDivestiture& m);
-    void on(FederateHandle from, const wire::CancelNegotiatedDivestiture& m);
-    void on(FederateHandle from, const wire::OwnershipAcquisition& m);
-    void on(FederateHandle from, const wire::OwnershipAcquisitionIfAvailable& m);
-    void on(FederateHandle from, const wire::CancelOwnershipAcquisition& m);
-    void on(FederateHandle from, const wire::QueryOwnership& m);
+    // The handlers, one per message of HLACORE_FEDERATION_SERVICES (wire/messages.hpp), each defined in
+    // the server file of its group; anything else is a protocol violation.
+#define HLACORE_X(name) void on(FederateHandle from, const wire::name& m);
+    HLACORE_FEDERATION_SERVICES(HLACORE_X)
+#undef HLACORE_X
     template <class M>
-    void on(FederateHandle from, const M& m);  // anything else: protocol violation
+    void on(FederateHandle from, const M& m);
 
     // ---- save/restore (cpp/rti/server/save_restore.cpp) ----
     struct Snapshot;  // a decoded save
@@ -281,8 +236,6 @@ private:
         bool failed = false;
         std::map<FederateHandle, std::vector<std::string>> held;
     };
-    void on(FederateHandle from, const wire::FederateSaveComplete& m);
-    void on(FederateHandle from, const wire::FederateRestoreComplete& m);
     // Tells the federates that may save now (all of them, or for a timed save those granted its time).
     void tell_savers();
     // During a timed save, time-managed federates not yet told are granted at most the save time.

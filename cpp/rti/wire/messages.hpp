@@ -131,6 +131,34 @@ using OptionalTime = std::optional<double>;
     X(TurnUpdatesOn)                 \
     X(TurnUpdatesOff)
 
+// The requests of a joined federate that its Federation serves, by service group: each has a handler
+// `Federation::on(FederateHandle, const M&)` in cpp/rti/server/<group>.cpp, declared from this list. The
+// other federate -> gateway messages are the gateway's own (server/gateway.cpp).
+#define HLACORE_FEDERATION_SERVICES(X)                                                                 \
+    /* sync_points (forwarded to SyncPoints by federation.cpp) */                                      \
+    X(RegisterSyncPoint) X(SyncPointAchieved)                                                          \
+    /* save_restore */                                                                                 \
+    X(FederateSaveComplete) X(FederateRestoreComplete)                                                 \
+    /* declarations */                                                                                 \
+    X(PublishObjectClass) X(UnpublishObjectClass) X(SubscribeObjectClass) X(UnsubscribeObjectClass)    \
+    X(PublishInteractionClass) X(UnpublishInteractionClass) X(SubscribeInteractionClass)               \
+    X(UnsubscribeInteractionClass) X(SetAdvisorySwitch)                                                \
+    /* objects */                                                                                      \
+    X(UpdateAttributes) X(SendInteraction) X(DeleteObject) X(LocalDeleteObject) X(RequestObjectUpdate) \
+    X(RequestClassUpdate) X(ChangeAttributeDelivery) X(ChangeInteractionDelivery)                      \
+    /* ownership */                                                                                    \
+    X(UnconditionalDivestiture) X(NegotiatedDivestiture) X(CancelNegotiatedDivestiture)                \
+    X(OwnershipAcquisition) X(OwnershipAcquisitionIfAvailable) X(CancelOwnershipAcquisition)           \
+    X(QueryOwnership)                                                                                  \
+    /* time */                                                                                         \
+    X(EnableTimeRegulation) X(DisableTimeRegulation) X(EnableTimeConstrained) X(DisableTimeConstrained) \
+    X(TimeAdvance) X(ModifyLookahead) X(SetAsynchronousDelivery) X(Retract)                            \
+    /* regions */                                                                                      \
+    X(CreateRegion) X(ModifyRegion) X(DeleteRegion) X(AssociateRegion) X(UnassociateRegion)            \
+    X(SubscribeObjectClassWithRegion) X(UnsubscribeObjectClassWithRegion)                              \
+    X(SubscribeInteractionClassWithRegion) X(UnsubscribeInteractionClassWithRegion)                    \
+    X(SendInteractionWithRegion) X(RequestClassUpdateWithRegion)
+
 enum class MessageType : std::uint16_t {
     Invalid = 0,
 #define HLACORE_X(name) name,

@@ -10,10 +10,11 @@ import sys
 from typing import Any, Callable, Iterator, Optional
 
 import pytest
+from hlacore.processes import Rtig
 
 from .machine import describe
 from .outputs import ROOT, write
-from .procs import RtigServer
+from .procs import bench_rtig
 from .report import Report
 
 _REPORT = Report()
@@ -28,8 +29,8 @@ def report() -> Report:
 
 
 @pytest.fixture
-def rtig() -> Iterator[RtigServer]:
-    with RtigServer() as server:
+def rtig() -> Iterator[Rtig]:
+    with bench_rtig() as server:
         yield server
 
 

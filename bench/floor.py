@@ -8,7 +8,7 @@ import json
 import socket
 import subprocess
 
-from .procs import python_peer
+from .procs import start_peer
 
 RECORD = 48  # bytes per message of the stream floor: about one hlacore update frame with 8 bytes of data
 
@@ -17,7 +17,7 @@ class _SocketPeer:
     """A bench/peers/echo.py process and this process's TCP connection to it."""
 
     def __init__(self, *args: object) -> None:
-        self.peer = python_peer("echo.py", *args)
+        self.peer = start_peer("echo.py", *args)
         try:
             port = self.peer.read_json(timeout=30.0)["port"]
             self.sock = socket.create_connection(("127.0.0.1", port))

@@ -5,9 +5,11 @@ timeAdvanceRequest and the grant (pure TAR → TAG). Lookahead 1."""
 
 from __future__ import annotations
 
+from hlacore.processes import Child
+
 from .federation import create, join, leave, release_peers
 from .peers.peerlib import STOP
-from .procs import Child, close_all, python_peer
+from .procs import close_all, start_peer
 
 
 class Lockstep:
@@ -25,7 +27,7 @@ class Lockstep:
         self.peers: list[Child] = []
         try:
             self.peers = [
-                python_peer("lockstep_peer.py", address, self.federation, f"p{i}", federates, max_steps,
+                start_peer("lockstep_peer.py", address, self.federation, f"p{i}", federates, max_steps,
                             *([] if updates else ["pure"]))
                 for i in range(federates - 1)
             ]

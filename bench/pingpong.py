@@ -9,9 +9,11 @@ from __future__ import annotations
 
 import time
 
+from hlacore.processes import Child
+
 from .federation import create, join, leave
 from .peers.peerlib import STOP
-from .procs import Child, python_peer
+from .procs import start_peer
 
 FAR = 1e12
 
@@ -27,7 +29,7 @@ class PingPong:
         self.fed, self.amb = join(address, self.federation, "ping")
         if self.tso:
             self.fed.enable_time()
-        self.peer: Child = python_peer("pong_peer.py", address, self.federation, mode)
+        self.peer: Child = start_peer("pong_peer.py", address, self.federation, mode)
         try:
             assert self.peer.read_json(timeout=60.0) == {"ready": True}
         except BaseException:

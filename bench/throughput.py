@@ -4,9 +4,11 @@ rate is of updates delivered, none lost."""
 
 from __future__ import annotations
 
+from hlacore.processes import Child
+
 from .federation import create, join, leave
 from .peers.peerlib import STOP
-from .procs import Child, close_all, python_peer
+from .procs import close_all, start_peer
 
 PAYLOAD = b"\x00\x01\x02\x03\x04\x05\x06\x07"  # 8 bytes: a small update
 
@@ -20,7 +22,7 @@ class Fanout:
         self.peers: list[Child] = []
         try:
             self.peers = [
-                python_peer("count_peer.py", address, self.federation, f"s{i}", burst) for i in range(subscribers)
+                start_peer("count_peer.py", address, self.federation, f"s{i}", burst) for i in range(subscribers)
             ]
             for peer in self.peers:
                 assert peer.read_json(timeout=60.0) == {"ready": True}

@@ -4,24 +4,17 @@ condition holds. Everything started here is stopped here, by pid."""
 from __future__ import annotations
 
 import contextlib
-import json
 import os
 import pathlib
-import queue
 import re
-import shutil
-import signal
-import subprocess
-import sys
-import threading
 import time
-import weakref
 from typing import Any, Callable, Iterator, Optional
 
 import pytest
 
 import hlacore
 from hlacore import rti
+from hlacore.processes import Child, Rtig, python_peer, rtig_beside_python
 
 DATA = pathlib.Path(__file__).parent / "data"
 ROBOT_FED = str(DATA / "robot.fed")
@@ -30,57 +23,15 @@ SANITIZER_REPORT = re.compile(r"ERROR: AddressSanitizer|runtime error:|ERROR: Le
 
 def rtig_executable() -> str:
     """The rtig under test: $HLACORE_TEST_RTIG (the sanitizer build), else the one installed beside Python."""
-    explicit = os.environ.get("HLACORE_TEST_RTIG")
-    if explicit:
-        return explicit
-    beside = pathlib.Path(sys.executable).parent / "rtig"
-    if beside.exists():
-        return str(beside)
-    found = shutil.which("rtig")
-    if not found:
-        raise RuntimeError("rtig is not installed: run ./scripts/test.sh")
-    return found
+    return os.environ.get("HLACORE_TEST_RTIG") or rtig_beside_python()
 
 
-class RtigProcess:
-    """A running `rtig --port 0`; its stderr goes to a file so that tests can read the log."""
+class RtigProcess(Rtig):
+    """The rtig under test on port 0, its log in the test's tmp_path."""
 
     def __init__(self, tmp_path: pathlib.Path, *args: str, executable: Optional[str] = None) -> None:
-        self.log_path = tmp_path / f"rtig-{len(list(tmp_path.glob('rtig-*.log')))}.log"
-        self._log = open(self.log_path, "wb")
-        self.proc = subprocess.Popen(
-            [executable or rtig_executable(), "--port", "0", *args],
-            stdout=subprocess.PIPE,
-            stderr=self._log,
-            stdin=subprocess.DEVNULL,
-        )
-        assert self.proc.stdout is not None
-        line = self.proc.stdout.readline().decode()
-        match = re.fullmatch(r"rtig listening on (\S+):(\d+)\n", line)
-        if not match:
-            self.stop()
-            raise RuntimeError(f"unexpected rtig readiness line {line!r}; log: {self.log()}")
-        self.host, self.port = match.group(1), int(match.group(2))
-        self.address = f"{self.host}:{self.port}"
-
-    def log(self) -> str:
-        if not self._log.closed:
-            self._log.flush()
-        return self.log_path.read_text(errors="replace")
-
-    def stop(self) -> int:
-        """SIGTERM by pid, wait, and return the exit status."""
-        if self.proc.poll() is None:
-            self.proc.send_signal(signal.SIGTERM)
-            try:
-                self.proc.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
-                self.proc.wait()
-        if self.proc.stdout:
-            self.proc.stdout.close()
-        self._log.close()
-        return self.proc.returncode
+        log_path = tmp_path / f"rtig-{len(list(tmp_path.glob('rtig-*.log')))}.log"
+        super().__init__(*args, executable=executable or rtig_executable(), log_path=log_path)
 
 
 @contextlib.contextmanager
@@ -264,43 +215,6 @@ def federation(gateway_address: str) -> Iterator[Callable[[str], Federate]]:
         yield join
 
 
-_peer_lines: "weakref.WeakKeyDictionary[subprocess.Popen[str], queue.Queue[str]]" = weakref.WeakKeyDictionary()
-
-
-def _lines_of(proc: subprocess.Popen[str]) -> "queue.Queue[str]":
-    """The peer's stdout lines, read by a thread of their own: select() on the pipe would miss a second
-    line already in the file object's buffer."""
-    if proc not in _peer_lines:
-        lines: "queue.Queue[str]" = queue.Queue()
-        assert proc.stdout is not None
-        stdout = proc.stdout
-
-        def pump() -> None:
-            try:
-                for line in stdout:
-                    lines.put(line)
-            except (OSError, ValueError):  # the test closed the pipe
-                pass
-            lines.put("")  # end of output
-
-        threading.Thread(target=pump, name=f"peer-{proc.pid}", daemon=True).start()
-        _peer_lines[proc] = lines
-    return _peer_lines[proc]
-
-
-def read_json(proc: subprocess.Popen[str], timeout: float = 30.0) -> dict[str, Any]:
-    """The next JSON line a peer prints; fails (killing the peer) if none comes within timeout seconds."""
-    try:
-        line = _lines_of(proc).get(timeout=timeout)
-    except queue.Empty:
-        line = ""
-    if not line:
-        proc.kill()
-        proc.wait()
-        raise AssertionError(f"no line from pid {proc.pid} within {timeout:.0f} s: {proc.stderr.read() if proc.stderr else ''}")
-    return dict(json.loads(line))
-
-
 class Conductor:
     """The test's own federate: creates TestFed, starts peer processes (each prints {"ready": true} when
     set up) and releases them all at once with synchronization point 'start'."""
@@ -311,14 +225,14 @@ class Conductor:
         self.rtia.createFederationExecution("TestFed", ROBOT_FED)
         self.amb = Recorder()
         self.rtia.joinFederationExecution("conductor", "TestFed", self.amb)
-        self.peers: dict[str, subprocess.Popen[str]] = {}
+        self.peers: dict[str, Child] = {}
 
     def start(self, script: str, args: dict[str, list[str]], timeout: float = 30.0) -> None:
         """Start tests/peers/<script> once per name with its arguments; wait until each is ready."""
         for name, peer_args in args.items():
             self.peers[name] = python_subprocess(script, *peer_args)
         for name in args:
-            assert read_json(self.peers[name], timeout) == {"ready": True}
+            assert self.peers[name].read_json(timeout) == {"ready": True}
 
     def synchronize(self, timeout: float = 30.0) -> None:
         self.rtia.registerFederationSynchronizationPoint("start", "")
@@ -328,12 +242,7 @@ class Conductor:
 
     def close(self) -> None:
         for peer in self.peers.values():
-            if peer.poll() is None:
-                peer.kill()
-            peer.wait()
-            for stream in (peer.stdout, peer.stderr):
-                if stream:
-                    stream.close()
+            peer.close()
         self.rtia.resignFederationExecution(rti.ResignAction.NoAction)
         self.rtia.destroyFederationExecution("TestFed")
 
@@ -345,14 +254,6 @@ def conductor(rtig: RtigProcess) -> Iterator[Conductor]:
     c.close()
 
 
-def python_subprocess(script: str, *args: str, env: Optional[dict[str, str]] = None) -> subprocess.Popen[str]:
-    """Start tests/peers/<script> with this interpreter; stdout is line-buffered text."""
-    full_env = dict(os.environ, PYTHONUNBUFFERED="1", **(env or {}))
-    return subprocess.Popen(
-        [sys.executable, str(pathlib.Path(__file__).parent / "peers" / script), *args],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        stdin=subprocess.DEVNULL,
-        text=True,
-        env=full_env,
-    )
+def python_subprocess(script: str, *args: str, env: Optional[dict[str, str]] = None) -> Child:
+    """tests/peers/<script> under this interpreter (hlacore.processes.Child: reports read with a deadline)."""
+    return python_peer(pathlib.Path(__file__).parent / "peers" / script, *args, env=env)

@@ -14,7 +14,7 @@ import pytest
 
 import hlacore.rti as rti
 
-from conftest import DATA, Federate, RtigProcess, barrier, joined_federation, python_subprocess, read_json, settle, tick_until
+from conftest import DATA, Federate, RtigProcess, barrier, joined_federation, python_subprocess, settle, tick_until
 from test_robustness import Legit, dropped_line, frame, handles, legit, raw_client, u32  # noqa: F401 (legit: fixture)
 
 DDM_FED = str(DATA / "ddm.fed")
@@ -637,7 +637,7 @@ def test_subscribers_in_separate_processes_receive_only_their_region(rtig: RtigP
         for name, low, high in (("west", 0, 99), ("east", 100, 199)):
             peers[name] = python_subprocess("ddm_subscriber.py", rtig.address, name, str(low), str(high))
         for name in peers:
-            assert read_json(peers[name]) == {"ready": True}
+            assert peers[name].read_json() == {"ready": True}
         pub.publishObjectClass(h.vehicle, [h.position])
         pub.publishInteractionClass(h.broadcast)
         pub.publishInteractionClass(h.radio)
@@ -653,17 +653,12 @@ def test_subscribers_in_separate_processes_receive_only_their_region(rtig: RtigP
         pub.notifyAboutRegionModification(at_west, [(h.x, (120, 130))])
         pub.updateAttributeValues(vw, {h.position: b"w-moved"}, "")
         pub.sendInteraction(h.broadcast, {h.broadcast_text: b"stop"}, "")
-        results = {name: read_json(peers[name]) for name in peers}
+        results = {name: peers[name].read_json() for name in peers}
         for proc in peers.values():
             assert proc.wait(timeout=30) == 0
     finally:
         for proc in peers.values():
-            if proc.poll() is None:
-                proc.kill()
-                proc.wait()
-            for stream in (proc.stdout, proc.stderr):
-                if stream:
-                    stream.close()
+            proc.close()
         try:
             pub.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
         finally:

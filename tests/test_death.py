@@ -11,9 +11,7 @@ from __future__ import annotations
 
 import os
 import pathlib
-import select
 import signal
-import subprocess
 import sys
 import time
 from typing import Any, Iterator, Optional
@@ -21,31 +19,26 @@ from typing import Any, Iterator, Optional
 import pytest
 
 import hlacore.rti as rti
+from hlacore.processes import Child
 from hlacore.status import status
 
 from conftest import ROBOT_FED, Recorder, RtigProcess, python_subprocess, running_rtig, tick_until
 
 
-def read_ready(proc: subprocess.Popen[str], timeout: float = 60.0) -> list[int]:
+def read_ready(proc: Child, timeout: float = 60.0) -> list[int]:
     """The federate handles printed by crowd.py's `ready` line."""
-    assert proc.stdout is not None
-    ready, _, _ = select.select([proc.stdout], [], [], timeout)
-    line = proc.stdout.readline() if ready else ""
+    line = proc.read_line(timeout)
     if not line.startswith("ready "):
         proc.kill()
-        proc.wait()
-        raise AssertionError(f"crowd.py did not get ready: {line!r} {proc.stderr.read() if proc.stderr else ''}")
+        raise AssertionError(f"crowd.py did not get ready: {line!r} {proc.stderr()}")
     return [int(h) for h in line.split()[1:]]
 
 
-def kill(proc: subprocess.Popen[str]) -> None:
+def kill(proc: Child) -> None:
     """SIGKILL by pid and reap."""
-    if proc.poll() is None:
-        proc.send_signal(signal.SIGKILL)
+    proc.send_signal(signal.SIGKILL)
     assert proc.wait(timeout=10) in (-signal.SIGKILL, 0, 3)
-    for stream in (proc.stdout, proc.stderr):
-        if stream is not None:
-            stream.close()
+    proc.close()
 
 
 def federates_of(address: str, federation: str = "TestFed") -> list[dict[str, Any]]:
@@ -63,14 +56,14 @@ def wait_until(predicate: Any, timeout: float = 10.0) -> None:
 
 
 @pytest.fixture
-def crowd_procs() -> Iterator[list[subprocess.Popen[str]]]:
-    procs: list[subprocess.Popen[str]] = []
+def crowd_procs() -> Iterator[list[Child]]:
+    procs: list[Child] = []
     yield procs
     for proc in procs:
         kill(proc)
 
 
-def test_killed_during_a_time_advance_request(rtig: RtigProcess, crowd_procs: list[subprocess.Popen[str]]) -> None:
+def test_killed_during_a_time_advance_request(rtig: RtigProcess, crowd_procs: list[Child]) -> None:
     """Two federates (one process) with a pending TAR(5) are killed: the pending requests go with them, the
     others advance to 10, and every timestamped message the dead sent before dying (updates and interactions at
     1, 2, 3) is delivered once, in timestamp order, before the grant that covers it."""
@@ -210,7 +203,7 @@ def test_rtig_memory_returns_after_killed_crowds(tmp_path: pathlib.Path) -> None
         watcher.tick(0.1, 0.1)
         before = vm_rss(pid)
         peaks, after = [], []
-        crowd: Optional[subprocess.Popen[str]] = None
+        crowd: Optional[Child] = None
         try:
             for cycle in range(MEMORY_CYCLES):
                 label = f"sync{cycle}"

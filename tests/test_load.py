@@ -10,7 +10,7 @@ from __future__ import annotations
 import os
 import signal
 
-from conftest import Conductor, read_json
+from conftest import Conductor
 
 FEDERATES = int(os.environ.get("HLACORE_LOAD_FEDERATES", "8"))
 UPDATES = int(os.environ.get("HLACORE_LOAD_UPDATES", "200"))
@@ -23,10 +23,10 @@ def peer_args(conductor: Conductor, names: list[str], *flags: str) -> dict[str, 
 
 
 def check_results(conductor: Conductor, survivors: list[str], victims: list[str], die_at: int) -> None:
-    results = {name: read_json(conductor.peers[name], RUN_TIMEOUT) for name in survivors}
+    results = {name: conductor.peers[name].read_json(RUN_TIMEOUT) for name in survivors}
     for name in survivors:
         peer = conductor.peers[name]
-        assert peer.wait(timeout=60) == 0, peer.stderr.read() if peer.stderr else ""
+        assert peer.wait(timeout=60) == 0, peer.stderr()
     expected_last = {n: UPDATES for n in survivors} | {n: die_at for n in victims}
     for name, result in results.items():
         assert result["errors"] == [], (name, result["errors"])
@@ -55,7 +55,7 @@ def test_lockstep_load_with_two_federates_killed_midway(conductor: Conductor) ->
                     timeout=120)
     conductor.synchronize(timeout=120)
     for name in victims:
-        assert read_json(conductor.peers[name], RUN_TIMEOUT) == {"dying": die_at}
+        assert conductor.peers[name].read_json(RUN_TIMEOUT) == {"dying": die_at}
         conductor.peers[name].send_signal(signal.SIGKILL)
     for name in victims:
         assert conductor.peers[name].wait(timeout=10) == -signal.SIGKILL

@@ -1,9 +1,7 @@
 """Attribute ownership management (HLA 1.3 §7): divestiture, acquisition, release, cancellations,
 queries, the privilege to delete, resigning and dying owners."""
 
-import select
 import signal
-import subprocess
 from typing import Optional
 
 import pytest
@@ -473,21 +471,13 @@ def test_resign_without_releasing_owned_attributes_is_refused(robots):
     a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjects)
 
 
-def _read_line(proc: subprocess.Popen, timeout: float = 15.0) -> str:
-    ready, _, _ = select.select([proc.stdout], [], [], timeout)
-    assert ready, "peer printed nothing"
-    line = proc.stdout.readline()
-    assert line, f"peer exited early: {proc.stderr.read()}"
-    return line.strip()
-
-
 def test_dying_owner_attributes_become_available(rtig):
     """A SIGKILLed federate is resigned with DeleteObjectsAndReleaseAttributes: the attributes it acquired
     go to a waiting acquirer or become unowned, available to attributeOwnershipAcquisitionIfAvailable."""
     creator = rti.RTIAmbassador(rtig.address)
     creator.createFederationExecution("TestFed", ROBOT_FED)
     a = Federate(rtig.address, "a")
-    victim: Optional[subprocess.Popen] = None
+    victim = None
     try:
         robot = a.rtia.getObjectClassHandle("robot")
         location = a.rtia.getAttributeHandle("location", robot)
@@ -497,7 +487,7 @@ def test_dying_owner_attributes_become_available(rtig):
         obj = a.rtia.registerObjectInstance(robot, "r1")
         a.rtia.unconditionalAttributeOwnershipDivestiture(obj, [location, battery])
         victim = python_subprocess("ownership_victim.py", rtig.address)
-        line = _read_line(victim)
+        line = victim.read_line(15.0)
         assert line.startswith("owner "), line
         victim_handle = int(line.split()[1])
         tick_until(lambda: a.amb.named("reflectAttributeValues"), a.rtia)
@@ -517,11 +507,7 @@ def test_dying_owner_attributes_become_available(rtig):
         a.rtia.updateAttributeValues(obj, {location: b"a again"}, "")
     finally:
         if victim is not None:
-            if victim.poll() is None:
-                victim.kill()
-                victim.wait()
-            victim.stdout.close()
-            victim.stderr.close()
+            victim.close()
         a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
         creator.destroyFederationExecution("TestFed")
 

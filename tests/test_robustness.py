@@ -8,11 +8,9 @@ import os
 import pathlib
 import random
 import re
-import select
 import signal
 import socket
 import struct
-import subprocess
 import time
 from dataclasses import dataclass, field
 from typing import Any, Iterator, Optional
@@ -20,6 +18,7 @@ from typing import Any, Iterator, Optional
 import pytest
 
 from hlacore import _core, rti
+from hlacore.processes import Child
 
 from conftest import (
     ROBOT_FED,
@@ -649,14 +648,6 @@ def test_client_that_never_reads_is_dropped(rtig: RtigProcess, legit: Legit) -> 
 # ---- 9. a federate killed with SIGKILL ----
 
 
-def read_line(proc: subprocess.Popen[str], timeout: float) -> str:
-    assert proc.stdout is not None
-    ready, _, _ = select.select([proc.stdout], [], [], timeout)
-    if not ready:
-        raise AssertionError(f"no output from pid {proc.pid} within {timeout} s")
-    return proc.stdout.readline()
-
-
 @pytest.mark.parametrize("achieve_before_kill", [True, False], ids=["achieved-before", "achieved-after"])
 def test_killed_federate_is_resigned(rtig: RtigProcess, achieve_before_kill: bool) -> None:
     """A federate killed with SIGKILL while owning an object and holding up a sync point is resigned: its
@@ -664,14 +655,14 @@ def test_killed_federate_is_resigned(rtig: RtigProcess, achieve_before_kill: boo
     creator = rti.RTIAmbassador(rtig.address)
     creator.createFederationExecution("TestFed", ROBOT_FED)
     watcher = Federate(rtig.address, "watcher")
-    victim: Optional[subprocess.Popen[str]] = None
+    victim: Optional[Child] = None
     try:
         robot = watcher.rtia.getObjectClassHandle("robot")
         location = watcher.rtia.getAttributeHandle("location", robot)
         watcher.rtia.subscribeObjectClassAttributes(robot, [location])
         victim = python_subprocess("victim_federate.py", rtig.address)
-        line = read_line(victim, timeout=15)
-        assert line.startswith("ready "), (line, victim.stderr.read() if victim.poll() is not None else "")  # type: ignore[union-attr]
+        line = victim.read_line(timeout=15)
+        assert line.startswith("ready "), (line, victim.stderr())
         _, victim_handle, victim_object = line.split()
         tick_until(lambda: any(a[2] == "victim" for a in watcher.amb.named("discoverObjectInstance")), watcher.rtia)
         (obj, _, _) = next(a for a in watcher.amb.named("discoverObjectInstance") if a[2] == "victim")
@@ -699,12 +690,7 @@ def test_killed_federate_is_resigned(rtig: RtigProcess, achieve_before_kill: boo
         again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
     finally:
         if victim is not None:
-            if victim.poll() is None:
-                victim.kill()
-            victim.wait(timeout=10)
-            for stream in (victim.stdout, victim.stderr):
-                if stream is not None:
-                    stream.close()
+            victim.close()
         watcher.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
     creator.destroyFederationExecution("TestFed")
 

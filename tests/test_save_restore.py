@@ -4,18 +4,24 @@ saves, save files, restoring after `rtig` was restarted, and unusable saves. Con
 
 from __future__ import annotations
 
-import json
 import pathlib
-import subprocess
 from typing import Any, Optional
-
-import pytest
 
 import hlacore
 import hlacore.rti as rti
 import hlacore.status
+import pytest
+from conftest import (
+    ROBOT_FED,
+    Recorder,
+    joined_federation,
+    python_subprocess,
+    running_rtig,
+    settle,
+    tick_until,
+)
+from hlacore.processes import Child
 
-from conftest import ROBOT_FED, Recorder, joined_federation, python_subprocess, running_rtig, settle, tick_until
 
 class Fed:
     """One joined federate with a Recorder, and the robot class handles."""
@@ -370,9 +376,7 @@ def test_save_file_and_restore_after_rtig_restart(tmp_path: pathlib.Path):
             assert peer_says(peer) == {"event": "federationSaved"}
             before = saved_view(federation_status(server.address))
         finally:
-            peer.kill()
-            peer.wait()
-            close_pipes(peer)
+            peer.close()
     assert [p.name for p in save_dir.iterdir()] == ["TestFed--snap.hlasave"]
     assert [f["queued_tso"] for f in before["federates"]] == [0, 1]
 
@@ -401,26 +405,12 @@ def test_save_file_and_restore_after_rtig_restart(tmp_path: pathlib.Path):
             a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
             assert peer_says(peer) == {"event": "granted", "time": 5.0}
         finally:
-            peer.kill()
-            peer.wait()
-            close_pipes(peer)
+            peer.close()
 
 
-def peer_says(peer: subprocess.Popen[str]) -> dict[str, Any]:
-    """The next JSON line of tests/peers/save_peer.py. A plain readline, because the peer often prints
-    two lines at once (select() would not see the second one, already buffered here); it is bounded by
-    the peer, which exits after 60 s at most."""
-    assert peer.stdout is not None
-    line = peer.stdout.readline()
-    if not line:
-        raise AssertionError(f"save_peer.py ended: {peer.stderr.read() if peer.stderr else ''}")
-    return dict(json.loads(line))
-
-
-def close_pipes(proc: subprocess.Popen[str]) -> None:
-    for stream in (proc.stdout, proc.stderr):
-        if stream:
-            stream.close()
+def peer_says(peer: Child) -> dict[str, Any]:
+    """The next JSON line of tests/peers/save_peer.py."""
+    return peer.read_json(60.0)
 
 
 def test_corrupt_or_missing_save_file_fails_the_restore_and_rtig_keeps_serving(tmp_path: pathlib.Path):
@@ -485,17 +475,13 @@ def test_a_federate_dying_during_a_save_makes_it_fail(tmp_path: pathlib.Path):
             a.rtia.federateSaveComplete()
             assert peer_says(peer) == {"event": "initiateFederateSave", "label": "doomed"}
             peer.kill()
-            peer.wait()
             tick_all(lambda: a.named("federationNotSaved"), a)
             assert "saves" in federation_status(server.address)["save_restore"]
             assert federation_status(server.address)["save_restore"]["saves"] == []
             a.rtia.timeAdvanceRequest(1.0)  # the federation goes on without it
             tick_all(lambda: a.named("timeAdvanceGrant"), a)
         finally:
-            if peer.poll() is None:
-                peer.kill()
-            peer.wait()
-            close_pipes(peer)
+            peer.close()
         a.rtia.resignFederationExecution(rti.ResignAction.NoAction)
         creator.destroyFederationExecution("TestFed")
 

@@ -7,16 +7,21 @@ from __future__ import annotations
 
 import pathlib
 import struct
-import subprocess
 from typing import Any
 
-import pytest
-
 import hlacore.rti as rti
-
-from conftest import Recorder, barrier, python_subprocess, running_rtig, settle, tick_until
+import pytest
+from conftest import (
+    Recorder,
+    barrier,
+    python_subprocess,
+    running_rtig,
+    settle,
+    tick_until,
+)
+from hlacore.processes import Child
 from test_ddm import DDM_FED, Fom, fom_of
-from test_save_restore import close_pipes, peer_says
+from test_save_restore import peer_says
 
 FULL = (rti.MIN_EXTENT, rti.MAX_EXTENT)
 
@@ -180,7 +185,7 @@ def test_restore_brings_back_regions_subscriptions_and_associations(gateway_addr
         creator.destroyFederationExecution("DdmFed")
 
 
-def peer_events_until_marker(peer: subprocess.Popen[str]) -> list[dict[str, Any]]:
+def peer_events_until_marker(peer: Child) -> list[dict[str, Any]]:
     """What the peer printed up to (not including) the next broadcast marker."""
     events = []
     while (event := peer_says(peer)) != {"event": "marker"}:
@@ -240,9 +245,7 @@ def test_regions_come_back_after_rtig_restarts_on_its_save_dir(tmp_path: pathlib
                 {"event": "discover", "name": "v1"}, {"event": "reflect", "tag": "changed"},
                 {"event": "radio", "text": "changed"}]
         finally:
-            peer.kill()
-            peer.wait()
-            close_pipes(peer)
+            peer.close()
     [saved] = list(save_dir.iterdir())
 
     with running_rtig(tmp_path, "--save-dir", str(save_dir)) as server:
@@ -286,9 +289,7 @@ def test_regions_come_back_after_rtig_restarts_on_its_save_dir(tmp_path: pathlib
             assert round_from_p(p, s1, v1, u, "still") == ["radio still", "reflect still"]
             assert peer_events_until_marker(peer) == []
         finally:
-            peer.kill()
-            peer.wait()
-            close_pipes(peer)
+            peer.close()
 
 
 def advisories(fed: Fed) -> list[tuple[str, set]]:

@@ -122,17 +122,10 @@ def test_ctrl_c_interrupts_a_blocking_tick(gateway_address):
     """SIGINT ends a tick(30, 30) wait in another process with KeyboardInterrupt, promptly."""
     creator = rti.RTIAmbassador(gateway_address)
     creator.createFederationExecution("TestFed", ROBOT_FED)
-    proc = python_subprocess("tick_forever.py", gateway_address)
-    try:
-        assert proc.stdout.readline() == "ticking\n"
+    with python_subprocess("tick_forever.py", gateway_address) as proc:
+        assert proc.read_line(30) == "ticking"
         time.sleep(0.2)  # let it enter the wait; the signal must interrupt a wait in progress
         proc.send_signal(signal.SIGINT)
-        assert proc.wait(timeout=10) == 0, proc.stderr.read()
-        assert proc.stdout.readline().startswith("interrupted after")
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        proc.stdout.close()
-        proc.stderr.close()
+        assert proc.wait(timeout=10) == 0, proc.stderr()
+        assert proc.read_line(5).startswith("interrupted after")
     creator.destroyFederationExecution("TestFed")

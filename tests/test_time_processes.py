@@ -7,7 +7,7 @@ import time
 
 import pytest
 
-from conftest import Conductor, read_json, tick_until
+from conftest import Conductor, tick_until
 
 
 def lockstep_peers(conductor: Conductor, steps: int, count: int, *flags: str) -> dict[str, list[str]]:
@@ -18,9 +18,9 @@ def test_two_processes_in_lockstep_for_1000_steps(conductor: Conductor) -> None:
     """Paper 2's lockstep: every timestamped update arrives before the grant to its time, none lost."""
     conductor.start("lockstep.py", lockstep_peers(conductor, 1000, 2))
     conductor.synchronize()
-    results = [read_json(peer, 60) for peer in conductor.peers.values()]
+    results = [peer.read_json(60) for peer in conductor.peers.values()]
     for peer in conductor.peers.values():
-        assert peer.wait(timeout=60) == 0, peer.stderr.read() if peer.stderr else ""
+        assert peer.wait(timeout=60) == 0, peer.stderr()
     for result in results:
         assert result["errors"] == []
         assert result["received"] == 1000

@@ -2,7 +2,7 @@
 
 import hlacore.rti as rti
 
-from conftest import ROBOT_FED, python_subprocess, read_json
+from conftest import ROBOT_FED, python_subprocess
 
 LOCATION = bytes(range(256)) + b"\x00tail"
 COMMAND = b"go\x00\xff\xfe"
@@ -15,20 +15,16 @@ def test_robot_update_interaction_and_sync_point_across_processes(gateway_addres
     receiver = python_subprocess("robot_pair.py", gateway_address, "receiver")
     sender = None
     try:
-        assert read_json(receiver) == {"joined": True}
+        assert receiver.read_json() == {"joined": True}
         sender = python_subprocess("robot_pair.py", gateway_address, "sender")
-        sent = read_json(sender)
-        got = read_json(receiver)
-        assert sender.wait(timeout=20) == 0, sender.stderr.read()
-        assert receiver.wait(timeout=20) == 0, receiver.stderr.read()
+        sent = sender.read_json()
+        got = receiver.read_json()
+        assert sender.wait(timeout=20) == 0, sender.stderr()
+        assert receiver.wait(timeout=20) == 0, receiver.stderr()
     finally:
         for proc in (receiver, sender):
-            if proc and proc.poll() is None:
-                proc.kill()
-                proc.wait()
             if proc:
-                proc.stdout.close()
-                proc.stderr.close()
+                proc.close()
     assert got["discovered_class"] == "robot"
     assert got["discovered_name"] == "robot-1"
     assert got["reflected"] == {"location": LOCATION.hex()}

@@ -1,20 +1,16 @@
-"""What every bench peer does: report as JSON lines, join the federation with the robot FOM's location
+"""What every bench peer does (on hlacore.processes): report as JSON lines, join the federation with the robot FOM's location
 attribute published and subscribed, tick with a deadline, and become regulating and constrained."""
 
 from __future__ import annotations
 
-import json
 import sys
-import time
-from typing import Any, Callable
+from typing import Callable
 
 import hlacore.rti as rti
+from hlacore import processes
+from hlacore.processes import say
 
 STOP = b"stop"  # the conductor's last update: peers leave their loop when they reflect it
-
-
-def say(**fields: Any) -> None:
-    print(json.dumps(fields), flush=True)
 
 
 def fail(message: str) -> None:
@@ -23,11 +19,7 @@ def fail(message: str) -> None:
 
 
 def tick_until(rtia: rti.RTIAmbassador, predicate: Callable[[], bool], timeout: float = 60.0) -> None:
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        if time.monotonic() > deadline:
-            fail("timeout")
-        rtia.tick(0.5, 0.5)
+    processes.tick_until(rtia, predicate, timeout)
 
 
 class Joined:
@@ -55,22 +47,10 @@ class Joined:
         self.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
 
 
-class TimeAmbassador(rti.FederateAmbassador):
-    """Keeps the synchronization point state."""
-
-    def __init__(self) -> None:
-        self.announced = False
-        self.synchronized = False
-
-    def announceSynchronizationPoint(self, label: str, tag: str) -> None:
-        self.announced = True
-
-    def federationSynchronized(self, label: str) -> None:
-        self.synchronized = True
+# Keeps the synchronization point state of the conductor's "start".
+TimeAmbassador = processes.SyncAmbassador
 
 
 def await_start(fed: Joined, amb: TimeAmbassador) -> None:
     """Wait for the conductor's synchronization point "start" and achieve it."""
-    tick_until(fed.rtia, lambda: amb.announced)
-    fed.rtia.synchronizationPointAchieved("start")
-    tick_until(fed.rtia, lambda: amb.synchronized)
+    processes.synchronize(fed.rtia, amb, "start")

@@ -34,7 +34,8 @@ from conftest import (
 # ---- the wire protocol, as a hostile client speaks it (cpp/rti/wire/messages.hpp) ----
 
 MAGIC = 0x484C4143
-VERSION = 1
+VERSION = int(re.search(r"kProtocolVersion = (\d+);",
+                        (pathlib.Path(__file__).parent.parent / "cpp/rti/wire/messages.hpp").read_text()).group(1))
 MAX_FRAME = 64 << 20
 MESSAGE_TYPES = _core._message_names()  # the list of cpp/rti/wire/messages.hpp, in code order
 T = {name: code for code, name in enumerate(MESSAGE_TYPES, start=1)}
@@ -448,7 +449,7 @@ def test_truncated_frame_then_silence_times_out(tmp_path: pathlib.Path) -> None:
     "first, why",
     [
         (hello(magic=0xDEADBEEF), "expected a Hello handshake, got Hello"),
-        (hello(version=99), "protocol version 99 is not supported (gateway speaks 1)"),
+        (hello(version=99), f"protocol version 99 is not supported (gateway speaks {VERSION})"),
         (frame("JoinFederation", u32(1) + string("sneaky") + string("TestFed")), "expected a Hello handshake, got JoinFederation"),
         (frame("Welcome", u16(1) + string("me")), "expected a Hello handshake, got Welcome"),
         (frame("Hello", u32(MAGIC) + u16(VERSION) + b"extra"), "trailing bytes in Hello message"),
@@ -471,9 +472,9 @@ def test_wrong_handshake_is_a_protocol_error(rtig: RtigProcess, legit: Legit, fi
 
 
 def test_welcome_names_the_gateway(rtig: RtigProcess) -> None:
-    """The Welcome answering a Hello carries protocol version 1 and the server name."""
+    """The Welcome answering a Hello carries the protocol version and the server name."""
     with raw_client(rtig.address) as client:
-        assert client.handshake() == (1, b"hlacore rtig")
+        assert client.handshake() == (VERSION, b"hlacore rtig")
         client.ping()
 
 

@@ -10,9 +10,11 @@ import struct
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 # The message list, read from its one declaration (X(Name) entries of HLACORE_MESSAGES, in code order).
-_LIST = (ROOT / "cpp" / "rti" / "wire" / "messages.hpp").read_text().split("#define HLACORE_MESSAGES(X)")[1]
-NAMES = re.findall(r"X\((\w+)\)", _LIST.split("enum class MessageType")[0])
+_HEADER = (ROOT / "cpp" / "rti" / "wire" / "messages.hpp").read_text()
+_LIST = _HEADER.split("#define HLACORE_MESSAGES(X)")[1]
+NAMES = re.findall(r"X\((\w+)\)", _LIST.split("\n\n")[0])  # up to the blank line ending the macro
 CODE = {name: i for i, name in enumerate(NAMES, start=1)}
+VERSION = int(re.search(r"kProtocolVersion = (\d+);", _HEADER).group(1))
 
 
 def u8(v): return struct.pack("<B", v)
@@ -33,8 +35,8 @@ def frame(name, payload=b""):
 
 FED = (ROOT / "tests" / "data" / "robot.fed").read_text()
 MESSAGES = {
-    "Hello": u32(0x484C4143) + u16(1),
-    "Welcome": u16(1) + s("hlacore rtig"),
+    "Hello": u32(0x484C4143) + u16(VERSION),
+    "Welcome": u16(VERSION) + s("hlacore rtig"),
     "CreateFederation": u32(1) + s("TestFed") + s("robot.fed") + s(FED),
     "CreateFederation-by-name": u32(1) + s("TestFed") + s("robot.fed") + s(""),
     "DestroyFederation": u32(2) + s("TestFed"),
@@ -99,7 +101,7 @@ MESSAGES = {
     "FederationRestoreBegun": b"",
     "InitiateFederateRestore": s("snap") + u32(2) + f64(5.0) + f64(1.0) + b(True) + b(True) + b(False) + b(True)
     + f64(6.0) + u64(3) + u32(1) + u32(1) + hs([1, 2]) + u32(1) + u32(1) + hs([2]) + hs([1]) + hs([])
-    + hs([7]) + hs([1]) + u32(1) + s("robot-1") + u32(1) + hs([1, 2]) + hs([1])
+    + u32(1) + u32(7) + u32(1) + s("robot-1") + hs([1, 2]) + b(True)
     # DDM: region 3 in space 1, subscribed for class 2 and interaction 4, associated with object 7's attribute 1.
     + u32(1) + u32(3) + u32(1) + hs([10, 20, 0, 100]) + u32(1) + u32(2) + u32(3) + hs([1])
     + u32(1) + u32(4) + u32(3) + u32(1) + u32(7) + u32(1) + u32(3) + u32(3),

@@ -39,6 +39,14 @@ struct Sampler {
         set(p.first);
         set(p.second);
     }
+    template <class T, class = decltype(std::declval<T&>().fields(std::declval<Sampler&>()))>
+    void set(T& record) {
+        record.fields(*this);
+    }
+    template <class T>
+    void set(Boxed<T>& boxed) {
+        set(boxed.edit());
+    }
 };
 
 template <std::size_t I = 1>

@@ -245,7 +245,7 @@ private:
     bool region_in_use(std::uint32_t region) const;
     // initiateFederateRestore: the regions, region subscriptions and update associations as saved,
     // under their saved numbers (callers hold mu_).
-    void restore_regions(const wire::InitiateFederateRestore& m);
+    void restore_regions(const wire::RestoredState& saved);
     void refuse_region_change_while_restoring(const char* service) const;  // RestoreInProgress
 
     template <class M>

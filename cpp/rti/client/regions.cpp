@@ -101,14 +101,14 @@ void Client::refuse_region_change_while_restoring(const char* service) const {
                                                                    "(until federationRestored or federationNotRestored)");
 }
 
-void Client::restore_regions(const wire::InitiateFederateRestore& m) {
+void Client::restore_regions(const wire::RestoredState& saved) {
     ddm_ = DdmState{};
-    for (const auto& [region, saved] : m.regions) ddm_.regions[region] = LocalRegion{saved.first, saved.second};
-    for (const auto& [key, attrs] : m.region_subscriptions)
-        ddm_.object_subscriptions[key.first][key.second] = std::set<fom::Handle>(attrs.begin(), attrs.end());
-    for (const auto& [ic, region] : m.region_interaction_subscriptions) ddm_.interaction_subscriptions[ic].insert(region);
-    for (const auto& [object, association] : m.update_regions) ddm_.update_regions[object][association.first] = association.second;
-    reserve_region_numbers(m.last_region);
+    for (const auto& [region, space, bounds] : saved.regions) ddm_.regions[region] = LocalRegion{space, bounds};
+    for (const auto& [cls, region, attrs] : saved.region_subscriptions)
+        ddm_.object_subscriptions[cls][region] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+    for (const auto& [ic, region] : saved.region_interaction_subscriptions) ddm_.interaction_subscriptions[ic].insert(region);
+    for (const auto& [object, attribute, region] : saved.update_regions) ddm_.update_regions[object][attribute] = region;
+    reserve_region_numbers(saved.last_region);
 }
 
 // ---- regions (HLA 1.3 §9.2-9.4) ----

@@ -95,37 +95,37 @@ void Client::apply_save_callback(const wire::Message& message) {
     } else if (const auto* m = std::get_if<wire::InitiateFederateRestore>(&message)) {
         restore_phase_ = RestorePhase::Initiated;
         // The federation as it was saved: this federate's handle, declarations, objects and time state.
+        const wire::RestoredState& saved = *m->state;
         federate_ = m->federate;
         published_.clear();
-        for (const auto& [cls, attrs] : m->published) published_[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        for (const auto& [cls, attrs] : saved.published) published_[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
         subscribed_.clear();
-        for (const auto& [cls, attrs] : m->subscribed) subscribed_[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
-        published_interactions_ = std::set<fom::Handle>(m->published_interactions.begin(), m->published_interactions.end());
+        for (const auto& [cls, attrs] : saved.subscribed) subscribed_[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        published_interactions_ =
+            std::set<fom::Handle>(saved.published_interactions.begin(), saved.published_interactions.end());
         subscribed_interactions_ =
-            std::set<fom::Handle>(m->subscribed_interactions.begin(), m->subscribed_interactions.end());
+            std::set<fom::Handle>(saved.subscribed_interactions.begin(), saved.subscribed_interactions.end());
         objects_.clear();
-        const std::size_t n = std::min({m->objects.size(), m->object_classes.size(), m->object_names.size(),
-                                        m->owned.size(), m->may_delete.size()});
-        for (std::size_t i = 0; i < n; ++i) {
-            LocalObject obj = make_local_object(m->object_classes[i], m->object_names[i]);
-            obj.owned = std::set<fom::Handle>(m->owned[i].begin(), m->owned[i].end());
-            obj.privilege_to_delete = m->may_delete[i] != 0;
-            objects_[m->objects[i]] = std::move(obj);
+        for (const auto& known : saved.objects) {
+            LocalObject obj = make_local_object(known.known_class, known.name);
+            obj.owned = std::set<fom::Handle>(known.owned.begin(), known.owned.end());
+            obj.privilege_to_delete = known.may_delete;
+            objects_[known.object] = std::move(obj);
         }
         announced_.clear();  // synchronization points are not saved
-        restore_regions(*m);
+        restore_regions(saved);
         TimeState t;
-        t.time = m->time;
-        t.lookahead = m->lookahead;
-        t.enable_lookahead = m->lookahead;
-        t.regulating = m->regulating;
-        t.constrained = m->constrained;
-        t.asynchronous_delivery = m->asynchronous_delivery;
-        t.strict = m->strict;
-        t.floor = m->regulating ? m->floor : -kInfinity;
+        t.time = saved.time;
+        t.lookahead = saved.lookahead;
+        t.enable_lookahead = saved.lookahead;
+        t.regulating = saved.regulating;
+        t.constrained = saved.constrained;
+        t.asynchronous_delivery = saved.asynchronous_delivery;
+        t.strict = saved.strict;
+        t.floor = saved.regulating ? saved.floor : -kInfinity;
         time_ = std::move(t);
         // Restored queues hold messages with serials up to next_serial: new ones must not collide.
-        serial_ = std::max(serial_, m->next_serial);
+        serial_ = std::max(serial_, saved.next_serial);
     }
 }
 

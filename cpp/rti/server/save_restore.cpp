@@ -38,19 +38,24 @@ constexpr char kFileMagic[8] = {'H', 'L', 'A', 'C', 'S', 'A', 'V', 'E'};
 constexpr std::uint32_t kFormatVersion = 2;
 
 using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
-using Declarations = std::vector<std::pair<std::uint32_t, wire::Handles>>;
-// (time, (sender, (serial, frame))): a queued timestamped message.
-using TsoRecords = std::vector<std::pair<double, std::pair<std::uint32_t, std::pair<std::uint64_t, std::string>>>>;
-// Data distribution management, encoded as initiateFederateRestore carries it to the client.
-using RegionRecords = decltype(wire::InitiateFederateRestore::regions);
-using RegionSubscriptions = decltype(wire::InitiateFederateRestore::region_subscriptions);
-using UpdateRegions = decltype(wire::InitiateFederateRestore::update_regions);
+struct ObjectAttributes {  // an object and attributes of it
+    std::uint32_t object = 0;
+    wire::Handles attributes;
+    HLACORE_FIELDS(object, attributes)
+};
+struct TsoRecord {  // a queued timestamped message
+    double time = 0;
+    std::uint32_t sender = 0;
+    std::uint64_t serial = 0;
+    std::string frame;
+    HLACORE_FIELDS(time, sender, serial, frame)
+};
 
 struct FederateRecord {
     std::uint32_t handle = 0;
     std::string name;
-    Declarations published;
-    Declarations subscribed;
+    std::vector<wire::ClassAttributes> published;
+    std::vector<wire::ClassAttributes> subscribed;
     wire::Handles published_interactions;
     wire::Handles subscribed_interactions;
     wire::Handles known;
@@ -70,16 +75,16 @@ struct FederateRecord {
     bool strict_after_grant = false;
     bool receives_above_time = false;
     double promise = 0;
-    TsoRecords tso;
+    std::vector<TsoRecord> tso;
     std::vector<std::string> held_ro;          // held by time management (constrained, not advancing)
     std::vector<std::string> held_after_save;  // sent during the save, delivered after federationSaved
-    // Data distribution management (HLA 1.3 §9).
-    RegionRecords regions;
-    RegionSubscriptions region_subscriptions;
-    Pairs region_interaction_subscriptions;
-    UpdateRegions update_regions;
-    Declarations in_scope;  // object -> attributes last reported in scope (attribute scope advisory)
-    Declarations relevant;  // object -> owned attributes last reported relevant (turnUpdatesOn)
+    // Data distribution management (HLA 1.3 §9), as initiateFederateRestore carries it to the client.
+    std::vector<wire::RegionRecord> regions;
+    std::vector<wire::RegionSubscription> region_subscriptions;
+    std::vector<wire::InteractionRegion> region_interaction_subscriptions;
+    std::vector<wire::UpdateRegion> update_regions;
+    std::vector<ObjectAttributes> in_scope;  // attributes last reported in scope (attribute scope advisory)
+    std::vector<ObjectAttributes> relevant;  // owned attributes last reported relevant (turnUpdatesOn)
     std::uint32_t last_region = 0;
     HLACORE_FIELDS(handle, name, published, subscribed, published_interactions, subscribed_interactions, known,
                    registration_started, interactions_turned_on, class_relevance, interaction_relevance,
@@ -101,10 +106,11 @@ struct ObjectRecord {
     HLACORE_FIELDS(handle, object_class, name, privilege_attribute, privilege_holder, owners, order, transport)
 };
 
-template <class Map>
-Declarations declarations(const Map& m) {
-    Declarations out;
-    for (const auto& [cls, attrs] : m) out.emplace_back(cls, wire::Handles(attrs.begin(), attrs.end()));
+// A map handle -> set of attributes as records {handle, attributes}.
+template <class Record, class Map>
+std::vector<Record> records_of(const Map& m) {
+    std::vector<Record> out;
+    for (const auto& [handle, attrs] : m) out.push_back(Record{handle, wire::Handles(attrs.begin(), attrs.end())});
     return out;
 }
 
@@ -132,31 +138,17 @@ void put_ddm(const Ddm& ddm, Target& out) {
                 bounds.push_back(upper);
             }
         }
-        out.regions.push_back({handle, {region.space, std::move(bounds)}});
+        out.regions.push_back({handle, region.space, std::move(bounds)});
     }
     for (const auto& [cls, by_region] : ddm.object_subscriptions)
-        for (const auto& [region, attrs] : by_region) out.region_subscriptions.push_back({{cls, region}, handles(attrs)});
+        for (const auto& [region, attrs] : by_region) out.region_subscriptions.push_back({cls, region, handles(attrs)});
     for (const auto& [ic, regions] : ddm.interaction_subscriptions)
         for (auto region : regions) out.region_interaction_subscriptions.push_back({ic, region});
     for (const auto& [object, associations] : ddm.update_regions)
-        for (const auto& [attr, region] : associations) out.update_regions.push_back({object, {attr, region}});
+        for (const auto& [attr, region] : associations) out.update_regions.push_back({object, attr, region});
     out.last_region = ddm.last_region;
 }
 
-template <class Record>
-void put_records(wire::Writer& w, const std::vector<Record>& records) {
-    w.put(static_cast<std::uint32_t>(records.size()));
-    for (const auto& r : records) r.fields(w);
-}
-
-template <class Record>
-void get_records(wire::Reader& r, std::vector<Record>& records) {
-    std::uint32_t n = 0;
-    r.get(n);
-    if (n > r.remaining() / 4) r.fail("record count exceeds the file");
-    records.resize(n);
-    for (auto& record : records) record.fields(r);
-}
 
 // File names keep letters, digits, '_' and '.'; anything else becomes %XX, so that no label reaches
 // outside the save directory and "--" can separate the federation from the label.
@@ -366,8 +358,8 @@ std::string Federation::encode_snapshot() const {
         FederateRecord r;
         r.handle = h;
         r.name = f.name;
-        r.published = declarations(f.published);
-        r.subscribed = declarations(f.subscribed);
+        r.published = records_of<wire::ClassAttributes>(f.published);
+        r.subscribed = records_of<wire::ClassAttributes>(f.subscribed);
         r.published_interactions = handles(f.published_interactions);
         r.subscribed_interactions = handles(f.subscribed_interactions);
         r.known = handles(f.known);
@@ -388,13 +380,13 @@ std::string Federation::encode_snapshot() const {
         r.strict_after_grant = t.strict_after_grant;
         r.receives_above_time = t.receives_above_time;
         r.promise = t.promise;
-        for (const auto& m : t.tso) r.tso.push_back({m.time, {m.sender, {m.serial, m.frame}}});
+        for (const auto& m : t.tso) r.tso.push_back({m.time, m.sender, m.serial, m.frame});
         r.held_ro = t.held_ro;
         auto held = save_.held.find(h);
         if (held != save_.held.end()) r.held_after_save = held->second;
         put_ddm(f.ddm, r);
-        r.in_scope = declarations(f.ddm.in_scope);
-        r.relevant = declarations(f.ddm.relevant);
+        r.in_scope = records_of<ObjectAttributes>(f.ddm.in_scope);
+        r.relevant = records_of<ObjectAttributes>(f.ddm.relevant);
         federates.push_back(std::move(r));
     }
     std::vector<ObjectRecord> objects;
@@ -410,8 +402,7 @@ std::string Federation::encode_snapshot() const {
         r.transport = pairs(obj.transport);
         objects.push_back(std::move(r));
     }
-    put_records(w, federates);
-    put_records(w, objects);
+    w(federates, objects);
     return out;
 }
 
@@ -427,8 +418,7 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
     Snapshot s;
     try {
         r(s.label, s.federation, s.fed_name, s.fed_text, s.next_federate, s.next_object, s.time);
-        get_records(r, s.federates);
-        get_records(r, s.objects);
+        r(s.federates, s.objects);
         if (r.remaining() != 0) r.fail("trailing bytes");
     } catch (const WireError& e) {
         // The codec names the message it was decoding; here it is the file.
@@ -442,10 +432,10 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
     auto check_saved_ddm = [&](const FederateRecord& f, const std::map<std::uint32_t, std::uint32_t>& objects) {
         const std::string whose = " of federate '" + f.name + "'";
         std::map<std::uint32_t, fom::Handle> spaces;  // region -> space
-        for (const auto& [region, saved] : f.regions) {
-            if (region == 0 || region > f.last_region || !spaces.emplace(region, saved.first).second)
+        for (const auto& [region, space, bounds] : f.regions) {
+            if (region == 0 || region > f.last_region || !spaces.emplace(region, space).second)
                 throw WireError("bad region handle " + std::to_string(region) + whose);
-            make_region(saved.first, saved.second);  // the space exists, the bounds fit its dimensions
+            make_region(space, bounds);  // the space exists, the bounds fit its dimensions
         }
         auto space_of = [&](std::uint32_t region) {
             auto it = spaces.find(region);
@@ -459,10 +449,10 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
                 throw WireError("region " + std::to_string(region) + whose + " is not in the routing space of an "
                                 "attribute of class '" + cls.qualified_name + "'");
         };
-        for (const auto& [key, attrs] : f.region_subscriptions) {
-            const auto& cls = object_class(key.first);
+        for (const auto& [cls_handle, region, attrs] : f.region_subscriptions) {
+            const auto& cls = object_class(cls_handle);
             check_attributes(cls, attrs);
-            for (auto attr : attrs) check_attribute_space(cls, attr, key.second);
+            for (auto attr : attrs) check_attribute_space(cls, attr, region);
         }
         for (const auto& [ic, region] : f.region_interaction_subscriptions) {
             const auto* space = fom_.find_space(interaction_class(ic).space);
@@ -475,8 +465,8 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
             if (it == objects.end()) throw WireError("DDM state" + whose + " names an unsaved object");
             return object_class(it->second);
         };
-        for (const auto& [object, association] : f.update_regions)
-            check_attribute_space(class_of(object), association.first, association.second);
+        for (const auto& [object, attribute, region] : f.update_regions)
+            check_attribute_space(class_of(object), attribute, region);
         for (const auto* advised : {&f.in_scope, &f.relevant})
             for (const auto& [object, attrs] : *advised) check_attributes(class_of(object), attrs);
     };
@@ -485,8 +475,8 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
     for (const auto& f : s.federates) {
         if (f.handle == 0 || !handles_seen.insert(f.handle).second || !names_seen.insert(f.name).second)
             throw WireError("duplicate federate '" + f.name + "'");
-        for (const auto& d : f.published) check_attributes(object_class(d.first), d.second);
-        for (const auto& d : f.subscribed) check_attributes(object_class(d.first), d.second);
+        for (const auto& d : f.published) check_attributes(object_class(d.object_class), d.attributes);
+        for (const auto& d : f.subscribed) check_attributes(object_class(d.object_class), d.attributes);
         for (auto ic : f.published_interactions) interaction_class(ic);
         for (auto ic : f.subscribed_interactions) interaction_class(ic);
         if (f.handle >= s.next_federate) throw WireError("federate handle beyond the saved next handle");
@@ -508,8 +498,8 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
         for (auto oh : f.known)
             if (!objects_seen.count(oh)) throw WireError("federate '" + f.name + "' knows an unsaved object");
         for (const auto& m : f.tso) {
-            if (!handles_seen.count(m.second.first)) throw WireError("queued message from an unsaved federate");
-            check_frame(m.second.second.second);
+            if (!handles_seen.count(m.sender)) throw WireError("queued message from an unsaved federate");
+            check_frame(m.frame);
         }
         for (const auto& frame : f.held_ro) check_frame(frame);
         for (const auto& frame : f.held_after_save) check_frame(frame);
@@ -603,19 +593,16 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         t.receives_above_time = r.receives_above_time;
         t.promise = r.promise;
         for (auto& m : r.tso) {
-            const auto sender = m.second.first;
-            const auto serial = m.second.second.first;
-            last_serial[sender] = std::max(last_serial[sender], serial);
-            t.tso.push_back(TsoMessage{m.first, sender, serial, std::move(m.second.second.second)});
+            last_serial[m.sender] = std::max(last_serial[m.sender], m.serial);
+            t.tso.push_back(TsoMessage{m.time, m.sender, m.serial, std::move(m.frame)});
         }
         t.held_ro = std::move(r.held_ro);
         time_.restore_state(r.handle, std::move(t));
-        for (const auto& [region, saved] : r.regions) f.ddm.regions[region] = make_region(saved.first, saved.second);
-        for (const auto& [key, attrs] : r.region_subscriptions)
-            f.ddm.object_subscriptions[key.first][key.second] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        for (const auto& [region, space, bounds] : r.regions) f.ddm.regions[region] = make_region(space, bounds);
+        for (const auto& [cls, region, attrs] : r.region_subscriptions)
+            f.ddm.object_subscriptions[cls][region] = std::set<fom::Handle>(attrs.begin(), attrs.end());
         for (const auto& [ic, region] : r.region_interaction_subscriptions) f.ddm.interaction_subscriptions[ic].insert(region);
-        for (const auto& [object, association] : r.update_regions)
-            f.ddm.update_regions[object][association.first] = association.second;
+        for (const auto& [object, attribute, region] : r.update_regions) f.ddm.update_regions[object][attribute] = region;
         for (const auto& [object, attrs] : r.in_scope) f.ddm.in_scope[object].insert(attrs.begin(), attrs.end());
         for (const auto& [object, attrs] : r.relevant) f.ddm.relevant[object].insert(attrs.begin(), attrs.end());
         f.ddm.last_region = r.last_region;
@@ -645,18 +632,19 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         wire::InitiateFederateRestore m;
         m.label = label;
         m.federate = h;
-        m.time = t.time;
-        m.lookahead = t.lookahead;
-        m.regulating = t.regulating;
-        m.constrained = t.constrained;
-        m.asynchronous_delivery = t.asynchronous_delivery;
-        m.strict = t.strict_after_grant;
-        m.floor = t.regulating ? t.promise : 0;
-        m.next_serial = last_serial[h];
-        m.published = declarations(f.published);
-        m.subscribed = declarations(f.subscribed);
-        m.published_interactions = handles(f.published_interactions);
-        m.subscribed_interactions = handles(f.subscribed_interactions);
+        wire::RestoredState& state = m.state.edit();
+        state.time = t.time;
+        state.lookahead = t.lookahead;
+        state.regulating = t.regulating;
+        state.constrained = t.constrained;
+        state.asynchronous_delivery = t.asynchronous_delivery;
+        state.strict = t.strict_after_grant;
+        state.floor = t.regulating ? t.promise : 0;
+        state.next_serial = last_serial[h];
+        state.published = records_of<wire::ClassAttributes>(f.published);
+        state.subscribed = records_of<wire::ClassAttributes>(f.subscribed);
+        state.published_interactions = handles(f.published_interactions);
+        state.subscribed_interactions = handles(f.subscribed_interactions);
         for (ObjectHandle oh : f.known) {
             const ObjectInstance& obj = objects_.at(oh);
             fom::Handle as = obj.object_class;
@@ -667,13 +655,9 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
             wire::Handles owned;
             for (const auto& [attr, owner] : obj.owners)
                 if (owner == h) owned.push_back(attr);
-            m.objects.push_back(oh);
-            m.object_classes.push_back(as);
-            m.object_names.push_back(obj.name);
-            m.owned.push_back(std::move(owned));
-            m.may_delete.push_back(deleter(obj) == h ? 1 : 0);
+            state.objects.push_back({oh, as, obj.name, std::move(owned), deleter(obj) == h});
         }
-        put_ddm(f.ddm, m);
+        put_ddm(f.ddm, state);
         outbox_.send(h, m);
     }
     // Until federationRestored, what is sent to the federates waits.

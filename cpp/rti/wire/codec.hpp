@@ -1,7 +1,8 @@
 // Framing and the bounds-checked binary codec for wire::Message. No sockets here.
 //
 // Field encodings (little-endian): integers fixed width, bool one byte (0/1), double as its IEEE bits,
-// string u32 length + bytes, vector u32 count + elements, optional<double> one byte flag + double.
+// string u32 length + bytes, vector u32 count + elements, optional<double> one byte flag + double, a nested
+// record (a struct with HLACORE_FIELDS) its fields in order, a Boxed<T> its T.
 // Decoding never reads past the frame, and a count can never ask for more elements than the
 // remaining bytes could hold, so a length field cannot make us allocate unbounded memory.
 #pragma once
@@ -10,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "rti/wire/messages.hpp"
 
@@ -56,6 +58,14 @@ public:
     void put(const std::pair<A, B>& p) {
         put(p.first);
         put(p.second);
+    }
+    template <class T, class = decltype(std::declval<const T&>().fields(std::declval<Writer&>()))>
+    void put(const T& record) {
+        record.fields(*this);
+    }
+    template <class T>
+    void put(const Boxed<T>& boxed) {
+        put(*boxed);
     }
 
 private:
@@ -113,6 +123,14 @@ public:
     void get(std::pair<A, B>& p) {
         get(p.first);
         get(p.second);
+    }
+    template <class T, class = decltype(std::declval<T&>().fields(std::declval<Reader&>()))>
+    void get(T& record) {
+        record.fields(*this);
+    }
+    template <class T>
+    void get(Boxed<T>& boxed) {
+        get(boxed.edit());
     }
 
     std::size_t remaining() const { return static_cast<std::size_t>(end_ - p_); }

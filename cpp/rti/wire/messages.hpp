@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,7 +15,7 @@
 namespace hlacore::wire {
 
 constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
-constexpr std::uint16_t kProtocolVersion = 1;
+constexpr std::uint16_t kProtocolVersion = 2;  // 2: initiateFederateRestore's nested records
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;  // larger frames are a protocol error
 
 using Handles = std::vector<std::uint32_t>;
@@ -706,38 +707,90 @@ struct FederationRestoreBegun {
 };
 // initiateFederateRestore(label, federate), carrying what the client mirrors of the restored federate:
 // its handle in the save, time state, declarations and the objects it knows (parallel vectors).
-struct InitiateFederateRestore {
-    HLACORE_TYPE(InitiateFederateRestore)
-    std::string label;
-    std::uint32_t federate = 0;
+// A nested record kept on the heap, so that one rare large message does not make every wire::Message (a
+// std::variant) as large as it. Copies share the record; edit() copies it first if it is shared.
+template <class T>
+class Boxed {
+public:
+    Boxed() : p_(std::make_shared<T>()) {}
+    const T& operator*() const { return *p_; }
+    const T* operator->() const { return p_.get(); }
+    T& edit() {
+        if (p_.use_count() > 1) p_ = std::make_shared<T>(*p_);
+        return *p_;
+    }
+
+private:
+    std::shared_ptr<T> p_;
+};
+
+// What a restored federate had in the save, as its client mirrors it (records nested in
+// initiateFederateRestore, each encoded as its fields in order).
+struct ClassAttributes {  // a published or subscribed object class and its attributes
+    std::uint32_t object_class = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object_class, attributes)
+};
+struct KnownObject {
+    std::uint32_t object = 0;
+    std::uint32_t known_class = 0;  // the class the federate knows the object as
+    std::string name;
+    Handles owned;                  // the attributes it owns
+    bool may_delete = false;        // it holds the privilege to delete the object
+    HLACORE_FIELDS(object, known_class, name, owned, may_delete)
+};
+struct RegionRecord {  // data distribution management (HLA 1.3 §9): a region under its saved number
+    std::uint32_t region = 0;
+    std::uint32_t space = 0;
+    Handles bounds;
+    HLACORE_FIELDS(region, space, bounds)
+};
+struct RegionSubscription {
+    std::uint32_t object_class = 0;
+    std::uint32_t region = 0;
+    Handles attributes;
+    HLACORE_FIELDS(object_class, region, attributes)
+};
+struct InteractionRegion {
+    std::uint32_t interaction_class = 0;
+    std::uint32_t region = 0;
+    HLACORE_FIELDS(interaction_class, region)
+};
+struct UpdateRegion {  // the region the federate updates an object's attribute in
+    std::uint32_t object = 0;
+    std::uint32_t attribute = 0;
+    std::uint32_t region = 0;
+    HLACORE_FIELDS(object, attribute, region)
+};
+struct RestoredState {
     double time = 0;
     double lookahead = 0;
     bool regulating = false;
     bool constrained = false;
     bool asynchronous_delivery = false;
-    bool strict = false;        // the last grant was TAR/NER/FQR: with zero lookahead, sends must be > time
-    double floor = 0;           // the lowest timestamp it may send (its promise), when regulating
+    bool strict = false;            // the last grant was TAR/NER/FQR: with zero lookahead, sends must be > time
+    double floor = 0;               // the lowest timestamp it may send (its promise), when regulating
     std::uint64_t next_serial = 0;  // serials at or below this are held by restored queues
-    std::vector<std::pair<std::uint32_t, Handles>> published;   // object class -> attributes
-    std::vector<std::pair<std::uint32_t, Handles>> subscribed;
+    std::vector<ClassAttributes> published;
+    std::vector<ClassAttributes> subscribed;
     Handles published_interactions;
     Handles subscribed_interactions;
-    Handles objects;
-    Handles object_classes;  // the class the federate knows each object as
-    std::vector<std::string> object_names;
-    std::vector<Handles> owned;       // the attributes it owns of each object
-    Handles may_delete;               // 1 when it holds the privilege to delete the object
-    // Data distribution management (HLA 1.3 §9) as saved: this federate's regions under their saved
-    // numbers, its subscriptions through them and its update associations.
-    std::vector<std::pair<std::uint32_t, std::pair<std::uint32_t, Handles>>> regions;  // region -> (space, bounds)
-    std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, Handles>> region_subscriptions;  // (class, region) -> attributes
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> region_interaction_subscriptions;  // (interaction class, region)
-    std::vector<std::pair<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>>> update_regions;  // object -> (attribute, region)
-    std::uint32_t last_region = 0;    // the highest region number this federate ever created
-    HLACORE_FIELDS(label, federate, time, lookahead, regulating, constrained, asynchronous_delivery, strict, floor,
-                   next_serial, published, subscribed, published_interactions, subscribed_interactions, objects,
-                   object_classes, object_names, owned, may_delete, regions, region_subscriptions,
-                   region_interaction_subscriptions, update_regions, last_region)
+    std::vector<KnownObject> objects;
+    std::vector<RegionRecord> regions;
+    std::vector<RegionSubscription> region_subscriptions;
+    std::vector<InteractionRegion> region_interaction_subscriptions;
+    std::vector<UpdateRegion> update_regions;
+    std::uint32_t last_region = 0;  // the highest region number this federate ever created
+    HLACORE_FIELDS(time, lookahead, regulating, constrained, asynchronous_delivery, strict, floor, next_serial,
+                   published, subscribed, published_interactions, subscribed_interactions, objects, regions,
+                   region_subscriptions, region_interaction_subscriptions, update_regions, last_region)
+};
+struct InitiateFederateRestore {
+    HLACORE_TYPE(InitiateFederateRestore)
+    std::string label;
+    std::uint32_t federate = 0;  // the handle the federate had in the save
+    Boxed<RestoredState> state;
+    HLACORE_FIELDS(label, federate, state)
 };
 struct FederationRestored {  // federationRestored, or federationNotRestored when !success
     HLACORE_TYPE(FederationRestored)

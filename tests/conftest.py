@@ -18,6 +18,9 @@ from hlacore.processes import Child, Rtig, python_peer, rtig_beside_python
 
 DATA = pathlib.Path(__file__).parent / "data"
 ROBOT_FED = str(DATA / "robot.fed")
+# The wire protocol's version, for the tests that speak it byte by byte (cpp/rti/wire/messages.hpp).
+PROTOCOL_VERSION = int(re.search(r"kProtocolVersion = (\d+);", (pathlib.Path(__file__).parent.parent / "cpp" / "rti"
+                                                                / "wire" / "messages.hpp").read_text()).group(1))
 SANITIZER_REPORT = re.compile(r"ERROR: AddressSanitizer|runtime error:|ERROR: LeakSanitizer")
 
 

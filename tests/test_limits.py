@@ -11,9 +11,9 @@ import struct
 
 import hlacore.rti as rti
 
-from conftest import ROBOT_FED, Federate, RtigProcess, wait_for_log
+from conftest import PROTOCOL_VERSION, ROBOT_FED, Federate, RtigProcess, wait_for_log
 
-HELLO = struct.pack("<IHIH", 8, 1, 0x484C4143, 1)
+HELLO = struct.pack("<IHIH", 8, 1, 0x484C4143, PROTOCOL_VERSION)
 
 
 def answered(sock: socket.socket) -> bool:

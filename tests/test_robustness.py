@@ -21,6 +21,7 @@ from hlacore import _core, rti
 from hlacore.processes import Child
 
 from conftest import (
+    PROTOCOL_VERSION,
     ROBOT_FED,
     Federate,
     RtigProcess,
@@ -34,8 +35,7 @@ from conftest import (
 # ---- the wire protocol, as a hostile client speaks it (cpp/rti/wire/messages.hpp) ----
 
 MAGIC = 0x484C4143
-VERSION = int(re.search(r"kProtocolVersion = (\d+);",
-                        (pathlib.Path(__file__).parent.parent / "cpp/rti/wire/messages.hpp").read_text()).group(1))
+VERSION = PROTOCOL_VERSION
 MAX_FRAME = 64 << 20
 MESSAGE_TYPES = _core._message_names()  # the list of cpp/rti/wire/messages.hpp, in code order
 T = {name: code for code, name in enumerate(MESSAGE_TYPES, start=1)}

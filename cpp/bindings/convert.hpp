@@ -125,6 +125,25 @@ py::tuple to_tuple(const wire::Handles& handles) {
     return t;
 }
 
+// The raw value a client service takes for each typed argument of its Python method.
+template <int Kind>
+std::uint32_t raw(Handle<Kind> h) {
+    return h.value;
+}
+template <int Kind>
+std::vector<std::uint32_t> raw(const std::vector<Handle<Kind>>& handles) {
+    return to_handles(handles);
+}
+inline std::string raw(const py::handle& tag) { return to_bytes(tag, "tag"); }
+inline bool raw(bool flag) { return flag; }
+
+// A Python method whose arguments (typed handles, lists of them, a tag) go to the client service `f` as
+// their raw values: the binding of every service that needs no other conversion.
+template <class... Py, class... Raw>
+auto forward(void (Client::*f)(Raw...)) {
+    return [f](Client& c, Py... args) { (c.*f)(raw(args)...); };
+}
+
 inline py::object retraction_or_none(std::uint64_t serial, std::uint32_t sender) {
     return py::cast(EventRetractionHandle{sender, serial});
 }

@@ -35,37 +35,32 @@ void bind_objects(Ambassador& rtia) {
                  return serial_result(serial, time, c);
              }, py::arg("object"), py::arg("tag"), py::arg("time") = py::none(),
              "Delete an object this federate may delete (HLA 1.3 §6.8); the others get removeObjectInstance. Raises ObjectNotKnown, DeletePrivilegeNotHeld.")
-        .def("localDeleteObjectInstance", [](Client& c, ObjectHandle obj) { c.local_delete_object(obj.value); },
+        .def("localDeleteObjectInstance", forward<ObjectHandle>(&Client::local_delete_object),
              py::arg("object"),
              "Forget an object locally (HLA 1.3 §6.10); it may be discovered again. Raises ObjectNotKnown, FederateOwnsAttributes.")
         .def("requestObjectAttributeValueUpdate",
-             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
-                 c.request_object_update(obj.value, to_handles(attrs));
-             }, py::arg("object"), py::arg("attributes"),
+             forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::request_object_update),
+             py::arg("object"), py::arg("attributes"),
              "Ask the owners of an object's attributes to update them (HLA 1.3 §6.15); they get provideAttributeValueUpdate. Raises ObjectNotKnown, AttributeNotDefined.")
         .def("requestClassAttributeValueUpdate",
-             [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs) {
-                 c.request_class_update(cls.value, to_handles(attrs));
-             }, py::arg("objectClass"), py::arg("attributes"),
+             forward<ObjectClassHandle, std::vector<AttributeHandle>>(&Client::request_class_update),
+             py::arg("objectClass"), py::arg("attributes"),
              "Ask the owners of attributes of every instance of a class to update them (HLA 1.3 §6.15). Raises ObjectClassNotDefined, AttributeNotDefined.")
         // transport and order changes (HLA 1.3 §6.19-6.22)
         .def("changeAttributeTransportationType",
-             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs, TransportationHandle t) {
-                 c.change_attribute_transportation(obj.value, to_handles(attrs), t.value);
-             }, py::arg("object"), py::arg("attributes"), py::arg("transportationHandle"),
+             forward<ObjectHandle, std::vector<AttributeHandle>, TransportationHandle>(&Client::change_attribute_transportation),
+             py::arg("object"), py::arg("attributes"), py::arg("transportationHandle"),
              "Change the transportation of owned attributes (HLA 1.3 §6.19) for this federate's later updates of that object; reflectAttributeValues reports it. Forgotten when the attribute changes owner. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, InvalidTransportationHandle.")
         .def("changeInteractionTransportationType",
-             [](Client& c, InteractionClassHandle ic, TransportationHandle t) {
-                 c.change_interaction_transportation(ic.value, t.value);
-             }, py::arg("interactionClass"), py::arg("transportationHandle"),
+             forward<InteractionClassHandle, TransportationHandle>(&Client::change_interaction_transportation),
+             py::arg("interactionClass"), py::arg("transportationHandle"),
              "Change the transportation of this federate's later interactions of a published class (HLA 1.3 §6.20), until it unpublishes the class; receiveInteraction reports it. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidTransportationHandle.")
         .def("changeAttributeOrderType",
-             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs, OrderingHandle o) {
-                 c.change_attribute_order(obj.value, to_handles(attrs), o.value);
-             }, py::arg("object"), py::arg("attributes"), py::arg("orderingHandle"),
+             forward<ObjectHandle, std::vector<AttributeHandle>, OrderingHandle>(&Client::change_attribute_order),
+             py::arg("object"), py::arg("attributes"), py::arg("orderingHandle"),
              "Change the order (Receive or Timestamp) of owned attributes (HLA 1.3 §6.21) for this federate's later updates of that object: timestamp order still needs a time, a regulating sender and a constrained receiver; reflectAttributeValues reports the order used. Forgotten when the attribute changes owner. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, InvalidOrderingHandle.")
         .def("changeInteractionOrderType",
-             [](Client& c, InteractionClassHandle ic, OrderingHandle o) { c.change_interaction_order(ic.value, o.value); },
+             forward<InteractionClassHandle, OrderingHandle>(&Client::change_interaction_order),
              py::arg("interactionClass"), py::arg("orderingHandle"),
              "Change the order (Receive or Timestamp) of this federate's later interactions of a published class (HLA 1.3 §6.22), until it unpublishes the class; receiveInteraction reports the order used. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidOrderingHandle.");
 }

@@ -6,24 +6,20 @@ namespace hlacore::bindings {
 void bind_ownership(Ambassador& rtia) {
     rtia
         .def("unconditionalAttributeOwnershipDivestiture",
-             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
-                 c.unconditional_divestiture(obj.value, to_handles(attrs));
-             }, py::arg("object"), py::arg("attributes"),
+             forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::unconditional_divestiture),
+             py::arg("object"), py::arg("attributes"),
              "Give up owned attributes at once (HLA 1.3 §7.2): they become unowned, or go to a federate waiting to acquire them. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned.")
         .def("negotiatedAttributeOwnershipDivestiture",
-             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs, py::handle tag) {
-                 c.negotiated_divestiture(obj.value, to_handles(attrs), to_bytes(tag, "tag"));
-             }, py::arg("object"), py::arg("attributes"), py::arg("tag"),
+             forward<ObjectHandle, std::vector<AttributeHandle>, py::handle>(&Client::negotiated_divestiture),
+             py::arg("object"), py::arg("attributes"), py::arg("tag"),
              "Offer owned attributes (HLA 1.3 §7.3): the federates publishing them get requestAttributeOwnershipAssumption; this federate owns them until attributeOwnershipDivestitureNotification. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, AttributeAlreadyBeingDivested.")
         .def("attributeOwnershipAcquisition",
-             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs, py::handle tag) {
-                 c.ownership_acquisition(obj.value, to_handles(attrs), to_bytes(tag, "tag"));
-             }, py::arg("object"), py::arg("attributes"), py::arg("tag"),
+             forward<ObjectHandle, std::vector<AttributeHandle>, py::handle>(&Client::ownership_acquisition),
+             py::arg("object"), py::arg("attributes"), py::arg("tag"),
              "Ask for published attributes (HLA 1.3 §7.7): unowned or divested ones come at once, owned ones after their owner gets requestAttributeOwnershipRelease and releases them; attributeOwnershipAcquisitionNotification tells. Raises ObjectNotKnown, ObjectClassNotPublished, AttributeNotDefined, AttributeNotPublished, FederateOwnsAttributes.")
         .def("attributeOwnershipAcquisitionIfAvailable",
-             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
-                 c.ownership_acquisition_if_available(obj.value, to_handles(attrs));
-             }, py::arg("object"), py::arg("attributes"),
+             forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::ownership_acquisition_if_available),
+             py::arg("object"), py::arg("attributes"),
              "Take published attributes that are unowned or being divested (HLA 1.3 §7.8): attributeOwnershipAcquisitionNotification, else attributeOwnershipUnavailable. Raises ObjectNotKnown, ObjectClassNotPublished, AttributeNotDefined, AttributeNotPublished, FederateOwnsAttributes, AttributeAlreadyBeingAcquired.")
         .def("attributeOwnershipReleaseResponse",
              [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
@@ -36,17 +32,15 @@ void bind_ownership(Ambassador& rtia) {
              }, py::arg("object"), py::arg("attributes"),
              "Release attributes this federate was asked for by requestAttributeOwnershipRelease (HLA 1.3 §7.11); returns the tuple of AttributeHandles actually released (those a federate still waits for), the others stay owned. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, FederateWasNotAskedToReleaseAttribute.")
         .def("cancelNegotiatedAttributeOwnershipDivestiture",
-             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
-                 c.cancel_negotiated_divestiture(obj.value, to_handles(attrs));
-             }, py::arg("object"), py::arg("attributes"),
+             forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::cancel_negotiated_divestiture),
+             py::arg("object"), py::arg("attributes"),
              "Withdraw a negotiated divestiture (HLA 1.3 §7.12). Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, AttributeDivestitureWasNotRequested.")
         .def("cancelAttributeOwnershipAcquisition",
-             [](Client& c, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
-                 c.cancel_ownership_acquisition(obj.value, to_handles(attrs));
-             }, py::arg("object"), py::arg("attributes"),
+             forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::cancel_ownership_acquisition),
+             py::arg("object"), py::arg("attributes"),
              "Withdraw an attributeOwnershipAcquisition (HLA 1.3 §7.13): confirmAttributeOwnershipAcquisitionCancellation follows for what was still awaited. Raises ObjectNotKnown, AttributeNotDefined, AttributeAlreadyOwned, AttributeAcquisitionWasNotRequested.")
         .def("queryAttributeOwnership",
-             [](Client& c, ObjectHandle obj, AttributeHandle attr) { c.query_ownership(obj.value, attr.value); },
+             forward<ObjectHandle, AttributeHandle>(&Client::query_ownership),
              py::arg("object"), py::arg("attribute"),
              "Ask who owns an attribute (HLA 1.3 §7.15): informAttributeOwnership(object, attribute, owner) or attributeIsNotOwned(object, attribute) follows. Raises ObjectNotKnown, AttributeNotDefined.")
         .def("isAttributeOwnedByFederate",

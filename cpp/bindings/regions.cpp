@@ -17,7 +17,7 @@ void bind_regions(Ambassador& rtia) {
                  c.modify_region(r.value, e);
              }, py::arg("region"), py::arg("extent") = py::none(),
              "Apply a region's new extent (HLA 1.3 §9.3): given here in createRegion's form (the dimensions not given span the whole axis), it is used for every message routed from now on. Raises RegionNotKnown, DimensionNotDefined, InvalidExtents.")
-        .def("deleteRegion", [](Client& c, RegionHandle r) { c.delete_region(r.value); }, py::arg("region"),
+        .def("deleteRegion", forward<RegionHandle>(&Client::delete_region), py::arg("region"),
              "Delete a region (HLA 1.3 §9.4). Raises RegionNotKnown, RegionInUse (a subscription or an update association uses it).")
         .def("getRegionExtent",
              [](Client& c, RegionHandle r) {
@@ -49,32 +49,28 @@ void bind_regions(Ambassador& rtia) {
              }, py::arg("objectClass"), py::arg("attributes"), py::arg("objectName") = py::none(),
              "registerObjectInstance with update regions [(AttributeHandle, RegionHandle), ...] in place before any subscriber can discover the instance (HLA 1.3 §9.5). Raises ObjectClassNotDefined, ObjectClassNotPublished, AttributeNotDefined, AttributeNotPublished, RegionNotKnown, InvalidRegionContext, ObjectAlreadyRegistered.")
         .def("associateRegionForUpdates",
-             [](Client& c, RegionHandle r, ObjectHandle obj, std::vector<AttributeHandle> attrs) {
-                 c.associate_region(r.value, obj.value, to_handles(attrs));
-             }, py::arg("region"), py::arg("object"), py::arg("attributes"),
+             forward<RegionHandle, ObjectHandle, std::vector<AttributeHandle>>(&Client::associate_region),
+             py::arg("region"), py::arg("object"), py::arg("attributes"),
              "This federate's updates of these attributes of the object reach only the subscribers whose regions overlap `region` (HLA 1.3 §9.6); replaces the attribute's previous update region. Raises ObjectNotKnown, AttributeNotDefined, RegionNotKnown, InvalidRegionContext (an attribute of another routing space).")
         .def("unassociateRegionForUpdates",
-             [](Client& c, RegionHandle r, ObjectHandle obj) { c.unassociate_region(r.value, obj.value); },
+             forward<RegionHandle, ObjectHandle>(&Client::unassociate_region),
              py::arg("region"), py::arg("object"),
              "The object's attributes associated with `region` go back to the default region, the whole space (HLA 1.3 §9.7). Raises ObjectNotKnown, RegionNotKnown, InvalidRegionContext (not associated).")
         .def("subscribeObjectClassAttributesWithRegion",
-             [](Client& c, ObjectClassHandle cls, RegionHandle r, std::vector<AttributeHandle> attrs, bool active) {
-                 c.subscribe_object_class_with_region(cls.value, r.value, to_handles(attrs), active);
-             }, py::arg("objectClass"), py::arg("region"), py::arg("attributes"), py::arg("active") = true,
+             forward<ObjectClassHandle, RegionHandle, std::vector<AttributeHandle>, bool>(&Client::subscribe_object_class_with_region),
+             py::arg("objectClass"), py::arg("region"), py::arg("attributes"), py::arg("active") = true,
              "Subscribe to attributes of a class through a region (HLA 1.3 §9.8): reflected only when the updater's region overlaps it; replaces the attributes subscribed with this class and region. Raises ObjectClassNotDefined, AttributeNotDefined, RegionNotKnown, InvalidRegionContext.")
         .def("unsubscribeObjectClassWithRegion",
-             [](Client& c, ObjectClassHandle cls, RegionHandle r) { c.unsubscribe_object_class_with_region(cls.value, r.value); },
+             forward<ObjectClassHandle, RegionHandle>(&Client::unsubscribe_object_class_with_region),
              py::arg("objectClass"), py::arg("region"),
              "End the subscription to a class through a region (HLA 1.3 §9.9). Raises ObjectClassNotDefined, RegionNotKnown, ObjectClassNotSubscribed.")
         .def("subscribeInteractionClassWithRegion",
-             [](Client& c, InteractionClassHandle ic, RegionHandle r, bool active) {
-                 c.subscribe_interaction_class_with_region(ic.value, r.value, active);
-             }, py::arg("interactionClass"), py::arg("region"), py::arg("active") = true,
+             forward<InteractionClassHandle, RegionHandle, bool>(&Client::subscribe_interaction_class_with_region),
+             py::arg("interactionClass"), py::arg("region"), py::arg("active") = true,
              "Subscribe to an interaction class through a region (HLA 1.3 §9.10): received when sent without region or with an overlapping one. Raises InteractionClassNotDefined, RegionNotKnown, InvalidRegionContext.")
         .def("unsubscribeInteractionClassWithRegion",
-             [](Client& c, InteractionClassHandle ic, RegionHandle r) {
-                 c.unsubscribe_interaction_class_with_region(ic.value, r.value);
-             }, py::arg("interactionClass"), py::arg("region"),
+             forward<InteractionClassHandle, RegionHandle>(&Client::unsubscribe_interaction_class_with_region),
+             py::arg("interactionClass"), py::arg("region"),
              "End the subscription to an interaction class through a region (HLA 1.3 §9.11). Raises InteractionClassNotDefined, RegionNotKnown, InteractionClassNotSubscribed.")
         .def("sendInteractionWithRegion",
              [](Client& c, InteractionClassHandle ic, py::handle values, RegionHandle r, py::handle tag,
@@ -86,9 +82,8 @@ void bind_regions(Ambassador& rtia) {
              py::arg("time") = py::none(),
              "Send an interaction that reaches the plain subscribers and those subscribed through a region overlapping `region` (HLA 1.3 §9.12). With a time, returns an EventRetractionHandle. Raises InteractionClassNotDefined, InteractionClassNotPublished, InteractionParameterNotDefined, RegionNotKnown, InvalidRegionContext, InvalidFederationTime.")
         .def("requestClassAttributeValueUpdateWithRegion",
-             [](Client& c, ObjectClassHandle cls, std::vector<AttributeHandle> attrs, RegionHandle r) {
-                 c.request_class_update_with_region(cls.value, to_handles(attrs), r.value);
-             }, py::arg("objectClass"), py::arg("attributes"), py::arg("region"),
+             forward<ObjectClassHandle, std::vector<AttributeHandle>, RegionHandle>(&Client::request_class_update_with_region),
+             py::arg("objectClass"), py::arg("attributes"), py::arg("region"),
              "Ask the owners to provide the attributes of instances of the class whose update region overlaps `region` (HLA 1.3 §9.13); unassociated attributes are in the whole space. Raises ObjectClassNotDefined, AttributeNotDefined, RegionNotKnown.");
 }
 

@@ -25,7 +25,7 @@ from typing import IO, Any, Callable, Optional, Sequence
 from hlacore import rti
 
 __all__ = ["Child", "Rtig", "SyncAmbassador", "linger", "python_peer", "rtig_beside_python", "say",
-           "synchronize", "tick_until"]
+           "serve", "synchronize", "tick_until"]
 
 
 class Child:
@@ -205,6 +205,16 @@ def tick_until(rtia: rti.RTIAmbassador, predicate: Callable[[], bool], timeout: 
             say(error="timeout")
             sys.exit(3)
         rtia.tick(0.05, 0.1)
+
+
+def serve(rtia: rti.RTIAmbassador, seconds: float) -> None:
+    """Tick (delivering callbacks) until the gateway goes away, for at most `seconds`."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        try:
+            rtia.tick(0.05, 0.1)
+        except rti.RTIinternalError:
+            return  # the connection to the gateway ended
 
 
 def linger(seconds: float) -> None:

@@ -12,10 +12,9 @@ first}); discoveries, reflections (tag), radio interactions
 """
 
 import sys
-import time
 
 import hlacore.rti as rti
-from peerlib import round_trip, say
+from peerlib import round_trip, say, serve
 
 
 class Ambassador(rti.FederateAmbassador):
@@ -75,12 +74,7 @@ def main():
         say(ready=True, region=int(region))
     else:
         say(ready=True)
-    deadline = time.monotonic() + 60
-    while time.monotonic() < deadline:
-        try:
-            rtia.tick(0.05, 0.1)
-        except rti.RTIinternalError:
-            return  # the gateway stopped
+    serve(rtia, 60)
 
 
 if __name__ == "__main__":

@@ -6,10 +6,10 @@ on its path."""
 from __future__ import annotations
 
 import hlacore.rti as rti
-from hlacore.processes import SyncAmbassador, linger, say, synchronize, tick_until
+from hlacore.processes import SyncAmbassador, linger, say, serve, synchronize, tick_until
 
-__all__ = ["PeerAmbassador", "enable_time", "join_lockstep", "linger", "round_trip", "say", "synchronize",
-           "tick_until"]
+__all__ = ["PeerAmbassador", "enable_time", "join_lockstep", "linger", "round_trip", "say", "serve",
+           "synchronize", "tick_until"]
 
 
 def round_trip(rtia: rti.RTIAmbassador) -> None:

@@ -12,7 +12,7 @@ import sys
 import time
 
 import hlacore.rti as rti
-from peerlib import say
+from peerlib import say, serve
 
 
 class Ambassador(rti.FederateAmbassador):
@@ -85,11 +85,7 @@ def main():
     while len(amb.enabled) < 2 and time.monotonic() < deadline:
         rtia.tick(0.05, 0.1)
     say(ready=True, handle=int(handle))
-    while time.monotonic() < deadline:
-        try:
-            rtia.tick(0.05, 0.1)
-        except rti.RTIinternalError:
-            return  # the gateway stopped
+    serve(rtia, max(0.0, deadline - time.monotonic()))
 
 
 if __name__ == "__main__":

@@ -279,6 +279,8 @@ private:
     // An object named in an ownership service, with its attributes checked (callers hold mu_).
     LocalObject& ownership_object(std::uint32_t object, const std::vector<fom::Handle>& attributes);
     LocalObject make_local_object(fom::Handle cls, const std::string& name) const;
+    // An object the gateway registered for this federate, which owns `owned` and may delete it (mu_ held).
+    void add_registered(std::uint32_t object, fom::Handle cls, const std::string& name, std::set<fom::Handle> owned);
     void apply_ownership_callback(const wire::Message& m);
     // The checks and message behind the transport and order changes (order, transport: 0 = unchanged).
     void change_attribute_delivery(std::uint32_t object, const std::vector<fom::Handle>& attributes,

@@ -17,13 +17,17 @@ std::uint32_t Client::register_object(fom::Handle cls, const std::string& name) 
     const auto id = next_request();
     wire::Reply reply = call(wire::RegisterObject{id, cls, name}, id);
     std::lock_guard<std::mutex> lock(mu_);
-    LocalObject obj = make_local_object(cls, reply.text);
+    add_registered(reply.handle, cls, reply.text, std::move(owned));
+    return reply.handle;
+}
+
+void Client::add_registered(std::uint32_t object, fom::Handle cls, const std::string& name, std::set<fom::Handle> owned) {
+    LocalObject obj = make_local_object(cls, name);
     obj.owned = std::move(owned);
     // The registrant holds the privilege to delete (HLA 1.3 §6.2), the privilegeToDelete attribute if any.
     if (obj.privilege_attribute) obj.owned.insert(obj.privilege_attribute);
     obj.privilege_to_delete = true;
-    objects_[reply.handle] = std::move(obj);
-    return reply.handle;
+    objects_[object] = std::move(obj);
 }
 
 std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues values, const std::string& tag,

@@ -205,11 +205,7 @@ std::uint32_t Client::register_object_with_region(fom::Handle cls,
     const auto id = next_request();
     wire::Reply reply = call(wire::RegisterObjectWithRegion{id, cls, name, attributes, region_handles}, id);
     std::lock_guard<std::mutex> lock(mu_);
-    LocalObject obj = make_local_object(cls, reply.text);
-    obj.owned = std::move(owned);
-    if (obj.privilege_attribute) obj.owned.insert(obj.privilege_attribute);
-    obj.privilege_to_delete = true;
-    objects_[reply.handle] = std::move(obj);
+    add_registered(reply.handle, cls, reply.text, std::move(owned));
     for (std::size_t i = 0; i < attributes.size(); ++i) ddm_.update_regions[reply.handle][attributes[i]] = region_handles[i];
     return reply.handle;
 }

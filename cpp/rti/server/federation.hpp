@@ -127,6 +127,9 @@ private:
     void count_scope_watchers();
     void forget_update_regions(ObjectHandle object);
     void route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region);
+    // requestClassAttributeValueUpdate, plain (region null) or with a region (objects.cpp).
+    void request_class_update(FederateHandle from, fom::Handle cls, const wire::Handles& attributes,
+                              const Region* region);
     // ---- end of data distribution management ----
 
     struct FederateState {

@@ -270,13 +270,22 @@ void Federation::on(FederateHandle from, const wire::RequestObjectUpdate& m) {
 
 void Federation::on(FederateHandle from, const wire::RequestClassUpdate& m) {
     federate(from);
-    check_attributes(object_class(m.object_class), m.attributes);
+    request_class_update(from, m.object_class, m.attributes, nullptr);
+}
+
+// HLA 1.3 §6.16, §9.13: the owners of the attributes of the class's instances are asked to provide them;
+// with a `region`, only the owners whose update region for the attribute overlaps it.
+void Federation::request_class_update(FederateHandle from, fom::Handle cls, const wire::Handles& attributes,
+                                      const Region* region) {
+    check_attributes(object_class(cls), attributes);
     for (const auto& [oh, obj] : objects_) {
-        if (!fom_.is_object_subclass(obj.object_class, m.object_class)) continue;
+        if (!fom_.is_object_subclass(obj.object_class, cls)) continue;
         std::map<FederateHandle, wire::Handles> by_owner;
-        for (auto attr : m.attributes) {
+        for (auto attr : attributes) {
             auto owner = obj.owners.find(attr);
-            if (owner != obj.owners.end() && owner->second != from) by_owner[owner->second].push_back(attr);
+            if (owner == obj.owners.end() || owner->second == from) continue;
+            const Region* updated_in = region ? update_region(owner->second, oh, attr) : nullptr;
+            if (!updated_in || overlap(*region, *updated_in)) by_owner[owner->second].push_back(attr);
         }
         for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{oh, attrs});
     }

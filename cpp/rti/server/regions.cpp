@@ -371,20 +371,7 @@ void Federation::on(FederateHandle from, const wire::SendInteractionWithRegion& 
 
 // §9.13: the owners of attributes whose update region overlaps `region` are asked to provide them.
 void Federation::on(FederateHandle from, const wire::RequestClassUpdateWithRegion& m) {
-    auto& f = federate(from);
-    const Region& region = region_of(f, m.region);
-    check_attributes(object_class(m.object_class), m.attributes);
-    for (const auto& [oh, obj] : objects_) {
-        if (!fom_.is_object_subclass(obj.object_class, m.object_class)) continue;
-        std::map<FederateHandle, wire::Handles> by_owner;
-        for (auto attr : m.attributes) {
-            auto owner = obj.owners.find(attr);
-            if (owner == obj.owners.end() || owner->second == from) continue;
-            const Region* updated_in = update_region(owner->second, oh, attr);
-            if (!updated_in || overlap(region, *updated_in)) by_owner[owner->second].push_back(attr);
-        }
-        for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{oh, attrs});
-    }
+    request_class_update(from, m.object_class, m.attributes, &region_of(federate(from), m.region));
 }
 
 }  // namespace hlacore

@@ -29,12 +29,27 @@ class CausalityError(ValueError):
     """An event scheduled in the model's past, or a loop of zero-delay connections."""
 
 
-class InputPort:
-    """An actor's input: holds the tokens that arrived for the current firing, in arrival order."""
+class _Port:
+    """A named port of an actor."""
 
     def __init__(self, actor: "Actor", name: str) -> None:
         self.actor = actor
         self.name = name
+
+    @property
+    def full_name(self) -> str:
+        """``actor.port``."""
+        return f"{self.actor.name}.{self.name}"
+
+    def __repr__(self) -> str:
+        return f"<{type(self).__name__} {self.full_name}>"
+
+
+class InputPort(_Port):
+    """An actor's input: holds the tokens that arrived for the current firing, in arrival order."""
+
+    def __init__(self, actor: "Actor", name: str) -> None:
+        super().__init__(actor, name)
         self.tokens: list[Any] = []
 
     def has_token(self) -> bool:
@@ -53,16 +68,8 @@ class InputPort:
             raise NoTokenError(f"no token on {self.full_name}")
         return self.tokens[-1]
 
-    @property
-    def full_name(self) -> str:
-        """``actor.port``."""
-        return f"{self.actor.name}.{self.name}"
 
-    def __repr__(self) -> str:
-        return f"<InputPort {self.full_name}>"
-
-
-class OutputPort:
+class OutputPort(_Port):
     """An actor's output, connected to any number of input ports.
 
     A ``delayed`` port promises that every token it sends has a delay (``send(value, delay=d)``):
@@ -70,8 +77,7 @@ class OutputPort:
     """
 
     def __init__(self, actor: "Actor", name: str, delayed: bool = False) -> None:
-        self.actor = actor
-        self.name = name
+        super().__init__(actor, name)
         self.delayed = delayed
         self.connections: list[InputPort] = []
 
@@ -105,14 +111,6 @@ class OutputPort:
             time, microstep = director.now + delay, 0
         for port in self.connections:
             director.deliver(port, value, time, microstep)
-
-    @property
-    def full_name(self) -> str:
-        """``actor.port``."""
-        return f"{self.actor.name}.{self.name}"
-
-    def __repr__(self) -> str:
-        return f"<OutputPort {self.full_name}>"
 
 
 class Actor:

@@ -306,25 +306,19 @@ class DirectorAmbassador(rti.FederateAmbassador):
         self.director._on_remove(obj)
         self._forward("removeObjectInstance", obj, tag, *rest)
 
-    def reflectAttributeValues(
-        self, obj: rti.ObjectHandle, attributes: dict[rti.AttributeHandle, bytes], tag: str,
-        order: rti.OrderingHandle, transport: rti.TransportationHandle,
-        time: Optional[float] = None, retraction: Optional[rti.EventRetractionHandle] = None,
-    ) -> None:
+    # `timed` is (time, retraction) for a timestamped message, empty otherwise (PyHLA's signatures).
+    def reflectAttributeValues(self, obj: rti.ObjectHandle, attributes: dict[rti.AttributeHandle, bytes], tag: str,
+                               order: rti.OrderingHandle, transport: rti.TransportationHandle, *timed: Any) -> None:
         """Make the reflection an event on the subscribers of the object's class."""
-        self.director._on_reflect(obj, attributes, tag, order, time)
-        rest = () if time is None else (time, retraction)
-        self._forward("reflectAttributeValues", obj, attributes, tag, order, transport, *rest)
+        self.director._on_reflect(obj, attributes, tag, order, timed[0] if timed else None)
+        self._forward("reflectAttributeValues", obj, attributes, tag, order, transport, *timed)
 
-    def receiveInteraction(
-        self, interactionClass: rti.InteractionClassHandle, parameters: dict[rti.ParameterHandle, bytes], tag: str,
-        order: rti.OrderingHandle, transport: rti.TransportationHandle,
-        time: Optional[float] = None, retraction: Optional[rti.EventRetractionHandle] = None,
-    ) -> None:
+    def receiveInteraction(self, interactionClass: rti.InteractionClassHandle,
+                           parameters: dict[rti.ParameterHandle, bytes], tag: str, order: rti.OrderingHandle,
+                           transport: rti.TransportationHandle, *timed: Any) -> None:
         """Make the interaction an event on the receivers of its class."""
-        self.director._on_interaction(interactionClass, parameters, tag, order, time)
-        rest = () if time is None else (time, retraction)
-        self._forward("receiveInteraction", interactionClass, parameters, tag, order, transport, *rest)
+        self.director._on_interaction(interactionClass, parameters, tag, order, timed[0] if timed else None)
+        self._forward("receiveInteraction", interactionClass, parameters, tag, order, transport, *timed)
 
     def timeRegulationEnabled(self, time: float) -> None:
         """Passed on to the wrapped ambassador."""

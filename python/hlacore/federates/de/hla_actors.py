@@ -153,7 +153,27 @@ class ObjectPublisher(HlaActor):
         self.sent.append(time)
 
 
-class ObjectSubscriber(HlaActor):
+class _Receiver(HlaActor):
+    """What both subscribers share: a codec and an output port per attribute or parameter, ``received``,
+    and the input port (``inbox``) through which the director schedules what arrives."""
+
+    def __init__(self, name: str, fields: Union[Mapping[str, Codec], Iterable[str]], inbox: str) -> None:
+        super().__init__(name)
+        self.codecs = _codecs(fields)
+        self.inbox = self.add_input(inbox)
+        self.ports: dict[str, OutputPort] = {field: self.add_output(field) for field in self.codecs}
+        self.received = self.add_output("received")
+        self._names: dict[Any, str] = {}  # attribute or parameter handle -> name
+
+    def _schedule(self, source: str, decoded: dict[str, Any], tag: str, timestamp: Optional[float], at: float) -> None:
+        director = self.hla()
+        director.inject(self.inbox, Received(source, decoded, timestamp, max(at, director.now), tag), at)
+
+    def fire(self) -> None:
+        _send_received(self.inbox, self.ports, self.received)
+
+
+class ObjectSubscriber(_Receiver):
     """Subscribes to ``attributes`` of ``object_class``; one output port per attribute.
 
     Reflections of any instance of the class (or only of ``instance_name``) become events at their
@@ -169,14 +189,10 @@ class ObjectSubscriber(HlaActor):
         attributes: Union[Mapping[str, Codec], Iterable[str]],
         instance_name: Optional[str] = None,
     ) -> None:
-        super().__init__(name)
+        super().__init__(name, attributes, "reflections")
         self.object_class = object_class
-        self.codecs = _codecs(attributes)
         self.instance_name = instance_name
-        self.reflections = self.add_input("reflections")
-        self.ports: dict[str, OutputPort] = {attr: self.add_output(attr) for attr in self.codecs}
-        self.received = self.add_output("received")
-        self._names: dict[rti.AttributeHandle, str] = {}
+        self.reflections = self.inbox
 
     def declare(self, director: "HlaDirector") -> None:
         rtia = director.rtia
@@ -192,14 +208,8 @@ class ObjectSubscriber(HlaActor):
         if self.instance_name is not None and instance != self.instance_name:
             return
         decoded = _decode(values, self._names, self.codecs)
-        if not decoded:
-            return
-        director = self.hla()
-        time = max(at, director.now)
-        director.inject(self.reflections, Received(instance, decoded, timestamp, time, tag), at)
-
-    def fire(self) -> None:
-        _send_received(self.reflections, self.ports, self.received)
+        if decoded:
+            self._schedule(instance, decoded, tag, timestamp, at)
 
 
 class InteractionSender(HlaActor):
@@ -250,7 +260,7 @@ class InteractionSender(HlaActor):
             self.sent.append(time)
 
 
-class InteractionReceiver(HlaActor):
+class InteractionReceiver(_Receiver):
     """Subscribes to ``interaction_class``; one output port per parameter, plus ``received``.
 
     Interactions of exactly that class become events at their timestamps (receive order: at the
@@ -263,13 +273,9 @@ class InteractionReceiver(HlaActor):
         interaction_class: str,
         parameters: Union[Mapping[str, Codec], Iterable[str]],
     ) -> None:
-        super().__init__(name)
+        super().__init__(name, parameters, "interactions")
         self.interaction_class = interaction_class
-        self.codecs = _codecs(parameters)
-        self.interactions = self.add_input("interactions")
-        self.ports: dict[str, OutputPort] = {param: self.add_output(param) for param in self.codecs}
-        self.received = self.add_output("received")
-        self._names: dict[rti.ParameterHandle, str] = {}
+        self.interactions = self.inbox
 
     def declare(self, director: "HlaDirector") -> None:
         rtia = director.rtia
@@ -281,10 +287,4 @@ class InteractionReceiver(HlaActor):
         self, values: Mapping[rti.ParameterHandle, bytes], tag: str, timestamp: Optional[float], at: float
     ) -> None:
         """Called by the director for an interaction of the subscribed class: schedule it at ``at``."""
-        decoded = _decode(values, self._names, self.codecs)
-        director = self.hla()
-        time = max(at, director.now)
-        director.inject(self.interactions, Received(self.interaction_class, decoded, timestamp, time, tag), at)
-
-    def fire(self) -> None:
-        _send_received(self.interactions, self.ports, self.received)
+        self._schedule(self.interaction_class, _decode(values, self._names, self.codecs), tag, timestamp, at)

@@ -91,7 +91,30 @@ class Received:
     tag: str
 
 
-class ObjectPublisher(HlaActor):
+class _Sender(HlaActor):
+    """What both publishers share: a codec and an input port per attribute or parameter, and the time
+    each message goes with."""
+
+    def __init__(self, name: str, fields: Union[Mapping[str, Codec], Iterable[str]], timestamped: bool,
+                 delay: float) -> None:
+        super().__init__(name)
+        self.codecs = _codecs(fields)
+        self.timestamped = timestamped
+        self.delay = float(delay)
+        self.ports: dict[str, InputPort] = {field: self.add_input(field) for field in self.codecs}
+        #: The timestamps of the messages sent (None for receive order), in order.
+        self.sent: list[Optional[float]] = []
+        self._handles: dict[str, Any] = {}  # attribute or parameter name -> handle
+
+    def _send(self, director: "HlaDirector", service: Callable[..., Any], *args: Any) -> None:
+        """Call the RTI service with `args`, this actor's name as tag and the message's time (send_time +
+        delay when timestamped, else None), and note the time."""
+        time = director.send_time(self.delay) if self.timestamped else None
+        service(*args, self.name, time)
+        self.sent.append(time)
+
+
+class ObjectPublisher(_Sender):
     """Publishes ``attributes`` of ``object_class`` for one object instance, one input port each.
 
     ``attributes`` maps attribute names to codecs (or is a list of names: raw bytes). The instance is
@@ -109,16 +132,9 @@ class ObjectPublisher(HlaActor):
         timestamped: bool = True,
         delay: float = 0.0,
     ) -> None:
-        super().__init__(name)
+        super().__init__(name, attributes, timestamped, delay)
         self.object_class = object_class
-        self.codecs = _codecs(attributes)
         self.instance_name = instance_name if instance_name is not None else name
-        self.timestamped = timestamped
-        self.delay = float(delay)
-        self.ports: dict[str, InputPort] = {attr: self.add_input(attr) for attr in self.codecs}
-        #: The timestamps of the updates sent (None for receive order), in order.
-        self.sent: list[Optional[float]] = []
-        self._handles: dict[str, rti.AttributeHandle] = {}
         self._class: Optional[rti.ObjectClassHandle] = None
         self._object: Optional[rti.ObjectHandle] = None
 
@@ -148,9 +164,7 @@ class ObjectPublisher(HlaActor):
         director = self.hla()
         if self._object is None:
             raise RuntimeError(f"{self.name!r} fired before its director registered the object")
-        time = director.send_time(self.delay) if self.timestamped else None
-        director.rtia.updateAttributeValues(self._object, values, self.name, time)
-        self.sent.append(time)
+        self._send(director, director.rtia.updateAttributeValues, self._object, values)
 
 
 class _Receiver(HlaActor):
@@ -212,7 +226,7 @@ class ObjectSubscriber(_Receiver):
             self._schedule(instance, decoded, tag, timestamp, at)
 
 
-class InteractionSender(HlaActor):
+class InteractionSender(_Sender):
     """Publishes ``interaction_class`` and sends it with ``parameters`` (one input port each).
 
     Token ``i`` of every port that has one goes in the ``i``-th interaction of the firing. Times as
@@ -227,15 +241,8 @@ class InteractionSender(HlaActor):
         timestamped: bool = True,
         delay: float = 0.0,
     ) -> None:
-        super().__init__(name)
+        super().__init__(name, parameters, timestamped, delay)
         self.interaction_class = interaction_class
-        self.codecs = _codecs(parameters)
-        self.timestamped = timestamped
-        self.delay = float(delay)
-        self.ports: dict[str, InputPort] = {param: self.add_input(param) for param in self.codecs}
-        #: The timestamps of the interactions sent (None for receive order), in order.
-        self.sent: list[Optional[float]] = []
-        self._handles: dict[str, rti.ParameterHandle] = {}
         self._class: Optional[rti.InteractionClassHandle] = None
 
     def declare(self, director: "HlaDirector") -> None:
@@ -255,9 +262,7 @@ class InteractionSender(HlaActor):
                 for param, port in self.ports.items()
                 if i < len(port.tokens)
             }
-            time = director.send_time(self.delay) if self.timestamped else None
-            director.rtia.sendInteraction(self._class, values, self.name, time)
-            self.sent.append(time)
+            self._send(director, director.rtia.sendInteraction, self._class, values)
 
 
 class InteractionReceiver(_Receiver):

@@ -5,7 +5,7 @@ owner (or publisher) that made them, and every exception."""
 from __future__ import annotations
 
 import pathlib
-from typing import Callable
+from typing import Any, Callable
 
 import pytest
 
@@ -47,13 +47,20 @@ def receptions(fed: Federate) -> list[tuple[dict, str, str, object]]:
     return delivered(fed, "receiveInteraction")
 
 
-def test_timestamp_attribute_changed_to_receive_order_arrives_receive_order(federation: Join) -> None:
+def location_in_receive_order(federation: Join) -> tuple[Federate, Federate, Any, Any, Any]:
+    """'a' regulates and owns a robot whose location it changed to receive order; 'b' is constrained with
+    asynchronous delivery and subscribes location and battery."""
     a, b = federation("a"), federation("b")
     obj, location, battery = robot_with(a, b)
     a.enable_time(lookahead=1.0, constrained=False)
     b.enable_time(lookahead=None)
     b.rtia.enableAsynchronousDelivery()
     a.rtia.changeAttributeOrderType(obj, [location], a.rtia.getOrderingHandle("Receive"))
+    return a, b, obj, location, battery
+
+
+def test_timestamp_attribute_changed_to_receive_order_arrives_receive_order(federation: Join) -> None:
+    a, b, obj, location, battery = location_in_receive_order(federation)
     # From a regulating sender to a constrained receiver, with a time: location goes receive order (no
     # time), battery (timestamp in the FOM, unchanged) waits for b's grant.
     a.rtia.updateAttributeValues(obj, {location: b"here", battery: b"90"}, "t", 5.0)
@@ -72,12 +79,7 @@ def test_timestamp_attribute_changed_to_receive_order_arrives_receive_order(fede
 
 
 def test_an_attribute_order_change_is_forgotten_when_ownership_moves(federation: Join) -> None:
-    a, b = federation("a"), federation("b")
-    obj, location, battery = robot_with(a, b)
-    a.enable_time(lookahead=1.0, constrained=False)
-    b.enable_time(lookahead=None)
-    b.rtia.enableAsynchronousDelivery()
-    a.rtia.changeAttributeOrderType(obj, [location], a.rtia.getOrderingHandle("Receive"))
+    a, b, obj, location, battery = location_in_receive_order(federation)
     a.rtia.unconditionalAttributeOwnershipDivestiture(obj, [location])
     a.rtia.attributeOwnershipAcquisitionIfAvailable(obj, [location])
     tick_until(lambda: bool(a.amb.named("attributeOwnershipAcquisitionNotification")), a.rtia)

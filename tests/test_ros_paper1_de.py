@@ -37,6 +37,20 @@ def start_stage(env: dict[str, str], world_file: pathlib.Path, *args: str) -> tu
     return proc, Lines(proc)
 
 
+def join_driver(address: str) -> tuple[Federate, dict[Any, str], Any, dict[str, Any]]:
+    """The test's driver federate: subscribes every attribute of the robot (handle -> name) and publishes
+    the command interaction (its class and parameter handles by name)."""
+    fed = Federate(address, "driver", FEDERATION)
+    rtia = fed.rtia
+    robot_class = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
+    attributes = {rtia.getAttributeHandle(n, robot_class): n for n in codec.ATTRIBUTES}
+    rtia.subscribeObjectClassAttributes(robot_class, list(attributes))
+    cmd = rtia.getInteractionClassHandle(codec.INTERACTION)
+    params = {n: rtia.getParameterHandle(n, cmd) for n in codec.PARAMETERS}
+    rtia.publishInteractionClass(cmd)
+    return fed, attributes, cmd, params
+
+
 def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_address: str,
                                          tmp_path: pathlib.Path) -> None:
     """One command, paper 1's architecture: the DE controller federate, the bridge and the stage node, each
@@ -99,14 +113,8 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
     commands: list[tuple[float, float, float]] = []
     try:
         stage_out.wait_for("stage_node ready", 60)
-        fed = Federate(gateway_address, "driver", FEDERATION)
+        fed, attributes, cmd, params = join_driver(gateway_address)
         rtia = fed.rtia
-        robot_class = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
-        attributes = {rtia.getAttributeHandle(n, robot_class): n for n in codec.ATTRIBUTES}
-        rtia.subscribeObjectClassAttributes(robot_class, list(attributes))
-        cmd = rtia.getInteractionClassHandle(codec.INTERACTION)
-        params = {n: rtia.getParameterHandle(n, cmd) for n in codec.PARAMETERS}
-        rtia.publishInteractionClass(cmd)
         fed.enable_time(lookahead=PERIOD)
         bridge, bridge_out = start_bridge(roscore, gateway_address, "--world-node", str(world_file), "--acks",
                                           "--clock", "--await-state", "5", "--wait-connections", "60")
@@ -222,14 +230,8 @@ def test_untimed_bridge_to_a_free_running_node(roscore: dict[str, str], inproces
     bridge: Optional[subprocess.Popen[str]] = None
     try:
         stage_out.wait_for("stage_node ready", 60)
-        fed = Federate(address, "driver", FEDERATION)
+        fed, attributes, cmd, params = join_driver(address)
         rtia = fed.rtia
-        robot_class = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
-        attributes = {rtia.getAttributeHandle(n, robot_class): n for n in codec.ATTRIBUTES}
-        rtia.subscribeObjectClassAttributes(robot_class, list(attributes))
-        cmd = rtia.getInteractionClassHandle(codec.INTERACTION)
-        params = {n: rtia.getParameterHandle(n, cmd) for n in codec.PARAMETERS}
-        rtia.publishInteractionClass(cmd)
         bridge, bridge_out = start_bridge(roscore, address, "--world-node", str(world_file), "--untimed",
                                           "--wait-connections", "60")
         bridge_out.wait_for("ros_bridge ready", 60)

@@ -14,6 +14,8 @@ import pytest
 
 import hlacore
 from hlacore import rti
+from hlacore.federates.robot_world import FEDERATION as ROBOT_WORLD_FEDERATION
+from hlacore.federates.robot_world import FOM_PATH as ROBOT_WORLD_FOM
 from hlacore.processes import Child, Rtig, python_peer, rtig_beside_python
 
 DATA = pathlib.Path(__file__).parent / "data"
@@ -73,6 +75,15 @@ def rtig(tmp_path: pathlib.Path) -> Iterator[RtigProcess]:
 def inprocess_gateway() -> Iterator[hlacore.Gateway]:
     with hlacore.Gateway(port=0) as gw:
         yield gw
+
+
+@pytest.fixture
+def world_federation(gateway_address: str) -> Iterator[str]:
+    """The robot world's federation (hlacore.federates.robot_world's FOM) on each gateway; its address."""
+    creator = rti.RTIAmbassador(gateway_address)
+    creator.createFederationExecution(ROBOT_WORLD_FEDERATION, str(ROBOT_WORLD_FOM))
+    yield gateway_address
+    creator.destroyFederationExecution(ROBOT_WORLD_FEDERATION)
 
 
 @pytest.fixture(params=["in-process", "rtig"])

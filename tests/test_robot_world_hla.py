@@ -5,14 +5,13 @@ commands' timestamps, and publishes poses, odometry and ranges stamped grant + l
 from __future__ import annotations
 
 import time
-from typing import Any, Iterator
+from typing import Any
 
 import pytest
 
 import hlacore.rti as rti
 from hlacore.federates.robot_world import (
     FEDERATION,
-    FOM_PATH,
     Command,
     GridError,
     World,
@@ -34,14 +33,6 @@ DT, PERIOD, LOOKAHEAD = 0.01, 0.1, 0.1
 CYCLES = 30
 # the driver's command per cycle k, sent at its time + lookahead: accelerate, turn, reverse, stop
 COMMANDS = [(0.6, 0.0)] * 10 + [(0.4, 0.8)] * 8 + [(-0.3, -0.5)] * 7 + [(0.0, 0.0)] * 5
-
-
-@pytest.fixture
-def world_federation(gateway_address: str) -> Iterator[str]:
-    creator = rti.RTIAmbassador(gateway_address)
-    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
-    yield gateway_address
-    creator.destroyFederationExecution(FEDERATION)
 
 
 class Driver:

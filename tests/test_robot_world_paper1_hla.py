@@ -4,29 +4,18 @@ obstacles once they have left its lane and stops before the wall."""
 
 from __future__ import annotations
 
-from typing import Iterator
 
 import pytest
 
-import hlacore.rti as rti
 from hlacore.experiments.paper1 import hla as paper1_hla
 from hlacore.experiments.paper1 import scenario as paper1
-from hlacore.federates.robot_world import FEDERATION, FOM_PATH
 
 HALF = 0.33 / 2
 WALL_FACE = 7.0 - 0.1
 
 
-@pytest.fixture
-def address(gateway_address: str) -> Iterator[str]:
-    creator = rti.RTIAmbassador(gateway_address)
-    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
-    yield gateway_address
-    creator.destroyFederationExecution(FEDERATION)
-
-
-def test_paper1_over_hla(address: str) -> None:
-    world, control, stalls = paper1_hla.run(address, duration=30.0)
+def test_paper1_over_hla(world_federation: str) -> None:
+    world, control, stalls = paper1_hla.run(world_federation, duration=30.0)
     try:
         assert len(world.history) == 301 and world.history[-1][0] == pytest.approx(30.0)
         # Stage semantics: any collision stalls the robot that moved into it, at that step

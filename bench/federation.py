@@ -9,14 +9,15 @@ from typing import Any
 
 import hlacore
 import hlacore.rti as rti
+from hlacore.processes import SyncAmbassador, tick_until
 
-from .peers.peerlib import Joined, TimeAmbassador, tick_until
+from .peers.peerlib import Joined
 
 FOM = str(pathlib.Path(hlacore.__file__).parent / "foms" / "robot.fed")
 _names = itertools.count(1)
 
 
-class Counting(TimeAmbassador):
+class Counting(SyncAmbassador):
     """Counts reflections and keeps the last value reflected."""
 
     def __init__(self) -> None:

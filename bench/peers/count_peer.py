@@ -13,10 +13,11 @@ import sys
 import time
 from typing import Any
 
-from peerlib import STOP, Joined, TimeAmbassador, fail, say, tick_until
+from hlacore.processes import SyncAmbassador, tick_until
+from peerlib import STOP, Joined, fail, say
 
 
-class Ambassador(TimeAmbassador):
+class Ambassador(SyncAmbassador):
     def __init__(self, burst: int) -> None:
         super().__init__()
         self.burst = burst

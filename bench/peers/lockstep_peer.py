@@ -14,10 +14,11 @@ from __future__ import annotations
 import sys
 from typing import Any
 
-from peerlib import STOP, Joined, TimeAmbassador, await_start, say
+from hlacore.processes import SyncAmbassador
+from peerlib import STOP, Joined, await_start, say
 
 
-class Ambassador(TimeAmbassador):
+class Ambassador(SyncAmbassador):
     def __init__(self) -> None:
         super().__init__()
         self.times: list[float] = []

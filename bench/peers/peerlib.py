@@ -4,7 +4,6 @@ attribute published and subscribed, tick with a deadline, and become regulating 
 from __future__ import annotations
 
 import sys
-from typing import Callable
 
 import hlacore.rti as rti
 from hlacore import processes
@@ -16,10 +15,6 @@ STOP = b"stop"  # the conductor's last update: peers leave their loop when they 
 def fail(message: str) -> None:
     say(error=message)
     sys.exit(3)
-
-
-def tick_until(rtia: rti.RTIAmbassador, predicate: Callable[[], bool], timeout: float = 60.0) -> None:
-    processes.tick_until(rtia, predicate, timeout)
 
 
 class Joined:
@@ -47,10 +42,6 @@ class Joined:
         self.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
 
 
-# Keeps the synchronization point state of the conductor's "start".
-TimeAmbassador = processes.SyncAmbassador
-
-
-def await_start(fed: Joined, amb: TimeAmbassador) -> None:
+def await_start(fed: Joined, amb: processes.SyncAmbassador) -> None:
     """Wait for the conductor's synchronization point "start" and achieve it."""
     processes.synchronize(fed.rtia, amb, "start")

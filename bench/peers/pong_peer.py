@@ -14,12 +14,13 @@ import sys
 import time
 from typing import Any, Optional
 
-from peerlib import STOP, Joined, TimeAmbassador, fail, say, tick_until
+from hlacore.processes import SyncAmbassador, tick_until
+from peerlib import STOP, Joined, fail, say
 
 FAR = 1e12  # nextEventRequest's bound: only the conductor's next message decides the grant
 
 
-class Ambassador(TimeAmbassador):
+class Ambassador(SyncAmbassador):
     def __init__(self) -> None:
         super().__init__()
         self.value: Optional[bytes] = None

@@ -24,8 +24,8 @@ from typing import IO, Any, Callable, Optional, Sequence
 
 from hlacore import rti
 
-__all__ = ["Child", "Rtig", "SyncAmbassador", "linger", "python_peer", "rtig_beside_python", "say",
-           "serve", "synchronize", "tick_until"]
+__all__ = ["Child", "Rtig", "SyncAmbassador", "linger", "python_peer", "round_trip", "rtig_beside_python",
+           "say", "serve", "synchronize", "tick_until"]
 
 
 class Child:
@@ -205,6 +205,16 @@ def tick_until(rtia: rti.RTIAmbassador, predicate: Callable[[], bool], timeout: 
             say(error="timeout")
             sys.exit(3)
         rtia.tick(0.05, 0.1)
+
+
+def round_trip(rtia: rti.RTIAmbassador) -> None:
+    """Return once the gateway has handled everything this federate sent before (it asks to destroy a
+    federation that does not exist). The gateway handles each connection's messages in order but
+    connections in any order: a federate that subscribes makes this round trip before another sends."""
+    try:
+        rtia.destroyFederationExecution("hlacore-round-trip")
+    except rti.FederationExecutionDoesNotExist:
+        pass
 
 
 def serve(rtia: rti.RTIAmbassador, seconds: float) -> None:

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import os
 import time as _time
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 from . import _core
 from ._core import (  # noqa: F401  (re-exported handle types)
@@ -280,16 +280,12 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
             self.enableTimeRegulation(self.queryFederateTime(), lookahead)
         if constrained:
             self.enableTimeConstrained()
-        deadline = None if timeout is None else _time.monotonic() + timeout
-        while not watcher.done():
-            if self._dispatch(watcher, False, -1.0):
-                continue
-            remaining = -1.0
-            if deadline is not None:
-                remaining = deadline - _time.monotonic()
-                if remaining <= 0:
-                    raise TimeoutError(f"time management not enabled within {timeout} s")
-            self._wait(remaining)
+
+        def enabled() -> bool:
+            self._dispatch(watcher, False, -1.0)
+            return watcher.done()
+
+        self._deliver_until(enabled, timeout, "time management not enabled")
         return float(self.queryFederateTime())
 
     # ---- blocking time advance (beyond PyHLA; asyncio forms in hlacore.aio) ----
@@ -318,15 +314,21 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         """
         if not self._time_advance_pending():
             raise _core.TimeAdvanceWasNotInProgress("no time advance is pending")
+        # _wait reads the socket: deliver_until_granted need not.
+        self._deliver_until(lambda: self.deliver_until_granted(read=False), timeout, "no time advance grant")
+        return float(self.queryFederateTime())
+
+    def _deliver_until(self, delivered: Callable[[], bool], timeout: Optional[float], what: str) -> None:
+        """Call `delivered` (it delivers what is ready) until it returns True, waiting for the socket in
+        between (GIL released, Ctrl-C interrupts); TimeoutError saying `what` after `timeout` seconds."""
         deadline = None if timeout is None else _time.monotonic() + timeout
-        while not self.deliver_until_granted(read=False):  # _wait reads the socket
+        while not delivered():
             remaining = -1.0
             if deadline is not None:
                 remaining = deadline - _time.monotonic()
                 if remaining <= 0:
-                    raise TimeoutError(f"no time advance grant within {timeout} s")
+                    raise TimeoutError(f"{what} within {timeout} s")
             self._wait(remaining)
-        return float(self.queryFederateTime())
 
     def deliver_until_granted(self, read: bool = True) -> bool:
         """Deliver ready callbacks, stopping after a grant; True once no time advance is pending.

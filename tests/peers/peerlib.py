@@ -1,24 +1,15 @@
 """What the standalone test peers share beyond hlacore.processes (JSON-line reports, bounded ticking,
-synchronization points, waiting to be killed, re-exported here): the time-enabling callbacks, a round
-trip to the gateway, joining a lockstep. Each peer runs as `python tests/peers/X.py`, so this directory is
+synchronization points, a round trip to the gateway, waiting to be killed, re-exported here): the
+time-enabling callbacks and joining a lockstep. Each peer runs as `python tests/peers/X.py`, so this directory is
 on its path."""
 
 from __future__ import annotations
 
 import hlacore.rti as rti
-from hlacore.processes import SyncAmbassador, linger, say, serve, synchronize, tick_until
+from hlacore.processes import SyncAmbassador, linger, round_trip, say, serve, synchronize, tick_until
 
 __all__ = ["PeerAmbassador", "enable_time", "join_lockstep", "linger", "round_trip", "say", "serve",
            "synchronize", "tick_until"]
-
-
-def round_trip(rtia: rti.RTIAmbassador) -> None:
-    """A request answered by the gateway: whatever this federate sent before has been handled once it returns
-    (asks to destroy a federation that does not exist)."""
-    try:
-        rtia.destroyFederationExecution("peerlib-round-trip")
-    except rti.FederationExecutionDoesNotExist:
-        pass
 
 
 class PeerAmbassador(SyncAmbassador):

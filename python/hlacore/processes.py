@@ -168,8 +168,7 @@ class Rtig:
         """rtig's log so far (all of it with a `log_path`, its last 4000 characters otherwise)."""
         if self._final_log is not None:
             return self._final_log
-        if self.log_path is not None:
-            self.child._stderr.flush()
+        if self.log_path is not None:  # rtig writes it through its own descriptor: nothing to flush here
             return self.log_path.read_text(errors="replace")
         return self.child.stderr()
 

@@ -1,8 +1,8 @@
 // Callbacks: each message from the gateway becomes (name, arguments) with PyHLA's argument order, the
-// names those of wire/callbacks.hpp; dispatch calls the ambassador's method of that name. tick (rti.py)
-// drives _wait and _dispatch.
+// names those of wire/callbacks.hpp; dispatch calls the ambassador's method of that name; tick drives it.
 #include "bindings/convert.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 
@@ -23,6 +23,19 @@ py::object named(C callback, py::tuple args) {
         return interned;
     }();
     return py::make_tuple((*names)[static_cast<std::size_t>(callback)], std::move(args));
+}
+
+// The arguments of a callback that may carry a time: with one, the time and the EventRetractionHandle follow.
+template <class M, class... Args>
+py::tuple timed(const M& m, Args&&... args) {
+    if (!m.time) return py::make_tuple(std::forward<Args>(args)...);
+    return py::make_tuple(std::forward<Args>(args)..., *m.time, retraction_or_none(m.serial, m.sender));
+}
+
+// The arguments of the callbacks about a set of an object's attributes (ownership, scope, updates on/off).
+template <class M, class... Extra>
+py::tuple object_attributes(const M& m, Extra&&... extra) {
+    return py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes), std::forward<Extra>(extra)...);
 }
 
 // A queued message as (callback name, arguments), with PyHLA's argument order.
@@ -49,28 +62,15 @@ py::object to_callback(const wire::Message& message) {
             } else if constexpr (std::is_same_v<M, wire::DiscoverObject>) {
                 return named(C::discoverObjectInstance, py::make_tuple(handle_of<ObjectHandle>(m.object), ObjectClassHandle{m.object_class}, to_str(m.name)));
             } else if constexpr (std::is_same_v<M, wire::ReflectAttributes>) {
-                py::tuple args = m.time ? (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_dict<AttributeHandle>(m.values),
-                                                         to_str(m.tag), handle_of<OrderingHandle>(m.order),
-                                                         handle_of<TransportationHandle>(m.transport), *m.time,
-                                                         retraction_or_none(m.serial, m.sender))
-                                        : (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_dict<AttributeHandle>(m.values),
-                                                         to_str(m.tag), handle_of<OrderingHandle>(m.order),
-                                                         handle_of<TransportationHandle>(m.transport));
-                return named(C::reflectAttributeValues, args);
+                return named(C::reflectAttributeValues,
+                             timed(m, handle_of<ObjectHandle>(m.object), to_dict<AttributeHandle>(m.values), to_str(m.tag),
+                                   handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport)));
             } else if constexpr (std::is_same_v<M, wire::ReceiveInteraction>) {
-                py::tuple args = m.time ? (py::tuple)py::make_tuple(handle_of<InteractionClassHandle>(m.interaction_class),
-                                                         to_dict<ParameterHandle>(m.values), to_str(m.tag),
-                                                         handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport),
-                                                         *m.time, retraction_or_none(m.serial, m.sender))
-                                        : (py::tuple)py::make_tuple(handle_of<InteractionClassHandle>(m.interaction_class),
-                                                         to_dict<ParameterHandle>(m.values), to_str(m.tag),
-                                                         handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport));
-                return named(C::receiveInteraction, args);
+                return named(C::receiveInteraction,
+                             timed(m, handle_of<InteractionClassHandle>(m.interaction_class), to_dict<ParameterHandle>(m.values),
+                                   to_str(m.tag), handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport)));
             } else if constexpr (std::is_same_v<M, wire::RemoveObject>) {
-                py::tuple args = m.time ? (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_str(m.tag), *m.time,
-                                                         retraction_or_none(m.serial, m.sender))
-                                        : (py::tuple)py::make_tuple(handle_of<ObjectHandle>(m.object), to_str(m.tag));
-                return named(C::removeObjectInstance, args);
+                return named(C::removeObjectInstance, timed(m, handle_of<ObjectHandle>(m.object), to_str(m.tag)));
             } else if constexpr (std::is_same_v<M, wire::TimeRegulationEnabled>) {
                 return named(C::timeRegulationEnabled, py::make_tuple(m.time));
             } else if constexpr (std::is_same_v<M, wire::TimeConstrainedEnabled>) {
@@ -80,29 +80,27 @@ py::object to_callback(const wire::Message& message) {
             } else if constexpr (std::is_same_v<M, wire::RequestRetraction>) {
                 return named(C::requestRetraction, py::make_tuple(EventRetractionHandle{m.sender, m.serial}));
             } else if constexpr (std::is_same_v<M, wire::ProvideAttributeValueUpdate>) {
-                return named(C::provideAttributeValueUpdate, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+                return named(C::provideAttributeValueUpdate, object_attributes(m));
             } else if constexpr (std::is_same_v<M, wire::RequestOwnershipAssumption>) {
-                return named(C::requestAttributeOwnershipAssumption, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes),
-                                                     to_str(m.tag)));
+                return named(C::requestAttributeOwnershipAssumption, object_attributes(m, to_str(m.tag)));
             } else if constexpr (std::is_same_v<M, wire::DivestitureNotification>) {
-                return named(C::attributeOwnershipDivestitureNotification, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+                return named(C::attributeOwnershipDivestitureNotification, object_attributes(m));
             } else if constexpr (std::is_same_v<M, wire::AcquisitionNotification>) {
-                return named(C::attributeOwnershipAcquisitionNotification, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+                return named(C::attributeOwnershipAcquisitionNotification, object_attributes(m));
             } else if constexpr (std::is_same_v<M, wire::OwnershipUnavailable>) {
-                return named(C::attributeOwnershipUnavailable, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+                return named(C::attributeOwnershipUnavailable, object_attributes(m));
             } else if constexpr (std::is_same_v<M, wire::RequestOwnershipRelease>) {
-                return named(C::requestAttributeOwnershipRelease, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes),
-                                                     to_str(m.tag)));
+                return named(C::requestAttributeOwnershipRelease, object_attributes(m, to_str(m.tag)));
             } else if constexpr (std::is_same_v<M, wire::ConfirmAcquisitionCancellation>) {
-                return named(C::confirmAttributeOwnershipAcquisitionCancellation, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+                return named(C::confirmAttributeOwnershipAcquisitionCancellation, object_attributes(m));
             } else if constexpr (std::is_same_v<M, wire::AttributesInScope>) {
-                return named(C::attributesInScope, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+                return named(C::attributesInScope, object_attributes(m));
             } else if constexpr (std::is_same_v<M, wire::AttributesOutOfScope>) {
-                return named(C::attributesOutOfScope, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+                return named(C::attributesOutOfScope, object_attributes(m));
             } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOn>) {
-                return named(C::turnUpdatesOnForObjectInstance, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+                return named(C::turnUpdatesOnForObjectInstance, object_attributes(m));
             } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOff>) {
-                return named(C::turnUpdatesOffForObjectInstance, py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes)));
+                return named(C::turnUpdatesOffForObjectInstance, object_attributes(m));
             } else if constexpr (std::is_same_v<M, wire::OwnershipInformation>) {
                 switch (static_cast<wire::OwnershipKind>(m.kind)) {
                     case wire::OwnershipKind::OwnedByFederate:
@@ -173,10 +171,45 @@ bool wait_for_callback(Client& c, double timeout_s) {
     }
 }
 
+// HLA 1.3 tick: all that is ready (no window), or wait up to `minimum` for a first callback, then deliver
+// for up to `maximum`, reading what arrives meanwhile. Callbacks go to self._federate_ambassador (set by
+// joinFederationExecution in rti.py). Here rather than in Python: it runs once per reflection.
+bool tick(Client& c, std::optional<double> minimum, std::optional<double> maximum) {
+    const py::object self = py::cast(&c, py::return_value_policy::reference);  // the existing Python object
+    const py::object ambassador = py::getattr(self, "_federate_ambassador", py::none());
+    const auto poll = [&c] {
+        py::gil_scoped_release release;
+        c.poll_now();
+    };
+    if (!minimum && !maximum) {
+        poll();
+        dispatch(c, ambassador, false, -1.0);
+        return c.has_callbacks();
+    }
+    const double lo = minimum.value_or(0.0);
+    const double hi = std::max(maximum.value_or(lo), lo);
+    const auto start = Client::Clock::now();
+    if (!wait_for_callback(c, lo)) return c.has_callbacks();
+    const auto deadline = start + std::chrono::duration_cast<Client::Clock::duration>(std::chrono::duration<double>(hi));
+    for (;;) {
+        const double left = std::chrono::duration<double>(deadline - Client::Clock::now()).count();
+        dispatch(c, ambassador, false, std::max(0.0, left));
+        if (Client::Clock::now() >= deadline) break;
+        poll();  // more may have arrived meanwhile: deliver it within the same tick
+        if (!c.has_callbacks()) break;
+    }
+    return c.has_callbacks();
+}
+
+const Doc kDocs[] = {
+    {"tick", "Evoke callbacks on this thread (HLA 1.3 §2.2 tick). tick() delivers every callback that is ready and returns at once. tick(minimum, maximum) waits up to minimum seconds for the first callback (the GIL released; Ctrl-C interrupts it), then keeps delivering what is ready for at most maximum seconds. Returns True when callbacks are still pending. An exception raised by a callback propagates with its traceback; the callbacks not yet delivered stay queued for the next tick."},
+};
+
 }  // namespace
 
 void bind_callbacks(Ambassador& rtia) {
-    rtia
+    Documented(rtia, kDocs)
+        .def("tick", &tick, py::arg("minimum") = py::none(), py::arg("maximum") = py::none())
         .def("_poll", &Client::poll_now, py::call_guard<py::gil_scoped_release>())
         .def("_wait", &wait_for_callback, py::arg("timeout"))
         .def("_has_callbacks", &Client::has_callbacks)

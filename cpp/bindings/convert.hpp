@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -74,8 +76,25 @@ void bind_handle(py::module_& m, const char* name) {
 // ---- value conversions ----
 
 // Tags and labels are bytes on the wire; str goes through UTF-8 with surrogateescape so nothing is lost.
-std::string to_bytes(const py::handle& value, const char* what);
-py::str to_str(const std::string& s);
+inline std::string to_bytes(const py::handle& value, const char* what) {
+    if (PyBytes_Check(value.ptr())) return std::string(PyBytes_AS_STRING(value.ptr()), PyBytes_GET_SIZE(value.ptr()));
+    if (PyUnicode_Check(value.ptr())) {
+        py::object encoded = py::reinterpret_steal<py::object>(
+            PyUnicode_AsEncodedString(value.ptr(), "utf-8", "surrogateescape"));
+        if (!encoded) throw py::error_already_set();
+        return std::string(PyBytes_AS_STRING(encoded.ptr()), PyBytes_GET_SIZE(encoded.ptr()));
+    }
+    if (PyObject_CheckBuffer(value.ptr())) {
+        py::buffer_info info = py::reinterpret_borrow<py::buffer>(value).request();
+        if (info.itemsize * info.size < 0) throw py::value_error("bad buffer");
+        return std::string(static_cast<const char*>(info.ptr), static_cast<std::size_t>(info.itemsize * info.size));
+    }
+    throw py::type_error(std::string(what) + " must be bytes or str, not " + std::string(py::str(py::type::handle_of(value).attr("__name__"))));
+}
+
+inline py::str to_str(const std::string& s) {
+    return py::reinterpret_steal<py::str>(PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "surrogateescape"));
+}
 
 template <class H>
 wire::HandleValues to_handle_values(const py::handle& mapping, const char* key_name) {
@@ -135,6 +154,7 @@ std::vector<std::uint32_t> raw(const std::vector<Handle<Kind>>& handles) {
     return to_handles(handles);
 }
 inline std::string raw(const py::handle& tag) { return to_bytes(tag, "tag"); }
+inline const std::string& raw(const std::string& name) { return name; }
 inline bool raw(bool flag) { return flag; }
 
 // A Python method whose arguments (typed handles, lists of them, a tag) go to the client service `f` as
@@ -144,12 +164,57 @@ auto forward(void (Client::*f)(Raw...)) {
     return [f](Client& c, Py... args) { (c.*f)(raw(args)...); };
 }
 
+// The same for a query answered from the client's state: its result becomes an Out (a typed handle, a name).
+template <class Out, class... Py, class Result, class... Raw>
+auto query(Result (Client::*f)(Raw...) const) {
+    return [f](Client& c, Py... args) { return Out{(c.*f)(raw(args)...)}; };
+}
+
 inline py::object retraction_or_none(std::uint64_t serial, std::uint32_t sender) {
     return py::cast(EventRetractionHandle{sender, serial});
 }
 
 // A timestamped send returns its EventRetractionHandle, an untimed one None (PyHLA).
-py::object serial_result(std::uint64_t serial, const std::optional<double>& time, const Client& c);
+inline py::object serial_result(std::uint64_t serial, const std::optional<double>& time, const Client& c) {
+    if (!time) return py::none();
+    return py::cast(EventRetractionHandle{c.federate_handle(), serial});
+}
+
+// ---- docstrings ----
+
+// What help() shows for one method. Each service group keeps its docstrings in a table beside its bindings
+// (the split pybind11_mkdoc makes): the .def lines map Python names to client methods, the table says what
+// they do.
+struct Doc {
+    const char* name;
+    const char* text;
+};
+
+// Binds methods with the docstrings of a group's table; a public method missing from it fails the import.
+class Documented {
+public:
+    template <std::size_t N>
+    Documented(Ambassador& cls, const Doc (&docs)[N]) : cls_(cls), docs_(docs), count_(N) {}
+
+    template <class F, class... Extra>
+    Documented& def(const char* name, F&& f, const Extra&... extra) {
+        if (name[0] == '_')
+            cls_.def(name, std::forward<F>(f), extra...);
+        else
+            cls_.def(name, std::forward<F>(f), extra..., text_of(name));
+        return *this;
+    }
+
+private:
+    const char* text_of(const char* name) const {
+        for (std::size_t i = 0; i < count_; ++i)
+            if (std::strcmp(docs_[i].name, name) == 0) return docs_[i].text;
+        throw std::logic_error(std::string("no docstring for RTIAmbassador.") + name);
+    }
+    Ambassador& cls_;
+    const Doc* docs_;
+    std::size_t count_;
+};
 
 // One Python class per HLA 1.3 exception, all under RTIexception, and the translation of RtiError,
 // fom::FedError and wire::WireError into them.

@@ -3,12 +3,20 @@
 
 namespace hlacore::bindings {
 
+namespace {
+
+// What help() says of each service of the group (convert.hpp: Documented).
+const Doc kDocs[] = {
+    {"destroyFederationExecution", "Destroy a federation execution (HLA 1.3 §4.3). Raises FederatesCurrentlyJoined, FederationExecutionDoesNotExist."},
+};
+
+}  // namespace
+
 void bind_federation(Ambassador& rtia) {
-    rtia
+    Documented(rtia, kDocs)
         .def("_create", &Client::create_federation, py::call_guard<py::gil_scoped_release>())
-        .def("destroyFederationExecution", &Client::destroy_federation, py::arg("executionName"),
-             py::call_guard<py::gil_scoped_release>(),
-             "Destroy a federation execution (HLA 1.3 §4.3). Raises FederatesCurrentlyJoined, FederationExecutionDoesNotExist.")
+        .def("destroyFederationExecution", &Client::destroy_federation,
+             py::arg("executionName"), py::call_guard<py::gil_scoped_release>())
         .def("_join", [](Client& c, const std::string& federate, const std::string& federation) {
             H32 h;
             {

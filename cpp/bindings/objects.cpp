@@ -3,8 +3,27 @@
 
 namespace hlacore::bindings {
 
+namespace {
+
+// What help() says of each service of the group (convert.hpp: Documented).
+const Doc kDocs[] = {
+    {"registerObjectInstance", "Register an instance of a published class (HLA 1.3 §6.2), optionally named (names are unique in the federation); returns its ObjectHandle and makes this federate the owner of the published attributes. Subscribers get discoverObjectInstance. Raises ObjectClassNotDefined, ObjectClassNotPublished, ObjectAlreadyRegistered."},
+    {"updateAttributeValues", "Update owned attributes {AttributeHandle: bytes} of an object (HLA 1.3 §6.4); subscribers get reflectAttributeValues with the attributes they subscribed. With a time, returns an EventRetractionHandle. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned."},
+    {"sendInteraction", "Send an interaction {ParameterHandle: bytes} (HLA 1.3 §6.6); subscribers get receiveInteraction. With a time, returns an EventRetractionHandle. Raises InteractionClassNotDefined, InteractionClassNotPublished, InteractionParameterNotDefined."},
+    {"deleteObjectInstance", "Delete an object this federate may delete (HLA 1.3 §6.8); the others get removeObjectInstance. Raises ObjectNotKnown, DeletePrivilegeNotHeld."},
+    {"localDeleteObjectInstance", "Forget an object locally (HLA 1.3 §6.10); it may be discovered again. Raises ObjectNotKnown, FederateOwnsAttributes."},
+    {"requestObjectAttributeValueUpdate", "Ask the owners of an object's attributes to update them (HLA 1.3 §6.15); they get provideAttributeValueUpdate. Raises ObjectNotKnown, AttributeNotDefined."},
+    {"requestClassAttributeValueUpdate", "Ask the owners of attributes of every instance of a class to update them (HLA 1.3 §6.15). Raises ObjectClassNotDefined, AttributeNotDefined."},
+    {"changeAttributeTransportationType", "Change the transportation of owned attributes (HLA 1.3 §6.19) for this federate's later updates of that object; reflectAttributeValues reports it. Forgotten when the attribute changes owner. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, InvalidTransportationHandle."},
+    {"changeInteractionTransportationType", "Change the transportation of this federate's later interactions of a published class (HLA 1.3 §6.20), until it unpublishes the class; receiveInteraction reports it. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidTransportationHandle."},
+    {"changeAttributeOrderType", "Change the order (Receive or Timestamp) of owned attributes (HLA 1.3 §6.21) for this federate's later updates of that object: timestamp order still needs a time, a regulating sender and a constrained receiver; reflectAttributeValues reports the order used. Forgotten when the attribute changes owner. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, InvalidOrderingHandle."},
+    {"changeInteractionOrderType", "Change the order (Receive or Timestamp) of this federate's later interactions of a published class (HLA 1.3 §6.22), until it unpublishes the class; receiveInteraction reports the order used. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidOrderingHandle."},
+};
+
+}  // namespace
+
 void bind_objects(Ambassador& rtia) {
-    rtia
+    Documented(rtia, kDocs)
         .def("registerObjectInstance",
              [](Client& c, ObjectClassHandle cls, std::optional<std::string> name) {
                  H32 h;
@@ -13,56 +32,38 @@ void bind_objects(Ambassador& rtia) {
                      h = c.register_object(cls.value, name.value_or(""));
                  }
                  return ObjectHandle{h};
-             }, py::arg("objectClass"), py::arg("objectName") = py::none(),
-             "Register an instance of a published class (HLA 1.3 §6.2), optionally named (names are unique in the federation); returns its ObjectHandle and makes this federate the owner of the published attributes. Subscribers get discoverObjectInstance. Raises ObjectClassNotDefined, ObjectClassNotPublished, ObjectAlreadyRegistered.")
+             }, py::arg("objectClass"), py::arg("objectName") = py::none())
         .def("updateAttributeValues",
              [](Client& c, ObjectHandle obj, py::handle values, py::handle tag, std::optional<double> time) {
                  auto serial = c.update_attributes(obj.value, to_handle_values<AttributeHandle>(values, "AttributeHandle"),
                                                    to_bytes(tag, "tag"), time);
                  return serial_result(serial, time, c);
-             }, py::arg("object"), py::arg("attributes"), py::arg("tag"), py::arg("time") = py::none(),
-             "Update owned attributes {AttributeHandle: bytes} of an object (HLA 1.3 §6.4); subscribers get reflectAttributeValues with the attributes they subscribed. With a time, returns an EventRetractionHandle. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned.")
+             }, py::arg("object"), py::arg("attributes"), py::arg("tag"), py::arg("time") = py::none())
         .def("sendInteraction",
              [](Client& c, InteractionClassHandle ic, py::handle values, py::handle tag, std::optional<double> time) {
                  auto serial = c.send_interaction(ic.value, to_handle_values<ParameterHandle>(values, "ParameterHandle"),
                                                   to_bytes(tag, "tag"), time);
                  return serial_result(serial, time, c);
-             }, py::arg("interactionClass"), py::arg("parameters"), py::arg("tag"), py::arg("time") = py::none(),
-             "Send an interaction {ParameterHandle: bytes} (HLA 1.3 §6.6); subscribers get receiveInteraction. With a time, returns an EventRetractionHandle. Raises InteractionClassNotDefined, InteractionClassNotPublished, InteractionParameterNotDefined.")
+             }, py::arg("interactionClass"), py::arg("parameters"), py::arg("tag"), py::arg("time") = py::none())
         .def("deleteObjectInstance",
              [](Client& c, ObjectHandle obj, py::handle tag, std::optional<double> time) {
                  auto serial = c.delete_object(obj.value, to_bytes(tag, "tag"), time);
                  return serial_result(serial, time, c);
-             }, py::arg("object"), py::arg("tag"), py::arg("time") = py::none(),
-             "Delete an object this federate may delete (HLA 1.3 §6.8); the others get removeObjectInstance. Raises ObjectNotKnown, DeletePrivilegeNotHeld.")
-        .def("localDeleteObjectInstance", forward<ObjectHandle>(&Client::local_delete_object),
-             py::arg("object"),
-             "Forget an object locally (HLA 1.3 §6.10); it may be discovered again. Raises ObjectNotKnown, FederateOwnsAttributes.")
-        .def("requestObjectAttributeValueUpdate",
-             forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::request_object_update),
-             py::arg("object"), py::arg("attributes"),
-             "Ask the owners of an object's attributes to update them (HLA 1.3 §6.15); they get provideAttributeValueUpdate. Raises ObjectNotKnown, AttributeNotDefined.")
-        .def("requestClassAttributeValueUpdate",
-             forward<ObjectClassHandle, std::vector<AttributeHandle>>(&Client::request_class_update),
-             py::arg("objectClass"), py::arg("attributes"),
-             "Ask the owners of attributes of every instance of a class to update them (HLA 1.3 §6.15). Raises ObjectClassNotDefined, AttributeNotDefined.")
+             }, py::arg("object"), py::arg("tag"), py::arg("time") = py::none())
+        .def("localDeleteObjectInstance", forward<ObjectHandle>(&Client::local_delete_object), py::arg("object"))
+        .def("requestObjectAttributeValueUpdate", forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::request_object_update),
+             py::arg("object"), py::arg("attributes"))
+        .def("requestClassAttributeValueUpdate", forward<ObjectClassHandle, std::vector<AttributeHandle>>(&Client::request_class_update),
+             py::arg("objectClass"), py::arg("attributes"))
         // transport and order changes (HLA 1.3 §6.19-6.22)
-        .def("changeAttributeTransportationType",
-             forward<ObjectHandle, std::vector<AttributeHandle>, TransportationHandle>(&Client::change_attribute_transportation),
-             py::arg("object"), py::arg("attributes"), py::arg("transportationHandle"),
-             "Change the transportation of owned attributes (HLA 1.3 §6.19) for this federate's later updates of that object; reflectAttributeValues reports it. Forgotten when the attribute changes owner. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, InvalidTransportationHandle.")
-        .def("changeInteractionTransportationType",
-             forward<InteractionClassHandle, TransportationHandle>(&Client::change_interaction_transportation),
-             py::arg("interactionClass"), py::arg("transportationHandle"),
-             "Change the transportation of this federate's later interactions of a published class (HLA 1.3 §6.20), until it unpublishes the class; receiveInteraction reports it. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidTransportationHandle.")
-        .def("changeAttributeOrderType",
-             forward<ObjectHandle, std::vector<AttributeHandle>, OrderingHandle>(&Client::change_attribute_order),
-             py::arg("object"), py::arg("attributes"), py::arg("orderingHandle"),
-             "Change the order (Receive or Timestamp) of owned attributes (HLA 1.3 §6.21) for this federate's later updates of that object: timestamp order still needs a time, a regulating sender and a constrained receiver; reflectAttributeValues reports the order used. Forgotten when the attribute changes owner. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, InvalidOrderingHandle.")
-        .def("changeInteractionOrderType",
-             forward<InteractionClassHandle, OrderingHandle>(&Client::change_interaction_order),
-             py::arg("interactionClass"), py::arg("orderingHandle"),
-             "Change the order (Receive or Timestamp) of this federate's later interactions of a published class (HLA 1.3 §6.22), until it unpublishes the class; receiveInteraction reports the order used. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidOrderingHandle.");
+        .def("changeAttributeTransportationType", forward<ObjectHandle, std::vector<AttributeHandle>, TransportationHandle>(&Client::change_attribute_transportation),
+             py::arg("object"), py::arg("attributes"), py::arg("transportationHandle"))
+        .def("changeInteractionTransportationType", forward<InteractionClassHandle, TransportationHandle>(&Client::change_interaction_transportation),
+             py::arg("interactionClass"), py::arg("transportationHandle"))
+        .def("changeAttributeOrderType", forward<ObjectHandle, std::vector<AttributeHandle>, OrderingHandle>(&Client::change_attribute_order),
+             py::arg("object"), py::arg("attributes"), py::arg("orderingHandle"))
+        .def("changeInteractionOrderType", forward<InteractionClassHandle, OrderingHandle>(&Client::change_interaction_order),
+             py::arg("interactionClass"), py::arg("orderingHandle"));
 }
 
 }  // namespace hlacore::bindings

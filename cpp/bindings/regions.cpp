@@ -3,22 +3,41 @@
 
 namespace hlacore::bindings {
 
+namespace {
+
+// What help() says of each service of the group (convert.hpp: Documented).
+const Doc kDocs[] = {
+    {"createRegion", "Create a region of a routing space (HLA 1.3 §9.2) with one extent [(DimensionHandle, (lower, upper)), ...]: closed ranges within [MIN_EXTENT, MAX_EXTENT]; dimensions not given span the whole axis. The region belongs to this federate. Raises SpaceNotDefined, DimensionNotDefined, InvalidExtents."},
+    {"notifyAboutRegionModification", "Apply a region's new extent (HLA 1.3 §9.3): given here in createRegion's form (the dimensions not given span the whole axis), it is used for every message routed from now on. Raises RegionNotKnown, DimensionNotDefined, InvalidExtents."},
+    {"deleteRegion", "Delete a region (HLA 1.3 §9.4). Raises RegionNotKnown, RegionInUse (a subscription or an update association uses it)."},
+    {"getRegionExtent", "(SpaceHandle, [(DimensionHandle, (lower, upper)), ...]) of a region of this federate, every dimension listed. Raises RegionNotKnown."},
+    {"getRegions", "hlacore extension: the RegionHandles of the regions this federate holds, in creation order. After a restore they are the saved regions, so a federate restored in a new process (rtig restarted on its --save-dir) gets handles for them here."},
+    {"registerObjectInstanceWithRegion", "registerObjectInstance with update regions [(AttributeHandle, RegionHandle), ...] in place before any subscriber can discover the instance (HLA 1.3 §9.5). Raises ObjectClassNotDefined, ObjectClassNotPublished, AttributeNotDefined, AttributeNotPublished, RegionNotKnown, InvalidRegionContext, ObjectAlreadyRegistered."},
+    {"associateRegionForUpdates", "This federate's updates of these attributes of the object reach only the subscribers whose regions overlap `region` (HLA 1.3 §9.6); replaces the attribute's previous update region. Raises ObjectNotKnown, AttributeNotDefined, RegionNotKnown, InvalidRegionContext (an attribute of another routing space)."},
+    {"unassociateRegionForUpdates", "The object's attributes associated with `region` go back to the default region, the whole space (HLA 1.3 §9.7). Raises ObjectNotKnown, RegionNotKnown, InvalidRegionContext (not associated)."},
+    {"subscribeObjectClassAttributesWithRegion", "Subscribe to attributes of a class through a region (HLA 1.3 §9.8): reflected only when the updater's region overlaps it; replaces the attributes subscribed with this class and region. Raises ObjectClassNotDefined, AttributeNotDefined, RegionNotKnown, InvalidRegionContext."},
+    {"unsubscribeObjectClassWithRegion", "End the subscription to a class through a region (HLA 1.3 §9.9). Raises ObjectClassNotDefined, RegionNotKnown, ObjectClassNotSubscribed."},
+    {"subscribeInteractionClassWithRegion", "Subscribe to an interaction class through a region (HLA 1.3 §9.10): received when sent without region or with an overlapping one. Raises InteractionClassNotDefined, RegionNotKnown, InvalidRegionContext."},
+    {"unsubscribeInteractionClassWithRegion", "End the subscription to an interaction class through a region (HLA 1.3 §9.11). Raises InteractionClassNotDefined, RegionNotKnown, InteractionClassNotSubscribed."},
+    {"sendInteractionWithRegion", "Send an interaction that reaches the plain subscribers and those subscribed through a region overlapping `region` (HLA 1.3 §9.12). With a time, returns an EventRetractionHandle. Raises InteractionClassNotDefined, InteractionClassNotPublished, InteractionParameterNotDefined, RegionNotKnown, InvalidRegionContext, InvalidFederationTime."},
+    {"requestClassAttributeValueUpdateWithRegion", "Ask the owners to provide the attributes of instances of the class whose update region overlaps `region` (HLA 1.3 §9.13); unassociated attributes are in the whole space. Raises ObjectClassNotDefined, AttributeNotDefined, RegionNotKnown."},
+};
+
+}  // namespace
+
 void bind_regions(Ambassador& rtia) {
-    rtia
+    Documented(rtia, kDocs)
         .def("createRegion",
              [](Client& c, SpaceHandle space, const PyExtent& extent) {
                  return RegionHandle{c.create_region(space.value, to_extent(extent))};
-             }, py::arg("space"), py::arg("extent"),
-             "Create a region of a routing space (HLA 1.3 §9.2) with one extent [(DimensionHandle, (lower, upper)), ...]: closed ranges within [MIN_EXTENT, MAX_EXTENT]; dimensions not given span the whole axis. The region belongs to this federate. Raises SpaceNotDefined, DimensionNotDefined, InvalidExtents.")
+             }, py::arg("space"), py::arg("extent"))
         .def("notifyAboutRegionModification",
              [](Client& c, RegionHandle r, std::optional<PyExtent> extent) {
                  std::optional<Client::Extent> e;
                  if (extent) e = to_extent(*extent);
                  c.modify_region(r.value, e);
-             }, py::arg("region"), py::arg("extent") = py::none(),
-             "Apply a region's new extent (HLA 1.3 §9.3): given here in createRegion's form (the dimensions not given span the whole axis), it is used for every message routed from now on. Raises RegionNotKnown, DimensionNotDefined, InvalidExtents.")
-        .def("deleteRegion", forward<RegionHandle>(&Client::delete_region), py::arg("region"),
-             "Delete a region (HLA 1.3 §9.4). Raises RegionNotKnown, RegionInUse (a subscription or an update association uses it).")
+             }, py::arg("region"), py::arg("extent") = py::none())
+        .def("deleteRegion", forward<RegionHandle>(&Client::delete_region), py::arg("region"))
         .def("getRegionExtent",
              [](Client& c, RegionHandle r) {
                  auto [space, extent] = c.region_extent(r.value);
@@ -26,15 +45,13 @@ void bind_regions(Ambassador& rtia) {
                  for (const auto& range : extent)
                      ranges.append(py::make_tuple(DimensionHandle{range.dimension}, py::make_tuple(range.lower, range.upper)));
                  return py::make_tuple(SpaceHandle{space}, ranges);
-             }, py::arg("region"),
-             "(SpaceHandle, [(DimensionHandle, (lower, upper)), ...]) of a region of this federate, every dimension listed. Raises RegionNotKnown.")
+             }, py::arg("region"))
         .def("getRegions",
              [](Client& c) {
                  py::list out;
                  for (auto handle : c.regions()) out.append(RegionHandle{handle});
                  return out;
-             },
-             "hlacore extension: the RegionHandles of the regions this federate holds, in creation order. After a restore they are the saved regions, so a federate restored in a new process (rtig restarted on its --save-dir) gets handles for them here.")
+             })
         .def("registerObjectInstanceWithRegion",
              [](Client& c, ObjectClassHandle cls, std::vector<std::pair<AttributeHandle, RegionHandle>> pairs,
                 std::optional<std::string> name) {
@@ -46,32 +63,19 @@ void bind_regions(Ambassador& rtia) {
                      h = c.register_object_with_region(cls.value, regions, name.value_or(""));
                  }
                  return ObjectHandle{h};
-             }, py::arg("objectClass"), py::arg("attributes"), py::arg("objectName") = py::none(),
-             "registerObjectInstance with update regions [(AttributeHandle, RegionHandle), ...] in place before any subscriber can discover the instance (HLA 1.3 §9.5). Raises ObjectClassNotDefined, ObjectClassNotPublished, AttributeNotDefined, AttributeNotPublished, RegionNotKnown, InvalidRegionContext, ObjectAlreadyRegistered.")
-        .def("associateRegionForUpdates",
-             forward<RegionHandle, ObjectHandle, std::vector<AttributeHandle>>(&Client::associate_region),
-             py::arg("region"), py::arg("object"), py::arg("attributes"),
-             "This federate's updates of these attributes of the object reach only the subscribers whose regions overlap `region` (HLA 1.3 §9.6); replaces the attribute's previous update region. Raises ObjectNotKnown, AttributeNotDefined, RegionNotKnown, InvalidRegionContext (an attribute of another routing space).")
-        .def("unassociateRegionForUpdates",
-             forward<RegionHandle, ObjectHandle>(&Client::unassociate_region),
-             py::arg("region"), py::arg("object"),
-             "The object's attributes associated with `region` go back to the default region, the whole space (HLA 1.3 §9.7). Raises ObjectNotKnown, RegionNotKnown, InvalidRegionContext (not associated).")
-        .def("subscribeObjectClassAttributesWithRegion",
-             forward<ObjectClassHandle, RegionHandle, std::vector<AttributeHandle>, bool>(&Client::subscribe_object_class_with_region),
-             py::arg("objectClass"), py::arg("region"), py::arg("attributes"), py::arg("active") = true,
-             "Subscribe to attributes of a class through a region (HLA 1.3 §9.8): reflected only when the updater's region overlaps it; replaces the attributes subscribed with this class and region. Raises ObjectClassNotDefined, AttributeNotDefined, RegionNotKnown, InvalidRegionContext.")
-        .def("unsubscribeObjectClassWithRegion",
-             forward<ObjectClassHandle, RegionHandle>(&Client::unsubscribe_object_class_with_region),
-             py::arg("objectClass"), py::arg("region"),
-             "End the subscription to a class through a region (HLA 1.3 §9.9). Raises ObjectClassNotDefined, RegionNotKnown, ObjectClassNotSubscribed.")
-        .def("subscribeInteractionClassWithRegion",
-             forward<InteractionClassHandle, RegionHandle, bool>(&Client::subscribe_interaction_class_with_region),
-             py::arg("interactionClass"), py::arg("region"), py::arg("active") = true,
-             "Subscribe to an interaction class through a region (HLA 1.3 §9.10): received when sent without region or with an overlapping one. Raises InteractionClassNotDefined, RegionNotKnown, InvalidRegionContext.")
-        .def("unsubscribeInteractionClassWithRegion",
-             forward<InteractionClassHandle, RegionHandle>(&Client::unsubscribe_interaction_class_with_region),
-             py::arg("interactionClass"), py::arg("region"),
-             "End the subscription to an interaction class through a region (HLA 1.3 §9.11). Raises InteractionClassNotDefined, RegionNotKnown, InteractionClassNotSubscribed.")
+             }, py::arg("objectClass"), py::arg("attributes"), py::arg("objectName") = py::none())
+        .def("associateRegionForUpdates", forward<RegionHandle, ObjectHandle, std::vector<AttributeHandle>>(&Client::associate_region),
+             py::arg("region"), py::arg("object"), py::arg("attributes"))
+        .def("unassociateRegionForUpdates", forward<RegionHandle, ObjectHandle>(&Client::unassociate_region),
+             py::arg("region"), py::arg("object"))
+        .def("subscribeObjectClassAttributesWithRegion", forward<ObjectClassHandle, RegionHandle, std::vector<AttributeHandle>, bool>(&Client::subscribe_object_class_with_region),
+             py::arg("objectClass"), py::arg("region"), py::arg("attributes"), py::arg("active") = true)
+        .def("unsubscribeObjectClassWithRegion", forward<ObjectClassHandle, RegionHandle>(&Client::unsubscribe_object_class_with_region),
+             py::arg("objectClass"), py::arg("region"))
+        .def("subscribeInteractionClassWithRegion", forward<InteractionClassHandle, RegionHandle, bool>(&Client::subscribe_interaction_class_with_region),
+             py::arg("interactionClass"), py::arg("region"), py::arg("active") = true)
+        .def("unsubscribeInteractionClassWithRegion", forward<InteractionClassHandle, RegionHandle>(&Client::unsubscribe_interaction_class_with_region),
+             py::arg("interactionClass"), py::arg("region"))
         .def("sendInteractionWithRegion",
              [](Client& c, InteractionClassHandle ic, py::handle values, RegionHandle r, py::handle tag,
                 std::optional<double> time) {
@@ -79,12 +83,9 @@ void bind_regions(Ambassador& rtia) {
                      ic.value, to_handle_values<ParameterHandle>(values, "ParameterHandle"), r.value, to_bytes(tag, "tag"), time);
                  return serial_result(serial, time, c);
              }, py::arg("interactionClass"), py::arg("parameters"), py::arg("region"), py::arg("tag"),
-             py::arg("time") = py::none(),
-             "Send an interaction that reaches the plain subscribers and those subscribed through a region overlapping `region` (HLA 1.3 §9.12). With a time, returns an EventRetractionHandle. Raises InteractionClassNotDefined, InteractionClassNotPublished, InteractionParameterNotDefined, RegionNotKnown, InvalidRegionContext, InvalidFederationTime.")
-        .def("requestClassAttributeValueUpdateWithRegion",
-             forward<ObjectClassHandle, std::vector<AttributeHandle>, RegionHandle>(&Client::request_class_update_with_region),
-             py::arg("objectClass"), py::arg("attributes"), py::arg("region"),
-             "Ask the owners to provide the attributes of instances of the class whose update region overlaps `region` (HLA 1.3 §9.13); unassociated attributes are in the whole space. Raises ObjectClassNotDefined, AttributeNotDefined, RegionNotKnown.");
+             py::arg("time") = py::none())
+        .def("requestClassAttributeValueUpdateWithRegion", forward<ObjectClassHandle, std::vector<AttributeHandle>, RegionHandle>(&Client::request_class_update_with_region),
+             py::arg("objectClass"), py::arg("attributes"), py::arg("region"));
 }
 
 }  // namespace hlacore::bindings

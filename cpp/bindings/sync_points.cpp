@@ -3,19 +3,27 @@
 
 namespace hlacore::bindings {
 
+namespace {
+
+// What help() says of each service of the group (convert.hpp: Documented).
+const Doc kDocs[] = {
+    {"registerFederationSynchronizationPoint", "Register a synchronization point (HLA 1.3 §4.6) for the whole federation or the given FederateHandles. Leads to synchronizationPointRegistrationSucceeded/Failed here and announceSynchronizationPoint at every member."},
+    {"synchronizationPointAchieved", "Tell the RTI this federate reached an announced point (HLA 1.3 §4.9); federationSynchronized follows once every member has. Raises SynchronizationPointLabelWasNotAnnounced."},
+};
+
+}  // namespace
+
 void bind_sync_points(Ambassador& rtia) {
-    rtia
+    Documented(rtia, kDocs)
         .def("registerFederationSynchronizationPoint",
              [](Client& c, py::object label, py::object tag, std::optional<std::vector<FederateHandle>> federates) {
                  std::optional<std::vector<H32>> set;
                  if (federates) set = to_handles(*federates);
                  c.register_sync_point(to_bytes(label, "label"), to_bytes(tag, "tag"), set);
              },
-             py::arg("label"), py::arg("tag"), py::arg("federates") = py::none(),
-             "Register a synchronization point (HLA 1.3 §4.6) for the whole federation or the given FederateHandles. Leads to synchronizationPointRegistrationSucceeded/Failed here and announceSynchronizationPoint at every member.")
+             py::arg("label"), py::arg("tag"), py::arg("federates") = py::none())
         .def("synchronizationPointAchieved",
-             [](Client& c, py::object label) { c.sync_point_achieved(to_bytes(label, "label")); }, py::arg("label"),
-             "Tell the RTI this federate reached an announced point (HLA 1.3 §4.9); federationSynchronized follows once every member has. Raises SynchronizationPointLabelWasNotAnnounced.");
+             [](Client& c, py::object label) { c.sync_point_achieved(to_bytes(label, "label")); }, py::arg("label"));
 }
 
 }  // namespace hlacore::bindings

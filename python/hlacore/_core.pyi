@@ -951,6 +951,10 @@ class RTIAmbassadorBase:
         """
         Tell the RTI this federate reached an announced point (HLA 1.3 §4.9); federationSynchronized follows once every member has. Raises SynchronizationPointLabelWasNotAnnounced.
         """
+    def tick(self, minimum: typing.SupportsFloat | typing.SupportsIndex | None = None, maximum: typing.SupportsFloat | typing.SupportsIndex | None = None) -> bool:
+        """
+        Evoke callbacks on this thread (HLA 1.3 §2.2 tick). tick() delivers every callback that is ready and returns at once. tick(minimum, maximum) waits up to minimum seconds for the first callback (the GIL released; Ctrl-C interrupts it), then keeps delivering what is ready for at most maximum seconds. Returns True when callbacks are still pending. An exception raised by a callback propagates with its traceback; the callbacks not yet delivered stay queued for the next tick.
+        """
     def timeAdvanceRequest(self, theTime: typing.SupportsFloat | typing.SupportsIndex) -> None:
         """
         Ask to advance to theTime (HLA 1.3 §8.8); every timestamped message <= theTime is delivered, then timeAdvanceGrant(theTime). Raises FederationTimeAlreadyPassed, TimeAdvanceAlreadyInProgress, EnableTimeRegulationPending, EnableTimeConstrainedPending, InvalidFederationTime.

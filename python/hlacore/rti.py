@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import os
 import time as _time
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Dict, Optional, Type
 
 from . import _core
 from ._core import (  # noqa: F401  (re-exported handle types)
@@ -103,6 +103,20 @@ _TRANSPORTS = {"HLAreliable": 1, "reliable": 1, "HLAbestEffort": 2, "best_effort
 _TRANSPORT_NAMES = {1: "HLAreliable", 2: "HLAbestEffort"}
 _ORDERS = {"Receive": 1, "receive": 1, "Timestamp": 2, "timestamp": 2}
 _ORDER_NAMES = {1: "Receive", 2: "Timestamp"}
+
+
+def _code_named(codes: Dict[str, int], name: str, kind: str) -> int:
+    if name not in codes:
+        raise _core.NameNotFound(f"no {kind} named {name!r}")
+    return codes[name]
+
+
+def _name_of(handle: Any, handle_type: Any, names: Dict[int, str], invalid: Type[Exception], kind: str) -> str:
+    if not isinstance(handle, handle_type):
+        raise TypeError(f"{handle_type.__name__} object required")
+    if int(handle) not in names:
+        raise invalid(f"{handle!r} is not {kind}")
+    return names[int(handle)]
 
 _SWITCH_CLASS, _SWITCH_ATTRIBUTE, _SWITCH_SCOPE, _SWITCH_INTERACTION = 1, 2, 3, 4
 
@@ -213,31 +227,19 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
 
     def getTransportationHandle(self, name: str) -> TransportationHandle:
         """Handle of ``"HLAreliable"`` or ``"HLAbestEffort"``; raises :class:`NameNotFound`."""
-        if name not in _TRANSPORTS:
-            raise _core.NameNotFound(f"no transportation type named {name!r}")
-        return _core._transportation_handle(_TRANSPORTS[name])
+        return _core._transportation_handle(_code_named(_TRANSPORTS, name, "transportation type"))
 
     def getTransportationName(self, handle: TransportationHandle) -> str:
         """Name of a transportation handle; raises :class:`InvalidTransportationHandle`."""
-        if not isinstance(handle, TransportationHandle):
-            raise TypeError("TransportationHandle object required")
-        if int(handle) not in _TRANSPORT_NAMES:
-            raise _core.InvalidTransportationHandle(f"{handle!r} is not a transportation type")
-        return _TRANSPORT_NAMES[int(handle)]
+        return _name_of(handle, TransportationHandle, _TRANSPORT_NAMES, _core.InvalidTransportationHandle, "a transportation type")
 
     def getOrderingHandle(self, name: str) -> OrderingHandle:
         """Handle of ``"Receive"`` or ``"Timestamp"``; raises :class:`NameNotFound`."""
-        if name not in _ORDERS:
-            raise _core.NameNotFound(f"no ordering type named {name!r}")
-        return _core._ordering_handle(_ORDERS[name])
+        return _core._ordering_handle(_code_named(_ORDERS, name, "ordering type"))
 
     def getOrderingName(self, handle: OrderingHandle) -> str:
         """Name of an ordering handle; raises :class:`InvalidOrderingHandle`."""
-        if not isinstance(handle, OrderingHandle):
-            raise TypeError("OrderingHandle object required")
-        if int(handle) not in _ORDER_NAMES:
-            raise _core.InvalidOrderingHandle(f"{handle!r} is not an ordering type")
-        return _ORDER_NAMES[int(handle)]
+        return _name_of(handle, OrderingHandle, _ORDER_NAMES, _core.InvalidOrderingHandle, "an ordering type")
 
     # ---- conveniences (beyond PyHLA): what every federate writes around the services ----
 
@@ -343,41 +345,6 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
                 if not self._dispatch(ambassador, True, -1.0):
                     return False
         return True
-
-    # ---- evoking callbacks ----
-
-    def tick(self, minimum: Optional[float] = None, maximum: Optional[float] = None) -> bool:
-        """Evoke callbacks on this thread (HLA 1.3 §2.2 ``tick``).
-
-        ``tick()`` delivers every callback that is ready and returns at once. ``tick(minimum, maximum)``
-        waits up to ``minimum`` seconds for the first callback (in C++, the GIL released; Ctrl-C
-        interrupts it), then keeps delivering what is ready for at most ``maximum`` seconds.
-        Returns True when callbacks are still pending. An exception raised by a callback propagates
-        with its traceback; the callbacks not yet delivered stay queued for the next tick.
-        """
-        if minimum is None and maximum is None:
-            self._poll()
-            self._deliver(None)
-        else:
-            lo = 0.0 if minimum is None else float(minimum)
-            hi = lo if maximum is None else float(maximum)
-            start = _time.monotonic()
-            if self._wait(lo):
-                self._deliver(start + max(hi, lo))
-        return bool(self._has_callbacks())
-
-    def _deliver(self, deadline: Optional[float]) -> None:
-        ambassador = self._federate_ambassador
-        if deadline is None:
-            self._dispatch(ambassador, False, -1.0)
-            return
-        while True:
-            self._dispatch(ambassador, False, max(0.0, deadline - _time.monotonic()))
-            if _time.monotonic() >= deadline:
-                return
-            self._poll()  # more may have arrived meanwhile: deliver it within the same tick
-            if not self._has_callbacks():
-                return
 
 
 class _EnableWatcher:

@@ -62,6 +62,17 @@ Client::~Client() {
 
 // ---- plumbing ----
 
+template <class M>
+void Client::send(const M& message) {
+    std::lock_guard<std::mutex> lock(send_mu_);
+    send_buffer_.clear();
+    wire::encode(send_buffer_, message);
+    write_send_buffer();
+}
+#define HLACORE_X(name) template void Client::send(const wire::name&);
+HLACORE_MESSAGES(HLACORE_X)
+#undef HLACORE_X
+
 void Client::write_send_buffer() {
     std::size_t done = 0;
     while (done < send_buffer_.size()) {

@@ -223,6 +223,23 @@ private:
         std::set<fom::Handle> acquiring;
         std::set<fom::Handle> acquiring_if_available;
         std::set<fom::Handle> release_requested;
+
+        // The attribute becomes this federate's / stops being it: what was pending about it ends.
+        void gain(fom::Handle a) {
+            owned.insert(a);
+            acquiring.erase(a);
+            acquiring_if_available.erase(a);
+            sync_privilege();
+        }
+        void lose(fom::Handle a) {
+            owned.erase(a);
+            divesting.erase(a);
+            release_requested.erase(a);
+            sync_privilege();
+        }
+        void sync_privilege() {
+            if (privilege_attribute) privilege_to_delete = owned.count(privilege_attribute) > 0;
+        }
     };
 
     // Data distribution management state (client/regions.cpp), under mu_.
@@ -248,13 +265,9 @@ private:
     void restore_regions(const wire::RestoredState& saved);
     void refuse_region_change_while_restoring(const char* service) const;  // RestoreInProgress
 
+    // Encodes and writes one message (client.cpp instantiates it for every message type).
     template <class M>
-    void send(const M& message) {
-        std::lock_guard<std::mutex> lock(send_mu_);
-        send_buffer_.clear();
-        wire::encode(send_buffer_, message);
-        write_send_buffer();
-    }
+    void send(const M& message);
     void write_send_buffer();  // under send_mu_
     wire::Reply call(wire::Message request, std::uint32_t request_id);
     std::uint32_t next_request();
@@ -292,9 +305,6 @@ private:
     // After publishing fewer attributes of `cls` (or none): the owned attributes of its instances that are
     // no longer published are divested unconditionally (HLA 1.3 §5.2-5.3); returns the messages to send.
     std::vector<wire::UnconditionalDivestiture> divest_unpublished(fom::Handle cls);
-    static void sync_privilege(LocalObject& obj) {
-        if (obj.privilege_attribute) obj.privilege_to_delete = obj.owned.count(obj.privilege_attribute) > 0;
-    }
     [[noreturn]] void connection_lost() const;
     // Save/restore (client/save_restore.cpp; callers hold mu_): refuses `service` during a save or restore, and
     // applies the save/restore callbacks when popped (initiateFederateRestore replaces the mirrored state).

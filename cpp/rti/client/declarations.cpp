@@ -3,16 +3,33 @@
 
 namespace hlacore {
 
+namespace {
+
+// publish/subscribe of an object class: its attributes replace those declared before (none: no longer declared).
+void declare(std::map<fom::Handle, std::set<fom::Handle>>& declared, fom::Handle cls,
+             const std::vector<fom::Handle>& attributes) {
+    if (attributes.empty()) {
+        declared.erase(cls);
+    } else {
+        declared[cls] = std::set<fom::Handle>(attributes.begin(), attributes.end());
+    }
+}
+
+// unpublish/unsubscribe: the class leaves `declared`, refused with `code` when it was not in it.
+template <class Declared, class Class>
+void undeclare(Declared& declared, const Class& cls, const char* kind, ErrorCode code, const char* declared_as) {
+    if (!declared.erase(cls.handle))
+        raise(code, std::string(kind) + " '" + cls.qualified_name + "' is not " + declared_as);
+}
+
+}  // namespace
+
 void Client::publish_object_class(fom::Handle cls, const std::vector<fom::Handle>& attributes) {
     std::vector<wire::UnconditionalDivestiture> divested;
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_attributes(defined_object_class(cls), attributes);
-        if (attributes.empty()) {
-            published_.erase(cls);
-        } else {
-            published_[cls] = std::set<fom::Handle>(attributes.begin(), attributes.end());
-        }
+        declare(published_, cls, attributes);
         divested = divest_unpublished(cls);
     }
     for (const auto& m : divested) send(m);
@@ -45,11 +62,7 @@ void Client::subscribe_object_class(fom::Handle cls, const std::vector<fom::Hand
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_attributes(defined_object_class(cls), attributes);
-        if (attributes.empty()) {
-            subscribed_.erase(cls);
-        } else {
-            subscribed_[cls] = std::set<fom::Handle>(attributes.begin(), attributes.end());
-        }
+        declare(subscribed_, cls, attributes);
     }
     send(wire::SubscribeObjectClass{cls, attributes, active});
 }
@@ -57,9 +70,7 @@ void Client::subscribe_object_class(fom::Handle cls, const std::vector<fom::Hand
 void Client::unsubscribe_object_class(fom::Handle cls) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        const auto& c = defined_object_class(cls);
-        if (!subscribed_.erase(cls))
-            raise(ErrorCode::ObjectClassNotSubscribed, "object class '" + c.qualified_name + "' is not subscribed");
+        undeclare(subscribed_, defined_object_class(cls), "object class", ErrorCode::ObjectClassNotSubscribed, "subscribed");
     }
     send(wire::UnsubscribeObjectClass{cls});
 }
@@ -76,10 +87,8 @@ void Client::publish_interaction_class(fom::Handle cls) {
 void Client::unpublish_interaction_class(fom::Handle cls) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        const auto& c = defined_interaction_class(cls);
-        if (!published_interactions_.erase(cls))
-            raise(ErrorCode::InteractionClassNotPublished,
-                  "interaction class '" + c.qualified_name + "' is not published");
+        undeclare(published_interactions_, defined_interaction_class(cls), "interaction class",
+                  ErrorCode::InteractionClassNotPublished, "published");
     }
     send(wire::UnpublishInteractionClass{cls});
 }
@@ -96,10 +105,8 @@ void Client::subscribe_interaction_class(fom::Handle cls, bool active) {
 void Client::unsubscribe_interaction_class(fom::Handle cls) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        const auto& c = defined_interaction_class(cls);
-        if (!subscribed_interactions_.erase(cls))
-            raise(ErrorCode::InteractionClassNotSubscribed,
-                  "interaction class '" + c.qualified_name + "' is not subscribed");
+        undeclare(subscribed_interactions_, defined_interaction_class(cls), "interaction class",
+                  ErrorCode::InteractionClassNotSubscribed, "subscribed");
     }
     send(wire::UnsubscribeInteractionClass{cls});
 }

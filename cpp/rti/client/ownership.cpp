@@ -38,6 +38,16 @@ std::string describe(const fom::Fom& fom, const Obj& obj, fom::Handle attr) {
     return "attribute '" + (a ? a->name : std::to_string(attr)) + "' of object '" + obj.name + "'";
 }
 
+// Each attribute must be owned by this federate (AttributeNotOwned), then pass `also`, the service's own check.
+template <class Obj, class Also>
+void check_owned(const fom::Fom& fom, const Obj& obj, const std::vector<fom::Handle>& attributes, Also also) {
+    for (auto a : attributes) {
+        if (!obj.owned.count(a))
+            raise(ErrorCode::AttributeNotOwned, describe(fom, obj, a) + " is not owned by this federate");
+        also(a);
+    }
+}
+
 }  // namespace
 
 // §7.2: the attributes are no longer this federate's as soon as the call returns.
@@ -45,15 +55,8 @@ void Client::unconditional_divestiture(std::uint32_t object, const std::vector<f
     {
         std::lock_guard<std::mutex> lock(mu_);
         LocalObject& obj = ownership_object(object, attributes);
-        for (auto a : attributes)
-            if (!obj.owned.count(a))
-                raise(ErrorCode::AttributeNotOwned, describe(*fom_, obj, a) + " is not owned by this federate");
-        for (auto a : attributes) {
-            obj.owned.erase(a);
-            obj.divesting.erase(a);
-            obj.release_requested.erase(a);
-        }
-        sync_privilege(obj);
+        check_owned(*fom_, obj, attributes, [](fom::Handle) {});
+        for (auto a : attributes) obj.lose(a);
     }
     send(wire::UnconditionalDivestiture{object, attributes});
 }
@@ -64,12 +67,10 @@ void Client::negotiated_divestiture(std::uint32_t object, const std::vector<fom:
     {
         std::lock_guard<std::mutex> lock(mu_);
         LocalObject& obj = ownership_object(object, attributes);
-        for (auto a : attributes) {
-            if (!obj.owned.count(a))
-                raise(ErrorCode::AttributeNotOwned, describe(*fom_, obj, a) + " is not owned by this federate");
+        check_owned(*fom_, obj, attributes, [&](fom::Handle a) {
             if (obj.divesting.count(a))
                 raise(ErrorCode::AttributeAlreadyBeingDivested, describe(*fom_, obj, a) + " is already being divested");
-        }
+        });
         obj.divesting.insert(attributes.begin(), attributes.end());
     }
     send(wire::NegotiatedDivestiture{object, attributes, tag});
@@ -88,12 +89,7 @@ std::vector<wire::UnconditionalDivestiture> Client::divest_unpublished(fom::Hand
         for (auto a : obj.owned)
             if (!publishes(obj, a)) m.attributes.push_back(a);
         if (m.attributes.empty()) continue;
-        for (auto a : m.attributes) {
-            obj.owned.erase(a);
-            obj.divesting.erase(a);
-            obj.release_requested.erase(a);
-        }
-        sync_privilege(obj);
+        for (auto a : m.attributes) obj.lose(a);
         out.push_back(std::move(m));
     }
     return out;
@@ -152,13 +148,11 @@ std::vector<fom::Handle> Client::release_response(std::uint32_t object, const st
     {
         std::lock_guard<std::mutex> lock(mu_);
         LocalObject& obj = ownership_object(object, attributes);
-        for (auto a : attributes) {
-            if (!obj.owned.count(a))
-                raise(ErrorCode::AttributeNotOwned, describe(*fom_, obj, a) + " is not owned by this federate");
+        check_owned(*fom_, obj, attributes, [&](fom::Handle a) {
             if (!obj.release_requested.count(a))
                 raise(ErrorCode::FederateWasNotAskedToReleaseAttribute,
                       "this federate was not asked to release " + describe(*fom_, obj, a));
-        }
+        });
     }
     const auto id = next_request();
     wire::Reply reply = call(wire::ReleaseResponse{id, object, attributes}, id);
@@ -170,11 +164,7 @@ std::vector<fom::Handle> Client::release_response(std::uint32_t object, const st
     if (it != objects_.end()) {
         LocalObject& obj = it->second;
         for (auto a : attributes) obj.release_requested.erase(a);
-        for (auto a : released) {
-            obj.owned.erase(a);
-            obj.divesting.erase(a);
-        }
-        sync_privilege(obj);
+        for (auto a : released) obj.lose(a);
     }
     return released;
 }
@@ -184,13 +174,11 @@ void Client::cancel_negotiated_divestiture(std::uint32_t object, const std::vect
     {
         std::lock_guard<std::mutex> lock(mu_);
         LocalObject& obj = ownership_object(object, attributes);
-        for (auto a : attributes) {
-            if (!obj.owned.count(a))
-                raise(ErrorCode::AttributeNotOwned, describe(*fom_, obj, a) + " is not owned by this federate");
+        check_owned(*fom_, obj, attributes, [&](fom::Handle a) {
             if (!obj.divesting.count(a))
                 raise(ErrorCode::AttributeDivestitureWasNotRequested,
                       "no negotiated divestiture of " + describe(*fom_, obj, a) + " is in progress");
-        }
+        });
         for (auto a : attributes) obj.divesting.erase(a);
     }
     send(wire::CancelNegotiatedDivestiture{object, attributes});
@@ -235,38 +223,25 @@ bool Client::is_owned(std::uint32_t object, fom::Handle attribute) const {
 
 // Called under mu_ when a callback is popped: the federate's view follows what it is told.
 void Client::apply_ownership_callback(const wire::Message& m) {
-    auto object = [&](std::uint32_t h) -> LocalObject* {
-        auto it = objects_.find(h);
-        return it == objects_.end() ? nullptr : &it->second;
+    // Applies `change` to each attribute the callback names, unless the object is gone meanwhile.
+    const auto apply = [this](const auto& callback, auto&& change) {
+        auto it = objects_.find(callback.object);
+        if (it == objects_.end()) return;
+        for (auto a : callback.attributes) change(it->second, a);
     };
-    if (const auto* n = std::get_if<wire::AcquisitionNotification>(&m)) {
-        if (LocalObject* obj = object(n->object)) {
-            for (auto a : n->attributes) {
-                obj->owned.insert(a);
-                obj->acquiring.erase(a);
-                obj->acquiring_if_available.erase(a);
-            }
-            sync_privilege(*obj);
-        }
-    } else if (const auto* d = std::get_if<wire::DivestitureNotification>(&m)) {
-        if (LocalObject* obj = object(d->object)) {
-            for (auto a : d->attributes) {
-                obj->owned.erase(a);
-                obj->divesting.erase(a);
-                obj->release_requested.erase(a);
-            }
-            sync_privilege(*obj);
-        }
+    using A = fom::Handle;
+    if (const auto* acquired = std::get_if<wire::AcquisitionNotification>(&m)) {
+        apply(*acquired, [](LocalObject& obj, A a) { obj.gain(a); });
+    } else if (const auto* divested = std::get_if<wire::DivestitureNotification>(&m)) {
+        apply(*divested, [](LocalObject& obj, A a) { obj.lose(a); });
     } else if (const auto* u = std::get_if<wire::OwnershipUnavailable>(&m)) {
-        if (LocalObject* obj = object(u->object))
-            for (auto a : u->attributes) obj->acquiring_if_available.erase(a);
+        apply(*u, [](LocalObject& obj, A a) { obj.acquiring_if_available.erase(a); });
     } else if (const auto* r = std::get_if<wire::RequestOwnershipRelease>(&m)) {
-        if (LocalObject* obj = object(r->object))
-            for (auto a : r->attributes)
-                if (obj->owned.count(a)) obj->release_requested.insert(a);
+        apply(*r, [](LocalObject& obj, A a) {
+            if (obj.owned.count(a)) obj.release_requested.insert(a);
+        });
     } else if (const auto* c = std::get_if<wire::ConfirmAcquisitionCancellation>(&m)) {
-        if (LocalObject* obj = object(c->object))
-            for (auto a : c->attributes) obj->acquiring.erase(a);
+        apply(*c, [](LocalObject& obj, A a) { obj.acquiring.erase(a); });
     }
 }
 

@@ -1,4 +1,4 @@
-// The conversions and exceptions every binding file uses (convert.hpp).
+// The HLA 1.3 exception classes of _core and the translation of C++ errors into them (convert.hpp).
 #include "bindings/convert.hpp"
 
 #include <array>
@@ -45,32 +45,6 @@ void register_exceptions(py::module_& m) {
             PyErr_SetString(exception_class(ErrorCode::RTIinternalError), e.what());
         }
     });
-}
-
-// Tags and labels are bytes on the wire; str goes through UTF-8 with surrogateescape so nothing is lost.
-std::string to_bytes(const py::handle& value, const char* what) {
-    if (PyBytes_Check(value.ptr())) return std::string(PyBytes_AS_STRING(value.ptr()), PyBytes_GET_SIZE(value.ptr()));
-    if (PyUnicode_Check(value.ptr())) {
-        py::object encoded = py::reinterpret_steal<py::object>(
-            PyUnicode_AsEncodedString(value.ptr(), "utf-8", "surrogateescape"));
-        if (!encoded) throw py::error_already_set();
-        return std::string(PyBytes_AS_STRING(encoded.ptr()), PyBytes_GET_SIZE(encoded.ptr()));
-    }
-    if (PyObject_CheckBuffer(value.ptr())) {
-        py::buffer_info info = py::reinterpret_borrow<py::buffer>(value).request();
-        if (info.itemsize * info.size < 0) throw py::value_error("bad buffer");
-        return std::string(static_cast<const char*>(info.ptr), static_cast<std::size_t>(info.itemsize * info.size));
-    }
-    throw py::type_error(std::string(what) + " must be bytes or str, not " + std::string(py::str(py::type::handle_of(value).attr("__name__"))));
-}
-
-py::str to_str(const std::string& s) {
-    return py::reinterpret_steal<py::str>(PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "surrogateescape"));
-}
-
-py::object serial_result(std::uint64_t serial, const std::optional<double>& time, const Client& c) {
-    if (!time) return py::none();
-    return py::cast(EventRetractionHandle{c.federate_handle(), serial});
 }
 
 }  // namespace hlacore::bindings

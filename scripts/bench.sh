@@ -4,7 +4,8 @@
 # Writes build/bench/ (results.json, results.md, grant-latency.png) and, after a full run, the figures of
 # docs/performance.md and docs/grant-latency.png.
 source "$(dirname "$0")/env.sh"
-pip_install ".[bench]" cmake ninja
+install_hlacore bench
+[ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build
 .venv/bin/cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DHLACORE_BENCH=ON -DHLACORE_PYTHON=OFF \
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/bench-configure.log 2>&1 \

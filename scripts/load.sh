@@ -10,7 +10,7 @@ federates=${1:-32}
 updates=${2:-10000}
 shift $(( $# > 2 ? 2 : $# ))
 [ "${1:-}" = "--" ] && shift
-[ -x .venv/bin/rtig ] || pip_install ".[test]"
+install_hlacore test
 unset HLACORE_TEST_RTIG  # the rtig installed in .venv (optimized), not the sanitizer build
 export HLACORE_LOAD_FEDERATES=$federates HLACORE_LOAD_UPDATES=$updates
 # pytest-timeout: a bound proportional to the size (the tests bound each wait themselves too)

@@ -3,7 +3,8 @@
 # of RTIAmbassadorBase, the handles, the exceptions), with pybind11-stubgen from a fresh build of
 # hlacore. Run it after changing cpp/bindings/; tests/test_stub.py fails while the stub lags the module.
 source "$(dirname "$0")/env.sh"
-pip_install . pybind11-stubgen
+install_hlacore ""
+pip_install pybind11-stubgen
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 (cd "$out" && "$OLDPWD/.venv/bin/python" -m pybind11_stubgen hlacore._core -o "$out" >/dev/null)

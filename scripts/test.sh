@@ -6,7 +6,8 @@
 # CI (CI=true) a machine where clang cannot be installed only skips those.
 source "$(dirname "$0")/env.sh"
 ./scripts/install-ros.sh   # ROS 1 from Debian for the ROS bridge tests (docs/ros-bridge.md)
-pip_install ".[test]" cmake ninja
+install_hlacore test
+[ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build
 .venv/bin/cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHLACORE_SANITIZE=ON -DHLACORE_PYTHON=OFF -DHLACORE_BENCH=ON \
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/asan-configure.log 2>&1 \

@@ -8,7 +8,7 @@ A PyHLA federate ports by changing its import line::
         def reflectAttributeValues(self, obj, attributes, tag, order, transport, time=None, retraction=None):
             ...
 
-    rtia = rti.RTIAmbassador()           # connects to $HLACORE_RTIG or 127.0.0.1:60400
+    rtia = rti.RTIAmbassador()           # connects to $HLACORE_RTIG ($CERTI_HOST:$CERTI_TCP_PORT) or 127.0.0.1:60400
     rtia.createFederationExecution("uav", "uav.fed")
     rtia.joinFederationExecution("sender", "uav", Ambassador())
     ...
@@ -123,7 +123,16 @@ _SWITCH_CLASS, _SWITCH_ATTRIBUTE, _SWITCH_SCOPE, _SWITCH_INTERACTION = 1, 2, 3, 
 
 
 def _resolve_address(address: Optional[str]) -> tuple[str, int]:
-    text = address or os.environ.get("HLACORE_RTIG") or DEFAULT_ADDRESS
+    """The gateway's (host, port): `address`, else $HLACORE_RTIG, else CERTI's $CERTI_HOST and
+    $CERTI_TCP_PORT (either may be left out), else 127.0.0.1:60400."""
+    text = address or os.environ.get("HLACORE_RTIG")
+    if not text and ("CERTI_HOST" in os.environ or "CERTI_TCP_PORT" in os.environ):
+        default_host, default_port = DEFAULT_ADDRESS.rsplit(":", 1)
+        port = os.environ.get("CERTI_TCP_PORT", default_port)
+        if not port.isdigit():
+            raise _core.RTIinternalError(f"CERTI_TCP_PORT={port!r} is not a port number")
+        text = f"{os.environ.get('CERTI_HOST') or default_host}:{port}"
+    text = text or DEFAULT_ADDRESS
     host, sep, port = text.rpartition(":")
     if not sep or not port.isdigit():
         raise _core.RTIinternalError(f"rtig address {text!r} is not HOST:PORT")
@@ -133,8 +142,9 @@ def _resolve_address(address: Optional[str]) -> tuple[str, int]:
 class RTIAmbassador(_core.RTIAmbassadorBase):
     """A federate's connection to the RTI (HLA 1.3 RTIambassador).
 
-    ``RTIAmbassador(address=None)`` connects to ``address`` ("host:port"), else ``$HLACORE_RTIG``,
-    else ``127.0.0.1:60400``; raises :class:`RTIinternalError` naming the address if nothing answers.
+    ``RTIAmbassador(address=None)`` connects to ``address`` ("host:port"), else ``$HLACORE_RTIG``, else
+    CERTI's ``$CERTI_HOST`` and ``$CERTI_TCP_PORT`` (as PyHLA scripts and tutorials set them; a missing one
+    takes its default), else ``127.0.0.1:60400``; raises :class:`RTIinternalError` naming the address if nothing answers.
     One ambassador joins at most one federation execution at a time.
     """
 

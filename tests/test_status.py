@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import subprocess
 import sys
 
 import hlacore
+import hlacore.status
 import hlacore.rti as rti
 from hlacore.status import status
 
@@ -74,7 +76,7 @@ def test_infinite_bounds_are_null_on_the_wire_and_inf_in_python(rtig: RtigProces
     assert table.returncode == 0, table.stderr
     assert "federation TestFed" in table.stdout
     row = next(line for line in table.stdout.splitlines() if line.split()[1:2] == ["lone"])
-    assert row.split() == ["1", "lone", "0", "1", "R", "C", "-", "0", "0", "inf"]
+    assert row.split() == ["1", "lone", "0", "1", "RC", "-", "0", "0", "inf"]
     lone.resignFederationExecution(rti.ResignAction.NoAction)
     creator.destroyFederationExecution("TestFed")
 
@@ -91,3 +93,40 @@ def test_status_of_nothing_listening_is_a_clear_error() -> None:
     out = subprocess.run([sys.executable, "-m", "hlacore.status", f"127.0.0.1:{port}"], capture_output=True,
                          text=True, timeout=10)
     assert out.returncode == 1 and "cannot connect" in out.stderr
+
+
+def _report(names: list[str]) -> dict:
+    federates = [
+        {"handle": i + 1, "name": name, "time": 1234567.25 * i, "lookahead": 0.1, "regulating": True,
+         "constrained": i % 2 == 0, "pending": {"request": "TARA", "time": 1234568.5} if i else None,
+         "queued_tso": 3, "queued_ro": 10000, "lbts": math.inf}
+        for i, name in enumerate(names)
+    ]
+    return {"server": "hlacore rtig", "address": "127.0.0.1:60400", "connections": len(names),
+            "federations": [{"name": "F", "fed": "robot.fed", "objects": 0, "sync_points": [], "federates": federates}]}
+
+
+def test_table_fits_the_width_and_keeps_the_numbers_readable() -> None:
+    text = hlacore.status.format_table(_report(["alpha", "a-federate-name-longer-than-the-terminal-allows"]), 80)
+    assert max(map(len, text.splitlines())) <= 80
+    assert "1234567.25" in text and "TARA 1234568.5" in text and "a-federate-n" in text
+    wide = hlacore.status.format_table(_report(["alpha", "a-federate-name-longer-than-the-terminal-allows"]), 140)
+    assert "a-federate-name-longer-than-the-terminal-allows" in wide
+
+
+def test_watch_redraws_in_place_on_a_terminal(inprocess_gateway: hlacore.Gateway, monkeypatch, capsys) -> None:
+    """--watch on a terminal clears and redraws one screenful per report; --count ends it."""
+    monkeypatch.setattr(sys.stdout, "isatty", lambda: True)
+    monkeypatch.setattr(hlacore.status.shutil, "get_terminal_size", lambda: os.terminal_size((60, 8)))
+    creator = rti.RTIAmbassador(inprocess_gateway.address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    members = [join_timed(inprocess_gateway.address, f"federate{i}", 1.0)[0] for i in range(6)]
+    assert hlacore.status.main([inprocess_gateway.address, "--watch", "0.01", "--count", "2"]) == 0
+    screens = capsys.readouterr().out.split("\x1b[H\x1b[2J")[1:]
+    assert len(screens) == 2
+    for screen in screens:
+        lines = screen.rstrip("\n").splitlines()
+        assert len(lines) <= 7 and max(map(len, lines)) <= 60
+        assert "more line(s)" in lines[-1]  # six federates do not fit in eight rows
+    for rtia in members:
+        rtia.resignFederationExecution(rti.ResignAction.NoAction)

@@ -1,7 +1,7 @@
 """What a running gateway is doing: per federation, each federate's time state.
 
-``python -m hlacore.status [HOST:PORT] [--json] [--watch SECONDS]`` prints it as a table (``rtig --status``
-prints the same report as JSON). From Python: :func:`status` or :meth:`hlacore.Gateway.status`.
+``python -m hlacore.status [HOST:PORT] [--json] [--watch SECONDS [--count N]]`` prints it as a table that fits
+the terminal, redrawn in place with ``--watch`` (``rtig --status`` prints the same report as JSON). From Python: :func:`status` or :meth:`hlacore.Gateway.status`.
 """
 
 from __future__ import annotations
@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import shutil
 import sys
 import time
 from typing import Any, Optional
@@ -43,34 +44,73 @@ def _raw_status(address: Optional[str]) -> str:
     return str(_core.RTIAmbassadorBase(host, port)._status())
 
 
-def format_table(report: dict[str, Any]) -> str:
-    """The report as text: one block per federation, one row per federate."""
+def format_table(report: dict[str, Any], width: int = 80) -> str:
+    """The report as text at most ``width`` columns wide: one block per federation, one row per federate
+    (R/C: regulating, constrained; TSO/RO: messages queued for it in timestamp and receive order)."""
+    names = [f["name"] for fed in report["federations"] for f in fed["federates"]]
+    name_width = max(8, min(max(map(len, names), default=8), width - _FIXED_COLUMNS))
     lines = [f"{report['server']} at {report['address']}: {report['connections']} connection(s), "
              f"{len(report['federations'])} federation(s)"]
     for fed in report["federations"]:
         points = ", ".join(fed["sync_points"]) or "none"
         lines.append(f"\nfederation {fed['name']} ({fed['fed']}): {len(fed['federates'])} federate(s), "
                      f"{fed['objects']} object(s), sync points: {points}")
-        lines.append(f"  {'handle':>6} {'name':<16} {'time':>12} {'lookahead':>9} {'R':>1} {'C':>1} "
-                     f"{'pending':<16} {'TSO':>5} {'RO':>5} {'LBTS':>12}")
+        lines.append(f"  {'fed':>4} {'name':<{name_width}} {'time':>10} {'lookahd':>7} RC {'pending':<14} "
+                     f"{'TSO':>5} {'RO':>5} {'LBTS':>10}")
         for f in fed["federates"]:
-            pending = f"{f['pending']['request']}({f['pending']['time']:g})" if f["pending"] else "-"
-            lines.append(f"  {f['handle']:>6} {f['name'][:16]:<16} {f['time']:>12g} {f['lookahead']:>9g} "
-                         f"{'R' if f['regulating'] else '-':>1} {'C' if f['constrained'] else '-':>1} "
-                         f"{pending:<16} {f['queued_tso']:>5} {f['queued_ro']:>5} {f['lbts']:>12g}")
-    return "\n".join(lines)
+            pending = f"{f['pending']['request']} {_number(f['pending']['time'], 9)}" if f["pending"] else "-"
+            switches = ("R" if f["regulating"] else "-") + ("C" if f["constrained"] else "-")
+            lines.append(f"  {f['handle']:>4} {f['name'][:name_width]:<{name_width}} {_number(f['time'], 10):>10} "
+                         f"{_number(f['lookahead'], 7):>7} {switches} {pending:<14} {f['queued_tso']:>5} "
+                         f"{f['queued_ro']:>5} {_number(f['lbts'], 10):>10}")
+    return "\n".join(line[:width] for line in "\n".join(lines).split("\n"))
+
+
+_FIXED_COLUMNS = 68  # the row's width without the name column
+
+
+def _number(value: float, width: int) -> str:
+    """`value` in at most `width` characters, with as many significant digits as fit."""
+    for digits in range(width, 0, -1):
+        text = f"{value:.{digits}g}"
+        if len(text) <= width:
+            return text
+    return f"{value:.0e}"
+
+
+def _screen(text: str, columns: int, rows: int) -> str:
+    """`text` as one screenful for --watch on a terminal: clear, draw from the top, cut what does not fit."""
+    lines = text.split("\n")
+    if len(lines) > rows - 1:
+        hidden = len(lines) - (rows - 2)
+        lines = lines[: rows - 2] + [f"... {hidden} more line(s): enlarge the terminal, or use --json"[:columns]]
+    return "\x1b[H\x1b[2J" + "\n".join(lines)
 
 
 def main(argv: Optional[list[str]] = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m hlacore.status", description=__doc__.splitlines()[0])
-    parser.add_argument("address", nargs="?", help="HOST:PORT (default $HLACORE_RTIG or 127.0.0.1:60400)")
+    parser.add_argument("address", nargs="?",
+                        help="HOST:PORT (default $HLACORE_RTIG, $CERTI_HOST:$CERTI_TCP_PORT or 127.0.0.1:60400)")
     parser.add_argument("--json", action="store_true", help="print the raw report")
-    parser.add_argument("--watch", type=float, metavar="SECONDS", help="repeat every SECONDS until Ctrl-C")
+    parser.add_argument("--watch", type=float, metavar="SECONDS",
+                        help="repeat every SECONDS until Ctrl-C, redrawn in place on a terminal")
+    parser.add_argument("--count", type=int, metavar="N", help="with --watch: stop after N reports")
     args = parser.parse_args(argv)
+    redraw = bool(args.watch) and not args.json and sys.stdout.isatty()
+    shown = 0
     try:
         while True:
-            print(_raw_status(args.address) if args.json else format_table(status(args.address)), flush=True)
-            if not args.watch:
+            columns, rows = shutil.get_terminal_size()
+            if args.json:
+                text = _raw_status(args.address)
+            else:
+                text = format_table(status(args.address), columns if sys.stdout.isatty() else 80)
+            if redraw:
+                stamp = time.strftime("%H:%M:%S")
+                text = _screen(f"{text}\n(every {args.watch:g} s, last {stamp}; Ctrl-C stops)", columns, rows)
+            print(text, flush=True)
+            shown += 1
+            if not args.watch or (args.count is not None and shown >= args.count):
                 return 0
             time.sleep(args.watch)
     except _core.RTIexception as e:

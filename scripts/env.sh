@@ -17,8 +17,32 @@ install_hlacore() {
     fi
     echo "Building hlacore into .venv (the C++ core: a few minutes the first time, seconds after a change) ..." >&2
     pip_install scikit-build-core pybind11 cmake ninja
-    pip_install --no-build-isolation -C build-dir=build/wheel ".${extras:+[$extras]}"
+    mkdir -p build
+    # The compiler's progress lines as they come; the whole log in build/install.log, its end on failure.
+    if ! .venv/bin/python -m pip install --disable-pip-version-check --no-build-isolation -v \
+            -C build-dir=build/wheel ".${extras:+[$extras]}" 2>&1 | tee build/install.log \
+            | { grep --line-buffered -E '^ *\[[0-9]+/[0-9]+\] (Building|Linking)' || true; } | cut -c1-110 >&2; then
+        tail -n 40 build/install.log >&2
+        echo "install_hlacore: the build failed; the whole log is build/install.log" >&2
+        return 1
+    fi
     # The stamp lists the extras installed with these sources, so run.sh and test.sh do not undo each other.
     { [ -f "$stamp" ] && grep "^$digest " "$stamp" || true; echo "$digest [$extras]"; } >"$stamp.new"
     mv "$stamp.new" "$stamp"
+}
+
+# Builds TARGETS in the configured CMake build directory DIR, saying so (LABEL) and showing the compiler's
+# progress only when there is something to build; the log goes to DIR.log, shown on failure.
+cmake_build() {
+    local dir=$1 label=$2
+    shift 2
+    if .venv/bin/ninja -C "$dir" -n "$@" 2>/dev/null | grep -qE '^\[[0-9]+/[0-9]+\] (Building|Linking)'; then
+        echo "Building $label ($dir) ..." >&2
+    fi
+    if ! .venv/bin/cmake --build "$dir" --target "$@" 2>&1 | tee "$dir.log" \
+            | { grep --line-buffered -E '^\[[0-9]+/[0-9]+\] (Building|Linking)' || true; } | sed -u 's/^/  /' | cut -c1-110 >&2; then
+        tail -n 60 "$dir.log" >&2
+        echo "the build failed; the whole log is $dir.log" >&2
+        return 1
+    fi
 }

@@ -35,7 +35,8 @@ fuzzer_runtime_works() {
 if ! fuzzer_runtime_works; then
     sudo=""
     if [ "$(id -u)" -ne 0 ]; then sudo="sudo -n"; fi
-    echo "fuzz.sh: installing clang and the libFuzzer runtime with apt-get" >&2
+    echo "fuzz.sh: installing clang and its libFuzzer runtime from Debian's packages (apt-get, about a minute)" \
+         "to build the fuzz targets that tests/test_fuzz.py runs" >&2
     export DEBIAN_FRONTEND=noninteractive
     apt_install() { $sudo apt-get install -y -q --no-install-recommends "$@" >build-apt.log 2>&1; }
     if ! apt_install clang libclang-rt-14-dev && ! apt_install clang; then
@@ -46,13 +47,12 @@ if ! fuzzer_runtime_works; then
     fuzzer_runtime_works || { echo "fuzz.sh: clang is installed but cannot link -fsanitize=fuzzer" >&2; exit 1; }
 fi
 
-pip_install cmake ninja
+[ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build/fuzz
 .venv/bin/cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
     -DHLACORE_FUZZ=ON -DHLACORE_PYTHON=OFF -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" \
     >build/fuzz-configure.log 2>&1 || { cat build/fuzz-configure.log; exit 1; }
-.venv/bin/cmake --build build/fuzz --target fuzz_wire fuzz_fed fuzz_gateway wire_seeds >build/fuzz-build.log 2>&1 \
-    || { cat build/fuzz-build.log; exit 1; }
+cmake_build build/fuzz "the libFuzzer targets" fuzz_wire fuzz_fed fuzz_gateway wire_seeds
 # A sample frame of every message (the committed seeds are hand-written and may lag the message list).
 rm -rf build/fuzz/seeds-wire && mkdir -p build/fuzz/seeds-wire && build/fuzz/wire_seeds build/fuzz/seeds-wire
 [ "$build_only" = 1 ] && exit 0

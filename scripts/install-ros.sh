@@ -26,7 +26,8 @@ install() {
     "${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
         "${ROS_PACKAGES[@]}" </dev/null
 }
-echo "install-ros.sh: installing ROS 1 from Debian's packages (ROS bridge tests)"
+echo "install-ros.sh: installing ROS 1 (${ROS_PACKAGES[*]}) from Debian's packages, about 75 packages with their" \
+     "dependencies and a few minutes, for the ROS bridge and its tests (docs/ros-bridge.md)"
 if ! install; then
     echo "+ apt-get update"
     "${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q </dev/null

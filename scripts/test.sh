@@ -12,7 +12,7 @@ mkdir -p build
 .venv/bin/cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHLACORE_SANITIZE=ON -DHLACORE_PYTHON=OFF -DHLACORE_BENCH=ON \
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/asan-configure.log 2>&1 \
     || { cat build/asan-configure.log; exit 1; }
-.venv/bin/cmake --build build/asan --target rtig tcp_floor >build/asan-build.log 2>&1 || { cat build/asan-build.log; exit 1; }
+cmake_build build/asan "the ASan+UBSan rtig the tests run against" rtig tcp_floor
 if ./scripts/fuzz.sh --build-only; then
     export HLACORE_TEST_FUZZERS="$PWD/build/fuzz"
 elif [ "${CI:-}" = true ]; then

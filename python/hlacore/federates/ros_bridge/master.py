@@ -11,6 +11,7 @@ import signal
 import socket
 import subprocess
 import tempfile
+import threading
 import time
 import xmlrpc.client
 from typing import Iterator
@@ -31,8 +32,12 @@ def master_online(uri: str) -> bool:
 @contextlib.contextmanager
 def ros_master(timeout: float = 30.0) -> Iterator[str]:
     """Yield the master's URI; a roscore started here gets ``ROS_HOME`` in a temporary directory (removed
-    unless roscore failed: its log is kept there) and the ROS variables set for this process and its
-    children. ``ROS_IP`` defaults to 127.0.0.1 (nodes would otherwise advertise another interface)."""
+    at the end, however the run ends, unless roscore failed to start: its log is kept there) and the ROS variables set for this process and its
+    children. ``ROS_IP`` defaults to 127.0.0.1 (nodes would otherwise advertise another interface).
+
+    roscore runs in a process group of its own, ended as a whole (rosmaster and rosout with it). While it
+    runs, SIGTERM to this process raises SystemExit in the main thread, so that the caller's clean-up (and
+    this one) runs as on Ctrl-C instead of the process vanishing with its children left behind."""
     if not os.environ.get("ROS_HOSTNAME"):
         os.environ.setdefault("ROS_IP", "127.0.0.1")
     uri = os.environ.get("ROS_MASTER_URI")
@@ -45,17 +50,54 @@ def ros_master(timeout: float = 30.0) -> Iterator[str]:
     home = tempfile.mkdtemp(prefix="hlacore-ros-")
     uri = f"http://127.0.0.1:{port}"
     os.environ.update(ROS_MASTER_URI=uri, ROS_IP="127.0.0.1", ROS_HOME=home, ROS_LOG_DIR=f"{home}/log")
-    with open(f"{home}/roscore.log", "wb") as log:
+    with open(f"{home}/roscore.log", "wb") as log, _sigterm_as_exit():
         proc = subprocess.Popen(["roscore", "-p", str(port)], stdout=log, stderr=subprocess.STDOUT,
-                                stdin=subprocess.DEVNULL)
+                                stdin=subprocess.DEVNULL, start_new_session=True)
+        started = False
         try:
             deadline = time.monotonic() + timeout
             while not master_online(uri):
                 if proc.poll() is not None or time.monotonic() > deadline:
                     raise RuntimeError(f"roscore did not start (log: {home}/roscore.log)")
                 time.sleep(0.1)
+            started = True
             yield uri
         finally:
-            stop_process(proc, signal.SIGINT)
-    if proc.returncode in (0, -signal.SIGINT):
-        shutil.rmtree(home, ignore_errors=True)
+            stop_group(proc, signal.SIGINT)
+            if started:  # its log is worth keeping only when it did not start
+                shutil.rmtree(home, ignore_errors=True)
+
+
+def stop_group(proc: "subprocess.Popen[bytes]", sig: int, timeout: float = 15.0) -> None:
+    """End the process group `proc` leads (started with start_new_session): `sig` to the group, then
+    SIGKILL to what is left of it after `timeout` s."""
+    try:
+        os.killpg(proc.pid, sig)
+    except ProcessLookupError:
+        pass
+    stop_process(proc, sig, timeout)
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        try:
+            os.killpg(proc.pid, 0)  # members of the group remain (rosout, rosmaster)?
+        except ProcessLookupError:
+            return
+        time.sleep(0.05)
+    with contextlib.suppress(ProcessLookupError):
+        os.killpg(proc.pid, signal.SIGKILL)
+
+
+@contextlib.contextmanager
+def _sigterm_as_exit() -> Iterator[None]:
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def leave(signum: int, frame: object) -> None:
+        raise SystemExit(128 + signum)
+
+    previous = signal.signal(signal.SIGTERM, leave)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)

@@ -1,0 +1,85 @@
+"""Stopping a ROS experiment (SIGTERM, Ctrl-C) ends every process it started: roscore with rosmaster and
+rosout, the ROS nodes, the federates; and removes roscore's temporary ROS_HOME."""
+
+from __future__ import annotations
+
+import os
+import pathlib
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from test_ros_bridge import require_ros
+
+EXPERIMENTS = {
+    "mirror": ["hlacore.experiments.mirror", "--cycles", "400"],
+    "paper1-ros": ["hlacore.experiments.paper1.ros", "--duration", "120"],
+}
+
+
+def _process(pid: int) -> tuple[int, int, str] | None:
+    """(pid, start time, command line) of a live process, None when it is gone."""
+    try:
+        stat = pathlib.Path(f"/proc/{pid}/stat").read_text()
+        cmdline = pathlib.Path(f"/proc/{pid}/cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace")
+    except OSError:
+        return None
+    fields = stat[stat.rindex(")") + 2:].split()
+    if fields[0] == "Z":
+        return None  # a zombie has ended; only its parent's wait is missing
+    return pid, int(fields[19]), cmdline
+
+
+def descendants(root: int) -> list[tuple[int, int, str]]:
+    children: dict[int, list[int]] = {}
+    for entry in pathlib.Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:
+                continue
+            ppid = int(stat[stat.rindex(")") + 2:].split()[1])
+            children.setdefault(ppid, []).append(int(entry.name))
+    found, todo = [], list(children.get(root, []))
+    while todo:
+        pid = todo.pop()
+        info = _process(pid)
+        if info:
+            found.append(info)
+        todo.extend(children.get(pid, []))
+    return found
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT], ids=["SIGTERM", "SIGINT"])
+@pytest.mark.parametrize("experiment", sorted(EXPERIMENTS))
+def test_stopped_experiment_leaves_no_process_behind(experiment: str, signum: int, tmp_path: pathlib.Path) -> None:
+    require_ros()
+    env = {k: v for k, v in os.environ.items() if not k.startswith("ROS_")}  # it starts its own roscore
+    env["TMPDIR"] = str(tmp_path)
+    log = (tmp_path / "out.log").open("w")
+    proc = subprocess.Popen([sys.executable, "-m", *EXPERIMENTS[experiment][:1], str(tmp_path / "out"),
+                             *EXPERIMENTS[experiment][1:]], env=env, stdout=log, stderr=subprocess.STDOUT,
+                            stdin=subprocess.DEVNULL)
+    try:
+        deadline = time.monotonic() + 60
+        while not any("rosout" in cmd for _, _, cmd in descendants(proc.pid)):
+            assert proc.poll() is None, (tmp_path / "out.log").read_text()
+            assert time.monotonic() < deadline, "roscore did not come up"
+            time.sleep(0.2)
+        time.sleep(4)  # the nodes and federates start after the master
+        started = descendants(proc.pid)
+        assert len(started) >= 4, started  # roscore, rosmaster, rosout and the experiment's own
+        proc.send_signal(signum)
+        proc.wait(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+        log.close()
+    left = [p for p in started if _process(p[0]) is not None and _process(p[0])[1] == p[1]]  # type: ignore[index]
+    assert not left, left
+    assert proc.returncode != 0  # stopped, not finished
+    assert not list(tmp_path.glob("hlacore-ros-*")), "roscore's ROS_HOME was left behind"

@@ -156,3 +156,26 @@ def test_path_metrics() -> None:
     assert metrics.box_clearance([(1.0, 0.5)], (1.0, 0.0), 2.0) == pytest.approx(-0.5)
     with pytest.raises(ValueError):
         metrics.deviation([], line)
+
+
+def _summary(real_strays: float, clearance: float, *, stalls: int = 0, ros_passed: bool = True,
+             mirror_from: str = "commands", mirror_vs_real: float = 0.0) -> dict:
+    from hlacore.experiments.mirror.scenario import CLEAR
+
+    robot = {"vs_reference": real_strays, "box_clearance": clearance, "touched_box": clearance <= CLEAR}
+    return {"real": robot, "rosbot": {"passed_box": ros_passed}, "mirror": {"vs_real": mirror_vs_real},
+            "stall_steps": {"mirror": stalls, "rosbot": 0}, "mirror_from": mirror_from}
+
+
+def test_the_commands_verdict_names_the_finding_and_its_exit_follows_the_set_up_checks() -> None:
+    from hlacore.experiments.mirror.__main__ import checks, verdict
+
+    defective = _summary(2.282, -0.157)
+    assert all(checks(defective).values())  # a diverging real robot is the finding, not a failed run
+    assert verdict(defective) == ("verdict: the real robot departs from the reference model by 2.282 m; "
+                                  "it drove into the box (its centre 0.157 m inside)")
+    assert verdict(_summary(0.0, 0.4)).startswith("verdict: the real robot behaves like the reference model")
+    assert "touched the box" in verdict(_summary(0.0, 0.1))
+    assert not checks(_summary(0.0, 0.4, stalls=3))["the lockstep never stalled"]
+    assert not checks(_summary(0.0, 0.4, ros_passed=False))["the ROS robot drove around its box"]
+    assert not all(checks(_summary(0.7, 0.2, mirror_from="odometry", mirror_vs_real=0.3)).values())

@@ -24,7 +24,7 @@ from hlacore.federates.robot_world.world import Pose
 
 from . import metrics
 from .reference import reference_trajectory
-from .scenario import BOX_SIZE, BOX_X, HALF, LANES, MIRROR, ROSBOT, world_spec
+from .scenario import BOX_SIZE, BOX_X, CLEAR, HALF, LANES, MIRROR, ROSBOT, world_spec
 
 PERIOD = 0.1  #: the world's and the bridge's period and lookahead, s
 DT = 0.01  #: the world's physics step, s
@@ -62,15 +62,17 @@ class Result:
         """The comparison (m): ``vs_reference``, how far the path strays from the reference path at worst (a
         path that is only late, shorter, still follows it); ``hausdorff``, the symmetric distance (a late
         path counts too); the box clearance from the robot's centre (more than the robot's half diagonal
-        0.233 m means no contact); where each ended; stalls; the ROS cycles answered late."""
+        0.233 m means no contact: ``touched_box`` otherwise); ``passed_box``, ended beyond the box without
+        touching it; where each ended; stalls; the ROS cycles answered late."""
         ref = self.path("reference")
         box = (BOX_X, LANES[MIRROR])
         out: dict[str, Any] = {}
         for who in ("real", "mirror", "rosbot"):
             p = self.path(who)
+            clearance = metrics.box_clearance(p, box, BOX_SIZE)
             out[who] = {"vs_reference": metrics.deviation(p, ref), "hausdorff": metrics.hausdorff(p, ref),
-                        "box_clearance": metrics.box_clearance(p, box,
-                        BOX_SIZE), "end": [p[-1][0], p[-1][1]], "passed_box": p[-1][0] > BOX_X + BOX_SIZE / 2 + HALF}
+                        "box_clearance": clearance, "end": [p[-1][0], p[-1][1]], "touched_box": clearance <= CLEAR,
+                        "passed_box": p[-1][0] > BOX_X + BOX_SIZE / 2 + HALF and clearance > CLEAR}
         out["mirror"]["vs_real"] = metrics.hausdorff(self.path("mirror"), self.path("real"))
         out["real"]["avoidances"] = self.real[-1]["avoidances"] if self.real else 0
         out["rosbot"]["avoidances"] = self.node.get("avoidances")

@@ -14,6 +14,7 @@ MIRROR, ROSBOT, REFERENCE = "mirror", "rosbot", "reference"
 LANES = {MIRROR: 0.0, ROSBOT: -2.0, REFERENCE: 0.0}
 BOX_X, BOX_SIZE = 1.6, 0.4  #: the boxes' centre x and side, m
 HALF = 0.33 / 2  #: the robots' half side, m
+CLEAR = HALF * 2 ** 0.5  #: a robot whose centre stays farther than this from a box never touches it, m
 
 _HEADER = """
 resolution 0.02

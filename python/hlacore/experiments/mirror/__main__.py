@@ -20,6 +20,7 @@ from typing import Any, Optional, Sequence
 import hlacore
 from hlacore.federates.ros_bridge.master import ros_master
 
+from ..cli import run_command
 from .outputs import plot, write_trace
 from .run import run
 
@@ -35,6 +36,10 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--mirror-from", default="commands", choices=("commands", "odometry"))
     parser.add_argument("--cycles", type=int, default=50, help="control cycles of 0.5 s")
     args = parser.parse_args(argv)
+    return run_command("python -m hlacore.experiments.mirror", lambda: _run(args))
+
+
+def _run(args: argparse.Namespace) -> int:
     with contextlib.ExitStack() as stack:
         print(f"ROS master at {stack.enter_context(ros_master())}", flush=True)
         address = args.rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)

@@ -41,6 +41,8 @@ from hlacore.federates.ros_bridge.bridge import RosBridge, world_mappings
 from hlacore.federates.ros_bridge.children import stop_process
 from hlacore.federates.ros_bridge.master import ros_master
 
+from ..cli import run_command
+
 from . import scenario as paper1
 from .checks import HALF, WALL_FACE, Result, check  # noqa: F401  (HALF, WALL_FACE: re-exported, they were here)
 
@@ -217,4 +219,4 @@ def _main_de(outdir: str, rtig: Optional[str], duration: float) -> int:
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    raise SystemExit(run_command("python -m hlacore.experiments.paper1.ros", main))

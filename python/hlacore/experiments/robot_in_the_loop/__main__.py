@@ -18,6 +18,7 @@ from typing import Optional, Sequence
 
 from hlacore.federates.testbench.delays import format_table
 
+from ..cli import run_command
 from .experiment import ExperimentOptions, run_experiment
 
 
@@ -60,8 +61,14 @@ def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
-    """Run the experiment; 0 when the checker passes, 1 when it found errors."""
+    """Run the experiment; 0 when the checker passes, 1 when it found errors (or the gateway cannot be
+    reached), 130 after Ctrl-C."""
     options = parse_args(argv)
+    return run_command("python -m hlacore.experiments.robot_in_the_loop", lambda: _run(options),
+                       lambda: str(options.out))
+
+
+def _run(options: ExperimentOptions) -> int:
     experiment = run_experiment(options, lambda line: print(line, flush=True))
     result = experiment.result
     for message in experiment.messages:

@@ -116,6 +116,10 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
             try:
                 result = testbench.run(pace=pace, discover_timeout=options.timeout)
                 robot_status = robot.wait(timeout=options.timeout)
+            except KeyboardInterrupt:  # keep what the run has shown so far: its trace and plot
+                write_outputs(out, testbench.result(), scenario, f"{scenario.width}x{scenario.height}, "
+                              f"{calibration}, {mode}, interrupted")
+                raise
             finally:
                 if robot.poll() is None:
                     robot.terminate()

@@ -163,6 +163,10 @@ class Testbench:
         for verdict in self.checker.finish():
             self.write(format_verdict(verdict, self.precision))
         director.wrapup()
+        return self.result()
+
+    def result(self) -> TestbenchResult:
+        """The verdicts so far (all of them after :meth:`run`; an interrupted run's partial ones before)."""
         verdicts = sorted(self.checker.verdicts, key=lambda v: v.cycle)
         reflected = dict(self.clock.reflected_at)
         return TestbenchResult(verdicts, self.precision, delay_table(verdicts, reflected), reflected)

@@ -1,0 +1,64 @@
+"""The experiments' commands end with one line, not a traceback, when the gateway cannot be reached or the
+run is interrupted (Ctrl-C), and an interrupted main job keeps its partial trace and plot."""
+
+from __future__ import annotations
+
+import pathlib
+import signal
+import socket
+import subprocess
+import sys
+
+from test_ros_bridge import require_ros
+
+MAIN_JOB = "hlacore.experiments.robot_in_the_loop"
+
+
+def dead_address() -> str:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return f"127.0.0.1:{s.getsockname()[1]}"
+
+
+def run(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", *args], capture_output=True, text=True, timeout=120,
+                          stdin=subprocess.DEVNULL)
+
+
+def test_main_job_with_a_dead_gateway_says_so_in_one_line(tmp_path: pathlib.Path) -> None:
+    address = dead_address()
+    done = run(MAIN_JOB, "--rtig", address, "--out", str(tmp_path / "out"))
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines() == [
+        f"python -m {MAIN_JOB}: cannot connect to rtig at {address}: Connection refused"]
+
+
+def test_mirror_with_a_dead_gateway_says_so_in_one_line(tmp_path: pathlib.Path) -> None:
+    require_ros()
+    address = dead_address()
+    done = run("hlacore.experiments.mirror", str(tmp_path / "out"), "--rtig", address)
+    assert done.returncode == 1, done.stderr
+    assert "Traceback" not in done.stderr and f"cannot connect to rtig at {address}" in done.stderr
+
+
+def test_interrupted_main_job_keeps_its_partial_trace_and_plot(tmp_path: pathlib.Path) -> None:
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-m", MAIN_JOB, "--out", str(out), "--cycles", "400"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, stdin=subprocess.DEVNULL)
+    try:
+        assert proc.stdout is not None
+        for line in proc.stdout:  # interrupt once a few cycles have been checked
+            if line.startswith("cycle   3"):
+                break
+        proc.send_signal(signal.SIGINT)
+        _, stderr = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 130
+    assert stderr.strip().splitlines()[-1] == f"python -m {MAIN_JOB}: interrupted; what it wrote so far is in {out}"
+    assert "Traceback" not in stderr
+    rows = (out / "trace.csv").read_text().splitlines()
+    assert len(rows) >= 1 + 4  # the header and the cycles checked before Ctrl-C
+    assert (out / "trajectory.png").stat().st_size > 0

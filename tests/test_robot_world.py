@@ -390,3 +390,20 @@ def test_poses_are_identical_in_another_process_with_another_hash_seed() -> None
     out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, timeout=60,
                          check=True).stdout.strip()
     assert out == repr(sorted((n, p.x, p.y, p.theta) for n, p in here.poses().items()))
+
+
+def test_trajectory_plot_names_everything_it_draws(tmp_path: pathlib.Path) -> None:
+    """Title, axes with units, and a legend naming the robots, the walls, start, end and the marks."""
+    import matplotlib  # a test dependency (hlacore[test])
+
+    world = corridor(watchdog=None)
+    samples = []
+    world.command("r1", 1.0, 0.0)
+    for _ in range(3):
+        world.advance(10)
+        samples.append(world.poses())
+    with matplotlib.rc_context({"svg.fonttype": "none"}):  # the texts stay text in the SVG
+        svg = render.plot_trajectories(world, samples, tmp_path / "t.svg", title="a run",
+                                       marks={"held back": [(0.1, 0.0)]}).read_text()
+    for text in ("a run", "x (m)", "y (m)", "r0", "r1", "wall", "start", "end", "held back"):
+        assert f">{text}<" in svg, text

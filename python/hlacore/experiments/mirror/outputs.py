@@ -37,7 +37,8 @@ def write_trace(result: Result, path: pathlib.Path) -> pathlib.Path:
 
 
 def plot(result: Result, path: pathlib.Path) -> pathlib.Path:
-    """The four trajectories in world coordinates, with the boxes (matplotlib; ImportError without it)."""
+    """The four trajectories in world coordinates, with the boxes, all named in the legend (matplotlib;
+    ImportError without it)."""
     try:
         import matplotlib
 
@@ -47,8 +48,9 @@ def plot(result: Result, path: pathlib.Path) -> pathlib.Path:
     except ImportError:
         raise ImportError("plotting trajectories needs matplotlib: pip install matplotlib") from None
     fig, ax = plt.subplots(figsize=(9, 6.5))
-    for lane in sorted(set(LANES[n] for n in (MIRROR, ROSBOT))):
-        ax.add_patch(Rectangle((BOX_X - BOX_SIZE / 2, lane - BOX_SIZE / 2), BOX_SIZE, BOX_SIZE, color="black"))
+    for i, lane in enumerate(sorted(set(LANES[n] for n in (MIRROR, ROSBOT)))):
+        ax.add_patch(Rectangle((BOX_X - BOX_SIZE / 2, lane - BOX_SIZE / 2), BOX_SIZE, BOX_SIZE, color="black",
+                               label=f"box ({BOX_SIZE:g} m)" if i == 0 else None))
     for who in ("reference", "real", "mirror"):
         xs, ys = zip(*result.path(who))
         ax.plot(xs, ys, color=COLOURS[who], label=LABELS[who], lw=2 if who == "real" else 1.5,

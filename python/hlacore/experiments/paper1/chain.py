@@ -35,7 +35,7 @@ from hlacore.federates.robot_world.world import Pose
 from hlacore.federates.ros_bridge.children import Children
 
 from . import scenario as paper1
-from .checks import Result, check
+from .checks import Result, check, held_back
 
 TRACE = "paper1-de-trace.csv"
 SNAPSHOT = "paper1-de-snapshot.png"
@@ -136,7 +136,8 @@ def write_outputs(result: ChainResult, directory: str, period: float = 0.1) -> l
         written.append(str(out / SNAPSHOT))
     try:
         written.append(str(render.plot_trajectories(world, result.poses, out / PLOT,
-                                                    title="paper 1: DE controller through ROS")))
+                                                    title="paper 1: DE controller through ROS",
+                                                    marks={"avatar held back": held_back(result.poses)})))
     except ImportError as exc:
         print(f"no trajectory plot: {exc}")
     return written

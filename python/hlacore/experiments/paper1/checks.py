@@ -11,7 +11,7 @@ from hlacore.federates.robot_world.world import Pose
 
 from . import scenario as paper1
 
-__all__ = ["HALF", "WALL_FACE", "Result", "check"]
+__all__ = ["HALF", "WALL_FACE", "Result", "check", "held_back"]
 
 HALF = 0.33 / 2  #: the robots' half size
 WALL_FACE = 7.0 - 0.1  #: x of the wall's face
@@ -43,6 +43,13 @@ class Result:
                 "obstacles_y": {n: self.poses[-1][n].y for n in paper1.OBSTACLES}}
 
 
+def held_back(poses: list[dict[str, Pose]]) -> list[tuple[float, float]]:
+    """Where the avatar stood still on its way (in the first 150 grants, once it had moved): an obstacle
+    held it back. What the ``held_back`` check looks for, and what the plots mark."""
+    xs = [p["avatar"].x for p in poses[:150]]
+    return [(poses[i]["avatar"].x, poses[i]["avatar"].y) for i in range(1, len(xs)) if xs[i] == xs[i - 1] > 0]
+
+
 def check(result: Result) -> dict[str, bool]:
     """Paper 1's checks on the poses at every grant: no robot ever blocked, the avatar and an obstacle never
     overlap, every obstacle crossed, the avatar was held back by an obstacle at some point, and it ends
@@ -54,7 +61,7 @@ def check(result: Result) -> dict[str, bool]:
             if abs(a.x - o.x) < 2 * HALF and abs(a.y - o.y) <= 2 * HALF:
                 apart = False
     xs = [a.x for a in avatar]
-    held = any(x1 == x0 for x0, x1 in zip(xs[:150], xs[1:150]) if x0 > 0)
+    held = bool(held_back(result.poses))
     gap = WALL_FACE - (avatar[-1].x + HALF)
     return {
         "no_stall": all(v == 0 for v in result.stall_steps.values()),

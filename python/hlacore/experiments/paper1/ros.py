@@ -44,7 +44,7 @@ from hlacore.federates.ros_bridge.master import ros_master
 from ..cli import run_command
 
 from . import scenario as paper1
-from .checks import HALF, WALL_FACE, Result, check  # noqa: F401  (HALF, WALL_FACE: re-exported, they were here)
+from .checks import HALF, WALL_FACE, Result, check, held_back  # noqa: F401  (HALF, WALL_FACE: re-exported, they were here)
 
 # ---- the ROS node (the paper's controllers), in its own process ----
 
@@ -170,7 +170,8 @@ def write_outputs(result: Result, directory: str) -> list[str]:
     written.append(str(render.write_snapshot(world, out / "paper1-ros-snapshot.png", trails=tracks)))
     try:
         written.append(str(render.plot_trajectories(world, result.poses, out / "paper1-ros-trajectories.png",
-                                                    title="paper 1 through ROS")))
+                                                    title="paper 1 through ROS",
+                                                    marks={"avatar held back": held_back(result.poses)})))
     except ImportError as exc:
         print(f"no trajectory plot: {exc}")
     return written

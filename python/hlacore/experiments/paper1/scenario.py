@@ -24,8 +24,8 @@ define wall model ( size [0.2 6.0 0.5] color "gray30" obstacle_return 1 ranger_r
 window ( size [ 600 400 ] scale 40 )
 bot( pose [ 0.0  0.0 0   0] name "avatar"    color "black" sonar(pose [0.165 0 0 0]) )
 bot( pose [ 2.0 -1.2 0  90] name "obstacle1" color "red" )
-bot( pose [ 3.5 -1.8 0  90] name "obstacle2" color "red" )
-bot( pose [ 5.0 -2.4 0  90] name "obstacle3" color "red" )
+bot( pose [ 3.5 -1.8 0  90] name "obstacle2" color "orange" )
+bot( pose [ 5.0 -2.4 0  90] name "obstacle3" color "magenta" )
 wall( pose [ 7.0 0.0 0 0] )
 """
 

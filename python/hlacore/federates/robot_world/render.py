@@ -197,29 +197,47 @@ def _pyplot() -> Any:
 
 
 def plot_trajectories(world: World, poses: Iterable[Mapping[str, Pose]], path: Union[str, pathlib.Path],
-                      title: str = "") -> pathlib.Path:
+                      title: str = "", marks: Optional[Mapping[str, Sequence[tuple[float, float]]]] = None
+                      ) -> pathlib.Path:
     """Plot every robot's trajectory over the world's static boxes and write it (PNG or SVG by suffix).
 
-    Needs matplotlib (ImportError saying so otherwise)."""
+    The legend names each robot, the static boxes (by their name, "wall" when unnamed), the start (circle)
+    and end (square) of each trajectory, and ``marks``: labelled points to show, such as where a check
+    found what it looked for. Axes in metres. Needs matplotlib (ImportError saying so otherwise)."""
     plt = _pyplot()
+    from matplotlib.lines import Line2D
+
     tracks = trajectories(poses)
     fig, ax = plt.subplots(figsize=(7, 5))
     try:
+        labelled: set[str] = set()
         for block in world.spec.blocks:
             pts = [(float(v.x), float(v.y)) for v in _static_vertices(world, block.pose, block.size)]
-            ax.fill([p[0] for p in pts], [p[1] for p in pts], color=[c / 255 for c in color(block.color)])
+            label = block.name or "wall"
+            ax.fill([p[0] for p in pts], [p[1] for p in pts], color=[c / 255 for c in color(block.color)],
+                    label=None if label in labelled else label)
+            labelled.add(label)
         for robot in world.robots:
             track = tracks.get(robot.name, [])
             if track:
                 rgb = [c / 255 for c in color(robot.spec.color)]
                 ax.plot([p[0] for p in track], [p[1] for p in track], color=rgb, label=robot.name)
+                ax.plot([track[0][0]], [track[0][1]], "o", color=rgb, fillstyle="none")
                 ax.plot([track[-1][0]], [track[-1][1]], "s", color=rgb)
+        for (label, points), style in zip((marks or {}).items(), ("x", "+", "^", "v")):
+            if points:
+                ax.plot([p[0] for p in points], [p[1] for p in points], style, color="tab:purple", label=label)
+        handles, _ = ax.get_legend_handles_labels()
+        handles += [Line2D([], [], marker="o", fillstyle="none", color="0.4", ls="", label="start"),
+                    Line2D([], [], marker="s", color="0.4", ls="", label="end")]
         ax.set_aspect("equal")
         ax.set_xlabel("x (m)")
         ax.set_ylabel("y (m)")
+        ax.grid(True, alpha=0.3)
         if title:
             ax.set_title(title)
-        ax.legend(loc="best", fontsize="small")
+        ax.legend(handles=handles, loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize="small")
+        fig.tight_layout()
         out = pathlib.Path(path)
         fig.savefig(out, dpi=100)
     finally:

@@ -50,8 +50,9 @@ def write_trace(path: pathlib.Path, verdicts: Sequence[Verdict], reflected_at: M
 
 
 def write_plot(path: pathlib.Path, verdicts: Sequence[Verdict], scenario: Scenario, title: str) -> str:
-    """Draw the grid, the walls, the reference path and the robot's measured trajectory; returns a one-line
-    message (where it went, or why there is no plot)."""
+    """Draw the grid, the walls, the start and goal cells, the reference path, the robot's measured
+    trajectory and its value errors, each named in the legend; returns a one-line message (where it went, or
+    why there is no plot)."""
     try:
         import matplotlib  # type: ignore[import-not-found, unused-ignore]
 
@@ -61,11 +62,12 @@ def write_plot(path: pathlib.Path, verdicts: Sequence[Verdict], scenario: Scenar
         return "no plot: matplotlib is not installed (pip install 'hlacore[bench]' or matplotlib)"
     ordered = sorted(verdicts, key=lambda v: v.cycle)
     figure, axes = plt.subplots(figsize=(5.5, 6.0))
-    for a, b in scenario.walls:
-        axes.add_patch(plt.Rectangle(((a - 0.5) * CELL, (b - 0.5) * CELL), CELL, CELL, color="0.6"))
-    for cell, colour in ((scenario.start, "tab:green"), (scenario.goal, "tab:red")):
+    for i, (a, b) in enumerate(scenario.walls):
+        axes.add_patch(plt.Rectangle(((a - 0.5) * CELL, (b - 0.5) * CELL), CELL, CELL, color="0.6",
+                                     label="wall" if i == 0 else None))
+    for cell, colour, label in ((scenario.start, "tab:green", "start"), (scenario.goal, "tab:red", "goal")):
         axes.add_patch(plt.Rectangle(((cell[0] - 0.5) * CELL, (cell[1] - 0.5) * CELL), CELL, CELL,
-                                     color=colour, alpha=0.35))
+                                     color=colour, alpha=0.35, label=f"{label} cell"))
     axes.plot([v.expected[0] * CELL for v in ordered], [v.expected[1] * CELL for v in ordered], "o-",
               color="tab:blue", markersize=10, label="reference model")
     poses = [v.report.pose for v in ordered if v.report is not None]
@@ -84,7 +86,7 @@ def write_plot(path: pathlib.Path, verdicts: Sequence[Verdict], scenario: Scenar
     axes.set_xlabel("first coordinate (cells of 33 cm)")
     axes.set_ylabel("second coordinate")
     axes.set_title(title)
-    axes.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=3, fontsize=8)
+    axes.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=3, fontsize=8)  # walls, cells, paths
     figure.tight_layout()
     figure.savefig(path, dpi=110)
     plt.close(figure)

@@ -25,6 +25,15 @@ ROBOT_FED = str(DATA / "robot.fed")
 PROTOCOL_VERSION = int(re.search(r"kProtocolVersion = (\d+);", (pathlib.Path(__file__).parent.parent / "cpp" / "rti"
                                                                 / "wire" / "messages.hpp").read_text()).group(1))
 SANITIZER_REPORT = re.compile(r"ERROR: AddressSanitizer|runtime error:|ERROR: LeakSanitizer")
+# The A* path of the paper's 5x5 grid (hlacore.federates.robot_driver.PAPER_5X5) from (0, 0) to (4, 4): what the
+# driver's planner must find and the robot experiment drives.
+PAPER_PATH = [(0, 0), (0, 1), (0, 2), (0, 3), (1, 3), (2, 3), (2, 2), (2, 1), (2, 0), (3, 0), (4, 0), (4, 1), (4, 2),
+              (4, 3), (4, 4)]
+# The rover of the robot-world federate and ROS tests, as the `define` lines of a .world text (a TurtleBot-sized
+# differential drive with a 5-beam, 4 m, 40-degree sonar at its nose); each test appends its robots and walls.
+ROVER_MODEL = """
+define sonar ranger ( sensor( pose [0 0 0 0] range [0.02 4.0] fov 40 samples 5 ) )
+define bot position ( size [0.33 0.33 0.4] drive "diff" sonar(pose [0.165 0 0 0]) )"""
 
 
 def rtig_executable() -> str:
@@ -189,6 +198,15 @@ class Federate:
         self.rtia.enable_time_management(
             lookahead or 0.0, timeout=5.0, regulating=lookahead is not None, constrained=constrained
         )
+
+
+def share_robot_location(publisher: Federate, subscriber: Federate) -> tuple[Any, Any]:
+    """`publisher` publishes robot.location and `subscriber` subscribes to it: the (robot, location) handles."""
+    robot = publisher.rtia.getObjectClassHandle("robot")
+    location = publisher.rtia.getAttributeHandle("location", robot)
+    publisher.rtia.publishObjectClass(robot, [location])
+    subscriber.rtia.subscribeObjectClassAttributes(robot, [location])
+    return robot, location
 
 
 @contextlib.contextmanager

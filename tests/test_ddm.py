@@ -391,12 +391,20 @@ def test_deleted_regions_and_resigned_subscribers_leave_routing_intact(ddm: Join
     assert reflected(sub)[1] == (w, {h.position: b"2"})
 
 
-# ---- attribute scope advisories (HLA 1.3 §6.13-6.14) ----
+# ---- attribute scope and relevance advisories (HLA 1.3 §6.13-6.14, §6.17-6.18) ----
+
+
+def advisory_events(fed: Federate, on: str, off: str) -> list[tuple[str, Any, set]]:
+    """The `on` and `off` advisories fed got, in order: (callback name, object, set of attributes)."""
+    return [(name, args[0], set(args[1])) for name, args in fed.amb.calls if name in (on, off)]
 
 
 def scope_events(fed: Federate) -> list[tuple[str, Any, set]]:
-    return [(name, args[0], set(args[1])) for name, args in fed.amb.calls
-            if name in ("attributesInScope", "attributesOutOfScope")]
+    return advisory_events(fed, "attributesInScope", "attributesOutOfScope")
+
+
+def relevance_events(fed: Federate) -> list[tuple[str, Any, set]]:
+    return advisory_events(fed, "turnUpdatesOnForObjectInstance", "turnUpdatesOffForObjectInstance")
 
 
 def test_attributes_come_into_and_go_out_of_scope(ddm: Join) -> None:
@@ -441,11 +449,6 @@ def test_attributes_come_into_and_go_out_of_scope(ddm: Join) -> None:
         ("attributesOutOfScope", v, {h.position}),
     ]
     assert scope_events(quiet) == []
-
-
-def relevance_events(fed: Federate) -> list[tuple[str, Any, set]]:
-    return [(name, args[0], set(args[1])) for name, args in fed.amb.calls
-            if name in ("turnUpdatesOnForObjectInstance", "turnUpdatesOffForObjectInstance")]
 
 
 def test_owners_are_told_when_their_attributes_are_wanted(ddm: Join) -> None:

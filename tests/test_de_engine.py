@@ -24,6 +24,15 @@ from hlacore.federates.de import (
 Log = list[tuple[str, float, int]]
 
 
+def into_sink(source: Any) -> tuple[Director, Recorder]:
+    """A Director holding `source` (an actor with an `output` port) and a Recorder 'sink' that port feeds."""
+    director = Director()
+    sink = Recorder("sink")
+    source.output.connect(sink.input)
+    director.add(source, sink)
+    return director, sink
+
+
 class Logger(Actor):
     """Logs (name, time, microstep) at every firing; fires at ``times`` and passes tokens on."""
 
@@ -135,10 +144,8 @@ def test_send_delays_give_the_documented_tags() -> None:
             self.output.send("zero", delay=0.0)
             self.output.send("later", delay=0.5)
 
-    director = Director()
-    emitter, sink = Emitter(), Recorder("sink")
-    emitter.output.connect(sink.input)
-    director.add(emitter, sink)
+    emitter = Emitter()
+    director, sink = into_sink(emitter)
     director.run()
     assert [(r.time, r.microstep, r.value) for r in sink.records] == [(1.0, 0, "now"), (1.0, 1, "zero"), (1.5, 0, "later")]
     with pytest.raises(CausalityError, match="delay"):
@@ -167,11 +174,7 @@ def test_peek_step_and_empty_schedule() -> None:
 
 
 def test_run_until_is_inclusive_and_moves_time_to_until() -> None:
-    director = Director()
-    clock = Clock("clock", period=1.0, offset=0.5)
-    sink = Recorder("sink")
-    clock.output.connect(sink.input)
-    director.add(clock, sink)
+    director, sink = into_sink(Clock("clock", period=1.0, offset=0.5))
     director.run(until=2.5)
     assert sink.records and [(r.time, r.value) for r in sink.records] == [(0.5, 0), (1.5, 1), (2.5, 2)]
     assert director.now == 2.5
@@ -183,11 +186,7 @@ def test_run_until_is_inclusive_and_moves_time_to_until() -> None:
 
 
 def test_clock_cycles_and_run_until_queue_empty() -> None:
-    director = Director()
-    clock = Clock("clock", period=0.25, cycles=4)
-    sink = Recorder("sink")
-    clock.output.connect(sink.input)
-    director.add(clock, sink)
+    director, sink = into_sink(Clock("clock", period=0.25, cycles=4))
     assert director.run() == 8
     assert [(r.time, r.value) for r in sink.records] == [(0.0, 0), (0.25, 1), (0.5, 2), (0.75, 3)]
     assert director.now == 0.75
@@ -231,11 +230,7 @@ def test_events_in_the_past_are_refused() -> None:
 
 def test_injected_tokens_are_clamped_to_now_and_go_to_the_next_microstep() -> None:
     """The way in for messages from outside: a late token fires at the current time, after the current tag."""
-    director = Director()
-    source = TimedSource("source", [(5.0, "local")])
-    sink = Recorder("sink")
-    source.output.connect(sink.input)
-    director.add(source, sink)
+    director, sink = into_sink(TimedSource("source", [(5.0, "local")]))
     director.run()
     assert (director.now, director.microstep) == (5.0, 0)
     assert director.inject(sink.input, "late", 3.0) == (5.0, 1)

@@ -4,7 +4,7 @@ import pytest
 
 import hlacore.rti as rti
 
-from conftest import ROBOT_FED, Federate, tick_until
+from conftest import ROBOT_FED, Federate, share_robot_location, tick_until
 
 
 def test_create_twice_raises_already_exists(gateway_address):
@@ -80,10 +80,7 @@ def test_malformed_fed_raises_error_reading_fed_with_position(gateway_address, t
 def test_resign_delete_objects_removes_them_for_others(federation):
     """ResignAction.DeleteObjects: subscribers get removeObjectInstance for the resigner's objects."""
     owner, watcher = federation("owner"), federation("watcher")
-    robot = owner.rtia.getObjectClassHandle("robot")
-    location = owner.rtia.getAttributeHandle("location", robot)
-    owner.rtia.publishObjectClass(robot, [location])
-    watcher.rtia.subscribeObjectClassAttributes(robot, [location])
+    robot, _location = share_robot_location(owner, watcher)
     obj = owner.rtia.registerObjectInstance(robot, "r")
     tick_until(lambda: watcher.amb.named("discoverObjectInstance"), watcher.rtia)
     owner.rtia.resignFederationExecution(rti.ResignAction.DeleteObjects)

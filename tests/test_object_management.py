@@ -20,6 +20,17 @@ def pair(federation):
     return pub, sub, robot, turtle, h
 
 
+@pytest.fixture
+def registered(pair):
+    """`pair` after the publisher published robot.location, the subscriber subscribed to it (a round trip
+    later) and the publisher registered a robot, which the subscriber will discover: (pub, sub, h, object)."""
+    pub, sub, robot, _turtle, h = pair
+    pub.rtia.publishObjectClass(robot, [h["location"]])
+    sub.rtia.subscribeObjectClassAttributes(robot, [h["location"]])
+    barrier(sub.rtia)
+    return pub, sub, h, pub.rtia.registerObjectInstance(robot)
+
+
 def test_seed_fom_handles_follow_certi_numbering(federation):
     """ObjectRoot=1, RTIprivate=2, robot=3; privilegeToDelete=1 inherited; location is the 8th attribute."""
     r = federation("a").rtia
@@ -142,13 +153,9 @@ def test_late_subscriber_discovers_existing_instances(pair, federation):
     assert {args[0] for args in late.amb.named("discoverObjectInstance")} == objs
 
 
-def test_update_errors(pair):
+def test_update_errors(registered):
     """Updating an unknown object, an undefined attribute or one not owned raises the typed exception."""
-    pub, sub, robot, turtle, h = pair
-    pub.rtia.publishObjectClass(robot, [h["location"]])
-    sub.rtia.subscribeObjectClassAttributes(robot, [h["location"]])
-    barrier(sub.rtia)
-    obj = pub.rtia.registerObjectInstance(robot)
+    pub, sub, h, obj = registered
     with pytest.raises(rti.AttributeNotOwned):
         pub.rtia.updateAttributeValues(obj, {h["battery"]: b"x"}, "")
     with pytest.raises(rti.AttributeNotDefined):
@@ -167,13 +174,9 @@ def test_update_errors(pair):
         pub.rtia.updateAttributeValues(obj, {h["location"]: b"x"}, "")
 
 
-def test_delete_requires_privilege_and_reaches_subscribers(pair):
+def test_delete_requires_privilege_and_reaches_subscribers(registered):
     """Only the registrant may delete; subscribers get removeObjectInstance with the tag."""
-    pub, sub, robot, turtle, h = pair
-    pub.rtia.publishObjectClass(robot, [h["location"]])
-    sub.rtia.subscribeObjectClassAttributes(robot, [h["location"]])
-    barrier(sub.rtia)
-    obj = pub.rtia.registerObjectInstance(robot)
+    pub, sub, _h, obj = registered
     tick_until(lambda: sub.amb.named("discoverObjectInstance"), sub.rtia)
     with pytest.raises(rti.DeletePrivilegeNotHeld):
         sub.rtia.deleteObjectInstance(obj, "")
@@ -329,15 +332,11 @@ def test_unpublish_errors_and_declaration_checks(pair):
         pub.rtia.registerObjectInstance(robot)
 
 
-def test_updates_from_another_thread_while_ticking(pair):
+def test_updates_from_another_thread_while_ticking(registered):
     """Sending calls are safe from another thread while the main thread ticks (ROS-bridge pattern)."""
     import threading
 
-    pub, sub, robot, turtle, h = pair
-    pub.rtia.publishObjectClass(robot, [h["location"]])
-    sub.rtia.subscribeObjectClassAttributes(robot, [h["location"]])
-    barrier(sub.rtia)
-    obj = pub.rtia.registerObjectInstance(robot)
+    pub, sub, h, obj = registered
     count = 500
 
     def sender():

@@ -39,6 +39,16 @@ class Robots:
     def owner_seen_by(self, fed: Federate, attribute) -> Optional[int]:
         return owner_seen_by(fed, self.obj, attribute)
 
+    def b_asks_for(self, attribute, tag: str = "") -> None:
+        """b asks to acquire `attribute` of r1, which a owns; returns once a is asked to release it."""
+        self.b.rtia.attributeOwnershipAcquisition(self.obj, [attribute], tag)
+        self.tick_until(lambda: self.a.amb.named("requestAttributeOwnershipRelease"))
+
+    def refuses(self, error, service) -> None:
+        """`service` (a federate's ownership service, bound) called on r1's location raises `error`."""
+        with pytest.raises(error):
+            service(self.obj, [self.location])
+
 
 def owner_seen_by(fed: Federate, obj, attribute) -> Optional[int]:
     """queryAttributeOwnership, ticked until answered: the owner's handle, or None when unowned.
@@ -159,8 +169,7 @@ def test_unconditional_divestiture_then_acquisition(robots):
 def test_unconditional_divestiture_gives_the_attribute_to_a_waiting_acquirer(robots):
     """A federate waiting for an owned attribute (§7.7) gets it when its owner divests it."""
     a, b, obj, location = robots.a, robots.b, robots.obj, robots.location
-    b.rtia.attributeOwnershipAcquisition(obj, [location], "")
-    robots.tick_until(lambda: a.amb.named("requestAttributeOwnershipRelease"))
+    robots.b_asks_for(location)
     a.rtia.unconditionalAttributeOwnershipDivestiture(obj, [location])
     robots.tick_until(lambda: b.amb.named("attributeOwnershipAcquisitionNotification"))
     assert b.rtia.isAttributeOwnedByFederate(obj, location)
@@ -170,10 +179,8 @@ def test_unconditional_divestiture_gives_the_attribute_to_a_waiting_acquirer(rob
 def test_release_request_and_response(robots):
     """§7.10-7.11: acquiring an owned attribute asks its owner, whose release response returns what it gave."""
     a, b, obj, location, battery = robots.a, robots.b, robots.obj, robots.location, robots.battery
-    with pytest.raises(rti.FederateWasNotAskedToReleaseAttribute):
-        a.rtia.attributeOwnershipReleaseResponse(obj, [location])
-    b.rtia.attributeOwnershipAcquisition(obj, [location], "please")
-    robots.tick_until(lambda: a.amb.named("requestAttributeOwnershipRelease"))
+    robots.refuses(rti.FederateWasNotAskedToReleaseAttribute, a.rtia.attributeOwnershipReleaseResponse)
+    robots.b_asks_for(location, "please")
     assert a.amb.named("requestAttributeOwnershipRelease") == [(obj, (location,), "please")]
     assert not b.rtia.isAttributeOwnedByFederate(obj, location)
     with pytest.raises(rti.FederateWasNotAskedToReleaseAttribute):
@@ -185,8 +192,7 @@ def test_release_request_and_response(robots):
     robots.tick_until(lambda: b.amb.named("attributeOwnershipAcquisitionNotification"))
     assert b.amb.named("attributeOwnershipAcquisitionNotification") == [(obj, (location,))]
     assert b.rtia.isAttributeOwnedByFederate(obj, location)
-    with pytest.raises(rti.AttributeNotOwned):
-        a.rtia.attributeOwnershipReleaseResponse(obj, [location])
+    robots.refuses(rti.AttributeNotOwned, a.rtia.attributeOwnershipReleaseResponse)
 
 
 def test_release_response_from_inside_the_callback(federation, gateway_address):
@@ -223,14 +229,10 @@ def test_release_response_from_inside_the_callback(federation, gateway_address):
 def test_cancel_acquisition(robots):
     """§7.13-7.14: a cancelled acquisition is confirmed; the owner's release response then releases nothing."""
     a, b, obj, location = robots.a, robots.b, robots.obj, robots.location
-    with pytest.raises(rti.AttributeAcquisitionWasNotRequested):
-        b.rtia.cancelAttributeOwnershipAcquisition(obj, [location])
-    with pytest.raises(rti.AttributeAlreadyOwned):
-        a.rtia.cancelAttributeOwnershipAcquisition(obj, [location])
-    b.rtia.attributeOwnershipAcquisition(obj, [location], "")
-    robots.tick_until(lambda: a.amb.named("requestAttributeOwnershipRelease"))
-    with pytest.raises(rti.AttributeAlreadyBeingAcquired):
-        b.rtia.attributeOwnershipAcquisitionIfAvailable(obj, [location])
+    robots.refuses(rti.AttributeAcquisitionWasNotRequested, b.rtia.cancelAttributeOwnershipAcquisition)
+    robots.refuses(rti.AttributeAlreadyOwned, a.rtia.cancelAttributeOwnershipAcquisition)
+    robots.b_asks_for(location)
+    robots.refuses(rti.AttributeAlreadyBeingAcquired, b.rtia.attributeOwnershipAcquisitionIfAvailable)
     with pytest.raises(rti.OwnershipAcquisitionPending):
         b.rtia.unpublishObjectClass(robots.robot)
     b.rtia.cancelAttributeOwnershipAcquisition(obj, [location])
@@ -241,18 +243,15 @@ def test_cancel_acquisition(robots):
     assert a.rtia.isAttributeOwnedByFederate(obj, location)
     settle(a.rtia, b.rtia)
     assert not b.amb.named("attributeOwnershipAcquisitionNotification")
-    with pytest.raises(rti.AttributeAcquisitionWasNotRequested):
-        b.rtia.cancelAttributeOwnershipAcquisition(obj, [location])
+    robots.refuses(rti.AttributeAcquisitionWasNotRequested, b.rtia.cancelAttributeOwnershipAcquisition)
     b.rtia.unpublishObjectClass(robots.robot)
 
 
 def test_cancel_negotiated_divestiture(robots):
     """§7.12: after cancelling, the attribute is no longer available."""
     a, b, obj, location = robots.a, robots.b, robots.obj, robots.location
-    with pytest.raises(rti.AttributeDivestitureWasNotRequested):
-        a.rtia.cancelNegotiatedAttributeOwnershipDivestiture(obj, [location])
-    with pytest.raises(rti.AttributeNotOwned):
-        b.rtia.cancelNegotiatedAttributeOwnershipDivestiture(obj, [location])
+    robots.refuses(rti.AttributeDivestitureWasNotRequested, a.rtia.cancelNegotiatedAttributeOwnershipDivestiture)
+    robots.refuses(rti.AttributeNotOwned, b.rtia.cancelNegotiatedAttributeOwnershipDivestiture)
     a.rtia.negotiatedAttributeOwnershipDivestiture(obj, [location], "offer")
     robots.tick_until(lambda: b.amb.named("requestAttributeOwnershipAssumption"))
     a.rtia.cancelNegotiatedAttributeOwnershipDivestiture(obj, [location])
@@ -262,15 +261,13 @@ def test_cancel_negotiated_divestiture(robots):
     settle(a.rtia, b.rtia)
     assert not a.amb.named("attributeOwnershipDivestitureNotification")
     assert a.rtia.isAttributeOwnedByFederate(obj, location)
-    with pytest.raises(rti.AttributeDivestitureWasNotRequested):
-        a.rtia.cancelNegotiatedAttributeOwnershipDivestiture(obj, [location])
+    robots.refuses(rti.AttributeDivestitureWasNotRequested, a.rtia.cancelNegotiatedAttributeOwnershipDivestiture)
 
 
 def test_negotiated_divestiture_goes_to_a_waiting_acquirer_at_once(robots):
     """An owner asked to release that divests by negotiation hands the attribute to the waiting federate."""
     a, b, obj, battery = robots.a, robots.b, robots.obj, robots.battery
-    b.rtia.attributeOwnershipAcquisition(obj, [battery], "")
-    robots.tick_until(lambda: a.amb.named("requestAttributeOwnershipRelease"))
+    robots.b_asks_for(battery)
     a.rtia.negotiatedAttributeOwnershipDivestiture(obj, [battery], "")
     robots.tick_until(
         lambda: b.amb.named("attributeOwnershipAcquisitionNotification")
@@ -285,8 +282,7 @@ def test_negotiated_divestiture_goes_to_a_waiting_acquirer_at_once(robots):
 def test_local_delete_ends_a_pending_acquisition(robots):
     """A federate that forgets the object (§6.10) no longer waits for its attributes."""
     a, b, obj, location = robots.a, robots.b, robots.obj, robots.location
-    b.rtia.attributeOwnershipAcquisition(obj, [location], "")
-    robots.tick_until(lambda: a.amb.named("requestAttributeOwnershipRelease"))
+    robots.b_asks_for(location)
     b.rtia.localDeleteObjectInstance(obj)
     barrier(b.rtia)
     assert a.rtia.attributeOwnershipReleaseResponse(obj, [location]) == ()
@@ -442,8 +438,7 @@ def test_publishing_fewer_attributes_or_unpublishing_divests_them(robots):
 def test_resign_releasing_attributes_leaves_them_available(robots):
     """ReleaseAttributes (HLA 1.3 §4.5): unowned afterwards, a waiting acquirer gets its attribute at once."""
     a, b, obj, location, battery = robots.a, robots.b, robots.obj, robots.location, robots.battery
-    b.rtia.attributeOwnershipAcquisition(obj, [battery], "")
-    robots.tick_until(lambda: a.amb.named("requestAttributeOwnershipRelease"))
+    robots.b_asks_for(battery)
     a.rtia.resignFederationExecution(rti.ResignAction.ReleaseAttributes)
     tick_until(lambda: b.amb.named("attributeOwnershipAcquisitionNotification"), b.rtia)
     assert b.amb.named("attributeOwnershipAcquisitionNotification") == [(obj, (battery,))]

@@ -26,8 +26,7 @@ from hlacore.federates.robot_driver import (
 from hlacore.federates.robot_driver.driver import SerialTransport
 from hlacore.federates.robot_driver.protocol import encode_request, format_reply, parse_reply
 
-PAPER_PATH = [(0, 0), (0, 1), (0, 2), (0, 3), (1, 3), (2, 3), (2, 2), (2, 1), (2, 0), (3, 0), (4, 0), (4, 1), (4, 2),
-              (4, 3), (4, 4)]
+from conftest import PAPER_PATH
 
 
 def drive_mission(body: Body, cells: list[tuple[int, int]]) -> list[tuple[int, int]]:

@@ -12,10 +12,7 @@ import sys
 
 from hlacore.federates.robot_driver import MISCALIBRATED, PAPER_5X5, Body, commands_for_move
 
-from conftest import running_rtig
-
-PAPER_PATH = [(0, 0), (0, 1), (0, 2), (0, 3), (1, 3), (2, 3), (2, 2), (2, 1), (2, 0), (3, 0), (4, 0), (4, 1), (4, 2),
-              (4, 3), (4, 4)]
+from conftest import PAPER_PATH, running_rtig
 
 
 def run_demo(tmp_path: pathlib.Path, *args: str) -> tuple[subprocess.CompletedProcess[str], list[dict[str, str]]]:

@@ -24,8 +24,7 @@ from hlacore.federates.testbench import (
     write_trace,
 )
 
-PAPER_PATH = [(0, 0), (0, 1), (0, 2), (0, 3), (1, 3), (2, 3), (2, 2), (2, 1), (2, 0), (3, 0), (4, 0), (4, 1), (4, 2),
-              (4, 3), (4, 4)]
+from conftest import PAPER_PATH
 
 
 def report(cycle: int, cell: tuple[int, int], t: float = 100.0) -> LocationReport:

@@ -22,6 +22,7 @@ from hlacore.federates.robot_world import (
     trajectories,
 )
 from hlacore.federates.robot_world import render
+from hlacore.federates.robot_world.world import Pose
 
 CORRIDOR = """
 # a robot facing a wall 2 m ahead, and a second one behind it
@@ -239,14 +240,20 @@ def test_snapshot_png_shows_robots_walls_and_beams(tmp_path: pathlib.Path) -> No
     assert image.get(*image.to_pixel(1.0, 1.5)) == render.BACKGROUND
 
 
-def test_trajectory_data_and_clear_error_without_matplotlib(monkeypatch: pytest.MonkeyPatch,
-                                                           tmp_path: pathlib.Path) -> None:
+def corridor_run() -> tuple[World, list[dict[str, Pose]]]:
+    """The corridor with r1 driving ahead for three samples of 10 steps."""
     world = corridor(watchdog=None)
     samples = []
     world.command("r1", 1.0, 0.0)
     for _ in range(3):
         world.advance(10)
         samples.append(world.poses())
+    return world, samples
+
+
+def test_trajectory_data_and_clear_error_without_matplotlib(monkeypatch: pytest.MonkeyPatch,
+                                                           tmp_path: pathlib.Path) -> None:
+    world, samples = corridor_run()
     tracks = trajectories(samples)
     assert tracks["r1"] == [(pytest.approx(-1.9), 0.0), (pytest.approx(-1.8), 0.0), (pytest.approx(-1.7), 0.0)]
     assert tracks["r0"] == [(0.0, 0.0)] * 3
@@ -396,12 +403,7 @@ def test_trajectory_plot_names_everything_it_draws(tmp_path: pathlib.Path) -> No
     """Title, axes with units, and a legend naming the robots, the walls, start, end and the marks."""
     import matplotlib  # a test dependency (hlacore[test])
 
-    world = corridor(watchdog=None)
-    samples = []
-    world.command("r1", 1.0, 0.0)
-    for _ in range(3):
-        world.advance(10)
-        samples.append(world.poses())
+    world, samples = corridor_run()
     with matplotlib.rc_context({"svg.fonttype": "none"}):  # the texts stay text in the SVG
         svg = render.plot_trajectories(world, samples, tmp_path / "t.svg", title="a run",
                                        marks={"held back": [(0.1, 0.0)]}).read_text()

@@ -20,11 +20,9 @@ from hlacore.federates.robot_world import (
 )
 from hlacore.federates.robot_world import codec
 
-from conftest import Federate, barrier
+from conftest import ROVER_MODEL, Federate, barrier
 
-WORLD = """
-define sonar ranger ( sensor( pose [0 0 0 0] range [0.02 4.0] fov 40 samples 5 ) )
-define bot position ( size [0.33 0.33 0.4] drive "diff" sonar(pose [0.165 0 0 0]) )
+WORLD = ROVER_MODEL + """
 bot( pose [ 0 0 0 0 ] name "rover" )
 bot( pose [ 0 1 0 0 ] name "idle" )
 model( pose [ 3 0 0 0 ] size [ 0.2 3 0.5 ] )

@@ -234,6 +234,19 @@ def dropped_line(server: RtigProcess, client: RawClient, timeout: float = 5.0) -
     return wait_for_log(server, rf"rtig: dropped {re.escape(client.local)}\b[^\n]*", timeout)
 
 
+def closed_and_dropped(server: RtigProcess, client: RawClient) -> str:
+    """Once `client` has misbehaved: the gateway closes its connection, and the log line of dropping it."""
+    client.wait_eof()
+    return dropped_line(server, client)
+
+
+@contextlib.contextmanager
+def joined_raw_client(address: str, federate: str) -> Iterator[tuple[RawClient, int]]:
+    """A raw client joined to TestFed as `federate`: (the client, its federate handle)."""
+    with raw_client(address) as client:
+        yield client, client.join(federate)
+
+
 # ---- two well-behaved federates beside the hostile ones ----
 
 
@@ -330,19 +343,16 @@ def test_random_garbage_is_a_protocol_error(rtig: RtigProcess, legit: Legit, see
             data = u32(MAX_FRAME + 1 + rng.randrange(1 << 20)) + data[4:]
         with raw_client(rtig.address) as hostile:
             hostile.send(data, tolerate_drop=True)
-            hostile.wait_eof()
-            line = dropped_line(rtig, hostile)
+            line = closed_and_dropped(rtig, hostile)
         assert "protocol error" in line, line
     legit.check_working()
 
 
 def test_garbage_after_a_valid_join_resigns_the_federate(rtig: RtigProcess, legit: Legit) -> None:
     """Garbage from a joined federate drops it, names it in the log and frees its federate name."""
-    with raw_client(rtig.address) as hostile:
-        handle = hostile.join("garbler")
+    with joined_raw_client(rtig.address, "garbler") as (hostile, handle):
         hostile.send(random.Random(7).randbytes(4096), tolerate_drop=True)
-        hostile.wait_eof()
-        line = dropped_line(rtig, hostile)
+        line = closed_and_dropped(rtig, hostile)
     assert f"(federate {handle} of 'TestFed')" in line and "protocol error" in line, line
     again = Federate(rtig.address, "garbler")
     again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
@@ -365,19 +375,16 @@ def test_impossible_frame_length_is_refused_at_once(rtig: RtigProcess, legit: Le
     """A header with a huge (or too small) length is dropped at once, without waiting for the body."""
     with raw_client(rtig.address) as hostile:
         hostile.send(u32(length) + u16(T["Hello"]))
-        hostile.wait_eof()
-        line = dropped_line(rtig, hostile)
+        line = closed_and_dropped(rtig, hostile)
     assert f"protocol error: {why}" in line, line
     legit.check_working()
 
 
 def test_huge_length_after_joining(rtig: RtigProcess, legit: Legit) -> None:
     """A joined federate announcing a 4 GiB frame is dropped (exceeds the limit) and resigned."""
-    with raw_client(rtig.address) as hostile:
-        handle = hostile.join("bragger")
+    with joined_raw_client(rtig.address, "bragger") as (hostile, handle):
         hostile.send(u32(0xFFFFFFF0) + u16(T["UpdateAttributes"]) + b"\0" * 100)
-        hostile.wait_eof()
-        line = dropped_line(rtig, hostile)
+        line = closed_and_dropped(rtig, hostile)
     assert f"(federate {handle} of 'TestFed')" in line and "exceeds the limit" in line, line
     legit.check_working()
 
@@ -391,16 +398,14 @@ def test_truncated_frame_then_close(rtig: RtigProcess, legit: Legit, sent: int) 
     with raw_client(rtig.address) as hostile:
         hostile.send(hello()[:sent])
         hostile.sock.shutdown(socket.SHUT_WR)
-        hostile.wait_eof()
-        line = dropped_line(rtig, hostile)
+        line = closed_and_dropped(rtig, hostile)
     assert f"connection closed in the middle of a frame ({sent} bytes pending)" in line, line
     legit.check_working()
 
 
 def test_truncated_frame_then_close_after_joining(rtig: RtigProcess, legit: Legit) -> None:
     """A joined federate dying mid-frame is dropped and resigned: its object is removed at the subscriber."""
-    with raw_client(rtig.address) as hostile:
-        handle = hostile.join("halfway")
+    with joined_raw_client(rtig.address, "halfway") as (hostile, handle):
         robot, battery, _ = legit.handles()
         hostile.send(frame("PublishObjectClass", u32(robot) + handles([battery])))
         reply = hostile.call("RegisterObject", u32(robot) + string("halfway-object"))
@@ -409,8 +414,7 @@ def test_truncated_frame_then_close_after_joining(rtig: RtigProcess, legit: Legi
         update = frame("UpdateAttributes", u32(reply.handle) + u32(1) + u32(battery) + string(b"x" * 100))
         hostile.send(update[:50])
         hostile.sock.shutdown(socket.SHUT_WR)
-        hostile.wait_eof()
-        line = dropped_line(rtig, hostile)
+        line = closed_and_dropped(rtig, hostile)
     assert f"(federate {handle} of 'TestFed'): connection closed in the middle of a frame (50 bytes pending)" in line
     tick_until(lambda: any(int(a[0]) == reply.handle for a in legit.bob.amb.named("removeObjectInstance")), legit.bob.rtia)
     legit.check_working()
@@ -462,8 +466,7 @@ def test_wrong_handshake_is_a_protocol_error(rtig: RtigProcess, legit: Legit, fi
     """Anything but a well-formed Hello of version 1 first gets the connection dropped with a protocol error."""
     with raw_client(rtig.address) as hostile:
         hostile.send(first)
-        hostile.wait_eof()
-        line = dropped_line(rtig, hostile)
+        line = closed_and_dropped(rtig, hostile)
     assert f"protocol error: {why}" in line, line
     # The JoinFederation sent without a handshake was never handled: the name is free.
     again = Federate(rtig.address, "sneaky")
@@ -495,8 +498,7 @@ def test_service_before_join_is_a_protocol_error(rtig: RtigProcess, legit: Legit
     with raw_client(rtig.address) as hostile:
         hostile.handshake()
         hostile.send(frame(message, payload))
-        hostile.wait_eof()
-        line = dropped_line(rtig, hostile)
+        line = closed_and_dropped(rtig, hostile)
     assert f"protocol error: {message} sent before joining a federation" in line, line
     legit.check_working()
 
@@ -532,8 +534,7 @@ def test_undefined_handles_drop_and_resign_the_federate(
     """A joined federate naming a handle the FOM lacks is dropped (`not defined`) and resigned: its object is
     removed, a sync point does not wait for it, and its name is free again."""
     robot, battery, _ = legit.handles()
-    with raw_client(rtig.address) as hostile:
-        handle = hostile.join("hostile")
+    with joined_raw_client(rtig.address, "hostile") as (hostile, handle):
         hostile.send(frame("PublishObjectClass", u32(robot) + handles([battery])))
         reply = hostile.call("RegisterObject", u32(robot) + string("hostile-object"))
         assert reply.error == 0, reply.message
@@ -542,8 +543,7 @@ def test_undefined_handles_drop_and_resign_the_federate(
         if payload is None:
             payload = u32(robot) + handles([battery, 999])
         hostile.send(frame(message, payload))
-        hostile.wait_eof()
-        line = dropped_line(rtig, hostile)
+        line = closed_and_dropped(rtig, hostile)
     assert f"(federate {handle} of 'TestFed'): protocol error: " in line and why in line, line
     tick_until(lambda: any(int(a[0]) == reply.handle for a in bob.amb.named("removeObjectInstance")), bob.rtia)
     # A whole-federation sync point now involves alice and bob only.
@@ -576,11 +576,9 @@ def test_joined_federate_sending_nonsense_is_dropped(
     rtig: RtigProcess, legit: Legit, message: str, payload: bytes, why: str
 ) -> None:
     """A joined federate sending a gateway-only or malformed message is dropped and resigned, with a reason."""
-    with raw_client(rtig.address) as hostile:
-        handle = hostile.join("nonsense")
+    with joined_raw_client(rtig.address, "nonsense") as (hostile, handle):
         hostile.send(frame(message, payload))
-        hostile.wait_eof()
-        line = dropped_line(rtig, hostile)
+        line = closed_and_dropped(rtig, hostile)
     assert f"(federate {handle} of 'TestFed'): protocol error: " in line and why in line, line
     again = Federate(rtig.address, "nonsense")
     again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
@@ -763,8 +761,7 @@ def test_timestamp_below_the_senders_bound_is_a_protocol_error(rtig: RtigProcess
     robot, battery, _ = legit.handles()
     command, value = int(legit.command), int(legit.value)
     bob = legit.bob
-    with raw_client(rtig.address) as hasty:
-        handle = hasty.join("hasty")
+    with joined_raw_client(rtig.address, "hasty") as (hasty, handle):
         hasty.send(frame("PublishObjectClass", u32(robot) + handles([battery])))
         hasty.send(frame("PublishInteractionClass", u32(command)))
         reply = hasty.call("RegisterObject", u32(robot) + string("hasty-object"))
@@ -783,8 +780,7 @@ def test_timestamp_below_the_senders_bound_is_a_protocol_error(rtig: RtigProcess
             "delete": frame("DeleteObject", u32(reply.handle) + string("early") + optional_time(0.5) + u64(1)),
         }[message]
         hasty.send(early, tolerate_drop=True)
-        hasty.wait_eof()
-        line = dropped_line(rtig, hasty)
+        line = closed_and_dropped(rtig, hasty)
     what = {"interaction": "interaction", "update": "attribute update", "delete": "object deletion"}[message]
     assert f"(federate {handle} of 'TestFed'): protocol error: {what} at timestamp 0.5 is below the sender's " in line
     assert "output bound 1 " in line, line
@@ -836,8 +832,7 @@ def test_pending_regulation_enable_over_the_wire(rtig: RtigProcess, legit: Legit
             again = frame("EnableTimeRegulation", f64(5.0) + f64(1.0))
             advance = frame("TimeAdvance", u8(TAR) + f64(7.0))
             newcomer.send(again if then == "enable-again" else advance, tolerate_drop=True)
-            newcomer.wait_eof()
-            line = dropped_line(rtig, newcomer)
+            line = closed_and_dropped(rtig, newcomer)
             why = {
                 "enable-again": "enable time regulation while an enable is pending",
                 "advance-self": "time advance request while a regulation enable is pending",

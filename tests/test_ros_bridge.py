@@ -22,7 +22,7 @@ import sys
 import threading
 import time
 import xmlrpc.client
-from typing import Iterator, Optional
+from typing import Any, Iterator, Optional
 
 import pytest
 
@@ -31,11 +31,11 @@ from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFede
 from hlacore.federates.robot_world.federate import Pose
 from hlacore.federates.ros_bridge.children import stop_process
 
+from conftest import ROVER_MODEL
+
 PEERS = pathlib.Path(__file__).parent / "peers"
 DIST = os.environ.get("HLACORE_ROS_DIST_PACKAGES", "/usr/lib/python3/dist-packages")
-WORLD = """
-define sonar ranger ( sensor( pose [0 0 0 0] range [0.02 4.0] fov 40 samples 5 ) )
-define bot position ( size [0.33 0.33 0.4] drive "diff" sonar(pose [0.165 0 0 0]) )
+WORLD = ROVER_MODEL + """
 bot( pose [ 0 0 0 0 ] name "rover" )
 model( pose [ 3 0 0 0 ] size [ 0.2 3 0.5 ] )
 """
@@ -138,17 +138,43 @@ def roscore(ros: None, tmp_path: pathlib.Path) -> Iterator[dict[str, str]]:
         yield env
 
 
-def start_bridge(env: dict[str, str], address: str, *args: str) -> tuple[subprocess.Popen[str], Lines]:
-    proc = subprocess.Popen([sys.executable, "-m", "hlacore.federates.ros_bridge", "--rtig", address, *args],
+def start_bridge(env: dict[str, str], address: str, *args: str) -> subprocess.Popen[str]:
+    return subprocess.Popen([sys.executable, "-m", "hlacore.federates.ros_bridge", "--rtig", address, *args],
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                             text=True, env=env)
-    return proc, Lines(proc)
 
 
-def start_teleop(env: dict[str, str], *args: str) -> tuple[subprocess.Popen[str], Lines]:
-    proc = subprocess.Popen([sys.executable, str(PEERS / "ros_teleop.py"), *args], stdout=subprocess.PIPE,
+def start_teleop(env: dict[str, str], *args: str) -> subprocess.Popen[str]:
+    return subprocess.Popen([sys.executable, str(PEERS / "ros_teleop.py"), *args], stdout=subprocess.PIPE,
                             stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True, env=env)
-    return proc, Lines(proc)
+
+
+class Running:
+    """A started process and its output (Lines); once `running` has stopped it, its exit status and every
+    line it printed."""
+
+    def __init__(self, proc: subprocess.Popen[str]) -> None:
+        self.proc, self.out = proc, Lines(proc)
+        self.status: Optional[int] = None
+        self.lines: list[str] = []
+
+    def report(self, timeout: float) -> Any:
+        """For a node that ends by itself (tests/peers/ros_teleop.py): it exits 0 within `timeout` s; the JSON
+        line it printed last."""
+        assert self.proc.wait(timeout) == 0, self.out.rest()
+        return json.loads(self.out.wait_for("{", 5))
+
+
+@contextlib.contextmanager
+def running(proc: subprocess.Popen[str]) -> Iterator[Running]:
+    """`proc` (one of the start_* above) for the block; at the end, even on failure, it is stopped by pid
+    (stop_process; a process that has exited is only reaped) and the rest of its output is read."""
+    run = Running(proc)
+    try:
+        yield run
+    finally:
+        run.status = stop_process(proc)
+        run.lines = run.out.rest()
 
 
 @contextlib.contextmanager
@@ -182,27 +208,18 @@ def test_timed_bridge_round_trip(roscore: dict[str, str], gateway_address: str, 
     on ROS, stamped with federation time, equal to the world's state at the grant they were taken."""
     with world_federate(gateway_address, tmp_path) as (world, world_file):
         states = {0: state(world)}
-        bridge, bridge_out = start_bridge(roscore, gateway_address, "--world", str(world_file), "--clock",
-                                          "--rate", "20")
-        teleop: Optional[subprocess.Popen[str]] = None
-        try:
-            bridge_out.wait_for("ros_bridge ready", 60)
-            teleop, teleop_out = start_teleop(roscore, "/rover", "0.5", "0.2", "60", "--clock")
-            for _ in range(MAX_CYCLES):
-                granted = world.advance(timeout=30)
-                states[round(granted / PERIOD)] = state(world)
-                if teleop.poll() is not None:
-                    break
-            assert teleop.wait(30) == 0, teleop_out.rest()
-            seen = json.loads(teleop_out.wait_for("{", 5))
-        finally:
-            if teleop is not None:
-                stop_process(teleop)
-                teleop_out.rest()
-            status = stop_process(bridge)
-        lines = bridge_out.rest()
-        assert status == 0, lines
-        assert any(line.startswith("ros_bridge stopped at") for line in lines), lines
+        with running(start_bridge(roscore, gateway_address, "--world", str(world_file), "--clock", "--rate",
+                                  "20")) as bridge:
+            bridge.out.wait_for("ros_bridge ready", 60)
+            with running(start_teleop(roscore, "/rover", "0.5", "0.2", "60", "--clock")) as teleop:
+                for _ in range(MAX_CYCLES):
+                    granted = world.advance(timeout=30)
+                    states[round(granted / PERIOD)] = state(world)
+                    if teleop.proc.poll() is not None:
+                        break
+                seen = teleop.report(30)
+        assert bridge.status == 0, bridge.lines
+        assert any(line.startswith("ros_bridge stopped at") for line in bridge.lines), bridge.lines
 
     # the Twist reached the world: the robot drove at the commanded speed
     assert any(odom[3] == 0.5 for _pose, odom, _ranges in states.values())
@@ -232,26 +249,17 @@ def test_untimed_bridge_round_trip(roscore: dict[str, str], inprocess_gateway: o
     address = str(inprocess_gateway.address)  # type: ignore[attr-defined]
     with world_federate(address, tmp_path) as (world, world_file):
         states = [state(world)]
-        bridge, bridge_out = start_bridge(roscore, address, "--world", str(world_file), "--untimed")
-        teleop: Optional[subprocess.Popen[str]] = None
-        try:
-            bridge_out.wait_for("ros_bridge ready", 60)
-            teleop, teleop_out = start_teleop(roscore, "/rover", "0.5", "0.2", "60")
-            for _ in range(MAX_CYCLES):
-                world.advance(timeout=30)  # the world alone regulates: the test paces it
-                states.append(state(world))
-                if teleop.poll() is not None:
-                    break
-                time.sleep(0.005)
-            assert teleop.wait(30) == 0, teleop_out.rest()
-            seen = json.loads(teleop_out.wait_for("{", 5))
-        finally:
-            if teleop is not None:
-                stop_process(teleop)
-                teleop_out.rest()
-            status = stop_process(bridge)
-        lines = bridge_out.rest()
-        assert status == 0, lines
+        with running(start_bridge(roscore, address, "--world", str(world_file), "--untimed")) as bridge:
+            bridge.out.wait_for("ros_bridge ready", 60)
+            with running(start_teleop(roscore, "/rover", "0.5", "0.2", "60")) as teleop:
+                for _ in range(MAX_CYCLES):
+                    world.advance(timeout=30)  # the world alone regulates: the test paces it
+                    states.append(state(world))
+                    if teleop.proc.poll() is not None:
+                        break
+                    time.sleep(0.005)
+                seen = teleop.report(30)
+        assert bridge.status == 0, bridge.lines
     odometries = {(o[0], o[1]) for _pose, o, _ranges in states}
     assert (seen["odom"]["x"], seen["odom"]["y"]) in odometries and seen["odom"]["x"] > 0.2
     assert seen["scan"]["ranges"] in [[f32(r) for r in ranges] for _pose, _o, ranges in states]

@@ -8,47 +8,63 @@ never imports rospy. Skips without ROS, except under CI=true (see tests/test_ros
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import pathlib
 import subprocess
 import sys
 import time
-from typing import Any, Optional
+from typing import Any, Iterator
 
 import pytest
 from conftest import Federate
-from test_ros_bridge import WORLD, Lines, f32, ros, roscore, start_bridge, start_teleop  # noqa: F401
+from test_ros_bridge import WORLD, f32, ros, roscore, running, start_bridge, start_teleop  # noqa: F401
 
 import hlacore.rti as rti
 from hlacore import omt
 from hlacore.experiments.paper1 import scenario as paper1
 from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, codec, load_world
-from hlacore.federates.ros_bridge.children import stop_process
 from hlacore.federates.ros_bridge.stage_node import last_step_at_or_before
 
 PERIOD, DT = 0.1, 0.01
 
 
-def start_stage(env: dict[str, str], world_file: pathlib.Path, *args: str) -> tuple[subprocess.Popen[str], Lines]:
-    proc = subprocess.Popen([sys.executable, "-m", "hlacore.federates.ros_bridge.stage_node", str(world_file),
+def start_stage(env: dict[str, str], world_file: pathlib.Path, *args: str) -> subprocess.Popen[str]:
+    return subprocess.Popen([sys.executable, "-m", "hlacore.federates.ros_bridge.stage_node", str(world_file),
                              *args], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                             text=True, env=env)
-    return proc, Lines(proc)
 
 
-def join_driver(address: str) -> tuple[Federate, dict[Any, str], Any, dict[str, Any]]:
-    """The test's driver federate: subscribes every attribute of the robot (handle -> name) and publishes
-    the command interaction (its class and parameter handles by name)."""
-    fed = Federate(address, "driver", FEDERATION)
-    rtia = fed.rtia
-    robot_class = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
-    attributes = {rtia.getAttributeHandle(n, robot_class): n for n in codec.ATTRIBUTES}
-    rtia.subscribeObjectClassAttributes(robot_class, list(attributes))
-    cmd = rtia.getInteractionClassHandle(codec.INTERACTION)
-    params = {n: rtia.getParameterHandle(n, cmd) for n in codec.PARAMETERS}
-    rtia.publishInteractionClass(cmd)
-    return fed, attributes, cmd, params
+def stage_files(tmp_path: pathlib.Path) -> tuple[pathlib.Path, pathlib.Path]:
+    """The stage node's world file (WORLD) and where it writes its summary."""
+    world_file = tmp_path / "rover.world"
+    world_file.write_text(WORLD)
+    return world_file, tmp_path / "stage.json"
+
+
+@contextlib.contextmanager
+def driver(address: str) -> Iterator[tuple[Federate, dict[Any, str], Any, dict[str, Any]]]:
+    """The robot world's federation, created here, and the test's driver federate in it: it subscribes every
+    attribute of the robot (handle -> name) and publishes the command interaction (its class and parameter
+    handles by name). At the end the driver resigns and the federation is destroyed."""
+    creator = rti.RTIAmbassador(address)
+    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
+    try:
+        fed = Federate(address, "driver", FEDERATION)
+        try:
+            rtia = fed.rtia
+            robot_class = rtia.getObjectClassHandle(codec.OBJECT_CLASS)
+            attributes = {rtia.getAttributeHandle(n, robot_class): n for n in codec.ATTRIBUTES}
+            rtia.subscribeObjectClassAttributes(robot_class, list(attributes))
+            cmd = rtia.getInteractionClassHandle(codec.INTERACTION)
+            params = {n: rtia.getParameterHandle(n, cmd) for n in codec.PARAMETERS}
+            rtia.publishInteractionClass(cmd)
+            yield fed, attributes, cmd, params
+        finally:
+            fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+    finally:
+        creator.destroyFederationExecution(FEDERATION)
 
 
 def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_address: str,
@@ -102,55 +118,37 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
     with federation time G + L, holding exactly the state a World alone had at G with the same commands.
     A command for a robot the node does not have, or that does not decode, is dropped by the bridge, a NaN
     one by the node (counted; both keep serving)."""
-    world_file = tmp_path / "rover.world"
-    world_file.write_text(WORLD)
-    creator = rti.RTIAmbassador(gateway_address)
-    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
-    summary = tmp_path / "stage.json"
-    stage, stage_out = start_stage(roscore, world_file, "--summary", str(summary))
-    fed: Optional[Federate] = None
-    bridge: Optional[subprocess.Popen[str]] = None
+    world_file, summary = stage_files(tmp_path)
     commands: list[tuple[float, float, float]] = []
-    try:
-        stage_out.wait_for("stage_node ready", 60)
-        fed, attributes, cmd, params = join_driver(gateway_address)
+    with (driver(gateway_address) as (fed, attributes, cmd, params),
+          running(start_stage(roscore, world_file, "--summary", str(summary))) as stage):
+        stage.out.wait_for("stage_node ready", 60)
         rtia = fed.rtia
         fed.enable_time(lookahead=PERIOD)
-        bridge, bridge_out = start_bridge(roscore, gateway_address, "--world-node", str(world_file), "--acks",
-                                          "--clock", "--await-state", "5", "--wait-connections", "60")
-        bridge_out.wait_for("ros_bridge ready", 60)
-        now = 0.0
-        for k in range(20):
-            linear, angular = (0.5, 0.2) if k < 15 else (0.0, 0.0)
-            stamp = now + PERIOD
-            rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack("rover"),
-                                       params["linear"]: codec.SPEED.pack(linear),
-                                       params["angular"]: codec.SPEED.pack(angular)}, "test", stamp)
-            commands.append((stamp, linear, angular))
-            if k == 5:  # bad input: an unknown robot, a speed that does not decode, a NaN speed
-                for robot, bad in (("ghost", codec.SPEED.pack(0.3)), ("rover", b"\x00"),
-                                   ("rover", codec.SPEED.pack(math.nan))):
-                    rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack(robot), params["linear"]: bad,
-                                               params["angular"]: codec.SPEED.pack(0.0)}, "test", stamp)
-            now += PERIOD  # the bridge's grid when it serves a node: sums
-            rtia.timeAdvanceRequest(now)
-            assert rtia.await_grant(30) == now
-    finally:
-        lines: list[str] = []
-        if bridge is not None:
-            status, lines = stop_process(bridge), bridge_out.rest()
-            assert status == 0, lines
-        stop_process(stage)
-        stage_lines = stage_out.rest()
-        if fed is not None:
-            fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-        creator.destroyFederationExecution(FEDERATION)
-
-    assert fed is not None
+        with running(start_bridge(roscore, gateway_address, "--world-node", str(world_file), "--acks", "--clock",
+                                  "--await-state", "5", "--wait-connections", "60")) as bridge:
+            bridge.out.wait_for("ros_bridge ready", 60)
+            now = 0.0
+            for k in range(20):
+                linear, angular = (0.5, 0.2) if k < 15 else (0.0, 0.0)
+                stamp = now + PERIOD
+                rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack("rover"),
+                                           params["linear"]: codec.SPEED.pack(linear),
+                                           params["angular"]: codec.SPEED.pack(angular)}, "test", stamp)
+                commands.append((stamp, linear, angular))
+                if k == 5:  # bad input: an unknown robot, a speed that does not decode, a NaN speed
+                    for robot, bad in (("ghost", codec.SPEED.pack(0.3)), ("rover", b"\x00"),
+                                       ("rover", codec.SPEED.pack(math.nan))):
+                        rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack(robot), params["linear"]: bad,
+                                                   params["angular"]: codec.SPEED.pack(0.0)}, "test", stamp)
+                now += PERIOD  # the bridge's grid when it serves a node: sums
+                rtia.timeAdvanceRequest(now)
+                assert rtia.await_grant(30) == now
+    assert bridge.status == 0, bridge.lines
     assert any(line.startswith("ros_bridge stopped") and " 0 late acks" in line and " 2 ignored" in line
-               for line in lines), lines
+               for line in bridge.lines), bridge.lines
     ran = json.loads(summary.read_text())
-    assert ran["rejected"] == 1 and ran["commands"] >= 20, stage_lines
+    assert ran["rejected"] == 1 and ran["commands"] >= 20, stage.lines
     names = {args[0]: args[2] for args in fed.amb.named("discoverObjectInstance")}
     assert set(names.values()) == {"rover"}
     reflections: list[tuple[float, dict[str, Any]]] = []
@@ -186,23 +184,12 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
 def test_stage_node_on_its_own_clock(roscore: dict[str, str], tmp_path: pathlib.Path) -> None:
     """Like stageros: with --rate the node runs its own clock (/clock, /use_sim_time), applies Twist on
     /<robot>/cmd_vel and publishes odom, base_scan and range stamped with sim time on interval_sim's grid."""
-    world_file = tmp_path / "rover.world"
-    world_file.write_text(WORLD)
-    summary = tmp_path / "stage.json"
-    stage, stage_out = start_stage(roscore, world_file, "--rate", "5", "--summary", str(summary))
-    teleop: Optional[subprocess.Popen[str]] = None
-    try:
-        stage_out.wait_for("stage_node ready", 60)
-        teleop, teleop_out = start_teleop(roscore, "/rover", "0.5", "0.2", "60", "--clock")
-        assert teleop.wait(90) == 0, teleop_out.rest()
-        seen = json.loads(teleop_out.wait_for("{", 5))
-    finally:
-        if teleop is not None:
-            stop_process(teleop)
-            teleop_out.rest()
-        status = stop_process(stage)
-    lines = stage_out.rest()
-    assert status == 0 and any(line.startswith("stage_node stopped at") for line in lines), lines
+    world_file, summary = stage_files(tmp_path)
+    with running(start_stage(roscore, world_file, "--rate", "5", "--summary", str(summary))) as stage:
+        stage.out.wait_for("stage_node ready", 60)
+        with running(start_teleop(roscore, "/rover", "0.5", "0.2", "60", "--clock")) as teleop:
+            seen = teleop.report(90)
+    assert stage.status == 0 and any(line.startswith("stage_node stopped at") for line in stage.lines), stage.lines
     odom = seen["odom"]
     assert odom["v"] == 0.5 and odom["x"] > 0.2 and odom["frame"] == "rover/odom"
     assert odom["stamp"] == pytest.approx(round(odom["stamp"] / PERIOD) * PERIOD, abs=1e-8)
@@ -220,45 +207,29 @@ def test_untimed_bridge_to_a_free_running_node(roscore: dict[str, str], inproces
     once, and the node's state comes back as receive-order reflections (no timestamp), each a state the
     node had."""
     address = str(inprocess_gateway.address)
-    world_file = tmp_path / "rover.world"
-    world_file.write_text(WORLD)
-    summary = tmp_path / "stage.json"
-    creator = rti.RTIAmbassador(address)
-    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
-    stage, stage_out = start_stage(roscore, world_file, "--rate", "1", "--summary", str(summary))
-    fed: Optional[Federate] = None
-    bridge: Optional[subprocess.Popen[str]] = None
-    try:
-        stage_out.wait_for("stage_node ready", 60)
-        fed, attributes, cmd, params = join_driver(address)
+    world_file, summary = stage_files(tmp_path)
+    with (driver(address) as (fed, attributes, cmd, params),
+          running(start_stage(roscore, world_file, "--rate", "1", "--summary", str(summary))) as stage):
+        stage.out.wait_for("stage_node ready", 60)
         rtia = fed.rtia
-        bridge, bridge_out = start_bridge(roscore, address, "--world-node", str(world_file), "--untimed",
-                                          "--wait-connections", "60")
-        bridge_out.wait_for("ros_bridge ready", 60)
-        poses: list[tuple[float, float]] = []
-        deadline = time.monotonic() + 60
-        while not poses or poses[-1][0] <= 0.3:
-            assert time.monotonic() < deadline, f"the robot did not get past x = 0.3: {poses[-3:]}"
-            rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack("rover"),
-                                       params["linear"]: codec.SPEED.pack(0.5),
-                                       params["angular"]: codec.SPEED.pack(0.0)}, "test")
-            rtia.tick(0.05, 0.05)
-            for obj, values, _tag, _order, _transport, *rest in fed.amb.named("reflectAttributeValues"):
-                assert not rest, "untimed: receive order, no timestamp"
-                for h, v in values.items():
-                    if attributes[h] == "pose":
-                        x, y, _theta = codec.unpack(codec.POSE, v)  # type: ignore[misc]
-                        poses.append((x, y))
-            fed.amb.calls.clear()
-    finally:
-        lines: list[str] = []
-        if bridge is not None:
-            status, lines = stop_process(bridge), bridge_out.rest()
-            assert status == 0, lines
-        stop_process(stage)
-        stage_out.rest()
-        if fed is not None:
-            fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-        creator.destroyFederationExecution(FEDERATION)
+        with running(start_bridge(roscore, address, "--world-node", str(world_file), "--untimed",
+                                  "--wait-connections", "60")) as bridge:
+            bridge.out.wait_for("ros_bridge ready", 60)
+            poses: list[tuple[float, float]] = []
+            deadline = time.monotonic() + 60
+            while not poses or poses[-1][0] <= 0.3:
+                assert time.monotonic() < deadline, f"the robot did not get past x = 0.3: {poses[-3:]}"
+                rtia.sendInteraction(cmd, {params["robot"]: codec.NAME.pack("rover"),
+                                           params["linear"]: codec.SPEED.pack(0.5),
+                                           params["angular"]: codec.SPEED.pack(0.0)}, "test")
+                rtia.tick(0.05, 0.05)
+                for obj, values, _tag, _order, _transport, *rest in fed.amb.named("reflectAttributeValues"):
+                    assert not rest, "untimed: receive order, no timestamp"
+                    for h, v in values.items():
+                        if attributes[h] == "pose":
+                            x, y, _theta = codec.unpack(codec.POSE, v)  # type: ignore[misc]
+                            poses.append((x, y))
+                fed.amb.calls.clear()
+    assert bridge.status == 0, bridge.lines
     had = {(p[0], p[1]) for p in [[0.0, 0.0]] + [ps["rover"] for ps in json.loads(summary.read_text())["poses"]]}
     assert set(poses) <= had and poses[-1][0] > 0.3

@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+import contextlib
 import pathlib
 import shutil
 import signal
 import socket
 import subprocess
 import time
-from typing import Iterator
+from typing import Callable, Iterator
 
 import pytest
 
@@ -24,11 +25,20 @@ def run_rtig(*args: str) -> subprocess.CompletedProcess[str]:
     )
 
 
+StartRtig = Callable[..., RtigProcess]
+
+
 @pytest.fixture
-def server_factory(tmp_path: pathlib.Path) -> Iterator[list[RtigProcess]]:
-    """rtig instances started by a test; each is stopped by pid and checked for sanitizer reports."""
+def server_factory(tmp_path: pathlib.Path) -> Iterator[StartRtig]:
+    """start(*args): an rtig with those arguments, logging in tmp_path; at the end of the test each one
+    started is stopped by pid and checked for sanitizer reports."""
     started: list[RtigProcess] = []
-    yield started
+
+    def start(*args: str) -> RtigProcess:
+        started.append(RtigProcess(tmp_path, *args))
+        return started[-1]
+
+    yield start
     for server in started:
         server.stop()
         assert not SANITIZER_REPORT.search(server.log()), server.log()
@@ -52,11 +62,9 @@ def test_readiness_line_is_the_only_stdout(tmp_path: pathlib.Path) -> None:
     assert not SANITIZER_REPORT.search(server.log()), server.log()
 
 
-def test_two_instances_get_different_free_ports(tmp_path: pathlib.Path, server_factory: list[RtigProcess]) -> None:
+def test_two_instances_get_different_free_ports(server_factory: StartRtig) -> None:
     """Two `--port 0` servers each report their own real port, and each accepts a federate."""
-    server_factory.append(RtigProcess(tmp_path))
-    server_factory.append(RtigProcess(tmp_path))
-    a, b = server_factory
+    a, b = server_factory(), server_factory()
     assert a.port != b.port
     for server in (a, b):
         rtia = rti.RTIAmbassador(server.address)
@@ -149,48 +157,47 @@ def fom_dir(tmp_path: pathlib.Path, monkeypatch: pytest.MonkeyPatch) -> pathlib.
     return foms
 
 
+@contextlib.contextmanager
+def joined_to_f(server: RtigProcess, fed_file: str, resign: rti.ResignAction) -> Iterator[Federate]:
+    """Federation F created from `fed_file` (as the federate names it) and federate 'joiner' in it; at the end
+    it resigns with `resign` and F is destroyed."""
+    creator = rti.RTIAmbassador(server.address)
+    creator.createFederationExecution("F", fed_file)
+    fed = Federate(server.address, "joiner", federation="F")
+    yield fed
+    fed.rtia.resignFederationExecution(resign)
+    creator.destroyFederationExecution("F")
+
+
 def test_fom_path_finds_a_fed_file_the_federate_cannot_read(
-    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: list[RtigProcess]
+    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: StartRtig
 ) -> None:
     """A FED name missing from the federate's CWD is found in the gateway's --fom-path; joining resolves handles."""
     assert not pathlib.Path("only-on-gateway.fed").exists()
-    server = RtigProcess(tmp_path, "--fom-path", str(tmp_path / "empty-dir"), "--fom-path", str(fom_dir))
-    server_factory.append(server)
-    creator = rti.RTIAmbassador(server.address)
-    creator.createFederationExecution("F", "only-on-gateway.fed")
-    fed = Federate(server.address, "joiner", federation="F")
-    robot = fed.rtia.getObjectClassHandle("robot")
-    assert fed.rtia.getObjectClassHandle(fed.rtia.getObjectClassName(robot)) == robot
-    location = fed.rtia.getAttributeHandle("location", robot)
-    assert fed.rtia.getAttributeName(location, robot) == "location"
-    command = fed.rtia.getInteractionClassHandle("command")
-    assert fed.rtia.getParameterName(fed.rtia.getParameterHandle("value", command), command) == "value"
-    fed.rtia.publishObjectClass(robot, [location])
-    fed.rtia.registerObjectInstance(robot, "r1")
-    fed.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-    creator.destroyFederationExecution("F")
+    server = server_factory("--fom-path", str(tmp_path / "empty-dir"), "--fom-path", str(fom_dir))
+    with joined_to_f(server, "only-on-gateway.fed", rti.ResignAction.DeleteObjectsAndReleaseAttributes) as fed:
+        robot = fed.rtia.getObjectClassHandle("robot")
+        assert fed.rtia.getObjectClassHandle(fed.rtia.getObjectClassName(robot)) == robot
+        location = fed.rtia.getAttributeHandle("location", robot)
+        assert fed.rtia.getAttributeName(location, robot) == "location"
+        command = fed.rtia.getInteractionClassHandle("command")
+        assert fed.rtia.getParameterName(fed.rtia.getParameterHandle("value", command), command) == "value"
+        fed.rtia.publishObjectClass(robot, [location])
+        fed.rtia.registerObjectInstance(robot, "r1")
 
 
-def test_fom_path_uses_the_base_name_of_a_relative_path(
-    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: list[RtigProcess]
-) -> None:
+def test_fom_path_uses_the_base_name_of_a_relative_path(fom_dir: pathlib.Path, server_factory: StartRtig) -> None:
     """A relative FED path with directories the federate cannot read is looked up by its base name in --fom-path."""
-    server = RtigProcess(tmp_path, "--fom-path", str(fom_dir))
-    server_factory.append(server)
-    creator = rti.RTIAmbassador(server.address)
-    creator.createFederationExecution("F", "no/such/dir/only-on-gateway.fed")
-    fed = Federate(server.address, "joiner", federation="F")
-    assert int(fed.rtia.getObjectClassHandle("robot")) > 0
-    fed.rtia.resignFederationExecution(rti.ResignAction.NoAction)
-    creator.destroyFederationExecution("F")
+    server = server_factory("--fom-path", str(fom_dir))
+    with joined_to_f(server, "no/such/dir/only-on-gateway.fed", rti.ResignAction.NoAction) as fed:
+        assert int(fed.rtia.getObjectClassHandle("robot")) > 0
 
 
 def test_fom_path_name_found_nowhere_raises_could_not_open_fed(
-    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: list[RtigProcess]
+    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: StartRtig
 ) -> None:
     """A FED name that neither the federate nor any --fom-path directory has raises CouldNotOpenFED."""
-    server = RtigProcess(tmp_path, "--fom-path", str(fom_dir))
-    server_factory.append(server)
+    server = server_factory("--fom-path", str(fom_dir))
     creator = rti.RTIAmbassador(server.address)
     with pytest.raises(rti.CouldNotOpenFED, match="nowhere.fed"):
         creator.createFederationExecution("F", "nowhere.fed")
@@ -200,21 +207,18 @@ def test_fom_path_name_found_nowhere_raises_could_not_open_fed(
         creator.destroyFederationExecution("F")
 
 
-def test_without_fom_path_a_missing_fed_raises_could_not_open_fed(
-    tmp_path: pathlib.Path, fom_dir: pathlib.Path, server_factory: list[RtigProcess]
-) -> None:
+def test_without_fom_path_a_missing_fed_raises_could_not_open_fed(fom_dir: pathlib.Path,
+                                                                   server_factory: StartRtig) -> None:
     """Without --fom-path the gateway does not find the file either: CouldNotOpenFED."""
-    server = RtigProcess(tmp_path)
-    server_factory.append(server)
+    server = server_factory()
     creator = rti.RTIAmbassador(server.address)
     with pytest.raises(rti.CouldNotOpenFED):
         creator.createFederationExecution("F", "only-on-gateway.fed")
 
 
-def test_verbose_logs_the_join(tmp_path: pathlib.Path, server_factory: list[RtigProcess]) -> None:
+def test_verbose_logs_the_join(server_factory: StartRtig) -> None:
     """`--verbose` logs the connection, the federation's creation and a federate's join to stderr."""
-    server = RtigProcess(tmp_path, "--verbose")
-    server_factory.append(server)
+    server = server_factory("--verbose")
     creator = rti.RTIAmbassador(server.address)
     creator.createFederationExecution("TestFed", ROBOT_FED)
     fed = Federate(server.address, "chatty")
@@ -227,10 +231,9 @@ def test_verbose_logs_the_join(tmp_path: pathlib.Path, server_factory: list[Rtig
     wait_for_log(server, r"rtig: destroyed federation 'TestFed'")
 
 
-def test_quiet_by_default(tmp_path: pathlib.Path, server_factory: list[RtigProcess]) -> None:
+def test_quiet_by_default(server_factory: StartRtig) -> None:
     """Without --verbose a join and an orderly disconnect are not logged."""
-    server = RtigProcess(tmp_path)
-    server_factory.append(server)
+    server = server_factory()
     creator = rti.RTIAmbassador(server.address)
     creator.createFederationExecution("TestFed", ROBOT_FED)
     fed = Federate(server.address, "quiet")

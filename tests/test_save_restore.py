@@ -5,7 +5,7 @@ saves, save files, restoring after `rtig` was restarted, and unusable saves. Con
 from __future__ import annotations
 
 import pathlib
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 import hlacore
 import hlacore.rti as rti
@@ -50,6 +50,12 @@ def save(label: str, requester: Fed, *feds: Fed, time: Optional[float] = None) -
     """requestFederationSave, every federate completes its save, all see federationSaved."""
     requester.rtia.requestFederationSave(label, time) if time is not None else requester.rtia.requestFederationSave(label)
     complete_save(label, *feds)
+
+
+def request_save(label: str, requester: Fed, *feds: Fed) -> None:
+    """requester asks for save `label`; returns once every one of feds has been told to save."""
+    requester.rtia.requestFederationSave(label)
+    tick_all(lambda: all(f.named("initiateFederateSave") for f in feds), *feds)
 
 
 def complete_save(label: str, *feds: Fed) -> None:
@@ -99,8 +105,7 @@ def testfed(gateway_address: str):
 
 def test_every_federate_saves_then_all_are_told_federation_saved(testfed, gateway_address):
     a, b = testfed("a"), testfed("b")
-    a.rtia.requestFederationSave("s1")
-    tick_all(lambda: a.named("initiateFederateSave") and b.named("initiateFederateSave"), a, b)
+    request_save("s1", a, a, b)
     b.rtia.federateSaveBegun()
     b.rtia.federateSaveComplete()
     settle(a.rtia, b.rtia)
@@ -115,8 +120,7 @@ def test_every_federate_saves_then_all_are_told_federation_saved(testfed, gatewa
 
 def test_a_federate_that_cannot_save_makes_the_save_fail(testfed, gateway_address):
     a, b = testfed("a"), testfed("b")
-    b.rtia.requestFederationSave("s2")
-    tick_all(lambda: a.named("initiateFederateSave") and b.named("initiateFederateSave"), a, b)
+    request_save("s2", b, a, b)
     a.rtia.federateSaveComplete()
     b.rtia.federateSaveNotComplete()
     tick_all(lambda: a.named("federationNotSaved") and b.named("federationNotSaved"), a, b)
@@ -126,6 +130,28 @@ def test_a_federate_that_cannot_save_makes_the_save_fail(testfed, gateway_addres
     tick_all(lambda: a.named("requestFederationRestoreFailed"), a)
     [(label, reason)] = a.named("requestFederationRestoreFailed")
     assert label == "s2" and "no save labelled 's2'" in reason
+
+
+def refuses_while_busy(error: type[Exception], a: Fed, obj: Any, *more: Callable[[], object]) -> None:
+    """a's client, told of a save or restore, raises `error` itself for each call: a time advance, an update
+    of obj, resigning, another save or restore request, then `more`."""
+    for call in (
+        lambda: a.rtia.timeAdvanceRequest(1.0),
+        lambda: a.rtia.updateAttributeValues(obj, {a.location: b"x"}, "t"),
+        lambda: a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes),
+        lambda: a.rtia.requestFederationSave("again"),
+        lambda: a.rtia.requestFederationRestore("busy"),
+        *more,
+    ):
+        with pytest.raises(error):
+            call()
+
+
+def accepted_once(answer: Callable[[], object], error: type[Exception]) -> None:
+    """A federate's answer to a save or restore is taken once; a second has nothing to answer: `error`."""
+    answer()
+    with pytest.raises(error):
+        answer()
 
 
 def test_services_refused_during_a_save_and_a_restore(testfed, gateway_address):
@@ -153,29 +179,19 @@ def test_services_refused_during_a_save_and_a_restore(testfed, gateway_address):
         Fed(gateway_address, "late")
     tick_all(lambda: a.named("initiateFederateSave") and b.named("initiateFederateSave"), a, b)
     # Once told, the client refuses by itself.
-    for call in (
-        lambda: a.rtia.timeAdvanceRequest(1.0),
+    refuses_while_busy(
+        rti.SaveInProgress, a, obj,
         lambda: a.rtia.nextEventRequest(1.0),
         lambda: a.rtia.enableTimeRegulation(0.0, 1.0),
         lambda: a.rtia.enableTimeConstrained(),
         lambda: a.rtia.modifyLookahead(2.0),
-        lambda: a.rtia.updateAttributeValues(obj, {a.location: b"x"}, "t"),
         lambda: a.rtia.registerObjectInstance(obj_class),
         lambda: a.rtia.deleteObjectInstance(obj, "t"),
-        lambda: a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes),
-        lambda: a.rtia.requestFederationSave("again"),
-        lambda: a.rtia.requestFederationRestore("busy"),
-    ):
-        with pytest.raises(rti.SaveInProgress):
-            call()
+    )
     with pytest.raises(rti.RestoreNotRequested):
         a.rtia.federateRestoreComplete()
-    a.rtia.federateSaveBegun()
-    with pytest.raises(rti.SaveNotInitiated):
-        a.rtia.federateSaveBegun()
-    a.rtia.federateSaveComplete()
-    with pytest.raises(rti.SaveNotInitiated):
-        a.rtia.federateSaveComplete()
+    accepted_once(a.rtia.federateSaveBegun, rti.SaveNotInitiated)
+    accepted_once(a.rtia.federateSaveComplete, rti.SaveNotInitiated)
     b.rtia.federateSaveComplete()
     tick_all(lambda: a.named("federationSaved") and b.named("federationSaved"), a, b)
     # Services work again.
@@ -186,20 +202,10 @@ def test_services_refused_during_a_save_and_a_restore(testfed, gateway_address):
     with pytest.raises(rti.RestoreInProgress):
         Fed(gateway_address, "late")
     tick_all(lambda: a.named("initiateFederateRestore") and b.named("initiateFederateRestore"), a, b)
-    for call in (
-        lambda: a.rtia.timeAdvanceRequest(1.0),
-        lambda: a.rtia.updateAttributeValues(obj, {a.location: b"x"}, "t"),
-        lambda: a.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes),
-        lambda: a.rtia.requestFederationSave("again"),
-        lambda: a.rtia.requestFederationRestore("busy"),
-    ):
-        with pytest.raises(rti.RestoreInProgress):
-            call()
+    refuses_while_busy(rti.RestoreInProgress, a, obj)
     with pytest.raises(rti.SaveNotInitiated):
         a.rtia.federateSaveComplete()
-    a.rtia.federateRestoreComplete()
-    with pytest.raises(rti.RestoreNotRequested):
-        a.rtia.federateRestoreComplete()
+    accepted_once(a.rtia.federateRestoreComplete, rti.RestoreNotRequested)
     b.rtia.federateRestoreNotComplete()
     tick_all(lambda: a.named("federationNotRestored") and b.named("federationNotRestored"), a, b)
     assert not a.named("federationRestored")
@@ -368,8 +374,7 @@ def test_save_file_and_restore_after_rtig_restart(tmp_path: pathlib.Path):
             assert peer_says(peer) == {"ready": True, "handle": 2}
             r1 = a.rtia.registerObjectInstance(a.robot, "r1")
             a.rtia.updateAttributeValues(r1, {a.location: b"queued at 3"}, "before", 3.0)
-            a.rtia.requestFederationSave("snap")
-            tick_all(lambda: a.named("initiateFederateSave"), a)
+            request_save("snap", a, a)
             a.rtia.federateSaveComplete()
             tick_all(lambda: a.named("federationSaved"), a)
             assert peer_says(peer) == {"event": "initiateFederateSave", "label": "snap"}
@@ -544,8 +549,7 @@ def test_what_is_sent_to_a_saving_federate_waits_and_is_part_of_the_save(testfed
     a, b = testfed("a"), testfed("b")
     a.rtia.subscribeObjectClassAttributes(a.robot, [a.location])
     b.rtia.publishObjectClass(b.robot, [b.location])
-    a.rtia.requestFederationSave("window")
-    tick_all(lambda: a.named("initiateFederateSave"), a)  # b does not tick yet
+    request_save("window", a, a)  # b does not tick yet
     b.rtia.registerObjectInstance(b.robot, "during")
     settle(a.rtia)
     assert not a.named("discoverObjectInstance")

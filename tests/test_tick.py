@@ -10,16 +10,13 @@ import pytest
 
 import hlacore.rti as rti
 
-from conftest import ROBOT_FED, barrier, python_subprocess, tick_until
+from conftest import ROBOT_FED, barrier, python_subprocess, share_robot_location, tick_until
 
 
 @pytest.fixture
 def robot_pair(federation):
     pub, sub = federation("publisher"), federation("subscriber")
-    robot = pub.rtia.getObjectClassHandle("robot")
-    location = pub.rtia.getAttributeHandle("location", robot)
-    pub.rtia.publishObjectClass(robot, [location])
-    sub.rtia.subscribeObjectClassAttributes(robot, [location])
+    robot, location = share_robot_location(pub, sub)
     barrier(sub.rtia)
     obj = pub.rtia.registerObjectInstance(robot)
     return pub, sub, obj, location

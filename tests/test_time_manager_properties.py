@@ -43,22 +43,22 @@ def is_tso_payload(p: bytes) -> bool:
 # ---------------------------------------------------------------------------------------------- driver
 
 
-def execute(tm: Any, op: tuple, present: List[int]) -> tuple:
-    """Apply one operation to the C++ class, then release() and every query: the raw observable trace."""
+def apply(tm: Any, op: tuple) -> Any:
+    """Apply one operation to a time manager: the C++ class or the reference model, which share the method
+    names. Returns what enable_regulation, disable_constrained (as a list) and retract return, else None."""
     name = op[0]
-    ret: Any = None
     if name == "add":
         tm.add_federate(op[1])
     elif name == "remove":
         tm.remove_federate(op[1])
     elif name == "enable_regulation":
-        ret = tm.enable_regulation(op[1], op[2], op[3])
+        return tm.enable_regulation(op[1], op[2], op[3])
     elif name == "disable_regulation":
         tm.disable_regulation(op[1])
     elif name == "enable_constrained":
         tm.enable_constrained(op[1])
     elif name == "disable_constrained":
-        ret = list(tm.disable_constrained(op[1]))
+        return list(tm.disable_constrained(op[1]))
     elif name == "async":
         tm.set_asynchronous_delivery(op[1], op[2])
     elif name == "lookahead":
@@ -72,9 +72,15 @@ def execute(tm: Any, op: tuple, present: List[int]) -> tuple:
     elif name == "send_ro":
         tm.enqueue_receive_order(op[1], op[2])
     elif name == "retract":
-        ret = tm.retract(op[1], op[2])
+        return tm.retract(op[1], op[2])
     else:  # pragma: no cover
         raise AssertionError(op)
+    return None
+
+
+def execute(tm: Any, op: tuple, present: List[int]) -> tuple:
+    """Apply one operation to the C++ class, then release() and every query: the raw observable trace."""
+    ret = apply(tm, op)
     released = [(f, list(frames), g, ce, re) for f, frames, g, ce, re in tm.release()]
     queries = {
         f: (
@@ -145,42 +151,12 @@ class Harness:
         lookahead. It knows nothing of the bounds: send() checks that they never exceed this."""
         return max(self.ref.sending_minimum(f), self.kept.get(f, -INF))
 
-    def _model_apply(self, op: tuple) -> Any:
-        name, ref = op[0], self.ref
-        if name == "add":
-            ref.add_federate(op[1])
-        elif name == "remove":
-            ref.remove_federate(op[1])
-        elif name == "enable_regulation":
-            return ref.enable_regulation(op[1], op[2], op[3])
-        elif name == "disable_regulation":
-            ref.disable_regulation(op[1])
-        elif name == "enable_constrained":
-            ref.enable_constrained(op[1])
-        elif name == "disable_constrained":
-            return ref.disable_constrained(op[1])
-        elif name == "async":
-            ref.set_asynchronous_delivery(op[1], op[2])
-        elif name == "lookahead":
-            ref.modify_lookahead(op[1], op[2])
-        elif name == "request":
-            ref.request(op[1], op[2], op[3])
-        elif name == "send":
-            _, sender, ts, serial, receivers = op
-            for r in receivers:
-                ref.enqueue_tso(r, ts, sender, serial, tso_payload(ts, sender, serial))
-        elif name == "send_ro":
-            ref.enqueue_receive_order(op[1], op[2])
-        elif name == "retract":
-            return ref.retract(op[1], op[2])
-        return None
-
     # -------------------------------------------------------------- one step
     def step(self, op: tuple) -> None:
         note(f"op {len(self.log)}: {op!r}")
         self.log.append(op)
         strict_before = {f: self.last_kind.get(f) in (TAR, NER) for f in self.ref.feds}
-        expected_ret = self._model_apply(op)
+        expected_ret = apply(self.ref, op)
         expected_rel = self.ref.release()
         present = self.present
         ret, released, queries = execute(self.tm, op, present)

@@ -14,22 +14,17 @@ first}); discoveries, reflections (tag), radio interactions
 import sys
 
 import hlacore.rti as rti
-from peerlib import round_trip, say, serve
+from peerlib import SavingAmbassador, round_trip, say, serve
 
 
-class Ambassador(rti.FederateAmbassador):
+class Ambassador(SavingAmbassador):
     def __init__(self, rtia):
-        self.rtia = rtia
+        super().__init__(rtia)
         self.radio = None
         self.geo = None
-        self.names = {}
 
-    def initiateFederateSave(self, label):
-        say(event="initiateFederateSave", label=label)
-        self.rtia.federateSaveComplete()
-
-    def federationSaved(self):
-        say(event="federationSaved")
+    def answer_save(self):
+        self.rtia.federateSaveComplete()  # without federateSaveBegun, which is optional
 
     def initiateFederateRestore(self, label, handle):
         say(event="initiateFederateRestore", label=label)
@@ -44,7 +39,7 @@ class Ambassador(rti.FederateAmbassador):
         self.rtia.deleteRegion(region)
 
     def discoverObjectInstance(self, obj, cls, name):
-        self.names[obj] = name
+        super().discoverObjectInstance(obj, cls, name)
         say(event="discover", name=name)
 
     def reflectAttributeValues(self, obj, attributes, tag, *rest):

@@ -8,8 +8,8 @@ from __future__ import annotations
 import hlacore.rti as rti
 from hlacore.processes import SyncAmbassador, linger, round_trip, say, serve, synchronize, tick_until
 
-__all__ = ["PeerAmbassador", "enable_time", "join_lockstep", "linger", "round_trip", "say", "serve",
-           "synchronize", "tick_until"]
+__all__ = ["PeerAmbassador", "SavingAmbassador", "enable_time", "join_lockstep", "linger", "round_trip", "say",
+           "serve", "synchronize", "tick_until"]
 
 
 class PeerAmbassador(SyncAmbassador):
@@ -24,6 +24,29 @@ class PeerAmbassador(SyncAmbassador):
 
     def timeConstrainedEnabled(self, time: float) -> None:
         self.enabled += 1
+
+
+class SavingAmbassador(rti.FederateAmbassador):
+    """For the save/restore peers: keeps the names of the objects discovered, prints initiateFederateSave
+    and federationSaved as JSON lines ({"event": ...}) and answers the save with answer_save()."""
+
+    def __init__(self, rtia: rti.RTIAmbassador | None = None) -> None:
+        self.rtia = rtia
+        self.names: dict = {}
+
+    def discoverObjectInstance(self, obj, cls, name) -> None:
+        self.names[obj] = name
+
+    def initiateFederateSave(self, label: str) -> None:
+        say(event="initiateFederateSave", label=label)
+        self.answer_save()
+
+    def answer_save(self) -> None:
+        self.rtia.federateSaveBegun()
+        self.rtia.federateSaveComplete()
+
+    def federationSaved(self) -> None:
+        say(event="federationSaved")
 
 
 def enable_time(rtia: rti.RTIAmbassador, amb: PeerAmbassador, lookahead: float = 1.0) -> None:

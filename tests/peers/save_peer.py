@@ -12,15 +12,14 @@ import sys
 import time
 
 import hlacore.rti as rti
-from peerlib import say, serve
+from peerlib import SavingAmbassador, say, serve
 
 
-class Ambassador(rti.FederateAmbassador):
+class Ambassador(SavingAmbassador):
     def __init__(self, answer):
+        super().__init__()
         self.answer = answer
-        self.rtia = None
         self.location = None
-        self.names = {}
         self.enabled = set()
 
     def timeRegulationEnabled(self, t):
@@ -29,17 +28,9 @@ class Ambassador(rti.FederateAmbassador):
     def timeConstrainedEnabled(self, t):
         self.enabled.add("constrained")
 
-    def discoverObjectInstance(self, obj, cls, name):
-        self.names[obj] = name
-
-    def initiateFederateSave(self, label):
-        say(event="initiateFederateSave", label=label)
-        if self.answer:
-            self.rtia.federateSaveBegun()
-            self.rtia.federateSaveComplete()
-
-    def federationSaved(self):
-        say(event="federationSaved")
+    def answer_save(self):
+        if self.answer:  # else --no-answer: the save cannot complete
+            super().answer_save()
 
     def federationNotSaved(self):
         say(event="federationNotSaved")

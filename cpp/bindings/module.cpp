@@ -169,22 +169,17 @@ PYBIND11_MODULE(_core, m) {
         .def("min_next_event_time", &TimeManager::min_next_event_time)
         .def("federate_time", &TimeManager::federate_time)
         .def("status", [](TimeManager& tm) {
+            static const char* const kFields[] = {"federate", "time", "lookahead", "regulating", "constrained",
+                                                  "asynchronous_delivery", "pending", "pending_time", "queued_tso",
+                                                  "queued_ro", "enabling_regulation", "lbts", "output_bound"};
             py::list out;
             for (const auto& s : tm.status()) {
+                const py::tuple values = py::make_tuple(
+                    s.federate, s.time, s.lookahead, s.regulating, s.constrained, s.asynchronous_delivery,
+                    static_cast<int>(s.pending), s.pending_time, s.queued_tso, s.queued_ro, s.enabling_regulation,
+                    s.lbts, s.output_bound);
                 py::dict d;
-                d["federate"] = s.federate;
-                d["time"] = s.time;
-                d["lookahead"] = s.lookahead;
-                d["regulating"] = s.regulating;
-                d["constrained"] = s.constrained;
-                d["asynchronous_delivery"] = s.asynchronous_delivery;
-                d["pending"] = static_cast<int>(s.pending);
-                d["pending_time"] = s.pending_time;
-                d["queued_tso"] = s.queued_tso;
-                d["queued_ro"] = s.queued_ro;
-                d["enabling_regulation"] = s.enabling_regulation;
-                d["lbts"] = s.lbts;
-                d["output_bound"] = s.output_bound;
+                for (std::size_t i = 0; i < values.size(); ++i) d[kFields[i]] = values[i];
                 out.append(d);
             }
             return out;

@@ -35,20 +35,16 @@ void bind_objects(Ambassador& rtia) {
              }, py::arg("objectClass"), py::arg("objectName") = py::none())
         .def("updateAttributeValues",
              [](Client& c, ObjectHandle obj, py::handle values, py::handle tag, std::optional<double> time) {
-                 auto serial = c.update_attributes(obj.value, to_handle_values<AttributeHandle>(values, "AttributeHandle"),
-                                                   to_bytes(tag, "tag"), time);
-                 return serial_result(serial, time, c);
+                 auto attributes = to_handle_values<AttributeHandle>(values, "AttributeHandle");
+                 return serial_result(c.update_attributes(obj.value, std::move(attributes), raw(tag), time), time, c);
              }, py::arg("object"), py::arg("attributes"), py::arg("tag"), py::arg("time") = py::none())
         .def("sendInteraction",
              [](Client& c, InteractionClassHandle ic, py::handle values, py::handle tag, std::optional<double> time) {
-                 auto serial = c.send_interaction(ic.value, to_handle_values<ParameterHandle>(values, "ParameterHandle"),
-                                                  to_bytes(tag, "tag"), time);
-                 return serial_result(serial, time, c);
+                 auto parameters = to_handle_values<ParameterHandle>(values, "ParameterHandle");
+                 return serial_result(c.send_interaction(ic.value, std::move(parameters), raw(tag), time), time, c);
              }, py::arg("interactionClass"), py::arg("parameters"), py::arg("tag"), py::arg("time") = py::none())
-        .def("deleteObjectInstance",
-             [](Client& c, ObjectHandle obj, py::handle tag, std::optional<double> time) {
-                 auto serial = c.delete_object(obj.value, to_bytes(tag, "tag"), time);
-                 return serial_result(serial, time, c);
+        .def("deleteObjectInstance", [](Client& c, ObjectHandle obj, py::handle tag, std::optional<double> time) {
+                 return serial_result(c.delete_object(obj.value, raw(tag), time), time, c);
              }, py::arg("object"), py::arg("tag"), py::arg("time") = py::none())
         .def("localDeleteObjectInstance", forward<ObjectHandle>(&Client::local_delete_object), py::arg("object"))
         .def("requestObjectAttributeValueUpdate", forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::request_object_update),

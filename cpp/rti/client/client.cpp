@@ -325,8 +325,7 @@ std::uint32_t Client::join(const std::string& federate, const std::string& feder
 void Client::resign(std::uint8_t action) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-        check_not_saving_or_restoring("resignFederationExecution");
+        require_idle("resignFederationExecution");
         if (action < 1 || action > 4)
             raise(ErrorCode::InvalidResignAction, "resign action " + std::to_string(action) + " is not one of 1-4");
     }

@@ -309,6 +309,8 @@ private:
     // Save/restore (client/save_restore.cpp; callers hold mu_): refuses `service` during a save or restore, and
     // applies the save/restore callbacks when popped (initiateFederateRestore replaces the mirrored state).
     void check_not_saving_or_restoring(const char* service) const;
+    void require_idle(const char* service) const;  // require_joined, then check_not_saving_or_restoring
+    void require_no_advance() const;                // TimeAdvanceAlreadyInProgress (client/time.cpp)
     void apply_save_callback(const wire::Message& m);
     enum class SavePhase : std::uint8_t { None, Initiated, Begun, Answered };
     enum class RestorePhase : std::uint8_t { None, Begun, Initiated, Answered };

@@ -9,6 +9,23 @@
 
 namespace hlacore {
 
+namespace {
+
+// federateSaveComplete, federateRestoreComplete: a federate reports once what it was asked to do; refused
+// with `code` otherwise, saying whether it was never asked or has reported already.
+template <class Phase>
+void report_once(Phase& phase, bool asked, ErrorCode code, const char* never_asked, const char* reported) {
+    if (!asked) raise(code, phase == Phase::Answered ? reported : never_asked);
+    phase = Phase::Answered;
+}
+
+}  // namespace
+
+void Client::require_idle(const char* service) const {
+    require_joined();
+    check_not_saving_or_restoring(service);
+}
+
 void Client::check_not_saving_or_restoring(const char* service) const {
     if (save_phase_ != SavePhase::None)
         raise(ErrorCode::SaveInProgress, std::string(service) + " refused: the federation save '" + save_label_ +
@@ -23,8 +40,7 @@ void Client::check_not_saving_or_restoring(const char* service) const {
 void Client::request_federation_save(const std::string& label, const wire::OptionalTime& time) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-        check_not_saving_or_restoring("requestFederationSave");
+        require_idle("requestFederationSave");
         if (time && std::isnan(*time)) raise(ErrorCode::InvalidFederationTime, "the save time is NaN");
     }
     const auto id = next_request();
@@ -47,11 +63,9 @@ void Client::federate_save_complete(bool success) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
-        if (save_phase_ != SavePhase::Initiated && save_phase_ != SavePhase::Begun)
-            raise(ErrorCode::SaveNotInitiated, save_phase_ == SavePhase::None
-                                                   ? "no initiateFederateSave was delivered to this federate"
-                                                   : "this federate already reported its save");
-        save_phase_ = SavePhase::Answered;
+        report_once(save_phase_, save_phase_ == SavePhase::Initiated || save_phase_ == SavePhase::Begun,
+                    ErrorCode::SaveNotInitiated, "no initiateFederateSave was delivered to this federate",
+                    "this federate already reported its save");
     }
     send(wire::FederateSaveComplete{success});
 }
@@ -60,8 +74,7 @@ void Client::federate_save_complete(bool success) {
 void Client::request_federation_restore(const std::string& label) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-        check_not_saving_or_restoring("requestFederationRestore");
+        require_idle("requestFederationRestore");
     }
     const auto id = next_request();
     call(wire::RequestFederationRestore{id, label}, id);
@@ -72,11 +85,9 @@ void Client::federate_restore_complete(bool success) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
-        if (restore_phase_ != RestorePhase::Initiated)
-            raise(ErrorCode::RestoreNotRequested, restore_phase_ == RestorePhase::Answered
-                                                      ? "this federate already reported its restore"
-                                                      : "no initiateFederateRestore was delivered to this federate");
-        restore_phase_ = RestorePhase::Answered;
+        report_once(restore_phase_, restore_phase_ == RestorePhase::Initiated, ErrorCode::RestoreNotRequested,
+                    "no initiateFederateRestore was delivered to this federate",
+                    "this federate already reported its restore");
     }
     send(wire::FederateRestoreComplete{success});
 }

@@ -9,6 +9,22 @@ namespace hlacore {
 
 namespace {
 
+// enableTimeRegulation / enableTimeConstrained (§8.2, §8.5): refused while on, or while asked for already.
+void check_can_enable(bool on, bool pending, ErrorCode already_on, ErrorCode already_pending, const char* what,
+                      const char* service) {
+    if (on) raise(already_on, std::string(what) + " is already enabled");
+    if (pending) raise(already_pending, std::string(service) + " is already pending");
+}
+
+// disableTimeRegulation / disableTimeConstrained (§8.4, §8.7): turns `on` off at once; refused while it is
+// off, saying so when its enable callback is still undelivered.
+void switch_off(bool& on, bool pending, ErrorCode not_on, const char* what, const char* callback) {
+    if (!on)
+        raise(not_on, pending ? std::string(what) + " is still being enabled (" + callback + " not yet delivered)"
+                              : std::string(what) + " is not enabled");
+    on = false;
+}
+
 std::string text(Time t) {
     std::ostringstream out;
     out.precision(17);
@@ -99,17 +115,19 @@ void Client::apply_time_callback(const wire::Message& m) {
     }
 }
 
+void Client::require_no_advance() const {
+    if (time_.pending != AdvanceKind::None)
+        raise(ErrorCode::TimeAdvanceAlreadyInProgress,
+              std::string(service_name(time_.pending)) + "(" + text(time_.pending_time) + ") is in progress");
+}
+
 void Client::enable_time_regulation(Time time, Time lookahead) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-        check_not_saving_or_restoring("enableTimeRegulation");
-        if (time_.regulating) raise(ErrorCode::TimeRegulationAlreadyEnabled, "time regulation is already enabled");
-        if (time_.regulation_pending)
-            raise(ErrorCode::EnableTimeRegulationPending, "enableTimeRegulation is already pending");
-        if (time_.pending != AdvanceKind::None)
-            raise(ErrorCode::TimeAdvanceAlreadyInProgress,
-                  std::string(service_name(time_.pending)) + "(" + text(time_.pending_time) + ") is in progress");
+        require_idle("enableTimeRegulation");
+        check_can_enable(time_.regulating, time_.regulation_pending, ErrorCode::TimeRegulationAlreadyEnabled,
+                         ErrorCode::EnableTimeRegulationPending, "time regulation", "enableTimeRegulation");
+        require_no_advance();
         if (!std::isfinite(time)) raise(ErrorCode::InvalidFederationTime, "federate time " + text(time) + " is not finite");
         if (!(lookahead >= 0) || !std::isfinite(lookahead))
             raise(ErrorCode::InvalidLookahead, "lookahead " + text(lookahead) + " is not a finite value >= 0");
@@ -124,13 +142,9 @@ void Client::enable_time_regulation(Time time, Time lookahead) {
 void Client::disable_time_regulation() {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-        check_not_saving_or_restoring("disableTimeRegulation");
-        if (!time_.regulating)
-            raise(ErrorCode::TimeRegulationWasNotEnabled,
-                  time_.regulation_pending ? "time regulation is still being enabled (timeRegulationEnabled not yet delivered)"
-                                           : "time regulation is not enabled");
-        time_.regulating = false;
+        require_idle("disableTimeRegulation");
+        switch_off(time_.regulating, time_.regulation_pending, ErrorCode::TimeRegulationWasNotEnabled,
+                   "time regulation", "timeRegulationEnabled");
         time_.retractable.clear();
     }
     send(wire::DisableTimeRegulation{});
@@ -139,14 +153,10 @@ void Client::disable_time_regulation() {
 void Client::enable_time_constrained() {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-        check_not_saving_or_restoring("enableTimeConstrained");
-        if (time_.constrained) raise(ErrorCode::TimeConstrainedAlreadyEnabled, "time constrained is already enabled");
-        if (time_.constrained_pending)
-            raise(ErrorCode::EnableTimeConstrainedPending, "enableTimeConstrained is already pending");
-        if (time_.pending != AdvanceKind::None)
-            raise(ErrorCode::TimeAdvanceAlreadyInProgress,
-                  std::string(service_name(time_.pending)) + "(" + text(time_.pending_time) + ") is in progress");
+        require_idle("enableTimeConstrained");
+        check_can_enable(time_.constrained, time_.constrained_pending, ErrorCode::TimeConstrainedAlreadyEnabled,
+                         ErrorCode::EnableTimeConstrainedPending, "time constrained", "enableTimeConstrained");
+        require_no_advance();
         time_.constrained_pending = true;
     }
     send(wire::EnableTimeConstrained{});
@@ -155,13 +165,9 @@ void Client::enable_time_constrained() {
 void Client::disable_time_constrained() {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-        check_not_saving_or_restoring("disableTimeConstrained");
-        if (!time_.constrained)
-            raise(ErrorCode::TimeConstrainedWasNotEnabled,
-                  time_.constrained_pending ? "time constrained is still being enabled (timeConstrainedEnabled not yet delivered)"
-                                            : "time constrained is not enabled");
-        time_.constrained = false;
+        require_idle("disableTimeConstrained");
+        switch_off(time_.constrained, time_.constrained_pending, ErrorCode::TimeConstrainedWasNotEnabled,
+                   "time constrained", "timeConstrainedEnabled");
     }
     send(wire::DisableTimeConstrained{});
 }
@@ -174,9 +180,7 @@ void Client::time_advance(AdvanceKind kind, Time time) {
         const char* name = service_name(kind);
         check_not_saving_or_restoring(name);
         if (std::isnan(time)) raise(ErrorCode::InvalidFederationTime, std::string(name) + ": the time is NaN");
-        if (time_.pending != AdvanceKind::None)
-            raise(ErrorCode::TimeAdvanceAlreadyInProgress,
-                  std::string(service_name(time_.pending)) + "(" + text(time_.pending_time) + ") is in progress");
+        require_no_advance();
         if (time_.regulation_pending)
             raise(ErrorCode::EnableTimeRegulationPending,
                   std::string(name) + " while enableTimeRegulation is pending; wait for timeRegulationEnabled");
@@ -195,8 +199,7 @@ void Client::time_advance(AdvanceKind kind, Time time) {
 void Client::modify_lookahead(Time lookahead) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-        check_not_saving_or_restoring("modifyLookahead");
+        require_idle("modifyLookahead");
         if (!(lookahead >= 0) || !std::isfinite(lookahead))
             raise(ErrorCode::InvalidLookahead, "lookahead " + text(lookahead) + " is not a finite value >= 0");
         if (time_.regulating) time_.floor = lowest_sendable();

@@ -38,10 +38,13 @@ struct ObjectClass {
     const Attribute* privilege_to_delete() const;
 };
 
-struct Parameter {
+// A parameter of an interaction class or a dimension of a routing space: nothing but a handle and a name.
+struct NamedHandle {
     Handle handle = 0;
     std::string name;
 };
+using Parameter = NamedHandle;
+using Dimension = NamedHandle;
 
 struct InteractionClass {
     Handle handle = 0;
@@ -56,11 +59,6 @@ struct InteractionClass {
 
     const Parameter* parameter(Handle h) const;
     const Parameter* parameter(std::string_view parameter_name) const;
-};
-
-struct Dimension {
-    Handle handle = 0;
-    std::string name;
 };
 
 struct RoutingSpace {

@@ -1,6 +1,7 @@
 // Recursive-descent parser for the union of the CERTI, OpenRTI and Portico `.fed` dialects, numbering
 // handles the way CERTI does.
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -98,6 +99,18 @@ struct Open {
 // Deep enough for any real FOM, shallow enough that recursion cannot exhaust the stack.
 constexpr int kMaxClassDepth = 256;
 
+// Object classes with their attributes, or interaction classes with their parameters: both are read by
+// the same rules (nesting, inheritance, handles), only where they go and how messages name them differ.
+template <class Cls, class Member>
+struct ClassFamily {
+    std::vector<Cls>& classes;
+    std::vector<Member> Cls::*members;
+    Kw member;               // Kw::Attribute or Kw::Parameter
+    const char* kind;        // "object class", "interaction class"
+    const char* owner;       // the class as member messages name it: "class", "interaction class"
+    std::unordered_map<std::string, std::size_t> names{};  // qualified name -> offset of the name
+};
+
 class Parser {
 public:
     Parser(std::string_view text, std::string_view file_name) : lex_(text, file_name) {
@@ -194,23 +207,50 @@ private:
         }
     }
 
+    // Each "(keyword ...)" inside `o` up to its ')', which is returned: `entry(keyword, paren, word)` reads
+    // the rest of it. Anything else there fails with "unexpected ..." followed by `where`.
+    template <class Entry>
+    Token entries(const Open& o, const std::string& where, Entry&& entry) {
+        for (;;) {
+            const Token t = next_in(o);
+            if (t.kind == TokenKind::RParen) return t;
+            if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + where);
+            Token word;
+            const Kw kw = keyword_in(o, t, word);
+            entry(kw, t, word);
+        }
+    }
+
+    // Entries inside `o` that may only be "(kw ...)", each read by `entry(open)`.
+    template <class Entry>
+    void entries_of(Kw kw, const Open& o, Entry&& entry) {
+        const std::string name(name_of(kw));
+        entries(o, " (expected '(" + name + "' or ')')", [&](Kw found, const Token& paren, const Token& word) {
+            if (found != kw) misplaced(found, paren, word, o.kw, name.c_str());
+            entry(Open{found, paren.offset});
+        });
+    }
+
     void parse_federate(const Open& o);
     void parse_sec_level(const Open& o);
     void parse_spaces(const Open& o);
     void parse_space(const Open& o);
-    void parse_objects(const Open& o);
-    void parse_object_class(const Open& o, Handle parent, int depth);
-    void parse_attribute(const Open& o, Handle cls);
-    void parse_interactions(const Open& o);
-    void parse_interaction_class(const Open& o, Handle parent, int depth);
-    void parse_parameter(const Open& o, Handle cls);
+    template <class Cls, class Member>
+    void parse_class(ClassFamily<Cls, Member>& family, const Open& o, Handle parent, int depth);
+    template <class Cls, class Member>
+    void parse_member(ClassFamily<Cls, Member>& family, const Open& o, Handle cls);
+    // The transport, order and optional routing space of an attribute or interaction class (`what`).
+    template <class Declared>
+    void read_delivery(const Open& o, const std::string& what, Declared& out);
     void space_reference(const Token& t, std::string& out);
     std::string qualify(const std::string& parent_qualified, std::string_view name) const;
 
     Lexer lex_;
     Fom fom_;
-    std::unordered_map<std::string, std::size_t> object_names_;       // qualified name -> offset of the name
-    std::unordered_map<std::string, std::size_t> interaction_names_;  // likewise
+    ClassFamily<ObjectClass, Attribute> objects_{fom_.object_classes, &ObjectClass::attributes, Kw::Attribute,
+                                                 "object class", "class"};
+    ClassFamily<InteractionClass, Parameter> interactions_{fom_.interaction_classes, &InteractionClass::parameters,
+                                                           Kw::Parameter, "interaction class", "interaction class"};
     bool spaces_done_ = false;
     std::vector<Token> pending_spaces_;  // references made before (spaces ...) was read
 };
@@ -237,16 +277,7 @@ Fom Parser::run() {
 
     bool seen_federation = false, seen_version = false, seen_spaces = false, seen_objects = false,
          seen_interactions = false;
-    Token close;
-    for (;;) {
-        const Token t = next_in(fed_open);
-        if (t.kind == TokenKind::RParen) {
-            close = t;
-            break;
-        }
-        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(' or ')')");
-        Token word;
-        const Kw kw = keyword_in(fed_open, t, word);
+    const Token close = entries(fed_open, " (expected '(' or ')')", [&](Kw kw, const Token& t, const Token& word) {
         const Open o{kw, t.offset};
         auto once = [&](bool& seen, const char* what) {
             if (seen) fail(t, std::string("duplicate ") + what);
@@ -270,16 +301,16 @@ Fom Parser::run() {
                 break;
             case Kw::Objects:
                 once(seen_objects, "section 'objects'");
-                parse_objects(o);
+                entries_of(Kw::Class, o, [&](const Open& c) { parse_class(objects_, c, 0, 1); });
                 break;
             case Kw::Interactions:
                 once(seen_interactions, "section 'interactions'");
-                parse_interactions(o);
+                entries_of(Kw::Class, o, [&](const Open& c) { parse_class(interactions_, c, 0, 1); });
                 break;
             default:
                 misplaced(kw, t, word, Kw::FED, "Federation, FEDversion, Federate, spaces, objects or interactions");
         }
-    }
+    });
     if (!seen_federation) fail(close, "the FED has no (Federation NAME) entry");
     if (!seen_version) fail(close, "the FED has no (FEDversion VERSION) entry");
 
@@ -312,15 +343,7 @@ void Parser::parse_sec_level(const Open& o) {
 }
 
 void Parser::parse_spaces(const Open& o) {
-    for (;;) {
-        const Token t = next_in(o);
-        if (t.kind == TokenKind::RParen) break;
-        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(space' or ')')");
-        Token word;
-        const Kw kw = keyword_in(o, t, word);
-        if (kw != Kw::Space) misplaced(kw, t, word, Kw::Spaces, "space");
-        parse_space(Open{kw, t.offset});
-    }
+    entries_of(Kw::Space, o, [&](const Open& space) { parse_space(space); });
     spaces_done_ = true;
 }
 
@@ -331,14 +354,7 @@ void Parser::parse_space(const Open& o) {
     RoutingSpace space;
     space.handle = static_cast<Handle>(fom_.spaces.size() + 1);
     space.name = std::string(name);
-    for (;;) {
-        const Token t = next_in(o);
-        if (t.kind == TokenKind::RParen) break;
-        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(dimension' or ')')");
-        Token word;
-        const Kw kw = keyword_in(o, t, word);
-        if (kw != Kw::Dimension) misplaced(kw, t, word, Kw::Space, "dimension");
-        const Open d{kw, t.offset};
+    entries_of(Kw::Dimension, o, [&](const Open& d) {
         Token dim_token;
         const std::string_view dim = read_value(d, "dimension name", true, &dim_token);
         for (const Dimension& existing : space.dimensions) {
@@ -348,7 +364,7 @@ void Parser::parse_space(const Open& o) {
         }
         space.dimensions.push_back(Dimension{static_cast<Handle>(space.dimensions.size() + 1), std::string(dim)});
         expect_close(d);
-    }
+    });
     fom_.spaces.push_back(std::move(space));
 }
 
@@ -361,218 +377,103 @@ void Parser::space_reference(const Token& t, std::string& out) {
     }
 }
 
-void Parser::parse_objects(const Open& o) {
-    for (;;) {
-        const Token t = next_in(o);
-        if (t.kind == TokenKind::RParen) return;
-        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(class' or ')')");
-        Token word;
-        const Kw kw = keyword_in(o, t, word);
-        if (kw != Kw::Class) misplaced(kw, t, word, Kw::Objects, "class");
-        parse_object_class(Open{kw, t.offset}, 0, 1);
-    }
-}
-
-void Parser::parse_object_class(const Open& o, Handle parent, int depth) {
-    if (depth > kMaxClassDepth) fail(o.offset, "classes nested more than " + std::to_string(kMaxClassDepth) + " deep");
-    Token name_token;
-    const std::string_view name = read_value(o, "class name", true, &name_token);
-
-    const Handle h = static_cast<Handle>(fom_.object_classes.size() + 1);
-    std::string qualified = qualify(parent ? fom_.object_classes[parent - 1].qualified_name : std::string(), name);
-    const auto [it, inserted] = object_names_.emplace(qualified, name_token.offset);
-    if (!inserted) {
-        fail(name_token, "duplicate object class '" + quote_for_message(qualified) + "' (first declared at " +
-                             at(it->second) + ")");
-    }
-    {
-        ObjectClass cls;
-        cls.handle = h;
-        cls.name = std::string(name);
-        cls.qualified_name = std::move(qualified);
-        cls.parent = parent;
-        if (parent) {
-            cls.attributes = fom_.object_classes[parent - 1].attributes;
-            fom_.object_classes[parent - 1].children.push_back(h);
-        }
-        fom_.object_classes.push_back(std::move(cls));
-    }
-
-    bool seen_subclass = false;
-    for (;;) {
-        const Token t = next_in(o);
-        if (t.kind == TokenKind::RParen) return;
-        if (t.kind != TokenKind::LParen) {
-            fail(t, "unexpected " + describe(t) + " in object class '" + fom_.object_classes[h - 1].qualified_name +
-                        "' (expected '(attribute', '(class' or ')')");
-        }
-        Token word;
-        const Kw kw = keyword_in(o, t, word);
-        const Open inner{kw, t.offset};
-        switch (kw) {
-            case Kw::Attribute:
-                // A later attribute would be missing from the subclasses already numbered.
-                if (seen_subclass) {
-                    fail(t, "attributes of class '" + fom_.object_classes[h - 1].qualified_name +
-                                "' must come before its subclasses");
-                }
-                parse_attribute(inner, h);
-                break;
-            case Kw::Class:
-                seen_subclass = true;
-                parse_object_class(inner, h, depth + 1);
-                break;
-            case Kw::SecLevel: parse_sec_level(inner); break;
-            default: misplaced(kw, t, word, Kw::Class, "attribute, class or sec_level");
-        }
-    }
-}
-
-void Parser::parse_attribute(const Open& o, Handle cls) {
-    Token name_token;
-    const std::string_view name = read_value(o, "attribute name", true, &name_token);
-    const std::string& cls_name = fom_.object_classes[cls - 1].qualified_name;
-    {
-        const auto& attrs = fom_.object_classes[cls - 1].attributes;
-        for (const Attribute& a : attrs) {
-            if (a.name != name) continue;
-            std::string msg = "duplicate attribute '" + quote_for_message(name) + "' in class '" + cls_name + "'";
-            // Name the class the clashing attribute comes from when it is inherited.
-            Handle owner = cls;
-            for (Handle p = fom_.object_classes[cls - 1].parent; p != 0; p = fom_.object_classes[p - 1].parent) {
-                if (fom_.object_classes[p - 1].attribute(a.handle) != nullptr) owner = p;
-            }
-            if (owner != cls) msg += " (inherited from '" + fom_.object_classes[owner - 1].qualified_name + "')";
-            fail(name_token, msg);
-        }
-    }
-
-    Attribute attr;
-    attr.name = std::string(name);
+template <class Declared>
+void Parser::read_delivery(const Open& o, const std::string& what, Declared& out) {
     Token t = next_in(o);
-    if (t.kind != TokenKind::Word && t.kind != TokenKind::String) {
-        fail(t, "attribute '" + attr.name + "' needs a transport and an order");
-    }
-    if (!parse_transport(t.text, attr.transport)) {
+    if (t.kind != TokenKind::Word && t.kind != TokenKind::String) fail(t, what + " needs a transport and an order");
+    if (!parse_transport(t.text, out.transport)) {
         fail(t, "unknown transport '" + quote_for_message(t.text) + "' (expected " + transport_list + ")");
     }
     t = next_in(o);
     if (t.kind != TokenKind::Word && t.kind != TokenKind::String) {
-        fail(t, "attribute '" + attr.name + "' needs an order (" + order_list + ") after its transport");
+        fail(t, what + " needs an order (" + order_list + ") after its transport");
     }
-    if (!parse_order(t.text, attr.order)) {
+    if (!parse_order(t.text, out.order)) {
         fail(t, "unknown order '" + quote_for_message(t.text) + "' (expected " + order_list + ")");
     }
     if (lex_.peek().kind == TokenKind::Word || lex_.peek().kind == TokenKind::String) {
-        space_reference(lex_.next(), attr.space);
-    }
-    expect_close(o);
-
-    auto& attrs = fom_.object_classes[cls - 1].attributes;
-    attr.handle = static_cast<Handle>(attrs.size() + 1);
-    attrs.push_back(std::move(attr));
-}
-
-void Parser::parse_interactions(const Open& o) {
-    for (;;) {
-        const Token t = next_in(o);
-        if (t.kind == TokenKind::RParen) return;
-        if (t.kind != TokenKind::LParen) fail(t, "unexpected " + describe(t) + " (expected '(class' or ')')");
-        Token word;
-        const Kw kw = keyword_in(o, t, word);
-        if (kw != Kw::Class) misplaced(kw, t, word, Kw::Interactions, "class");
-        parse_interaction_class(Open{kw, t.offset}, 0, 1);
+        space_reference(lex_.next(), out.space);
     }
 }
 
-void Parser::parse_interaction_class(const Open& o, Handle parent, int depth) {
+template <class Cls, class Member>
+void Parser::parse_class(ClassFamily<Cls, Member>& family, const Open& o, Handle parent, int depth) {
     if (depth > kMaxClassDepth) fail(o.offset, "classes nested more than " + std::to_string(kMaxClassDepth) + " deep");
     Token name_token;
     const std::string_view name = read_value(o, "class name", true, &name_token);
 
-    InteractionClass cls;
+    Cls cls;
     cls.name = std::string(name);
-    cls.qualified_name = qualify(parent ? fom_.interaction_classes[parent - 1].qualified_name : std::string(), name);
-    const auto [it, inserted] = interaction_names_.emplace(cls.qualified_name, name_token.offset);
+    cls.qualified_name = qualify(parent ? family.classes[parent - 1].qualified_name : std::string(), name);
+    const auto [it, inserted] = family.names.emplace(cls.qualified_name, name_token.offset);
     if (!inserted) {
-        fail(name_token, "duplicate interaction class '" + quote_for_message(cls.qualified_name) +
+        fail(name_token, "duplicate " + std::string(family.kind) + " '" + quote_for_message(cls.qualified_name) +
                              "' (first declared at " + at(it->second) + ")");
     }
-
-    Token t = next_in(o);
-    if (t.kind != TokenKind::Word && t.kind != TokenKind::String) {
-        fail(t, "interaction class '" + cls.qualified_name + "' needs a transport and an order");
+    // An interaction class declares its own delivery; an object class's attributes each do.
+    if constexpr (std::is_same_v<Cls, InteractionClass>) {
+        read_delivery(o, "interaction class '" + cls.qualified_name + "'", cls);
     }
-    if (!parse_transport(t.text, cls.transport)) {
-        fail(t, "unknown transport '" + quote_for_message(t.text) + "' (expected " + transport_list + ")");
-    }
-    t = next_in(o);
-    if (t.kind != TokenKind::Word && t.kind != TokenKind::String) {
-        fail(t, "interaction class '" + cls.qualified_name + "' needs an order (" + order_list +
-                    ") after its transport");
-    }
-    if (!parse_order(t.text, cls.order)) {
-        fail(t, "unknown order '" + quote_for_message(t.text) + "' (expected " + order_list + ")");
-    }
-    if (lex_.peek().kind == TokenKind::Word || lex_.peek().kind == TokenKind::String) {
-        space_reference(lex_.next(), cls.space);
-    }
-
-    const Handle h = static_cast<Handle>(fom_.interaction_classes.size() + 1);
+    const Handle h = static_cast<Handle>(family.classes.size() + 1);
     cls.handle = h;
     cls.parent = parent;
     if (parent) {
-        cls.parameters = fom_.interaction_classes[parent - 1].parameters;
-        fom_.interaction_classes[parent - 1].children.push_back(h);
+        cls.*family.members = family.classes[parent - 1].*family.members;
+        family.classes[parent - 1].children.push_back(h);
     }
-    fom_.interaction_classes.push_back(std::move(cls));
+    family.classes.push_back(std::move(cls));
 
+    const std::string member(name_of(family.member));
+    const std::string where = " in " + std::string(family.kind) + " '" + family.classes[h - 1].qualified_name +
+                              "' (expected '(" + member + "', '(class' or ')')";
     bool seen_subclass = false;
-    for (;;) {
-        t = next_in(o);
-        if (t.kind == TokenKind::RParen) return;
-        if (t.kind != TokenKind::LParen) {
-            fail(t, "unexpected " + describe(t) + " in interaction class '" +
-                        fom_.interaction_classes[h - 1].qualified_name + "' (expected '(parameter', '(class' or ')')");
-        }
-        Token word;
-        const Kw kw = keyword_in(o, t, word);
+    entries(o, where, [&](Kw kw, const Token& t, const Token& word) {
         const Open inner{kw, t.offset};
-        switch (kw) {
-            case Kw::Parameter:
-                if (seen_subclass) {
-                    fail(t, "parameters of interaction class '" + fom_.interaction_classes[h - 1].qualified_name +
-                                "' must come before its subclasses");
-                }
-                parse_parameter(inner, h);
-                break;
-            case Kw::Class:
-                seen_subclass = true;
-                parse_interaction_class(inner, h, depth + 1);
-                break;
-            case Kw::SecLevel: parse_sec_level(inner); break;
-            default: misplaced(kw, t, word, Kw::Class, "parameter, class or sec_level");
+        if (kw == family.member) {
+            // A later member would be missing from the subclasses already numbered.
+            if (seen_subclass) {
+                fail(t, member + "s of " + family.owner + " '" + family.classes[h - 1].qualified_name +
+                            "' must come before its subclasses");
+            }
+            parse_member(family, inner, h);
+        } else if (kw == Kw::Class) {
+            seen_subclass = true;
+            parse_class(family, inner, h, depth + 1);
+        } else if (kw == Kw::SecLevel) {
+            parse_sec_level(inner);
+        } else {
+            misplaced(kw, t, word, Kw::Class, (member + ", class or sec_level").c_str());
         }
-    }
+    });
 }
 
-void Parser::parse_parameter(const Open& o, Handle cls) {
+template <class Cls, class Member>
+void Parser::parse_member(ClassFamily<Cls, Member>& family, const Open& o, Handle cls) {
+    const std::string what(name_of(family.member));
     Token name_token;
-    const std::string_view name = read_value(o, "parameter name", true, &name_token);
-    auto& c = fom_.interaction_classes[cls - 1];
-    for (const Parameter& p : c.parameters) {
-        if (p.name != name) continue;
-        std::string msg = "duplicate parameter '" + quote_for_message(name) + "' in interaction class '" +
+    const std::string_view name = read_value(o, what + " name", true, &name_token);
+    const Cls& c = family.classes[cls - 1];
+    for (const Member& m : c.*family.members) {
+        if (m.name != name) continue;
+        std::string msg = "duplicate " + what + " '" + quote_for_message(name) + "' in " + family.owner + " '" +
                           c.qualified_name + "'";
+        // Name the class the clashing member comes from when it is inherited (members keep their handles).
         Handle owner = cls;
-        for (Handle a = c.parent; a != 0; a = fom_.interaction_classes[a - 1].parent) {
-            if (fom_.interaction_classes[a - 1].parameter(p.handle) != nullptr) owner = a;
+        for (Handle p = c.parent; p != 0; p = family.classes[p - 1].parent) {
+            const auto& inherited = family.classes[p - 1].*family.members;
+            if (m.handle <= inherited.size() && inherited[m.handle - 1].handle == m.handle) owner = p;
         }
-        if (owner != cls) msg += " (inherited from '" + fom_.interaction_classes[owner - 1].qualified_name + "')";
+        if (owner != cls) msg += " (inherited from '" + family.classes[owner - 1].qualified_name + "')";
         fail(name_token, msg);
     }
-    c.parameters.push_back(Parameter{static_cast<Handle>(c.parameters.size() + 1), std::string(name)});
+
+    Member member;
+    member.name = std::string(name);
+    if constexpr (std::is_same_v<Member, Attribute>) read_delivery(o, "attribute '" + member.name + "'", member);
     expect_close(o);
+    auto& members = family.classes[cls - 1].*family.members;
+    member.handle = static_cast<Handle>(members.size() + 1);
+    members.push_back(std::move(member));
 }
 
 }  // namespace

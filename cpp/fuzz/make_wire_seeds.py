@@ -99,8 +99,9 @@ MESSAGES = {
     "FederationSaved": b(True),
     "RestoreRequestAnswer": s("snap") + b(False) + s("no save labelled 'snap'"),
     "FederationRestoreBegun": b"",
+    # SavedTime: time, lookahead, regulating, constrained, asynchronous, strict, receives above time, promise.
     "InitiateFederateRestore": s("snap") + u32(2) + f64(5.0) + f64(1.0) + b(True) + b(True) + b(False) + b(True)
-    + f64(6.0) + u64(3) + u32(1) + u32(1) + hs([1, 2]) + u32(1) + u32(1) + hs([2]) + hs([1]) + hs([])
+    + b(False) + f64(6.0) + u64(3) + u32(1) + u32(1) + hs([1, 2]) + u32(1) + u32(1) + hs([2]) + hs([1]) + hs([])
     + u32(1) + u32(7) + u32(1) + s("robot-1") + hs([1, 2]) + b(True)
     # DDM: region 3 in space 1, subscribed for class 2 and interaction 4, associated with object 7's attribute 1.
     + u32(1) + u32(3) + u32(1) + hs([10, 20, 0, 100]) + u32(1) + u32(2) + u32(3) + hs([1])

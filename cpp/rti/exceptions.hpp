@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rti/list_codes.hpp"
+
 #define HLACORE_EXCEPTIONS(X)                   \
     X(ArrayIndexOutOfBounds)                    \
     X(AsynchronousDeliveryAlreadyDisabled)      \
@@ -89,13 +91,7 @@
 
 namespace hlacore {
 
-enum class ErrorCode : std::uint16_t {
-    None = 0,
-#define HLACORE_X(name) name,
-    HLACORE_EXCEPTIONS(HLACORE_X)
-#undef HLACORE_X
-    Count
-};
+enum class ErrorCode : std::uint16_t { HLACORE_LIST_CODES(None, HLACORE_EXCEPTIONS) };
 
 // Name of the exception, "" for None or an unknown code.
 const char* error_name(ErrorCode code);

@@ -125,15 +125,16 @@ void Client::apply_save_callback(const wire::Message& message) {
         }
         announced_.clear();  // synchronization points are not saved
         restore_regions(saved);
+        const wire::SavedTime& st = saved.time_state;
         TimeState t;
-        t.time = saved.time;
-        t.lookahead = saved.lookahead;
-        t.enable_lookahead = saved.lookahead;
-        t.regulating = saved.regulating;
-        t.constrained = saved.constrained;
-        t.asynchronous_delivery = saved.asynchronous_delivery;
-        t.strict = saved.strict;
-        t.floor = saved.regulating ? saved.floor : -kInfinity;
+        t.time = st.time;
+        t.lookahead = st.lookahead;
+        t.enable_lookahead = st.lookahead;
+        t.regulating = st.regulating;
+        t.constrained = st.constrained;
+        t.asynchronous_delivery = st.asynchronous_delivery;
+        t.strict = st.strict_after_grant;
+        t.floor = st.regulating ? st.promise : -kInfinity;
         time_ = std::move(t);
         // Restored queues hold messages with serials up to next_serial: new ones must not collide.
         serial_ = std::max(serial_, saved.next_serial);

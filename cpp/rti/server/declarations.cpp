@@ -20,45 +20,49 @@ fom::Handle Federation::receiving_interaction_class(const FederateState& f, fom:
 }
 
 
+namespace {
+
+fom::Handle class_of(fom::Handle published_interaction) { return published_interaction; }
+template <class Attributes>
+fom::Handle class_of(const std::pair<const fom::Handle, Attributes>& published_class) { return published_class.first; }
+
+}  // namespace
+
 // Start/stop registration and turn interactions on/off follow real subscriber changes (HLA 1.3 §5.10-5.13):
 // a published class is relevant when another federate would discover (receive) its instances (interactions).
 void Federation::update_advisories() {
     for (auto& [ph, p] : federates_) {
-        std::set<fom::Handle> relevant;
-        for (const auto& [cls, attrs] : p.published) {
-            for (const auto& [gh, g] : federates_) {
-                if (gh != ph && known_class(g, cls) != 0) {
-                    relevant.insert(cls);
-                    break;
-                }
-            }
-        }
         if (p.class_relevance) {
-            for (fom::Handle cls : relevant)
-                if (!p.registration_started.count(cls)) outbox_.send(ph, wire::StartRegistration{cls});
-            for (fom::Handle cls : p.registration_started)
-                if (!relevant.count(cls) && p.published.count(cls)) outbox_.send(ph, wire::StopRegistration{cls});
-            p.registration_started = std::move(relevant);
-        }
-
-        std::set<fom::Handle> wanted;
-        for (fom::Handle ic : p.published_interactions) {
-            for (const auto& [gh, g] : federates_) {
-                if (gh != ph && receiving_interaction_class(g, ic) != 0) {
-                    wanted.insert(ic);
-                    break;
-                }
-            }
+            advise<wire::StartRegistration, wire::StopRegistration>(
+                ph, p.published, p.registration_started,
+                [&](const FederateState& g, fom::Handle cls) { return known_class(g, cls) != 0; });
         }
         if (p.interaction_relevance) {
-            for (fom::Handle ic : wanted)
-                if (!p.interactions_turned_on.count(ic)) outbox_.send(ph, wire::TurnInteractionsOn{ic});
-            for (fom::Handle ic : p.interactions_turned_on)
-                if (!wanted.count(ic) && p.published_interactions.count(ic))
-                    outbox_.send(ph, wire::TurnInteractionsOff{ic});
-            p.interactions_turned_on = std::move(wanted);
+            advise<wire::TurnInteractionsOn, wire::TurnInteractionsOff>(
+                ph, p.published_interactions, p.interactions_turned_on,
+                [&](const FederateState& g, fom::Handle ic) { return receiving_interaction_class(g, ic) != 0; });
         }
     }
+}
+
+template <class On, class Off, class Published, class Receives>
+void Federation::advise(FederateHandle ph, const Published& published, std::set<fom::Handle>& announced,
+                        Receives receives) {
+    std::set<fom::Handle> relevant;
+    for (const auto& entry : published) {
+        const fom::Handle cls = class_of(entry);
+        for (const auto& [gh, g] : federates_) {
+            if (gh != ph && receives(g, cls)) {
+                relevant.insert(cls);
+                break;
+            }
+        }
+    }
+    for (fom::Handle cls : relevant)
+        if (!announced.count(cls)) outbox_.send(ph, On{cls});
+    for (fom::Handle cls : announced)
+        if (!relevant.count(cls) && published.count(cls)) outbox_.send(ph, Off{cls});
+    announced = std::move(relevant);
 }
 
 void Federation::on(FederateHandle from, const wire::PublishObjectClass& m) {

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -169,9 +170,12 @@ private:
         std::map<fom::Handle, fom::Order> order;
         std::map<fom::Handle, fom::Transport> transport;
     };
-    // Ownership callbacks gathered while handling one request, one message per federate and kind.
+    // Ownership callbacks gathered while handling one request, one message per federate and kind; the
+    // requests for assumption and release carry the request's tag.
     struct OwnershipNotices {
         std::map<FederateHandle, wire::Handles> acquired, divested, unavailable, cancelled;
+        std::map<FederateHandle, wire::Handles> assumption_requested, release_requested;
+        std::string tag;
     };
 
     FederateState& federate(FederateHandle h);
@@ -187,15 +191,32 @@ private:
     void remove_object(ObjectHandle object, FederateHandle by, const std::string& tag, const wire::OptionalTime& time,
                        std::uint64_t serial);
     void update_advisories();
+    // One kind of advisory for the publisher `ph`: On for each published class that some other federate
+    // `receives` and that `announced` lacks, Off for each announced one still published but no longer
+    // received; `announced` becomes the received ones.
+    template <class On, class Off, class Published, class Receives>
+    void advise(FederateHandle ph, const Published& published, std::set<fom::Handle>& announced, Receives receives);
     // Who may delete the object: the owner of privilegeToDelete, else the privilege holder (0: nobody).
     FederateHandle deleter(const ObjectInstance& obj) const;
     // Does the federate publish `attribute` for the object's class (or a superclass of it)?
     bool publishes(const FederateState& f, const ObjectInstance& obj, fom::Handle attribute) const;
+    // The attribute's owner, 0 when unowned.
+    static FederateHandle owner_of(const ObjectInstance& obj, fom::Handle attribute);
+    // attributeOwnershipAcquisition(IfAvailable): transfers what is free to take; returns the rest that
+    // another federate owns, with its owner.
+    std::vector<std::pair<fom::Handle, FederateHandle>> acquire_available(FederateHandle from, const FederateState& f,
+                                                                          ObjectInstance& obj,
+                                                                          const wire::Handles& attributes,
+                                                                          OwnershipNotices& notices);
     // Ownership moves (HLA 1.3 §7): `to` becomes the owner; a negotiating previous owner is told.
     void transfer(ObjectInstance& obj, fom::Handle attribute, FederateHandle to, OwnershipNotices& notices);
     // The attribute loses its owner; the first federate waiting to acquire it gets it.
     void release_attribute(ObjectInstance& obj, fom::Handle attribute, OwnershipNotices& notices);
     void send_notices(ObjectHandle object, OwnershipNotices& notices);
+    // An ownership request naming attributes of an object: nothing when the object vanished meanwhile,
+    // else `act(object, notices)`, after which the notices it gathered are sent. False when it vanished.
+    template <class Act>
+    bool change_ownership(FederateHandle from, ObjectHandle object, const wire::Handles& attributes, Act&& act);
     // Drops the owner's transport and order changes of an attribute that changes owner.
     static void forget_delivery(ObjectInstance& obj, fom::Handle attribute);
     // The object a federate names in an ownership service, or null when it vanished meanwhile; its
@@ -223,22 +244,29 @@ private:
 
     // ---- save/restore (cpp/rti/server/save_restore.cpp) ----
     struct Snapshot;  // a decoded save
-    struct SaveRun {
+    // A save or a restore in progress.
+    struct Run {
         bool active = false;
         std::string label;
-        wire::OptionalTime time;              // a timed save
-        std::set<FederateHandle> told;        // sent initiateFederateSave
-        std::map<FederateHandle, bool> answered;  // federateSaveComplete (true) / NotComplete (false)
-        bool failed = false;                  // a federate left meanwhile
-        std::map<FederateHandle, std::vector<std::string>> held;  // frames held from told federates
-    };
-    struct RestoreRun {
-        bool active = false;
-        std::string label;
+        // federateSaveComplete / federateRestoreComplete (true), or the NotComplete one (false).
         std::map<FederateHandle, bool> answered;
-        bool failed = false;
-        std::map<FederateHandle, std::vector<std::string>> held;
+        bool failed = false;  // a federate left meanwhile
+        std::map<FederateHandle, std::vector<std::string>> held;  // frames held from the federates in it
+        void departed(FederateHandle federate) {
+            answered.erase(federate);
+            held.erase(federate);
+            failed = true;
+        }
     };
+    struct SaveRun : Run {
+        wire::OptionalTime time;        // a timed save
+        std::set<FederateHandle> told;  // sent initiateFederateSave
+    };
+    // Once every joined federate answered: whether they all succeeded and none left. Empty until then.
+    std::optional<bool> outcome(const Run& run) const;
+    // Ends `run`: each federate is sent `done` (federationSaved, federationRestored), then what was held for it.
+    template <class R, class M>
+    void end_run(R& run, const M& done);
     // Tells the federates that may save now (all of them, or for a timed save those granted its time).
     void tell_savers();
     // During a timed save, time-managed federates not yet told are granted at most the save time.
@@ -284,7 +312,7 @@ private:
     std::string save_dir_;
     std::map<std::string, std::string> saves_;  // label -> encoded save, this gateway's run
     SaveRun save_;
-    RestoreRun restore_;
+    Run restore_;
     std::string save_error_;  // why the gateway could not keep the last save, if it could not
 };
 

@@ -52,17 +52,9 @@ private:
     void on_frame(Connection& c, const wire::Frame& frame);
     // The one dispatcher: a visit onto serve() for the message's type (gateway.cpp).
     void on_request(Connection& c, const wire::Message& message);
-    void serve(Connection& c, const wire::CreateFederation& m);
-    void serve(Connection& c, const wire::DestroyFederation& m);
-    void serve(Connection& c, const wire::JoinFederation& m);
-    void serve(Connection& c, const wire::ResignFederation& m);
-    void serve(Connection& c, const wire::RegisterObject& m);
-    void serve(Connection& c, const wire::RegisterObjectWithRegion& m);
-    void serve(Connection& c, const wire::RequestFederationSave& m);
-    void serve(Connection& c, const wire::RequestFederationRestore& m);
-    void serve(Connection& c, const wire::ReleaseResponse& m);
-    void serve(Connection& c, const wire::QueryStatus& m);
-    void serve(Connection& c, const wire::QueryTime& m);
+#define HLACORE_X(name) void serve(Connection& c, const wire::name& m);
+    HLACORE_GATEWAY_SERVICES(HLACORE_X)
+#undef HLACORE_X
     template <class M>
     void serve(Connection& c, const M& m);  // any other message: the joined federate's federation handles it
     // Sends the Reply serve_request() returns, or the RtiError it throws as an error Reply.

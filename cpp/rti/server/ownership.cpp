@@ -70,6 +70,9 @@ void Federation::send_notices(ObjectHandle oh, OwnershipNotices& notices) {
     send_each(wire::AcquisitionNotification{}, notices.acquired);
     send_each(wire::OwnershipUnavailable{}, notices.unavailable);
     send_each(wire::ConfirmAcquisitionCancellation{}, notices.cancelled);
+    // The requests to other federates come after what the request itself settled.
+    send_each(wire::RequestOwnershipAssumption{0, {}, notices.tag}, notices.assumption_requested);
+    send_each(wire::RequestOwnershipRelease{0, {}, notices.tag}, notices.release_requested);
 }
 
 Federation::ObjectInstance* Federation::owned_object(ObjectHandle oh, const wire::Handles& attributes) {
@@ -79,134 +82,134 @@ Federation::ObjectInstance* Federation::owned_object(ObjectHandle oh, const wire
     return &it->second;
 }
 
+FederateHandle Federation::owner_of(const ObjectInstance& obj, fom::Handle attribute) {
+    auto owner = obj.owners.find(attribute);
+    return owner == obj.owners.end() ? 0 : owner->second;
+}
+
+// §7.7-7.8: the attributes `from` publishes that are unowned, or that their owner is divesting, go to it at
+// once. Returns those another federate owns (and keeps for now), with their owner.
+std::vector<std::pair<fom::Handle, FederateHandle>> Federation::acquire_available(
+    FederateHandle from, const FederateState& f, ObjectInstance& obj, const wire::Handles& attributes,
+    OwnershipNotices& notices) {
+    std::vector<std::pair<fom::Handle, FederateHandle>> owned_by_others;
+    for (auto attr : attributes) {
+        if (!publishes(f, obj, attr)) continue;  // AttributeNotPublished at the client
+        const FederateHandle owner = owner_of(obj, attr);
+        if (owner == 0 || (owner != from && obj.divesting.count(attr))) {
+            transfer(obj, attr, from, notices);
+        } else if (owner != from) {
+            owned_by_others.emplace_back(attr, owner);
+        }
+    }
+    return owned_by_others;
+}
+
+template <class Act>
+bool Federation::change_ownership(FederateHandle from, ObjectHandle oh, const wire::Handles& attributes, Act&& act) {
+    federate(from);
+    ObjectInstance* obj = owned_object(oh, attributes);
+    if (!obj) return false;
+    OwnershipNotices notices;
+    act(*obj, notices);
+    send_notices(oh, notices);
+    return true;
+}
+
 // §7.2: the attributes become unowned at once (or go to a federate waiting to acquire them).
 void Federation::on(FederateHandle from, const wire::UnconditionalDivestiture& m) {
-    federate(from);
-    ObjectInstance* obj = owned_object(m.object, m.attributes);
-    if (!obj) return;
-    OwnershipNotices notices;
-    for (auto attr : m.attributes) {
-        auto owner = obj->owners.find(attr);
-        if (owner != obj->owners.end() && owner->second == from) release_attribute(*obj, attr, notices);
-    }
-    send_notices(m.object, notices);
+    change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
+        for (auto attr : m.attributes)
+            if (owner_of(obj, attr) == from) release_attribute(obj, attr, notices);
+    });
 }
 
 // §7.3: the owner keeps the attributes until someone takes them. A federate already waiting to acquire
 // one gets it at once; otherwise the publishers that know the object are asked (§7.4,
 // requestAttributeOwnershipAssumption).
 void Federation::on(FederateHandle from, const wire::NegotiatedDivestiture& m) {
-    federate(from);
-    ObjectInstance* obj = owned_object(m.object, m.attributes);
-    if (!obj) return;
-    OwnershipNotices notices;
-    std::map<FederateHandle, wire::Handles> ask;
-    for (auto attr : m.attributes) {
-        auto owner = obj->owners.find(attr);
-        if (owner == obj->owners.end() || owner->second != from) continue;
-        obj->divesting[attr] = m.tag;
-        auto waiting = obj->acquirers.find(attr);
-        if (waiting != obj->acquirers.end() && !waiting->second.empty()) {
-            transfer(*obj, attr, waiting->second.front(), notices);
-            continue;
+    change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
+        notices.tag = m.tag;
+        for (auto attr : m.attributes) {
+            if (owner_of(obj, attr) != from) continue;
+            obj.divesting[attr] = m.tag;
+            auto waiting = obj.acquirers.find(attr);
+            if (waiting != obj.acquirers.end() && !waiting->second.empty()) {
+                transfer(obj, attr, waiting->second.front(), notices);
+                continue;
+            }
+            for (const auto& [gh, g] : federates_) {
+                if (gh != from && g.known.count(m.object) && publishes(g, obj, attr))
+                    notices.assumption_requested[gh].push_back(attr);
+            }
         }
-        for (const auto& [gh, g] : federates_) {
-            if (gh != from && g.known.count(m.object) && publishes(g, *obj, attr)) ask[gh].push_back(attr);
-        }
-    }
-    send_notices(m.object, notices);
-    for (auto& [to, attrs] : ask) outbox_.send(to, wire::RequestOwnershipAssumption{m.object, std::move(attrs), m.tag});
+    });
 }
 
 // §7.12.
 void Federation::on(FederateHandle from, const wire::CancelNegotiatedDivestiture& m) {
-    federate(from);
-    ObjectInstance* obj = owned_object(m.object, m.attributes);
-    if (!obj) return;
-    for (auto attr : m.attributes) {
-        auto owner = obj->owners.find(attr);
-        if (owner != obj->owners.end() && owner->second == from) obj->divesting.erase(attr);
-    }
+    change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices&) {
+        for (auto attr : m.attributes)
+            if (owner_of(obj, attr) == from) obj.divesting.erase(attr);
+    });
 }
 
 // §7.7: an unowned attribute, or one its owner is divesting, is transferred at once; for the others the
 // federate waits and their owners are asked to release them (§7.10, requestAttributeOwnershipRelease).
 void Federation::on(FederateHandle from, const wire::OwnershipAcquisition& m) {
     const auto& f = federate(from);
-    ObjectInstance* obj = owned_object(m.object, m.attributes);
-    if (!obj || !f.known.count(m.object)) return;
-    OwnershipNotices notices;
-    std::map<FederateHandle, wire::Handles> ask;
-    for (auto attr : m.attributes) {
-        if (!publishes(f, *obj, attr)) continue;  // AttributeNotPublished at the client
-        auto owner = obj->owners.find(attr);
-        if (owner == obj->owners.end() || (owner->second != from && obj->divesting.count(attr))) {
-            transfer(*obj, attr, from, notices);
-        } else if (owner->second != from) {
-            auto& waiting = obj->acquirers[attr];
+    change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
+        if (!f.known.count(m.object)) return;
+        notices.tag = m.tag;
+        for (const auto& [attr, owner] : acquire_available(from, f, obj, m.attributes, notices)) {
+            auto& waiting = obj.acquirers[attr];
             if (std::find(waiting.begin(), waiting.end(), from) == waiting.end()) waiting.push_back(from);
-            ask[owner->second].push_back(attr);
+            notices.release_requested[owner].push_back(attr);
         }
-    }
-    send_notices(m.object, notices);
-    for (auto& [to, attrs] : ask) outbox_.send(to, wire::RequestOwnershipRelease{m.object, std::move(attrs), m.tag});
+    });
 }
 
 // §7.8: granted when unowned or being divested, else attributeOwnershipUnavailable (§7.9).
 void Federation::on(FederateHandle from, const wire::OwnershipAcquisitionIfAvailable& m) {
     const auto& f = federate(from);
-    ObjectInstance* obj = owned_object(m.object, m.attributes);
-    if (!obj || !f.known.count(m.object)) return;
-    OwnershipNotices notices;
-    for (auto attr : m.attributes) {
-        if (!publishes(f, *obj, attr)) continue;
-        auto owner = obj->owners.find(attr);
-        if (owner == obj->owners.end() || (owner->second != from && obj->divesting.count(attr))) {
-            transfer(*obj, attr, from, notices);
-        } else if (owner->second != from) {
+    change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
+        if (!f.known.count(m.object)) return;
+        for (const auto& [attr, owner] : acquire_available(from, f, obj, m.attributes, notices))
             notices.unavailable[from].push_back(attr);
-        }
-    }
-    send_notices(m.object, notices);
+    });
 }
 
 // §7.13: what is still awaited is cancelled (§7.14, confirmAttributeOwnershipAcquisitionCancellation);
 // an attribute transferred meanwhile stays acquired (its notification was sent first).
 void Federation::on(FederateHandle from, const wire::CancelOwnershipAcquisition& m) {
-    federate(from);
-    ObjectInstance* obj = owned_object(m.object, m.attributes);
-    if (!obj) return;
-    OwnershipNotices notices;
-    for (auto attr : m.attributes) {
-        auto waiting = obj->acquirers.find(attr);
-        if (waiting == obj->acquirers.end()) continue;
-        auto& list = waiting->second;
-        auto it = std::find(list.begin(), list.end(), from);
-        if (it == list.end()) continue;
-        list.erase(it);
-        if (list.empty()) obj->acquirers.erase(waiting);
-        notices.cancelled[from].push_back(attr);
-    }
-    send_notices(m.object, notices);
+    change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
+        for (auto attr : m.attributes) {
+            auto waiting = obj.acquirers.find(attr);
+            if (waiting == obj.acquirers.end()) continue;
+            auto& list = waiting->second;
+            auto it = std::find(list.begin(), list.end(), from);
+            if (it == list.end()) continue;
+            list.erase(it);
+            if (list.empty()) obj.acquirers.erase(waiting);
+            notices.cancelled[from].push_back(attr);
+        }
+    });
 }
 
 // §7.11: the attributes some federate waits for go to the first of them; the others stay owned.
 wire::Handles Federation::release_response(FederateHandle from, const wire::ReleaseResponse& m) {
-    federate(from);
     wire::Handles released;
-    ObjectInstance* obj = owned_object(m.object, m.attributes);
-    if (!obj) return released;
-    OwnershipNotices notices;
-    for (auto attr : m.attributes) {
-        auto owner = obj->owners.find(attr);
-        auto waiting = obj->acquirers.find(attr);
-        if (owner == obj->owners.end() || owner->second != from || waiting == obj->acquirers.end()) continue;
-        obj->divesting.erase(attr);  // the release response itself tells the releasing federate
-        transfer(*obj, attr, waiting->second.front(), notices);
-        released.push_back(attr);
-    }
-    send_notices(m.object, notices);
-    refresh_scope();
+    const bool acted =
+        change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
+        for (auto attr : m.attributes) {
+            auto waiting = obj.acquirers.find(attr);
+            if (owner_of(obj, attr) != from || waiting == obj.acquirers.end()) continue;
+            obj.divesting.erase(attr);  // the release response itself tells the releasing federate
+            transfer(obj, attr, waiting->second.front(), notices);
+            released.push_back(attr);
+        }
+    });
+    if (acted) refresh_scope();
     return released;
 }
 

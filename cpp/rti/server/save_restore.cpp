@@ -43,13 +43,6 @@ struct ObjectAttributes {  // an object and attributes of it
     wire::Handles attributes;
     HLACORE_FIELDS(object, attributes)
 };
-struct TsoRecord {  // a queued timestamped message
-    double time = 0;
-    std::uint32_t sender = 0;
-    std::uint64_t serial = 0;
-    std::string frame;
-    HLACORE_FIELDS(time, sender, serial, frame)
-};
 
 struct FederateRecord {
     std::uint32_t handle = 0;
@@ -67,16 +60,8 @@ struct FederateRecord {
     bool attribute_scope = false;
     Pairs interaction_order;
     Pairs interaction_transport;
-    double time = 0;
-    double lookahead = 0;
-    bool regulating = false;
-    bool constrained = false;
-    bool asynchronous_delivery = false;
-    bool strict_after_grant = false;
-    bool receives_above_time = false;
-    double promise = 0;
-    std::vector<TsoRecord> tso;
-    std::vector<std::string> held_ro;          // held by time management (constrained, not advancing)
+    // Time state, queued timestamped messages and receive-order ones held by time management.
+    TimeManager::SavedState time_management;
     std::vector<std::string> held_after_save;  // sent during the save, delivered after federationSaved
     // Data distribution management (HLA 1.3 §9), as initiateFederateRestore carries it to the client.
     std::vector<wire::RegionRecord> regions;
@@ -88,9 +73,8 @@ struct FederateRecord {
     std::uint32_t last_region = 0;
     HLACORE_FIELDS(handle, name, published, subscribed, published_interactions, subscribed_interactions, known,
                    registration_started, interactions_turned_on, class_relevance, interaction_relevance,
-                   attribute_relevance, attribute_scope, interaction_order, interaction_transport, time, lookahead,
-                   regulating, constrained, asynchronous_delivery, strict_after_grant, receives_above_time, promise,
-                   tso, held_ro, held_after_save, regions, region_subscriptions, region_interaction_subscriptions,
+                   attribute_relevance, attribute_scope, interaction_order, interaction_transport, time_management,
+                   held_after_save, regions, region_subscriptions, region_interaction_subscriptions,
                    update_regions, in_scope, relevant, last_region)
 };
 
@@ -274,11 +258,9 @@ void Federation::on(FederateHandle from, const wire::FederateSaveComplete& m) {
 
 // §4.16: federationSaved once every federate saved, federationNotSaved if one did not (or left).
 void Federation::finish_save_if_answered() {
-    if (!save_.active) return;
-    for (const auto& [h, f] : federates_)
-        if (!save_.answered.count(h)) return;
-    bool success = !save_.failed;
-    for (const auto& [h, ok] : save_.answered) success = success && ok;
+    const auto answered = outcome(save_);
+    if (!answered) return;
+    bool success = *answered;
     if (success) {
         std::string bytes = encode_snapshot();
         save_error_.clear();
@@ -298,15 +280,29 @@ void Federation::finish_save_if_answered() {
         }
         if (success) saves_[save_.label] = std::move(bytes);
     }
-    outbox_.holding = nullptr;
-    SaveRun done = std::move(save_);
-    save_ = SaveRun{};
-    for (const auto& [h, f] : federates_) {
-        outbox_.send(h, wire::FederationSaved{success});
-        auto held = done.held.find(h);
-        if (held != done.held.end()) deliver_held(h, held->second);
-    }
+    end_run(save_, wire::FederationSaved{success});
     release_time();
+}
+
+std::optional<bool> Federation::outcome(const Run& run) const {
+    if (!run.active) return std::nullopt;
+    for (const auto& [h, f] : federates_)
+        if (!run.answered.count(h)) return std::nullopt;
+    bool success = !run.failed;
+    for (const auto& [h, ok] : run.answered) success = success && ok;
+    return success;
+}
+
+template <class R, class M>
+void Federation::end_run(R& run, const M& done) {
+    outbox_.holding = nullptr;
+    auto held = std::move(run.held);
+    run = R{};
+    for (const auto& [h, f] : federates_) {
+        outbox_.send(h, done);
+        auto frames = held.find(h);
+        if (frames != held.end()) deliver_held(h, frames->second);
+    }
 }
 
 // ---- hooks ----
@@ -326,15 +322,11 @@ void Federation::deliver_held(FederateHandle to, std::vector<std::string>& frame
 void Federation::save_restore_departed(FederateHandle h) {
     if (save_.active) {
         save_.told.erase(h);
-        save_.answered.erase(h);
-        save_.held.erase(h);
-        save_.failed = true;
+        save_.departed(h);
         finish_save_if_answered();
     }
     if (restore_.active) {
-        restore_.answered.erase(h);
-        restore_.held.erase(h);
-        restore_.failed = true;
+        restore_.departed(h);
         finish_restore_if_answered();
     }
 }
@@ -371,17 +363,7 @@ std::string Federation::encode_snapshot() const {
         r.attribute_scope = f.attribute_scope;
         r.interaction_order = pairs(f.interaction_order);
         r.interaction_transport = pairs(f.interaction_transport);
-        const auto t = time_.save_state(h);
-        r.time = t.time;
-        r.lookahead = t.lookahead;
-        r.regulating = t.regulating;
-        r.constrained = t.constrained;
-        r.asynchronous_delivery = t.asynchronous_delivery;
-        r.strict_after_grant = t.strict_after_grant;
-        r.receives_above_time = t.receives_above_time;
-        r.promise = t.promise;
-        for (const auto& m : t.tso) r.tso.push_back({m.time, m.sender, m.serial, m.frame});
-        r.held_ro = t.held_ro;
+        r.time_management = time_.save_state(h);
         auto held = save_.held.find(h);
         if (held != save_.held.end()) r.held_after_save = held->second;
         put_ddm(f.ddm, r);
@@ -497,11 +479,11 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
     for (const auto& f : s.federates) {
         for (auto oh : f.known)
             if (!objects_seen.count(oh)) throw WireError("federate '" + f.name + "' knows an unsaved object");
-        for (const auto& m : f.tso) {
+        for (const auto& m : f.time_management.tso) {
             if (!handles_seen.count(m.sender)) throw WireError("queued message from an unsaved federate");
             check_frame(m.frame);
         }
-        for (const auto& frame : f.held_ro) check_frame(frame);
+        for (const auto& frame : f.time_management.held_ro) check_frame(frame);
         for (const auto& frame : f.held_after_save) check_frame(frame);
         check_delivery_values(f.interaction_order, "federate '" + f.name + "'");
         check_delivery_values(f.interaction_transport, "federate '" + f.name + "'");
@@ -563,7 +545,7 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
     sync_points_.clear();  // their members' handles are gone
     routed_.clear();
     time_ = TimeManager{};
-    restore_ = RestoreRun{};
+    restore_ = Run{};
     restore_.active = true;
     restore_.label = label;
     std::map<FederateHandle, std::uint64_t> last_serial;
@@ -583,21 +565,8 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         f.attribute_scope = r.attribute_scope;
         for (const auto& [ic, v] : r.interaction_order) f.interaction_order[ic] = static_cast<fom::Order>(v);
         for (const auto& [ic, v] : r.interaction_transport) f.interaction_transport[ic] = static_cast<fom::Transport>(v);
-        TimeManager::SavedState t;
-        t.time = r.time;
-        t.lookahead = r.lookahead;
-        t.regulating = r.regulating;
-        t.constrained = r.constrained;
-        t.asynchronous_delivery = r.asynchronous_delivery;
-        t.strict_after_grant = r.strict_after_grant;
-        t.receives_above_time = r.receives_above_time;
-        t.promise = r.promise;
-        for (auto& m : r.tso) {
-            last_serial[m.sender] = std::max(last_serial[m.sender], m.serial);
-            t.tso.push_back(TsoMessage{m.time, m.sender, m.serial, std::move(m.frame)});
-        }
-        t.held_ro = std::move(r.held_ro);
-        time_.restore_state(r.handle, std::move(t));
+        for (const auto& m : r.time_management.tso) last_serial[m.sender] = std::max(last_serial[m.sender], m.serial);
+        time_.restore_state(r.handle, std::move(r.time_management));
         for (const auto& [region, space, bounds] : r.regions) f.ddm.regions[region] = make_region(space, bounds);
         for (const auto& [cls, region, attrs] : r.region_subscriptions)
             f.ddm.object_subscriptions[cls][region] = std::set<fom::Handle>(attrs.begin(), attrs.end());
@@ -628,18 +597,11 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
 
     // §4.20 initiateFederateRestore, with what the client mirrors of the restored federate.
     for (const auto& [h, f] : federates_) {
-        const auto t = time_.save_state(h);
         wire::InitiateFederateRestore m;
         m.label = label;
         m.federate = h;
         wire::RestoredState& state = m.state.edit();
-        state.time = t.time;
-        state.lookahead = t.lookahead;
-        state.regulating = t.regulating;
-        state.constrained = t.constrained;
-        state.asynchronous_delivery = t.asynchronous_delivery;
-        state.strict = t.strict_after_grant;
-        state.floor = t.regulating ? t.promise : 0;
+        state.time_state = time_.save_state(h).time;
         state.next_serial = last_serial[h];
         state.published = records_of<wire::ClassAttributes>(f.published);
         state.subscribed = records_of<wire::ClassAttributes>(f.subscribed);
@@ -676,19 +638,9 @@ void Federation::on(FederateHandle from, const wire::FederateRestoreComplete& m)
 // §4.22: federationRestored, or federationNotRestored if a federate could not restore (or left); the
 // gateway's state is the save's either way.
 void Federation::finish_restore_if_answered() {
-    if (!restore_.active) return;
-    for (const auto& [h, f] : federates_)
-        if (!restore_.answered.count(h)) return;
-    bool success = !restore_.failed;
-    for (const auto& [h, ok] : restore_.answered) success = success && ok;
-    outbox_.holding = nullptr;
-    RestoreRun done = std::move(restore_);
-    restore_ = RestoreRun{};
-    for (const auto& [h, f] : federates_) {
-        outbox_.send(h, wire::FederationRestored{success});
-        auto held = done.held.find(h);
-        if (held != done.held.end()) deliver_held(h, held->second);
-    }
+    const auto answered = outcome(restore_);
+    if (!answered) return;
+    end_run(restore_, wire::FederationRestored{*answered});
     update_advisories();
     count_scope_watchers();
     refresh_scope();  // from the scope and relevance already announced in the save
@@ -712,41 +664,25 @@ void Federation::write_save_status(std::string& out) const {
         } else {
             out += "null";
         }
-        out += ",\"told\":[";
-        bool first = true;
-        for (auto h : save_.told) {
-            out += (first ? "" : ",") + std::to_string(h);
-            first = false;
-        }
-        out += ']';
+        out += ",\"told\":";
+        json_array(out, save_.told, [&](FederateHandle h) { out += std::to_string(h); });
     } else {
         out += "\"idle\"";
     }
     if (restore_.active || save_.active) {
-        out += ",\"answered\":[";
-        bool first = true;
-        for (const auto& [h, ok] : restore_.active ? restore_.answered : save_.answered) {
-            out += (first ? "" : ",") + std::to_string(h);
-            first = false;
-        }
-        out += ']';
+        out += ",\"answered\":";
+        json_array(out, restore_.active ? restore_.answered : save_.answered,
+                   [&](const auto& answer) { out += std::to_string(answer.first); });
     }
-    out += ",\"saves\":[";
-    bool first = true;
-    for (const auto& [label, bytes] : saves_) {
-        if (!first) out += ',';
-        first = false;
-        json_string(out, label);
-    }
-    out += "],\"save_dir\":";
+    out += ",\"saves\":";
+    json_array(out, saves_, [&](const auto& save) { json_string(out, save.first); });
+    out += ",\"save_dir\":";
     json_string(out, save_dir_);
     out += ",\"save_error\":";
     json_string(out, save_error_);
-    out += "},\"instances\":[";
-    first = true;
-    for (const auto& [oh, obj] : objects_) {
-        if (!first) out += ',';
-        first = false;
+    out += "},\"instances\":";
+    json_array(out, objects_, [&](const auto& object) {
+        const auto& [oh, obj] = object;
         const auto* cls = fom_.object_class(obj.object_class);
         out += "{\"handle\":" + std::to_string(oh) + ",\"name\":";
         json_string(out, obj.name);
@@ -762,8 +698,7 @@ void Federation::write_save_status(std::string& out) const {
             out += ':' + std::to_string(owner);
         }
         out += "}}";
-    }
-    out += ']';
+    });
 }
 
 }  // namespace hlacore

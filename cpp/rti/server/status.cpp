@@ -59,11 +59,8 @@ void Federation::write_status(std::string& out) {
     out += ",\"objects\":" + std::to_string(objects_.size());
     out += ",\"sync_points\":";
     sync_points_.write_status(out);
-    out += ",\"federates\":[";
-    bool first = true;
-    for (const auto& t : time_.status()) {
-        if (!first) out += ',';
-        first = false;
+    out += ",\"federates\":";
+    json_array(out, time_.status(), [&](const TimeFederateStatus& t) {
         const auto& f = federates_.at(t.federate);
         out += "{\"handle\":" + std::to_string(t.federate) + ",\"name\":";
         json_string(out, f.name);
@@ -91,8 +88,7 @@ void Federation::write_status(std::string& out) {
         out += ",\"output_bound\":";
         json_number(out, t.output_bound);
         out += '}';
-    }
-    out += ']';
+    });
     write_save_status(out);
     out += '}';
 }

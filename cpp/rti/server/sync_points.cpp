@@ -61,14 +61,7 @@ void SyncPoints::check(const std::string& label) {
 }
 
 void SyncPoints::write_status(std::string& json) const {
-    json += '[';
-    bool first = true;
-    for (const auto& [label, point] : points_) {
-        if (!first) json += ',';
-        first = false;
-        json_string(json, label);
-    }
-    json += ']';
+    json_array(json, points_, [&](const auto& point) { json_string(json, point.first); });
 }
 
 }  // namespace hlacore

@@ -381,12 +381,8 @@ std::vector<TimeFederateStatus> TimeManager::status() {
     std::vector<TimeFederateStatus> out;
     for (const auto& [f, s] : federates_) {
         TimeFederateStatus st;
+        static_cast<wire::SavedTime&>(st) = s;
         st.federate = f;
-        st.time = s.time;
-        st.lookahead = s.lookahead;
-        st.regulating = s.regulating;
-        st.constrained = s.constrained;
-        st.asynchronous_delivery = s.asynchronous_delivery;
         st.pending = s.pending;
         st.pending_time = s.pending_time;
         st.queued_tso = s.tso.size();
@@ -413,16 +409,11 @@ void TimeManager::cap_request(std::uint32_t f, Time t) {
 TimeManager::SavedState TimeManager::save_state(std::uint32_t f) const {
     const State& s = state(f);
     SavedState out;
-    out.time = s.time;
-    out.lookahead = s.lookahead;
+    out.time = s;  // the saved part of the state
     // A regulation enable whose callback is still held is not kept (nor is its bound: dropping a bound
     // never lets a message into anyone's past).
-    out.regulating = s.regulating && !s.enabling;
-    out.constrained = s.constrained;
-    out.asynchronous_delivery = s.asynchronous_delivery;
-    out.strict_after_grant = s.strict_after_grant;
-    out.receives_above_time = s.receives_above_time;
-    out.promise = out.regulating ? s.promise : -kInfinity;
+    out.time.regulating = s.regulating && !s.enabling;
+    out.time.promise = out.time.regulating ? s.promise : -kInfinity;
     for (const auto& [key, frame] : s.tso) out.tso.push_back(TsoMessage{key.first, key.second.first, key.second.second, frame});
     out.held_ro = s.held_ro;
     return out;
@@ -433,14 +424,8 @@ void TimeManager::restore_state(std::uint32_t f, SavedState saved) {
     regulating_.clear();  // recomputed by the next compute_bounds()
     State& s = federates_[f];
     s = State{};
-    s.time = saved.time;
-    s.lookahead = saved.lookahead;
-    s.regulating = saved.regulating;
-    s.constrained = saved.constrained;
-    s.asynchronous_delivery = saved.asynchronous_delivery;
-    s.strict_after_grant = saved.strict_after_grant;
-    s.receives_above_time = saved.receives_above_time;
-    s.promise = saved.regulating ? saved.promise : -kInfinity;
+    static_cast<wire::SavedTime&>(s) = saved.time;
+    if (!s.regulating) s.promise = -kInfinity;
     for (auto& m : saved.tso)
         s.tso.emplace(std::make_pair(m.time, std::make_pair(m.sender, m.serial)), std::move(m.frame));
     s.held_ro = std::move(saved.held_ro);

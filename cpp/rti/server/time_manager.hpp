@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "rti/wire/messages.hpp"
+
 namespace hlacore {
 
 using Time = double;
@@ -42,15 +44,13 @@ struct TsoMessage {
     std::uint32_t sender = 0;
     std::uint64_t serial = 0;
     std::string frame;  // opaque to the time manager: the encoded callback to deliver
+    HLACORE_FIELDS(time, sender, serial, frame)  // kept in save files
 };
 
-struct TimeFederateStatus {
+// A federate's time state for introspection: its current state (regulating counts while enabling) and
+// what is in progress.
+struct TimeFederateStatus : wire::SavedTime {
     std::uint32_t federate = 0;
-    Time time = 0;
-    Time lookahead = 0;
-    bool regulating = false;
-    bool constrained = false;
-    bool asynchronous_delivery = false;
     AdvanceKind pending = AdvanceKind::None;
     Time pending_time = 0;
     std::size_t queued_tso = 0;
@@ -126,19 +126,13 @@ public:
     std::vector<TimeFederateStatus> status();
 
     // ---- save/restore (docs/save-restore.md) ----
-    // What a federation save keeps of one federate. A pending time advance request or enable is not
-    // kept: the restored federate is granted at its time, with only the switches already enabled.
+    // What a federation save keeps of one federate (in the save file as its fields in order): its time
+    // state, with only the switches already enabled, and the messages waiting for it.
     struct SavedState {
-        Time time = 0;
-        Time lookahead = 0;
-        bool regulating = false;
-        bool constrained = false;
-        bool asynchronous_delivery = false;
-        bool strict_after_grant = false;
-        bool receives_above_time = false;
-        Time promise = -kInfinity;
+        wire::SavedTime time;
         std::vector<TsoMessage> tso;  // in delivery order
         std::vector<std::string> held_ro;
+        HLACORE_FIELDS(time, tso, held_ro)
     };
     bool constrained(std::uint32_t f) const;
     // A timed save at `t`: a pending request beyond it is granted at most `t`.
@@ -148,18 +142,11 @@ public:
     void restore_state(std::uint32_t f, SavedState saved);
 
 private:
-    struct State {
-        Time time = 0;
-        Time lookahead = 0;
-        bool regulating = false;
-        bool constrained = false;
+    // A federate's state: what a save keeps of it, and what is in progress.
+    struct State : wire::SavedTime {
         bool constrained_pending = false;
-        bool asynchronous_delivery = false;
-        bool strict_after_grant = false;  // last grant was TAR/NER with zero lookahead: sends must be > time
-        bool receives_above_time = false;  // last grant was TAR/NER while constrained: nothing at time may arrive
         AdvanceKind pending = AdvanceKind::None;
         Time pending_time = 0;
-        Time promise = -kInfinity;  // no message below this was ever allowed since regulation began
         std::optional<Time> enabling;  // t0 of a regulation enable whose callback is not released yet
         Time bound = kInfinity;        // output bound, valid after compute_bounds() while regulating
         bool settled = false;          // scratch for compute_bounds()

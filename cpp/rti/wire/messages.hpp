@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,10 +13,12 @@
 #include <variant>
 #include <vector>
 
+#include "rti/list_codes.hpp"
+
 namespace hlacore::wire {
 
 constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
-constexpr std::uint16_t kProtocolVersion = 2;  // 2: initiateFederateRestore's nested records
+constexpr std::uint16_t kProtocolVersion = 3;  // 2: initiateFederateRestore's nested records; 3: its SavedTime
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;  // larger frames are a protocol error
 
 using Handles = std::vector<std::uint32_t>;
@@ -132,9 +135,16 @@ using OptionalTime = std::optional<double>;
     X(TurnUpdatesOn)                 \
     X(TurnUpdatesOff)
 
+// The federate -> gateway messages the gateway serves itself: federation management and the requests
+// answered with a Reply. Each has a `Gateway::serve(Connection&, const M&)` in cpp/rti/server/gateway.cpp,
+// declared from this list.
+#define HLACORE_GATEWAY_SERVICES(X)                                                                    \
+    X(CreateFederation) X(DestroyFederation) X(JoinFederation) X(ResignFederation) X(RegisterObject)   \
+    X(RegisterObjectWithRegion) X(RequestFederationSave) X(RequestFederationRestore) X(ReleaseResponse) \
+    X(QueryStatus) X(QueryTime)
+
 // The requests of a joined federate that its Federation serves, by service group: each has a handler
-// `Federation::on(FederateHandle, const M&)` in cpp/rti/server/<group>.cpp, declared from this list. The
-// other federate -> gateway messages are the gateway's own (server/gateway.cpp).
+// `Federation::on(FederateHandle, const M&)` in cpp/rti/server/<group>.cpp, declared from this list.
 #define HLACORE_FEDERATION_SERVICES(X)                                                                 \
     /* sync_points (forwarded to SyncPoints by federation.cpp) */                                      \
     X(RegisterSyncPoint) X(SyncPointAchieved)                                                          \
@@ -160,13 +170,7 @@ using OptionalTime = std::optional<double>;
     X(SubscribeInteractionClassWithRegion) X(UnsubscribeInteractionClassWithRegion)                    \
     X(SendInteractionWithRegion) X(RequestClassUpdateWithRegion)
 
-enum class MessageType : std::uint16_t {
-    Invalid = 0,
-#define HLACORE_X(name) name,
-    HLACORE_MESSAGES(HLACORE_X)
-#undef HLACORE_X
-    Count
-};
+enum class MessageType : std::uint16_t { HLACORE_LIST_CODES(Invalid, HLACORE_MESSAGES) };
 
 const char* message_name(MessageType type);
 
@@ -762,14 +766,24 @@ struct UpdateRegion {  // the region the federate updates an object's attribute 
     std::uint32_t region = 0;
     HLACORE_FIELDS(object, attribute, region)
 };
-struct RestoredState {
+// A federate's time state as a federation save keeps it: the gateway's TimeManager hands it out, the save
+// file records it and initiateFederateRestore brings it back to the client. A pending time advance request or
+// regulation enable is not part of it: the restored federate is granted at its time.
+struct SavedTime {
     double time = 0;
     double lookahead = 0;
     bool regulating = false;
     bool constrained = false;
     bool asynchronous_delivery = false;
-    bool strict = false;            // the last grant was TAR/NER/FQR: with zero lookahead, sends must be > time
-    double floor = 0;               // the lowest timestamp it may send (its promise), when regulating
+    bool strict_after_grant = false;   // last grant was TAR/NER with zero lookahead: sends must be > time
+    bool receives_above_time = false;  // last grant was TAR/NER while constrained: nothing at time may arrive
+    // No message below this was ever allowed since regulation began (-infinity when not regulating).
+    double promise = -std::numeric_limits<double>::infinity();
+    HLACORE_FIELDS(time, lookahead, regulating, constrained, asynchronous_delivery, strict_after_grant,
+                   receives_above_time, promise)
+};
+struct RestoredState {
+    SavedTime time_state;
     std::uint64_t next_serial = 0;  // serials at or below this are held by restored queues
     std::vector<ClassAttributes> published;
     std::vector<ClassAttributes> subscribed;
@@ -781,9 +795,8 @@ struct RestoredState {
     std::vector<InteractionRegion> region_interaction_subscriptions;
     std::vector<UpdateRegion> update_regions;
     std::uint32_t last_region = 0;  // the highest region number this federate ever created
-    HLACORE_FIELDS(time, lookahead, regulating, constrained, asynchronous_delivery, strict, floor, next_serial,
-                   published, subscribed, published_interactions, subscribed_interactions, objects, regions,
-                   region_subscriptions, region_interaction_subscriptions, update_regions, last_region)
+    HLACORE_FIELDS(time_state, next_serial, published, subscribed, published_interactions, subscribed_interactions,
+                   objects, regions, region_subscriptions, region_interaction_subscriptions, update_regions, last_region)
 };
 struct InitiateFederateRestore {
     HLACORE_TYPE(InitiateFederateRestore)

@@ -13,7 +13,7 @@ import os
 import sys
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Literal, Protocol, TypeVar
+from typing import Any, Literal, TypeVar
 
 from . import _core
 
@@ -43,15 +43,15 @@ OBJECT_ROOTS = ("ObjectRoot", "HLAobjectRoot")
 INTERACTION_ROOTS = ("InteractionRoot", "HLAinteractionRoot")
 
 
-class _Named(Protocol):
-    @property
-    def handle(self) -> int: ...
+@dataclass(frozen=True)
+class _Handled:
+    """What every element of the FOM has: its handle and its name."""
 
-    @property
-    def name(self) -> str: ...
+    handle: int
+    name: str
 
 
-_N = TypeVar("_N", bound=_Named)
+_N = TypeVar("_N", bound=_Handled)
 
 
 def _check_key(key: object, what: str) -> None:
@@ -69,22 +69,18 @@ def _lookup(items: Iterable[_N], key: int | str, what: str) -> _N:
 
 
 @dataclass(frozen=True)
-class Attribute:
+class Attribute(_Handled):
     """An attribute of an object class; ``space`` is the routing space name, None without one."""
 
-    handle: int
-    name: str
     transport: Transport
     order: Order
     space: str | None = None
 
 
 @dataclass(frozen=True)
-class _Class:
+class _Class(_Handled):
     """What object and interaction classes share: their place in the class tree."""
 
-    handle: int
-    name: str
     qualified_name: str
     parent: int | None
     children: tuple[int, ...]
@@ -103,11 +99,8 @@ class ObjectClass(_Class):
 
 
 @dataclass(frozen=True)
-class Parameter:
+class Parameter(_Handled):
     """A parameter of an interaction class."""
-
-    handle: int
-    name: str
 
 
 @dataclass(frozen=True)
@@ -126,19 +119,14 @@ class InteractionClass(_Class):
 
 
 @dataclass(frozen=True)
-class Dimension:
+class Dimension(_Handled):
     """A dimension of a routing space."""
-
-    handle: int
-    name: str
 
 
 @dataclass(frozen=True)
-class RoutingSpace:
+class RoutingSpace(_Handled):
     """A routing space and its dimensions."""
 
-    handle: int
-    name: str
     dimensions: tuple[Dimension, ...]
 
     def dimension(self, name_or_handle: int | str) -> Dimension:

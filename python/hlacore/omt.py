@@ -30,7 +30,7 @@ from __future__ import annotations
 import operator
 import struct
 from collections.abc import Iterable, Mapping, Sequence
-from typing import Any, NoReturn, Union
+from typing import Any, Generic, NoReturn, Protocol, TypeVar, Union
 
 __all__ = [
     "HLAdataType",
@@ -75,6 +75,10 @@ __all__ = [
 #: Anything ``unpack`` accepts as its buffer.
 Buffer = Union[bytes, bytearray, memoryview]
 
+_V = TypeVar("_V")  # a decoded value
+_V_co = TypeVar("_V_co", covariant=True)
+_V_contra = TypeVar("_V_contra", contravariant=True)
+
 _COUNT = struct.Struct(">i")  # HLAinteger32BE element/character count
 _FLOAT32_MAX = struct.unpack(">f", b"\x7f\x7f\xff\xff")[0]
 
@@ -109,9 +113,37 @@ def _need(type_name: str, buffer: Buffer, offset: int, needed: int) -> None:
             f"only {max(available, 0)} available")
 
 
+def _counted(type_name: str, buffer: Any, offset: Any,
+             unit: int) -> tuple[int, int]:
+    """Read the HLAinteger32BE count at ``offset`` of a count-prefixed
+    value whose elements take ``unit`` bytes; check that it is not negative
+    and that the elements are there; return ``(start, count)``."""
+    offset = _check_buffer(type_name, buffer, offset)
+    _need(type_name, buffer, offset, 4)
+    count: int = _COUNT.unpack_from(buffer, offset)[0]
+    if count < 0:
+        raise ValueError(f"{type_name}: negative length {count}")
+    start = offset + 4
+    _need(type_name, buffer, start, unit * count)
+    return start, count
+
+
 def _padding(position: int, boundary: int) -> int:
     """Number of pad bytes to bring ``position`` to a multiple of boundary."""
     return -position % boundary
+
+
+def _pack_padded(parts: list[bytes], position: int, datatype: HLAdataType,
+                 value: Any) -> int:
+    """Append the pad bytes that bring ``position`` (in the composite) to
+    ``datatype``'s octet boundary, then ``value`` packed, to ``parts``;
+    return the position after it."""
+    pad = _padding(position, datatype.octetBoundary)
+    data = datatype.pack(value)
+    if pad:
+        parts.append(b"\x00" * pad)
+    parts.append(data)
+    return position + pad + len(data)
 
 
 def _as_int(type_name: str, value: Any) -> int:
@@ -169,17 +201,31 @@ class HLAdataType:
 # basic data types
 # --------------------------------------------------------------------------
 
-class _IntegerType(HLAdataType):
-    """Fixed-size two's complement or unsigned integer."""
+class _StructType(HLAdataType, Generic[_V]):
+    """A number that one ``struct`` code encodes (``order``: ``>`` or ``<``)."""
 
     def __init__(self, name: str, order: str, code: str) -> None:
         self.name = name
         self._order = order
         self._code = code
         self._struct = struct.Struct(order + code)
+        self.octetBoundary = self._struct.size
+        self.fixed_size = self._struct.size
+
+    def unpack(self, buffer: Buffer, offset: int = 0) -> tuple[_V, int]:
+        """Decode a number at ``offset``; return ``(value, size)``."""
+        offset = _check_buffer(self.name, buffer, offset)
         size = self._struct.size
-        self.octetBoundary = size
-        self.fixed_size = size
+        _need(self.name, buffer, offset, size)
+        return self._struct.unpack_from(buffer, offset)[0], size
+
+
+class _IntegerType(_StructType[int]):
+    """Fixed-size two's complement or unsigned integer."""
+
+    def __init__(self, name: str, order: str, code: str) -> None:
+        super().__init__(name, order, code)
+        size = self._struct.size
         if code.isupper():
             self._min, self._max = 0, (1 << (8 * size)) - 1
         else:
@@ -195,24 +241,12 @@ class _IntegerType(HLAdataType):
                 f"[{self._min}, {self._max}]")
         return self._struct.pack(number)
 
-    def unpack(self, buffer: Buffer, offset: int = 0) -> tuple[int, int]:
-        """Decode an integer at ``offset``; return ``(value, size)``."""
-        offset = _check_buffer(self.name, buffer, offset)
-        size = self._struct.size
-        _need(self.name, buffer, offset, size)
-        return self._struct.unpack_from(buffer, offset)[0], size
 
-
-class _FloatType(HLAdataType):
+class _FloatType(_StructType[float]):
     """IEEE 754 binary32 or binary64 number."""
 
     def __init__(self, name: str, order: str, code: str) -> None:
-        self.name = name
-        self._order = order
-        self._code = code
-        self._struct = struct.Struct(order + code)
-        self.octetBoundary = self._struct.size
-        self.fixed_size = self._struct.size
+        super().__init__(name, order, code)
         self._max = _FLOAT32_MAX if code == "f" else 1.7976931348623157e308
 
     def pack(self, value: Any) -> bytes:
@@ -230,13 +264,6 @@ class _FloatType(HLAdataType):
             raise ValueError(
                 f"{self.name}: value {value!r} out of range (largest finite "
                 f"magnitude is {self._max!r})") from None
-
-    def unpack(self, buffer: Buffer, offset: int = 0) -> tuple[float, int]:
-        """Decode a float at ``offset``; return ``(value, size)``."""
-        offset = _check_buffer(self.name, buffer, offset)
-        size = self._struct.size
-        _need(self.name, buffer, offset, size)
-        return self._struct.unpack_from(buffer, offset)[0], size
 
 
 class _OctetType(HLAdataType):
@@ -326,13 +353,7 @@ class _ASCIIStringType(HLAdataType):
 
     def unpack(self, buffer: Buffer, offset: int = 0) -> tuple[bytes, int]:
         """Decode at ``offset``; return ``(bytes, 4 + length)`` like PyHLA."""
-        offset = _check_buffer(self.name, buffer, offset)
-        _need(self.name, buffer, offset, 4)
-        length = _COUNT.unpack_from(buffer, offset)[0]
-        if length < 0:
-            raise ValueError(f"HLAASCIIstring: negative length {length}")
-        start = offset + 4
-        _need(self.name, buffer, start, length)
+        start, length = _counted(self.name, buffer, offset, 1)
         return bytes(buffer[start:start + length]), 4 + length
 
 
@@ -359,13 +380,7 @@ class _UnicodeStringType(HLAdataType):
 
     def unpack(self, buffer: Buffer, offset: int = 0) -> tuple[str, int]:
         """Decode at ``offset``; return ``(str, 4 + 2 * count)``."""
-        offset = _check_buffer(self.name, buffer, offset)
-        _need(self.name, buffer, offset, 4)
-        count = _COUNT.unpack_from(buffer, offset)[0]
-        if count < 0:
-            raise ValueError(f"HLAunicodeString: negative length {count}")
-        start = offset + 4
-        _need(self.name, buffer, start, 2 * count)
+        start, count = _counted(self.name, buffer, offset, 2)
         try:
             text = bytes(buffer[start:start + 2 * count]).decode("utf-16-be")
         except UnicodeDecodeError as exc:
@@ -415,7 +430,7 @@ HLAboolean = _BooleanType()
 
 def _numeric_code(element: HLAdataType) -> tuple[str, str] | None:
     """Return ``(byte_order, struct_code)`` for plain numeric basic types."""
-    if isinstance(element, (_IntegerType, _FloatType)):
+    if isinstance(element, _StructType):
         return element._order, element._code
     return None
 
@@ -432,21 +447,14 @@ class _ArrayBase(HLAdataType):
     def _pack_elements(self, values: Sequence[Any], start: int) -> list[bytes]:
         """Pack ``values`` as padded elements; ``start`` = position in
         the composite where the first element may begin."""
-        element = self.elementType
-        boundary = element.octetBoundary
         parts: list[bytes] = []
         position = start
         for index, value in enumerate(values):
-            pad = _padding(position, boundary)
-            if pad:
-                parts.append(b"\x00" * pad)
-                position += pad
             try:
-                data = element.pack(value)
+                position = _pack_padded(parts, position, self.elementType,
+                                        value)
             except (ValueError, TypeError, KeyError) as exc:
                 _rethrow(f"{self.name}[{index}]", exc)
-            parts.append(data)
-            position += len(data)
         return parts
 
     def _pack_fast(self, values: Sequence[Any]) -> bytes | None:
@@ -627,16 +635,11 @@ class HLAfixedRecord(HLAdataType):
             except KeyError:
                 raise KeyError(
                     f"{self.name}: missing field {field_name!r}") from None
-            pad = _padding(position, field_type.octetBoundary)
-            if pad:
-                parts.append(b"\x00" * pad)
-                position += pad
             try:
-                data = field_type.pack(field_value)
+                position = _pack_padded(parts, position, field_type,
+                                        field_value)
             except (ValueError, TypeError, KeyError) as exc:
                 _rethrow(f"{self.name}.{field_name}", exc)
-            parts.append(data)
-            position += len(data)
         return b"".join(parts)
 
     def unpack(self, buffer: Buffer, offset: int = 0
@@ -797,67 +800,57 @@ def unpack_string(data: Buffer, encoding: str = "utf-8") -> str:
     return raw.decode(encoding)
 
 
-def pack_short(value: int) -> bytes:
-    """Encode a 16-bit signed integer, big-endian (2 bytes)."""
-    return HLAinteger16BE.pack(value)
+class _Fixed(Protocol[_V_co]):
+    """A basic type of a fixed size whose ``unpack`` gives a ``_V_co``."""
+
+    @property
+    def fixed_size(self) -> int | None: ...
+
+    def pack(self, value: Any) -> bytes: ...
+
+    def unpack(self, buffer: Buffer, offset: int = 0) -> tuple[_V_co, int]: ...
 
 
-def unpack_short(data: Buffer) -> int:
-    """Decode exactly 2 bytes as a big-endian 16-bit signed integer."""
-    _exact("unpack_short", data, 2)
-    return HLAinteger16BE.unpack(data)[0]
+class _Pack(Protocol[_V_contra]):
+    def __call__(self, value: _V_contra) -> bytes: ...
 
 
-def pack_int(value: int) -> bytes:
-    """Encode a 32-bit signed integer, big-endian (4 bytes)."""
-    return HLAinteger32BE.pack(value)
+class _Unpack(Protocol[_V_co]):
+    def __call__(self, data: Buffer) -> _V_co: ...
 
 
-def unpack_int(data: Buffer) -> int:
-    """Decode exactly 4 bytes as a big-endian 32-bit signed integer."""
-    _exact("unpack_int", data, 4)
-    return HLAinteger32BE.unpack(data)[0]
+def _helpers(kind: str, datatype: _Fixed[_V], what: str,
+             note: str = "") -> tuple[_Pack[_V], _Unpack[_V]]:
+    """``pack_<kind>`` and ``unpack_<kind>``: ``datatype``'s encoding of
+    ``what``, unpacked from exactly its size (as JCERTI does); ``note``
+    ends the docstring of ``unpack_<kind>``."""
+    size = datatype.fixed_size
+    assert size is not None, datatype
+
+    def pack(value: _V) -> bytes:
+        return datatype.pack(value)
+
+    def unpack(data: Buffer) -> _V:
+        _exact(unpack.__name__, data, size)
+        return datatype.unpack(data)[0]
+
+    pack.__doc__ = f"Encode {what} ({size} bytes)."
+    unpack.__doc__ = f"Decode exactly {size} bytes as {what}{note}."
+    for function, name in ((pack, f"pack_{kind}"), (unpack, f"unpack_{kind}")):
+        function.__name__ = function.__qualname__ = name
+    return pack, unpack
 
 
-def pack_long(value: int) -> bytes:
-    """Encode a 64-bit signed integer, big-endian (8 bytes)."""
-    return HLAinteger64BE.pack(value)
-
-
-def unpack_long(data: Buffer) -> int:
-    """Decode exactly 8 bytes as a big-endian 64-bit signed integer."""
-    _exact("unpack_long", data, 8)
-    return HLAinteger64BE.unpack(data)[0]
-
-
-def pack_float(value: float) -> bytes:
-    """Encode an IEEE 754 binary32, big-endian (4 bytes)."""
-    return HLAfloat32BE.pack(value)
-
-
-def unpack_float(data: Buffer) -> float:
-    """Decode exactly 4 bytes as a big-endian IEEE 754 binary32."""
-    _exact("unpack_float", data, 4)
-    return HLAfloat32BE.unpack(data)[0]
-
-
-def pack_double(value: float) -> bytes:
-    """Encode an IEEE 754 binary64, big-endian (8 bytes)."""
-    return HLAfloat64BE.pack(value)
-
-
-def unpack_double(data: Buffer) -> float:
-    """Decode exactly 8 bytes as a big-endian IEEE 754 binary64."""
-    _exact("unpack_double", data, 8)
-    return HLAfloat64BE.unpack(data)[0]
-
-
-def pack_boolean(value: bool) -> bytes:
-    """Encode a boolean as a big-endian 32-bit integer 0 or 1."""
-    return HLAboolean.pack(value)
-
-
-def unpack_boolean(data: Buffer) -> bool:
-    """Decode exactly 4 bytes as a boolean; non-zero is ``True`` (JCERTI)."""
-    _exact("unpack_boolean", data, 4)
-    return HLAboolean.unpack(data)[0]
+pack_short, unpack_short = _helpers(
+    "short", HLAinteger16BE, "a 16-bit signed integer, big-endian")
+pack_int, unpack_int = _helpers(
+    "int", HLAinteger32BE, "a 32-bit signed integer, big-endian")
+pack_long, unpack_long = _helpers(
+    "long", HLAinteger64BE, "a 64-bit signed integer, big-endian")
+pack_float, unpack_float = _helpers(
+    "float", HLAfloat32BE, "an IEEE 754 binary32, big-endian")
+pack_double, unpack_double = _helpers(
+    "double", HLAfloat64BE, "an IEEE 754 binary64, big-endian")
+pack_boolean, unpack_boolean = _helpers(
+    "boolean", HLAboolean, "a boolean, a big-endian 32-bit integer 0 or 1",
+    "; non-zero is ``True`` (JCERTI)")

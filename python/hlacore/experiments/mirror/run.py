@@ -13,7 +13,6 @@ import json
 import subprocess
 import sys
 import threading
-import time
 from dataclasses import dataclass, field
 from typing import Any, Optional
 
@@ -130,6 +129,7 @@ def run(address: str, corrected: bool = False, defective_wheel: float = 0.0, cyc
     process's ROS node: call once per process)."""
     from hlacore.federates.ros_bridge import OdometryOut, RosBridge, stage_mappings
     from hlacore.federates.ros_bridge.children import stop_process
+    from hlacore.federates.ros_bridge.runner import WorldThread, wait_wired
 
     params = params or AvoidParams()
     duration = (cycles + 1) * params.cycle  # the world carries out the last command too
@@ -156,20 +156,8 @@ def run(address: str, corrected: bool = False, defective_wheel: float = 0.0, cyc
                                    repr(defective_wheel), "--mirror-from", mirror_from, *flags])
         robot_out.wait_for("robot ready", start_timeout)
         wired = [f"/{ROSBOT}/odom", f"/{ROSBOT}/range", f"/{ROSBOT}/cmd_vel"]
-        deadline = time.monotonic() + start_timeout
-        while not all(bridge.connections().get(t, 0) > 0 for t in wired):
-            if node.poll() is not None or time.monotonic() > deadline:
-                raise RuntimeError(f"the ROS node did not connect: {bridge.connections()}; {node_out.lines}")
-            time.sleep(0.05)
-        failure: list[BaseException] = []
-
-        def run_world() -> None:
-            try:
-                world.run_until(duration, timeout=cycle_timeout)
-            except BaseException as exc:  # reported on the calling thread
-                failure.append(exc)
-                bridge.stop()
-
+        if not wait_wired(bridge, wired, node, start_timeout):
+            raise RuntimeError(f"the ROS node did not connect: {bridge.connections()}; {node_out.lines}")
         finished = threading.Event()
         ros_node = node
 
@@ -177,23 +165,17 @@ def run(address: str, corrected: bool = False, defective_wheel: float = 0.0, cyc
             # a dead node would leave the bridge waiting ``await_inputs`` at every grant: end the run instead
             while not finished.wait(0.2):
                 if ros_node.poll() is not None:
-                    failure.append(RuntimeError(f"the ROS node ended early (status {ros_node.returncode}): "
-                                                f"{node_out.lines[-20:]}"))
-                    bridge.stop()
+                    world_thread.fail(RuntimeError(f"the ROS node ended early (status {ros_node.returncode}): "
+                                                   f"{node_out.lines[-20:]}"))
                     return
 
-        thread = threading.Thread(target=run_world, name="world")
-        thread.start()
+        world_thread = WorldThread(world, duration, cycle_timeout, bridge)
         threading.Thread(target=watch_node, name="watch-node", daemon=True).start()
         bridge.spin(until=duration, cycle_timeout=0.05)
         finished.set()
-        if failure:
+        if world_thread.failure:
             bridge.close()  # resigned: the world's remaining grants no longer wait for the bridge
-        thread.join(cycle_timeout)
-        if failure:
-            raise failure[0]
-        if thread.is_alive():
-            raise TimeoutError("the world federate did not finish")
+        world_thread.join()
         if robot.wait(cycle_timeout) != 0:
             raise RuntimeError(f"the robot federate failed: {robot_out.finish()[-20:]}")
         result.real = [json.loads(line) for line in robot_out.finish() if line.startswith('{"cycle"')]

@@ -31,7 +31,6 @@ import signal
 import subprocess
 import sys
 import threading
-import time
 from typing import Optional, Sequence
 
 import hlacore
@@ -40,6 +39,7 @@ from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFede
 from hlacore.federates.ros_bridge.bridge import RosBridge, world_mappings
 from hlacore.federates.ros_bridge.children import stop_process
 from hlacore.federates.ros_bridge.master import ros_master
+from hlacore.federates.ros_bridge.runner import WorldThread, wait_wired
 
 from ..cli import run_command
 
@@ -109,28 +109,11 @@ def run(address: str, duration: float = 30.0, period: float = 0.1, dt: float = 0
                                 text=True)
         wired = ["/avatar/range", "/avatar/cmd_vel"] + [f"/{n}/{t}" for n in paper1.OBSTACLES
                                                         for t in ("base_pose_ground_truth", "cmd_vel")]
-        deadline = time.monotonic() + node_timeout
-        while not all(bridge.connections().get(t, 0) > 0 for t in wired):
-            if node.poll() is not None or time.monotonic() > deadline:
-                raise RuntimeError(f"the control node did not connect: {bridge.connections()}")
-            time.sleep(0.05)
-        failure: list[BaseException] = []
-
-        def run_world() -> None:
-            try:
-                world.run_until(duration, timeout=cycle_timeout)
-            except BaseException as exc:  # reported on the main thread
-                failure.append(exc)
-                bridge.stop()
-
-        thread = threading.Thread(target=run_world, name="world")
-        thread.start()
+        if not wait_wired(bridge, wired, node, node_timeout):
+            raise RuntimeError(f"the control node did not connect: {bridge.connections()}")
+        world_thread = WorldThread(world, duration, cycle_timeout, bridge)
         bridge.spin(until=duration, cycle_timeout=0.05)
-        thread.join(cycle_timeout)
-        if failure:
-            raise failure[0]
-        if thread.is_alive():
-            raise TimeoutError("the world federate did not finish")
+        world_thread.join()
     finally:
         if node is not None:
             stop_process(node)

@@ -16,7 +16,7 @@ Values are encoded with a :data:`Codec` per attribute or parameter: an :mod:`hla
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Iterable, Mapping, Optional, Union
+from typing import Any, Callable, Iterable, Mapping, Optional, TypeVar, Union
 
 from hlacore import omt, rti
 
@@ -35,6 +35,9 @@ __all__ = [
 
 #: How a value becomes bytes and back.
 Codec = Union[omt.HLAdataType, tuple[Callable[[Any], bytes], Callable[[bytes], Any]], None]
+
+_C = TypeVar("_C")  # an object or interaction class handle
+_F = TypeVar("_F")  # an attribute or parameter handle
 
 
 def _encoder(codec: Codec) -> Callable[[Any], bytes]:
@@ -65,6 +68,16 @@ def _send_received(inbox: InputPort, ports: Mapping[str, OutputPort], received: 
         for name, value in record.values.items():
             ports[name].send(value)
         received.send(record)
+
+
+def _class_fields(
+    class_handle: Callable[[str], _C], field_handle: Callable[[str, _C], _F], class_name: str, fields: Iterable[str]
+) -> tuple[_C, dict[str, _F]]:
+    """The handle of the class ``class_name`` and, by name, those of its attributes or parameters ``fields``
+    (``class_handle``, ``field_handle``: the RTI's lookups, ``getObjectClassHandle`` and ``getAttributeHandle``
+    or their interaction counterparts)."""
+    cls = class_handle(class_name)
+    return cls, {name: field_handle(name, cls) for name in fields}
 
 
 def _codecs(names: Union[Mapping[str, Codec], Iterable[str]]) -> dict[str, Codec]:
@@ -145,9 +158,10 @@ class ObjectPublisher(_Sender):
 
     def declare(self, director: "HlaDirector") -> None:
         rtia = director.rtia
-        self._class = rtia.getObjectClassHandle(self.object_class)
-        self._handles = {attr: rtia.getAttributeHandle(attr, self._class) for attr in self.codecs}
-        director.publish_attributes(self._class, set(self._handles.values()))
+        object_class, self._handles = _class_fields(
+            rtia.getObjectClassHandle, rtia.getAttributeHandle, self.object_class, self.codecs)
+        self._class = object_class
+        director.publish_attributes(object_class, set(self._handles.values()))
 
     def register(self, director: "HlaDirector") -> None:
         assert self._class is not None
@@ -178,6 +192,13 @@ class _Receiver(HlaActor):
         self.ports: dict[str, OutputPort] = {field: self.add_output(field) for field in self.codecs}
         self.received = self.add_output("received")
         self._names: dict[Any, str] = {}  # attribute or parameter handle -> name
+
+    def _look_up(self, class_handle: Callable[[str], _C], field_handle: Callable[[str, _C], Any],
+                 class_name: str) -> _C:
+        """The handle of the class ``class_name`` (see :func:`_class_fields`); ``_names`` gets its fields'."""
+        cls, handles = _class_fields(class_handle, field_handle, class_name, self.codecs)
+        self._names = {handle: name for name, handle in handles.items()}
+        return cls
 
     def _schedule(self, source: str, decoded: dict[str, Any], tag: str, timestamp: Optional[float], at: float) -> None:
         director = self.hla()
@@ -210,8 +231,7 @@ class ObjectSubscriber(_Receiver):
 
     def declare(self, director: "HlaDirector") -> None:
         rtia = director.rtia
-        object_class = rtia.getObjectClassHandle(self.object_class)
-        self._names = {rtia.getAttributeHandle(attr, object_class): attr for attr in self.codecs}
+        object_class = self._look_up(rtia.getObjectClassHandle, rtia.getAttributeHandle, self.object_class)
         director.subscribe_attributes(object_class, set(self._names), self)
 
     def reflect(
@@ -247,9 +267,10 @@ class InteractionSender(_Sender):
 
     def declare(self, director: "HlaDirector") -> None:
         rtia = director.rtia
-        self._class = rtia.getInteractionClassHandle(self.interaction_class)
-        self._handles = {param: rtia.getParameterHandle(param, self._class) for param in self.codecs}
-        director.publish_interaction(self._class)
+        interaction_class, self._handles = _class_fields(
+            rtia.getInteractionClassHandle, rtia.getParameterHandle, self.interaction_class, self.codecs)
+        self._class = interaction_class
+        director.publish_interaction(interaction_class)
 
     def fire(self) -> None:
         director = self.hla()
@@ -284,8 +305,8 @@ class InteractionReceiver(_Receiver):
 
     def declare(self, director: "HlaDirector") -> None:
         rtia = director.rtia
-        interaction_class = rtia.getInteractionClassHandle(self.interaction_class)
-        self._names = {rtia.getParameterHandle(param, interaction_class): param for param in self.codecs}
+        interaction_class = self._look_up(rtia.getInteractionClassHandle, rtia.getParameterHandle,
+                                          self.interaction_class)
         director.subscribe_interaction(interaction_class, self)
 
     def receive(

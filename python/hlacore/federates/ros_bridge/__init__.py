@@ -2,7 +2,8 @@
 
 Importing it imports Debian's rospy (see :mod:`.ros_import`); without ROS installed it raises an
 ImportError that names the Debian packages to install. Also here: :mod:`.stage_node` (the robot world as a
-stageros-style ROS node), :mod:`.master` (a ROS master for one run) and :mod:`.children` (child processes).
+stageros-style ROS node), :mod:`.master` (a ROS master for one run), :mod:`.children` (child processes)
+and :mod:`.runner` (the world federate on a thread beside the bridge, for scenario runs).
 
 Federates layer: imports the core and :mod:`hlacore.federates.robot_world`.
 """

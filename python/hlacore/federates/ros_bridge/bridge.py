@@ -65,31 +65,40 @@ from std_msgs.msg import Bool, UInt32  # noqa: E402
 
 
 @dataclass(frozen=True)
-class TwistIn:
-    """ROS → HLA: ``geometry_msgs/Twist`` on ``topic`` becomes ``cmd_vel(robot, linear.x, angular.z)``."""
+class _In:
+    """ROS → HLA: what comes in on ``topic`` is about ``robot``."""
 
     topic: str
     robot: str
 
 
 @dataclass(frozen=True)
-class OdometryOut:
-    """HLA → ROS: the robot's ``odometry`` (``source="odometry"``) or ground-truth ``pose``
-    (``source="pose"``, with the odometry's velocities) as ``nav_msgs/Odometry`` on ``topic``."""
+class _Out:
+    """HLA → ROS: what is about ``robot`` goes out on ``topic``."""
 
     robot: str
     topic: str
+
+
+@dataclass(frozen=True)
+class TwistIn(_In):
+    """ROS → HLA: ``geometry_msgs/Twist`` on ``topic`` becomes ``cmd_vel(robot, linear.x, angular.z)``."""
+
+
+@dataclass(frozen=True)
+class OdometryOut(_Out):
+    """HLA → ROS: the robot's ``odometry`` (``source="odometry"``) or ground-truth ``pose``
+    (``source="pose"``, with the odometry's velocities) as ``nav_msgs/Odometry`` on ``topic``."""
+
     source: str = "odometry"
     frame_id: str = "odom"
     child_frame_id: str = "base_footprint"
 
 
 @dataclass(frozen=True)
-class _BeamsOut:
+class _BeamsOut(_Out):
     """HLA → ROS: the robot's ``ranges``, its beams spread over ``fov`` radians."""
 
-    robot: str
-    topic: str
     fov: float = 0.1  # radians
     range_min: float = 0.0
     range_max: float = 5.0
@@ -107,15 +116,12 @@ class RangeOut(_BeamsOut):
 
 
 @dataclass(frozen=True)
-class StallOut:
+class StallOut(_Out):
     """HLA → ROS: the robot's ``stall`` flag as ``std_msgs/Bool``."""
-
-    robot: str
-    topic: str
 
 
 @dataclass(frozen=True)
-class TwistOut:
+class TwistOut(_Out):
     """HLA → ROS: every ``cmd_vel`` interaction naming ``robot`` is published as ``geometry_msgs/Twist``
     (``linear.x``, ``angular.z``) on ``topic``.
 
@@ -124,19 +130,15 @@ class TwistOut:
     the next ``/clock`` only once the count has caught up with what it published: the node cannot step
     before it has applied the commands (ROS keeps no order across topics)."""
 
-    robot: str
-    topic: str
     ack: Optional[str] = None
 
 
 @dataclass(frozen=True)
-class OdometryIn:
+class OdometryIn(_In):
     """ROS → HLA: ``nav_msgs/Odometry`` on ``topic`` becomes the robot's ``odometry`` attribute (x, y, yaw,
     ``twist.linear.x``, ``twist.angular.z``; ``attribute="odometry"``) or its ground-truth ``pose``
     (x, y, yaw; ``attribute="pose"``)."""
 
-    topic: str
-    robot: str
     attribute: str = "odometry"
 
     def __post_init__(self) -> None:
@@ -145,29 +147,20 @@ class OdometryIn:
 
 
 @dataclass(frozen=True)
-class ScanIn:
+class ScanIn(_In):
     """ROS → HLA: ``sensor_msgs/LaserScan`` on ``topic`` becomes the robot's ``ranges`` (every beam)."""
-
-    topic: str
-    robot: str
 
 
 @dataclass(frozen=True)
-class RangeIn:
+class RangeIn(_In):
     """ROS → HLA: ``sensor_msgs/Range`` on ``topic`` becomes the robot's ``ranges`` as one beam (for a
     robot whose only sensor is a sonar; do not map a ScanIn of the same robot too)."""
 
-    topic: str
-    robot: str
-
 
 @dataclass(frozen=True)
-class StallIn:
+class StallIn(_In):
     """ROS → HLA: ``std_msgs/Bool`` on ``topic`` becomes the robot's ``stall`` flag (not stamped: it
     travels with the next update of the robot, never awaited)."""
-
-    topic: str
-    robot: str
 
 
 Mapping = Union[TwistIn, OdometryOut, ScanOut, RangeOut, StallOut, TwistOut, OdometryIn, ScanIn, RangeIn, StallIn]

@@ -3,13 +3,8 @@
 namespace hlacore {
 
 const char* error_name(ErrorCode code) {
-    switch (code) {
-#define HLACORE_X(name) \
-    case ErrorCode::name: return #name;
-        HLACORE_EXCEPTIONS(HLACORE_X)
-#undef HLACORE_X
-        default: return "";
-    }
+    static constexpr const char* kNames[] = HLACORE_LIST_NAMES(HLACORE_EXCEPTIONS);
+    return list_name(kNames, static_cast<std::size_t>(code), "");
 }
 
 }  // namespace hlacore

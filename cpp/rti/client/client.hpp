@@ -310,6 +310,11 @@ private:
     // applies the save/restore callbacks when popped (initiateFederateRestore replaces the mirrored state).
     void check_not_saving_or_restoring(const char* service) const;
     void require_idle(const char* service) const;  // require_joined, then check_not_saving_or_restoring
+    // unpublishInteractionClass / unsubscribeInteractionClass (client/declarations.cpp): the class leaves
+    // `declared`, refused with `code` when it was not in it; then the gateway is told with a Message.
+    template <class Message>
+    void undeclare_interaction(std::set<fom::Handle>& declared, fom::Handle cls, ErrorCode code,
+                               const char* declared_as);
     void require_no_advance() const;                // TimeAdvanceAlreadyInProgress (client/time.cpp)
     void apply_save_callback(const wire::Message& m);
     enum class SavePhase : std::uint8_t { None, Initiated, Begun, Answered };

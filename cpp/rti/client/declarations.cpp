@@ -84,13 +84,19 @@ void Client::publish_interaction_class(fom::Handle cls) {
     send(wire::PublishInteractionClass{cls});
 }
 
-void Client::unpublish_interaction_class(fom::Handle cls) {
+template <class Message>
+void Client::undeclare_interaction(std::set<fom::Handle>& declared, fom::Handle cls, ErrorCode code,
+                                   const char* declared_as) {
     {
         std::lock_guard<std::mutex> lock(mu_);
-        undeclare(published_interactions_, defined_interaction_class(cls), "interaction class",
-                  ErrorCode::InteractionClassNotPublished, "published");
+        undeclare(declared, defined_interaction_class(cls), "interaction class", code, declared_as);
     }
-    send(wire::UnpublishInteractionClass{cls});
+    send(Message{cls});
+}
+
+void Client::unpublish_interaction_class(fom::Handle cls) {
+    undeclare_interaction<wire::UnpublishInteractionClass>(published_interactions_, cls,
+                                                           ErrorCode::InteractionClassNotPublished, "published");
 }
 
 void Client::subscribe_interaction_class(fom::Handle cls, bool active) {
@@ -103,12 +109,8 @@ void Client::subscribe_interaction_class(fom::Handle cls, bool active) {
 }
 
 void Client::unsubscribe_interaction_class(fom::Handle cls) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        undeclare(subscribed_interactions_, defined_interaction_class(cls), "interaction class",
-                  ErrorCode::InteractionClassNotSubscribed, "subscribed");
-    }
-    send(wire::UnsubscribeInteractionClass{cls});
+    undeclare_interaction<wire::UnsubscribeInteractionClass>(subscribed_interactions_, cls,
+                                                             ErrorCode::InteractionClassNotSubscribed, "subscribed");
 }
 
 void Client::set_advisory_switch(wire::AdvisorySwitch which, bool on) {

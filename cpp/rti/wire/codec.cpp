@@ -3,13 +3,8 @@
 namespace hlacore::wire {
 
 const char* message_name(MessageType type) {
-    switch (type) {
-#define HLACORE_X(name) \
-    case MessageType::name: return #name;
-        HLACORE_MESSAGES(HLACORE_X)
-#undef HLACORE_X
-        default: return "unknown";
-    }
+    static constexpr const char* kNames[] = HLACORE_LIST_NAMES(HLACORE_MESSAGES);
+    return list_name(kNames, static_cast<std::size_t>(type), "unknown");
 }
 
 void Reader::fail(const char* what) const {

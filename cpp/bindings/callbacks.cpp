@@ -213,11 +213,6 @@ void bind_callbacks(Ambassador& rtia) {
         .def("_poll", &Client::poll_now, py::call_guard<py::gil_scoped_release>())
         .def("_wait", &wait_for_callback, py::arg("timeout"))
         .def("_has_callbacks", &Client::has_callbacks)
-        .def("_next_callback", [](Client& c) -> py::object {
-            auto m = c.pop_callback();
-            if (!m) return py::none();
-            return to_callback(*m);
-        })
         .def("_dispatch", &dispatch, py::arg("ambassador"), py::arg("stop_after_grant"), py::arg("max_seconds"));
 }
 

@@ -100,6 +100,7 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
     fom = str(resources.files("hlacore") / "foms" / "robot.fed")
     mode = "best-effort" if options.best_effort else "stepped"
     calibration = "miscalibrated" if options.miscalibrated else "calibrated"
+    title = f"{scenario.width}x{scenario.height}, {calibration}, {mode}"
     # Best effort: the model keeps the pace of a straight cell (2 simulated seconds per cycle).
     pace = max(2.0 * options.time_scale, 0.01) if options.best_effort else None
     trace = out / "gateway-trace.csv" if options.rtig is None else options.gateway_trace
@@ -117,8 +118,7 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
                 result = testbench.run(pace=pace, discover_timeout=options.timeout)
                 robot_status = robot.wait(timeout=options.timeout)
             except KeyboardInterrupt:  # keep what the run has shown so far: its trace and plot
-                write_outputs(out, testbench.result(), scenario, f"{scenario.width}x{scenario.height}, "
-                              f"{calibration}, {mode}, interrupted")
+                write_outputs(out, testbench.result(), scenario, f"{title}, interrupted")
                 raise
             finally:
                 if robot.poll() is None:
@@ -137,7 +137,6 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
         # The gateway's marks split the robot -> testbench delay into its three hops.
         by_cycle = cycle_hops(hops(trace, "robot", "testbench", options.federation))
         result = dataclasses.replace(result, delays=delay_table(result.verdicts, result.reflected_at, by_cycle))
-    title = f"{scenario.width}x{scenario.height}, {calibration}, {mode}"
     messages = write_outputs(out, result, scenario, title)
     return Experiment(result, out, int(robot.returncode), messages)
 

@@ -16,7 +16,6 @@ import time
 import xmlrpc.client
 from typing import Iterator
 
-from .children import stop_process
 
 
 def master_online(uri: str) -> bool:
@@ -69,22 +68,22 @@ def ros_master(timeout: float = 30.0) -> Iterator[str]:
 
 
 def stop_group(proc: "subprocess.Popen[bytes]", sig: int, timeout: float = 15.0) -> None:
-    """End the process group `proc` leads (started with start_new_session): `sig` to the group, then
+    """End the process group `proc` leads (started with start_new_session): `sig` to the group once, then
     SIGKILL to what is left of it after `timeout` s."""
-    try:
+    with contextlib.suppress(ProcessLookupError):
         os.killpg(proc.pid, sig)
-    except ProcessLookupError:
-        pass
-    stop_process(proc, sig, timeout)
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
+        proc.poll()  # reap the leader, or the group would never look empty
         try:
-            os.killpg(proc.pid, 0)  # members of the group remain (rosout, rosmaster)?
+            os.killpg(proc.pid, 0)  # members of the group remain (roscore, rosmaster, rosout)?
         except ProcessLookupError:
-            return
+            break
         time.sleep(0.05)
-    with contextlib.suppress(ProcessLookupError):
-        os.killpg(proc.pid, signal.SIGKILL)
+    else:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()
 
 
 @contextlib.contextmanager

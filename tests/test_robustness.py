@@ -157,15 +157,15 @@ class RawClient:
                 raise AssertionError("the gateway closed the connection")
             self.buffer += chunk
 
-    def handshake(self) -> tuple[int, bytes]:
-        """Hello, then the Welcome: returns (version, server name)."""
+    def handshake(self) -> tuple[int, bytes, int]:
+        """Hello, then the Welcome: returns (version, server name, frame limit)."""
         self.send(hello())
         code, payload = self.recv_frame()
         assert code == T["Welcome"]
         c = Cursor(payload)
-        version, server = c.take("<H"), c.string()
+        version, server, max_frame = c.take("<H"), c.string(), c.take("<I")
         assert c.pos == len(payload)
-        return version, server
+        return version, server, max_frame
 
     def call(self, message: str, payload_after_request: bytes) -> Reply:
         """Send a request-carrying message and read frames until its Reply."""
@@ -455,7 +455,7 @@ def test_truncated_frame_then_silence_times_out(tmp_path: pathlib.Path) -> None:
         (hello(magic=0xDEADBEEF), "expected a Hello handshake, got Hello"),
         (hello(version=99), f"protocol version 99 is not supported (gateway speaks {VERSION})"),
         (frame("JoinFederation", u32(1) + string("sneaky") + string("TestFed")), "expected a Hello handshake, got JoinFederation"),
-        (frame("Welcome", u16(1) + string("me")), "expected a Hello handshake, got Welcome"),
+        (frame("Welcome", u16(1) + string("me") + u32(64)), "expected a Hello handshake, got Welcome"),
         (frame("Hello", u32(MAGIC) + u16(VERSION) + b"extra"), "trailing bytes in Hello message"),
         (frame("Hello", u32(MAGIC)), "truncated field in Hello message"),
         (frame(0x7777, b""), "unknown message type 30583"),
@@ -475,9 +475,9 @@ def test_wrong_handshake_is_a_protocol_error(rtig: RtigProcess, legit: Legit, fi
 
 
 def test_welcome_names_the_gateway(rtig: RtigProcess) -> None:
-    """The Welcome answering a Hello carries the protocol version and the server name."""
+    """The Welcome answering a Hello carries the protocol version, the server name and its frame limit."""
     with raw_client(rtig.address) as client:
-        assert client.handshake() == (VERSION, b"hlacore rtig")
+        assert client.handshake() == (VERSION, b"hlacore rtig", 64 << 20)
         client.ping()
 
 

@@ -22,9 +22,12 @@ void register_exceptions(py::module_& m) {
                                                  "Base of every HLA 1.3 exception raised by hlacore.", nullptr, nullptr);
     m.add_object("RTIexception", py::handle(g_base_exception));
 #define HLACORE_X(name)                                                                                   \
-    g_exceptions[static_cast<std::size_t>(ErrorCode::name)] =                                             \
-        PyErr_NewExceptionWithDoc("hlacore._core." #name, "The HLA 1.3 exception " #name ".", g_base_exception, \
-                                  nullptr);                                                               \
+    g_exceptions[static_cast<std::size_t>(ErrorCode::name)] = PyErr_NewExceptionWithDoc(                  \
+        "hlacore._core." #name,                                                                           \
+        base_of(ErrorCode::name) == ErrorCode::None ? "The HLA 1.3 exception " #name "."                  \
+                                                    : "hlacore's exception " #name ", a kind of RTIinternalError.", \
+        exception_class(base_of(ErrorCode::name)),                                                        \
+        nullptr);                                                                                         \
     m.add_object(#name, py::handle(g_exceptions[static_cast<std::size_t>(ErrorCode::name)]));
     HLACORE_EXCEPTIONS(HLACORE_X)
 #undef HLACORE_X

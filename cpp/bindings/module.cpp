@@ -46,6 +46,26 @@ private:
     std::thread thread_;
 };
 
+// While a client call blocks: the GIL released (if this thread holds it), and a signal handled by Python
+// (Ctrl-C raises KeyboardInterrupt out of the call).
+class PythonWaitHost : public WaitHost {
+public:
+    void* begin_wait() override { return PyGILState_Check() ? PyEval_SaveThread() : nullptr; }
+    void end_wait(void* state) override {
+        if (state) PyEval_RestoreThread(static_cast<PyThreadState*>(state));
+    }
+    void interrupted() override {
+        py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+};
+
+std::unique_ptr<Client> connect(const std::string& host, std::uint16_t port, double timeout) {
+    static PythonWaitHost wait_host;
+    py::gil_scoped_release release;
+    return std::make_unique<Client>(host, port, ClientOptions{timeout, &wait_host});
+}
+
 }  // namespace
 }  // namespace hlacore::bindings
 
@@ -95,8 +115,7 @@ PYBIND11_MODULE(_core, m) {
 
     Ambassador rtia(m, "RTIAmbassadorBase");
     rtia
-        .def(py::init<const std::string&, std::uint16_t>(), py::arg("host"), py::arg("port"),
-             py::call_guard<py::gil_scoped_release>())
+        .def(py::init(&connect), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s)
         .def_property_readonly("address", &Client::address)
         .def("fileno", &Client::fileno);
     bind_federation(rtia);

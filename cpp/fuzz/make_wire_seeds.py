@@ -36,7 +36,9 @@ def frame(name, payload=b""):
 FED = (ROOT / "tests" / "data" / "robot.fed").read_text()
 MESSAGES = {
     "Hello": u32(0x484C4143) + u16(VERSION),
-    "Welcome": u16(VERSION) + s("hlacore rtig"),
+    "Welcome": u16(VERSION) + s("hlacore rtig") + u32(64 << 20),
+    "Ping": u32(1),
+    "Pong": u32(1),
     "CreateFederation": u32(1) + s("TestFed") + s("robot.fed") + s(FED),
     "CreateFederation-by-name": u32(1) + s("TestFed") + s("robot.fed") + s(""),
     "DestroyFederation": u32(2) + s("TestFed"),

@@ -87,11 +87,18 @@
     X(TimeRegulationWasNotEnabled)              \
     X(UnableToPerformSave)                      \
     X(ValueCountExceeded)                       \
-    X(ValueLengthExceeded)
+    X(ValueLengthExceeded)                      \
+    /* hlacore's own, each a subclass of RTIinternalError in Python (PyHLA code catching that still works) */ \
+    X(GatewayNotResponding)
 
 namespace hlacore {
 
 enum class ErrorCode : std::uint16_t { HLACORE_LIST_CODES(None, HLACORE_EXCEPTIONS) };
+
+// The code whose Python class is `code`'s base: RTIinternalError for hlacore's own, None (RTIexception) otherwise.
+constexpr ErrorCode base_of(ErrorCode code) {
+    return code > ErrorCode::ValueLengthExceeded && code < ErrorCode::Count ? ErrorCode::RTIinternalError : ErrorCode::None;
+}
 
 // Name of the exception, "" for None or an unknown code.
 const char* error_name(ErrorCode code);

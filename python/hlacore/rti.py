@@ -139,6 +139,17 @@ def _resolve_address(address: Optional[str]) -> tuple[str, int]:
     return host.strip("[]") or "127.0.0.1", int(port)
 
 
+def _resolve_timeout(timeout: Optional[float]) -> float:
+    """The client's liveness bound in seconds: `timeout`, else $HLACORE_TIMEOUT, else 5."""
+    if timeout is not None:
+        return float(timeout)
+    text = os.environ.get("HLACORE_TIMEOUT", "5")
+    try:
+        return float(text)
+    except ValueError:
+        raise _core.RTIinternalError(f"HLACORE_TIMEOUT={text!r} is not a number of seconds") from None
+
+
 class RTIAmbassador(_core.RTIAmbassadorBase):
     """A federate's connection to the RTI (HLA 1.3 RTIambassador).
 
@@ -146,11 +157,17 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     CERTI's ``$CERTI_HOST`` and ``$CERTI_TCP_PORT`` (as PyHLA scripts and tutorials set them; a missing one
     takes its default), else ``127.0.0.1:60400``; raises :class:`RTIinternalError` naming the address if nothing answers.
     One ambassador joins at most one federation execution at a time.
+
+    ``timeout`` (seconds; else ``$HLACORE_TIMEOUT``, else 5) bounds connecting, each reply and each send the
+    gateway does not take: a gateway that stays silent that long (stopped, frozen, unreachable; it is pinged
+    after half of it while this federate waits) raises :class:`GatewayNotResponding` and closes the
+    connection. Every blocking call releases the GIL and Ctrl-C interrupts it with KeyboardInterrupt; a call
+    interrupted while its reply was owed closes the connection (the gateway resigns the federate).
     """
 
-    def __init__(self, address: Optional[str] = None) -> None:
+    def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None) -> None:
         host, port = _resolve_address(address)
-        super().__init__(host, port)
+        super().__init__(host, port, _resolve_timeout(timeout))
         self._federate_ambassador: Any = None
 
     # ---- federation management ----

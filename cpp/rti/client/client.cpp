@@ -1,6 +1,8 @@
 #include "rti/client/client.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 #include <netdb.h>
@@ -12,7 +14,44 @@
 
 namespace hlacore {
 
-Client::Client(const std::string& host, std::uint16_t port) : address_(host + ":" + std::to_string(port)) {
+namespace {
+
+// Milliseconds left until `deadline` for poll(), at least 0.
+int ms_until(std::chrono::steady_clock::time_point deadline) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    return static_cast<int>(std::clamp<std::int64_t>(left.count() + 1, 0, 1 << 30));
+}
+
+std::string seconds(std::chrono::steady_clock::duration d) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f s", std::chrono::duration<double>(d).count());
+    return text;
+}
+
+// The host's begin_wait/end_wait around one blocking wait.
+class Waiting {
+public:
+    explicit Waiting(WaitHost* host) : host_(host), token_(host ? host->begin_wait() : nullptr) {}
+    ~Waiting() {
+        if (host_) host_->end_wait(token_);
+    }
+    Waiting(const Waiting&) = delete;
+    Waiting& operator=(const Waiting&) = delete;
+
+private:
+    WaitHost* host_;
+    void* token_;
+};
+
+}  // namespace
+
+Client::Client(const std::string& host, std::uint16_t port, ClientOptions options)
+    : address_(host + ":" + std::to_string(port)),
+      options_(options),
+      timeout_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.timeout_s))) {
+    if (!(options.timeout_s > 0) || options.timeout_s > 1e6)
+        raise(ErrorCode::RTIinternalError, "the client's timeout must be between 0 and 1e6 seconds, not " +
+                                               std::to_string(options.timeout_s));
     addrinfo hints{};
     hints.ai_family = AF_UNSPEC;
     hints.ai_socktype = SOCK_STREAM;
@@ -21,38 +60,65 @@ Client::Client(const std::string& host, std::uint16_t port) : address_(host + ":
     const std::string service = std::to_string(port);
     if (int rc = getaddrinfo(host.c_str(), service.c_str(), &hints, &found); rc != 0)
         raise(ErrorCode::RTIinternalError, "cannot resolve rtig host '" + host + "': " + gai_strerror(rc));
+    std::unique_ptr<addrinfo, decltype(&freeaddrinfo)> guard(found, freeaddrinfo);
+    const auto deadline = Clock::now() + timeout_;
     std::string error = "no address";
-    for (addrinfo* a = found; a; a = a->ai_next) {
-        int fd = ::socket(a->ai_family, SOCK_STREAM | SOCK_CLOEXEC, 0);
-        if (fd < 0) continue;
-        if (::connect(fd, a->ai_addr, a->ai_addrlen) == 0) {
-            fd_ = fd;
-            break;
+    ErrorCode code = ErrorCode::RTIinternalError;
+    try {
+        for (addrinfo* a = found; a && fd_ < 0; a = a->ai_next) {
+            fd_ = ::socket(a->ai_family, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+            if (fd_ < 0) continue;
+            int rc = ::connect(fd_, a->ai_addr, a->ai_addrlen);
+            // A gateway host that drops packets leaves the connect pending: bounded by the timeout.
+            while (rc < 0 && (errno == EINPROGRESS || errno == EINTR)) {
+                pollfd p{fd_, POLLOUT, 0};
+                int n;
+                {
+                    Waiting waiting(options_.wait_host);
+                    n = ::poll(&p, 1, ms_until(deadline));
+                }
+                if (n < 0 && errno == EINTR) {
+                    if (options_.wait_host) options_.wait_host->interrupted();
+                    continue;
+                }
+                if (n == 0) {
+                    errno = ETIMEDOUT;
+                    code = ErrorCode::GatewayNotResponding;
+                    break;
+                }
+                int so_error = 0;
+                socklen_t len = sizeof so_error;
+                getsockopt(fd_, SOL_SOCKET, SO_ERROR, &so_error, &len);
+                errno = so_error;
+                rc = so_error == 0 ? 0 : -1;
+                break;
+            }
+            if (rc == 0) break;
+            error = std::strerror(errno);
+            ::close(fd_);
+            fd_ = -1;
         }
-        error = std::strerror(errno);
-        ::close(fd);
-    }
-    freeaddrinfo(found);
-    if (fd_ < 0) raise(ErrorCode::RTIinternalError, "cannot connect to rtig at " + address_ + ": " + error);
-    int one = 1;
-    setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
-
-    send(wire::Hello{});
-    const auto deadline = Clock::now() + std::chrono::seconds(10);
-    bool welcomed = false;
-    for (;;) {
-        std::vector<wire::Message> got;
-        if (read_socket(deadline, got) == WaitStatus::Timeout || closed_) break;
-        for (auto& m : got) {
-            if (std::holds_alternative<wire::Welcome>(m)) welcomed = true;
+        if (fd_ < 0) raise(code, "cannot connect to rtig at " + address_ + ": " + error);
+        int one = 1;
+        setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+        last_heard_ = Clock::now();
+        send(wire::Hello{});
+        for (;;) {
+            const auto status = pump(deadline, [this] { return welcomed_; });
+            if (welcomed_) break;
+            if (status == WaitStatus::Interrupted) {
+                if (options_.wait_host) options_.wait_host->interrupted();
+                continue;
+            }
+            if (closed_) raise(closed_code_, "no hlacore handshake from " + address_ + ": " + closed_reason_);
+            if (status == WaitStatus::Timeout)
+                raise(ErrorCode::GatewayNotResponding, "no hlacore handshake from " + address_ + " within " +
+                                                           seconds(timeout_) + ": the gateway is not responding");
         }
-        if (welcomed) break;
-    }
-    if (!welcomed) {
-        ::close(fd_);
+    } catch (...) {
+        if (fd_ >= 0) ::close(fd_);
         fd_ = -1;
-        raise(ErrorCode::RTIinternalError, "no hlacore handshake from " + address_ +
-                                               (closed_reason_.empty() ? std::string() : ": " + closed_reason_));
+        throw;
     }
 }
 
@@ -64,7 +130,12 @@ Client::~Client() {
 
 template <class M>
 void Client::send(const M& message) {
-    std::lock_guard<std::mutex> lock(send_mu_);
+    // Another thread's send may be blocked: wait for it without holding the host's lock (the GIL).
+    std::unique_lock<std::mutex> lock(send_mu_, std::try_to_lock);
+    if (!lock) {
+        Waiting waiting(options_.wait_host);
+        lock.lock();
+    }
     send_buffer_.clear();
     wire::encode(send_buffer_, message);
     write_send_buffer();
@@ -76,15 +147,61 @@ HLACORE_MESSAGES(HLACORE_X)
 void Client::write_send_buffer() {
     std::size_t done = 0;
     while (done < send_buffer_.size()) {
-        ssize_t n = ::send(fd_, send_buffer_.data() + done, send_buffer_.size() - done, MSG_NOSIGNAL);
+        ssize_t n = ::send(fd_, send_buffer_.data() + done, send_buffer_.size() - done, MSG_NOSIGNAL | MSG_DONTWAIT);
         if (n > 0) {
             done += static_cast<std::size_t>(n);
         } else if (n < 0 && errno == EINTR) {
             continue;
+        } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            wait_writable(done);
         } else {
-            raise(ErrorCode::RTIinternalError, "connection to rtig at " + address_ + " lost: " + std::strerror(errno));
+            close_connection(ErrorCode::RTIinternalError, std::strerror(errno));  // keeps an earlier reason
+            connection_lost();
         }
     }
+}
+
+// The socket's buffer is full: the gateway is behind, slowing this federate down, or gone. Waits with the
+// GIL released (WaitHost) until it reads again, for at most the timeout without progress.
+void Client::wait_writable(std::size_t sent) {
+    const auto deadline = Clock::now() + timeout_;
+    for (;;) {
+        pollfd p{fd_, POLLOUT, 0};
+        int n;
+        {
+            Waiting waiting(options_.wait_host);
+            n = ::poll(&p, 1, ms_until(deadline));
+        }
+        if (n > 0) return;
+        if (n < 0 && errno == EINTR) {
+            on_interrupt(sent > 0 ? "the rest of a message already partly sent" : nullptr);
+            continue;
+        }
+        close_connection(ErrorCode::GatewayNotResponding,
+                         "the gateway has read nothing from this federate for " + seconds(timeout_) +
+                             ": it is not responding");
+        connection_lost();
+    }
+}
+
+void Client::on_interrupt(const char* owed) {
+    if (!options_.wait_host) return;
+    try {
+        options_.wait_host->interrupted();
+    } catch (...) {
+        if (owed) close_connection(ErrorCode::RTIinternalError, std::string("a call was interrupted while waiting for ") + owed);
+        throw;
+    }
+}
+
+void Client::close_connection(ErrorCode code, const std::string& reason) {
+    std::lock_guard<std::mutex> lock(mu_);
+    if (closed_) return;
+    closed_ = true;
+    closed_code_ = code;
+    closed_reason_ = reason;
+    ::shutdown(fd_, SHUT_RDWR);  // the gateway sees the end at once and resigns the federate
+    cv_.notify_all();
 }
 
 std::uint32_t Client::next_request() {
@@ -100,6 +217,7 @@ wire::Reply Client::call(wire::Message request, std::uint32_t id) {
         request);
     for (;;) {
         auto status = pump(Clock::time_point::max(), [&] { return replies_.count(id) > 0; });
+        if (status == WaitStatus::Interrupted) on_interrupt("the gateway's reply");
         std::unique_lock<std::mutex> lock(mu_);
         auto it = replies_.find(id);
         if (it != replies_.end()) {
@@ -115,7 +233,6 @@ wire::Reply Client::call(wire::Message request, std::uint32_t id) {
             return reply;
         }
         if (closed_) connection_lost();
-        (void)status;  // interrupted: the reply is still owed, keep waiting
     }
 }
 
@@ -141,7 +258,8 @@ Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
         std::vector<wire::Message> got;
         WaitStatus status = WaitStatus::Ready;
         try {
-            status = read_socket(deadline, got);
+            status = read_socket(std::min(deadline, liveness_deadline()), got);
+            if (status != WaitStatus::Interrupted) check_liveness();
         } catch (...) {
             lock.lock();
             reading_ = false;
@@ -176,6 +294,7 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, std::vector<w
     for (;;) {
         ssize_t r = ::recv(fd_, chunk, sizeof chunk, MSG_DONTWAIT);
         if (r > 0) {
+            last_heard_ = Clock::now();
             in_.append(chunk, static_cast<std::size_t>(r));
             if (static_cast<std::size_t>(r) < sizeof chunk) break;
             continue;
@@ -188,7 +307,7 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, std::vector<w
     std::size_t offset = 0;
     try {
         wire::Frame frame;
-        while (std::size_t used = wire::next_frame(std::string_view(in_).substr(offset), frame)) {
+        while (std::size_t used = wire::next_frame(std::string_view(in_).substr(offset), frame, max_frame_bytes_)) {
             got.push_back(wire::decode(frame));
             offset += used;
         }
@@ -196,13 +315,31 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, std::vector<w
         reason = std::string("protocol error from the gateway: ") + e.what();
     }
     in_.erase(0, offset);
-    if (!reason.empty()) {
-        std::lock_guard<std::mutex> lock(mu_);
-        closed_ = true;
-        closed_reason_ = reason;
-        cv_.notify_all();
-    }
+    if (!reason.empty()) close_connection(ErrorCode::RTIinternalError, reason);
     return WaitStatus::Ready;
+}
+
+Client::Clock::time_point Client::liveness_deadline() const {
+    if (ping_sent_ > last_heard_) return std::max(last_heard_ + timeout_, ping_sent_ + timeout_ / 2);
+    return last_heard_ + timeout_ / 2;
+}
+
+void Client::check_liveness() {
+    const auto now = Clock::now();
+    if (now < liveness_deadline()) return;
+    if (ping_sent_ <= last_heard_) {
+        // Skipped while another thread sends: a send the gateway does not take has its own bound.
+        std::unique_lock<std::mutex> sending(send_mu_, std::try_to_lock);
+        if (!sending) return;
+        send_buffer_.clear();
+        wire::encode(send_buffer_, wire::Ping{++pings_});
+        write_send_buffer();
+        ping_sent_ = now;
+        return;
+    }
+    close_connection(ErrorCode::GatewayNotResponding,
+                     "the gateway has sent nothing for " + seconds(now - last_heard_) + " and has not answered a ping for " +
+                         seconds(now - ping_sent_) + ": it is not responding (stopped, frozen or unreachable)");
 }
 
 // Keeps the federate's view current as messages arrive, then queues the callbacks.
@@ -212,7 +349,12 @@ void Client::file(std::vector<wire::Message>& got) {
             replies_[r->request] = std::move(*r);
             continue;
         }
-        if (std::holds_alternative<wire::Welcome>(m)) continue;
+        if (auto* w = std::get_if<wire::Welcome>(&m)) {
+            welcomed_ = true;
+            max_frame_bytes_ = w->max_frame_bytes;
+            continue;
+        }
+        if (std::holds_alternative<wire::Pong>(m)) continue;  // what it says is that bytes came: last_heard_
         if (auto* d = std::get_if<wire::DiscoverObject>(&m)) {
             objects_[d->object] = make_local_object(d->object_class, d->name);
         } else if (auto* rm = std::get_if<wire::RemoveObject>(&m)) {
@@ -256,7 +398,7 @@ bool Client::has_callbacks() const {
 }
 
 void Client::connection_lost() const {
-    raise(ErrorCode::RTIinternalError, "connection to rtig at " + address_ + " lost: " + closed_reason_);
+    raise(closed_code_, "connection to rtig at " + address_ + " lost: " + closed_reason_);
 }
 
 // ---- checks ----

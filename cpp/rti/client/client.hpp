@@ -3,8 +3,15 @@
 //
 // Thread safety: every public method may be called from any thread. Reading the socket is done by
 // whichever thread waits (tick or a service awaiting its reply); the others wait on a condition variable.
+//
+// Liveness (docs/robustness.md): a thread that waits pings a gateway silent for half the timeout and
+// declares it not responding (GatewayNotResponding, the connection closed) when it stays silent for the
+// whole timeout; a send the gateway does not read for the timeout fails the same way. A signal during a
+// wait goes to the WaitHost, which may abandon the call; a call abandoned while its reply or its frame is
+// owed closes the connection (the gateway then resigns the federate), so no state is left half known.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <map>
@@ -23,13 +30,33 @@
 
 namespace hlacore {
 
+// What the program around a client does while one of its calls blocks. The Python binding releases the
+// GIL and turns Ctrl-C into KeyboardInterrupt; without a host, waits go on through signals.
+class WaitHost {
+public:
+    virtual ~WaitHost() = default;
+    // Around a wait that may block; begin's result is given back to end.
+    virtual void* begin_wait() { return nullptr; }
+    virtual void end_wait(void*) {}
+    // A signal interrupted the wait: throw to abandon it, return to go on waiting.
+    virtual void interrupted() {}
+};
+
+struct ClientOptions {
+    // Bounds connecting, the handshake, each reply and each blocked send; a gateway silent for half of it
+    // while the client waits is pinged.
+    double timeout_s = 5.0;
+    WaitHost* wait_host = nullptr;  // not owned; must outlive the client
+};
+
 class Client {
 public:
     using Clock = std::chrono::steady_clock;
     enum class WaitStatus { Ready, Timeout, Interrupted };
 
-    // Connects and performs the version handshake; throws RtiError(RTIinternalError) naming the address.
-    Client(const std::string& host, std::uint16_t port);
+    // Connects and performs the version handshake; throws RtiError naming the address: RTIinternalError
+    // when nothing listens there, GatewayNotResponding when it does not answer within the timeout.
+    Client(const std::string& host, std::uint16_t port, ClientOptions options = {});
     ~Client();
     Client(const Client&) = delete;
     Client& operator=(const Client&) = delete;
@@ -269,6 +296,7 @@ private:
     template <class M>
     void send(const M& message);
     void write_send_buffer();  // under send_mu_
+    void wait_writable(std::size_t sent);  // under send_mu_: the gateway is not reading (yet)
     wire::Reply call(wire::Message request, std::uint32_t request_id);
     std::uint32_t next_request();
     // Reads the socket until pred() holds (checked under mu_), the deadline passes or a signal arrives.
@@ -276,6 +304,14 @@ private:
     WaitStatus pump(Clock::time_point deadline, Pred pred);
     WaitStatus read_socket(Clock::time_point deadline, std::vector<wire::Message>& got);
     void file(std::vector<wire::Message>& got);  // under mu_
+    // The reading thread's liveness step: when to look again, a Ping when the gateway has been silent for
+    // half the timeout, GatewayNotResponding (the connection closed) after the whole timeout.
+    Clock::time_point liveness_deadline() const;
+    void check_liveness();
+    // Closes the connection for `reason`: every later call raises `code` saying so.
+    void close_connection(ErrorCode code, const std::string& reason);
+    // A signal interrupted a wait: the host may abandon it, then the connection is closed when `owed`.
+    void on_interrupt(const char* owed);
 
     // The checks behind the services; callers hold mu_.
     void require_joined() const;
@@ -327,6 +363,8 @@ private:
     void apply_time_callback(const wire::Message& m);
 
     std::string address_;
+    ClientOptions options_;
+    Clock::duration timeout_;
     int fd_ = -1;
 
     std::mutex send_mu_;
@@ -335,9 +373,17 @@ private:
     mutable std::mutex mu_;
     std::condition_variable cv_;
     bool reading_ = false;
+    bool welcomed_ = false;
     bool closed_ = false;
+    ErrorCode closed_code_ = ErrorCode::RTIinternalError;
     std::string closed_reason_;
-    std::string in_;  // touched only by the thread that is reading
+    // The gateway's frame limit, from its Welcome (both directions).
+    std::atomic<std::uint32_t> max_frame_bytes_{wire::kMaxFrameBytes};
+    // Touched only by the thread that is reading.
+    std::string in_;
+    Clock::time_point last_heard_;  // when the gateway last sent a byte
+    Clock::time_point ping_sent_;   // when the unanswered Ping left (last_heard_ is later once answered)
+    std::uint32_t pings_ = 0;
     // Callbacks waiting for tick(), in arrival order: a vector consumed from the front and reused, so a
     // steady stream allocates nothing (a deque allocated a node per message once wire::Message grew to
     // 408 bytes with InitiateFederateRestore).

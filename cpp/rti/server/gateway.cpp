@@ -249,7 +249,7 @@ void Gateway::on_readable(Connection& c) {
     if (trace_) c.read_ns = MessageTrace::now_ns();
     try {
         wire::Frame frame;
-        while (std::size_t used = wire::next_frame(std::string_view(c.in).substr(c.in_offset), frame)) {
+        while (std::size_t used = wire::next_frame(std::string_view(c.in).substr(c.in_offset), frame, options_.max_frame_bytes)) {
             c.in_offset += used;
             on_frame(c, frame);
             if (!connections_.count(fd)) return;
@@ -285,7 +285,7 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
             throw wire::WireError("protocol version " + std::to_string(hello->version) + " is not supported (gateway speaks " +
                                   std::to_string(wire::kProtocolVersion) + ")");
         c.greeted = true;
-        wire::encode(c.out, wire::Welcome{wire::kProtocolVersion, "hlacore rtig"});
+        wire::encode(c.out, wire::Welcome{wire::kProtocolVersion, "hlacore rtig", options_.max_frame_bytes});
         mark_dirty(c);
         return;
     }
@@ -473,6 +473,11 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
         json += "]}";
         return wire::Reply{0, 0, "", 0, std::move(json), "", 0};
     });
+}
+
+void Gateway::serve(Connection& c, const wire::Ping& m) {
+    wire::encode(c.out, wire::Pong{m.sequence});
+    mark_dirty(c);
 }
 
 void Gateway::serve(Connection& c, const wire::QueryTime& m) {

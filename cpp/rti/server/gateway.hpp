@@ -22,6 +22,7 @@ struct GatewayOptions {
     bool verbose = false;
     double partial_frame_timeout_s = 10.0;     // a half-sent frame older than this drops the connection
     std::size_t max_queued_output = 64u << 20;  // a client that stops reading is dropped beyond this
+    std::uint32_t max_frame_bytes = wire::kMaxFrameBytes;  // announced in the Welcome; larger frames are refused
     std::string save_dir;  // federation saves are written here as files ("": kept in memory only)
     std::string trace_path;  // non-empty: write the message trace there (trace.hpp)
 };

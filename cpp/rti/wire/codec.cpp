@@ -19,16 +19,16 @@ void encode(std::string& out, const Message& m) {
         m);
 }
 
-std::size_t next_frame(std::string_view buffer, Frame& frame) {
+std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_bytes) {
     if (buffer.size() < kHeaderBytes) return 0;
     std::uint32_t length = 0;
     std::uint16_t type = 0;
     std::memcpy(&length, buffer.data(), 4);
     std::memcpy(&type, buffer.data() + 4, 2);
     if (length < 2) throw WireError("frame length " + std::to_string(length) + " is shorter than its type field");
-    if (length > kMaxFrameBytes)
-        throw WireError("frame length " + std::to_string(length) + " exceeds the limit of " +
-                        std::to_string(kMaxFrameBytes) + " bytes");
+    if (length > max_bytes)
+        throw WireError("frame length " + std::to_string(length) + " exceeds the limit of " + std::to_string(max_bytes) +
+                        " bytes");
     if (buffer.size() < 4 + static_cast<std::size_t>(length)) return 0;
     frame.type = static_cast<MessageType>(type);
     frame.payload = buffer.substr(kHeaderBytes, length - 2);

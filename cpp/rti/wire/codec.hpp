@@ -170,8 +170,8 @@ struct Frame {
 };
 
 // Looks for one complete frame at the start of `buffer`. Returns the bytes it spans, or 0 if more bytes
-// are needed. Throws WireError when the header is impossible (length too short or above kMaxFrameBytes).
-std::size_t next_frame(std::string_view buffer, Frame& frame);
+// are needed. Throws WireError when the header is impossible (length too short or above max_bytes).
+std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_bytes = kMaxFrameBytes);
 
 // Decodes a frame's payload. Throws WireError on an unknown type, a truncated field or trailing bytes.
 Message decode(const Frame& frame);

@@ -18,8 +18,11 @@
 namespace hlacore::wire {
 
 constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
-constexpr std::uint16_t kProtocolVersion = 3;  // 2: initiateFederateRestore's nested records; 3: its SavedTime
-constexpr std::uint32_t kMaxFrameBytes = 64u << 20;  // larger frames are a protocol error
+// 2: initiateFederateRestore's nested records; 3: its SavedTime; 4: Welcome's frame limit, Ping and Pong
+constexpr std::uint16_t kProtocolVersion = 4;
+// The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
+// protocol error.
+constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
 
 using Handles = std::vector<std::uint32_t>;
 using HandleValues = std::vector<std::pair<std::uint32_t, std::string>>;
@@ -133,7 +136,10 @@ using OptionalTime = std::optional<double>;
     X(AttributesInScope)             \
     X(AttributesOutOfScope)          \
     X(TurnUpdatesOn)                 \
-    X(TurnUpdatesOff)
+    X(TurnUpdatesOff)                \
+    /* liveness: federate -> gateway, and the answer */ \
+    X(Ping)                          \
+    X(Pong)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply. Each has a `Gateway::serve(Connection&, const M&)` in cpp/rti/server/gateway.cpp,
@@ -141,7 +147,7 @@ using OptionalTime = std::optional<double>;
 #define HLACORE_GATEWAY_SERVICES(X)                                                                    \
     X(CreateFederation) X(DestroyFederation) X(JoinFederation) X(ResignFederation) X(RegisterObject)   \
     X(RegisterObjectWithRegion) X(RequestFederationSave) X(RequestFederationRestore) X(ReleaseResponse) \
-    X(QueryStatus) X(QueryTime)
+    X(QueryStatus) X(QueryTime) X(Ping)
 
 // The requests of a joined federate that its Federation serves, by service group: each has a handler
 // `Federation::on(FederateHandle, const M&)` in cpp/rti/server/<group>.cpp, declared from this list.
@@ -208,7 +214,20 @@ struct Welcome {
     HLACORE_TYPE(Welcome)
     std::uint16_t version = kProtocolVersion;
     std::string server;
-    HLACORE_FIELDS(version, server)
+    std::uint32_t max_frame_bytes = kMaxFrameBytes;  // the gateway's frame limit, both directions
+    HLACORE_FIELDS(version, server, max_frame_bytes)
+};
+
+// ---- liveness: a client that has heard nothing for a while asks; the gateway answers at once, joined or not ----
+struct Ping {
+    HLACORE_TYPE(Ping)
+    std::uint32_t sequence = 0;
+    HLACORE_FIELDS(sequence)
+};
+struct Pong {
+    HLACORE_TYPE(Pong)
+    std::uint32_t sequence = 0;
+    HLACORE_FIELDS(sequence)
 };
 
 // ---- federate -> gateway; `request` ids are echoed in the Reply ----

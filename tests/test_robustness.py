@@ -4,6 +4,7 @@ and the federates joined beside it keep working."""
 from __future__ import annotations
 
 import contextlib
+import math
 import os
 import pathlib
 import random
@@ -446,6 +447,22 @@ def test_truncated_frame_then_silence_times_out(tmp_path: pathlib.Path) -> None:
             assert slow.local not in server.log()
 
 
+def test_a_connection_that_never_says_hello_times_out(tmp_path: pathlib.Path) -> None:
+    """A client that connects and sends nothing is dropped after --frame-timeout (0.5 s), not before; one
+    that completed its handshake may idle."""
+    with running_rtig(tmp_path, "--frame-timeout", "0.5") as server:
+        with raw_client(server.address) as silent, raw_client(server.address) as greeted:
+            start = time.monotonic()
+            greeted.handshake()
+            silent.wait_eof(timeout=5)
+            elapsed = time.monotonic() - start
+            assert "no handshake within the frame timeout" in dropped_line(server, silent)
+            assert 0.45 <= elapsed < 5, elapsed
+            time.sleep(0.6)
+            greeted.ping()
+            assert greeted.local not in server.log()
+
+
 # ---- 5. wrong handshakes ----
 
 
@@ -604,44 +621,50 @@ class Counter(rti.FederateAmbassador):
         self.last_size = sum(len(v) for v in attributes.values())
 
 
-def test_client_that_never_reads_is_dropped(rtig: RtigProcess, legit: Legit) -> None:
-    """A subscriber that never reads is dropped once 64 MiB are queued for it (`peer is not reading`); the
-    publisher and a reading subscriber go on (the latter gets every update)."""
-    robot, _, location = legit.handles()
-    started = time.monotonic()
-    with raw_client(rtig.address, rcvbuf=4096) as sloth:
-        sloth_handle = sloth.join("sloth")
-        sloth.send(frame("SubscribeObjectClass", u32(robot) + handles([location]) + boolean(True)))
-        sloth.ping()  # the subscription is in place; from here on the sloth never reads
+def test_client_that_never_reads_holds_back_its_publisher_then_is_dropped(tmp_path: pathlib.Path) -> None:
+    """A subscriber that never reads: once 8 MiB (--client-budget) are held for it the publisher is no longer
+    read (its updates wait in its socket, its calls block), and after 2 s (--stall-timeout) in which the
+    subscriber took nothing it is dropped (`not reading: ...`); then the publisher goes on and a reading
+    subscriber gets every update. Nobody else is dropped."""
+    budget = 8 << 20
+    with running_rtig(tmp_path, "--client-budget", str(budget), "--stall-timeout", "2") as server, \
+            legit_federation(server.address) as legit:
+        robot, _, location = legit.handles()
+        with raw_client(server.address, rcvbuf=4096) as sloth:
+            sloth_handle = sloth.join("sloth")
+            sloth.send(frame("SubscribeObjectClass", u32(robot) + handles([location]) + boolean(True)))
+            sloth.ping()  # the subscription is in place; from here on the sloth never reads
 
-        carol_amb = Counter()
-        carol = rti.RTIAmbassador(rtig.address)
-        carol.joinFederationExecution("carol", "TestFed", carol_amb)
-        try:
-            carol.subscribeObjectClassAttributes(legit.robot, [legit.location])
-            alice = legit.alice.rtia
-            obj = alice.registerObjectInstance(legit.robot, "heavy")
-            tick_until(lambda: "heavy" in carol_amb.discovered, carol, alice)
-            value = bytes(64 << 10)
-            updates = 1200  # 75 MiB: beyond the 64 MiB limit even with a few MiB in kernel buffers
-            for i in range(updates):
-                alice.updateAttributeValues(obj, {legit.location: value}, "heavy")
-                # carol keeps up (a reader lagging 64 MiB behind would be dropped as well).
-                tick_until(lambda: carol_amb.reflected > i - 32, carol, alice)
-                assert time.monotonic() - started < 25, f"too slow: {i} updates sent"
-            line = dropped_line(rtig, sloth, timeout=10)
-            tick_until(lambda: carol_amb.reflected == updates, carol, alice, timeout=10)
-            assert carol_amb.last_size == len(value)
-        finally:
-            carol.resignFederationExecution(rti.ResignAction.NoAction)
-        assert f"(federate {sloth_handle} of 'TestFed'): peer is not reading: " in line, line
-        queued = int(re.search(r"peer is not reading: (\d+) bytes queued \(limit (\d+)\)", line).group(1))  # type: ignore[union-attr]
-        assert queued > MAX_FRAME
-        assert "(limit 67108864)" in line
-        assert "carol" not in rtig.log() and "alice" not in rtig.log()
-        sloth.wait_eof(timeout=10)
-    legit.check_working()
-    assert time.monotonic() - started < 30
+            carol_amb = Counter()
+            carol = rti.RTIAmbassador(server.address)
+            carol.joinFederationExecution("carol", "TestFed", carol_amb)
+            try:
+                carol.subscribeObjectClassAttributes(legit.robot, [legit.location])
+                alice = legit.alice.rtia
+                obj = alice.registerObjectInstance(legit.robot, "heavy")
+                tick_until(lambda: "heavy" in carol_amb.discovered, carol, alice)
+                value = bytes(64 << 10)
+                updates = 300  # 19 MiB: beyond the budget even with a few MiB in kernel buffers
+                slowest = 0.0
+                for i in range(updates):
+                    sent = time.monotonic()
+                    alice.updateAttributeValues(obj, {legit.location: value}, "heavy")
+                    tick_until(lambda: carol_amb.reflected > i - 32, carol, alice)
+                    slowest = max(slowest, time.monotonic() - sent)
+                line = dropped_line(server, sloth, timeout=10)
+                tick_until(lambda: carol_amb.reflected == updates, carol, alice, timeout=10)
+                assert carol_amb.last_size == len(value)
+            finally:
+                carol.resignFederationExecution(rti.ResignAction.NoAction)
+            print(f"\nslowest update (until carol reflected it) while held back: {slowest:.2f} s; {line.strip()}")
+            assert f"(federate {sloth_handle} of 'TestFed'): not reading: " in line, line
+            queued = int(re.search(r"not reading: (\d+) bytes queued, none taken for \d+ s \(budget (\d+)\)", line).group(1))  # type: ignore[union-attr]
+            assert budget // 2 < queued < budget + MAX_FRAME
+            assert f"(budget {budget})" in line
+            assert slowest > 1.5  # alice's updates waited until the sloth was dropped
+            assert "carol" not in server.log() and "alice" not in server.log()
+            sloth.wait_eof(timeout=10)
+        legit.check_working()
 
 
 # ---- 9. a federate killed with SIGKILL ----
@@ -791,6 +814,36 @@ def test_timestamp_below_the_senders_bound_is_a_protocol_error(rtig: RtigProcess
     assert not any(a[1].get(legit.battery) == b"early" for a in bob.amb.named("reflectAttributeValues"))
     again = Federate(rtig.address, "hasty")
     again.rtia.resignFederationExecution(rti.ResignAction.NoAction)
+    legit.check_working()
+
+
+@pytest.mark.parametrize("message, payload, reason", [
+    ("EnableTimeRegulation", f64(0.0) + f64(math.inf), "enable time regulation: the time and lookahead must be finite"),
+    ("EnableTimeRegulation", f64(math.inf) + f64(1.0), "enable time regulation: the time and lookahead must be finite"),
+    ("ModifyLookahead", f64(math.inf), "invalid lookahead (finite, >= 0)"),
+    ("TimeAdvance", u8(TAR) + f64(math.inf), "invalid time advance request (kind 1-5, a finite time)"),
+    ("interaction", math.inf, "interaction at a timestamp that is not finite"),
+    ("interaction", -math.inf, "interaction at a timestamp that is not finite"),
+], ids=["lookahead-inf", "regulation-time-inf", "modify-lookahead-inf", "advance-to-inf", "timestamp-inf",
+        "timestamp-minus-inf"])
+def test_non_finite_times_are_refused_by_the_gateway(rtig: RtigProcess, legit: Legit, message: str, payload: Any,
+                                                     reason: str) -> None:
+    """Issue 15, case 7: the client refuses these (InvalidLookahead, InvalidFederationTime); a client that
+    sends them anyway is dropped with the reason, before a federate granted +inf could make every later
+    regulating federate start at +inf."""
+    command, value = int(legit.command), int(legit.value)
+    with joined_raw_client(rtig.address, "infinite") as (client, handle):
+        if message == "interaction":
+            client.send(frame("PublishInteractionClass", u32(command)))
+            client.send(send_interaction(client, command, value, b"never", payload, 0), tolerate_drop=True)
+        else:
+            if message == "ModifyLookahead":
+                client.send(frame("EnableTimeRegulation", f64(0.0) + f64(1.0)))
+                client.frames_until("TimeRegulationEnabled")
+            client.send(frame(message, payload), tolerate_drop=True)
+        line = closed_and_dropped(rtig, client)
+    assert f"(federate {handle} of 'TestFed'): protocol error: {reason}" in line, line
+    assert not any(a[1].get(legit.value) == b"never" for a in legit.bob.amb.named("receiveInteraction"))
     legit.check_working()
 
 

@@ -98,7 +98,8 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
     result = run_rtig("--help")
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith("usage: rtig")
-    for option in ("--host", "--port", "--fom-path", "--frame-timeout", "--save-dir", "--verbose"):
+    for option in ("--host", "--port", "--fom-path", "--frame-timeout", "--client-budget", "--stall-timeout",
+                   "--max-frame", "--save-dir", "--verbose"):
         assert option in result.stdout
     assert "rtig listening" not in result.stdout
 
@@ -119,6 +120,11 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
         (["--frame-timeout", "0"], "invalid --frame-timeout '0'"),
         (["--frame-timeout", "-1"], "invalid --frame-timeout '-1'"),
         (["--frame-timeout", "soon"], "invalid --frame-timeout 'soon'"),
+        (["--client-budget", "1000"], "invalid --client-budget '1000'"),
+        (["--client-budget", "lots"], "invalid --client-budget 'lots'"),
+        (["--stall-timeout", "-1"], "invalid --stall-timeout '-1'"),
+        (["--max-frame", "1000"], "invalid --max-frame '1000'"),
+        (["--max-frame", "2000000000"], "invalid --max-frame '2000000000'"),
         (["--port", "0", "extra"], "unknown argument 'extra'"),
         (["--save-dir"], "--save-dir needs a value"),
         (["--save-dir", ""], "--save-dir needs a directory"),

@@ -105,8 +105,9 @@ def test_sending_rule_raises_invalid_federation_time(federation: Join) -> None:
     a.enable_time(lookahead=1.0, constrained=False)
     with pytest.raises(rti.InvalidFederationTime, match="below 1"):
         a.rtia.sendInteraction(command, {value: b"x"}, "", 0.5)
-    with pytest.raises(rti.InvalidFederationTime, match="NaN"):
-        a.rtia.sendInteraction(command, {value: b"x"}, "", math.nan)
+    for not_finite in (math.nan, math.inf, -math.inf):
+        with pytest.raises(rti.InvalidFederationTime, match="not finite"):
+            a.rtia.sendInteraction(command, {value: b"x"}, "", not_finite)
     assert isinstance(a.rtia.sendInteraction(command, {value: b"x"}, "", 1.0), rti.EventRetractionHandle)
     # While a request for 5 is pending, nothing below 5 + lookahead may be sent.
     a.rtia.timeAdvanceRequest(5.0)
@@ -158,8 +159,13 @@ def test_time_service_exceptions(federation: Join) -> None:
     assert r.advance_to(3.0, timeout=5.0) == 3.0
     with pytest.raises(rti.FederationTimeAlreadyPassed):
         r.timeAdvanceRequest(2.0)
-    with pytest.raises(rti.InvalidFederationTime):
-        r.timeAdvanceRequest(math.nan)
+    for not_finite in (math.nan, math.inf):
+        with pytest.raises(rti.InvalidFederationTime, match="not finite"):
+            r.timeAdvanceRequest(not_finite)
+        with pytest.raises(rti.InvalidFederationTime, match="not finite"):
+            r.nextEventRequest(not_finite)
+    with pytest.raises(rti.InvalidLookahead):
+        r.modifyLookahead(math.inf)
     r.timeAdvanceRequest(4.0)
     with pytest.raises(rti.TimeAdvanceAlreadyInProgress):
         r.nextEventRequest(5.0)

@@ -19,8 +19,12 @@ namespace {
 class BackgroundGateway {
 public:
     BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose,
-                      const std::string& save_dir, std::string trace_path) {
+                      const std::string& save_dir, std::string trace_path, std::size_t client_budget,
+                      double stall_timeout, std::uint32_t max_frame) {
         GatewayOptions options;
+        options.max_frame_bytes = max_frame;
+        options.client_budget = client_budget;
+        options.stall_timeout_s = stall_timeout;
         options.save_dir = save_dir;
         options.host = host;
         options.port = port;
@@ -104,9 +108,11 @@ PYBIND11_MODULE(_core, m) {
 
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
-                      std::string>(),
+                      std::string, std::size_t, double, std::uint32_t>(),
              py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
-             py::arg("trace_path") = "",
+             py::arg("trace_path") = "", py::arg("client_budget") = hlacore::GatewayOptions{}.client_budget,
+             py::arg("stall_timeout") = hlacore::GatewayOptions{}.stall_timeout_s,
+             py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes,
              py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)

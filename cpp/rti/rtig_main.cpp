@@ -19,13 +19,21 @@ void on_signal(int) {
 
 int usage(int status) {
     std::fprintf(status ? stderr : stdout,
-                 "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--save-dir DIR]\n"
-                 "            [--trace FILE] [--verbose]\n"
+                 "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--client-budget B]\n"
+                 "            [--stall-timeout S] [--max-frame B] [--save-dir DIR] [--trace FILE] [--verbose]\n"
                  "       rtig --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
                  "  --fom-path DIR     where to look for FED files a federate could not read itself\n"
                  "  --frame-timeout S  drop a client whose frame stays incomplete S seconds (default 10)\n"
+                 "  --client-budget B  bytes held for one client (its output queue, the messages time management\n"
+                 "                     keeps for it) above which the clients sending to it are no longer read\n"
+                 "                     until it takes half of them (default 67108864, at least 65536)\n"
+                 "  --stall-timeout S  drop a client over its budget that takes nothing for S seconds (default 30,\n"
+                 "                     0: never)\n"
+                 "  --max-frame B      the largest message in bytes, both directions (default 67108864, 65536 to\n"
+                 "                     1073741824): clients learn it when they connect and refuse larger values\n"
+                 "                     at the call (ValueLengthExceeded)\n"
                  "  --save-dir DIR     write federation saves to DIR (created if missing) and restore from\n"
                  "                     there, also after a restart; without it saves live in memory only\n"
                  "  --trace FILE       write when each update/interaction arrived and each reflection of it left,\n"
@@ -71,6 +79,17 @@ int main(int argc, char** argv) {
             }
             return argv[++i];
         };
+        // The option's value as a number above `low` (or equal to it when `low_ok`); exits on anything else.
+        auto number = [&](const char* name, double low, bool low_ok) {
+            const char* text = value(name);
+            char* end = nullptr;
+            const double v = std::strtod(text, &end);
+            if (*text == '\0' || *end != '\0' || !(v > low || (low_ok && v == low)) || !(v < 1e15)) {
+                std::fprintf(stderr, "rtig: invalid %s '%s'\n", name, text);
+                std::exit(usage(2));
+            }
+            return v;
+        };
         if (arg == "--host") {
             options.host = value("--host");
         } else if (arg == "--port") {
@@ -85,14 +104,18 @@ int main(int argc, char** argv) {
         } else if (arg == "--fom-path") {
             options.fom_path.emplace_back(value("--fom-path"));
         } else if (arg == "--frame-timeout") {
-            const char* text = value("--frame-timeout");
-            char* end = nullptr;
-            const double seconds = std::strtod(text, &end);
-            if (*text == '\0' || *end != '\0' || !(seconds > 0)) {
-                std::fprintf(stderr, "rtig: invalid --frame-timeout '%s'\n", text);
+            options.partial_frame_timeout_s = number("--frame-timeout", 0, false);
+        } else if (arg == "--client-budget") {
+            options.client_budget = static_cast<std::size_t>(number("--client-budget", 65536, true));
+        } else if (arg == "--stall-timeout") {
+            options.stall_timeout_s = number("--stall-timeout", 0, true);
+        } else if (arg == "--max-frame") {
+            const double v = number("--max-frame", 65536, true);
+            if (v > (1u << 30)) {
+                std::fprintf(stderr, "rtig: invalid --max-frame '%s'\n", argv[i]);
                 return usage(2);
             }
-            options.partial_frame_timeout_s = seconds;
+            options.max_frame_bytes = static_cast<std::uint32_t>(v);
         } else if (arg == "--save-dir") {
             options.save_dir = value("--save-dir");
             if (options.save_dir.empty()) {

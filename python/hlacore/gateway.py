@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import os
 from types import TracebackType
 from typing import Any, Iterable, Optional
@@ -23,7 +24,16 @@ class Gateway:
     by a later gateway; without it saves are kept in memory only (docs/save-restore.md).
     ``trace`` names a CSV file for the message trace (``rtig --trace``): when each update and interaction
     arrived and each reflection of it left, on the host's monotonic clock (read by :mod:`hlacore.trace`).
+    ``client_budget`` and ``stall_timeout`` are ``rtig --client-budget`` and ``--stall-timeout``, the flow
+    control of docs/robustness.md: the bytes the gateway holds for one client (its output queue and the
+    messages time management keeps for it) above which the clients sending to it are no longer read until
+    it has taken half of them, and how long such a client may take nothing before it is dropped (0: never).
+    ``max_frame`` is ``rtig --max-frame``: the largest message in bytes; clients learn it when they connect
+    and raise ``ValueLengthExceeded`` at a call whose values would not fit.
     """
+
+    MIN_CLIENT_BUDGET = 65536
+    MAX_FRAME_RANGE = (65536, 1 << 30)
 
     def __init__(
         self,
@@ -33,10 +43,21 @@ class Gateway:
         verbose: bool = False,
         save_dir: Optional[str | os.PathLike[str]] = None,
         trace: Optional[str | os.PathLike[str]] = None,
+        client_budget: int = 64 << 20,
+        stall_timeout: float = 30.0,
+        max_frame: int = 64 << 20,
     ) -> None:
+        if client_budget < self.MIN_CLIENT_BUDGET:
+            raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
+        if not (math.isfinite(stall_timeout) and stall_timeout >= 0):
+            raise ValueError(f"stall_timeout must be a finite number of seconds >= 0, not {stall_timeout}")
+        low, high = self.MAX_FRAME_RANGE
+        if not low <= max_frame <= high:
+            raise ValueError(f"max_frame must be between {low} and {high} bytes, not {max_frame}")
         self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose,
                                                 os.fspath(save_dir) if save_dir is not None else "",
-                                                os.fspath(trace) if trace is not None else "")
+                                                os.fspath(trace) if trace is not None else "",
+                                                client_budget, stall_timeout, max_frame)
 
     @property
     def host(self) -> str:

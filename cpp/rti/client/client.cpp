@@ -128,16 +128,44 @@ Client::~Client() {
 
 // ---- plumbing ----
 
+namespace {
+// The messages the gateway serves only for a joined federate: from a connection that is not (one that has
+// sent its resign) they are a protocol error that drops it.
 template <class M>
-void Client::send(const M& message) {
+constexpr bool kFederationService = false;
+#define HLACORE_X(name) template <> constexpr bool kFederationService<wire::name> = true;
+HLACORE_FEDERATION_SERVICES(HLACORE_X)
+#undef HLACORE_X
+}  // namespace
+
+std::unique_lock<std::mutex> Client::lock_send() {
     // Another thread's send may be blocked: wait for it without holding the host's lock (the GIL).
     std::unique_lock<std::mutex> lock(send_mu_, std::try_to_lock);
     if (!lock) {
         Waiting waiting(options_.wait_host);
         lock.lock();
     }
+    return lock;
+}
+
+template <class M>
+void Client::send(const M& message) {
+    auto lock = lock_send();
+    if constexpr (kFederationService<M>) {
+        // Checked here, in the order of the socket: another thread's resign may have gone out just before.
+        if (!member_)
+            raise(ErrorCode::FederateNotExecutionMember, std::string(wire::message_name(M::kType)) +
+                                                             ": the federate is not joined (it has resigned)");
+    }
     send_buffer_.clear();
     wire::encode(send_buffer_, message);
+    if (send_buffer_.size() - 4 > max_frame_bytes_) {  // a name, tag or FED beyond reason: refused, not sent
+        const std::size_t length = send_buffer_.size() - 4;
+        send_buffer_.clear();
+        raise(ErrorCode::ValueLengthExceeded, std::string(wire::message_name(M::kType)) + " of " +
+                                                  std::to_string(length) + " bytes is over the gateway's frame limit of " +
+                                                  std::to_string(max_frame_bytes_) + " bytes");
+    }
     write_send_buffer();
 }
 #define HLACORE_X(name) template void Client::send(const wire::name&);
@@ -161,27 +189,58 @@ void Client::write_send_buffer() {
     }
 }
 
-// The socket's buffer is full: the gateway is behind, slowing this federate down, or gone. Waits with the
-// GIL released (WaitHost) until it reads again, for at most the timeout without progress.
+// The socket's buffer is full: the gateway is behind, holding this federate back (flow control) or gone.
+// Waits with the GIL released (WaitHost), reading what the gateway sends meanwhile (it may be waiting for
+// this federate to take its own messages, and sends a Pong now and then while it holds it back): it is
+// declared not responding after the timeout without a byte either way.
 void Client::wait_writable(std::size_t sent) {
-    const auto deadline = Clock::now() + timeout_;
+    auto deadline = Clock::now() + timeout_;
+    std::uint64_t heard = heard_bytes_;
     for (;;) {
-        pollfd p{fd_, POLLOUT, 0};
+        pollfd p{fd_, POLLOUT | POLLIN, 0};
         int n;
         {
             Waiting waiting(options_.wait_host);
             n = ::poll(&p, 1, ms_until(deadline));
+            if (n > 0 && !(p.revents & POLLOUT)) read_beside_send();
         }
-        if (n > 0) return;
+        if (n > 0 && (p.revents & POLLOUT)) return;
         if (n < 0 && errno == EINTR) {
             on_interrupt(sent > 0 ? "the rest of a message already partly sent" : nullptr);
             continue;
         }
+        {
+            std::lock_guard<std::mutex> lock(mu_);
+            if (closed_) connection_lost();
+        }
+        if (heard_bytes_ != heard) {
+            heard = heard_bytes_;
+            deadline = Clock::now() + timeout_;
+            continue;
+        }
+        if (n > 0) continue;
         close_connection(ErrorCode::GatewayNotResponding,
                          "the gateway has read nothing from this federate for " + seconds(timeout_) +
                              ": it is not responding");
         connection_lost();
     }
+}
+
+// Takes what arrived while a send waits, unless another thread is reading it (then waits a little for it).
+void Client::read_beside_send() {
+    std::unique_lock<std::mutex> lock(mu_);
+    if (reading_) {
+        cv_.wait_for(lock, std::chrono::milliseconds(50));
+        return;
+    }
+    reading_ = true;
+    lock.unlock();
+    std::vector<wire::Message> got;
+    read_socket(Clock::now(), got);
+    lock.lock();
+    reading_ = false;
+    file(got);
+    cv_.notify_all();
 }
 
 void Client::on_interrupt(const char* owed) {
@@ -215,6 +274,10 @@ wire::Reply Client::call(wire::Message request, std::uint32_t id) {
             if constexpr (!std::is_same_v<std::decay_t<decltype(m)>, std::monostate>) send(m);
         },
         request);
+    return await_reply(id);
+}
+
+wire::Reply Client::await_reply(std::uint32_t id) {
     for (;;) {
         auto status = pump(Clock::time_point::max(), [&] { return replies_.count(id) > 0; });
         if (status == WaitStatus::Interrupted) on_interrupt("the gateway's reply");
@@ -295,6 +358,7 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, std::vector<w
         ssize_t r = ::recv(fd_, chunk, sizeof chunk, MSG_DONTWAIT);
         if (r > 0) {
             last_heard_ = Clock::now();
+            heard_bytes_ += static_cast<std::uint64_t>(r);
             in_.append(chunk, static_cast<std::size_t>(r));
             if (static_cast<std::size_t>(r) < sizeof chunk) break;
             continue;
@@ -408,6 +472,13 @@ void Client::require_joined() const {
     if (closed_) connection_lost();
 }
 
+void Client::too_long(const char* service, std::size_t length) const {
+    raise(ErrorCode::ValueLengthExceeded,
+          std::string(service) + ": the values and tag make a message of " + std::to_string(length) +
+              " bytes as the gateway forwards it, over its frame limit of " + std::to_string(max_frame_bytes_) +
+              " bytes (rtig --max-frame)");
+}
+
 const fom::ObjectClass& Client::defined_object_class(fom::Handle cls) const {
     require_joined();
     const auto* c = fom_->object_class(cls);
@@ -458,6 +529,10 @@ std::uint32_t Client::join(const std::string& federate, const std::string& feder
     const auto id = next_request();
     wire::Reply reply = call(wire::JoinFederation{id, federate, federation}, id);
     auto parsed = std::make_unique<fom::Fom>(fom::parse_fed(reply.text, reply.text2));
+    {
+        auto sending = lock_send();
+        member_ = true;
+    }
     std::lock_guard<std::mutex> lock(mu_);
     fom_ = std::move(parsed);
     federate_ = reply.handle;
@@ -471,9 +546,34 @@ void Client::resign(std::uint8_t action) {
         if (action < 1 || action > 4)
             raise(ErrorCode::InvalidResignAction, "resign action " + std::to_string(action) + " is not one of 1-4");
     }
+    // Other threads may still be sending (a bridge shutting down): from the resign on, in the socket's order,
+    // their federation messages raise FederateNotExecutionMember here instead of reaching the gateway after
+    // it, where they would be a protocol error. Until the reply, also when the resign is then refused.
     const auto id = next_request();
-    call(wire::ResignFederation{id, action}, id);
+    {
+        auto sending = lock_send();
+        if (!member_) raise(ErrorCode::FederateNotExecutionMember, "the federate is already resigning");
+        member_ = false;
+        send_buffer_.clear();
+        wire::encode(send_buffer_, wire::ResignFederation{id, action});
+        write_send_buffer();
+    }
+    try {
+        await_reply(id);
+    } catch (const RtiError&) {
+        bool closed;
+        {
+            std::lock_guard<std::mutex> lock(mu_);
+            closed = closed_;
+        }
+        if (!closed) {
+            auto sending = lock_send();
+            member_ = true;  // refused (FederateOwnsAttributes ...): still joined
+        }
+        throw;
+    }
     std::lock_guard<std::mutex> lock(mu_);
+    callbacks_ = CallbackQueue{};  // what the federation sent before the resign: no callback after it
     fom_.reset();
     federate_ = 0;
     published_.clear();

@@ -295,9 +295,12 @@ private:
     // Encodes and writes one message (client.cpp instantiates it for every message type).
     template <class M>
     void send(const M& message);
+    std::unique_lock<std::mutex> lock_send();  // send_mu_, waiting for another thread's send with the host released
     void write_send_buffer();  // under send_mu_
     void wait_writable(std::size_t sent);  // under send_mu_: the gateway is not reading (yet)
+    void read_beside_send();
     wire::Reply call(wire::Message request, std::uint32_t request_id);
+    wire::Reply await_reply(std::uint32_t request_id);  // the reply's error code raised as its exception
     std::uint32_t next_request();
     // Reads the socket until pred() holds (checked under mu_), the deadline passes or a signal arrives.
     template <class Pred>
@@ -315,6 +318,13 @@ private:
 
     // The checks behind the services; callers hold mu_.
     void require_joined() const;
+    // ValueLengthExceeded unless `message` and what the gateway forwards of it fit the gateway's frame limit.
+    template <class M>
+    void check_forwardable(const M& message, const char* service) const {
+        const std::size_t length = wire::frame_length(message) + wire::kForwardedGrowth;
+        if (length > max_frame_bytes_) too_long(service, length);
+    }
+    [[noreturn]] void too_long(const char* service, std::size_t length) const;
     const fom::ObjectClass& defined_object_class(fom::Handle cls) const;
     // AttributeNotDefined for a handle the class does not have.
     static void check_attributes(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes);
@@ -369,6 +379,7 @@ private:
 
     std::mutex send_mu_;
     std::string send_buffer_;
+    bool member_ = false;  // under send_mu_: joined, and no resign sent since (kFederationService messages go)
 
     mutable std::mutex mu_;
     std::condition_variable cv_;
@@ -384,6 +395,7 @@ private:
     Clock::time_point last_heard_;  // when the gateway last sent a byte
     Clock::time_point ping_sent_;   // when the unanswered Ping left (last_heard_ is later once answered)
     std::uint32_t pings_ = 0;
+    std::atomic<std::uint64_t> heard_bytes_{0};  // every byte read, for a sender waiting on a full socket
     // Callbacks waiting for tick(), in arrival order: a vector consumed from the front and reused, so a
     // steady stream allocates nothing (a deque allocated a node per message once wire::Message grew to
     // 408 bytes with InitiateFederateRestore).

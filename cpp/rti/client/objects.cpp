@@ -32,13 +32,13 @@ void Client::add_registered(std::uint32_t object, fom::Handle cls, const std::st
 
 std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues values, const std::string& tag,
                                         wire::OptionalTime time) {
-    std::uint64_t serial;
+    wire::UpdateAttributes update{object, std::move(values), tag, time, 0};
     {
         std::lock_guard<std::mutex> lock(mu_);
         const LocalObject& obj = known_object(object);
         check_not_saving_or_restoring("updateAttributeValues");
         const auto& cls = *fom_->object_class(obj.object_class);
-        for (const auto& [attr, value] : values) {
+        for (const auto& [attr, value] : update.values) {
             if (!cls.attribute(attr))
                 raise(ErrorCode::AttributeNotDefined, "attribute handle " + std::to_string(attr) +
                                                           " is not defined for class '" + cls.qualified_name + "'");
@@ -46,10 +46,11 @@ std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues
                 raise(ErrorCode::AttributeNotOwned, "attribute '" + cls.attribute(attr)->name + "' of object '" +
                                                         obj.name + "' is not owned by this federate");
         }
-        serial = next_serial(time);
+        check_forwardable(update, "updateAttributeValues");
+        update.serial = next_serial(time);
     }
-    send(wire::UpdateAttributes{object, std::move(values), tag, time, serial});
-    return serial;
+    send(update);
+    return update.serial;
 }
 
 const fom::InteractionClass& Client::check_sendable(fom::Handle cls, const wire::HandleValues& values) const {
@@ -67,15 +68,16 @@ const fom::InteractionClass& Client::check_sendable(fom::Handle cls, const wire:
 
 std::uint64_t Client::send_interaction(fom::Handle cls, wire::HandleValues values, const std::string& tag,
                                        wire::OptionalTime time) {
-    std::uint64_t serial;
+    wire::SendInteraction interaction{cls, std::move(values), tag, time, 0};
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_not_saving_or_restoring("sendInteraction");
-        check_sendable(cls, values);
-        serial = next_serial(time);
+        check_sendable(cls, interaction.values);
+        check_forwardable(interaction, "sendInteraction");
+        interaction.serial = next_serial(time);
     }
-    send(wire::SendInteraction{cls, std::move(values), tag, time, serial});
-    return serial;
+    send(interaction);
+    return interaction.serial;
 }
 
 std::uint64_t Client::delete_object(std::uint32_t object, const std::string& tag, wire::OptionalTime time) {

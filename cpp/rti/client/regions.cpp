@@ -315,15 +315,16 @@ void Client::unsubscribe_interaction_class_with_region(fom::Handle cls, std::uin
 
 std::uint64_t Client::send_interaction_with_region(fom::Handle cls, wire::HandleValues values, std::uint32_t region,
                                                    const std::string& tag, wire::OptionalTime time) {
-    std::uint64_t serial;
+    wire::SendInteractionWithRegion interaction{cls, std::move(values), tag, time, 0, region};
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_not_saving_or_restoring("sendInteractionWithRegion");
-        check_interaction_region(check_sendable(cls, values), region);
-        serial = next_serial(time);
+        check_interaction_region(check_sendable(cls, interaction.values), region);
+        check_forwardable(interaction, "sendInteractionWithRegion");
+        interaction.serial = next_serial(time);
     }
-    send(wire::SendInteractionWithRegion{cls, std::move(values), tag, time, serial, region});
-    return serial;
+    send(interaction);
+    return interaction.serial;
 }
 
 void Client::request_class_update_with_region(fom::Handle cls, const std::vector<fom::Handle>& attributes,

@@ -41,7 +41,8 @@ void Client::request_federation_save(const std::string& label, const wire::Optio
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_idle("requestFederationSave");
-        if (time && std::isnan(*time)) raise(ErrorCode::InvalidFederationTime, "the save time is NaN");
+        if (time && !std::isfinite(*time))
+            raise(ErrorCode::InvalidFederationTime, "the save time is not finite");
     }
     const auto id = next_request();
     call(wire::RequestFederationSave{id, label, time}, id);

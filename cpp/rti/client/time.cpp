@@ -67,7 +67,7 @@ Time Client::lowest_sendable() const {
 
 void Client::check_send_time(const wire::OptionalTime& time) const {
     if (!time) return;
-    if (std::isnan(*time)) raise(ErrorCode::InvalidFederationTime, "the timestamp is NaN");
+    if (!std::isfinite(*time)) raise(ErrorCode::InvalidFederationTime, "timestamp " + text(*time) + " is not finite");
     if (time_.regulation_pending)
         raise(ErrorCode::InvalidFederationTime,
               "timestamp " + text(*time) + " sent while enableTimeRegulation is pending; wait for timeRegulationEnabled");
@@ -179,7 +179,8 @@ void Client::time_advance(AdvanceKind kind, Time time) {
         require_joined();
         const char* name = service_name(kind);
         check_not_saving_or_restoring(name);
-        if (std::isnan(time)) raise(ErrorCode::InvalidFederationTime, std::string(name) + ": the time is NaN");
+        if (!std::isfinite(time))
+            raise(ErrorCode::InvalidFederationTime, std::string(name) + ": the time " + text(time) + " is not finite");
         require_no_advance();
         if (time_.regulation_pending)
             raise(ErrorCode::EnableTimeRegulationPending,

@@ -55,6 +55,8 @@ public:
     double query_time(FederateHandle federate, wire::TimeQuery which);
     // Appends this federation's state as a JSON object (federates, time state, objects, sync points).
     void write_status(std::string& json);
+    // What waits in the federation for `federate` until its own time state moves (flow control counts it).
+    std::size_t held_bytes(FederateHandle federate) const { return time_.held_bytes(federate); }
 
     // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/server/save_restore.cpp, docs/save-restore.md) ----
     // Where saves are written as files ("" keeps them in memory only).

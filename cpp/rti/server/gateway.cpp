@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -29,6 +30,8 @@ using Clock = std::chrono::steady_clock;
 
 // Connection buffers above this capacity are released once empty.
 constexpr std::size_t kKeptBufferBytes = 1u << 20;
+// Released frames beyond this go through a connection's backlog rather than straight into its buffer.
+constexpr std::size_t kPacedBytes = 256u << 10;
 
 struct Gateway::Connection {
     int fd = -1;
@@ -37,12 +40,27 @@ struct Gateway::Connection {
     std::size_t in_offset = 0;
     std::string out;
     std::size_t out_offset = 0;
+    // Released held messages waiting to enter `out` as the client takes what is there (at most kPacedBytes
+    // at a time), then `tail`: what was written for the client meanwhile, kept behind them.
+    std::deque<std::string> backlog;
+    std::size_t backlog_bytes = 0;
+    std::string tail;
     bool greeted = false;
     bool write_armed = false;
     bool dirty = false;
     FederationEntry* federation = nullptr;
     FederateHandle federate = 0;
     Clock::time_point partial_since{};
+    Clock::time_point accepted_at = Clock::now();
+    // Flow control: while paused the connection is not read (its frames wait in its socket) until the
+    // client it sends to (blocked_by, a descriptor) is below half its budget again.
+    bool paused = false;
+    int blocked_by = -1;
+    Clock::time_point paused_since{};
+    Clock::time_point keepalive_at{};
+    bool pause_logged = false;
+    bool idle = true;                // the output queue was empty at the end of the last flush
+    Clock::time_point progress_at{};  // since then: when the client last took bytes, or bytes were queued
     std::int64_t read_ns = 0;  // when the bytes being decoded were read (message trace only)
     std::size_t traced = 0;    // out[0, traced) went through the message trace
 };
@@ -54,7 +72,27 @@ public:
         auto it = peers_.find(federate);
         if (it == peers_.end()) return discard_;  // not reachable: federates are bound before use
         gateway_.mark_dirty(*it->second);
-        return it->second->out;
+        return gateway_.output(*it->second);
+    }
+    void send_frames(FederateHandle federate, std::vector<std::string>& frames) override {
+        auto it = peers_.find(federate);
+        if (it == peers_.end()) return;
+        Connection& c = *it->second;
+        std::size_t total = 0;
+        for (const auto& frame : frames) total += frame.size();
+        if (c.backlog.empty() && total < kPacedBytes) return Outbox::send_frames(federate, frames);
+        if (!c.tail.empty()) {
+            c.backlog_bytes += c.tail.size();
+            c.backlog.push_back(std::move(c.tail));
+            c.tail.clear();
+        }
+        for (auto& frame : frames) c.backlog.push_back(std::move(frame));
+        c.backlog_bytes += total;
+        gateway_.mark_dirty(c);
+    }
+    void held(FederateHandle federate) override {
+        auto it = peers_.find(federate);
+        if (it != peers_.end()) gateway_.mark_dirty(*it->second);
     }
     void rehandle(const std::map<FederateHandle, FederateHandle>& new_handles) override {
         std::unordered_map<FederateHandle, Connection*> peers;
@@ -159,9 +197,9 @@ void Gateway::stop() {
 
 void Gateway::run() {
     for (;;) {
-        bool partial_pending = false;
-        for (const auto& [fd, c] : connections_) partial_pending |= c->in.size() > c->in_offset;
-        const auto& events = loop_.wait(partial_pending ? 250 : -1);
+        bool partial_pending = false;  // or a connection that has not said Hello yet
+        for (const auto& [fd, c] : connections_) partial_pending |= c->in.size() > c->in_offset || !c->greeted;
+        const auto& events = loop_.wait(partial_pending || !paused_.empty() ? 250 : -1);
         for (const epoll_event& ev : events) {
             const int fd = ev.data.fd;
             if (fd == wake_fd_) {
@@ -182,6 +220,7 @@ void Gateway::run() {
             if (it != connections_.end() && (ev.events & EPOLLOUT)) mark_dirty(*it->second);
         }
         flush_dirty();
+        if (!paused_.empty()) service_paused();
         if (partial_pending) drop_stale_partials();
         if (trace_) trace_->flush();
     }
@@ -247,24 +286,37 @@ void Gateway::on_readable(Connection& c) {
         return;
     }
     if (trace_) c.read_ns = MessageTrace::now_ns();
+    serve_frames(c);
+    if (!connections_.count(fd)) return;
+    if (peer_closed) {
+        const std::size_t left = c.in.size() - c.in_offset;
+        close(fd, left ? "connection closed in the middle of a frame (" + std::to_string(left) + " bytes pending)"
+                       : "connection closed by peer");
+    }
+}
+
+void Gateway::serve_frames(Connection& c) {
+    const int fd = c.fd;
     try {
         wire::Frame frame;
-        while (std::size_t used = wire::next_frame(std::string_view(c.in).substr(c.in_offset), frame, options_.max_frame_bytes)) {
+        while (!c.paused) {
+            const std::size_t used = wire::next_frame(std::string_view(c.in).substr(c.in_offset), frame, options_.max_frame_bytes);
+            if (!used) break;
             c.in_offset += used;
+            over_budget_ = -1;
             on_frame(c, frame);
             if (!connections_.count(fd)) return;
             if (c.in_offset < c.in.size()) c.partial_since = Clock::now();
+            if (over_budget_ >= 0) {
+                auto consumer = connections_.find(over_budget_);
+                if (consumer != connections_.end()) pause(c, *consumer->second);
+            }
         }
     } catch (const wire::WireError& e) {
         close(fd, std::string("protocol error: ") + e.what());
         return;
     }
     const std::size_t left = c.in.size() - c.in_offset;
-    if (peer_closed) {
-        close(fd, left ? "connection closed in the middle of a frame (" + std::to_string(left) + " bytes pending)"
-                       : "connection closed by peer");
-        return;
-    }
     if (left == 0) {
         if (c.in.capacity() > kKeptBufferBytes) std::string().swap(c.in);  // after a large frame
         c.in.clear();
@@ -289,6 +341,19 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
         mark_dirty(c);
         return;
     }
+    switch (frame.type) {
+        case wire::MessageType::UpdateAttributes:
+        case wire::MessageType::SendInteraction:
+        case wire::MessageType::SendInteractionWithRegion:
+            // Clients refuse these at the call (ValueLengthExceeded): forwarded, they would not fit.
+            if (2 + frame.payload.size() + wire::kForwardedGrowth > options_.max_frame_bytes)
+                throw wire::WireError(std::string(wire::message_name(frame.type)) + " of " +
+                                      std::to_string(2 + frame.payload.size()) +
+                                      " bytes would be forwarded over the frame limit of " +
+                                      std::to_string(options_.max_frame_bytes) + " bytes");
+            break;
+        default: break;
+    }
     if (trace_ && c.federation) trace_->received(c.federation->federation.name(), c.federate, message, c.read_ns);
     on_request(c, message);
 }
@@ -310,7 +375,7 @@ void Gateway::answer(Connection& c, std::uint32_t request, F&& serve_request) {
         r.message = e.what();
     }
     r.request = request;
-    wire::encode(c.out, r);
+    wire::encode(output(c), r);
     mark_dirty(c);
 }
 
@@ -476,7 +541,7 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
 }
 
 void Gateway::serve(Connection& c, const wire::Ping& m) {
-    wire::encode(c.out, wire::Pong{m.sequence});
+    wire::encode(output(c), wire::Pong{m.sequence});
     mark_dirty(c);
 }
 
@@ -509,6 +574,85 @@ void Gateway::mark_dirty(Connection& c) {
         c.dirty = true;
         dirty_.push_back(c.fd);
     }
+    if (held_for(c) > options_.client_budget) over_budget_ = c.fd;
+}
+
+// ---- flow control ----
+
+std::string& Gateway::output(Connection& c) { return c.backlog.empty() ? c.out : c.tail; }
+
+std::size_t Gateway::held_for(const Connection& c) const {
+    const std::size_t queued = c.out.size() - c.out_offset + c.backlog_bytes + c.tail.size();
+    return c.federation ? queued + c.federation->federation.held_bytes(c.federate) : queued;
+}
+
+void Gateway::pause(Connection& producer, const Connection& consumer) {
+    // A client over its budget with messages only its own requests release (a time advance) is not held
+    // back from sending them; one whose output queue alone is over it is (it asks more than it reads).
+    if (&producer == &consumer && producer.out.size() - producer.out_offset <= options_.client_budget) return;
+    // Two clients holding each other back (each over its budget with the other's messages) would wait for
+    // ever: the one that closes the circle is not paused and its consumer goes over budget instead.
+    for (int fd = consumer.fd, steps = 0; steps <= static_cast<int>(paused_.size()); ++steps) {
+        if (fd == producer.fd && &producer != &consumer) return;
+        auto it = connections_.find(fd);
+        if (it == connections_.end() || !it->second->paused) break;
+        fd = it->second->blocked_by;
+    }
+    producer.paused = true;
+    producer.blocked_by = consumer.fd;
+    producer.paused_since = producer.keepalive_at = Clock::now();
+    producer.pause_logged = false;
+    paused_.push_back(producer.fd);
+    update_events(producer);
+}
+
+void Gateway::update_events(Connection& c) {
+    loop_.modify(c.fd, (c.paused ? 0u : static_cast<std::uint32_t>(EPOLLIN)) | (c.write_armed ? EPOLLOUT : 0u));
+}
+
+// Each turn of the loop while connections are paused: resumes those whose consumer is below half its
+// budget (or gone), sends the others a Pong now and then (their clients see the gateway alive while their
+// sends wait), logs a pause that lasts, and drops a consumer over budget that has taken nothing for
+// stall_timeout_s.
+void Gateway::service_paused() {
+    const auto now = Clock::now();
+    std::vector<int> paused;
+    paused.swap(paused_);
+    for (int fd : paused) {
+        auto it = connections_.find(fd);
+        if (it == connections_.end()) continue;
+        Connection& p = *it->second;
+        auto blocker = connections_.find(p.blocked_by);
+        if (blocker != connections_.end() && held_for(*blocker->second) > options_.client_budget / 2) {
+            Connection& c = *blocker->second;
+            const auto stalled = std::chrono::duration<double>(now - c.progress_at).count();
+            if (options_.stall_timeout_s > 0 && c.out.size() > c.out_offset && stalled > options_.stall_timeout_s) {
+                close(c.fd, "not reading: " + std::to_string(c.out.size() - c.out_offset) + " bytes queued, none taken for " +
+                                std::to_string(static_cast<int>(stalled)) + " s (budget " +
+                                std::to_string(options_.client_budget) + ")");
+                paused_.push_back(fd);  // resumed next turn, its blocker gone
+                continue;
+            }
+            if (!p.pause_logged && now - p.paused_since > std::chrono::seconds(10)) {
+                p.pause_logged = true;
+                log("holding back " + p.peer + " for 10 s: " + c.peer + " holds " + std::to_string(held_for(c)) +
+                    " bytes for it (budget " + std::to_string(options_.client_budget) + "; docs/robustness.md)");
+            }
+            if (now - p.keepalive_at > std::chrono::seconds(1)) {
+                p.keepalive_at = now;
+                wire::encode(p.out, wire::Pong{0});
+                mark_dirty(p);
+            }
+            paused_.push_back(fd);
+            continue;
+        }
+        p.paused = false;
+        p.blocked_by = -1;
+        p.partial_since = now;
+        update_events(p);
+        serve_frames(p);  // what it had already sent; may pause it again
+    }
+    flush_dirty();
 }
 
 void Gateway::flush_dirty() {
@@ -526,15 +670,17 @@ void Gateway::flush_dirty() {
 }
 
 void Gateway::flush(Connection& c) {
-    if (trace_ && c.federation && c.traced < c.out.size()) {
-        trace_->sending(c.federation->federation.name(), c.federate,
-                        std::string_view(c.out).substr(c.traced), MessageTrace::now_ns());
-        c.traced = c.out.size();
+    refill(c);
+    if (c.idle) {
+        c.idle = false;
+        c.progress_at = Clock::now();
     }
     while (c.out_offset < c.out.size()) {
         ssize_t n = ::send(c.fd, c.out.data() + c.out_offset, c.out.size() - c.out_offset, MSG_NOSIGNAL);
         if (n > 0) {
             c.out_offset += static_cast<std::size_t>(n);
+            c.progress_at = Clock::now();
+            if (c.out.size() - c.out_offset < kPacedBytes) refill(c);
             continue;
         }
         if (n < 0 && errno == EINTR) continue;
@@ -549,15 +695,11 @@ void Gateway::flush(Connection& c) {
         c.out.clear();
         c.out_offset = 0;
         c.traced = 0;
+        c.idle = true;
         if (c.write_armed) {
-            loop_.modify(c.fd, EPOLLIN);
             c.write_armed = false;
+            update_events(c);
         }
-        return;
-    }
-    if (queued > options_.max_queued_output) {
-        close(c.fd, "peer is not reading: " + std::to_string(queued) + " bytes queued (limit " +
-                        std::to_string(options_.max_queued_output) + ")");
         return;
     }
     if (c.out_offset > (1u << 20) && c.out_offset > c.out.size() / 2) {
@@ -566,19 +708,52 @@ void Gateway::flush(Connection& c) {
         c.out_offset = 0;
     }
     if (!c.write_armed) {
-        loop_.modify(c.fd, EPOLLIN | EPOLLOUT);
         c.write_armed = true;
+        update_events(c);
+    }
+}
+
+// Moves released frames from the backlog into the output buffer while it holds less than kPacedBytes,
+// then what was written behind them.
+void Gateway::move_backlog(Connection& c) {
+    if (c.backlog.empty()) return;
+    if (c.out_offset == c.out.size()) {
+        c.out.clear();
+        c.out_offset = 0;
+        c.traced = 0;
+    }
+    while (!c.backlog.empty() && c.out.size() - c.out_offset < kPacedBytes) {
+        c.out.append(c.backlog.front());
+        c.backlog_bytes -= c.backlog.front().size();
+        c.backlog.pop_front();
+    }
+    if (c.backlog.empty()) {
+        c.out.append(c.tail);
+        std::string().swap(c.tail);
+    }
+}
+
+void Gateway::refill(Connection& c) {
+    move_backlog(c);
+    if (trace_ && c.federation && c.traced < c.out.size()) {
+        trace_->sending(c.federation->federation.name(), c.federate,
+                        std::string_view(c.out).substr(c.traced), MessageTrace::now_ns());
+        c.traced = c.out.size();
     }
 }
 
 void Gateway::drop_stale_partials() {
     const auto now = Clock::now();
     const auto limit = std::chrono::duration<double>(options_.partial_frame_timeout_s);
-    std::vector<int> stale;
+    std::vector<std::pair<int, const char*>> stale;
     for (const auto& [fd, c] : connections_) {
-        if (c->in.size() > c->in_offset && now - c->partial_since > limit) stale.push_back(fd);
+        // A paused connection's unread frames wait for the gateway, not for the client.
+        if (!c->paused && c->in.size() > c->in_offset && now - c->partial_since > limit)
+            stale.emplace_back(fd, "incomplete frame for too long");
+        else if (!c->greeted && now - c->accepted_at > limit)  // connected, and silent since
+            stale.emplace_back(fd, "no handshake within the frame timeout");
     }
-    for (int fd : stale) close(fd, "incomplete frame for too long");
+    for (const auto& [fd, why] : stale) close(fd, why);
 }
 
 void Gateway::close(int fd, const std::string& why) {

@@ -21,7 +21,12 @@ struct GatewayOptions {
     std::vector<std::string> fom_path;  // searched for FED files a client could not read itself
     bool verbose = false;
     double partial_frame_timeout_s = 10.0;     // a half-sent frame older than this drops the connection
-    std::size_t max_queued_output = 64u << 20;  // a client that stops reading is dropped beyond this
+    // Flow control (docs/robustness.md): the bytes the gateway holds for one client (its output queue and
+    // the messages time management keeps for it) above which the clients sending to it are paused (not read)
+    // until it is below half of it again; a client over its budget that takes nothing from its queue for
+    // stall_timeout_s is dropped (0: never).
+    std::size_t client_budget = 64u << 20;
+    double stall_timeout_s = 30.0;
     std::uint32_t max_frame_bytes = wire::kMaxFrameBytes;  // announced in the Welcome; larger frames are refused
     std::string save_dir;  // federation saves are written here as files ("": kept in memory only)
     std::string trace_path;  // non-empty: write the message trace there (trace.hpp)
@@ -50,6 +55,8 @@ private:
 
     void accept_all();
     void on_readable(Connection& c);
+    // Serves the whole frames read from c, until one of them delivers to a client over its budget.
+    void serve_frames(Connection& c);
     void on_frame(Connection& c, const wire::Frame& frame);
     // The one dispatcher: a visit onto serve() for the message's type (gateway.cpp).
     void on_request(Connection& c, const wire::Message& message);
@@ -64,9 +71,20 @@ private:
     Federation& joined(const Connection& c) const;  // throws FederateNotExecutionMember
     void close(int fd, const std::string& why);
     void flush(Connection& c);
+    // What flush() writes next: released frames from the backlog (move_backlog), through the message trace.
+    void refill(Connection& c);
+    void move_backlog(Connection& c);
     void flush_dirty();
     void drop_stale_partials();
     void mark_dirty(Connection& c);
+    // Flow control: what the gateway holds for c, c stops being read while `consumer` is over its budget,
+    // and each turn of the loop resumes, keeps alive or drops what waits.
+    std::size_t held_for(const Connection& c) const;
+    // Where the next frame for c goes: behind its backlog of released frames, if any.
+    std::string& output(Connection& c);
+    void pause(Connection& producer, const Connection& consumer);
+    void update_events(Connection& c);
+    void service_paused();
     std::string find_fed_file(const std::string& name) const;
     void log(const std::string& line) const;
 
@@ -79,6 +97,8 @@ private:
     std::map<int, std::unique_ptr<Connection>> connections_;
     std::map<std::string, std::unique_ptr<FederationEntry>> federations_;
     std::vector<int> dirty_;
+    std::vector<int> paused_;
+    int over_budget_ = -1;  // a client found over its budget while the current frame was served
     std::unique_ptr<MessageTrace> trace_;
 };
 

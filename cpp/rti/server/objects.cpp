@@ -77,23 +77,34 @@ void Federation::remove_object(ObjectHandle oh, FederateHandle by, const std::st
 
 // ---- delivery: receive order, or timestamp order queued in TimeManager (time.cpp releases it) ----
 
+namespace {
+// A frame kept for long (held for a federate): encoded in a reused buffer and copied at its exact size, so
+// that it holds what flow control counts and the heap is not left with the holes of a growing string.
+template <class M>
+std::string held_frame(const M& message) {
+    thread_local std::string scratch;  // in-process gateways may run on several threads
+    scratch.clear();
+    wire::encode(scratch, message);
+    return scratch;
+}
+}  // namespace
+
 template <class M>
 void Federation::deliver_receive_order(FederateHandle to, const M& message) {
     if (!time_.holds_receive_order(to)) {
         outbox_.send(to, message);
         return;
     }
-    std::string frame;
-    wire::encode(frame, message);
-    time_.enqueue_receive_order(to, std::move(frame));
+    time_.enqueue_receive_order(to, held_frame(message));
+    outbox_.held(to);
 }
 
 template <class M>
 void Federation::deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender,
                                          std::uint64_t serial, double time) {
-    TsoMessage queued{time, sender, serial, {}};
-    wire::encode(queued.frame, message);
+    TsoMessage queued{time, sender, serial, held_frame(message)};
     time_.enqueue_tso(to, std::move(queued));
+    outbox_.held(to);
     Routed& routed = routed_[sender][serial];
     routed.time = time;
     routed.receivers.push_back(to);

@@ -35,6 +35,15 @@ public:
         wire::encode(buffer(federate), message);
     }
     void send_frame(FederateHandle federate, const std::string& frame) { buffer(federate).append(frame); }
+    // Frames released at once (held messages): the gateway writes them as the federate takes them, freeing
+    // each on the way, rather than copying them all into its output buffer (docs/robustness.md).
+    virtual void send_frames(FederateHandle federate, std::vector<std::string>& frames) {
+        std::string& out = buffer(federate);
+        for (const auto& frame : frames) out.append(frame);
+    }
+    // A message for `federate` was kept in the federation instead (time management holds it): the gateway
+    // weighs it against the federate's budget like its output buffer.
+    virtual void held(FederateHandle federate) { (void)federate; }
     // A restore gives the joined federates the handles they had in the save: old handle -> new handle.
     virtual void rehandle(const std::map<FederateHandle, FederateHandle>& new_handles) { (void)new_handles; }
     // While set, what send() would write for a federate with an entry here is kept there instead (the

@@ -206,7 +206,8 @@ void Federation::request_save(FederateHandle from, const std::string& label, con
     federate(from);
     check_membership_change("requestFederationSave");
     if (time) {
-        if (std::isnan(*time)) throw RtiError(ErrorCode::InvalidFederationTime, "the save time is NaN");
+        if (!std::isfinite(*time))
+            throw RtiError(ErrorCode::InvalidFederationTime, "the save time " + time_text(*time) + " is not finite");
         // A time-managed federate already past the save time could not save at it.
         for (const auto& [h, f] : federates_) {
             if ((time_.regulating(h) || time_.constrained(h)) && time_.federate_time(h) > *time)

@@ -12,7 +12,9 @@ using wire::WireError;
 // HLA 1.3 §8.1.1: receivers were granted on the regulating sender's bound, so a timestamp below it could
 // land in their past. Clients check this first (InvalidFederationTime); here it is a protocol violation.
 void Federation::check_timestamp(FederateHandle from, const wire::OptionalTime& time, const char* what) const {
-    if (!time || time_.may_send(from, *time)) return;
+    if (!time) return;
+    if (!std::isfinite(*time)) throw WireError(std::string(what) + " at a timestamp that is not finite");
+    if (time_.may_send(from, *time)) return;
     throw WireError(std::string(what) + " at timestamp " + time_text(*time) +
                     " is below the sender's output bound " + time_text(time_.promise(from)) +
                     " (lowest timestamp it may still send)");
@@ -31,15 +33,14 @@ void Federation::release_time() {
     // In the order of TimeManager::Release: messages below a new time precede the callback announcing it.
     for (auto& r : time_.release()) {
         if (!federates_.count(r.federate)) continue;
-        std::string& out = outbox_.buffer(r.federate);
-        if (r.constrained_enabled) wire::encode(out, wire::TimeConstrainedEnabled{*r.constrained_enabled});
-        for (const auto& frame : r.frames) out.append(frame);
+        if (r.constrained_enabled) wire::encode(outbox_.buffer(r.federate), wire::TimeConstrainedEnabled{*r.constrained_enabled});
+        outbox_.send_frames(r.federate, r.frames);
         if (r.regulation_enabled) {
-            wire::encode(out, wire::TimeRegulationEnabled{*r.regulation_enabled});
+            wire::encode(outbox_.buffer(r.federate), wire::TimeRegulationEnabled{*r.regulation_enabled});
             forget_retractable(r.federate, *r.regulation_enabled);
         }
         if (r.grant) {
-            wire::encode(out, wire::TimeAdvanceGrant{*r.grant});
+            wire::encode(outbox_.buffer(r.federate), wire::TimeAdvanceGrant{*r.grant});
             forget_retractable(r.federate, *r.grant);
         }
     }
@@ -54,7 +55,8 @@ double Federation::query_time(FederateHandle f, wire::TimeQuery which) {
 
 void Federation::on(FederateHandle from, const wire::EnableTimeRegulation& m) {
     federate(from);
-    if (!(m.lookahead >= 0) || !std::isfinite(m.time)) throw WireError("invalid time or lookahead");
+    if (!(m.lookahead >= 0) || !std::isfinite(m.lookahead) || !std::isfinite(m.time))
+        throw WireError("enable time regulation: the time and lookahead must be finite, the lookahead >= 0");
     // HLA 1.3 §8.2: the client refuses these (TimeRegulationAlreadyEnabled, EnableTimeRegulationPending,
     // TimeAdvanceAlreadyInProgress); re-enabling could also lower a bound others were granted on.
     if (time_.enabling_regulation(from)) throw WireError("enable time regulation while an enable is pending");
@@ -84,7 +86,7 @@ void Federation::on(FederateHandle from, const wire::DisableTimeConstrained&) {
 
 void Federation::on(FederateHandle from, const wire::TimeAdvance& m) {
     federate(from);
-    if (m.kind < 1 || m.kind > 5 || std::isnan(m.time)) throw WireError("invalid time advance request");
+    if (m.kind < 1 || m.kind > 5 || !std::isfinite(m.time)) throw WireError("invalid time advance request (kind 1-5, a finite time)");
     if (m.time < time_.federate_time(from)) throw WireError("time advance request into the past");
     // HLA 1.3 §8.2: refused by the client too (EnableTimeRegulationPending).
     if (time_.enabling_regulation(from))
@@ -95,7 +97,7 @@ void Federation::on(FederateHandle from, const wire::TimeAdvance& m) {
 
 void Federation::on(FederateHandle from, const wire::ModifyLookahead& m) {
     federate(from);
-    if (!(m.lookahead >= 0)) throw WireError("invalid lookahead");
+    if (!(m.lookahead >= 0) || !std::isfinite(m.lookahead)) throw WireError("invalid lookahead (finite, >= 0)");
     time_.modify_lookahead(from, m.lookahead);
     release_time();
 }

@@ -101,6 +101,7 @@ std::vector<std::string> TimeManager::disable_constrained(std::uint32_t f) {
     std::vector<std::string> frames;
     for (auto& [key, frame] : s.tso) frames.push_back(std::move(frame));
     s.tso.clear();
+    s.tso_bytes = 0;
     return frames;
 }
 
@@ -146,13 +147,16 @@ void TimeManager::enqueue_tso(std::uint32_t receiver, TsoMessage message) {
     // The queue only matters to bounds and grants of a federate in NER/NERA/FQR: a message cannot make a
     // TAR grantable, and the lockstep's updates would otherwise each cost a bound computation.
     if (is_next_event(s.pending)) changed_ = true;
+    s.tso_bytes += weight(message.frame);
     s.tso.emplace(std::make_pair(message.time, std::make_pair(message.sender, message.serial)),
                   std::move(message.frame));
 }
 
 void TimeManager::enqueue_receive_order(std::uint32_t receiver, std::string frame) {
     // Only called while the receiver holds receive-order messages: nothing becomes deliverable.
-    state(receiver).held_ro.push_back(std::move(frame));
+    State& s = state(receiver);
+    s.ro_bytes += weight(frame);
+    s.held_ro.push_back(std::move(frame));
 }
 
 std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint64_t serial) {
@@ -161,6 +165,7 @@ std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint6
     for (auto& [f, s] : federates_) {
         for (auto it = s.tso.begin(); it != s.tso.end();) {
             if (it->first.second.first == sender && it->first.second.second == serial) {
+                s.tso_bytes -= weight(it->second);
                 it = s.tso.erase(it);
                 removed_from.push_back(f);
             } else {
@@ -169,6 +174,13 @@ std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint6
         }
     }
     return removed_from;
+}
+
+std::size_t TimeManager::held_bytes(std::uint32_t f) const {
+    auto it = federates_.find(f);
+    if (it == federates_.end()) return 0;
+    const State& s = it->second;
+    return s.ro_bytes + (s.pending == AdvanceKind::None ? s.tso_bytes : 0);
 }
 
 Time TimeManager::earliest_tso(const State& s) const { return s.tso.empty() ? kInfinity : s.tso.begin()->first.first; }
@@ -285,10 +297,7 @@ bool TimeManager::try_grant(std::uint32_t f, State& s, Release& out) {
             case AdvanceKind::None: return false;
         }
     }
-    while (!s.tso.empty() && (deliver_all || s.tso.begin()->first.first <= deliver_up_to)) {
-        out.frames.push_back(std::move(s.tso.begin()->second));
-        s.tso.erase(s.tso.begin());
-    }
+    while (!s.tso.empty() && (deliver_all || s.tso.begin()->first.first <= deliver_up_to)) s.pop_tso(out.frames);
     s.time = grant;
     s.strict_after_grant = !is_available(s.pending) && !(s.lookahead > 0 && grant + s.lookahead > grant);
     // Conservative for newcomers: after FQR with zero lookahead too, start strictly above the grant.
@@ -307,10 +316,7 @@ bool TimeManager::try_complete_regulation(std::uint32_t f, State& s, Release& ou
     if (s.time < t0) {
         if (s.constrained) {
             if (!(t0 <= lbts_from_bounds(f))) return false;
-            while (!s.tso.empty() && s.tso.begin()->first.first <= t0) {
-                out.frames.push_back(std::move(s.tso.begin()->second));
-                s.tso.erase(s.tso.begin());
-            }
+            while (!s.tso.empty() && s.tso.begin()->first.first <= t0) s.pop_tso(out.frames);
         }
         s.time = t0;
         s.receives_above_time = false;  // messages at t0 itself may still come
@@ -341,6 +347,7 @@ std::vector<TimeManager::Release> TimeManager::release() {
                 auto& frames = slot(f).frames;
                 for (auto& frame : s.held_ro) frames.push_back(std::move(frame));
                 s.held_ro.clear();
+                s.ro_bytes = 0;
             }
             if (s.constrained_pending && lbts_from_bounds(f) >= s.time) {
                 s.constrained_pending = false;
@@ -426,9 +433,12 @@ void TimeManager::restore_state(std::uint32_t f, SavedState saved) {
     s = State{};
     static_cast<wire::SavedTime&>(s) = saved.time;
     if (!s.regulating) s.promise = -kInfinity;
-    for (auto& m : saved.tso)
+    for (auto& m : saved.tso) {
+        s.tso_bytes += weight(m.frame);
         s.tso.emplace(std::make_pair(m.time, std::make_pair(m.sender, m.serial)), std::move(m.frame));
+    }
     s.held_ro = std::move(saved.held_ro);
+    for (const auto& frame : s.held_ro) s.ro_bytes += weight(frame);
 }
 
 }  // namespace hlacore

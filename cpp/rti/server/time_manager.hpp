@@ -112,6 +112,10 @@ public:
 
     // Everything deliverable now: held receive-order messages, TSO messages that are safe, grants.
     std::vector<Release> release();
+    // The bytes of the messages waiting for `f` that only its own progress releases: held receive-order
+    // messages, and TSO messages while it is not advancing (while it is, they wait for the senders' own
+    // progress, which holding those senders back would stop). Flow control counts them (docs/robustness.md).
+    std::size_t held_bytes(std::uint32_t f) const;
 
     // The lowest timestamp a regulating federate may still send (kInfinity if not regulating).
     Time output_bound(std::uint32_t f);
@@ -152,7 +156,19 @@ private:
         bool settled = false;          // scratch for compute_bounds()
         std::multimap<std::pair<Time, std::pair<std::uint32_t, std::uint64_t>>, std::string> tso;
         std::vector<std::string> held_ro;
+        std::size_t tso_bytes = 0;  // the weight() of the frames in tso
+        std::size_t ro_bytes = 0;   // and in held_ro
+        // Moves the earliest TSO message into `frames`.
+        void pop_tso(std::vector<std::string>& frames) {
+            tso_bytes -= weight(tso.begin()->second);
+            frames.push_back(std::move(tso.begin()->second));
+            tso.erase(tso.begin());
+        }
     };
+
+    // What a held frame costs the gateway: its bytes and its queue entry (with the routing record of a
+    // timestamped message), so that small messages are not held far beyond the budget.
+    static std::size_t weight(const std::string& frame) { return frame.size() + 160; }
 
     State& state(std::uint32_t f);
     const State& state(std::uint32_t f) const;

@@ -28,9 +28,11 @@ public:
 
 constexpr std::size_t kHeaderBytes = 6;  // u32 length + u16 type
 
-class Writer {
+// Appends fields to Out: a std::string, or a ByteCount to learn an encoding's size without making it.
+template <class Out>
+class BasicWriter {
 public:
-    explicit Writer(std::string& out) : out_(out) {}
+    explicit BasicWriter(Out& out) : out_(out) {}
 
     template <class... T>
     void operator()(const T&... values) { (put(values), ...); }
@@ -59,7 +61,7 @@ public:
         put(p.first);
         put(p.second);
     }
-    template <class T, class = decltype(std::declval<const T&>().fields(std::declval<Writer&>()))>
+    template <class T, class = decltype(std::declval<const T&>().fields(std::declval<BasicWriter&>()))>
     void put(const T& record) {
         record.fields(*this);
     }
@@ -70,8 +72,16 @@ public:
 
 private:
     void raw(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
-    std::string& out_;
+    Out& out_;
 };
+
+struct ByteCount {
+    std::size_t bytes = 0;
+    void append(const char*, std::size_t n) { bytes += n; }
+    void append(const std::string& s) { bytes += s.size(); }
+};
+
+using Writer = BasicWriter<std::string>;
 
 class Reader {
 public:
@@ -163,6 +173,15 @@ void encode(std::string& out, const M& m) {
     std::memcpy(&out[start + 4], &type, 2);
 }
 void encode(std::string& out, const Message& m);
+
+// The frame's length field for `m` (type + payload: what the frame limit counts), without encoding it.
+template <class M>
+std::size_t frame_length(const M& m) {
+    ByteCount count;
+    BasicWriter<ByteCount> w(count);
+    m.fields(w);
+    return 2 + count.bytes;
+}
 
 struct Frame {
     MessageType type = MessageType::Invalid;

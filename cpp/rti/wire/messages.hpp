@@ -488,6 +488,9 @@ struct DiscoverObject {
     std::string name;
     HLACORE_FIELDS(object, object_class, name)
 };
+// What the gateway adds to an update or interaction it forwards (ReflectAttributes, ReceiveInteraction:
+// order, transport, sender): a sender keeps its frame this much under the limit so that they always fit.
+constexpr std::size_t kForwardedGrowth = 1 + 1 + 4;
 struct ReflectAttributes {
     HLACORE_TYPE(ReflectAttributes)
     std::uint32_t object = 0;

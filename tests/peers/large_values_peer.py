@@ -1,0 +1,34 @@
+"""The publisher of camera-size updates for tests/test_large_values.py: `python large_values_peer.py ADDRESS
+COUNT MIB`. Joins TestFed, publishes robot.location, registers "camera", sends COUNT updates of MIB MiB (update k filled with the byte k) as fast as the gateway takes
+them, reports {"sent": COUNT, "seconds": S, "slowest_call": S}, resigns and exits."""
+
+from __future__ import annotations
+
+import sys
+import time
+
+import hlacore.rti as rti
+from peerlib import say
+
+
+def main() -> None:
+    address, count, mib = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+    rtia = rti.RTIAmbassador(address)
+    rtia.joinFederationExecution("camera", "TestFed", rti.FederateAmbassador())
+    robot = rtia.getObjectClassHandle("robot")
+    location = rtia.getAttributeHandle("location", robot)
+    rtia.publishObjectClass(robot, [location])
+    obj = rtia.registerObjectInstance(robot, "camera")
+    started = time.monotonic()
+    slowest = 0.0
+    for k in range(count):
+        value = bytes([k]) * (mib << 20)
+        before = time.monotonic()
+        rtia.updateAttributeValues(obj, {location: value}, "frame")
+        slowest = max(slowest, time.monotonic() - before)
+    say(sent=count, seconds=round(time.monotonic() - started, 3), slowest_call=round(slowest, 3))
+    rtia.resignFederationExecution(rti.ResignAction.ReleaseAttributes)
+
+
+if __name__ == "__main__":
+    main()

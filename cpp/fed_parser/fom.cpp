@@ -5,46 +5,65 @@
 namespace hlacore::fom {
 namespace {
 
-// Linear scans: a Fom may also be built by hand or from the wire, so there is no index to keep in
-// sync, and even 1000 classes scan in a few microseconds (lookups happen once per name at startup).
-
 template <typename Vec>
 auto* by_handle(const Vec& items, Handle h) {
     using T = typename Vec::value_type;
     if (h == 0 || h > items.size()) return static_cast<const T*>(nullptr);
     const T* item = &items[h - 1];
     if (item->handle == h) return item;
-    for (const T& candidate : items) {  // not laid out by handle: fall back to a scan
+    for (const T& candidate : items) {  // not laid out by handle (built by hand): fall back to a scan
         if (candidate.handle == h) return &candidate;
     }
     return static_cast<const T*>(nullptr);
 }
 
+// The item of `items` recorded under `name` in `index`.
+template <typename Vec, typename NameOf>
+auto* by_name(const Vec& items, const NameIndex& index, std::string_view name, NameOf name_of) {
+    return by_handle(items, index.find(name, name_of));
+}
+
 template <typename Vec>
-auto* by_name(const Vec& items, std::string_view name) {
-    using T = typename Vec::value_type;
-    for (const T& item : items) {
-        if (item.name == name) return &item;
-    }
-    return static_cast<const T*>(nullptr);
+auto* by_name(const Vec& items, const NameIndex& index, std::string_view name) {
+    return by_name(items, index, name, [&](Handle h) -> std::string_view {
+        const auto* item = by_handle(items, h);
+        return item ? std::string_view(item->name) : std::string_view();
+    });
 }
 
 // CERTI's rules: qualified name, then "<root>.<qualified name>", then the first class with that leaf name.
 template <typename Vec>
-auto* find_class(const Vec& classes, std::string_view name, std::string_view root1, std::string_view root2) {
-    using T = typename Vec::value_type;
-    for (const T& c : classes) {
-        if (c.qualified_name == name) return &c;
-    }
+auto* find_class(const Vec& classes, const NameIndex& qualified, const NameIndex& leaf, std::string_view name,
+                 std::string_view root1, std::string_view root2) {
+    auto qualified_name_of = [&](Handle h) -> std::string_view {
+        const auto* c = by_handle(classes, h);
+        return c ? std::string_view(c->qualified_name) : std::string_view();
+    };
+    if (const auto* c = by_name(classes, qualified, name, qualified_name_of)) return c;
     for (std::string_view root : {root1, root2}) {
         if (name.size() > root.size() + 1 && name.substr(0, root.size()) == root && name[root.size()] == '.') {
-            const std::string_view rest = name.substr(root.size() + 1);
-            for (const T& c : classes) {
-                if (c.qualified_name == rest) return &c;
-            }
+            if (const auto* c = by_name(classes, qualified, name.substr(root.size() + 1), qualified_name_of)) return c;
         }
     }
-    return by_name(classes, name);
+    return by_name(classes, leaf, name);
+}
+
+template <typename Vec>
+void index_names(const Vec& items, NameIndex& index) {
+    index.clear();
+    for (const auto& item : items) {
+        index.add(item.name, item.handle, [&](Handle h) { return std::string_view(by_handle(items, h)->name); });
+    }
+}
+
+template <typename Vec>
+void index_classes(const Vec& classes, NameIndex& qualified, NameIndex& leaf) {
+    index_names(classes, leaf);
+    qualified.clear();
+    for (const auto& c : classes) {
+        qualified.add(c.qualified_name, c.handle,
+                      [&](Handle h) { return std::string_view(by_handle(classes, h)->qualified_name); });
+    }
 }
 
 template <typename Vec>
@@ -63,7 +82,7 @@ bool is_subclass(const Vec& classes, Handle cls, Handle ancestor) {
 
 const Attribute* ObjectClass::attribute(Handle h) const { return by_handle(attributes, h); }
 const Attribute* ObjectClass::attribute(std::string_view attribute_name) const {
-    return by_name(attributes, attribute_name);
+    return by_name(attributes, attribute_names, attribute_name);
 }
 
 const Attribute* ObjectClass::privilege_to_delete() const {
@@ -73,7 +92,12 @@ const Attribute* ObjectClass::privilege_to_delete() const {
 
 const Parameter* InteractionClass::parameter(Handle h) const { return by_handle(parameters, h); }
 const Parameter* InteractionClass::parameter(std::string_view parameter_name) const {
-    return by_name(parameters, parameter_name);
+    return by_name(parameters, parameter_names, parameter_name);
+}
+
+const Dimension* RoutingSpace::dimension(Handle h) const { return by_handle(dimensions, h); }
+const Dimension* RoutingSpace::dimension(std::string_view dimension_name) const {
+    return by_name(dimensions, dimension_names, dimension_name);
 }
 
 const ObjectClass* Fom::object_class(Handle h) const { return by_handle(object_classes, h); }
@@ -81,14 +105,26 @@ const InteractionClass* Fom::interaction_class(Handle h) const { return by_handl
 const RoutingSpace* Fom::space(Handle h) const { return by_handle(spaces, h); }
 
 const ObjectClass* Fom::find_object_class(std::string_view class_name) const {
-    return find_class(object_classes, class_name, "ObjectRoot", "HLAobjectRoot");
+    return find_class(object_classes, object_names, object_leaf_names, class_name, "ObjectRoot", "HLAobjectRoot");
 }
 
 const InteractionClass* Fom::find_interaction_class(std::string_view class_name) const {
-    return find_class(interaction_classes, class_name, "InteractionRoot", "HLAinteractionRoot");
+    return find_class(interaction_classes, interaction_names, interaction_leaf_names, class_name, "InteractionRoot",
+                      "HLAinteractionRoot");
 }
 
-const RoutingSpace* Fom::find_space(std::string_view space_name) const { return by_name(spaces, space_name); }
+const RoutingSpace* Fom::find_space(std::string_view space_name) const {
+    return by_name(spaces, space_names, space_name);
+}
+
+void Fom::reindex() {
+    index_names(spaces, space_names);
+    for (auto& s : spaces) index_names(s.dimensions, s.dimension_names);
+    index_classes(object_classes, object_names, object_leaf_names);
+    for (auto& c : object_classes) index_names(c.attributes, c.attribute_names);
+    index_classes(interaction_classes, interaction_names, interaction_leaf_names);
+    for (auto& c : interaction_classes) index_names(c.parameters, c.parameter_names);
+}
 
 bool Fom::is_object_subclass(Handle cls, Handle ancestor) const {
     return ancestor != 0 && is_subclass(object_classes, cls, ancestor);

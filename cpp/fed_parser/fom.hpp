@@ -2,15 +2,24 @@
 // parameters, routing spaces, each with the handle the whole federation uses.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "fed_parser/name_index.hpp"
+
 namespace hlacore::fom {
 
-using Handle = std::uint32_t;  // 0 never names anything
+// Limits of parse_fed, far above any real FOM, so that a hostile .fed cannot make a gateway allocate
+// without bound: the text's size (256 MiB; FedError at 1:1 beyond it); and, because every subclass holds
+// its ancestors' qualified name and attributes (a Fom could otherwise grow with the square of the text),
+// the classes' qualified names together (kMaxFedBytes too) and their attributes and parameters together,
+// inherited ones counted in every subclass (4 Mi: more than a flat FED of one 64 MiB frame can declare).
+constexpr std::size_t kMaxFedBytes = std::size_t{256} << 20;
+constexpr std::size_t kMaxClassMembers = std::size_t{4} << 20;
 
 // Values match CERTI's handles so getTransportationHandle/getOrderingHandle agree with it.
 enum class Transport : std::uint8_t { Reliable = 1, BestEffort = 2 };
@@ -31,6 +40,7 @@ struct ObjectClass {
     Handle parent = 0;           // 0 for a top-level class
     std::vector<Handle> children;
     std::vector<Attribute> attributes;  // inherited ones first (with the parent's handles), sorted by handle
+    NameIndex attribute_names;          // of `attributes`
 
     const Attribute* attribute(Handle h) const;
     const Attribute* attribute(std::string_view attribute_name) const;
@@ -56,6 +66,7 @@ struct InteractionClass {
     Order order = Order::Receive;
     std::string space;
     std::vector<Parameter> parameters;  // inherited ones first (with the parent's handles), sorted by handle
+    NameIndex parameter_names;          // of `parameters`
 
     const Parameter* parameter(Handle h) const;
     const Parameter* parameter(std::string_view parameter_name) const;
@@ -64,7 +75,11 @@ struct InteractionClass {
 struct RoutingSpace {
     Handle handle = 0;
     std::string name;
-    std::vector<Dimension> dimensions;
+    std::vector<Dimension> dimensions;  // dimensions[h - 1] has handle h
+    NameIndex dimension_names;          // of `dimensions`
+
+    const Dimension* dimension(Handle h) const;
+    const Dimension* dimension(std::string_view dimension_name) const;
 };
 
 struct Fom {
@@ -74,6 +89,13 @@ struct Fom {
     std::vector<RoutingSpace> spaces;                   // spaces[h - 1] has handle h
     std::vector<ObjectClass> object_classes;            // object_classes[h - 1] has handle h
     std::vector<InteractionClass> interaction_classes;  // interaction_classes[h - 1] has handle h
+
+    // The name indexes (the classes' own included) behind every lookup by name. parse_fed keeps them; code
+    // that builds or changes a Fom by hand calls reindex() before looking anything up by name.
+    NameIndex space_names;
+    NameIndex object_names, object_leaf_names;  // qualified names; leaf names (the first declared wins)
+    NameIndex interaction_names, interaction_leaf_names;
+    void reindex();
 
     // nullptr when the handle names nothing.
     const ObjectClass* object_class(Handle h) const;
@@ -109,7 +131,8 @@ private:
 };
 
 // Parses the text of a `.fed` file; `file_name` only appears in error messages and Fom::source_name.
-// Throws FedError on the first error.
+// Throws FedError on the first error, and for a text longer than kMaxFedBytes. Linear in the text's
+// size plus the attributes and parameters the classes inherit.
 Fom parse_fed(std::string_view text, std::string_view file_name);
 
 }  // namespace hlacore::fom

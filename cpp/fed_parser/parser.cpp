@@ -2,7 +2,6 @@
 // handles the way CERTI does.
 #include <string>
 #include <type_traits>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -104,11 +103,14 @@ constexpr int kMaxClassDepth = 256;
 template <class Cls, class Member>
 struct ClassFamily {
     std::vector<Cls>& classes;
+    NameIndex& names;       // by qualified name
+    NameIndex& leaf_names;
     std::vector<Member> Cls::*members;
+    NameIndex Cls::*member_names;
     Kw member;               // Kw::Attribute or Kw::Parameter
     const char* kind;        // "object class", "interaction class"
     const char* owner;       // the class as member messages name it: "class", "interaction class"
-    std::unordered_map<std::string, std::size_t> names{};  // qualified name -> offset of the name
+    std::vector<std::size_t> offsets{};  // offsets[h - 1]: where class h's name is, for duplicate messages
 };
 
 class Parser {
@@ -244,13 +246,19 @@ private:
     void read_delivery(const Open& o, const std::string& what, Declared& out);
     void space_reference(const Token& t, std::string& out);
     std::string qualify(const std::string& parent_qualified, std::string_view name) const;
+    // Adds `added` to the attributes and parameters held, failing at `where` beyond kMaxClassMembers.
+    void count_members(const Token& where, std::size_t added);
 
     Lexer lex_;
     Fom fom_;
-    ClassFamily<ObjectClass, Attribute> objects_{fom_.object_classes, &ObjectClass::attributes, Kw::Attribute,
-                                                 "object class", "class"};
-    ClassFamily<InteractionClass, Parameter> interactions_{fom_.interaction_classes, &InteractionClass::parameters,
-                                                           Kw::Parameter, "interaction class", "interaction class"};
+    ClassFamily<ObjectClass, Attribute> objects_{
+        fom_.object_classes, fom_.object_names, fom_.object_leaf_names, &ObjectClass::attributes,
+        &ObjectClass::attribute_names, Kw::Attribute, "object class", "class"};
+    ClassFamily<InteractionClass, Parameter> interactions_{
+        fom_.interaction_classes, fom_.interaction_names, fom_.interaction_leaf_names, &InteractionClass::parameters,
+        &InteractionClass::parameter_names, Kw::Parameter, "interaction class", "interaction class"};
+    std::size_t class_members_ = 0;    // attributes and parameters so far, inherited ones counted in each class
+    std::size_t qualified_bytes_ = 0;  // the classes' qualified names so far
     bool spaces_done_ = false;
     std::vector<Token> pending_spaces_;  // references made before (spaces ...) was read
 };
@@ -354,18 +362,21 @@ void Parser::parse_space(const Open& o) {
     RoutingSpace space;
     space.handle = static_cast<Handle>(fom_.spaces.size() + 1);
     space.name = std::string(name);
+    auto dimension_name_of = [&](Handle h) { return std::string_view(space.dimensions[h - 1].name); };
     entries_of(Kw::Dimension, o, [&](const Open& d) {
         Token dim_token;
         const std::string_view dim = read_value(d, "dimension name", true, &dim_token);
-        for (const Dimension& existing : space.dimensions) {
-            if (existing.name == dim) {
-                fail(dim_token, "duplicate dimension '" + quote_for_message(dim) + "' in space '" + space.name + "'");
-            }
+        if (space.dimension_names.find(dim, dimension_name_of) != 0) {
+            fail(dim_token, "duplicate dimension '" + quote_for_message(dim) + "' in space '" + space.name + "'");
         }
-        space.dimensions.push_back(Dimension{static_cast<Handle>(space.dimensions.size() + 1), std::string(dim)});
+        const auto h = static_cast<Handle>(space.dimensions.size() + 1);
+        space.dimensions.push_back(Dimension{h, std::string(dim)});
+        space.dimension_names.add(space.dimensions.back().name, h, dimension_name_of);
         expect_close(d);
     });
     fom_.spaces.push_back(std::move(space));
+    fom_.space_names.add(fom_.spaces.back().name, fom_.spaces.back().handle,
+                         [&](Handle h) { return std::string_view(fom_.spaces[h - 1].name); });
 }
 
 void Parser::space_reference(const Token& t, std::string& out) {
@@ -405,11 +416,19 @@ void Parser::parse_class(ClassFamily<Cls, Member>& family, const Open& o, Handle
     Cls cls;
     cls.name = std::string(name);
     cls.qualified_name = qualify(parent ? family.classes[parent - 1].qualified_name : std::string(), name);
-    const auto [it, inserted] = family.names.emplace(cls.qualified_name, name_token.offset);
-    if (!inserted) {
+    auto qualified_name_of = [&](Handle h) { return std::string_view(family.classes[h - 1].qualified_name); };
+    if (const Handle first = family.names.find(cls.qualified_name, qualified_name_of)) {
         fail(name_token, "duplicate " + std::string(family.kind) + " '" + quote_for_message(cls.qualified_name) +
-                             "' (first declared at " + at(it->second) + ")");
+                             "' (first declared at " + at(family.offsets[first - 1]) + ")");
     }
+    // Subclasses repeat their ancestors' names and members: bound what a small text can make us hold
+    // (kMaxFedBytes of qualified names, kMaxClassMembers).
+    qualified_bytes_ += cls.qualified_name.size();
+    if (qualified_bytes_ > kMaxFedBytes) {
+        fail(name_token, "too many nested classes: their qualified names exceed " + std::to_string(kMaxFedBytes) +
+                             " bytes together");
+    }
+    if (parent) count_members(name_token, (family.classes[parent - 1].*family.members).size());
     // An interaction class declares its own delivery; an object class's attributes each do.
     if constexpr (std::is_same_v<Cls, InteractionClass>) {
         read_delivery(o, "interaction class '" + cls.qualified_name + "'", cls);
@@ -419,9 +438,14 @@ void Parser::parse_class(ClassFamily<Cls, Member>& family, const Open& o, Handle
     cls.parent = parent;
     if (parent) {
         cls.*family.members = family.classes[parent - 1].*family.members;
+        cls.*family.member_names = family.classes[parent - 1].*family.member_names;
         family.classes[parent - 1].children.push_back(h);
     }
     family.classes.push_back(std::move(cls));
+    family.offsets.push_back(name_token.offset);
+    family.names.add(family.classes[h - 1].qualified_name, h, qualified_name_of);
+    family.leaf_names.add(family.classes[h - 1].name, h,
+                          [&](Handle k) { return std::string_view(family.classes[k - 1].name); });
 
     const std::string member(name_of(family.member));
     const std::string where = " in " + std::string(family.kind) + " '" + family.classes[h - 1].qualified_name +
@@ -453,8 +477,10 @@ void Parser::parse_member(ClassFamily<Cls, Member>& family, const Open& o, Handl
     Token name_token;
     const std::string_view name = read_value(o, what + " name", true, &name_token);
     const Cls& c = family.classes[cls - 1];
-    for (const Member& m : c.*family.members) {
-        if (m.name != name) continue;
+    const auto& existing = c.*family.members;
+    auto member_name_of = [&](Handle h) { return std::string_view(existing[h - 1].name); };
+    if (const Handle clash = (c.*family.member_names).find(name, member_name_of)) {
+        const Member& m = existing[clash - 1];
         std::string msg = "duplicate " + what + " '" + quote_for_message(name) + "' in " + family.owner + " '" +
                           c.qualified_name + "'";
         // Name the class the clashing member comes from when it is inherited (members keep their handles).
@@ -467,6 +493,8 @@ void Parser::parse_member(ClassFamily<Cls, Member>& family, const Open& o, Handl
         fail(name_token, msg);
     }
 
+    count_members(name_token, 1);
+
     Member member;
     member.name = std::string(name);
     if constexpr (std::is_same_v<Member, Attribute>) read_delivery(o, "attribute '" + member.name + "'", member);
@@ -474,10 +502,26 @@ void Parser::parse_member(ClassFamily<Cls, Member>& family, const Open& o, Handl
     auto& members = family.classes[cls - 1].*family.members;
     member.handle = static_cast<Handle>(members.size() + 1);
     members.push_back(std::move(member));
+    (family.classes[cls - 1].*family.member_names).add(members.back().name, members.back().handle, member_name_of);
+}
+
+void Parser::count_members(const Token& where, std::size_t added) {
+    class_members_ += added;
+    if (class_members_ > kMaxClassMembers) {
+        fail(where, "too many attributes and parameters: more than " + std::to_string(kMaxClassMembers) +
+                        ", counting the inherited ones in each subclass");
+    }
 }
 
 }  // namespace
 
-Fom parse_fed(std::string_view text, std::string_view file_name) { return Parser(text, file_name).run(); }
+Fom parse_fed(std::string_view text, std::string_view file_name) {
+    if (text.size() > kMaxFedBytes) {
+        throw FedError(std::string(file_name), 1, 1,
+                       "the FED is " + std::to_string(text.size()) + " bytes, more than the limit of " +
+                           std::to_string(kMaxFedBytes) + " (" + std::to_string(kMaxFedBytes >> 20) + " MiB)");
+    }
+    return Parser(text, file_name).run();
+}
 
 }  // namespace hlacore::fom

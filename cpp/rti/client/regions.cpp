@@ -49,9 +49,8 @@ wire::Handles Client::region_bounds(fom::Handle space, const Extent& extent) con
     }
     std::set<fom::Handle> given;
     for (const auto& range : extent) {
-        auto dim = std::find_if(s->dimensions.begin(), s->dimensions.end(),
-                                [&](const fom::Dimension& d) { return d.handle == range.dimension; });
-        if (dim == s->dimensions.end())
+        const auto* dim = s->dimension(range.dimension);
+        if (!dim)
             raise(ErrorCode::DimensionNotDefined, "dimension handle " + std::to_string(range.dimension) +
                                                       " is not defined in routing space '" + s->name + "'");
         if (!given.insert(range.dimension).second)
@@ -60,7 +59,7 @@ wire::Handles Client::region_bounds(fom::Handle space, const Extent& extent) con
             raise(ErrorCode::InvalidExtents, "range [" + std::to_string(range.lower) + ", " +
                                                  std::to_string(range.upper) + "] of dimension '" + dim->name +
                                                  "' is not within [MIN_EXTENT, MAX_EXTENT] with lower <= upper");
-        const auto i = 2 * static_cast<std::size_t>(dim - s->dimensions.begin());
+        const auto i = 2 * static_cast<std::size_t>(dim - s->dimensions.data());
         bounds[i] = static_cast<std::uint32_t>(range.lower);
         bounds[i + 1] = static_cast<std::uint32_t>(range.upper);
     }

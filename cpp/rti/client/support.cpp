@@ -105,8 +105,7 @@ fom::Handle Client::dimension_handle(const std::string& name, fom::Handle space)
     require_joined();
     const auto* s = fom_->space(space);
     if (!s) raise(ErrorCode::SpaceNotDefined, "routing space handle " + std::to_string(space) + " is not defined");
-    for (const auto& d : s->dimensions)
-        if (d.name == name) return d.handle;
+    if (const auto* d = s->dimension(name)) return d->handle;
     raise(ErrorCode::NameNotFound, "routing space '" + s->name + "' has no dimension named '" + name + "'");
 }
 
@@ -115,8 +114,7 @@ std::string Client::dimension_name(fom::Handle dimension, fom::Handle space) con
     require_joined();
     const auto* s = fom_->space(space);
     if (!s) raise(ErrorCode::SpaceNotDefined, "routing space handle " + std::to_string(space) + " is not defined");
-    for (const auto& d : s->dimensions)
-        if (d.handle == dimension) return d.name;
+    if (const auto* d = s->dimension(dimension)) return d->name;
     raise(ErrorCode::DimensionNotDefined, "dimension handle " + std::to_string(dimension) + " is not defined in '" +
                                               s->name + "'");
 }

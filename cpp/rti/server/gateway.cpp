@@ -1,12 +1,12 @@
 #include "rti/server/gateway.hpp"
 #include "rti/server/status.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <deque>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -138,13 +138,19 @@ std::string describe_peer(const sockaddr_storage& addr) {
     return std::string(host) + ":" + std::to_string(port);
 }
 
-bool read_file(const std::string& path, std::string& text) {
+// Reads at most `limit` bytes: parse_fed refuses a longer text anyway, and one byte more is enough for it
+// to say so.
+bool read_file(const std::string& path, std::string& text, std::size_t limit) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return false;
-    std::ostringstream s;
-    s << in.rdbuf();
-    text = s.str();
-    return true;
+    text.clear();
+    char buf[1 << 16];
+    while (text.size() < limit) {
+        in.read(buf, static_cast<std::streamsize>(std::min(sizeof buf, limit - text.size())));
+        text.append(buf, static_cast<std::size_t>(in.gcount()));
+        if (!in) break;
+    }
+    return !in.bad();
 }
 
 }  // namespace
@@ -413,7 +419,7 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
         std::string source = m.fed_name;
         if (text.empty()) {
             source = find_fed_file(m.fed_name);
-            if (source.empty() || !read_file(source, text))
+            if (source.empty() || !read_file(source, text, fom::kMaxFedBytes + 1))
                 throw RtiError(ErrorCode::CouldNotOpenFED, "FED file '" + m.fed_name +
                                                                "' was not found by the client nor in the gateway's "
                                                                "--fom-path");

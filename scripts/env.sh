@@ -46,3 +46,18 @@ cmake_build() {
         return 1
     fi
 }
+
+# Installs Debian's PACKAGES when a command is missing, saying first what and WHY; as root or through
+# passwordless sudo; apt-get update only when the install fails without it. The log is build/apt.log.
+debian_install() {
+    local why=$1 sudo=()
+    shift
+    [ "$(id -u)" -eq 0 ] || sudo=(sudo -n)
+    echo "installing $* from Debian's packages: $why" >&2
+    mkdir -p build
+    local apt=(${sudo[@]+"${sudo[@]}"} env DEBIAN_FRONTEND=noninteractive apt-get -y -q)
+    "${apt[@]}" install --no-install-recommends "$@" </dev/null >build/apt.log 2>&1 \
+        || { "${apt[@]}" update </dev/null >>build/apt.log 2>&1 \
+             && "${apt[@]}" install --no-install-recommends "$@" </dev/null >>build/apt.log 2>&1; } \
+        || { tail -n 30 build/apt.log >&2; return 1; }
+}

@@ -8,7 +8,7 @@ import os
 import pathlib
 import re
 import time
-from typing import Any, Callable, Iterator, Optional
+from typing import Any, Callable, Iterator, Optional, Sequence
 
 import pytest
 
@@ -44,9 +44,10 @@ def rtig_executable() -> str:
 class RtigProcess(Rtig):
     """The rtig under test on port 0, its log in the test's tmp_path."""
 
-    def __init__(self, tmp_path: pathlib.Path, *args: str, executable: Optional[str] = None) -> None:
+    def __init__(self, tmp_path: pathlib.Path, *args: str, executable: Optional[str] = None,
+                 prefix: Sequence[str] = ()) -> None:
         log_path = tmp_path / f"rtig-{len(list(tmp_path.glob('rtig-*.log')))}.log"
-        super().__init__(*args, executable=executable or rtig_executable(), log_path=log_path)
+        super().__init__(*args, executable=executable or rtig_executable(), log_path=log_path, prefix=prefix)
 
 
 @contextlib.contextmanager

@@ -159,13 +159,13 @@ class RawClient:
             self.buffer += chunk
 
     def handshake(self) -> tuple[int, bytes, int]:
-        """Hello, then the Welcome: returns (version, server name, frame limit)."""
+        """Hello, then the Welcome (with no challenge): returns (version, server name, frame limit)."""
         self.send(hello())
         code, payload = self.recv_frame()
         assert code == T["Welcome"]
         c = Cursor(payload)
-        version, server, max_frame = c.take("<H"), c.string(), c.take("<I")
-        assert c.pos == len(payload)
+        version, server, max_frame, challenge = c.take("<H"), c.string(), c.take("<I"), c.string()
+        assert c.pos == len(payload) and challenge == b"" 
         return version, server, max_frame
 
     def call(self, message: str, payload_after_request: bytes) -> Reply:
@@ -472,7 +472,7 @@ def test_a_connection_that_never_says_hello_times_out(tmp_path: pathlib.Path) ->
         (hello(magic=0xDEADBEEF), "expected a Hello handshake, got Hello"),
         (hello(version=99), f"protocol version 99 is not supported (gateway speaks {VERSION})"),
         (frame("JoinFederation", u32(1) + string("sneaky") + string("TestFed")), "expected a Hello handshake, got JoinFederation"),
-        (frame("Welcome", u16(1) + string("me") + u32(64)), "expected a Hello handshake, got Welcome"),
+        (frame("Welcome", u16(1) + string("me") + u32(64) + string("")), "expected a Hello handshake, got Welcome"),
         (frame("Hello", u32(MAGIC) + u16(VERSION) + b"extra"), "trailing bytes in Hello message"),
         (frame("Hello", u32(MAGIC)), "truncated field in Hello message"),
         (frame(0x7777, b""), "unknown message type 30583"),

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "bindings/convert.hpp"
+#include "rti/auth.hpp"
 #include "rti/server/gateway.hpp"
 #include "rti/server/time_manager.hpp"
 #include "rti/wire/callbacks.hpp"
@@ -20,8 +21,9 @@ class BackgroundGateway {
 public:
     BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose,
                       const std::string& save_dir, std::string trace_path, std::size_t client_budget,
-                      double stall_timeout, std::uint32_t max_frame) {
+                      double stall_timeout, std::uint32_t max_frame, const std::string& secret_file) {
         GatewayOptions options;
+        if (!secret_file.empty()) options.secret = auth::read_secret_file(secret_file);  // RuntimeError, saying why
         options.max_frame_bytes = max_frame;
         options.client_budget = client_budget;
         options.stall_timeout_s = stall_timeout;
@@ -64,10 +66,19 @@ public:
     }
 };
 
-std::unique_ptr<Client> connect(const std::string& host, std::uint16_t port, double timeout) {
+std::unique_ptr<Client> connect(const std::string& host, std::uint16_t port, double timeout,
+                                const std::string& secret_file) {
     static PythonWaitHost wait_host;
+    ClientOptions options{timeout, &wait_host, ""};
+    if (!secret_file.empty()) {
+        try {
+            options.secret = auth::read_secret_file(secret_file);
+        } catch (const std::exception& e) {
+            throw RtiError(ErrorCode::AuthenticationFailed, e.what());
+        }
+    }
     py::gil_scoped_release release;
-    return std::make_unique<Client>(host, port, ClientOptions{timeout, &wait_host});
+    return std::make_unique<Client>(host, port, options);
 }
 
 }  // namespace
@@ -108,11 +119,11 @@ PYBIND11_MODULE(_core, m) {
 
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
-                      std::string, std::size_t, double, std::uint32_t>(),
+                      std::string, std::size_t, double, std::uint32_t, const std::string&>(),
              py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
              py::arg("trace_path") = "", py::arg("client_budget") = hlacore::GatewayOptions{}.client_budget,
              py::arg("stall_timeout") = hlacore::GatewayOptions{}.stall_timeout_s,
-             py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes,
+             py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes, py::arg("secret_file") = "",
              py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)
@@ -121,7 +132,8 @@ PYBIND11_MODULE(_core, m) {
 
     Ambassador rtia(m, "RTIAmbassadorBase");
     rtia
-        .def(py::init(&connect), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s)
+        .def(py::init(&connect), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s,
+             py::arg("secret_file") = "")
         .def_property_readonly("address", &Client::address)
         .def("fileno", &Client::fileno);
     bind_federation(rtia);

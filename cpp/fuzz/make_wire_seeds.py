@@ -36,9 +36,13 @@ def frame(name, payload=b""):
 FED = (ROOT / "tests" / "data" / "robot.fed").read_text()
 MESSAGES = {
     "Hello": u32(0x484C4143) + u16(VERSION),
-    "Welcome": u16(VERSION) + s("hlacore rtig") + u32(64 << 20),
+    "Welcome": u16(VERSION) + s("hlacore rtig") + u32(64 << 20) + s(""),
+    "Welcome-challenge": u16(VERSION) + s("hlacore rtig") + u32(64 << 20) + s(bytes(range(32))),
     "Ping": u32(1),
     "Pong": u32(1),
+    "Authenticate": s(bytes(32)),
+    "Authenticated": b(True) + s(""),
+    "Authenticated-refused": b(False) + s("the gateway refused the secret"),
     "CreateFederation": u32(1) + s("TestFed") + s("robot.fed") + s(FED),
     "CreateFederation-by-name": u32(1) + s("TestFed") + s("robot.fed") + s(""),
     "DestroyFederation": u32(2) + s("TestFed"),

@@ -89,7 +89,8 @@
     X(ValueCountExceeded)                       \
     X(ValueLengthExceeded)                      \
     /* hlacore's own, each a subclass of RTIinternalError in Python (PyHLA code catching that still works) */ \
-    X(GatewayNotResponding)
+    X(GatewayNotResponding)                     \
+    X(AuthenticationFailed)
 
 namespace hlacore {
 

@@ -6,6 +6,7 @@
 #include <exception>
 #include <string>
 
+#include "rti/auth.hpp"
 #include "rti/client/client.hpp"
 #include "rti/server/gateway.hpp"
 
@@ -20,8 +21,9 @@ void on_signal(int) {
 int usage(int status) {
     std::fprintf(status ? stderr : stdout,
                  "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--client-budget B]\n"
-                 "            [--stall-timeout S] [--max-frame B] [--save-dir DIR] [--trace FILE] [--verbose]\n"
-                 "       rtig --status [HOST:PORT]\n"
+                 "            [--stall-timeout S] [--max-frame B] [--secret-file FILE | --no-secret] [--save-dir DIR]\n"
+                 "            [--trace FILE] [--verbose]\n"
+                 "       rtig [--secret-file FILE] --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
                  "  --fom-path DIR     where to look for FED files a federate could not read itself\n"
@@ -34,6 +36,11 @@ int usage(int status) {
                  "  --max-frame B      the largest message in bytes, both directions (default 67108864, 65536 to\n"
                  "                     1073741824): clients learn it when they connect and refuse larger values\n"
                  "                     at the call (ValueLengthExceeded)\n"
+                 "  --secret-file FILE clients must prove they know the secret in FILE (readable by its owner only)\n"
+                 "                     before anything else; required when HOST is not a loopback address\n"
+                 "                     (docs/networking.md); with --status: the secret to show\n"
+                 "  --no-secret        listen beyond loopback without a secret: anyone who reaches the port may\n"
+                 "                     read, join, and destroy federations\n"
                  "  --save-dir DIR     write federation saves to DIR (created if missing) and restore from\n"
                  "                     there, also after a restart; without it saves live in memory only\n"
                  "  --trace FILE       write when each update/interaction arrived and each reflection of it left,\n"
@@ -45,8 +52,12 @@ int usage(int status) {
     return status;
 }
 
+bool is_loopback(const std::string& host) {
+    return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
+}
+
 // Connects to a running gateway and prints its status report.
-int print_status(const std::string& address) {
+int print_status(const std::string& address, const std::string& secret) {
     const auto colon = address.rfind(':');
     const std::string host = colon == std::string::npos ? address : address.substr(0, colon);
     const std::string port_text = colon == std::string::npos ? "60400" : address.substr(colon + 1);
@@ -57,7 +68,9 @@ int print_status(const std::string& address) {
         return 2;
     }
     try {
-        hlacore::Client client(host.empty() ? "127.0.0.1" : host, static_cast<std::uint16_t>(port));
+        hlacore::ClientOptions client_options;
+        client_options.secret = secret;
+        hlacore::Client client(host.empty() ? "127.0.0.1" : host, static_cast<std::uint16_t>(port), client_options);
         std::printf("%s\n", client.query_status().c_str());
         return 0;
     } catch (const std::exception& e) {
@@ -70,6 +83,7 @@ int print_status(const std::string& address) {
 
 int main(int argc, char** argv) {
     hlacore::GatewayOptions options;
+    bool no_secret = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&](const char* name) -> const char* {
@@ -116,6 +130,16 @@ int main(int argc, char** argv) {
                 return usage(2);
             }
             options.max_frame_bytes = static_cast<std::uint32_t>(v);
+        } else if (arg == "--secret-file") {
+            const char* path = value("--secret-file");
+            try {
+                options.secret = hlacore::auth::read_secret_file(path);
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "rtig: %s\n", e.what());
+                return 2;
+            }
+        } else if (arg == "--no-secret") {
+            no_secret = true;
         } else if (arg == "--save-dir") {
             options.save_dir = value("--save-dir");
             if (options.save_dir.empty()) {
@@ -131,13 +155,20 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "rtig: --status takes at most one HOST:PORT\n");
                 return usage(2);
             }
-            return print_status(i + 1 < argc ? argv[i + 1] : "127.0.0.1:60400");
+            return print_status(i + 1 < argc ? argv[i + 1] : "127.0.0.1:60400", options.secret);
         } else if (arg == "--help" || arg == "-h") {
             return usage(0);
         } else {
             std::fprintf(stderr, "rtig: unknown argument '%s'\n", arg.c_str());
             return usage(2);
         }
+    }
+    if (options.secret.empty() && !no_secret && !is_loopback(options.host)) {
+        std::fprintf(stderr,
+                     "rtig: listening on %s, beyond this machine, needs --secret-file FILE (docs/networking.md), or\n"
+                     "      --no-secret to let in anyone who reaches the port\n",
+                     options.host.c_str());
+        return 2;
     }
     try {
         hlacore::Gateway gateway(options);

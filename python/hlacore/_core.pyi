@@ -5,7 +5,7 @@ hlacore native core: gateway, client connection, FED parser
 from __future__ import annotations
 import collections.abc
 import typing
-__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'BackgroundGateway', 'CALLBACKS', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'MAX_EXTENT', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'parse_fed']
+__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'MAX_EXTENT', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'parse_fed']
 class RTIexception(Exception):
     """
     Base of every HLA 1.3 exception raised by hlacore.
@@ -330,6 +330,10 @@ class GatewayNotResponding(RTIinternalError):
     """
     hlacore's exception GatewayNotResponding, a kind of RTIinternalError.
     """
+class AuthenticationFailed(RTIinternalError):
+    """
+    hlacore's exception AuthenticationFailed, a kind of RTIinternalError.
+    """
 class ObjectClassHandle:
     """
     An HLA ObjectClassHandle; obtained from the RTI, never constructed.
@@ -611,7 +615,7 @@ class EventRetractionHandle:
     def serial(self) -> int:
         ...
 class BackgroundGateway:
-    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, fom_path: collections.abc.Sequence[str], verbose: bool, save_dir: str = '', trace_path: str = '', client_budget: typing.SupportsInt | typing.SupportsIndex = 67108864, stall_timeout: typing.SupportsFloat | typing.SupportsIndex = 30.0, max_frame: typing.SupportsInt | typing.SupportsIndex = 67108864) -> None:
+    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, fom_path: collections.abc.Sequence[str], verbose: bool, save_dir: str = '', trace_path: str = '', client_budget: typing.SupportsInt | typing.SupportsIndex = 67108864, stall_timeout: typing.SupportsFloat | typing.SupportsIndex = 30.0, max_frame: typing.SupportsInt | typing.SupportsIndex = 67108864, secret_file: str = '') -> None:
         ...
     def stop(self) -> None:
         ...
@@ -625,7 +629,7 @@ class BackgroundGateway:
     def running(self) -> bool:
         ...
 class RTIAmbassadorBase:
-    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0) -> None:
+    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, secret_file: str = '') -> None:
         ...
     def _create(self, arg0: str, arg1: str, arg2: str) -> None:
         ...

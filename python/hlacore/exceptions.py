@@ -5,7 +5,7 @@ same classes are reachable as ``hlacore.rti.<Name>``. The list is declared once 
 (``HLACORE_EXCEPTIONS`` in ``cpp/rti/exceptions.hpp``, where the position is the wire code); this module
 names the classes statically so that type checkers and readers see them (tests/test_exceptions.py checks
 that it matches the C++ list exactly). ``ErrorReadingFED`` carries ``file``, ``line`` and ``column`` of a
-``.fed`` error. hlacore's own exceptions (``GatewayNotResponding``) are subclasses of
+``.fed`` error. hlacore's own exceptions (``GatewayNotResponding``, ``AuthenticationFailed``) are subclasses of
 :class:`RTIinternalError`, so code written for PyHLA that catches that still catches them.
 """
 
@@ -96,6 +96,7 @@ ValueCountExceeded = _core.ValueCountExceeded
 ValueLengthExceeded = _core.ValueLengthExceeded
 # hlacore's own, each a subclass of RTIinternalError
 GatewayNotResponding = _core.GatewayNotResponding
+AuthenticationFailed = _core.AuthenticationFailed
 
 __all__ = [
     "RTIexception",
@@ -179,4 +180,5 @@ __all__ = [
     "ValueCountExceeded",
     "ValueLengthExceeded",
     "GatewayNotResponding",
+    "AuthenticationFailed",
 ]

@@ -29,7 +29,8 @@ class Gateway:
     messages time management keeps for it) above which the clients sending to it are no longer read until
     it has taken half of them, and how long such a client may take nothing before it is dropped (0: never).
     ``max_frame`` is ``rtig --max-frame``: the largest message in bytes; clients learn it when they connect
-    and raise ``ValueLengthExceeded`` at a call whose values would not fit.
+    and raise ``ValueLengthExceeded`` at a call whose values would not fit. ``secret_file`` is ``rtig
+    --secret-file``: clients prove they know the secret in it before anything else (docs/networking.md).
     """
 
     MIN_CLIENT_BUDGET = 65536
@@ -46,6 +47,7 @@ class Gateway:
         client_budget: int = 64 << 20,
         stall_timeout: float = 30.0,
         max_frame: int = 64 << 20,
+        secret_file: Optional[str | os.PathLike[str]] = None,
     ) -> None:
         if client_budget < self.MIN_CLIENT_BUDGET:
             raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
@@ -57,7 +59,8 @@ class Gateway:
         self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose,
                                                 os.fspath(save_dir) if save_dir is not None else "",
                                                 os.fspath(trace) if trace is not None else "",
-                                                client_budget, stall_timeout, max_frame)
+                                                client_budget, stall_timeout, max_frame,
+                                                os.fspath(secret_file) if secret_file is not None else "")
 
     @property
     def host(self) -> str:

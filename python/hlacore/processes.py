@@ -122,10 +122,12 @@ class Child:
         return f"pid {self.proc.pid} ({' '.join(map(str, self.proc.args))[:200]})"  # type: ignore[arg-type]
 
 
-def python_peer(script: os.PathLike[str] | str, *args: object, env: Optional[dict[str, str]] = None) -> Child:
-    """The Python script `script` under this interpreter, unbuffered, with `env` added to the environment."""
+def python_peer(script: os.PathLike[str] | str, *args: object, env: Optional[dict[str, str]] = None,
+                prefix: Sequence[str] = ()) -> Child:
+    """The Python script `script` under this interpreter, unbuffered, with `env` added to the environment;
+    `prefix` as for :class:`Rtig`."""
     full_env = dict(os.environ, PYTHONUNBUFFERED="1", **(env or {}))
-    return Child([sys.executable, str(script), *map(str, args)], env=full_env)
+    return Child([*prefix, sys.executable, str(script), *map(str, args)], env=full_env)
 
 
 def rtig_beside_python() -> str:
@@ -141,11 +143,12 @@ def rtig_beside_python() -> str:
 
 class Rtig:
     """``rtig --port 0`` with extra arguments, stopped by SIGTERM to its pid; its log (stderr) goes to
-    `log_path` or a temporary file. As a context manager it raises when rtig exits with a failure."""
+    `log_path` or a temporary file. As a context manager it raises when rtig exits with a failure.
+    `prefix` runs it through another command that executes it in place (``ip netns exec NAMESPACE``)."""
 
     def __init__(self, *args: str, executable: Optional[str] = None,
-                 log_path: Optional[pathlib.Path] = None) -> None:
-        self.child = Child([executable or rtig_beside_python(), "--port", "0", *args], stderr_path=log_path)
+                 log_path: Optional[pathlib.Path] = None, prefix: Sequence[str] = ()) -> None:
+        self.child = Child([*prefix, executable or rtig_beside_python(), "--port", "0", *args], stderr_path=log_path)
         self.log_path = log_path
         try:
             line = self.child.read_line(timeout=10.0)

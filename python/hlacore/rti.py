@@ -163,11 +163,18 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     after half of it while this federate waits) raises :class:`GatewayNotResponding` and closes the
     connection. Every blocking call releases the GIL and Ctrl-C interrupts it with KeyboardInterrupt; a call
     interrupted while its reply was owed closes the connection (the gateway resigns the federate).
+
+    ``secret_file`` (else ``$HLACORE_SECRET_FILE``) names the file with the secret a gateway may ask for
+    (``rtig --secret-file``): it is proven by challenge-response, never sent; a gateway that asks when none
+    is given, or refuses it, raises :class:`AuthenticationFailed` (docs/networking.md).
     """
 
-    def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None) -> None:
+    def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None,
+                 secret_file: Optional[str | os.PathLike[str]] = None) -> None:
         host, port = _resolve_address(address)
-        super().__init__(host, port, _resolve_timeout(timeout))
+        if secret_file is None:
+            secret_file = os.environ.get("HLACORE_SECRET_FILE") or None
+        super().__init__(host, port, _resolve_timeout(timeout), os.fspath(secret_file) if secret_file else "")
         self._federate_ambassador: Any = None
 
     # ---- federation management ----

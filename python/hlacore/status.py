@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import shutil
 import sys
 import time
@@ -28,7 +29,8 @@ def status(address: Optional[str] = None) -> dict[str, Any]:
     "asynchronous_delivery", "pending": None | {"request": "TAR"|"TARA"|"NER"|"NERA"|"FQR", "time"},
     "queued_tso", "queued_ro", "regions", "lbts", "output_bound"}]}]}`` ("regions": how many the federate
     has, docs/ddm.md). On the wire infinite times are null; here
-    they are ``math.inf`` (``output_bound`` is inf for a federate that is not regulating).
+    they are ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A gateway with a
+    secret asks for it here too: ``$HLACORE_SECRET_FILE``.
     """
     report: dict[str, Any] = json.loads(_raw_status(address))
     for federation in report["federations"]:
@@ -41,7 +43,7 @@ def status(address: Optional[str] = None) -> dict[str, Any]:
 
 def _raw_status(address: Optional[str]) -> str:
     host, port = _resolve_address(address)
-    return str(_core.RTIAmbassadorBase(host, port)._status())
+    return str(_core.RTIAmbassadorBase(host, port, secret_file=os.environ.get("HLACORE_SECRET_FILE", ""))._status())
 
 
 def format_table(report: dict[str, Any], width: int = 80) -> str:

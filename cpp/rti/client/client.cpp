@@ -1,5 +1,7 @@
 #include "rti/client/client.hpp"
 
+#include "rti/auth.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -103,23 +105,48 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
         setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
         last_heard_ = Clock::now();
         send(wire::Hello{});
-        for (;;) {
-            const auto status = pump(deadline, [this] { return welcomed_; });
-            if (welcomed_) break;
-            if (status == WaitStatus::Interrupted) {
-                if (options_.wait_host) options_.wait_host->interrupted();
-                continue;
-            }
-            if (closed_) raise(closed_code_, "no hlacore handshake from " + address_ + ": " + closed_reason_);
-            if (status == WaitStatus::Timeout)
-                raise(ErrorCode::GatewayNotResponding, "no hlacore handshake from " + address_ + " within " +
-                                                           seconds(timeout_) + ": the gateway is not responding");
-        }
+        await_handshake(deadline, [this] { return welcomed_; }, "no hlacore handshake");
+        if (!challenge_.empty()) authenticate(deadline);
     } catch (...) {
         if (fd_ >= 0) ::close(fd_);
         fd_ = -1;
         throw;
     }
+}
+
+template <class Pred>
+void Client::await_handshake(Clock::time_point deadline, Pred done, const char* what) {
+    for (;;) {
+        const auto status = pump(deadline, done);
+        std::unique_lock<std::mutex> lock(mu_);
+        if (done()) return;
+        if (closed_) raise(closed_code_, std::string(what) + " from " + address_ + ": " + closed_reason_);
+        lock.unlock();
+        if (status == WaitStatus::Interrupted) {
+            if (options_.wait_host) options_.wait_host->interrupted();
+            continue;
+        }
+        if (status == WaitStatus::Timeout)
+            raise(ErrorCode::GatewayNotResponding, std::string(what) + " from " + address_ + " within " +
+                                                       seconds(timeout_) + ": the gateway is not responding");
+    }
+}
+
+void Client::authenticate(Clock::time_point deadline) {
+    if (options_.secret.empty())
+        raise(ErrorCode::AuthenticationFailed,
+              "the gateway at " + address_ + " asks for a secret and none was given (RTIAmbassador(secret_file=...), "
+              "$HLACORE_SECRET_FILE; docs/networking.md)");
+    send(wire::Authenticate{auth::proof(options_.secret, challenge_)});
+    try {
+        await_handshake(deadline, [this] { return authenticated_.has_value(); }, "no answer to the authentication");
+    } catch (const RtiError& e) {
+        if (e.code() == ErrorCode::GatewayNotResponding) throw;
+        raise(ErrorCode::AuthenticationFailed, std::string("authentication with ") + address_ + " failed: " + e.what());
+    }
+    if (!authenticated_->accepted)
+        raise(ErrorCode::AuthenticationFailed, "the gateway at " + address_ + " refused this client: " +
+                                                   authenticated_->reason + " (docs/networking.md)");
 }
 
 Client::~Client() {
@@ -416,6 +443,11 @@ void Client::file(std::vector<wire::Message>& got) {
         if (auto* w = std::get_if<wire::Welcome>(&m)) {
             welcomed_ = true;
             max_frame_bytes_ = w->max_frame_bytes;
+            challenge_ = std::move(w->challenge);
+            continue;
+        }
+        if (auto* a = std::get_if<wire::Authenticated>(&m)) {
+            authenticated_ = std::move(*a);
             continue;
         }
         if (std::holds_alternative<wire::Pong>(m)) continue;  // what it says is that bytes came: last_heard_

@@ -47,6 +47,8 @@ struct ClientOptions {
     // while the client waits is pinged.
     double timeout_s = 5.0;
     WaitHost* wait_host = nullptr;  // not owned; must outlive the client
+    // Proven to a gateway that asks (its Welcome carries a challenge; rti/auth.hpp); never sent.
+    std::string secret;
 };
 
 class Client {
@@ -54,8 +56,9 @@ public:
     using Clock = std::chrono::steady_clock;
     enum class WaitStatus { Ready, Timeout, Interrupted };
 
-    // Connects and performs the version handshake; throws RtiError naming the address: RTIinternalError
-    // when nothing listens there, GatewayNotResponding when it does not answer within the timeout.
+    // Connects and performs the version handshake (and the authentication, when the gateway asks for it);
+    // throws RtiError naming the address: RTIinternalError when nothing listens there, GatewayNotResponding
+    // when it does not answer within the timeout, AuthenticationFailed without the right secret.
     Client(const std::string& host, std::uint16_t port, ClientOptions options = {});
     ~Client();
     Client(const Client&) = delete;
@@ -315,6 +318,10 @@ private:
     void close_connection(ErrorCode code, const std::string& reason);
     // A signal interrupted a wait: the host may abandon it, then the connection is closed when `owed`.
     void on_interrupt(const char* owed);
+    // Waits until `done()` (under mu_) for the handshake, raising GatewayNotResponding at `deadline`.
+    template <class Pred>
+    void await_handshake(Clock::time_point deadline, Pred done, const char* what);
+    void authenticate(Clock::time_point deadline);
 
     // The checks behind the services; callers hold mu_.
     void require_joined() const;
@@ -388,6 +395,8 @@ private:
     bool closed_ = false;
     ErrorCode closed_code_ = ErrorCode::RTIinternalError;
     std::string closed_reason_;
+    std::string challenge_;                           // from the Welcome
+    std::optional<wire::Authenticated> authenticated_;  // the gateway's answer to Authenticate
     // The gateway's frame limit, from its Welcome (both directions).
     std::atomic<std::uint32_t> max_frame_bytes_{wire::kMaxFrameBytes};
     // Touched only by the thread that is reading.

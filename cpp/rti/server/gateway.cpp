@@ -1,4 +1,5 @@
 #include "rti/server/gateway.hpp"
+#include "rti/auth.hpp"
 #include "rti/server/status.hpp"
 
 #include <algorithm>
@@ -46,6 +47,7 @@ struct Gateway::Connection {
     std::size_t backlog_bytes = 0;
     std::string tail;
     bool greeted = false;
+    std::string challenge;  // sent in the Welcome while the gateway has a secret and the client has not answered
     bool write_armed = false;
     bool dirty = false;
     FederationEntry* federation = nullptr;
@@ -343,7 +345,23 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
             throw wire::WireError("protocol version " + std::to_string(hello->version) + " is not supported (gateway speaks " +
                                   std::to_string(wire::kProtocolVersion) + ")");
         c.greeted = true;
-        wire::encode(c.out, wire::Welcome{wire::kProtocolVersion, "hlacore rtig", options_.max_frame_bytes});
+        if (!options_.secret.empty()) c.challenge = auth::random_challenge();
+        wire::encode(c.out, wire::Welcome{wire::kProtocolVersion, "hlacore rtig", options_.max_frame_bytes, c.challenge});
+        mark_dirty(c);
+        return;
+    }
+    if (!c.challenge.empty()) {  // nothing but the answer to the challenge, and nothing after a wrong one
+        const auto* answer = std::get_if<wire::Authenticate>(&message);
+        if (!answer)
+            throw wire::WireError(std::string(wire::message_name(frame.type)) + " sent before authenticating");
+        if (!auth::verify(options_.secret, c.challenge, answer->proof)) {
+            wire::encode(c.out, wire::Authenticated{false, "the gateway refused the secret"});
+            flush(c);  // a small frame into an empty socket buffer: the client reads why
+            close(c.fd, "authentication failed: wrong secret");
+            return;
+        }
+        c.challenge.clear();
+        wire::encode(c.out, wire::Authenticated{true, ""});
         mark_dirty(c);
         return;
     }
@@ -544,6 +562,12 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
         json += "]}";
         return wire::Reply{0, 0, "", 0, std::move(json), "", 0};
     });
+}
+
+void Gateway::serve(Connection& c, const wire::Authenticate&) {
+    // Already authenticated, or no secret asked (on_frame answers the challenge itself): nothing to prove.
+    wire::encode(output(c), wire::Authenticated{true, ""});
+    mark_dirty(c);
 }
 
 void Gateway::serve(Connection& c, const wire::Ping& m) {

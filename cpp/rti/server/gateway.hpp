@@ -29,6 +29,9 @@ struct GatewayOptions {
     double stall_timeout_s = 30.0;
     std::uint32_t max_frame_bytes = wire::kMaxFrameBytes;  // announced in the Welcome; larger frames are refused
     std::string save_dir;  // federation saves are written here as files ("": kept in memory only)
+    // Non-empty: every client proves it knows this secret (challenge-response, rti/auth.hpp) before anything
+    // else; docs/networking.md.
+    std::string secret;
     std::string trace_path;  // non-empty: write the message trace there (trace.hpp)
 };
 

@@ -18,8 +18,9 @@
 namespace hlacore::wire {
 
 constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
-// 2: initiateFederateRestore's nested records; 3: its SavedTime; 4: Welcome's frame limit, Ping and Pong
-constexpr std::uint16_t kProtocolVersion = 4;
+// 2: initiateFederateRestore's nested records; 3: its SavedTime; 4: Welcome's frame limit, Ping and Pong;
+// 5: Welcome's challenge, Authenticate and Authenticated
+constexpr std::uint16_t kProtocolVersion = 5;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -139,7 +140,10 @@ using OptionalTime = std::optional<double>;
     X(TurnUpdatesOff)                \
     /* liveness: federate -> gateway, and the answer */ \
     X(Ping)                          \
-    X(Pong)
+    X(Pong)                          \
+    /* access control: federate -> gateway, and the answer */ \
+    X(Authenticate)                  \
+    X(Authenticated)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply. Each has a `Gateway::serve(Connection&, const M&)` in cpp/rti/server/gateway.cpp,
@@ -147,7 +151,7 @@ using OptionalTime = std::optional<double>;
 #define HLACORE_GATEWAY_SERVICES(X)                                                                    \
     X(CreateFederation) X(DestroyFederation) X(JoinFederation) X(ResignFederation) X(RegisterObject)   \
     X(RegisterObjectWithRegion) X(RequestFederationSave) X(RequestFederationRestore) X(ReleaseResponse) \
-    X(QueryStatus) X(QueryTime) X(Ping)
+    X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate)
 
 // The requests of a joined federate that its Federation serves, by service group: each has a handler
 // `Federation::on(FederateHandle, const M&)` in cpp/rti/server/<group>.cpp, declared from this list.
@@ -215,7 +219,19 @@ struct Welcome {
     std::uint16_t version = kProtocolVersion;
     std::string server;
     std::uint32_t max_frame_bytes = kMaxFrameBytes;  // the gateway's frame limit, both directions
-    HLACORE_FIELDS(version, server, max_frame_bytes)
+    std::string challenge;  // non-empty: the client must send Authenticate before anything else (rti/auth.hpp)
+    HLACORE_FIELDS(version, server, max_frame_bytes, challenge)
+};
+struct Authenticate {
+    HLACORE_TYPE(Authenticate)
+    std::string proof;  // auth::proof(secret, challenge)
+    HLACORE_FIELDS(proof)
+};
+struct Authenticated {
+    HLACORE_TYPE(Authenticated)
+    bool accepted = false;
+    std::string reason;  // when refused; the gateway closes the connection after it
+    HLACORE_FIELDS(accepted, reason)
 };
 
 // ---- liveness: a client that has heard nothing for a while asks; the gateway answers at once, joined or not ----

@@ -1,0 +1,59 @@
+#include "rti/auth.hpp"
+
+#include <openssl/crypto.h>
+#include <openssl/evp.h>
+#include <openssl/hmac.h>
+#include <openssl/rand.h>
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace hlacore::auth {
+namespace {
+// Binds a proof to this protocol, so that an answer cannot be replayed to another that signs challenges.
+constexpr char kLabel[] = "hlacore gateway authentication 1\n";
+}  // namespace
+
+std::string random_challenge() {
+    std::string challenge(kChallengeBytes, '\0');
+    if (RAND_bytes(reinterpret_cast<unsigned char*>(challenge.data()), static_cast<int>(challenge.size())) != 1)
+        throw std::runtime_error("no random bytes for an authentication challenge");
+    return challenge;
+}
+
+std::string proof(const std::string& secret, const std::string& challenge) {
+    const std::string message = kLabel + challenge;
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int length = 0;
+    if (!HMAC(EVP_sha256(), secret.data(), static_cast<int>(secret.size()),
+              reinterpret_cast<const unsigned char*>(message.data()), message.size(), digest, &length))
+        throw std::runtime_error("HMAC-SHA256 failed");
+    return std::string(reinterpret_cast<const char*>(digest), length);
+}
+
+bool verify(const std::string& secret, const std::string& challenge, const std::string& answer) {
+    const std::string expected = proof(secret, challenge);
+    return answer.size() == expected.size() && CRYPTO_memcmp(answer.data(), expected.data(), expected.size()) == 0;
+}
+
+std::string read_secret_file(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0)
+        throw std::runtime_error("cannot read the secret file '" + path + "': " + std::strerror(errno));
+    if (st.st_mode & (S_IRWXG | S_IRWXO))
+        throw std::runtime_error("the secret file '" + path + "' may be read by other users: chmod 600 '" + path + "'");
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throw std::runtime_error("cannot read the secret file '" + path + "'");
+    std::string secret = text.str();
+    if (!secret.empty() && secret.back() == '\n') secret.pop_back();
+    if (secret.empty()) throw std::runtime_error("the secret file '" + path + "' is empty");
+    return secret;
+}
+
+}  // namespace hlacore::auth

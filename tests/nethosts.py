@@ -1,0 +1,101 @@
+"""Test hosts: network namespaces on this machine, each joined to the root namespace by a veth pair, so a test
+runs a gateway and federates "on different machines" (issue 16).
+
+Host k gets 10.213.k.1 inside its namespace; the root namespace holds 10.213.k.254 on the other end. There
+is no route between the hosts: whatever crosses from one to another goes through a relay that the test runs
+in the root namespace (hlacore.link.Link, listening on a host's .254 address and connecting to another
+host's .1), which is where the emulated link sits. Everything is removed at the end, also after a failure;
+names carry this process's pid so that parallel runs do not collide.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+from dataclasses import dataclass
+from typing import Iterator, Sequence
+
+import pytest
+
+SUBNET = "10.213"
+
+
+@dataclass(frozen=True)
+class Host:
+    name: str
+    namespace: str
+    address: str  # inside the namespace
+    router: str  # its peer address in the root namespace, where relays towards it listen
+
+    def exec_prefix(self) -> list[str]:
+        """What runs a command inside this host: prefix it to the argv."""
+        return ["ip", "netns", "exec", self.namespace]
+
+
+class NetHosts:
+    def __init__(self) -> None:
+        self.hosts: list[Host] = []
+        self._links: list[str] = []
+        self._tag = f"hlc{os.getpid() % 100000}"
+
+    def add(self, name: str) -> Host:
+        k = len(self.hosts) + 1
+        if k > 250:
+            raise ValueError("at most 250 test hosts")
+        namespace, outside, inside = f"{self._tag}-{name}", f"{self._tag}o{k}", f"{self._tag}i{k}"
+        host = Host(name, namespace, f"{SUBNET}.{k}.1", f"{SUBNET}.{k}.254")
+        _ip("netns", "add", namespace)
+        self.hosts.append(host)
+        _ip("link", "add", outside, "type", "veth", "peer", "name", inside)
+        self._links.append(outside)
+        _ip("link", "set", inside, "netns", namespace)
+        _ip("addr", "add", f"{host.router}/24", "dev", outside)
+        _ip("link", "set", outside, "up")
+        for args in (("addr", "add", f"{host.address}/24", "dev", inside), ("link", "set", inside, "up"),
+                     ("link", "set", "lo", "up")):
+            _ip("-n", namespace, *args)
+        return host
+
+    def close(self) -> None:
+        for link in self._links:  # deleting one end removes the pair
+            subprocess.run(["ip", "link", "del", link], capture_output=True)
+        for host in self.hosts:
+            subprocess.run(["ip", "netns", "del", host.namespace], capture_output=True)
+        self._links.clear()
+        self.hosts.clear()
+
+
+def _ip(*args: str) -> None:
+    result = subprocess.run(["ip", *args], capture_output=True, text=True)
+    if result.returncode != 0:
+        raise RuntimeError(f"ip {' '.join(args)}: {result.stderr.strip()}")
+
+
+def namespaces_unavailable() -> str:
+    """Why network namespaces cannot be made here, or "" when they can."""
+    if not shutil.which("ip"):
+        return "the ip command (Debian's iproute2) is not installed"
+    probe = f"hlc{os.getpid() % 100000}-probe"
+    made = subprocess.run(["ip", "netns", "add", probe], capture_output=True, text=True)
+    if made.returncode != 0:
+        return f"ip netns add failed: {made.stderr.strip()}"
+    subprocess.run(["ip", "netns", "del", probe], capture_output=True)
+    return ""
+
+
+@pytest.fixture
+def nethosts() -> Iterator[NetHosts]:
+    """Make test hosts with ``nethosts.add(name)``; all are removed after the test."""
+    why = namespaces_unavailable()
+    if why:
+        pytest.fail(f"test hosts need network namespaces: {why}")
+    hosts = NetHosts()
+    try:
+        yield hosts
+    finally:
+        hosts.close()
+
+
+def in_host(host: Host, argv: Sequence[str]) -> list[str]:
+    return [*host.exec_prefix(), *argv]

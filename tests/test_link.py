@@ -1,0 +1,237 @@
+"""The link emulator (hlacore.link) and test hosts in network namespaces (tests/nethosts.py), issue 16: first
+the relay's figures on loopback (delay per direction, the rate limit, order and integrity under jitter,
+datagram loss), then a federation across namespaces through emulated Wi-Fi links."""
+
+from __future__ import annotations
+
+import pathlib
+import signal
+import socket
+import statistics
+import subprocess
+import sys
+import threading
+import time
+from typing import Iterator
+
+import pytest
+
+from hlacore.link import Direction, Link, main
+from hlacore.processes import python_peer
+
+import hlacore.rti as rti
+
+from conftest import ROBOT_FED, RtigProcess
+from nethosts import NetHosts, nethosts  # noqa: F401 (the fixture)
+
+PEERS = pathlib.Path(__file__).parent / "peers"
+
+
+class EchoServer:
+    """TCP echo on loopback, on a thread."""
+
+    def __init__(self) -> None:
+        self.sock = socket.create_server(("127.0.0.1", 0))
+        self.port = self.sock.getsockname()[1]
+        self.thread = threading.Thread(target=self._serve, daemon=True)
+        self.thread.start()
+
+    def _serve(self) -> None:
+        while True:
+            try:
+                conn, _ = self.sock.accept()
+            except OSError:
+                return
+            threading.Thread(target=self._echo, args=(conn,), daemon=True).start()
+
+    @staticmethod
+    def _echo(conn: socket.socket) -> None:
+        with conn:
+            while data := conn.recv(65536):
+                conn.sendall(data)
+
+    def close(self) -> None:
+        self.sock.close()
+
+
+@pytest.fixture
+def echo() -> Iterator[EchoServer]:
+    server = EchoServer()
+    yield server
+    server.close()
+
+
+def recv_exactly(sock: socket.socket, n: int) -> bytes:
+    out = bytearray()
+    while len(out) < n:
+        chunk = sock.recv(n - len(out))
+        assert chunk, "the link closed early"
+        out += chunk
+    return bytes(out)
+
+
+def test_each_direction_has_its_own_delay(echo: EchoServer) -> None:
+    """20 ms up and 10 ms down: an echo's round trip takes 30 ms and a little more, never less."""
+    with Link(("127.0.0.1", 0), ("127.0.0.1", echo.port), up=Direction(delay=0.020),
+              down=Direction(delay=0.010)) as link, socket.create_connection((link.host, link.port)) as s:
+        trips = []
+        for k in range(20):
+            started = time.perf_counter()
+            s.sendall(b"%04d" % k)
+            assert recv_exactly(s, 4) == b"%04d" % k
+            trips.append(time.perf_counter() - started)
+    print(f"\nround trips through 20 + 10 ms: min {min(trips) * 1e3:.1f} ms, median "
+          f"{statistics.median(trips) * 1e3:.1f} ms, max {max(trips) * 1e3:.1f} ms")
+    assert min(trips) >= 0.030
+    assert statistics.median(trips) < 0.080  # the relay's own cost stays small against the delay
+
+
+def test_the_rate_limit_paces_a_stream_and_jitter_never_reorders_it(echo: EchoServer) -> None:
+    """1 Mbit/s up, ±5 ms of jitter both ways: 125 000 bytes need at least one second, and arrive intact."""
+    payload = bytes(range(256)) * 489  # 125 184 bytes
+    with Link(("127.0.0.1", 0), ("127.0.0.1", echo.port), up=Direction(delay=0.002, jitter=0.005, rate=1e6),
+              down=Direction(delay=0.002, jitter=0.005), seed=1) as link, \
+            socket.create_connection((link.host, link.port)) as s:
+        started = time.perf_counter()
+        sender = threading.Thread(target=s.sendall, args=(payload,))
+        sender.start()
+        echoed = recv_exactly(s, len(payload))
+        took = time.perf_counter() - started
+        sender.join()
+    print(f"\n{len(payload)} bytes through 1 Mbit/s: {took:.2f} s ({len(payload) * 8 / took / 1e6:.2f} Mbit/s)")
+    assert echoed == payload
+    assert took >= len(payload) * 8 / 1e6
+
+
+def test_datagrams_are_lost_at_the_configured_rate() -> None:
+    """30 % loss up: of 2 000 datagrams about 1 400 reach the far end, and the relay counts the others."""
+    receiver = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    receiver.bind(("127.0.0.1", 0))
+    receiver.settimeout(2)
+    got: set[int] = set()
+
+    def receive() -> None:  # at once, so that no datagram waits in (and overflows) the socket's buffer
+        try:
+            while True:
+                got.add(int(receiver.recv(64)))
+        except socket.timeout:
+            pass
+
+    receiving = threading.Thread(target=receive)
+    receiving.start()
+    sent = 2000
+    with Link(("127.0.0.1", 0), receiver.getsockname(), up=Direction(loss=0.3), udp=True, seed=7) as link, \
+            socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sender:
+        for k in range(sent):
+            sender.sendto(b"%d" % k, (link.host, link.port))
+            if k % 10 == 9:
+                time.sleep(0.005)  # paced, so that the relay's socket never overflows either
+        receiving.join(30)
+        lost = link.counters["up"].lost
+    receiver.close()
+    print(f"\n{sent} datagrams at 30 % loss: {len(got)} delivered, {lost} counted lost")
+    assert len(got) + lost == sent
+    assert 0.25 * sent < lost < 0.35 * sent  # binomial: the standard deviation is 20 datagrams
+
+
+def test_the_command_line_refuses_bad_figures(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as stopped:
+        main(["127.0.0.1:0", "127.0.0.1:60400", "--up", "delay=5,colour=blue"])
+    assert stopped.value.code == 2
+    assert "unknown link figure 'colour'" in capsys.readouterr().err
+    with pytest.raises(SystemExit):
+        main(["127.0.0.1:0", "nowhere", "--delay", "5"])
+    with pytest.raises(ValueError, match="loss must be between 0 and 1"):
+        Direction(loss=1.5)
+
+
+def test_the_command_line_relays_until_interrupted(echo: EchoServer) -> None:
+    """`python -m hlacore.link LISTEN TARGET --delay 5` prints where it listens, relays, and on Ctrl-C
+    prints its counters and exits 0."""
+    proc = subprocess.Popen([sys.executable, "-m", "hlacore.link", "127.0.0.1:0", f"127.0.0.1:{echo.port}",
+                             "--delay", "5", "--down", "delay=1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
+    try:
+        assert proc.stdout is not None
+        line = proc.stdout.readline()
+        assert line.startswith("link listening on 127.0.0.1:"), line
+        port = int(line.split()[3].rsplit(":", 1)[1])
+        with socket.create_connection(("127.0.0.1", port)) as s:
+            s.sendall(b"ping")
+            assert recv_exactly(s, 4) == b"ping"
+        proc.send_signal(signal.SIGINT)
+        _, err = proc.communicate(timeout=10)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 0, err
+    assert "up: 4 bytes" in err and "down: 4 bytes" in err
+
+
+# ---- across namespaces ----
+
+
+def test_a_lockstep_federation_across_hosts_behind_wifi_links(nethosts: NetHosts, tmp_path: pathlib.Path) -> None:
+    """The gateway on host "gw", two lockstep federates on hosts "robot" and "sim", each behind its own
+    emulated Wi-Fi link (5 ms ± 2 ms each way, 10 Mbit/s): 200 TSO steps, every update before its grant.
+    The hosts have no route to each other: the only path is through the links."""
+    gw, robot, sim = nethosts.add("gw"), nethosts.add("robot"), nethosts.add("sim")
+    wifi = Direction(delay=0.005, jitter=0.002, rate=10e6)
+    with RtigProcess(tmp_path, "--host", gw.address, "--no-secret", prefix=gw.exec_prefix()) as server:
+        gateway = (gw.address, server.port)
+        with Link((robot.router, 0), gateway, up=wifi, down=wifi, seed=1) as robot_link, \
+                Link((sim.router, 0), gateway, up=wifi, down=wifi, seed=2) as sim_link:
+            conductor = rti.RTIAmbassador(server.address)  # the root namespace reaches every host directly
+            conductor.createFederationExecution("TestFed", ROBOT_FED)
+            amb = rti.FederateAmbassador()
+            announced: list[str] = []
+            synchronized: list[str] = []
+            amb.announceSynchronizationPoint = lambda label, tag: announced.append(label)  # type: ignore[method-assign]
+            amb.federationSynchronized = lambda label: synchronized.append(label)  # type: ignore[method-assign]
+            conductor.joinFederationExecution("conductor", "TestFed", amb)
+            steps = 200
+            peers = {
+                "robot": python_peer(PEERS / "lockstep.py", robot_link.address, "robot", steps, 2,
+                                     prefix=robot.exec_prefix()),
+                "sim": python_peer(PEERS / "lockstep.py", sim_link.address, "sim", steps, 2, prefix=sim.exec_prefix()),
+            }
+            try:
+                for peer in peers.values():
+                    assert peer.read_json(60) == {"ready": True}
+                conductor.registerFederationSynchronizationPoint("start", "")
+                deadline = time.monotonic() + 30
+                while "start" not in announced and time.monotonic() < deadline:
+                    conductor.tick(0.05, 0.1)
+                conductor.synchronizationPointAchieved("start")
+                while "start" not in synchronized and time.monotonic() < deadline:
+                    conductor.tick(0.05, 0.1)
+                assert "start" in synchronized
+                results = {name: peer.read_json(120) for name, peer in peers.items()}
+                for peer in peers.values():
+                    assert peer.wait(30) == 0, peer.stderr()
+            finally:
+                for peer in peers.values():
+                    peer.close()
+            conductor.resignFederationExecution(rti.ResignAction.NoAction)
+            conductor.destroyFederationExecution("TestFed")
+        step_ms = [results[n]["seconds"] / steps * 1e3 for n in results]
+        print(f"\n{steps} lockstep steps across hosts behind 5 ± 2 ms links: {step_ms[0]:.1f} ms per step "
+              f"(robot), {step_ms[1]:.1f} ms (sim); link bytes up/down robot {robot_link.counters['up'].bytes}/"
+              f"{robot_link.counters['down'].bytes}")
+        for name, result in results.items():
+            assert result["errors"] == [], (name, result)
+            assert result["received"] == steps
+        # Each step needs the other federate's update and both grants: at least one crossing of each link.
+        assert min(step_ms) >= 2 * 5 * 0.8
+
+
+def test_hosts_cannot_reach_each_other_without_a_link(nethosts: NetHosts, tmp_path: pathlib.Path) -> None:
+    gw, robot = nethosts.add("gw"), nethosts.add("robot")
+    with RtigProcess(tmp_path, "--host", gw.address, "--no-secret", prefix=gw.exec_prefix()) as server:
+        probe = subprocess.run(
+            [*robot.exec_prefix(), sys.executable, "-c",
+             f"import socket; socket.create_connection(('{gw.address}', {server.port}), timeout=2)"],
+            capture_output=True, text=True, timeout=30)
+        assert probe.returncode != 0
+        assert "unreachable" in probe.stderr or "timed out" in probe.stderr, probe.stderr

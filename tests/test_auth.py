@@ -19,7 +19,7 @@ import hlacore.rti as rti
 from hlacore.link import Link
 from hlacore.status import status
 
-from conftest import ROBOT_FED, RtigProcess, rtig_executable, running_rtig
+from conftest import ROBOT_FED, RtigProcess, rtig_executable, running_rtig, wait_for_log
 from nethosts import NetHosts, nethosts  # noqa: F401 (the fixture)
 from test_robustness import T, frame, hello, raw_client, string, u32
 
@@ -73,7 +73,7 @@ def test_a_wrong_secret_is_refused_and_logged(guarded: RtigProcess, tmp_path: pa
     wrong = secret_file(tmp_path, "incorrect horse", "wrong")
     with pytest.raises(rti.AuthenticationFailed, match="refused this client: the gateway refused the secret"):
         rti.RTIAmbassador(guarded.address, secret_file=wrong)
-    assert re.search(r"rtig: dropped \S+: authentication failed: wrong secret", guarded.log()), guarded.log()
+    wait_for_log(guarded, r"rtig: dropped \S+: authentication failed: wrong secret")  # logged as it closes
 
 
 def test_a_client_that_skips_the_proof_gets_nothing(guarded: RtigProcess, secret: pathlib.Path) -> None:
@@ -88,7 +88,7 @@ def test_a_client_that_skips_the_proof_gets_nothing(guarded: RtigProcess, secret
         sneaky.send(frame("DestroyFederation", u32(2) + string("TestFed")), tolerate_drop=True)
         sneaky.wait_eof()
         assert sneaky.buffer == b""
-    assert "QueryStatus sent before authenticating" in guarded.log()
+    wait_for_log(guarded, "QueryStatus sent before authenticating")
     rtia = rti.RTIAmbassador(guarded.address, secret_file=secret)
     rtia.destroyFederationExecution("TestFed")  # it was still there
 

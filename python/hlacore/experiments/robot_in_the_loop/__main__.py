@@ -46,6 +46,11 @@ def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
                         help="wall seconds per simulated device second (default 0.05; 1 = real time)")
     parser.add_argument("--precision", type=float, default=0.25, help="checker's time precision, model time")
     parser.add_argument("--federation", default="TestFed")
+    parser.add_argument("--robot-rtig", metavar="HOST:PORT", default=None,
+                        help="where the Robot Federate reaches the gateway, when not where the testbench does "
+                             "(a link emulator's address: docs/networking.md)")
+    parser.add_argument("--robot-netns", metavar="NAME", default=None,
+                        help="run the Robot Federate in this network namespace (ip netns exec NAME)")
     parser.add_argument("--out", type=pathlib.Path, default=None,
                         help="output folder (default ./robot-experiment-<UTC time>)")
     args = parser.parse_args(argv)
@@ -57,7 +62,8 @@ def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
     return ExperimentOptions(out=out, rtig=args.rtig, grid=args.grid, scenario_file=args.scenario,
                              miscalibrated=args.miscalibrated, best_effort=args.best_effort, cycles=args.cycles,
                              time_scale=args.time_scale, precision=args.precision, federation=args.federation,
-                             gateway_trace=args.gateway_trace)
+                             gateway_trace=args.gateway_trace, robot_rtig=args.robot_rtig,
+                             robot_prefix=("ip", "netns", "exec", args.robot_netns) if args.robot_netns else ())
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:

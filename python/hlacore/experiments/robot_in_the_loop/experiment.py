@@ -53,6 +53,10 @@ class ExperimentOptions:
     federation: str = "TestFed"
     timeout: float = 60.0
     gateway_trace: Optional[pathlib.Path] = None  # what `rtig --trace` writes, when rtig is given
+    # The Robot Federate on "another machine" (docs/networking.md): the address it reaches the gateway at (a
+    # link emulator's, say) and what its command runs through (["ip", "netns", "exec", NAME]).
+    robot_rtig: Optional[str] = None
+    robot_prefix: tuple[str, ...] = ()
 
 
 @dataclass
@@ -78,7 +82,8 @@ def _gateway(address: Optional[str], trace: pathlib.Path) -> Iterator[str]:
 
 def _robot_command(options: ExperimentOptions, address: str, scenario_path: pathlib.Path) -> list[str]:
     command = [
-        sys.executable, "-m", "hlacore.federates.robot_driver", "--rtig", address,
+        *options.robot_prefix, sys.executable, "-m", "hlacore.federates.robot_driver",
+        "--rtig", options.robot_rtig or address,
         "--federation", options.federation, "--scenario", str(scenario_path), "--cycles", str(options.cycles),
         "--lookahead", repr(options.latency), "--time-scale", repr(options.time_scale),
         "--timeout", repr(options.timeout),

@@ -127,6 +127,7 @@ def test_the_in_process_gateway_takes_a_secret(secret: pathlib.Path, monkeypatch
         with pytest.raises(rti.AuthenticationFailed):
             rti.RTIAmbassador(gw.address)
         rti.RTIAmbassador(gw.address, secret_file=secret).createFederationExecution("TestFed", ROBOT_FED)
+        assert [f["name"] for f in gw.status()["federations"]] == ["TestFed"]  # the gateway knows its secret
 
 
 def test_across_hosts_the_secret_never_crosses_the_link(nethosts: NetHosts, tmp_path: pathlib.Path,

@@ -53,6 +53,7 @@ class Gateway:
             raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
         if not (math.isfinite(stall_timeout) and stall_timeout >= 0):
             raise ValueError(f"stall_timeout must be a finite number of seconds >= 0, not {stall_timeout}")
+        self._secret_file = secret_file
         low, high = self.MAX_FRAME_RANGE
         if not low <= max_frame <= high:
             raise ValueError(f"max_frame must be between {low} and {high} bytes, not {max_frame}")
@@ -87,7 +88,7 @@ class Gateway:
         queued messages: see :func:`hlacore.status.status`."""
         from .status import status
 
-        return status(self.address)
+        return status(self.address, self._secret_file)
 
     def stop(self) -> None:
         """Stop serving and close every connection; idempotent."""

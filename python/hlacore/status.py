@@ -21,7 +21,7 @@ from .rti import _resolve_address
 _NUMBERS = ("time", "lookahead", "lbts", "output_bound")
 
 
-def status(address: Optional[str] = None) -> dict[str, Any]:
+def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLike[str]] = None) -> dict[str, Any]:
     """The gateway's report as a dict; ``address`` as for :class:`hlacore.rti.RTIAmbassador`.
 
     ``{"server", "address", "connections", "federations": [{"name", "fed", "objects", "sync_points",
@@ -30,9 +30,9 @@ def status(address: Optional[str] = None) -> dict[str, Any]:
     "queued_tso", "queued_ro", "regions", "lbts", "output_bound"}]}]}`` ("regions": how many the federate
     has, docs/ddm.md). On the wire infinite times are null; here
     they are ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A gateway with a
-    secret asks for it here too: ``$HLACORE_SECRET_FILE``.
+    secret asks for it here too: ``secret_file``, else ``$HLACORE_SECRET_FILE``.
     """
-    report: dict[str, Any] = json.loads(_raw_status(address))
+    report: dict[str, Any] = json.loads(_raw_status(address, secret_file))
     for federation in report["federations"]:
         for federate in federation["federates"]:
             for key in _NUMBERS:
@@ -41,9 +41,10 @@ def status(address: Optional[str] = None) -> dict[str, Any]:
     return report
 
 
-def _raw_status(address: Optional[str]) -> str:
+def _raw_status(address: Optional[str], secret_file: Optional[str | os.PathLike[str]] = None) -> str:
     host, port = _resolve_address(address)
-    return str(_core.RTIAmbassadorBase(host, port, secret_file=os.environ.get("HLACORE_SECRET_FILE", ""))._status())
+    secret = os.fspath(secret_file) if secret_file is not None else os.environ.get("HLACORE_SECRET_FILE", "")
+    return str(_core.RTIAmbassadorBase(host, port, secret_file=secret)._status())
 
 
 def format_table(report: dict[str, Any], width: int = 80) -> str:

@@ -28,6 +28,10 @@ const Doc kDocs[] = {
     {"queryMinNextEventTime", "min(LBTS, the earliest timestamped message queued for this federate) (HLA 1.3 §8.17)."},
     {"modifyLookahead", "Change the lookahead (HLA 1.3 §8.18); a lower value never allows a timestamp below one already allowed. Raises InvalidLookahead."},
     {"queryLookahead", "The current lookahead (HLA 1.3 §8.19); 0 before regulation."},
+    {"clock_offset",
+     "(offset, uncertainty) in seconds: the gateway's clock is this process's time.monotonic() + offset, to "
+     "within ± uncertainty (half the best probe's round trip, whatever the path's asymmetry). Measured when "
+     "connecting and again when older than max_age seconds (docs/networking.md)."},
     {"retract", "Retract a timestamped message this federate sent above its current time (HLA 1.3 §8.21): it is removed where it is still queued; federates that already received it get requestRetraction. Raises InvalidRetractionHandle."},
 };
 
@@ -55,7 +59,13 @@ void bind_time(Ambassador& rtia) {
              [](Client& c, const EventRetractionHandle& h) { c.retract(h.sender, h.serial); }, py::arg("theHandle"))
         .def("_time_advance_pending", &Client::time_advance_pending)
         .def("_lowest_sendable_time", &Client::lowest_sendable_time)
-        .def("_status", &Client::query_status, py::call_guard<py::gil_scoped_release>());
+        .def("_status", &Client::query_status, py::call_guard<py::gil_scoped_release>())
+        .def("clock_offset",
+             [](Client& c, double max_age) {
+                 const ClockEstimate e = c.clock_offset(max_age);
+                 return std::make_pair(e.offset_s, e.uncertainty_s);
+             },
+             py::arg("max_age") = 10.0, py::call_guard<py::gil_scoped_release>());
 }
 
 }  // namespace hlacore::bindings

@@ -43,6 +43,8 @@ MESSAGES = {
     "Authenticate": s(bytes(32)),
     "Authenticated": b(True) + s(""),
     "Authenticated-refused": b(False) + s("the gateway refused the secret"),
+    "ClockProbe": u32(1) + u64(123_456_789),
+    "ClockEcho": u32(1) + u64(123_456_789) + u64(987_654_321),
     "CreateFederation": u32(1) + s("TestFed") + s("robot.fed") + s(FED),
     "CreateFederation-by-name": u32(1) + s("TestFed") + s("robot.fed") + s(""),
     "DestroyFederation": u32(2) + s("TestFed"),

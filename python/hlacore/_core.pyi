@@ -695,6 +695,10 @@ class RTIAmbassadorBase:
         """
         Change the transportation of this federate's later interactions of a published class (HLA 1.3 §6.20), until it unpublishes the class; receiveInteraction reports it. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidTransportationHandle.
         """
+    def clock_offset(self, max_age: typing.SupportsFloat | typing.SupportsIndex = 10.0) -> tuple[float, float]:
+        """
+        (offset, uncertainty) in seconds: the gateway's clock is this process's time.monotonic() + offset, to within ± uncertainty (half the best probe's round trip, whatever the path's asymmetry). Measured when connecting and again when older than max_age seconds (docs/networking.md).
+        """
     def createRegion(self, space: SpaceHandle, extent: collections.abc.Sequence[tuple[DimensionHandle, tuple[typing.SupportsInt | typing.SupportsIndex, typing.SupportsInt | typing.SupportsIndex]]]) -> RegionHandle:
         """
         Create a region of a routing space (HLA 1.3 §9.2) with one extent [(DimensionHandle, (lower, upper)), ...]: closed ranges within [MIN_EXTENT, MAX_EXTENT]; dimensions not given span the whole axis. The region belongs to this federate. Raises SpaceNotDefined, DimensionNotDefined, InvalidExtents.

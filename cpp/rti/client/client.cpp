@@ -105,8 +105,9 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
         setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
         last_heard_ = Clock::now();
         send(wire::Hello{});
-        await_handshake(deadline, [this] { return welcomed_; }, "no hlacore handshake");
+        await_answer(deadline, [this] { return welcomed_; }, "no hlacore handshake");
         if (!challenge_.empty()) authenticate(deadline);
+        clock_ = measure_clock(4);
     } catch (...) {
         if (fd_ >= 0) ::close(fd_);
         fd_ = -1;
@@ -115,7 +116,7 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
 }
 
 template <class Pred>
-void Client::await_handshake(Clock::time_point deadline, Pred done, const char* what) {
+void Client::await_answer(Clock::time_point deadline, Pred done, const char* what) {
     for (;;) {
         const auto status = pump(deadline, done);
         std::unique_lock<std::mutex> lock(mu_);
@@ -139,7 +140,7 @@ void Client::authenticate(Clock::time_point deadline) {
               "$HLACORE_SECRET_FILE; docs/networking.md)");
     send(wire::Authenticate{auth::proof(options_.secret, challenge_)});
     try {
-        await_handshake(deadline, [this] { return authenticated_.has_value(); }, "no answer to the authentication");
+        await_answer(deadline, [this] { return authenticated_.has_value(); }, "no answer to the authentication");
     } catch (const RtiError& e) {
         if (e.code() == ErrorCode::GatewayNotResponding) throw;
         raise(ErrorCode::AuthenticationFailed, std::string("authentication with ") + address_ + " failed: " + e.what());
@@ -147,6 +148,44 @@ void Client::authenticate(Clock::time_point deadline) {
     if (!authenticated_->accepted)
         raise(ErrorCode::AuthenticationFailed, "the gateway at " + address_ + " refused this client: " +
                                                    authenticated_->reason + " (docs/networking.md)");
+}
+
+namespace {
+std::uint64_t steady_ns(Client::Clock::time_point t) {
+    return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(t.time_since_epoch()).count());
+}
+}  // namespace
+
+// Sequential probes; the one with the shortest round trip bounds the offset best.
+ClockEstimate Client::measure_clock(int probes) {
+    ClockEstimate best;
+    double best_rtt = -1;
+    for (int i = 0; i < probes; ++i) {
+        const std::uint32_t sequence = ++clock_probes_;
+        const auto sent = Clock::now();
+        send(wire::ClockProbe{sequence, steady_ns(sent)});
+        await_answer(sent + timeout_, [&] { return clock_echo_ && clock_echo_->sequence == sequence; },
+                        "no answer to a clock probe");
+        const auto back = Clock::now();
+        std::uint64_t gateway_ns;
+        {
+            std::lock_guard<std::mutex> lock(mu_);
+            gateway_ns = clock_echo_->gateway_ns;
+        }
+        const double rtt = std::chrono::duration<double>(back - sent).count();
+        if (best_rtt < 0 || rtt < best_rtt) {
+            best_rtt = rtt;
+            const double midpoint_ns = (static_cast<double>(steady_ns(sent)) + static_cast<double>(steady_ns(back))) / 2;
+            best = ClockEstimate{(static_cast<double>(gateway_ns) - midpoint_ns) * 1e-9, rtt / 2, back};
+        }
+    }
+    return best;
+}
+
+ClockEstimate Client::clock_offset(double max_age_s) {
+    std::lock_guard<std::mutex> lock(clock_mu_);
+    if (std::chrono::duration<double>(Clock::now() - clock_.measured_at).count() > max_age_s) clock_ = measure_clock(4);
+    return clock_;
 }
 
 Client::~Client() {
@@ -448,6 +487,10 @@ void Client::file(std::vector<wire::Message>& got) {
         }
         if (auto* a = std::get_if<wire::Authenticated>(&m)) {
             authenticated_ = std::move(*a);
+            continue;
+        }
+        if (auto* e = std::get_if<wire::ClockEcho>(&m)) {
+            clock_echo_ = *e;
             continue;
         }
         if (std::holds_alternative<wire::Pong>(m)) continue;  // what it says is that bytes came: last_heard_

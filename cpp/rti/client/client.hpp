@@ -51,6 +51,15 @@ struct ClientOptions {
     std::string secret;
 };
 
+// The offset of the gateway's steady clock from this process's (gateway = local + offset_s), known to within
+// ± uncertainty_s (half the round trip of the best probe: NTP's bound, which holds whatever the asymmetry
+// of the path), measured at `measured_at`.
+struct ClockEstimate {
+    double offset_s = 0;
+    double uncertainty_s = 0;
+    std::chrono::steady_clock::time_point measured_at{};
+};
+
 class Client {
 public:
     using Clock = std::chrono::steady_clock;
@@ -65,6 +74,9 @@ public:
     Client& operator=(const Client&) = delete;
 
     const std::string& address() const { return address_; }
+    // The clock offset to the gateway, measured when connecting and again when older than max_age_s
+    // (a few round trips; docs/networking.md).
+    ClockEstimate clock_offset(double max_age_s);
     int fileno() const { return fd_; }
 
     // ---- federation management ----
@@ -318,10 +330,11 @@ private:
     void close_connection(ErrorCode code, const std::string& reason);
     // A signal interrupted a wait: the host may abandon it, then the connection is closed when `owed`.
     void on_interrupt(const char* owed);
-    // Waits until `done()` (under mu_) for the handshake, raising GatewayNotResponding at `deadline`.
+    // Waits until `done()` (under mu_) for an answer of the handshake kind, GatewayNotResponding at `deadline`.
     template <class Pred>
-    void await_handshake(Clock::time_point deadline, Pred done, const char* what);
+    void await_answer(Clock::time_point deadline, Pred done, const char* what);
     void authenticate(Clock::time_point deadline);
+    ClockEstimate measure_clock(int probes);
 
     // The checks behind the services; callers hold mu_.
     void require_joined() const;
@@ -397,6 +410,10 @@ private:
     std::string closed_reason_;
     std::string challenge_;                           // from the Welcome
     std::optional<wire::Authenticated> authenticated_;  // the gateway's answer to Authenticate
+    std::optional<wire::ClockEcho> clock_echo_;        // the last answer to a ClockProbe
+    std::uint32_t clock_probes_ = 0;
+    std::mutex clock_mu_;  // one measurement at a time
+    ClockEstimate clock_;
     // The gateway's frame limit, from its Welcome (both directions).
     std::atomic<std::uint32_t> max_frame_bytes_{wire::kMaxFrameBytes};
     // Touched only by the thread that is reading.

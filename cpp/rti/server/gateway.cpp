@@ -570,6 +570,12 @@ void Gateway::serve(Connection& c, const wire::Authenticate&) {
     mark_dirty(c);
 }
 
+void Gateway::serve(Connection& c, const wire::ClockProbe& m) {
+    // The trace's clock (CLOCK_MONOTONIC), so that a client's offset applies to the trace's marks too.
+    wire::encode(output(c), wire::ClockEcho{m.sequence, m.client_ns, static_cast<std::uint64_t>(MessageTrace::now_ns())});
+    mark_dirty(c);
+}
+
 void Gateway::serve(Connection& c, const wire::Ping& m) {
     wire::encode(output(c), wire::Pong{m.sequence});
     mark_dirty(c);

@@ -19,8 +19,8 @@ namespace hlacore::wire {
 
 constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // 2: initiateFederateRestore's nested records; 3: its SavedTime; 4: Welcome's frame limit, Ping and Pong;
-// 5: Welcome's challenge, Authenticate and Authenticated
-constexpr std::uint16_t kProtocolVersion = 5;
+// 5: Welcome's challenge, Authenticate and Authenticated; 6: ClockProbe and ClockEcho
+constexpr std::uint16_t kProtocolVersion = 6;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -143,7 +143,10 @@ using OptionalTime = std::optional<double>;
     X(Pong)                          \
     /* access control: federate -> gateway, and the answer */ \
     X(Authenticate)                  \
-    X(Authenticated)
+    X(Authenticated)                 \
+    /* clock offset to the gateway: federate -> gateway, and the answer */ \
+    X(ClockProbe)                    \
+    X(ClockEcho)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply. Each has a `Gateway::serve(Connection&, const M&)` in cpp/rti/server/gateway.cpp,
@@ -151,7 +154,7 @@ using OptionalTime = std::optional<double>;
 #define HLACORE_GATEWAY_SERVICES(X)                                                                    \
     X(CreateFederation) X(DestroyFederation) X(JoinFederation) X(ResignFederation) X(RegisterObject)   \
     X(RegisterObjectWithRegion) X(RequestFederationSave) X(RequestFederationRestore) X(ReleaseResponse) \
-    X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate)
+    X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate) X(ClockProbe)
 
 // The requests of a joined federate that its Federation serves, by service group: each has a handler
 // `Federation::on(FederateHandle, const M&)` in cpp/rti/server/<group>.cpp, declared from this list.
@@ -226,6 +229,21 @@ struct Authenticate {
     HLACORE_TYPE(Authenticate)
     std::string proof;  // auth::proof(secret, challenge)
     HLACORE_FIELDS(proof)
+};
+// NTP-style: the gateway stamps a probe with its steady clock (CLOCK_MONOTONIC on Linux, nanoseconds), so a
+// client that also knows when it sent and got it back bounds the offset between the two clocks.
+struct ClockProbe {
+    HLACORE_TYPE(ClockProbe)
+    std::uint32_t sequence = 0;
+    std::uint64_t client_ns = 0;  // when the client sent it, on its steady clock
+    HLACORE_FIELDS(sequence, client_ns)
+};
+struct ClockEcho {
+    HLACORE_TYPE(ClockEcho)
+    std::uint32_t sequence = 0;
+    std::uint64_t client_ns = 0;   // the probe's
+    std::uint64_t gateway_ns = 0;  // when the gateway answered, on its steady clock
+    HLACORE_FIELDS(sequence, client_ns, gateway_ns)
 };
 struct Authenticated {
     HLACORE_TYPE(Authenticated)

@@ -14,7 +14,7 @@ import os
 import shutil
 import subprocess
 from dataclasses import dataclass
-from typing import Iterator, Sequence
+from typing import Iterator
 
 import pytest
 
@@ -95,7 +95,3 @@ def nethosts() -> Iterator[NetHosts]:
         yield hosts
     finally:
         hosts.close()
-
-
-def in_host(host: Host, argv: Sequence[str]) -> list[str]:
-    return [*host.exec_prefix(), *argv]

@@ -150,6 +150,13 @@ def _resolve_timeout(timeout: Optional[float]) -> float:
         raise _core.RTIinternalError(f"HLACORE_TIMEOUT={text!r} is not a number of seconds") from None
 
 
+def _resolve_secret_file(secret_file: Optional[str | os.PathLike[str]]) -> str:
+    """The secret file's path for the client: `secret_file`, else $HLACORE_SECRET_FILE, else "" (none)."""
+    if secret_file is not None:
+        return os.fspath(secret_file)
+    return os.environ.get("HLACORE_SECRET_FILE", "")
+
+
 class RTIAmbassador(_core.RTIAmbassadorBase):
     """A federate's connection to the RTI (HLA 1.3 RTIambassador).
 
@@ -172,9 +179,7 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None,
                  secret_file: Optional[str | os.PathLike[str]] = None) -> None:
         host, port = _resolve_address(address)
-        if secret_file is None:
-            secret_file = os.environ.get("HLACORE_SECRET_FILE") or None
-        super().__init__(host, port, _resolve_timeout(timeout), os.fspath(secret_file) if secret_file else "")
+        super().__init__(host, port, _resolve_timeout(timeout), _resolve_secret_file(secret_file))
         self._federate_ambassador: Any = None
 
     # ---- federation management ----

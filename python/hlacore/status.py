@@ -16,7 +16,7 @@ import time
 from typing import Any, Optional
 
 from . import _core
-from .rti import _resolve_address
+from .rti import _resolve_address, _resolve_secret_file
 
 _NUMBERS = ("time", "lookahead", "lbts", "output_bound")
 
@@ -43,8 +43,7 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
 
 def _raw_status(address: Optional[str], secret_file: Optional[str | os.PathLike[str]] = None) -> str:
     host, port = _resolve_address(address)
-    secret = os.fspath(secret_file) if secret_file is not None else os.environ.get("HLACORE_SECRET_FILE", "")
-    return str(_core.RTIAmbassadorBase(host, port, secret_file=secret)._status())
+    return str(_core.RTIAmbassadorBase(host, port, secret_file=_resolve_secret_file(secret_file))._status())
 
 
 def format_table(report: dict[str, Any], width: int = 80) -> str:

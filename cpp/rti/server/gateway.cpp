@@ -676,7 +676,7 @@ void Gateway::service_paused() {
             }
             if (now - p.keepalive_at > std::chrono::seconds(1)) {
                 p.keepalive_at = now;
-                wire::encode(p.out, wire::Pong{0});
+                wire::encode(output(p), wire::Pong{0});
                 mark_dirty(p);
             }
             paused_.push_back(fd);

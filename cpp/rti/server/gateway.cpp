@@ -316,8 +316,14 @@ void Gateway::serve_frames(Connection& c) {
             if (!connections_.count(fd)) return;
             if (c.in_offset < c.in.size()) c.partial_since = Clock::now();
             if (over_budget_ >= 0) {
+                // Give the consumer's kernel buffer its chance first: pausing a producer whose consumer takes
+                // everything at once would cost it a loop turn (up to 250 ms) per message.
                 auto consumer = connections_.find(over_budget_);
-                if (consumer != connections_.end()) pause(c, *consumer->second);
+                if (consumer != connections_.end()) flush(*consumer->second);
+                consumer = connections_.find(over_budget_);
+                if (consumer != connections_.end() && held_for(*consumer->second) > options_.client_budget)
+                    pause(c, *consumer->second);
+                if (!connections_.count(fd)) return;
             }
         }
     } catch (const wire::WireError& e) {

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import dataclasses
 import math
 import pathlib
 
@@ -99,7 +100,7 @@ def test_stats_and_table_form():
     assert table["C^emb->DE"].mean == pytest.approx(2.0)
     assert table["t_cycle^emb"].mean == pytest.approx(100.0)
     text = format_table(table)
-    assert text.splitlines()[0] == "| delay (4 cycles, ms) | mean | max | min | std |"
+    assert text.splitlines()[0] == "| delay (4 cycles, ms) | mean | max | min | std | ± clock |"
     assert [line.split("|")[1].strip() for line in text.splitlines()[2:]] == ["t_cycle^emb", "C^emb->DE",
                                                                               "t_cycle^DE", "d_RT"]
 
@@ -115,6 +116,28 @@ def test_the_gateways_marks_split_the_communication_delay():
     assert table["C^emb->DE"].mean == pytest.approx(5.0)  # the three hops together
     assert [line.split("|")[1].strip() for line in format_table(table).splitlines()[2:]] == [
         "t_cycle^emb", "C_RTI^emb", "t_cycle^RTI", "C_PT^RTI", "C^emb->DE", "t_cycle^DE", "d_RT"]
+
+
+def test_marks_read_on_other_clocks_are_put_on_the_gateways_clock():
+    """The robot's clock 1000 s ahead of the gateway's, the testbench's 2 s behind: the offsets (the robot's in
+    its reports) put every mark on the gateway's clock, and each row that crosses clocks carries the sum of
+    their uncertainties."""
+    def skewed(k: int) -> tuple[float, Received]:
+        sent = dataclasses.replace(report(k, PAPER_PATH[k], t=1100.0), clock_offset=-1000.0,
+                                   clock_uncertainty=0.0005)
+        return k + 0.5, Received("robot", {"location": sent}, None, k + 0.5, f"cycle {k}")
+
+    checker, _, _ = bench([skewed(k) for k in range(4)])
+    # Sent at 1100.001 on the robot's clock (100.001 on the gateway's), read by the gateway at 100.003 and
+    # written on at 100.004, reflected at 98.006 on the testbench's clock (100.006).
+    marks = cycle_hops([Hop(k + 1, None, 100.003, 100.004) for k in range(4)])
+    table = delay_table(checker.verdicts, {k: 98.006 for k in range(4)}, marks, bench_clock=(2.0, 0.0002))
+    assert (table["C_RTI^emb"].mean, table["C_RTI^emb"].clock) == pytest.approx((2.0, 0.5))
+    assert (table["t_cycle^RTI"].mean, table["t_cycle^RTI"].clock) == pytest.approx((1.0, 0.0))
+    assert (table["C_PT^RTI"].mean, table["C_PT^RTI"].clock) == pytest.approx((2.0, 0.2))
+    assert (table["C^emb->DE"].mean, table["C^emb->DE"].clock) == pytest.approx((5.0, 0.7))
+    assert table["t_cycle^emb"].clock == 0.0
+    assert "| C_RTI^emb | 2.000 | 2.000 | 2.000 | 0.000 | 0.500 |" in format_table(table)
 
 
 def test_trace_has_a_row_per_cycle_and_plot_is_optional(tmp_path: pathlib.Path):

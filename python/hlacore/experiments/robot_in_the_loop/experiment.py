@@ -141,7 +141,8 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
     if trace is not None:
         # The gateway's marks split the robot -> testbench delay into its three hops.
         by_cycle = cycle_hops(hops(trace, "robot", "testbench", options.federation))
-        result = dataclasses.replace(result, delays=delay_table(result.verdicts, result.reflected_at, by_cycle))
+        result = dataclasses.replace(result, delays=delay_table(result.verdicts, result.reflected_at, by_cycle,
+                                                                   result.bench_clock))
     messages = write_outputs(out, result, scenario, title)
     return Experiment(result, out, int(robot.returncode), messages)
 

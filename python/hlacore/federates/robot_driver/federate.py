@@ -122,6 +122,8 @@ class RobotFederate:
     def cycle(self, k: int, grant_timeout: Optional[float] = None) -> LocationReport:
         """One control cycle (sense, decide, command, publish, advance); returns its report."""
         assert self._object is not None and self._location is not None, "setup() first"
+        # Measured again when older than 10 s (a few round trips to the gateway), before the cycle's marks.
+        offset, uncertainty = self.rtia.clock_offset(max_age=10.0)
         begin = time.monotonic()
         front, _, _ = self.driver.read_sensors()
         self.driver.read_position()
@@ -136,7 +138,7 @@ class RobotFederate:
         measured = (round(x / CELL), round(y / CELL))
         t_send = time.monotonic()
         report = LocationReport(k, measured, there, (x, y, heading), front, tuple(commands), t_action, t_send,
-                                t_send - begin)
+                                t_send - begin, offset, uncertainty)
         stamp = self.start_time + k + self.lookahead if self.mode is SyncMode.STEPPED else None
         self.rtia.updateAttributeValues(self._object, {self._location: encode_report(report)}, f"cycle {k}", stamp)
         self.reports.append(report)

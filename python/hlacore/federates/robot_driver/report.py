@@ -1,7 +1,8 @@
 """The robot's per-cycle report, the value of the FOM's ``robot.location`` attribute (UTF-8 JSON).
 
-Besides the measured cell and pose it carries the robot's wall-clock marks (``time.monotonic()``, one
-clock for every process of a host) that the testbench uses for the delay decomposition.
+Besides the measured cell and pose it carries the robot's wall-clock marks (its ``time.monotonic()``) and
+its clock's offset to the gateway's, with which the testbench puts them on one clock for the delay
+decomposition, the robot being on another host or not.
 """
 
 from __future__ import annotations
@@ -21,7 +22,9 @@ class LocationReport:
     ``cell``: where the position tracker puts the robot after the cycle's commands; ``believed``: where
     the robot thinks it is; ``pose``: x, y (m), heading (deg); ``front``: the front range (m);
     ``t_action``: wall time when the commands were done; ``t_send``: just before the update was sent;
-    ``t_cycle``: seconds from the start of the cycle (after the grant) to ``t_send``.
+    ``t_cycle``: seconds from the start of the cycle (after the grant) to ``t_send``;
+    ``clock_offset`` ± ``clock_uncertainty``: the gateway's clock minus the robot's (seconds,
+    ``RTIAmbassador.clock_offset``).
     """
 
     cycle: int
@@ -33,6 +36,8 @@ class LocationReport:
     t_action: float
     t_send: float
     t_cycle: float
+    clock_offset: float = 0.0
+    clock_uncertainty: float = 0.0
 
 
 def encode_report(report: LocationReport) -> bytes:
@@ -54,6 +59,8 @@ def decode_report(data: bytes) -> LocationReport:
             t_action=float(raw["t_action"]),
             t_send=float(raw["t_send"]),
             t_cycle=float(raw["t_cycle"]),
+            clock_offset=float(raw.get("clock_offset", 0.0)),
+            clock_uncertainty=float(raw.get("clock_uncertainty", 0.0)),
         )
     except (KeyError, TypeError, IndexError) as error:
         raise ValueError(f"not a location report: {error}") from None

@@ -24,7 +24,7 @@ from hlacore.federates.robot_driver.navigation import Scenario
 from hlacore.federates.robot_driver.report import REPORT_CODEC, decode_report
 
 from .checker import Checker, Verdict
-from .delays import Stats, delay_table
+from .delays import SAME_CLOCK, Stats, delay_table
 from .display import Display, format_verdict
 from .reference import ReferenceModel
 from .sequencer import Sequencer
@@ -76,6 +76,8 @@ class TestbenchResult:
     precision: float
     delays: dict[str, Stats]
     reflected_at: dict[int, float] = field(default_factory=dict)
+    #: The testbench's clock offset to the gateway's, (offset, uncertainty) in seconds.
+    bench_clock: tuple[float, float] = SAME_CLOCK
 
     @property
     def value_errors(self) -> list[Verdict]:
@@ -132,6 +134,7 @@ class Testbench:
         self.reference.output.connect(self.checker.expected)
         self.robot.received.connect(self.checker.actual)
         self.checker.output.connect(self.display.input)
+        self.bench_clock = SAME_CLOCK
         director.add(self.sequencer, self.reference, self.robot, self.checker, self.display)
 
     def wait_for_robot(self, timeout: float) -> None:
@@ -143,6 +146,7 @@ class Testbench:
             if time.monotonic() > deadline:
                 raise TimeoutError(f"testbench: no robot discovered within {timeout} s")
             self.director.rtia.tick(0.05, 0.05)
+        self.bench_clock = self.director.rtia.clock_offset()
 
     def run(self, pace: Optional[float] = None, discover_timeout: float = 60.0) -> TestbenchResult:
         """Wait for the robot, run the model to ``start + cycles`` (paced if ``pace``), check, return."""
@@ -169,4 +173,5 @@ class Testbench:
         """The verdicts so far (all of them after :meth:`run`; an interrupted run's partial ones before)."""
         verdicts = sorted(self.checker.verdicts, key=lambda v: v.cycle)
         reflected = dict(self.clock.reflected_at)
-        return TestbenchResult(verdicts, self.precision, delay_table(verdicts, reflected), reflected)
+        return TestbenchResult(verdicts, self.precision, delay_table(verdicts, reflected, bench_clock=self.bench_clock),
+                               reflected, self.bench_clock)

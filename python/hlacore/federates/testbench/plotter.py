@@ -15,7 +15,7 @@ from hlacore.federates.robot_driver.navigation import CELL, Scenario
 
 from .bench import TestbenchResult
 from .checker import Verdict
-from .delays import decompose, format_table
+from .delays import SAME_CLOCK, decompose, format_table
 
 __all__ = ["TRACE_COLUMNS", "write_trace", "write_plot", "write_outputs"]
 
@@ -31,14 +31,15 @@ def _blank(value: Optional[float]) -> str:
 
 
 def write_trace(path: pathlib.Path, verdicts: Sequence[Verdict], reflected_at: Mapping[int, float],
-                precision: float) -> None:
-    """One CSV row per verdict (columns :data:`TRACE_COLUMNS`; empty cells for a missing report)."""
+                precision: float, bench_clock: tuple[float, float] = SAME_CLOCK) -> None:
+    """One CSV row per verdict (columns :data:`TRACE_COLUMNS`; empty cells for a missing report);
+    ``bench_clock``: the testbench's clock offset to the gateway's (:mod:`.delays`)."""
     with open(path, "w", newline="") as stream:
         writer = csv.writer(stream)
         writer.writerow(TRACE_COLUMNS)
         for v in sorted(verdicts, key=lambda v: v.cycle):
             r = v.report
-            delays = decompose(v, reflected_at[v.cycle]) if r is not None and v.cycle in reflected_at else {}
+            delays = decompose(v, reflected_at[v.cycle], bench_clock=bench_clock) if r is not None and v.cycle in reflected_at else {}
             writer.writerow([
                 v.cycle, repr(v.expected_time), _blank(v.arrival), _blank(v.timestamp), v.expected[0], v.expected[1],
                 "" if v.actual is None else v.actual[0], "" if v.actual is None else v.actual[1],
@@ -96,7 +97,7 @@ def write_plot(path: pathlib.Path, verdicts: Sequence[Verdict], scenario: Scenar
 def write_outputs(out: pathlib.Path, result: TestbenchResult, scenario: Scenario, title: str) -> list[str]:
     """Write ``trace.csv``, ``trajectory.png`` (if matplotlib) and ``delays.md`` into ``out``; returns a
     line about each."""
-    write_trace(out / "trace.csv", result.verdicts, result.reflected_at, result.precision)
+    write_trace(out / "trace.csv", result.verdicts, result.reflected_at, result.precision, result.bench_clock)
     (out / "delays.md").write_text(format_table(result.delays))
     return [f"trace: {out / 'trace.csv'}", write_plot(out / "trajectory.png", result.verdicts, scenario, title),
             f"delay table: {out / 'delays.md'}"]

@@ -13,6 +13,9 @@ messages per second (rates), keyed as the bench tests record them:
     fom.10mb, fom.10mb.rtig                 a generated 10 MB FOM: parse time; createFederationExecution +
                                             destroyFederationExecution with it against rtig
     world.robot_steps.N                     robot-world robot-steps per second with N robots
+    besteffort.udp.loss1 / .tcp.loss1       send-to-receive latency of a 200 Hz best-effort stream with 1 % of
+                                            the gateway port's packets lost each way, over datagrams / TCP
+                                            (and .delivered: the share that arrived)
 """
 
 from __future__ import annotations
@@ -121,7 +124,25 @@ class Report:
         sections.append(("FOM parse (generated .fed)", _present(fom)))
         world = [self._world_row(n) for n in WORLD_ROBOTS]
         sections.append(("Robot world: robot-steps per second (no RTI)", _present(world)))
+        lossy = [self._loss_row(path) for path in ("udp", "tcp")]
+        sections.append(("Best-effort stream, 200 Hz, 1 % of the gateway port's packets lost each way (loopback "
+                         "in a namespace, nftables)", _present(lossy)))
         return sections
+
+    def _loss_row(self, path: str) -> Optional[Row]:
+        """No floor: the figure is the comparison of the two paths under the same loss."""
+        values = self.samples.get(f"besteffort.{path}.loss1")
+        delivered = self.samples.get(f"besteffort.{path}.loss1.delivered")
+        if not values or not delivered:
+            return None
+        other = "tcp" if path == "udp" else "udp"
+        return Row(f"over {'datagrams' if path == 'udp' else 'TCP'}: {delivered[0]:.1%} delivered",
+                   _us(statistics.median(values)), _us(p99(values)), "", "",
+                   f"p99 {self._p99_ratio(path, other)} the {other.upper()} stream's")
+
+    def _p99_ratio(self, key: str, other: str) -> str:
+        mine, theirs = self.samples.get(f"besteffort.{key}.loss1"), self.samples.get(f"besteffort.{other}.loss1")
+        return f"{p99(mine) / p99(theirs):.2f}×" if mine and theirs else "–"
 
     def _floor_row(self, figure: str, prefix: str, size: Optional[int] = None, half: bool = False) -> Optional[Row]:
         suffix = f".{size}" if size is not None else ""
@@ -204,6 +225,7 @@ def expected_keys() -> list[str]:
     keys += [f"grant.rtig.{k}" for k in FEDERATES] + [f"grant.pure.{k}" for k in FEDERATES]
     keys += [f"update.{kind}.{s}" for s in PAYLOADS for kind in ("floor.py", "floor.cpp", "ro", "tso")]
     keys += [f"throughput.{n}" for n in SUBSCRIBERS]
+    keys += [f"besteffort.{path}.loss1{part}" for path in ("udp", "tcp") for part in ("", ".delivered")]
     return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
 
 

@@ -5,6 +5,8 @@
 # docs/performance.md and docs/grant-latency.png.
 source "$(dirname "$0")/env.sh"
 install_hlacore bench
+command -v nft >/dev/null 2>&1 \
+    || debian_install "nft drops packets in the namespace of the best-effort loss bench (bench/lossy_stream.py)" nftables
 [ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build
 .venv/bin/cmake -S . -B build/bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DHLACORE_BENCH=ON -DHLACORE_PYTHON=OFF \

@@ -8,6 +8,8 @@ source "$(dirname "$0")/env.sh"
 ./scripts/install-ros.sh   # ROS 1 from Debian for the ROS bridge tests (docs/ros-bridge.md)
 command -v ip >/dev/null 2>&1 \
     || debian_install "the ip command makes the test hosts (network namespaces) of tests/test_link.py" iproute2
+command -v nft >/dev/null 2>&1 \
+    || debian_install "nft drops packets in the namespace of the best-effort loss bench (bench/lossy_stream.py)" nftables
 install_hlacore test
 [ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build

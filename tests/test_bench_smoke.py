@@ -11,11 +11,13 @@ import pytest
 from bench.floor import PyEcho, PySink, cpp_rtt_ns, cpp_stream_rate
 from bench.fomgen import generate_fed
 from bench.lockstep import Lockstep
+from bench.lossy_stream import stream_through_loss
 from bench.outputs import results_markdown
 from bench.pingpong import PingPong
 from bench.report import Report, expected_keys
 from bench.save_restore import SaveRestore
 from bench.throughput import Fanout
+from conftest import rtig_executable
 from hlacore import _core
 
 
@@ -123,6 +125,18 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     assert "| receive order one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× C++ one-way: met (1.00×) |" in text
     assert "200.0 k/s (1600.0 k/s in all)" in text
     assert "≥ 200 000/s: met" in text and text.count("< 20 ms: met") == 2
+
+
+@pytest.mark.parametrize("datagrams", [True, False], ids=["udp", "tcp"])
+def test_lossy_stream_body(datagrams: bool) -> None:
+    """The loss bench in its namespace with 2 % loss each way: the stream takes the path asked for; over TCP
+    nothing is lost (it is sent again), over datagrams some is (odds of losing none of 200 on two lossy hops:
+    0.98^400, 0.03 %)."""
+    result = stream_through_loss(rtig_executable(), 0.02, 200, 200.0, datagrams)
+    assert result["path"] is datagrams
+    received = len(result["latencies"])
+    assert (received < 200) if datagrams else (received == 200), received
+    assert all(0 < latency < 30 for latency in result["latencies"])
 
 
 def test_save_restore_body(inprocess_gateway) -> None:

@@ -168,6 +168,12 @@ def test_the_in_process_gateway_takes_the_same_flow_control_knobs(capfd: pytest.
             obj = alice.registerObjectInstance(legit.robot, "heavy")
             for _ in range(120):  # 7.5 MiB: beyond the budget and what the kernel buffers hold
                 alice.updateAttributeValues(obj, {legit.location: bytes(64 << 10)}, "heavy")
+            # The sends may all be in the kernel's buffers already: wait for the drop without reading a byte
+            # (reading until EOF would make the sloth a reader).
+            deadline = time.monotonic() + 30
+            while any(f["name"] == "sloth" for f in gw.status()["federations"][0]["federates"]):
+                assert time.monotonic() < deadline, "the sloth was not dropped"
+                time.sleep(0.1)
             sloth.wait_eof(timeout=10)
         legit.check_working()
     err = capfd.readouterr().err

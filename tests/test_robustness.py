@@ -165,7 +165,8 @@ class RawClient:
         assert code == T["Welcome"]
         c = Cursor(payload)
         version, server, max_frame, challenge = c.take("<H"), c.string(), c.take("<I"), c.string()
-        assert c.pos == len(payload) and challenge == b"" 
+        self.datagram_token, self.max_datagram = c.take("<Q"), c.take("<I")
+        assert c.pos == len(payload) and challenge == b""
         return version, server, max_frame
 
     def call(self, message: str, payload_after_request: bytes) -> Reply:
@@ -472,7 +473,8 @@ def test_a_connection_that_never_says_hello_times_out(tmp_path: pathlib.Path) ->
         (hello(magic=0xDEADBEEF), "expected a Hello handshake, got Hello"),
         (hello(version=99), f"protocol version 99 is not supported (gateway speaks {VERSION})"),
         (frame("JoinFederation", u32(1) + string("sneaky") + string("TestFed")), "expected a Hello handshake, got JoinFederation"),
-        (frame("Welcome", u16(1) + string("me") + u32(64) + string("")), "expected a Hello handshake, got Welcome"),
+        (frame("Welcome", u16(1) + string("me") + u32(64) + string("") + struct.pack("<QI", 0, 0)),
+         "expected a Hello handshake, got Welcome"),
         (frame("Hello", u32(MAGIC) + u16(VERSION) + b"extra"), "trailing bytes in Hello message"),
         (frame("Hello", u32(MAGIC)), "truncated field in Hello message"),
         (frame(0x7777, b""), "unknown message type 30583"),

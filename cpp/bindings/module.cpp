@@ -21,8 +21,10 @@ class BackgroundGateway {
 public:
     BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose,
                       const std::string& save_dir, std::string trace_path, std::size_t client_budget,
-                      double stall_timeout, std::uint32_t max_frame, const std::string& secret_file) {
+                      double stall_timeout, std::uint32_t max_frame, const std::string& secret_file,
+                      std::uint32_t max_datagram) {
         GatewayOptions options;
+        options.max_datagram = max_datagram;
         if (!secret_file.empty()) options.secret = auth::read_secret_file(secret_file);  // RuntimeError, saying why
         options.max_frame_bytes = max_frame;
         options.client_budget = client_budget;
@@ -66,10 +68,10 @@ public:
     }
 };
 
-std::unique_ptr<Client> connect(const std::string& host, std::uint16_t port, double timeout,
-                                const std::string& secret_file) {
+std::unique_ptr<Client> connect_client(const std::string& host, std::uint16_t port, double timeout,
+                                       const std::string& secret_file, bool datagrams) {
     static PythonWaitHost wait_host;
-    ClientOptions options{timeout, &wait_host, ""};
+    ClientOptions options{timeout, &wait_host, "", datagrams};
     if (!secret_file.empty()) {
         try {
             options.secret = auth::read_secret_file(secret_file);
@@ -119,11 +121,12 @@ PYBIND11_MODULE(_core, m) {
 
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
-                      std::string, std::size_t, double, std::uint32_t, const std::string&>(),
+                      std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t>(),
              py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
              py::arg("trace_path") = "", py::arg("client_budget") = hlacore::GatewayOptions{}.client_budget,
              py::arg("stall_timeout") = hlacore::GatewayOptions{}.stall_timeout_s,
              py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes, py::arg("secret_file") = "",
+             py::arg("max_datagram") = hlacore::GatewayOptions{}.max_datagram,
              py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)
@@ -132,10 +135,30 @@ PYBIND11_MODULE(_core, m) {
 
     Ambassador rtia(m, "RTIAmbassadorBase");
     rtia
-        .def(py::init(&connect), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s,
-             py::arg("secret_file") = "")
+        .def(py::init(&connect_client), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s,
+             py::arg("secret_file") = "", py::arg("datagrams") = true)
         .def_property_readonly("address", &Client::address)
-        .def("fileno", &Client::fileno);
+        .def("fileno", &Client::fileno)
+        .def("_datagram_fileno", &Client::datagram_fileno)
+        .def("datagram_status", [](const Client& c) {
+                 const hlacore::DatagramStatus s = c.datagram_status();
+                 py::dict d;
+                 d["path"] = s.path;
+                 d["reason"] = s.reason;
+                 d["sent"] = s.counts.sent;
+                 d["send_failed"] = s.counts.send_failed;
+                 d["oversize"] = s.counts.oversize;
+                 d["received"] = s.counts.received;
+                 d["lost"] = s.counts.lost;
+                 d["reordered"] = s.counts.reordered;
+                 d["duplicates"] = s.counts.duplicates;
+                 d["early"] = s.counts.early;
+                 return d;
+             },
+             "Best effort over UDP (docs/networking.md): {'path': whether best-effort messages travel as datagrams, "
+             "'reason': why not, when not, then counts: 'sent', 'send_failed', 'oversize' (sent over TCP for their "
+             "size) of this federate's datagrams; 'received', 'lost', 'reordered', 'duplicates' of the gateway's, and "
+             "'early' (reflections ahead of their object's discovery, dropped)}.");
     bind_federation(rtia);
     bind_sync_points(rtia);
     bind_save_restore(rtia);

@@ -21,8 +21,8 @@ void on_signal(int) {
 int usage(int status) {
     std::fprintf(status ? stderr : stdout,
                  "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--client-budget B]\n"
-                 "            [--stall-timeout S] [--max-frame B] [--secret-file FILE | --no-secret] [--save-dir DIR]\n"
-                 "            [--trace FILE] [--verbose]\n"
+                 "            [--stall-timeout S] [--max-frame B] [--max-datagram B] [--secret-file FILE | --no-secret]\n"
+                 "            [--save-dir DIR] [--trace FILE] [--verbose]\n"
                  "       rtig [--secret-file FILE] --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
@@ -36,6 +36,9 @@ int usage(int status) {
                  "  --max-frame B      the largest message in bytes, both directions (default 67108864, 65536 to\n"
                  "                     1073741824): clients learn it when they connect and refuse larger values\n"
                  "                     at the call (ValueLengthExceeded)\n"
+                 "  --max-datagram B   best effort over UDP on the same port: the largest datagram (default 1400,\n"
+                 "                     256 to 65507; 0: none, everything over TCP); larger best-effort messages go\n"
+                 "                     over TCP (docs/networking.md)\n"
                  "  --secret-file FILE clients must prove they know the secret in FILE (readable by its owner only)\n"
                  "                     before anything else; required when HOST is not a loopback address\n"
                  "                     (docs/networking.md); with --status: the secret to show\n"
@@ -70,6 +73,7 @@ int print_status(const std::string& address, const std::string& secret) {
     try {
         hlacore::ClientOptions client_options;
         client_options.secret = secret;
+        client_options.datagrams = false;  // a status query sends nothing best effort
         hlacore::Client client(host.empty() ? "127.0.0.1" : host, static_cast<std::uint16_t>(port), client_options);
         std::printf("%s\n", client.query_status().c_str());
         return 0;
@@ -130,6 +134,13 @@ int main(int argc, char** argv) {
                 return usage(2);
             }
             options.max_frame_bytes = static_cast<std::uint32_t>(v);
+        } else if (arg == "--max-datagram") {
+            const double v = number("--max-datagram", 0, true);
+            if ((v != 0 && v < hlacore::kMinMaxDatagram) || v > hlacore::wire::kMaxDatagramLimit || v != static_cast<std::uint32_t>(v)) {
+                std::fprintf(stderr, "rtig: invalid --max-datagram '%s'\n", argv[i]);
+                return usage(2);
+            }
+            options.max_datagram = static_cast<std::uint32_t>(v);
         } else if (arg == "--secret-file") {
             const char* path = value("--secret-file");
             try {

@@ -615,7 +615,7 @@ class EventRetractionHandle:
     def serial(self) -> int:
         ...
 class BackgroundGateway:
-    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, fom_path: collections.abc.Sequence[str], verbose: bool, save_dir: str = '', trace_path: str = '', client_budget: typing.SupportsInt | typing.SupportsIndex = 67108864, stall_timeout: typing.SupportsFloat | typing.SupportsIndex = 30.0, max_frame: typing.SupportsInt | typing.SupportsIndex = 67108864, secret_file: str = '') -> None:
+    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, fom_path: collections.abc.Sequence[str], verbose: bool, save_dir: str = '', trace_path: str = '', client_budget: typing.SupportsInt | typing.SupportsIndex = 67108864, stall_timeout: typing.SupportsFloat | typing.SupportsIndex = 30.0, max_frame: typing.SupportsInt | typing.SupportsIndex = 67108864, secret_file: str = '', max_datagram: typing.SupportsInt | typing.SupportsIndex = 1400) -> None:
         ...
     def stop(self) -> None:
         ...
@@ -629,9 +629,11 @@ class BackgroundGateway:
     def running(self) -> bool:
         ...
 class RTIAmbassadorBase:
-    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, secret_file: str = '') -> None:
+    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, secret_file: str = '', datagrams: bool = True) -> None:
         ...
     def _create(self, arg0: str, arg1: str, arg2: str) -> None:
+        ...
+    def _datagram_fileno(self) -> int:
         ...
     def _dispatch(self, ambassador: typing.Any, stop_after_grant: bool, max_seconds: typing.SupportsFloat | typing.SupportsIndex) -> int:
         ...
@@ -702,6 +704,10 @@ class RTIAmbassadorBase:
     def createRegion(self, space: SpaceHandle, extent: collections.abc.Sequence[tuple[DimensionHandle, tuple[typing.SupportsInt | typing.SupportsIndex, typing.SupportsInt | typing.SupportsIndex]]]) -> RegionHandle:
         """
         Create a region of a routing space (HLA 1.3 §9.2) with one extent [(DimensionHandle, (lower, upper)), ...]: closed ranges within [MIN_EXTENT, MAX_EXTENT]; dimensions not given span the whole axis. The region belongs to this federate. Raises SpaceNotDefined, DimensionNotDefined, InvalidExtents.
+        """
+    def datagram_status(self) -> dict:
+        """
+        Best effort over UDP (docs/networking.md): {'path': whether best-effort messages travel as datagrams, 'reason': why not, when not, then counts: 'sent', 'send_failed', 'oversize' (sent over TCP for their size) of this federate's datagrams; 'received', 'lost', 'reordered', 'duplicates' of the gateway's, and 'early' (reflections ahead of their object's discovery, dropped)}.
         """
     def deleteObjectInstance(self, object: ObjectHandle, tag: typing.Any, time: typing.SupportsFloat | typing.SupportsIndex | None = None) -> typing.Any:
         """

@@ -62,13 +62,16 @@ class AsyncAmbassador:
     async def _readable(self) -> None:
         loop = asyncio.get_running_loop()
         ready = loop.create_future()
-        fd = self.rtia.fileno()
+        # The stream, and the datagrams of best-effort messages when they travel apart (docs/networking.md).
+        fds = [fd for fd in (self.rtia.fileno(), self.rtia._datagram_fileno()) if fd >= 0]
         def wake() -> None:
             if not ready.done():
                 ready.set_result(None)
 
-        loop.add_reader(fd, wake)
+        for fd in fds:
+            loop.add_reader(fd, wake)
         try:
             await ready
         finally:
-            loop.remove_reader(fd)
+            for fd in fds:
+                loop.remove_reader(fd)

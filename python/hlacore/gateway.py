@@ -31,10 +31,13 @@ class Gateway:
     ``max_frame`` is ``rtig --max-frame``: the largest message in bytes; clients learn it when they connect
     and raise ``ValueLengthExceeded`` at a call whose values would not fit. ``secret_file`` is ``rtig
     --secret-file``: clients prove they know the secret in it before anything else (docs/networking.md).
+    ``max_datagram`` is ``rtig --max-datagram``: best effort over UDP on the same port, the largest datagram
+    either side sends (larger best-effort messages go over TCP); 0 turns datagrams off.
     """
 
     MIN_CLIENT_BUDGET = 65536
     MAX_FRAME_RANGE = (65536, 1 << 30)
+    MAX_DATAGRAM_RANGE = (256, 65507)
 
     def __init__(
         self,
@@ -48,6 +51,7 @@ class Gateway:
         stall_timeout: float = 30.0,
         max_frame: int = 64 << 20,
         secret_file: Optional[str | os.PathLike[str]] = None,
+        max_datagram: int = 1400,
     ) -> None:
         if client_budget < self.MIN_CLIENT_BUDGET:
             raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
@@ -57,11 +61,15 @@ class Gateway:
         low, high = self.MAX_FRAME_RANGE
         if not low <= max_frame <= high:
             raise ValueError(f"max_frame must be between {low} and {high} bytes, not {max_frame}")
+        low, high = self.MAX_DATAGRAM_RANGE
+        if max_datagram != 0 and not low <= max_datagram <= high:
+            raise ValueError(f"max_datagram must be 0 or between {low} and {high} bytes, not {max_datagram}")
         self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose,
                                                 os.fspath(save_dir) if save_dir is not None else "",
                                                 os.fspath(trace) if trace is not None else "",
                                                 client_budget, stall_timeout, max_frame,
-                                                os.fspath(secret_file) if secret_file is not None else "")
+                                                os.fspath(secret_file) if secret_file is not None else "",
+                                                max_datagram)
 
     @property
     def host(self) -> str:

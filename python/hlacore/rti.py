@@ -157,6 +157,16 @@ def _resolve_secret_file(secret_file: Optional[str | os.PathLike[str]]) -> str:
     return os.environ.get("HLACORE_SECRET_FILE", "")
 
 
+def _resolve_datagrams(datagrams: Optional[bool]) -> bool:
+    """Whether to try best effort over UDP: `datagrams`, else not when $HLACORE_DATAGRAMS is 0, else yes."""
+    if datagrams is not None:
+        return bool(datagrams)
+    text = os.environ.get("HLACORE_DATAGRAMS", "1")
+    if text not in ("0", "1"):
+        raise _core.RTIinternalError(f"HLACORE_DATAGRAMS={text!r} must be 0 or 1")
+    return text == "1"
+
+
 class RTIAmbassador(_core.RTIAmbassadorBase):
     """A federate's connection to the RTI (HLA 1.3 RTIambassador).
 
@@ -174,12 +184,18 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     ``secret_file`` (else ``$HLACORE_SECRET_FILE``) names the file with the secret a gateway may ask for
     (``rtig --secret-file``): it is proven by challenge-response, never sent; a gateway that asks when none
     is given, or refuses it, raises :class:`AuthenticationFailed` (docs/networking.md).
+
+    ``datagrams`` (else ``$HLACORE_DATAGRAMS``, 0 or 1; default on): updates and interactions whose values
+    all travel ``best_effort`` and carry no timestamp go to the gateway as UDP datagrams, and the gateway
+    sends such reflections back the same way, when it offers them and datagrams get through (tried at
+    connect; otherwise one line on stderr and TCP). :meth:`datagram_status` tells which, with the counts.
     """
 
     def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None,
-                 secret_file: Optional[str | os.PathLike[str]] = None) -> None:
+                 secret_file: Optional[str | os.PathLike[str]] = None, datagrams: Optional[bool] = None) -> None:
         host, port = _resolve_address(address)
-        super().__init__(host, port, _resolve_timeout(timeout), _resolve_secret_file(secret_file))
+        super().__init__(host, port, _resolve_timeout(timeout), _resolve_secret_file(secret_file),
+                         _resolve_datagrams(datagrams))
         self._federate_ambassador: Any = None
 
     # ---- federation management ----

@@ -27,8 +27,12 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
     ``{"server", "address", "connections", "federations": [{"name", "fed", "objects", "sync_points",
     "federates": [{"handle", "name", "time", "lookahead", "regulating", "enabling_regulation", "constrained",
     "asynchronous_delivery", "pending": None | {"request": "TAR"|"TARA"|"NER"|"NERA"|"FQR", "time"},
-    "queued_tso", "queued_ro", "regions", "lbts", "output_bound"}]}]}`` ("regions": how many the federate
-    has, docs/ddm.md). On the wire infinite times are null; here
+    "queued_tso", "queued_ro", "regions", "lbts", "output_bound"}]}], "datagrams": {"port" (None: no
+    datagrams), "max_datagram", "stray", "federates": [{"federation", "federate", "path", "counts": {"sent",
+    "send_failed", "oversize", "received", "lost", "reordered", "duplicates", "held_back", "early"}}]}}``
+    ("regions": how many the federate has, docs/ddm.md; "datagrams": best effort over UDP,
+    docs/networking.md, sent/failed/oversize towards each federate and received/lost/reordered from it).
+    On the wire infinite times are null; here
     they are ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A gateway with a
     secret asks for it here too: ``secret_file``, else ``$HLACORE_SECRET_FILE``.
     """
@@ -43,7 +47,8 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
 
 def _raw_status(address: Optional[str], secret_file: Optional[str | os.PathLike[str]] = None) -> str:
     host, port = _resolve_address(address)
-    return str(_core.RTIAmbassadorBase(host, port, secret_file=_resolve_secret_file(secret_file))._status())
+    return str(_core.RTIAmbassadorBase(host, port, secret_file=_resolve_secret_file(secret_file),
+                                       datagrams=False)._status())
 
 
 def format_table(report: dict[str, Any], width: int = 80) -> str:
@@ -65,7 +70,26 @@ def format_table(report: dict[str, Any], width: int = 80) -> str:
             lines.append(f"  {f['handle']:>4} {f['name'][:name_width]:<{name_width}} {_number(f['time'], 10):>10} "
                          f"{_number(f['lookahead'], 7):>7} {switches} {pending:<14} {f['queued_tso']:>5} "
                          f"{f['queued_ro']:>5} {_number(f['lbts'], 10):>10}")
+    lines.extend(_datagram_lines(report))
     return "\n".join(line[:width] for line in "\n".join(lines).split("\n"))
+
+
+def _datagram_lines(report: dict[str, Any]) -> list[str]:
+    """Best effort over UDP: the gateway's port and each federate's counts (to it / from it)."""
+    datagrams = report.get("datagrams")
+    if not datagrams or datagrams["port"] is None:
+        return ["\ndatagrams: none (everything over TCP)"]
+    names = {(fed["name"], f["handle"]): f["name"] for fed in report["federations"] for f in fed["federates"]}
+    lines = [f"\ndatagrams on port {datagrams['port']} (at most {datagrams['max_datagram']} bytes; "
+             f"{datagrams['stray']} stray)"]
+    for f in datagrams["federates"]:
+        c = f["counts"]
+        who = names.get((f["federation"], f["federate"]), "?")
+        to_it = (f"to it {c['sent']} sent, {c['send_failed']} failed, {c['oversize']} by TCP for size"
+                 if f["path"] else "to it: TCP only")
+        lines.append(f"  {f['federate']:>4} {who} ({f['federation']}): {to_it}; from it {c['received']} received, "
+                     f"{c['lost']} lost, {c['reordered']} reordered, {c['held_back']} dropped held back")
+    return lines
 
 
 _FIXED_COLUMNS = 68  # the row's width without the name column

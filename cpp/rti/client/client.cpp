@@ -1,6 +1,7 @@
 #include "rti/client/client.hpp"
 
 #include "rti/auth.hpp"
+#include "rti/client/waiting.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -18,32 +19,11 @@ namespace hlacore {
 
 namespace {
 
-// Milliseconds left until `deadline` for poll(), at least 0.
-int ms_until(std::chrono::steady_clock::time_point deadline) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    return static_cast<int>(std::clamp<std::int64_t>(left.count() + 1, 0, 1 << 30));
-}
-
 std::string seconds(std::chrono::steady_clock::duration d) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1f s", std::chrono::duration<double>(d).count());
     return text;
 }
-
-// The host's begin_wait/end_wait around one blocking wait.
-class Waiting {
-public:
-    explicit Waiting(WaitHost* host) : host_(host), token_(host ? host->begin_wait() : nullptr) {}
-    ~Waiting() {
-        if (host_) host_->end_wait(token_);
-    }
-    Waiting(const Waiting&) = delete;
-    Waiting& operator=(const Waiting&) = delete;
-
-private:
-    WaitHost* host_;
-    void* token_;
-};
 
 }  // namespace
 
@@ -107,10 +87,17 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
         send(wire::Hello{});
         await_answer(deadline, [this] { return welcomed_; }, "no hlacore handshake");
         if (!challenge_.empty()) authenticate(deadline);
+        if (datagram_token_) {
+            if (options_.datagrams) open_datagram_path(deadline);
+            else datagram_reason_ = "datagrams turned off on this side";
+        } else {
+            datagram_reason_ = "the gateway offers no datagrams";
+        }
         clock_ = measure_clock(4);
     } catch (...) {
         if (fd_ >= 0) ::close(fd_);
-        fd_ = -1;
+        if (datagram_fd_ >= 0) ::close(datagram_fd_);
+        fd_ = datagram_fd_ = -1;
         throw;
     }
 }
@@ -190,6 +177,7 @@ ClockEstimate Client::clock_offset(double max_age_s) {
 
 Client::~Client() {
     if (fd_ >= 0) ::close(fd_);
+    if (datagram_fd_ >= 0) ::close(datagram_fd_);
 }
 
 // ---- plumbing ----
@@ -301,7 +289,7 @@ void Client::read_beside_send() {
     }
     reading_ = true;
     lock.unlock();
-    std::vector<wire::Message> got;
+    Arrivals got;
     read_socket(Clock::now(), got);
     lock.lock();
     reading_ = false;
@@ -384,7 +372,7 @@ Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
         reading_ = true;
         read_once = true;
         lock.unlock();
-        std::vector<wire::Message> got;
+        Arrivals got;
         WaitStatus status = WaitStatus::Ready;
         try {
             status = read_socket(std::min(deadline, liveness_deadline()), got);
@@ -404,8 +392,8 @@ Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
 }
 
 // Waits for readable data (up to the deadline), then reads everything available and decodes whole frames.
-Client::WaitStatus Client::read_socket(Clock::time_point deadline, std::vector<wire::Message>& got) {
-    pollfd p{fd_, POLLIN, 0};
+Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got) {
+    pollfd p[2] = {{fd_, POLLIN, 0}, {datagram_fd_, POLLIN, 0}};
     timespec ts{};
     const timespec* timeout = nullptr;
     if (deadline != Clock::time_point::max()) {
@@ -415,9 +403,11 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, std::vector<w
         ts.tv_nsec = static_cast<long>(left % 1000000000);
         timeout = &ts;
     }
-    int n = ::ppoll(&p, 1, timeout, nullptr);
+    int n = ::ppoll(p, datagram_path_ ? 2 : 1, timeout, nullptr);
     if (n < 0) return errno == EINTR ? WaitStatus::Interrupted : WaitStatus::Ready;
     if (n == 0) return WaitStatus::Timeout;
+    if (datagram_path_ && p[1].revents) read_datagrams(got.datagrams);
+    if (!p[0].revents) return WaitStatus::Ready;
     char chunk[65536];
     std::string reason;
     for (;;) {
@@ -438,7 +428,7 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, std::vector<w
     try {
         wire::Frame frame;
         while (std::size_t used = wire::next_frame(std::string_view(in_).substr(offset), frame, max_frame_bytes_)) {
-            got.push_back(wire::decode(frame));
+            got.stream.push_back(wire::decode(frame));
             offset += used;
         }
     } catch (const wire::WireError& e) {
@@ -473,8 +463,8 @@ void Client::check_liveness() {
 }
 
 // Keeps the federate's view current as messages arrive, then queues the callbacks.
-void Client::file(std::vector<wire::Message>& got) {
-    for (auto& m : got) {
+void Client::file(Arrivals& got) {
+    for (auto& m : got.stream) {
         if (auto* r = std::get_if<wire::Reply>(&m)) {
             replies_[r->request] = std::move(*r);
             continue;
@@ -483,6 +473,8 @@ void Client::file(std::vector<wire::Message>& got) {
             welcomed_ = true;
             max_frame_bytes_ = w->max_frame_bytes;
             challenge_ = std::move(w->challenge);
+            datagram_token_ = w->datagram_token;
+            max_datagram_ = w->max_datagram;
             continue;
         }
         if (auto* a = std::get_if<wire::Authenticated>(&m)) {
@@ -502,6 +494,16 @@ void Client::file(std::vector<wire::Message>& got) {
             announced_.insert(a->label);
         } else if (auto* s = std::get_if<wire::FederationSynchronized>(&m)) {
             announced_.erase(s->label);
+        }
+        callbacks_.push(std::move(m));
+    }
+    for (auto& m : got.datagrams) {
+        // A datagram may overtake the discovery of its object in the stream: HLA has no callback for that.
+        const auto* r = std::get_if<wire::ReflectAttributes>(&m);
+        if (r && !objects_.count(r->object)) {
+            std::lock_guard<std::mutex> lock(datagram_mu_);
+            ++datagram_stats_.early;
+            continue;
         }
         callbacks_.push(std::move(m));
     }

@@ -27,6 +27,7 @@
 #include "rti/exceptions.hpp"
 #include "rti/server/time_manager.hpp"
 #include "rti/wire/codec.hpp"
+#include "rti/wire/datagram.hpp"
 
 namespace hlacore {
 
@@ -49,6 +50,15 @@ struct ClientOptions {
     WaitHost* wait_host = nullptr;  // not owned; must outlive the client
     // Proven to a gateway that asks (its Welcome carries a challenge; rti/auth.hpp); never sent.
     std::string secret;
+    // Best effort over UDP when the gateway offers it and datagrams get through (client/datagrams.cpp).
+    bool datagrams = true;
+};
+
+// The client's datagram path: whether best-effort messages travel as datagrams, and the counts both ways.
+struct DatagramStatus {
+    bool path = false;
+    std::string reason;  // why not, when not
+    wire::DatagramStats counts;
 };
 
 // The offset of the gateway's steady clock from this process's (gateway = local + offset_s), known to within
@@ -78,6 +88,8 @@ public:
     // (a few round trips; docs/networking.md).
     ClockEstimate clock_offset(double max_age_s);
     int fileno() const { return fd_; }
+    int datagram_fileno() const { return datagram_path_ ? datagram_fd_ : -1; }  // beside fileno() for select()
+    DatagramStatus datagram_status() const;
 
     // ---- federation management ----
     void create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text);
@@ -261,6 +273,7 @@ private:
         // then only the registrant may delete), attributes offered by negotiated divestiture, awaited by
         // attributeOwnershipAcquisition(IfAvailable), and those the RTI asked this federate to release.
         fom::Handle privilege_attribute = 0;
+        std::map<fom::Handle, fom::Transport> transport;  // this federate's changes (HLA 1.3 §6.19), while it owns them
         std::set<fom::Handle> divesting;
         std::set<fom::Handle> acquiring;
         std::set<fom::Handle> acquiring_if_available;
@@ -275,6 +288,7 @@ private:
         }
         void lose(fom::Handle a) {
             owned.erase(a);
+            transport.erase(a);  // the gateway forgets it too
             divesting.erase(a);
             release_requested.erase(a);
             sync_privilege();
@@ -310,6 +324,10 @@ private:
     // Encodes and writes one message (client.cpp instantiates it for every message type).
     template <class M>
     void send(const M& message);
+    // An update or interaction whose values all travel best effort, without a timestamp: as a datagram when
+    // the path is up and it fits, else send() (client/datagrams.cpp).
+    template <class M>
+    void send_best_effort(const M& message);
     std::unique_lock<std::mutex> lock_send();  // send_mu_, waiting for another thread's send with the host released
     void write_send_buffer();  // under send_mu_
     void wait_writable(std::size_t sent);  // under send_mu_: the gateway is not reading (yet)
@@ -320,8 +338,20 @@ private:
     // Reads the socket until pred() holds (checked under mu_), the deadline passes or a signal arrives.
     template <class Pred>
     WaitStatus pump(Clock::time_point deadline, Pred pred);
-    WaitStatus read_socket(Clock::time_point deadline, std::vector<wire::Message>& got);
-    void file(std::vector<wire::Message>& got);  // under mu_
+    // What one read brought: frames from the stream, and best-effort messages from datagrams.
+    struct Arrivals {
+        std::vector<wire::Message> stream;
+        std::vector<wire::Message> datagrams;
+    };
+    WaitStatus read_socket(Clock::time_point deadline, Arrivals& got);
+    void file(Arrivals& got);  // under mu_
+    // Best effort over UDP (client/datagrams.cpp): proving the path at connect (falling back to TCP with one
+    // log line), reading what came, and whether an update or interaction may go as a datagram (mu_ held).
+    void open_datagram_path(Clock::time_point deadline);
+    void give_up_datagrams(const std::string& reason);
+    void read_datagrams(std::vector<wire::Message>& got);
+    bool best_effort(const LocalObject& obj, const wire::HandleValues& values) const;
+    bool best_effort(fom::Handle interaction_class) const;
     // The reading thread's liveness step: when to look again, a Ping when the gateway has been silent for
     // half the timeout, GatewayNotResponding (the connection closed) after the whole timeout.
     Clock::time_point liveness_deadline() const;
@@ -416,6 +446,20 @@ private:
     ClockEstimate clock_;
     // The gateway's frame limit, from its Welcome (both directions).
     std::atomic<std::uint32_t> max_frame_bytes_{wire::kMaxFrameBytes};
+    // Best effort over UDP: the socket (connected to the gateway's address), the token and size limit from
+    // the Welcome, whether the path is up (set once at connect), the last sequence number sent (under
+    // send_mu_), what came (the reading thread) and the counts (under datagram_mu_).
+    int datagram_fd_ = -1;
+    std::uint64_t datagram_token_ = 0;
+    std::uint32_t max_datagram_ = 0;
+    bool datagram_path_ = false;
+    std::string datagram_reason_;
+    std::uint64_t datagram_sequence_ = 0;
+    std::string datagram_buffer_;  // under send_mu_
+    wire::SequenceWindow datagram_window_;
+    mutable std::mutex datagram_mu_;
+    wire::DatagramStats datagram_stats_;
+    std::map<fom::Handle, fom::Transport> interaction_transport_;  // this federate's changes (HLA 1.3 §6.20), under mu_
     // Touched only by the thread that is reading.
     std::string in_;
     Clock::time_point last_heard_;  // when the gateway last sent a byte

@@ -97,6 +97,8 @@ void Client::undeclare_interaction(std::set<fom::Handle>& declared, fom::Handle 
 void Client::unpublish_interaction_class(fom::Handle cls) {
     undeclare_interaction<wire::UnpublishInteractionClass>(published_interactions_, cls,
                                                            ErrorCode::InteractionClassNotPublished, "published");
+    std::lock_guard<std::mutex> lock(mu_);
+    interaction_transport_.erase(cls);  // the gateway forgets the class's transport change too
 }
 
 void Client::subscribe_interaction_class(fom::Handle cls, bool active) {

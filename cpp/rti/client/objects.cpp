@@ -33,6 +33,7 @@ void Client::add_registered(std::uint32_t object, fom::Handle cls, const std::st
 std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues values, const std::string& tag,
                                         wire::OptionalTime time) {
     wire::UpdateAttributes update{object, std::move(values), tag, time, 0};
+    bool datagram = false;
     {
         std::lock_guard<std::mutex> lock(mu_);
         const LocalObject& obj = known_object(object);
@@ -48,8 +49,13 @@ std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues
         }
         check_forwardable(update, "updateAttributeValues");
         update.serial = next_serial(time);
+        datagram = !time && best_effort(obj, update.values);
     }
-    send(update);
+    if (datagram) {
+        send_best_effort(update);
+    } else {
+        send(update);
+    }
     return update.serial;
 }
 
@@ -69,14 +75,20 @@ const fom::InteractionClass& Client::check_sendable(fom::Handle cls, const wire:
 std::uint64_t Client::send_interaction(fom::Handle cls, wire::HandleValues values, const std::string& tag,
                                        wire::OptionalTime time) {
     wire::SendInteraction interaction{cls, std::move(values), tag, time, 0};
+    bool datagram = false;
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_not_saving_or_restoring("sendInteraction");
         check_sendable(cls, interaction.values);
         check_forwardable(interaction, "sendInteraction");
         interaction.serial = next_serial(time);
+        datagram = !time && best_effort(cls);
     }
-    send(interaction);
+    if (datagram) {
+        send_best_effort(interaction);
+    } else {
+        send(interaction);
+    }
     return interaction.serial;
 }
 
@@ -192,6 +204,9 @@ void Client::change_attribute_delivery(std::uint32_t object, const std::vector<f
                 raise(ErrorCode::AttributeNotOwned, "attribute '" + cls.attribute(a)->name + "' of object '" +
                                                         obj.name + "' is not owned by this federate");
         }
+        // Known here too: whether an update may go as a datagram (client/datagrams.cpp).
+        if (transport)
+            for (auto a : attributes) known_object(object).transport[a] = static_cast<fom::Transport>(transport);
     }
     send(wire::ChangeAttributeDelivery{object, attributes, order, transport});
 }
@@ -204,6 +219,7 @@ void Client::change_interaction_delivery(fom::Handle cls, std::uint8_t order, st
         if (!published_interactions_.count(cls))
             raise(ErrorCode::InteractionClassNotPublished,
                   "interaction class '" + c.qualified_name + "' is not published");
+        if (transport) interaction_transport_[cls] = static_cast<fom::Transport>(transport);
     }
     send(wire::ChangeInteractionDelivery{cls, order, transport});
 }

@@ -1,5 +1,6 @@
 #include "rti/server/gateway.hpp"
 #include "rti/auth.hpp"
+#include "rti/server/connection.hpp"
 #include "rti/server/status.hpp"
 
 #include <algorithm>
@@ -34,39 +35,6 @@ constexpr std::size_t kKeptBufferBytes = 1u << 20;
 // Released frames beyond this go through a connection's backlog rather than straight into its buffer.
 constexpr std::size_t kPacedBytes = 256u << 10;
 
-struct Gateway::Connection {
-    int fd = -1;
-    std::string peer;
-    std::string in;
-    std::size_t in_offset = 0;
-    std::string out;
-    std::size_t out_offset = 0;
-    // Released held messages waiting to enter `out` as the client takes what is there (at most kPacedBytes
-    // at a time), then `tail`: what was written for the client meanwhile, kept behind them.
-    std::deque<std::string> backlog;
-    std::size_t backlog_bytes = 0;
-    std::string tail;
-    bool greeted = false;
-    std::string challenge;  // sent in the Welcome while the gateway has a secret and the client has not answered
-    bool write_armed = false;
-    bool dirty = false;
-    FederationEntry* federation = nullptr;
-    FederateHandle federate = 0;
-    Clock::time_point partial_since{};
-    Clock::time_point accepted_at = Clock::now();
-    // Flow control: while paused the connection is not read (its frames wait in its socket) until the
-    // client it sends to (blocked_by, a descriptor) is below half its budget again.
-    bool paused = false;
-    int blocked_by = -1;
-    Clock::time_point paused_since{};
-    Clock::time_point keepalive_at{};
-    bool pause_logged = false;
-    bool idle = true;                // the output queue was empty at the end of the last flush
-    Clock::time_point progress_at{};  // since then: when the client last took bytes, or bytes were queued
-    std::int64_t read_ns = 0;  // when the bytes being decoded were read (message trace only)
-    std::size_t traced = 0;    // out[0, traced) went through the message trace
-};
-
 class Gateway::ConnectionOutbox : public Outbox {
 public:
     explicit ConnectionOutbox(Gateway& gateway) : gateway_(gateway) {}
@@ -91,6 +59,14 @@ public:
         for (auto& frame : frames) c.backlog.push_back(std::move(frame));
         c.backlog_bytes += total;
         gateway_.mark_dirty(c);
+    }
+    bool takes_datagrams(FederateHandle federate) const override {
+        auto it = peers_.find(federate);
+        return it != peers_.end() && it->second->datagram_path;
+    }
+    bool send_datagram(FederateHandle federate, std::string_view frame) override {
+        auto it = peers_.find(federate);
+        return it != peers_.end() && gateway_.send_datagram(*it->second, frame);
     }
     void held(FederateHandle federate) override {
         auto it = peers_.find(federate);
@@ -158,6 +134,10 @@ bool read_file(const std::string& path, std::string& text, std::size_t limit) {
 }  // namespace
 
 Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
+    if (options_.max_datagram != 0 && (options_.max_datagram < kMinMaxDatagram || options_.max_datagram > wire::kMaxDatagramLimit))
+        throw std::invalid_argument("max_datagram must be 0 or between " + std::to_string(kMinMaxDatagram) + " and " +
+                                    std::to_string(wire::kMaxDatagramLimit) + " bytes, not " +
+                                    std::to_string(options_.max_datagram));
     addrinfo hints{};
     hints.ai_family = AF_UNSPEC;
     hints.ai_socktype = SOCK_STREAM;
@@ -188,12 +168,14 @@ Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
     loop_.add(listen_fd_, EPOLLIN);
     loop_.add(wake_fd_, EPOLLIN);
     reserve_fd_ = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+    if (options_.max_datagram) open_datagrams(bound, len);
     if (!options_.trace_path.empty()) trace_ = std::make_unique<MessageTrace>(options_.trace_path);
 }
 
 Gateway::~Gateway() {
     for (auto& [fd, c] : connections_) ::close(fd);
     if (listen_fd_ >= 0) ::close(listen_fd_);
+    if (datagram_fd_ >= 0) ::close(datagram_fd_);
     if (wake_fd_ >= 0) ::close(wake_fd_);
     if (reserve_fd_ >= 0) ::close(reserve_fd_);
 }
@@ -206,8 +188,12 @@ void Gateway::stop() {
 void Gateway::run() {
     for (;;) {
         bool partial_pending = false;  // or a connection that has not said Hello yet
-        for (const auto& [fd, c] : connections_) partial_pending |= c->in.size() > c->in_offset || !c->greeted;
-        const auto& events = loop_.wait(partial_pending || !paused_.empty() ? 250 : -1);
+        bool writes_pending = false;   // a client whose socket takes no more for now
+        for (const auto& [fd, c] : connections_) {
+            partial_pending |= c->in.size() > c->in_offset || !c->greeted;
+            writes_pending |= c->write_armed;
+        }
+        const auto& events = loop_.wait(partial_pending || writes_pending || !paused_.empty() ? 250 : -1);
         for (const epoll_event& ev : events) {
             const int fd = ev.data.fd;
             if (fd == wake_fd_) {
@@ -221,6 +207,10 @@ void Gateway::run() {
                 accept_all();
                 continue;
             }
+            if (fd == datagram_fd_) {
+                on_datagrams();
+                continue;
+            }
             auto it = connections_.find(fd);
             if (it == connections_.end()) continue;
             if (ev.events & (EPOLLIN | EPOLLHUP | EPOLLERR)) on_readable(*it->second);
@@ -230,6 +220,7 @@ void Gateway::run() {
         flush_dirty();
         if (!paused_.empty()) service_paused();
         if (partial_pending) drop_stale_partials();
+        if (writes_pending) drop_stalled_readers();
         if (trace_) trace_->flush();
     }
 }
@@ -315,16 +306,8 @@ void Gateway::serve_frames(Connection& c) {
             on_frame(c, frame);
             if (!connections_.count(fd)) return;
             if (c.in_offset < c.in.size()) c.partial_since = Clock::now();
-            if (over_budget_ >= 0) {
-                // Give the consumer's kernel buffer its chance first: pausing a producer whose consumer takes
-                // everything at once would cost it a loop turn (up to 250 ms) per message.
-                auto consumer = connections_.find(over_budget_);
-                if (consumer != connections_.end()) flush(*consumer->second);
-                consumer = connections_.find(over_budget_);
-                if (consumer != connections_.end() && held_for(*consumer->second) > options_.client_budget)
-                    pause(c, *consumer->second);
-                if (!connections_.count(fd)) return;
-            }
+            pause_if_over_budget(c);
+            if (!connections_.count(fd)) return;
         }
     } catch (const wire::WireError& e) {
         close(fd, std::string("protocol error: ") + e.what());
@@ -341,6 +324,17 @@ void Gateway::serve_frames(Connection& c) {
     }
 }
 
+void Gateway::pause_if_over_budget(Connection& producer) {
+    if (over_budget_ < 0) return;
+    // Give the consumer's kernel buffer its chance first: pausing a producer whose consumer takes everything
+    // at once would cost it a loop turn (up to 250 ms) per message.
+    auto consumer = connections_.find(over_budget_);
+    if (consumer != connections_.end()) flush(*consumer->second);
+    consumer = connections_.find(over_budget_);
+    if (consumer != connections_.end() && held_for(*consumer->second) > options_.client_budget)
+        pause(producer, *consumer->second);
+}
+
 void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
     wire::Message message = wire::decode(frame);
     if (!c.greeted) {
@@ -352,7 +346,9 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
                                   std::to_string(wire::kProtocolVersion) + ")");
         c.greeted = true;
         if (!options_.secret.empty()) c.challenge = auth::random_challenge();
-        wire::encode(c.out, wire::Welcome{wire::kProtocolVersion, "hlacore rtig", options_.max_frame_bytes, c.challenge});
+        give_datagram_token(c);
+        wire::encode(c.out, wire::Welcome{wire::kProtocolVersion, "hlacore rtig", options_.max_frame_bytes, c.challenge,
+                                          c.datagram_token, c.datagram_token ? options_.max_datagram : 0});
         mark_dirty(c);
         return;
     }
@@ -408,6 +404,8 @@ void Gateway::answer(Connection& c, std::uint32_t request, F&& serve_request) {
     wire::encode(output(c), r);
     mark_dirty(c);
 }
+
+const std::string& Gateway::federation_name(const Connection& c) const { return c.federation->federation.name(); }
 
 Federation& Gateway::joined(const Connection& c) const {
     if (!c.federation) throw RtiError(ErrorCode::FederateNotExecutionMember, "not joined to a federation");
@@ -565,7 +563,9 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
             first = false;
             entry->federation.write_status(json);
         }
-        json += "]}";
+        json += "],\"datagrams\":";
+        write_datagram_status(json);
+        json += '}';
         return wire::Reply{0, 0, "", 0, std::move(json), "", 0};
     });
 }
@@ -654,8 +654,7 @@ void Gateway::update_events(Connection& c) {
 
 // Each turn of the loop while connections are paused: resumes those whose consumer is below half its
 // budget (or gone), sends the others a Pong now and then (their clients see the gateway alive while their
-// sends wait), logs a pause that lasts, and drops a consumer over budget that has taken nothing for
-// stall_timeout_s.
+// sends wait) and logs a pause that lasts (drop_stalled_readers drops a consumer that stopped reading).
 void Gateway::service_paused() {
     const auto now = Clock::now();
     std::vector<int> paused;
@@ -667,14 +666,6 @@ void Gateway::service_paused() {
         auto blocker = connections_.find(p.blocked_by);
         if (blocker != connections_.end() && held_for(*blocker->second) > options_.client_budget / 2) {
             Connection& c = *blocker->second;
-            const auto stalled = std::chrono::duration<double>(now - c.progress_at).count();
-            if (options_.stall_timeout_s > 0 && c.out.size() > c.out_offset && stalled > options_.stall_timeout_s) {
-                close(c.fd, "not reading: " + std::to_string(c.out.size() - c.out_offset) + " bytes queued, none taken for " +
-                                std::to_string(static_cast<int>(stalled)) + " s (budget " +
-                                std::to_string(options_.client_budget) + ")");
-                paused_.push_back(fd);  // resumed next turn, its blocker gone
-                continue;
-            }
             if (!p.pause_logged && now - p.paused_since > std::chrono::seconds(10)) {
                 p.pause_logged = true;
                 log("holding back " + p.peer + " for 10 s: " + c.peer + " holds " + std::to_string(held_for(c)) +
@@ -695,6 +686,22 @@ void Gateway::service_paused() {
         serve_frames(p);  // what it had already sent; may pause it again
     }
     flush_dirty();
+}
+
+// Drops the clients that hold more than half their budget and have taken nothing for stall_timeout_s, whether
+// or not a producer waits for them (it may have sent everything already); their producers resume next turn.
+void Gateway::drop_stalled_readers() {
+    if (options_.stall_timeout_s <= 0) return;
+    const auto now = Clock::now();
+    std::vector<std::pair<int, std::string>> stalled;
+    for (const auto& [fd, c] : connections_) {
+        const double idle = std::chrono::duration<double>(now - c->progress_at).count();
+        if (c->write_armed && idle > options_.stall_timeout_s && held_for(*c) > options_.client_budget / 2)
+            stalled.emplace_back(fd, "not reading: " + std::to_string(c->out.size() - c->out_offset) +
+                                         " bytes queued, none taken for " + std::to_string(static_cast<int>(idle)) +
+                                         " s (budget " + std::to_string(options_.client_budget) + ")");
+    }
+    for (const auto& [fd, why] : stalled) close(fd, why);
 }
 
 void Gateway::flush_dirty() {
@@ -803,6 +810,7 @@ void Gateway::close(int fd, const std::string& why) {
     if (it == connections_.end()) return;
     std::unique_ptr<Connection> c = std::move(it->second);
     connections_.erase(it);
+    if (c->datagram_token) datagram_tokens_.erase(c->datagram_token);
     loop_.remove(fd);
     ::close(fd);
     std::string who = c->peer;

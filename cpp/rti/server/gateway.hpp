@@ -7,11 +7,16 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
+
+#include <sys/socket.h>
 
 #include "rti/server/event_loop.hpp"
 #include "rti/server/federation.hpp"
 #include "rti/trace.hpp"
+#include "rti/wire/datagram.hpp"
 
 namespace hlacore {
 
@@ -33,7 +38,12 @@ struct GatewayOptions {
     // else; docs/networking.md.
     std::string secret;
     std::string trace_path;  // non-empty: write the message trace there (trace.hpp)
+    // Best effort over UDP, on the same port (server/datagrams.cpp, docs/networking.md): the largest datagram
+    // either side sends; larger best-effort messages go over TCP. 0: no datagrams, everything over TCP.
+    std::uint32_t max_datagram = wire::kDefaultMaxDatagram;
 };
+// The smallest max_datagram (or 0) a gateway takes: room for a header and a small message.
+constexpr std::uint32_t kMinMaxDatagram = 256;
 
 class Gateway {
 public:
@@ -72,6 +82,7 @@ private:
     template <class F>
     void answer(Connection& c, std::uint32_t request, F&& serve_request);
     Federation& joined(const Connection& c) const;  // throws FederateNotExecutionMember
+    const std::string& federation_name(const Connection& c) const;  // c is joined
     void close(int fd, const std::string& why);
     void flush(Connection& c);
     // What flush() writes next: released frames from the backlog (move_backlog), through the message trace.
@@ -88,8 +99,22 @@ private:
     void pause(Connection& producer, const Connection& consumer);
     void update_events(Connection& c);
     void service_paused();
+    void drop_stalled_readers();
+    // After serving a frame of `producer`: pauses it when a client it sent to is still over its budget once
+    // flushed.
+    void pause_if_over_budget(Connection& producer);
     std::string find_fed_file(const std::string& name) const;
     void log(const std::string& line) const;
+
+    // ---- best effort over UDP (server/datagrams.cpp) ----
+    // The datagram socket on the listening address (nothing, with a log line, when it cannot be had).
+    void open_datagrams(const sockaddr_storage& bound, socklen_t length);
+    void on_datagrams();
+    void on_datagram(std::string_view datagram, const sockaddr_storage& from, socklen_t length);
+    // Sends `frame` to c as a datagram when c takes them and it fits; false: it goes in the stream.
+    bool send_datagram(Connection& c, std::string_view frame);
+    void give_datagram_token(Connection& c);
+    void write_datagram_status(std::string& json) const;
 
     GatewayOptions options_;
     int listen_fd_ = -1;
@@ -103,6 +128,10 @@ private:
     std::vector<int> paused_;
     int over_budget_ = -1;  // a client found over its budget while the current frame was served
     std::unique_ptr<MessageTrace> trace_;
+    int datagram_fd_ = -1;
+    std::unordered_map<std::uint64_t, int> datagram_tokens_;  // token -> connection descriptor
+    std::uint64_t stray_datagrams_ = 0;  // not hlacore datagrams, unknown tokens, from the wrong address
+    std::string datagram_out_;  // the datagram being sent
 };
 
 }  // namespace hlacore

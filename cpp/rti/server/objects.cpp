@@ -92,6 +92,11 @@ std::string held_frame(const M& message) {
 template <class M>
 void Federation::deliver_receive_order(FederateHandle to, const M& message) {
     if (!time_.holds_receive_order(to)) {
+        if constexpr (std::is_same_v<M, wire::ReflectAttributes> || std::is_same_v<M, wire::ReceiveInteraction>) {
+            if (message.transport == static_cast<std::uint8_t>(fom::Transport::BestEffort) &&
+                outbox_.send_best_effort(to, message))
+                return;
+        }
         outbox_.send(to, message);
         return;
     }

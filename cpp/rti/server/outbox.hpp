@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rti/wire/codec.hpp"
@@ -41,6 +42,18 @@ public:
         std::string& out = buffer(federate);
         for (const auto& frame : frames) out.append(frame);
     }
+    // A best-effort receive-order message: sent as a datagram when the federate takes them and it fits
+    // (server/datagrams.cpp); false: the caller sends it in the stream.
+    template <class M>
+    bool send_best_effort(FederateHandle federate, const M& message) {
+        if ((holding && holding->count(federate)) || !takes_datagrams(federate)) return false;
+        thread_local std::string frame;  // in-process gateways may run on several threads
+        frame.clear();
+        wire::encode(frame, message);
+        return send_datagram(federate, frame);
+    }
+    virtual bool takes_datagrams(FederateHandle federate) const { (void)federate; return false; }
+    virtual bool send_datagram(FederateHandle federate, std::string_view frame) { (void)federate; (void)frame; return false; }
     // A message for `federate` was kept in the federation instead (time management holds it): the gateway
     // weighs it against the federate's budget like its output buffer.
     virtual void held(FederateHandle federate) { (void)federate; }

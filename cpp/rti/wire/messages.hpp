@@ -19,8 +19,9 @@ namespace hlacore::wire {
 
 constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // 2: initiateFederateRestore's nested records; 3: its SavedTime; 4: Welcome's frame limit, Ping and Pong;
-// 5: Welcome's challenge, Authenticate and Authenticated; 6: ClockProbe and ClockEcho
-constexpr std::uint16_t kProtocolVersion = 6;
+// 5: Welcome's challenge, Authenticate and Authenticated; 6: ClockProbe and ClockEcho; 7: Welcome's datagram
+// token and size limit, DatagramHello and DatagramPath
+constexpr std::uint16_t kProtocolVersion = 7;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -146,7 +147,10 @@ using OptionalTime = std::optional<double>;
     X(Authenticated)                 \
     /* clock offset to the gateway: federate -> gateway, and the answer */ \
     X(ClockProbe)                    \
-    X(ClockEcho)
+    X(ClockEcho)                     \
+    /* best effort over UDP (wire/datagram.hpp): a datagram each way, then federate -> gateway */ \
+    X(DatagramHello)                 \
+    X(DatagramPath)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply. Each has a `Gateway::serve(Connection&, const M&)` in cpp/rti/server/gateway.cpp,
@@ -154,7 +158,7 @@ using OptionalTime = std::optional<double>;
 #define HLACORE_GATEWAY_SERVICES(X)                                                                    \
     X(CreateFederation) X(DestroyFederation) X(JoinFederation) X(ResignFederation) X(RegisterObject)   \
     X(RegisterObjectWithRegion) X(RequestFederationSave) X(RequestFederationRestore) X(ReleaseResponse) \
-    X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate) X(ClockProbe)
+    X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate) X(ClockProbe) X(DatagramPath)
 
 // The requests of a joined federate that its Federation serves, by service group: each has a handler
 // `Federation::on(FederateHandle, const M&)` in cpp/rti/server/<group>.cpp, declared from this list.
@@ -223,7 +227,11 @@ struct Welcome {
     std::string server;
     std::uint32_t max_frame_bytes = kMaxFrameBytes;  // the gateway's frame limit, both directions
     std::string challenge;  // non-empty: the client must send Authenticate before anything else (rti/auth.hpp)
-    HLACORE_FIELDS(version, server, max_frame_bytes, challenge)
+    // Best effort over UDP (wire/datagram.hpp), on the gateway's port: the token of this connection's datagrams
+    // (0: the gateway takes none) and the largest datagram either side sends.
+    std::uint64_t datagram_token = 0;
+    std::uint32_t max_datagram = 0;
+    HLACORE_FIELDS(version, server, max_frame_bytes, challenge, datagram_token, max_datagram)
 };
 struct Authenticate {
     HLACORE_TYPE(Authenticate)
@@ -244,6 +252,19 @@ struct ClockEcho {
     std::uint64_t client_ns = 0;   // the probe's
     std::uint64_t gateway_ns = 0;  // when the gateway answered, on its steady clock
     HLACORE_FIELDS(sequence, client_ns, gateway_ns)
+};
+// The only frame of a datagram that is not a best-effort message: the client's first datagrams, and the
+// gateway's echo of each, which shows the client that datagrams get through both ways.
+struct DatagramHello {
+    HLACORE_TYPE(DatagramHello)
+    std::uint32_t attempt = 0;
+    HLACORE_FIELDS(attempt)
+};
+// Over the stream, once the client got the gateway's echo: the gateway may send it best-effort messages as
+// datagrams from now on.
+struct DatagramPath {
+    HLACORE_TYPE(DatagramPath)
+    HLACORE_NO_FIELDS()
 };
 struct Authenticated {
     HLACORE_TYPE(Authenticated)

@@ -1,0 +1,62 @@
+// A client's connection to the gateway: its buffers, flow-control state and datagram path, in one place for
+// the gateway's reactor (gateway.cpp) and its datagrams (datagrams.cpp).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <string>
+
+#include <sys/socket.h>
+
+#include "rti/server/gateway.hpp"
+#include "rti/wire/datagram.hpp"
+
+namespace hlacore {
+
+struct Gateway::Connection {
+    using Clock = std::chrono::steady_clock;
+
+    int fd = -1;
+    std::string peer;
+    std::string in;
+    std::size_t in_offset = 0;
+    std::string out;
+    std::size_t out_offset = 0;
+    // Released held messages waiting to enter `out` as the client takes what is there (at most kPacedBytes
+    // at a time), then `tail`: what was written for the client meanwhile, kept behind them.
+    std::deque<std::string> backlog;
+    std::size_t backlog_bytes = 0;
+    std::string tail;
+    bool greeted = false;
+    std::string challenge;  // sent in the Welcome while the gateway has a secret and the client has not answered
+    bool write_armed = false;
+    bool dirty = false;
+    FederationEntry* federation = nullptr;
+    FederateHandle federate = 0;
+    Clock::time_point partial_since{};
+    Clock::time_point accepted_at = Clock::now();
+    // Flow control: while paused the connection is not read (its frames wait in its socket) until the
+    // client it sends to (blocked_by, a descriptor) is below half its budget again.
+    bool paused = false;
+    int blocked_by = -1;
+    Clock::time_point paused_since{};
+    Clock::time_point keepalive_at{};
+    bool pause_logged = false;
+    bool idle = true;                // the output queue was empty at the end of the last flush
+    Clock::time_point progress_at{};  // since then: when the client last took bytes, or bytes were queued
+    std::int64_t read_ns = 0;  // when the bytes being decoded were read (message trace only)
+    std::size_t traced = 0;    // out[0, traced) went through the message trace
+    // Best effort over UDP (server/datagrams.cpp): the token of this connection's datagrams, where they come
+    // from (the address its DatagramHello came from), whether the client takes datagrams (its DatagramPath),
+    // the last sequence number sent to it, what came from it, and the counts.
+    std::uint64_t datagram_token = 0;
+    sockaddr_storage datagram_peer{};
+    socklen_t datagram_peer_length = 0;
+    bool datagram_path = false;
+    std::uint64_t datagram_sequence = 0;
+    wire::SequenceWindow datagram_window;
+    wire::DatagramStats datagrams;
+};
+
+}  // namespace hlacore

@@ -4,7 +4,9 @@ runs a gateway and federates "on different machines" (issue 16).
 Host k gets 10.213.k.1 inside its namespace; the root namespace holds 10.213.k.254 on the other end. There
 is no route between the hosts: whatever crosses from one to another goes through a relay that the test runs
 in the root namespace (hlacore.link.Link, listening on a host's .254 address and connecting to another
-host's .1), which is where the emulated link sits. Everything is removed at the end, also after a failure;
+host's .1), which is where the emulated link sits. ``lan(a, b)`` wires two hosts directly instead (a veth
+pair between their namespaces, 10.214.n.1 and .2), for traffic a relay cannot carry (ROS 1 nodes connect
+to each other on ports they choose). Everything is removed at the end, also after a failure;
 names carry this process's pid so that parallel runs do not collide.
 """
 
@@ -19,6 +21,7 @@ from typing import Iterator
 import pytest
 
 SUBNET = "10.213"
+LAN_SUBNET = "10.214"
 
 
 @dataclass(frozen=True)
@@ -37,6 +40,7 @@ class NetHosts:
     def __init__(self) -> None:
         self.hosts: list[Host] = []
         self._links: list[str] = []
+        self._lans: list[tuple[str, str]] = []  # (namespace, one end of the pair)
         self._tag = f"hlc{os.getpid() % 100000}"
 
     def add(self, name: str) -> Host:
@@ -57,7 +61,22 @@ class NetHosts:
             _ip("-n", namespace, *args)
         return host
 
+    def lan(self, a: Host, b: Host) -> tuple[str, str]:
+        """A direct link between hosts `a` and `b`; returns their addresses on it."""
+        n = len(self._lans) + 1
+        end_a, end_b = f"{self._tag}a{n}", f"{self._tag}b{n}"
+        ips = (f"{LAN_SUBNET}.{n}.1", f"{LAN_SUBNET}.{n}.2")
+        _ip("link", "add", end_a, "netns", a.namespace, "type", "veth", "peer", "name", end_b, "netns", b.namespace)
+        self._lans.append((a.namespace, end_a))
+        for host, end, ip in ((a, end_a, ips[0]), (b, end_b, ips[1])):
+            _ip("-n", host.namespace, "addr", "add", f"{ip}/24", "dev", end)
+            _ip("-n", host.namespace, "link", "set", end, "up")
+        return ips
+
     def close(self) -> None:
+        for namespace, end in self._lans:
+            subprocess.run(["ip", "-n", namespace, "link", "del", end], capture_output=True)
+        self._lans.clear()
         for link in self._links:  # deleting one end removes the pair
             subprocess.run(["ip", "link", "del", link], capture_output=True)
         for host in self.hosts:

@@ -3,6 +3,7 @@ run is interrupted (Ctrl-C), and an interrupted main job keeps its partial trace
 
 from __future__ import annotations
 
+import os
 import pathlib
 import signal
 import socket
@@ -34,11 +35,24 @@ def test_main_job_with_a_dead_gateway_says_so_in_one_line(tmp_path: pathlib.Path
 
 
 def test_mirror_with_a_dead_gateway_says_so_in_one_line(tmp_path: pathlib.Path) -> None:
+    """... and leaves no ROS process behind (roscore, stopped right after it started, once left rosmaster
+    and rosout running: they have process groups of their own)."""
     require_ros()
     address = dead_address()
-    done = run("hlacore.experiments.mirror", str(tmp_path / "out"), "--rtig", address)
+    done = subprocess.run([sys.executable, "-m", "hlacore.experiments.mirror", str(tmp_path / "out"), "--rtig",
+                           address], capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL,
+                          env={**os.environ, "TMPDIR": str(tmp_path)})
     assert done.returncode == 1, done.stderr
     assert "Traceback" not in done.stderr and f"cannot connect to rtig at {address}" in done.stderr
+    left = [p for p in pathlib.Path("/proc").iterdir() if p.name.isdigit() and _mentions(p, str(tmp_path))]
+    assert not left, [(p.name, (p / "cmdline").read_bytes()) for p in left]
+
+
+def _mentions(proc: pathlib.Path, text: str) -> bool:
+    try:
+        return text.encode() in (proc / "cmdline").read_bytes()
+    except OSError:
+        return False
 
 
 def test_interrupted_main_job_keeps_its_partial_trace_and_plot(tmp_path: pathlib.Path) -> None:

@@ -22,7 +22,7 @@ import sys
 import threading
 import time
 import xmlrpc.client
-from typing import Any, Iterator, Optional
+from typing import Any, Iterator, Optional, Sequence
 
 import pytest
 
@@ -103,22 +103,24 @@ class Lines:
 
 
 @contextlib.contextmanager
-def running_roscore(home: pathlib.Path) -> Iterator[dict[str, str]]:
-    """A real roscore on a free loopback port, its ROS_HOME (and log) in `home`, stopped by pid at the end;
-    yields the environment for ROS processes."""
+def running_roscore(home: pathlib.Path, ip: str = "127.0.0.1", prefix: Sequence[str] = (),
+                    reach: str = "127.0.0.1") -> Iterator[dict[str, str]]:
+    """A real roscore on a free port, its ROS_HOME (and log) in `home`, stopped by pid at the end; yields
+    the environment for ROS processes. On another host: `prefix` runs it there, `ip` is its address there
+    (the master's URI), `reach` where this process reaches it to see it up."""
     home.mkdir(parents=True, exist_ok=True)
     port = free_port()
-    env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1", ROS_HOME=str(home),
+    env = dict(os.environ, ROS_MASTER_URI=f"http://{ip}:{port}", ROS_IP=ip, ROS_HOME=str(home),
                ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
     env.pop("ROS_HOSTNAME", None)
     with open(home / "roscore.log", "wb") as log:
-        proc = subprocess.Popen(["roscore", "-p", str(port)], stdout=log, stderr=subprocess.STDOUT,
+        proc = subprocess.Popen([*prefix, "roscore", "-p", str(port)], stdout=log, stderr=subprocess.STDOUT,
                                 stdin=subprocess.DEVNULL, env=env)
         try:
             deadline = time.monotonic() + 30
             while True:
                 try:
-                    with xmlrpc.client.ServerProxy(env["ROS_MASTER_URI"]) as master:
+                    with xmlrpc.client.ServerProxy(f"http://{reach}:{port}") as master:
                         master.getPid("/hlacore_test")
                     break
                 except OSError:

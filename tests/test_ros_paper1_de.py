@@ -19,11 +19,15 @@ from typing import Any, Iterator
 
 import pytest
 from conftest import Federate
-from test_ros_bridge import WORLD, f32, ros, roscore, running, start_bridge, start_teleop  # noqa: F401
+from conftest import RtigProcess
+from nethosts import NetHosts, nethosts  # noqa: F401 (the fixture)
+from test_ros_bridge import (WORLD, f32, ros, roscore, running, running_roscore, start_bridge,  # noqa: F401
+                             start_teleop)
 
 import hlacore.rti as rti
 from hlacore import omt
-from hlacore.experiments.paper1 import scenario as paper1
+from hlacore.experiments.paper1 import chain, scenario as paper1
+from hlacore.link import Direction, Link
 from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, codec, load_world
 from hlacore.federates.ros_bridge.stage_node import last_step_at_or_before
 
@@ -109,6 +113,36 @@ def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_addre
     lines = (out / "paper1-de-trace.csv").read_text().splitlines()
     assert len(lines) == 301 and lines[0].startswith("time,distance,avatar_speed,avatar_x")
     assert (out / "paper1-de-snapshot.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_paper1_chain_with_world_bridge_and_controller_on_hosts_of_their_own(ros: None, nethosts: NetHosts,
+                                                                          tmp_path: pathlib.Path) -> None:
+    """Paper 1's chain across machines (issue 16): the stage node (the world) on host "world", the bridge and
+    roscore on host "bridge", the DE controller federate on host "control", rtig on this one. The world and
+    the bridge share a LAN for ROS (nodes connect on ports they choose); the bridge and the controller reach
+    the gateway only through emulated links (2 ms each way). The paper-1 checks pass, as on one machine."""
+    world, bridge, control = nethosts.add("world"), nethosts.add("bridge"), nethosts.add("control")
+    world_ip, bridge_ip = nethosts.lan(world, bridge)
+    two_ms = Direction(delay=0.002)
+    with RtigProcess(tmp_path) as server, \
+            Link((bridge.router, 0), ("127.0.0.1", server.port), up=two_ms, down=two_ms, seed=1) as bridge_link, \
+            Link((control.router, 0), ("127.0.0.1", server.port), up=two_ms, down=two_ms, seed=2) as control_link, \
+            running_roscore(tmp_path / "ros", ip=bridge_ip, prefix=bridge.exec_prefix(), reach=bridge.address) as env:
+        master = env["ROS_MASTER_URI"]
+        ros_env = {k: env[k] for k in ("ROS_HOME", "ROS_LOG_DIR")}
+        result = chain.run(server.address, str(tmp_path / "out"), hosts={
+            "world": chain.Placement(tuple(world.exec_prefix()), None,
+                                     dict(ros_env, ROS_MASTER_URI=master, ROS_IP=world_ip)),
+            "bridge": chain.Placement(tuple(bridge.exec_prefix()), bridge_link.address,
+                                      dict(ros_env, ROS_MASTER_URI=master, ROS_IP=bridge_ip)),
+            "controller": chain.Placement(tuple(control.exec_prefix()), control_link.address),
+        })
+    summary = result.summary()
+    print(f"\npaper 1 across hosts: {json.dumps(summary)}")
+    assert result.checks == {"no_stall": True, "no_overlap": True, "obstacles_crossed": True, "held_back": True,
+                             "stopped_before_wall": True}, summary
+    assert summary["grants"] == 300 and summary["late_states"] == 0 and summary["late_acks"] == 0
+    assert control_link.counters["up"].bytes > 0 and bridge_link.counters["up"].bytes > 0
 
 
 def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(

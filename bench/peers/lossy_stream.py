@@ -29,7 +29,8 @@ class Receiver(rti.FederateAmbassador):
 
 
 def main():
-    executable, port, count, rate, datagrams = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), sys.argv[5] == "1"
+    executable, port, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+    rate, datagrams = float(sys.argv[4]), sys.argv[5] == "1"
     with Rtig("--port", str(port), executable=executable) as server:
         address = f"127.0.0.1:{server.port}"
         creator = rti.RTIAmbassador(address, timeout=30)
@@ -43,7 +44,8 @@ def main():
         value = sender.getParameterHandle("value", reply)
         sender.publishInteractionClass(reply)
         receiver.subscribeInteractionClass(reply)
-        time.sleep(0.2)  # the subscription reaches the gateway before the stream starts
+        for fed in (sender, receiver):  # a round trip each: the gateway has the publication and subscription
+            fed.queryLBTS()
         done = threading.Event()
 
         def stream():

@@ -42,6 +42,20 @@ SNAPSHOT = "paper1-de-snapshot.png"
 PLOT = "paper1-de-trajectories.png"
 
 
+@dataclass(frozen=True)
+class Placement:
+    """Where one of the chain's processes runs: ``prefix`` runs its command in place on another host (``ip
+    netns exec HOST``), ``rtig`` is the gateway's address from there (None: the run's), ``env`` its ROS
+    variables there (``ROS_IP``, ``ROS_MASTER_URI``)."""
+
+    prefix: tuple[str, ...] = ()
+    rtig: Optional[str] = None
+    env: dict[str, str] = field(default_factory=dict)
+
+
+ROLES = ("world", "controller", "bridge")
+
+
 @dataclass
 class ChainResult(Result):
     """A :class:`~.checks.Result` from the stage node's ticks, plus the DE federate's view."""
@@ -61,9 +75,15 @@ class ChainResult(Result):
 
 
 def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, timeout: float = 60.0,
-        state_timeout: float = 5.0) -> ChainResult:
+        state_timeout: float = 5.0, hosts: Optional[dict[str, Placement]] = None) -> ChainResult:
     """Play the scenario on the gateway at ``address`` with the ROS master of ``$ROS_MASTER_URI``; the
-    children's files (world file, summaries, snapshot) go to ``outdir``."""
+    children's files (world file, summaries, snapshot) go to ``outdir``. ``hosts`` places the stage node
+    ("world"), the DE federate ("controller") and the bridge each on a host of its own (docs/networking.md);
+    ``outdir`` must then be readable and writable from every host (namespaces share the file system)."""
+    unknown = set(hosts or {}) - set(ROLES)
+    if unknown:
+        raise ValueError(f"unknown roles {sorted(unknown)}: the chain's are {ROLES}")
+    place = {role: (hosts or {}).get(role, Placement()) for role in ROLES}
     out = pathlib.Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     world_file = out / "paper1.world"
@@ -76,17 +96,22 @@ def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, 
     result = ChainResult()
     try:
         with Children(dict(os.environ)) as kids:
+            world, control, bridge_host = place["world"], place["controller"], place["bridge"]
             stage = kids.start("stage node", ["-m", "hlacore.federates.ros_bridge.stage_node", str(world_file),
-                                              "--summary", str(stage_json), "--snapshot", str(out / SNAPSHOT)])
+                                              "--summary", str(stage_json), "--snapshot", str(out / SNAPSHOT)],
+                               world.prefix, world.env)
             stage.wait_for("stage_node ready", timeout)
-            de = kids.start("DE federate", ["-m", "hlacore.experiments.paper1.de_controller", "--rtig", address,
-                                            "--duration", repr(duration), "--period", repr(period),
-                                            "--timeout", repr(timeout), "--out", str(de_json)])
+            de = kids.start("DE federate", ["-m", "hlacore.experiments.paper1.de_controller",
+                                            "--rtig", control.rtig or address, "--duration", repr(duration),
+                                            "--period", repr(period), "--timeout", repr(timeout),
+                                            "--out", str(de_json)], control.prefix, control.env)
             de.wait_for("paper1_de joined", timeout)  # regulating before the bridge can advance
-            bridge = kids.start("bridge", ["-m", "hlacore.federates.ros_bridge", "--rtig", address,
-                                           "--world-node", str(world_file), "--acks", "--clock", "--period", repr(period),
+            bridge = kids.start("bridge", ["-m", "hlacore.federates.ros_bridge",
+                                           "--rtig", bridge_host.rtig or address, "--world-node", str(world_file),
+                                           "--acks", "--clock", "--period", repr(period),
                                            "--await-state", repr(state_timeout), "--wait-connections",
-                                           repr(timeout), "--until", repr(duration)])
+                                           repr(timeout), "--until", repr(duration)],
+                                bridge_host.prefix, bridge_host.env)
             bridge.wait_for("ros_bridge ready", timeout)
             de.wait_for("paper1_de ready", timeout)
             cycles = math.ceil(duration / period)

@@ -3,6 +3,7 @@ bounded waits, and ended by pid (SIGTERM, then SIGKILL if they linger) — never
 
 from __future__ import annotations
 
+import os
 import queue
 import signal
 import subprocess
@@ -30,11 +31,12 @@ def stop_process(proc: "subprocess.Popen[Any]", sig: int = signal.SIGTERM, timeo
 class Child:
     """One child process and the lines it printed (stdout and stderr merged)."""
 
-    def __init__(self, name: str, args: Sequence[str], env: Optional[dict[str, str]] = None) -> None:
+    def __init__(self, name: str, args: Sequence[str], env: Optional[dict[str, str]] = None,
+                 prefix: Sequence[str] = ()) -> None:
         self.name = name
         self.proc: subprocess.Popen[str] = subprocess.Popen(
-            [sys.executable, *args], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-            text=True, env=env)
+            [*prefix, sys.executable, *args], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+            stdin=subprocess.DEVNULL, text=True, env=env)
         self.seen: list[str] = []
         self._lines: "queue.Queue[Optional[str]]" = queue.Queue()
         self._reader = threading.Thread(target=self._read, name=f"{name}-stdout", daemon=True)
@@ -96,9 +98,11 @@ class Children:
         self.env = env
         self.children: list[Child] = []
 
-    def start(self, name: str, args: Sequence[str]) -> Child:
-        """Start ``python args...``."""
-        child = Child(name, args, self.env)
+    def start(self, name: str, args: Sequence[str], prefix: Sequence[str] = (),
+              env: Optional[dict[str, str]] = None) -> Child:
+        """Start ``python args...``, through ``prefix`` (a command that runs it in place, such as ``ip netns
+        exec HOST``) and with ``env`` added to the environment."""
+        child = Child(name, args, {**(self.env if self.env is not None else os.environ), **(env or {})}, prefix)
         self.children.append(child)
         return child
 

@@ -18,12 +18,16 @@ from typing import Iterator
 
 
 
-def master_online(uri: str) -> bool:
-    """Whether a ROS master answers at ``uri``."""
+def master_online(uri: str, with_rosout: bool = False) -> bool:
+    """Whether a ROS master answers at ``uri`` (and, ``with_rosout``, has rosout registered: roscore has
+    started everything it starts)."""
     try:
         with xmlrpc.client.ServerProxy(uri) as master:
             master.getPid("/hlacore")
-        return True
+            if not with_rosout:
+                return True
+            found = master.lookupNode("/hlacore", "/rosout")  # [code, message, URI]; code 1: registered
+            return isinstance(found, list) and found[0] == 1
     except OSError:
         return False
 
@@ -55,7 +59,8 @@ def ros_master(timeout: float = 30.0) -> Iterator[str]:
         started = False
         try:
             deadline = time.monotonic() + timeout
-            while not master_online(uri):
+            # Until rosout is up too: roscore stopped while still launching leaves what it launched behind.
+            while not master_online(uri, with_rosout=True):
                 if proc.poll() is not None or time.monotonic() > deadline:
                     raise RuntimeError(f"roscore did not start (log: {home}/roscore.log)")
                 time.sleep(0.1)
@@ -69,14 +74,17 @@ def ros_master(timeout: float = 30.0) -> Iterator[str]:
 
 def stop_group(proc: "subprocess.Popen[bytes]", sig: int, timeout: float = 15.0) -> None:
     """End the process group `proc` leads (started with start_new_session): `sig` to the group once, then
-    SIGKILL to what is left of it after `timeout` s."""
+    SIGKILL to what is left of it after `timeout` s. roscore puts rosmaster and rosout in groups of their own
+    and ends them itself; those of its descendants seen meanwhile that outlive it are ended by pid too."""
+    family = _descendants(proc.pid)
     with contextlib.suppress(ProcessLookupError):
         os.killpg(proc.pid, sig)
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
+        family |= _descendants(proc.pid)
         proc.poll()  # reap the leader, or the group would never look empty
         try:
-            os.killpg(proc.pid, 0)  # members of the group remain (roscore, rosmaster, rosout)?
+            os.killpg(proc.pid, 0)  # members of the group remain?
         except ProcessLookupError:
             break
         time.sleep(0.05)
@@ -84,6 +92,54 @@ def stop_group(proc: "subprocess.Popen[bytes]", sig: int, timeout: float = 15.0)
         with contextlib.suppress(ProcessLookupError):
             os.killpg(proc.pid, signal.SIGKILL)
     proc.wait()
+    _end_survivors(family, timeout)
+
+
+def _descendants(root: int) -> set[tuple[int, int]]:
+    """(pid, start time) of every live descendant of `root`, from /proc."""
+    children: dict[int, list[int]] = {}
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            stat = _stat(int(entry))
+            if stat:
+                children.setdefault(int(stat[1]), []).append(int(entry))
+    found, todo = set(), list(children.get(root, []))
+    while todo:
+        pid = todo.pop()
+        stat = _stat(pid)
+        if stat:
+            found.add((pid, int(stat[19])))
+        todo.extend(children.get(pid, []))
+    return found
+
+
+def _stat(pid: int) -> list[str]:
+    """The fields of /proc/PID/stat after the command name ([0] state, [1] ppid, [19] start time); [] when
+    the process is gone (or a zombie)."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            text = f.read()
+    except OSError:
+        return []
+    fields = text[text.rindex(")") + 2:].split()
+    return [] if fields[0] == "Z" else fields
+
+
+def _end_survivors(family: set[tuple[int, int]], timeout: float) -> None:
+    """SIGTERM, then SIGKILL after `timeout` s, to those of `family` still alive (the same start time: not a
+    reused pid)."""
+    def alive() -> list[int]:
+        return [pid for pid, start in family if (stat := _stat(pid)) and int(stat[19]) == start]
+
+    for sig in (signal.SIGTERM, signal.SIGKILL):
+        for pid in alive():
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(pid, sig)
+        deadline = time.monotonic() + timeout
+        while alive() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        if not alive():
+            return
 
 
 @contextlib.contextmanager

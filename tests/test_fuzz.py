@@ -1,5 +1,6 @@
-"""Short runs of the libFuzzer targets of cpp/fuzz (the wire decoder, the .fed parser, a gateway session), and
-replays of their seed corpus and of the inputs that once failed (cpp/fuzz/regressions/).
+"""Short runs of the libFuzzer targets of cpp/fuzz (the wire decoder, the .fed parser, a gateway session, the
+gateway's datagram port), and replays of their seed corpus and of the inputs that once failed
+(cpp/fuzz/regressions/).
 
 scripts/test.sh builds the targets (`scripts/fuzz.sh --build-only`, which installs clang when missing) and
 points $HLACORE_TEST_FUZZERS at them. Without them these tests skip, except under CI=true where they fail.
@@ -22,8 +23,9 @@ SEEDS = {
     "wire": [FUZZ / "corpus" / "wire"],
     "fed": [FED_DATA / "good", FED_DATA / "bad"],
     "gateway": [FUZZ / "corpus" / "wire"],
+    "datagram": [FUZZ / "corpus" / "wire"],
 }
-OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"], "gateway": []}
+OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"], "gateway": [], "datagram": []}
 TARGETS = list(SEEDS)
 FAILURE = re.compile(r"ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|deadly signal|SUMMARY:")
 

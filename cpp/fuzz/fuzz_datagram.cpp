@@ -1,0 +1,197 @@
+// libFuzzer target for the gateway's datagram port (best effort over UDP, cpp/rti/server/datagrams.cpp):
+// arbitrary datagram bodies from a joined federate whose datagram path is up.
+//
+// One Gateway runs on a background thread for the whole process (as in fuzz_gateway). For each input the
+// target connects, says Hello, reads the Welcome (the connection's datagram token), creates federation "F"
+// from cpp/fuzz/gateway.fed (an error reply when it exists) and joins it, proves the datagram path
+// (DatagramHello echoed, DatagramPath), then sends the input as datagrams: the input's whole frames one per
+// datagram (the wire seed corpus suits it), other bytes in pieces the input's bytes size. Every datagram
+// carries the right token; the first input byte chooses how the sequence numbers go (steps, repeats, going
+// back), to reach the loss and reorder counting. A QueryStatus round trip over the stream then shows the
+// gateway alive. Failures: a crash, a sanitizer report, an exception escaping the gateway thread, or no
+// answer within 10 s.
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <thread>
+
+#include "rti/server/gateway.hpp"
+#include "rti/wire/codec.hpp"
+#include "rti/wire/datagram.hpp"
+
+using namespace hlacore;
+
+namespace {
+std::uint16_t port = 0;
+std::string fed_text;
+unsigned counter = 0;
+
+[[noreturn]] void die(const char* what) {
+    std::fprintf(stderr, "fuzz_datagram: %s: %s\n", what, std::strerror(errno));
+    std::abort();
+}
+
+sockaddr_in gateway_address() {
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(port);
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    return addr;
+}
+
+void send_all(int fd, const std::string& bytes) {
+    for (std::size_t done = 0; done < bytes.size();) {
+        const ssize_t n = ::send(fd, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) die("send");
+        done += static_cast<std::size_t>(n);
+    }
+}
+
+// Reads frames from the stream until `done(message)` holds for one; dies after 10 s without it.
+template <class Done>
+void read_until(int fd, std::string& in, Done done) {
+    char buffer[65536];
+    for (;;) {
+        wire::Frame frame;
+        while (std::size_t used = wire::next_frame(in, frame)) {
+            const bool found = done(wire::decode(frame));
+            in.erase(0, used);
+            if (found) return;
+        }
+        pollfd p{fd, POLLIN, 0};
+        const int ready = ::poll(&p, 1, 10000);
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready <= 0) die("no answer from the gateway within 10 s");
+        const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) die("the gateway closed the stream");
+        in.append(buffer, static_cast<std::size_t>(n));
+    }
+}
+
+bool is_reply(const wire::Message& m, std::uint32_t request) {
+    const auto* reply = std::get_if<wire::Reply>(&m);
+    return reply && reply->request == request;
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    std::ifstream in(HLACORE_SOURCE_DIR "/cpp/fuzz/gateway.fed");
+    std::stringstream text;
+    text << in.rdbuf();
+    fed_text = text.str();
+    if (fed_text.empty()) die("cannot read cpp/fuzz/gateway.fed");
+    GatewayOptions options;
+    options.host = "127.0.0.1";
+    options.port = 0;
+    auto* gateway = new Gateway(options);  // lives as long as the process
+    port = gateway->port();
+    std::thread([gateway] { gateway->run(); }).detach();
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const sockaddr_in addr = gateway_address();
+    const int stream = ::socket(AF_INET, SOCK_STREAM, 0);
+    const int datagrams = ::socket(AF_INET, SOCK_DGRAM, 0);
+    if (stream < 0 || datagrams < 0) die("socket");
+    while (::connect(stream, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0)
+        if (errno != EINTR) die("connect");
+    if (::connect(datagrams, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) die("connect (udp)");
+    int one = 1;
+    setsockopt(stream, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);  // or each request waits for a delayed ACK
+
+    std::string in, out;
+    std::uint64_t token = 0;
+    wire::encode(out, wire::Hello{});
+    send_all(stream, out);
+    read_until(stream, in, [&](const wire::Message& m) {
+        const auto* welcome = std::get_if<wire::Welcome>(&m);
+        if (welcome) token = welcome->datagram_token;
+        return welcome != nullptr;
+    });
+    if (token == 0) die("the gateway offers no datagrams");
+    out.clear();
+    wire::encode(out, wire::CreateFederation{1, "F", "gateway.fed", fed_text});
+    wire::encode(out, wire::JoinFederation{2, "d" + std::to_string(counter++), "F"});
+    send_all(stream, out);
+    read_until(stream, in, [](const wire::Message& m) { return is_reply(m, 2); });
+
+    std::string hello;
+    wire::put_datagram_header(hello, token, 0);
+    wire::encode(hello, wire::DatagramHello{1});
+    for (int attempt = 0;; ++attempt) {  // loopback loses nothing, but a full socket buffer may
+        if (attempt == 10) die("no echo of the DatagramHello");
+        ::send(datagrams, hello.data(), hello.size(), 0);
+        pollfd p{datagrams, POLLIN, 0};
+        if (::poll(&p, 1, 1000) > 0) {
+            char echo[512];
+            if (::recv(datagrams, echo, sizeof echo, 0) > 0) break;
+        }
+    }
+    out.clear();
+    wire::encode(out, wire::DatagramPath{});
+    send_all(stream, out);
+
+    const std::uint8_t mode = size ? data[0] : 0;
+    std::string_view rest(reinterpret_cast<const char*>(data), size);
+    if (!rest.empty()) rest.remove_prefix(1);
+    std::uint64_t sequence = 0;
+    for (unsigned k = 0; !rest.empty(); ++k) {
+        wire::Frame frame;
+        std::size_t piece = 0;
+        try {
+            piece = wire::next_frame(rest, frame, wire::kMaxDatagramLimit);
+        } catch (const wire::WireError&) {
+        }
+        if (piece == 0) piece = std::min<std::size_t>(rest.size(), 1 + static_cast<unsigned char>(rest[0]));
+        // The sequence: steps of 1 to 4, and with the mode's high bit every third datagram goes back.
+        sequence = (mode & 0x80) && k % 3 == 2 && sequence > 2 ? sequence - 2 : sequence + 1 + (mode + k) % 4;
+        std::string datagram;
+        wire::put_datagram_header(datagram, token, sequence);
+        datagram.append(rest.substr(0, piece));
+        ::send(datagrams, datagram.data(), datagram.size(), MSG_DONTWAIT);
+        rest.remove_prefix(piece);
+    }
+
+    out.clear();
+    wire::encode(out, wire::QueryStatus{3});
+    // The federate may have been dropped for a protocol error in a datagram: then the stream just closes.
+    if (::send(stream, out.data(), out.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(out.size())) {
+        char buffer[65536];
+        for (;;) {
+            pollfd p{stream, POLLIN, 0};
+            const int ready = ::poll(&p, 1, 10000);
+            if (ready < 0 && errno == EINTR) continue;
+            if (ready <= 0) die("no status answer and no close within 10 s");
+            const ssize_t n = ::recv(stream, buffer, sizeof buffer, 0);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) break;
+            in.append(buffer, static_cast<std::size_t>(n));
+            wire::Frame frame;
+            bool answered = false;
+            while (std::size_t used = wire::next_frame(in, frame)) {
+                answered = answered || is_reply(wire::decode(frame), 3);
+                in.erase(0, used);
+            }
+            if (answered) break;
+        }
+    }
+    ::close(datagrams);
+    ::close(stream);
+    return 0;
+}

@@ -30,8 +30,8 @@ const Doc kDocs[] = {
     {"queryLookahead", "The current lookahead (HLA 1.3 §8.19); 0 before regulation."},
     {"clock_offset",
      "(offset, uncertainty) in seconds: the gateway's clock is this process's time.monotonic() + offset, to "
-     "within ± uncertainty (half the best probe's round trip, whatever the path's asymmetry). Measured when "
-     "connecting and again when older than max_age seconds (docs/networking.md)."},
+     "within ± uncertainty (half the best probe's round trip, whatever the path's asymmetry). Measured on the "
+     "first call and again when older than max_age seconds (four round trips; docs/networking.md)."},
     {"retract", "Retract a timestamped message this federate sent above its current time (HLA 1.3 §8.21): it is removed where it is still queued; federates that already received it get requestRetraction. Raises InvalidRetractionHandle."},
 };
 

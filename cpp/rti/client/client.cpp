@@ -93,7 +93,6 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
         } else {
             datagram_reason_ = "the gateway offers no datagrams";
         }
-        clock_ = measure_clock(4);
     } catch (...) {
         if (fd_ >= 0) ::close(fd_);
         if (datagram_fd_ >= 0) ::close(datagram_fd_);
@@ -171,7 +170,11 @@ ClockEstimate Client::measure_clock(int probes) {
 
 ClockEstimate Client::clock_offset(double max_age_s) {
     std::lock_guard<std::mutex> lock(clock_mu_);
-    if (std::chrono::duration<double>(Clock::now() - clock_.measured_at).count() > max_age_s) clock_ = measure_clock(4);
+    // Measured on first use rather than at connect: most connections (status queries, most federates) never ask.
+    if (!clock_measured_ || std::chrono::duration<double>(Clock::now() - clock_.measured_at).count() > max_age_s) {
+        clock_ = measure_clock(4);
+        clock_measured_ = true;
+    }
     return clock_;
 }
 

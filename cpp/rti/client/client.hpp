@@ -84,8 +84,8 @@ public:
     Client& operator=(const Client&) = delete;
 
     const std::string& address() const { return address_; }
-    // The clock offset to the gateway, measured when connecting and again when older than max_age_s
-    // (a few round trips; docs/networking.md).
+    // The clock offset to the gateway, measured on the first call and again when older than max_age_s
+    // (four round trips; docs/networking.md).
     ClockEstimate clock_offset(double max_age_s);
     int fileno() const { return fd_; }
     int datagram_fileno() const { return datagram_path_ ? datagram_fd_ : -1; }  // beside fileno() for select()
@@ -444,6 +444,7 @@ private:
     std::uint32_t clock_probes_ = 0;
     std::mutex clock_mu_;  // one measurement at a time
     ClockEstimate clock_;
+    bool clock_measured_ = false;  // under clock_mu_
     // The gateway's frame limit, from its Welcome (both directions).
     std::atomic<std::uint32_t> max_frame_bytes_{wire::kMaxFrameBytes};
     // Best effort over UDP: the socket (connected to the gateway's address), the token and size limit from

@@ -1,4 +1,5 @@
-// The gateway: a single-threaded epoll reactor that runs federations for federates connected over TCP.
+// The gateway: a single-threaded epoll reactor that runs federations for federates connected over TCP (with
+// UDP datagrams beside it for best-effort messages, server/datagrams.cpp).
 // `rtig` is a thin main around it; Python runs the same class in a background thread.
 #pragma once
 

@@ -4,9 +4,9 @@ namespace, bench/lossy_stream.py): its latency over datagrams and over TCP, the 
 from __future__ import annotations
 
 import os
-import sys
 
 import pytest
+from hlacore.processes import rtig_beside_python
 
 from .lossy_stream import stream_through_loss
 from .report import Report
@@ -16,7 +16,7 @@ COUNT, RATE, LOSS = 4000, 200.0, 0.01
 
 @pytest.mark.parametrize("path", ["udp", "tcp"])
 def test_best_effort_stream_under_loss(report: Report, path: str) -> None:
-    rtig = os.environ.get("HLACORE_BENCH_RTIG") or os.path.join(os.path.dirname(sys.executable), "rtig")
+    rtig = os.environ.get("HLACORE_BENCH_RTIG") or rtig_beside_python()
     result = stream_through_loss(rtig, LOSS, COUNT, RATE, datagrams=path == "udp")
     assert result["path"] == (path == "udp")
     report.add(f"besteffort.{path}.loss1", result["latencies"])

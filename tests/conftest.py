@@ -16,7 +16,7 @@ import hlacore
 from hlacore import rti
 from hlacore.federates.robot_world import FEDERATION as ROBOT_WORLD_FEDERATION
 from hlacore.federates.robot_world import FOM_PATH as ROBOT_WORLD_FOM
-from hlacore.processes import Child, Rtig, python_peer, rtig_beside_python
+from hlacore.processes import Child, Rtig, SyncAmbassador, python_peer, rtig_beside_python
 from hlacore.processes import round_trip as barrier  # noqa: F401 (the tests' name for it)
 
 DATA = pathlib.Path(__file__).parent / "data"
@@ -282,3 +282,29 @@ def conductor(rtig: RtigProcess) -> Iterator[Conductor]:
 def python_subprocess(script: str, *args: str, env: Optional[dict[str, str]] = None) -> Child:
     """tests/peers/<script> under this interpreter (hlacore.processes.Child: reports read with a deadline)."""
     return python_peer(pathlib.Path(__file__).parent / "peers" / script, *args, env=env)
+
+
+def lead_peers(conductor: rti.RTIAmbassador, amb: SyncAmbassador, peers: dict[str, Child],
+               timeout: float = 120.0) -> dict[str, dict[str, Any]]:
+    """Conduct peers that print {"ready": true}, wait for synchronization point "start" and then print their
+    report: the conductor (joined with `amb`) registers and achieves "start", then collects each report and
+    checks that each peer exits 0. The peers are closed however it ends."""
+    try:
+        for peer in peers.values():
+            assert peer.read_json(60) == {"ready": True}
+        conductor.registerFederationSynchronizationPoint("start", "")
+        deadline = time.monotonic() + 30
+        while "start" not in amb.announced:
+            assert time.monotonic() < deadline, "start was not announced"
+            conductor.tick(0.05, 0.1)
+        conductor.synchronizationPointAchieved("start")
+        while "start" not in amb.synchronized:
+            assert time.monotonic() < deadline, "the federation did not synchronize on start"
+            conductor.tick(0.05, 0.1)
+        results = {name: peer.read_json(timeout) for name, peer in peers.items()}
+        for peer in peers.values():
+            assert peer.wait(30) == 0, peer.stderr()
+        return results
+    finally:
+        for peer in peers.values():
+            peer.close()

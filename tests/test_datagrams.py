@@ -3,6 +3,7 @@ both ends, the fall back to TCP, garbage on the datagram port, and a lossy link 
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
 import json
 import pathlib
@@ -14,12 +15,13 @@ from typing import Any, Iterator
 
 import pytest
 
+import hlacore.aio
 import hlacore.status
 import hlacore.rti as rti
 from hlacore.link import Direction, Link
-from hlacore.processes import python_peer
+from hlacore.processes import SyncAmbassador, python_peer
 
-from conftest import ROBOT_FED, running_rtig
+from conftest import ROBOT_FED, lead_peers, running_rtig
 from nethosts import NetHosts, nethosts  # noqa: F401 (the fixture)
 
 PEERS = pathlib.Path(__file__).parent / "peers"
@@ -121,6 +123,21 @@ def test_best_effort_messages_travel_as_datagrams_and_the_rest_in_the_stream(tmp
         assert report["max_datagram"] == 1400 and report["stray"] == 0
         assert counts[1]["received"] == 100 and counts[2]["sent"] == 101, counts  # alice 1, bob 2
         assert counts[2]["oversize"] == 1, counts  # the 2000-byte reply, sent to bob in the stream
+
+
+def test_asyncio_wakes_for_a_datagram(tmp_path: pathlib.Path) -> None:
+    """hlacore.aio waits on the datagram socket too: a best-effort interaction sent while bob awaits tick()
+    wakes him (waiting on the stream alone, tick would time out)."""
+    with running_rtig(tmp_path) as server, pair(server.address) as p:
+        bob = hlacore.aio.AsyncAmbassador(p.bob)
+
+        async def receive() -> bool:
+            asyncio.get_running_loop().call_later(0.2, p.alice.sendInteraction, p.reply, {p.value: b"wake"}, "")
+            return await bob.tick(timeout=5.0)
+
+        assert asyncio.run(receive())
+        assert [params[p.value] for _, params, _ in p.bob_amb.interactions] == [b"wake"]
+        assert p.bob.datagram_status()["received"] == 1
 
 
 def test_timestamped_best_effort_stays_in_the_stream(tmp_path: pathlib.Path) -> None:
@@ -265,33 +282,12 @@ def test_a_lossy_best_effort_stream_beside_a_reliable_lockstep(nethosts: NetHost
 
 def _run_stream_lockstep(creator: rti.RTIAmbassador, robot_address: str, robot_prefix: list[str],
                          sim_address: str, steps: int, rate: int) -> dict[str, dict[str, Any]]:
-    amb = rti.FederateAmbassador()
-    announced: list[str] = []
-    synchronized: list[str] = []
-    amb.announceSynchronizationPoint = lambda label, tag: announced.append(label)  # type: ignore[method-assign]
-    amb.federationSynchronized = lambda label: synchronized.append(label)  # type: ignore[method-assign]
+    amb = SyncAmbassador()
     creator.joinFederationExecution("conductor", "TestFed", amb)
-    peers = {
+    results = lead_peers(creator, amb, {
         "robot": python_peer(PEERS / "stream_lockstep.py", robot_address, "robot", steps, rate, prefix=robot_prefix),
         "sim": python_peer(PEERS / "stream_lockstep.py", sim_address, "sim", steps, rate),
-    }
-    try:
-        for peer in peers.values():
-            assert peer.read_json(60) == {"ready": True}
-        creator.registerFederationSynchronizationPoint("start", "")
-        deadline = time.monotonic() + 30
-        while "start" not in synchronized:
-            assert time.monotonic() < deadline, "no synchronization"
-            if "start" in announced and "achieved" not in announced:
-                creator.synchronizationPointAchieved("start")
-                announced.append("achieved")
-            creator.tick(0.05, 0.1)
-        results = {name: peer.read_json(120) for name, peer in peers.items()}
-        for peer in peers.values():
-            assert peer.wait(30) == 0, peer.stderr()
-    finally:
-        for peer in peers.values():
-            peer.close()
+    })
     creator.resignFederationExecution(rti.ResignAction.NoAction)
     return results
 
@@ -305,6 +301,32 @@ def test_status_shows_the_datagram_counts(tmp_path: pathlib.Path) -> None:
         print("\n" + text)
         assert "datagrams" in text
         assert json.dumps(hlacore.status.status(server.address)["datagrams"])
+
+
+def test_the_gateway_counts_lost_reordered_and_duplicate_datagrams(tmp_path: pathlib.Path) -> None:
+    """A raw federate sends its best-effort interactions with sequence numbers 1, 2, 4, 3, 3, 6: the gateway
+    forwards five (not the repeated 3) and counts 5 received, 1 lost (5; 3 was counted lost until it came),
+    1 reordered and 1 duplicate."""
+    from test_robustness import frame, raw_client, send_interaction, u32
+
+    with running_rtig(tmp_path) as server, pair(server.address) as p, raw_client(server.address) as raw, \
+            socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as datagrams:
+        handle = raw.join("raw")
+        raw.send(frame("PublishInteractionClass", u32(p.reply)))
+        datagrams.connect(("127.0.0.1", server.port))
+        datagrams.settimeout(5)
+        datagrams.send(struct.pack("<IQQ", 0x44414C48, raw.datagram_token, 0) + frame("DatagramHello", u32(1)))
+        datagrams.recv(512)  # the echo
+        raw.send(frame("DatagramPath"))
+        raw.ping()
+        for serial, sequence in enumerate((1, 2, 4, 3, 3, 6), start=1):
+            body = send_interaction(raw, p.reply, p.value, b"%d" % sequence, None, serial)
+            datagrams.send(struct.pack("<IQQ", 0x44414C48, raw.datagram_token, sequence) + body)
+        p.wait(lambda: len(p.bob_amb.interactions) == 5)
+        counts = next(f["counts"] for f in gateway_datagrams(server.address)["federates"] if f["federate"] == handle)
+    assert sorted(params[p.value] for _, params, _ in p.bob_amb.interactions) == [b"1", b"2", b"3", b"4", b"6"]
+    assert {k: counts[k] for k in ("received", "lost", "reordered", "duplicates")} == \
+        {"received": 5, "lost": 1, "reordered": 1, "duplicates": 1}, counts
 
 
 def test_with_a_secret_only_an_authenticated_connection_gets_datagrams_through(tmp_path: pathlib.Path) -> None:

@@ -10,6 +10,7 @@ import socket
 import subprocess
 import sys
 
+from hlacore.processes import process_info
 from test_ros_bridge import require_ros
 
 MAIN_JOB = "hlacore.experiments.robot_in_the_loop"
@@ -44,15 +45,9 @@ def test_mirror_with_a_dead_gateway_says_so_in_one_line(tmp_path: pathlib.Path) 
                           env={**os.environ, "TMPDIR": str(tmp_path)})
     assert done.returncode == 1, done.stderr
     assert "Traceback" not in done.stderr and f"cannot connect to rtig at {address}" in done.stderr
-    left = [p for p in pathlib.Path("/proc").iterdir() if p.name.isdigit() and _mentions(p, str(tmp_path))]
-    assert not left, [(p.name, (p / "cmdline").read_bytes()) for p in left]
-
-
-def _mentions(proc: pathlib.Path, text: str) -> bool:
-    try:
-        return text.encode() in (proc / "cmdline").read_bytes()
-    except OSError:
-        return False
+    processes = (process_info(int(entry.name)) for entry in pathlib.Path("/proc").iterdir() if entry.name.isdigit())
+    left = [p for p in processes if p is not None and str(tmp_path) in p.command]
+    assert not left, left
 
 
 def test_interrupted_main_job_keeps_its_partial_trace_and_plot(tmp_path: pathlib.Path) -> None:

@@ -183,7 +183,8 @@ def test_the_in_process_gateway_takes_the_same_flow_control_knobs(capfd: pytest.
 
 @pytest.mark.parametrize("knobs", [{"client_budget": 1000}, {"stall_timeout": -1.0},
                                    {"stall_timeout": float("inf")}, {"stall_timeout": float("nan")},
-                                   {"max_frame": 1000}, {"max_frame": 1 << 31}])
+                                   {"max_frame": 1000}, {"max_frame": 1 << 31},
+                                   {"max_datagram": 100}, {"max_datagram": 70000}])
 def test_the_in_process_gateway_refuses_knobs_out_of_range(knobs: dict[str, Any]) -> None:
     with pytest.raises(ValueError, match=next(iter(knobs))):
         hlacore.Gateway(port=0, **knobs)

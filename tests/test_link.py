@@ -18,11 +18,11 @@ import pytest
 
 from hlacore.experiments.robot_in_the_loop.experiment import ExperimentOptions, run_experiment
 from hlacore.link import Direction, Link, main
-from hlacore.processes import python_peer
+from hlacore.processes import SyncAmbassador, python_peer
 
 import hlacore.rti as rti
 
-from conftest import ROBOT_FED, RtigProcess
+from conftest import ROBOT_FED, RtigProcess, lead_peers
 from nethosts import NetHosts, nethosts  # noqa: F401 (the fixture)
 
 PEERS = pathlib.Path(__file__).parent / "peers"
@@ -185,11 +185,7 @@ def test_a_lockstep_federation_across_hosts_behind_wifi_links(nethosts: NetHosts
                 Link((sim.router, 0), gateway, up=wifi, down=wifi, seed=2) as sim_link:
             conductor = rti.RTIAmbassador(server.address)  # the root namespace reaches every host directly
             conductor.createFederationExecution("TestFed", ROBOT_FED)
-            amb = rti.FederateAmbassador()
-            announced: list[str] = []
-            synchronized: list[str] = []
-            amb.announceSynchronizationPoint = lambda label, tag: announced.append(label)  # type: ignore[method-assign]
-            amb.federationSynchronized = lambda label: synchronized.append(label)  # type: ignore[method-assign]
+            amb = SyncAmbassador()
             conductor.joinFederationExecution("conductor", "TestFed", amb)
             steps = 200
             peers = {
@@ -197,23 +193,7 @@ def test_a_lockstep_federation_across_hosts_behind_wifi_links(nethosts: NetHosts
                                      prefix=robot.exec_prefix()),
                 "sim": python_peer(PEERS / "lockstep.py", sim_link.address, "sim", steps, 2, prefix=sim.exec_prefix()),
             }
-            try:
-                for peer in peers.values():
-                    assert peer.read_json(60) == {"ready": True}
-                conductor.registerFederationSynchronizationPoint("start", "")
-                deadline = time.monotonic() + 30
-                while "start" not in announced and time.monotonic() < deadline:
-                    conductor.tick(0.05, 0.1)
-                conductor.synchronizationPointAchieved("start")
-                while "start" not in synchronized and time.monotonic() < deadline:
-                    conductor.tick(0.05, 0.1)
-                assert "start" in synchronized
-                results = {name: peer.read_json(120) for name, peer in peers.items()}
-                for peer in peers.values():
-                    assert peer.wait(30) == 0, peer.stderr()
-            finally:
-                for peer in peers.values():
-                    peer.close()
+            results = lead_peers(conductor, amb, peers)
             conductor.resignFederationExecution(rti.ResignAction.NoAction)
             conductor.destroyFederationExecution("TestFed")
         step_ms = [results[n]["seconds"] / steps * 1e3 for n in results]

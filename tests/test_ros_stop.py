@@ -13,6 +13,7 @@ import time
 
 import pytest
 
+from hlacore.processes import ProcessInfo, descendants, still_running
 from test_ros_bridge import require_ros
 
 EXPERIMENTS = {
@@ -21,40 +22,7 @@ EXPERIMENTS = {
 }
 
 
-def _process(pid: int) -> tuple[int, int, str] | None:
-    """(pid, start time, command line) of a live process, None when it is gone."""
-    try:
-        stat = pathlib.Path(f"/proc/{pid}/stat").read_text()
-        cmdline = pathlib.Path(f"/proc/{pid}/cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace")
-    except OSError:
-        return None
-    fields = stat[stat.rindex(")") + 2:].split()
-    if fields[0] == "Z":
-        return None  # a zombie has ended; only its parent's wait is missing
-    return pid, int(fields[19]), cmdline
-
-
-def descendants(root: int) -> list[tuple[int, int, str]]:
-    children: dict[int, list[int]] = {}
-    for entry in pathlib.Path("/proc").iterdir():
-        if entry.name.isdigit():
-            try:
-                stat = (entry / "stat").read_text()
-            except OSError:
-                continue
-            ppid = int(stat[stat.rindex(")") + 2:].split()[1])
-            children.setdefault(ppid, []).append(int(entry.name))
-    found, todo = [], list(children.get(root, []))
-    while todo:
-        pid = todo.pop()
-        info = _process(pid)
-        if info:
-            found.append(info)
-        todo.extend(children.get(pid, []))
-    return found
-
-
-def _experiment_running(processes: list[tuple[int, int, str]]) -> bool:
+def _experiment_running(processes: list[ProcessInfo]) -> bool:
     """roscore is up (rosout runs) and something of the experiment's own besides it."""
     ros = ("roscore", "rosmaster", "rosout")
     return (any("rosout" in cmd for _, _, cmd in processes)
@@ -71,7 +39,7 @@ def test_stopped_experiment_leaves_no_process_behind(experiment: str, signum: in
     proc = subprocess.Popen([sys.executable, "-m", *EXPERIMENTS[experiment][:1], str(tmp_path / "out"),
                              *EXPERIMENTS[experiment][1:]], env=env, stdout=log, stderr=subprocess.STDOUT,
                             stdin=subprocess.DEVNULL)
-    started: list[tuple[int, int, str]] = []
+    started: list[ProcessInfo] = []
     try:
         # roscore, rosmaster, rosout, then the experiment's own nodes and federates (slow on a loaded machine).
         deadline = time.monotonic() + 60
@@ -85,12 +53,12 @@ def test_stopped_experiment_leaves_no_process_behind(experiment: str, signum: in
         proc.wait(timeout=60)
     finally:
         if proc.poll() is None:  # the test failed: end what it started anyway (roscore has its own group)
-            for pid in [proc.pid] + [p[0] for p in descendants(proc.pid)]:
+            for pid in [proc.pid] + [p.pid for p in descendants(proc.pid)]:
                 with contextlib.suppress(ProcessLookupError):
                     os.kill(pid, signal.SIGKILL)
             proc.wait()
         log.close()
-    left = [p for p in started if _process(p[0]) is not None and _process(p[0])[1] == p[1]]  # type: ignore[index]
+    left = [p for p in started if still_running(p)]
     assert not left, left
     assert proc.returncode != 0  # stopped, not finished
     assert not list(tmp_path.glob("hlacore-ros-*")), "roscore's ROS_HOME was left behind"

@@ -99,7 +99,7 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith("usage: rtig")
     for option in ("--host", "--port", "--fom-path", "--frame-timeout", "--client-budget", "--stall-timeout",
-                   "--max-frame", "--save-dir", "--verbose"):
+                   "--max-frame", "--max-datagram", "--save-dir", "--verbose"):
         assert option in result.stdout
     assert "rtig listening" not in result.stdout
 
@@ -125,6 +125,9 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
         (["--stall-timeout", "-1"], "invalid --stall-timeout '-1'"),
         (["--max-frame", "1000"], "invalid --max-frame '1000'"),
         (["--max-frame", "2000000000"], "invalid --max-frame '2000000000'"),
+        (["--max-datagram", "100"], "invalid --max-datagram '100'"),
+        (["--max-datagram", "70000"], "invalid --max-datagram '70000'"),
+        (["--max-datagram", "1400.5"], "invalid --max-datagram '1400.5'"),
         (["--port", "0", "extra"], "unknown argument 'extra'"),
         (["--save-dir"], "--save-dir needs a value"),
         (["--save-dir", ""], "--save-dir needs a directory"),

@@ -10,8 +10,6 @@
 // back), to reach the loss and reorder counting. A QueryStatus round trip over the stream then shows the
 // gateway alive. Failures: a crash, a sanitizer report, an exception escaping the gateway thread, or no
 // answer within 10 s.
-#include <arpa/inet.h>
-#include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/socket.h>
@@ -19,38 +17,19 @@
 
 #include <cerrno>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <string_view>
-#include <thread>
 
-#include "rti/server/gateway.hpp"
+#include "gateway_fixture.hpp"
 #include "rti/wire/codec.hpp"
 #include "rti/wire/datagram.hpp"
 
 using namespace hlacore;
+using fuzz_fixture::die;
 
 namespace {
-std::uint16_t port = 0;
-std::string fed_text;
+fuzz_fixture::Fixture fixture;
 unsigned counter = 0;
-
-[[noreturn]] void die(const char* what) {
-    std::fprintf(stderr, "fuzz_datagram: %s: %s\n", what, std::strerror(errno));
-    std::abort();
-}
-
-sockaddr_in gateway_address() {
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_port = htons(port);
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    return addr;
-}
 
 void send_all(int fd, const std::string& bytes) {
     for (std::size_t done = 0; done < bytes.size();) {
@@ -61,16 +40,17 @@ void send_all(int fd, const std::string& bytes) {
     }
 }
 
-// Reads frames from the stream until `done(message)` holds for one; dies after 10 s without it.
+// Reads frames from the stream until `done(message)` holds for one (true), or the gateway closes the
+// stream (false); dies after 10 s without either.
 template <class Done>
-void read_until(int fd, std::string& in, Done done) {
+bool read_until(int fd, std::string& in, Done done) {
     char buffer[65536];
     for (;;) {
         wire::Frame frame;
         while (std::size_t used = wire::next_frame(in, frame)) {
             const bool found = done(wire::decode(frame));
             in.erase(0, used);
-            if (found) return;
+            if (found) return true;
         }
         pollfd p{fd, POLLIN, 0};
         const int ready = ::poll(&p, 1, 10000);
@@ -78,7 +58,7 @@ void read_until(int fd, std::string& in, Done done) {
         if (ready <= 0) die("no answer from the gateway within 10 s");
         const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) die("the gateway closed the stream");
+        if (n <= 0) return false;
         in.append(buffer, static_cast<std::size_t>(n));
     }
 }
@@ -90,28 +70,16 @@ bool is_reply(const wire::Message& m, std::uint32_t request) {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    std::ifstream in(HLACORE_SOURCE_DIR "/cpp/fuzz/gateway.fed");
-    std::stringstream text;
-    text << in.rdbuf();
-    fed_text = text.str();
-    if (fed_text.empty()) die("cannot read cpp/fuzz/gateway.fed");
-    GatewayOptions options;
-    options.host = "127.0.0.1";
-    options.port = 0;
-    auto* gateway = new Gateway(options);  // lives as long as the process
-    port = gateway->port();
-    std::thread([gateway] { gateway->run(); }).detach();
+    fixture = fuzz_fixture::start_gateway();
     return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const sockaddr_in addr = gateway_address();
     const int stream = ::socket(AF_INET, SOCK_STREAM, 0);
     const int datagrams = ::socket(AF_INET, SOCK_DGRAM, 0);
     if (stream < 0 || datagrams < 0) die("socket");
-    while (::connect(stream, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0)
-        if (errno != EINTR) die("connect");
-    if (::connect(datagrams, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) die("connect (udp)");
+    fuzz_fixture::connect_to_gateway(stream, fixture.port);
+    fuzz_fixture::connect_to_gateway(datagrams, fixture.port);  // a UDP connect does not wait
     int one = 1;
     setsockopt(stream, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);  // or each request waits for a delayed ACK
 
@@ -119,17 +87,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::uint64_t token = 0;
     wire::encode(out, wire::Hello{});
     send_all(stream, out);
-    read_until(stream, in, [&](const wire::Message& m) {
+    const bool welcomed = read_until(stream, in, [&](const wire::Message& m) {
         const auto* welcome = std::get_if<wire::Welcome>(&m);
         if (welcome) token = welcome->datagram_token;
         return welcome != nullptr;
     });
-    if (token == 0) die("the gateway offers no datagrams");
+    if (!welcomed || token == 0) die("no Welcome with a datagram token");
     out.clear();
-    wire::encode(out, wire::CreateFederation{1, "F", "gateway.fed", fed_text});
+    wire::encode(out, wire::CreateFederation{1, "F", "gateway.fed", fixture.fed_text});
     wire::encode(out, wire::JoinFederation{2, "d" + std::to_string(counter++), "F"});
     send_all(stream, out);
-    read_until(stream, in, [](const wire::Message& m) { return is_reply(m, 2); });
+    if (!read_until(stream, in, [](const wire::Message& m) { return is_reply(m, 2); })) die("the join was refused");
 
     std::string hello;
     wire::put_datagram_header(hello, token, 0);
@@ -171,26 +139,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     out.clear();
     wire::encode(out, wire::QueryStatus{3});
     // The federate may have been dropped for a protocol error in a datagram: then the stream just closes.
-    if (::send(stream, out.data(), out.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(out.size())) {
-        char buffer[65536];
-        for (;;) {
-            pollfd p{stream, POLLIN, 0};
-            const int ready = ::poll(&p, 1, 10000);
-            if (ready < 0 && errno == EINTR) continue;
-            if (ready <= 0) die("no status answer and no close within 10 s");
-            const ssize_t n = ::recv(stream, buffer, sizeof buffer, 0);
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) break;
-            in.append(buffer, static_cast<std::size_t>(n));
-            wire::Frame frame;
-            bool answered = false;
-            while (std::size_t used = wire::next_frame(in, frame)) {
-                answered = answered || is_reply(wire::decode(frame), 3);
-                in.erase(0, used);
-            }
-            if (answered) break;
-        }
-    }
+    if (::send(stream, out.data(), out.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(out.size()))
+        read_until(stream, in, [](const wire::Message& m) { return is_reply(m, 3); });
     ::close(datagrams);
     ::close(stream);
     return 0;

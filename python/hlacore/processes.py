@@ -20,12 +20,12 @@ import subprocess
 import sys
 import tempfile
 import time
-from typing import IO, Any, Callable, Optional, Sequence
+from typing import IO, Any, Callable, NamedTuple, Optional, Sequence
 
 from hlacore import rti
 
-__all__ = ["Child", "Rtig", "SyncAmbassador", "linger", "python_peer", "round_trip", "rtig_beside_python",
-           "say", "serve", "synchronize", "tick_until"]
+__all__ = ["Child", "ProcessInfo", "Rtig", "SyncAmbassador", "descendants", "linger", "process_info", "python_peer",
+           "round_trip", "rtig_beside_python", "say", "serve", "still_running", "synchronize", "tick_until"]
 
 
 class Child:
@@ -255,3 +255,53 @@ def synchronize(rtia: rti.RTIAmbassador, amb: SyncAmbassador, label: str = "star
     tick_until(rtia, lambda: label in amb.announced, timeout)
     rtia.synchronizationPointAchieved(label)
     tick_until(rtia, lambda: label in amb.synchronized, timeout)
+
+
+# ---- the process tree, from /proc (Linux) ----
+
+
+class ProcessInfo(NamedTuple):
+    """A live process: its pid, its start time (clock ticks after boot: with the pid, it names the process
+    even after the pid is reused) and its command line."""
+
+    pid: int
+    start: int
+    command: str
+
+
+def process_info(pid: int) -> Optional[ProcessInfo]:
+    """The process `pid`, or None when it is gone (a zombie counts as gone: only its parent's wait is
+    missing)."""
+    try:
+        stat = pathlib.Path(f"/proc/{pid}/stat").read_text()
+        command = pathlib.Path(f"/proc/{pid}/cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace")
+    except OSError:
+        return None
+    fields = stat[stat.rindex(")") + 2:].split()
+    return None if fields[0] == "Z" else ProcessInfo(pid, int(fields[19]), command)
+
+
+def descendants(root: int) -> list[ProcessInfo]:
+    """Every live descendant of process `root` (children, theirs, and so on)."""
+    children: dict[int, list[int]] = {}
+    for entry in pathlib.Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:
+                continue
+            children.setdefault(int(stat[stat.rindex(")") + 2:].split()[1]), []).append(int(entry.name))
+    found, todo = [], list(children.get(root, []))
+    while todo:
+        pid = todo.pop()
+        info = process_info(pid)
+        if info:
+            found.append(info)
+        todo.extend(children.get(pid, []))
+    return found
+
+
+def still_running(process: ProcessInfo) -> bool:
+    """Whether `process` (the same one, not a reuse of its pid) is alive."""
+    now = process_info(process.pid)
+    return now is not None and now.start == process.start

@@ -208,12 +208,7 @@ std::unique_lock<std::mutex> Client::lock_send() {
 template <class M>
 void Client::send(const M& message) {
     auto lock = lock_send();
-    if constexpr (kFederationService<M>) {
-        // Checked here, in the order of the socket: another thread's resign may have gone out just before.
-        if (!member_)
-            raise(ErrorCode::FederateNotExecutionMember, std::string(wire::message_name(M::kType)) +
-                                                             ": the federate is not joined (it has resigned)");
-    }
+    if constexpr (kFederationService<M>) require_member(M::kType);
     send_buffer_.clear();
     wire::encode(send_buffer_, message);
     if (send_buffer_.size() - 4 > max_frame_bytes_) {  // a name, tag or FED beyond reason: refused, not sent
@@ -228,6 +223,13 @@ void Client::send(const M& message) {
 #define HLACORE_X(name) template void Client::send(const wire::name&);
 HLACORE_MESSAGES(HLACORE_X)
 #undef HLACORE_X
+
+void Client::require_member(wire::MessageType type) const {
+    // Checked when sending, in the order of the socket: another thread's resign may have gone out just before.
+    if (!member_)
+        raise(ErrorCode::FederateNotExecutionMember,
+              std::string(wire::message_name(type)) + ": the federate is not joined (it has resigned)");
+}
 
 void Client::write_send_buffer() {
     std::size_t done = 0;

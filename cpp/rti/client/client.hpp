@@ -328,7 +328,8 @@ private:
     // the path is up and it fits, else send() (client/datagrams.cpp).
     template <class M>
     void send_best_effort(const M& message);
-    std::unique_lock<std::mutex> lock_send();  // send_mu_, waiting for another thread's send with the host released
+    std::unique_lock<std::mutex> lock_send();
+    void require_member(wire::MessageType type) const;  // under send_mu_: FederateNotExecutionMember after a resign  // send_mu_, waiting for another thread's send with the host released
     void write_send_buffer();  // under send_mu_
     void wait_writable(std::size_t sent);  // under send_mu_: the gateway is not reading (yet)
     void read_beside_send();

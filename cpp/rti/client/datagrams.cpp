@@ -53,12 +53,8 @@ void Client::open_datagram_path(Clock::time_point deadline) {
             if (r < 0 && errno == ECONNREFUSED)  // an ICMP "port unreachable" for an earlier hello
                 return give_up_datagrams("the gateway's host refuses them (nothing listens for UDP on its port)");
             if (r < 0) continue;
-            const std::string_view datagram(echo, static_cast<std::size_t>(r));
-            const auto header = wire::read_datagram_header(datagram);
-            wire::Frame frame;
-            const std::string_view body = header ? datagram.substr(wire::kDatagramHeaderBytes) : std::string_view();
-            if (!header || header->token != datagram_token_ || wire::next_frame(body, frame) != body.size() ||
-                frame.type != wire::MessageType::DatagramHello)
+            const auto read = wire::read_datagram(std::string_view(echo, static_cast<std::size_t>(r)));
+            if (!read || read->header.token != datagram_token_ || read->frame.type != wire::MessageType::DatagramHello)
                 continue;
             send(wire::DatagramPath{});
             datagram_path_ = true;
@@ -86,19 +82,16 @@ void Client::read_datagrams(std::vector<wire::Message>& got) {
         const ssize_t r = ::recv(datagram_fd_, datagram, sizeof datagram, MSG_DONTWAIT);
         if (r < 0 && errno == EINTR) continue;
         if (r < 0) return;  // drained (or an ICMP error for a datagram sent earlier: that one is lost)
-        const std::string_view d(datagram, static_cast<std::size_t>(r));
-        const auto header = wire::read_datagram_header(d);
-        if (!header || header->token != datagram_token_ || header->sequence == 0) continue;
+        const auto read = wire::read_datagram(std::string_view(datagram, static_cast<std::size_t>(r)));
+        if (!read || read->header.token != datagram_token_ || read->header.sequence == 0) continue;
         {
             std::lock_guard<std::mutex> lock(datagram_mu_);
-            if (!datagram_window_.accept(header->sequence, datagram_stats_)) continue;
+            if (!datagram_window_.accept(read->header.sequence, datagram_stats_)) continue;
         }
+        const wire::MessageType type = read->frame.type;
         try {
-            wire::Frame frame;
-            const std::string_view body = d.substr(wire::kDatagramHeaderBytes);
-            if (wire::next_frame(body, frame, max_frame_bytes_) != body.size()) continue;
-            if (frame.type == wire::MessageType::ReflectAttributes || frame.type == wire::MessageType::ReceiveInteraction)
-                got.push_back(wire::decode(frame));
+            if (type == wire::MessageType::ReflectAttributes || type == wire::MessageType::ReceiveInteraction)
+                got.push_back(wire::decode(read->frame));
         } catch (const wire::WireError&) {
             // a datagram that is not what it claims: dropped (the stream is what must stay sound)
         }
@@ -109,9 +102,7 @@ template <class M>
 void Client::send_best_effort(const M& message) {
     if (datagram_path_) {
         auto lock = lock_send();
-        if (!member_)
-            raise(ErrorCode::FederateNotExecutionMember,
-                  std::string(wire::message_name(M::kType)) + ": the federate is not joined (it has resigned)");
+        require_member(M::kType);
         datagram_buffer_.clear();
         wire::put_datagram_header(datagram_buffer_, datagram_token_, datagram_sequence_ + 1);
         wire::encode(datagram_buffer_, message);

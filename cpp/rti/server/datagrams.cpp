@@ -69,8 +69,8 @@ void Gateway::on_datagrams() {
 }
 
 void Gateway::on_datagram(std::string_view datagram, const sockaddr_storage& from, socklen_t length) {
-    const auto header = wire::read_datagram_header(datagram);
-    auto owner = header ? datagram_tokens_.find(header->token) : datagram_tokens_.end();
+    const auto read = wire::read_datagram(datagram);
+    auto owner = read ? datagram_tokens_.find(read->header.token) : datagram_tokens_.end();
     auto it = owner != datagram_tokens_.end() ? connections_.find(owner->second) : connections_.end();
     // Only an authenticated connection's token counts: the Welcome hands it out before the challenge is met.
     if (it == connections_.end() || !it->second->challenge.empty()) {
@@ -78,12 +78,9 @@ void Gateway::on_datagram(std::string_view datagram, const sockaddr_storage& fro
         return;
     }
     Connection& c = *it->second;
-    wire::Frame frame;
+    const wire::Frame& frame = read->frame;
     wire::Message message;
     try {
-        const std::string_view body = datagram.substr(wire::kDatagramHeaderBytes);
-        const std::size_t used = wire::next_frame(body, frame, options_.max_frame_bytes);
-        if (used == 0 || used != body.size()) throw wire::WireError("a datagram that is not exactly one frame");
         message = wire::decode(frame);
     } catch (const wire::WireError&) {
         ++stray_datagrams_;  // what a stray (or forged) datagram looks like: dropped, the connection unharmed
@@ -104,7 +101,7 @@ void Gateway::on_datagram(std::string_view datagram, const sockaddr_storage& fro
         ++stray_datagrams_;
         return;
     }
-    if (!c.datagram_window.accept(header->sequence, c.datagrams)) return;
+    if (!c.datagram_window.accept(read->header.sequence, c.datagrams)) return;
     if (c.paused) {  // held back by flow control: what it sends as best effort is dropped, not queued
         ++c.datagrams.held_back;
         return;

@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "rti/wire/codec.hpp"
+
 namespace hlacore::wire {
 
 constexpr std::uint32_t kDatagramMagic = 0x44414c48;  // "HLAD"
@@ -34,8 +36,15 @@ inline void put_datagram_header(std::string& out, std::uint64_t token, std::uint
     put(sequence, 8);
 }
 
-// The header of `datagram` (its frame follows it), or nothing when it is not an hlacore datagram.
-inline std::optional<DatagramHeader> read_datagram_header(std::string_view datagram) {
+// A datagram cut into its header and its one frame (a view into the datagram).
+struct Datagram {
+    DatagramHeader header;
+    Frame frame;
+};
+
+// `datagram` read, or nothing when it is not an hlacore datagram holding exactly one whole frame: what a
+// stray or forged datagram looks like, to be dropped without harm to anything.
+inline std::optional<Datagram> read_datagram(std::string_view datagram) {
     if (datagram.size() < kDatagramHeaderBytes) return std::nullopt;
     auto get = [&datagram](std::size_t at, int bytes) {
         std::uint64_t v = 0;
@@ -43,7 +52,15 @@ inline std::optional<DatagramHeader> read_datagram_header(std::string_view datag
         return v;
     };
     if (get(0, 4) != kDatagramMagic) return std::nullopt;
-    return DatagramHeader{get(4, 8), get(12, 8)};
+    const std::string_view body = datagram.substr(kDatagramHeaderBytes);
+    Datagram read{{get(4, 8), get(12, 8)}, {}};
+    try {
+        const std::size_t used = next_frame(body, read.frame, kMaxDatagramLimit);
+        if (used == 0 || used != body.size()) return std::nullopt;
+    } catch (const WireError&) {
+        return std::nullopt;
+    }
+    return read;
 }
 
 // One end's counts: of the datagrams it sent, and of those it received from the other end.

@@ -16,6 +16,8 @@ import time
 import xmlrpc.client
 from typing import Iterator
 
+from hlacore.processes import ProcessInfo, descendants, still_running
+
 
 
 def master_online(uri: str, with_rosout: bool = False) -> bool:
@@ -76,12 +78,12 @@ def stop_group(proc: "subprocess.Popen[bytes]", sig: int, timeout: float = 15.0)
     """End the process group `proc` leads (started with start_new_session): `sig` to the group once, then
     SIGKILL to what is left of it after `timeout` s. roscore puts rosmaster and rosout in groups of their own
     and ends them itself; those of its descendants seen meanwhile that outlive it are ended by pid too."""
-    family = _descendants(proc.pid)
+    family = set(descendants(proc.pid))
     with contextlib.suppress(ProcessLookupError):
         os.killpg(proc.pid, sig)
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
-        family |= _descendants(proc.pid)
+        family |= set(descendants(proc.pid))
         proc.poll()  # reap the leader, or the group would never look empty
         try:
             os.killpg(proc.pid, 0)  # members of the group remain?
@@ -95,46 +97,15 @@ def stop_group(proc: "subprocess.Popen[bytes]", sig: int, timeout: float = 15.0)
     _end_survivors(family, timeout)
 
 
-def _descendants(root: int) -> set[tuple[int, int]]:
-    """(pid, start time) of every live descendant of `root`, from /proc."""
-    children: dict[int, list[int]] = {}
-    for entry in os.listdir("/proc"):
-        if entry.isdigit():
-            stat = _stat(int(entry))
-            if stat:
-                children.setdefault(int(stat[1]), []).append(int(entry))
-    found, todo = set(), list(children.get(root, []))
-    while todo:
-        pid = todo.pop()
-        stat = _stat(pid)
-        if stat:
-            found.add((pid, int(stat[19])))
-        todo.extend(children.get(pid, []))
-    return found
-
-
-def _stat(pid: int) -> list[str]:
-    """The fields of /proc/PID/stat after the command name ([0] state, [1] ppid, [19] start time); [] when
-    the process is gone (or a zombie)."""
-    try:
-        with open(f"/proc/{pid}/stat") as f:
-            text = f.read()
-    except OSError:
-        return []
-    fields = text[text.rindex(")") + 2:].split()
-    return [] if fields[0] == "Z" else fields
-
-
-def _end_survivors(family: set[tuple[int, int]], timeout: float) -> None:
-    """SIGTERM, then SIGKILL after `timeout` s, to those of `family` still alive (the same start time: not a
-    reused pid)."""
-    def alive() -> list[int]:
-        return [pid for pid, start in family if (stat := _stat(pid)) and int(stat[19]) == start]
+def _end_survivors(family: set[ProcessInfo], timeout: float) -> None:
+    """SIGTERM, then SIGKILL after `timeout` s, to those of `family` still alive."""
+    def alive() -> list[ProcessInfo]:
+        return [p for p in family if still_running(p)]
 
     for sig in (signal.SIGTERM, signal.SIGKILL):
-        for pid in alive():
+        for process in alive():
             with contextlib.suppress(ProcessLookupError):
-                os.kill(pid, sig)
+                os.kill(process.pid, sig)
         deadline = time.monotonic() + timeout
         while alive() and time.monotonic() < deadline:
             time.sleep(0.05)

@@ -26,6 +26,27 @@ def test_handles_are_hashable_ordered_and_typed(federation):
         robot < same_number  # noqa: B015
 
 
+def test_an_integer_or_the_wrong_kind_of_handle_gets_a_typed_error_naming_its_source(federation):
+    """A PyHLA script passing an int, or a handle of another kind, learns what was expected and where to
+    get it, instead of pybind11's signature dump; comparing with an int stays False, not an error."""
+    r = federation("a").rtia
+    robot = r.getObjectClassHandle("robot")
+    location = r.getAttributeHandle("location", robot)
+    with pytest.raises(TypeError) as raised:
+        r.getObjectClassName(4)
+    assert str(raised.value) == ("expected ObjectClassHandle, got int 4: hlacore's handles are typed, not "
+                                 "integers (docs/pyhla.md); get one from getObjectClassHandle(name)")
+    with pytest.raises(TypeError, match=r"^expected ObjectClassHandle, got hlacore._core.AttributeHandle "
+                                        r"<rti.AttributeHandle=\d+>; get one from getObjectClassHandle"):
+        r.getAttributeHandle("location", location)
+    with pytest.raises(TypeError, match=r"^expected AttributeHandle, got int 1: .*getAttributeHandle\(name, "):
+        r.publishObjectClass(robot, [1])  # inside a list
+    with pytest.raises(TypeError, match=r"^expected ObjectHandle, got int 3: .*registerObjectInstance"):
+        r.updateAttributeValues(3, {location: b""}, "tag")
+    assert robot != 3 and not (robot == 3) and location not in [1, 2, 3, 8]
+    assert {robot: "robot"}.get(3) is None
+
+
 def test_handles_cannot_be_constructed():
     """Handles come from the RTI only."""
     for cls in (rti.ObjectClassHandle, rti.AttributeHandle, rti.ObjectHandle, rti.FederateHandle):

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -44,6 +45,27 @@ using SpaceHandle = Handle<9>;
 using DimensionHandle = Handle<10>;
 using RegionHandle = Handle<11>;  // data distribution management: a region of the federate that created it
 
+// Where a federate gets each kind of handle: the hint of the TypeError for a wrong argument.
+constexpr const char* kHandleSources[] = {
+    "",
+    "getObjectClassHandle(name)",
+    "getAttributeHandle(name, objectClass)",
+    "getInteractionClassHandle(name)",
+    "getParameterHandle(name, interactionClass)",
+    "registerObjectInstance, discoverObjectInstance or getObjectInstanceHandle(name)",
+    "joinFederationExecution or a callback",
+    "getOrderingHandle(name)",
+    "getTransportationHandle(name)",
+    "getRoutingSpaceHandle(name)",
+    "getDimensionHandle(name, space)",
+    "createRegion",
+};
+
+// A PyHLA federate passes integers where hlacore's handles are typed; pybind11 would answer with the
+// signature dump of "incompatible function arguments". This names what was expected, what came and where
+// such a handle comes from.
+[[noreturn]] void throw_wrong_handle(const char* expected, int kind, py::handle given);
+
 // createRegion's extent, PyHLA's form: [(DimensionHandle, (lower, upper)), ...].
 using PyExtent = std::vector<std::pair<DimensionHandle, std::pair<std::int64_t, std::int64_t>>>;
 inline Client::Extent to_extent(const PyExtent& ranges) {
@@ -57,12 +79,22 @@ struct EventRetractionHandle {
     std::uint64_t serial;
 };
 
+// Equality with anything but a handle of the same kind is NotImplemented (so `handle == 4` is False), never
+// the wrong-handle TypeError that a handle argument raises; ordering another type is that TypeError.
+template <class H, class Compare>
+auto handle_equality(Compare compare) {
+    return [compare](const H& a, py::handle b) -> py::object {
+        if (!py::isinstance<H>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+        return py::bool_(compare(a.value, b.cast<const H&>().value));
+    };
+}
+
 template <class H>
 void bind_handle(py::module_& m, const char* name) {
     const std::string repr_prefix = std::string("<rti.") + name + "=";
     py::class_<H>(m, name, (std::string("An HLA ") + name + "; obtained from the RTI, never constructed.").c_str())
-        .def("__eq__", [](const H& a, const H& b) { return a.value == b.value; }, py::is_operator())
-        .def("__ne__", [](const H& a, const H& b) { return a.value != b.value; }, py::is_operator())
+        .def("__eq__", handle_equality<H>(std::equal_to<>()), py::is_operator())
+        .def("__ne__", handle_equality<H>(std::not_equal_to<>()), py::is_operator())
         .def("__lt__", [](const H& a, const H& b) { return a.value < b.value; }, py::is_operator())
         .def("__le__", [](const H& a, const H& b) { return a.value <= b.value; }, py::is_operator())
         .def("__gt__", [](const H& a, const H& b) { return a.value > b.value; }, py::is_operator())
@@ -232,3 +264,18 @@ void bind_support(Ambassador& rtia);
 void bind_callbacks(Ambassador& rtia);  // tick's machinery: waiting, popping and dispatching callbacks
 
 }  // namespace hlacore::bindings
+
+// Handle arguments: pybind11's own loading, and the typed error above instead of "incompatible function
+// arguments". No binding overloads a name, so no later overload is hidden by the throw.
+namespace pybind11::detail {
+template <int Kind>
+class type_caster<hlacore::bindings::Handle<Kind>> : public type_caster_base<hlacore::bindings::Handle<Kind>> {
+public:
+    bool load(handle source, bool convert) {
+        if (type_caster_base<hlacore::bindings::Handle<Kind>>::load(source, convert)) return true;
+        if (!convert) return false;
+        const auto* registered = get_type_info(typeid(hlacore::bindings::Handle<Kind>));
+        hlacore::bindings::throw_wrong_handle(registered ? registered->type->tp_name : "handle", Kind, source);
+    }
+};
+}  // namespace pybind11::detail

@@ -2,6 +2,8 @@
 #include "bindings/convert.hpp"
 
 #include <array>
+#include <iterator>
+#include <string>
 
 namespace hlacore::bindings {
 
@@ -48,6 +50,24 @@ void register_exceptions(py::module_& m) {
             PyErr_SetString(exception_class(ErrorCode::RTIinternalError), e.what());
         }
     });
+}
+
+void throw_wrong_handle(const char* expected, int kind, py::handle given) {
+    std::string name(expected);
+    name = name.substr(name.rfind('.') + 1);
+    std::string given_repr;
+    try {
+        given_repr = py::repr(given).cast<std::string>();
+    } catch (const py::error_already_set&) {
+        given_repr = "?";
+    }
+    if (given_repr.size() > 60) given_repr = given_repr.substr(0, 57) + "...";
+    std::string message = "expected " + name + ", got " + Py_TYPE(given.ptr())->tp_name + " " + given_repr;
+    if (PyLong_Check(given.ptr()))
+        message += ": hlacore's handles are typed, not integers (docs/pyhla.md)";
+    if (kind > 0 && kind < static_cast<int>(std::size(kHandleSources)))
+        message += std::string("; get one from ") + kHandleSources[kind];
+    throw py::type_error(message);
 }
 
 }  // namespace hlacore::bindings

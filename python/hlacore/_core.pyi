@@ -699,7 +699,7 @@ class RTIAmbassadorBase:
         """
     def clock_offset(self, max_age: typing.SupportsFloat | typing.SupportsIndex = 10.0) -> tuple[float, float]:
         """
-        (offset, uncertainty) in seconds: the gateway's clock is this process's time.monotonic() + offset, to within ± uncertainty (half the best probe's round trip, whatever the path's asymmetry). Measured when connecting and again when older than max_age seconds (docs/networking.md).
+        (offset, uncertainty) in seconds: the gateway's clock is this process's time.monotonic() + offset, to within ± uncertainty (half the best probe's round trip, whatever the path's asymmetry). Measured on the first call and again when older than max_age seconds (four round trips; docs/networking.md).
         """
     def createRegion(self, space: SpaceHandle, extent: collections.abc.Sequence[tuple[DimensionHandle, tuple[typing.SupportsInt | typing.SupportsIndex, typing.SupportsInt | typing.SupportsIndex]]]) -> RegionHandle:
         """

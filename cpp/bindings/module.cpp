@@ -108,8 +108,9 @@ PYBIND11_MODULE(_core, m) {
     m.attr("MAX_EXTENT") = Client::kMaxExtent;
     py::class_<EventRetractionHandle>(m, "EventRetractionHandle",
                                       "Names a timestamped message so that its sender can retract it.")
-        .def_readonly("sendingFederate", &EventRetractionHandle::sender)
-        .def_readonly("serial", &EventRetractionHandle::serial)
+        .def_readonly("sendingFederate", &EventRetractionHandle::sender,
+                      "The handle of the federate that sent the message, as an int.")
+        .def_readonly("serial", &EventRetractionHandle::serial, "The message's serial number at its sender.")
         .def("__eq__", [](const EventRetractionHandle& a, const EventRetractionHandle& b) {
             return a.sender == b.sender && a.serial == b.serial; }, py::is_operator())
         .def("__hash__", [](const EventRetractionHandle& h) { return py::hash(py::make_tuple("ERH", h.sender, h.serial)); })
@@ -137,8 +138,11 @@ PYBIND11_MODULE(_core, m) {
     rtia
         .def(py::init(&connect_client), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s,
              py::arg("secret_file") = "", py::arg("datagrams") = true)
-        .def_property_readonly("address", &Client::address)
-        .def("fileno", &Client::fileno)
+        .def_property_readonly("address", &Client::address, "The gateway's \"host:port\" this ambassador is connected to.")
+        .def("fileno", &Client::fileno,
+             "The connection's socket, for select() or an event loop's add_reader (hlacore.aio): readable when the "
+             "gateway has sent something, which tick() then delivers. Best-effort messages may arrive on a second, "
+             "UDP socket (datagram_status()).")
         .def("_datagram_fileno", &Client::datagram_fileno)
         .def("datagram_status", [](const Client& c) {
                  const hlacore::DatagramStatus s = c.datagram_status();

@@ -610,10 +610,14 @@ class EventRetractionHandle:
         ...
     @property
     def sendingFederate(self) -> int:
-        ...
+        """
+        The handle of the federate that sent the message, as an int.
+        """
     @property
     def serial(self) -> int:
-        ...
+        """
+        The message's serial number at its sender.
+        """
 class BackgroundGateway:
     def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, fom_path: collections.abc.Sequence[str], verbose: bool, save_dir: str = '', trace_path: str = '', client_budget: typing.SupportsInt | typing.SupportsIndex = 67108864, stall_timeout: typing.SupportsFloat | typing.SupportsIndex = 30.0, max_frame: typing.SupportsInt | typing.SupportsIndex = 67108864, secret_file: str = '', max_datagram: typing.SupportsInt | typing.SupportsIndex = 1400) -> None:
         ...
@@ -766,7 +770,9 @@ class RTIAmbassadorBase:
         Tell the RTI this federate could not save (HLA 1.3 §4.14): everyone gets federationNotSaved(). Raises SaveNotInitiated.
         """
     def fileno(self) -> int:
-        ...
+        """
+        The connection's socket, for select() or an event loop's add_reader (hlacore.aio): readable when the gateway has sent something, which tick() then delivers. Best-effort messages may arrive on a second, UDP socket (datagram_status()).
+        """
     def flushQueueRequest(self, theTime: typing.SupportsFloat | typing.SupportsIndex) -> None:
         """
         Deliver every queued timestamped message now and advance as far towards theTime as is safe (HLA 1.3 §8.12).
@@ -1017,7 +1023,9 @@ class RTIAmbassadorBase:
         """
     @property
     def address(self) -> str:
-        ...
+        """
+        The gateway's "host:port" this ambassador is connected to.
+        """
 class _TimeManager:
     def __init__(self) -> None:
         ...

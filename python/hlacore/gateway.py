@@ -23,7 +23,7 @@ class Gateway:
     ``save_dir`` is ``rtig --save-dir``: federation saves are written there as files and can be restored
     by a later gateway; without it saves are kept in memory only (docs/save-restore.md).
     ``trace`` names a CSV file for the message trace (``rtig --trace``): when each update and interaction
-    arrived and each reflection of it left, on the host's monotonic clock (read by :mod:`hlacore.trace`).
+    arrived and each reflection of it left, on the host's monotonic clock (read by ``hlacore.trace``).
     ``client_budget`` and ``stall_timeout`` are ``rtig --client-budget`` and ``--stall-timeout``, the flow
     control of docs/robustness.md: the bytes the gateway holds for one client (its output queue and the
     messages time management keeps for it) above which the clients sending to it are no longer read until
@@ -35,8 +35,12 @@ class Gateway:
     either side sends (larger best-effort messages go over TCP); 0 turns datagrams off.
     """
 
+    #: The smallest ``client_budget`` in bytes (a smaller one raises :class:`ValueError`).
     MIN_CLIENT_BUDGET = 65536
+    #: The bounds of ``max_frame`` in bytes, both included.
     MAX_FRAME_RANGE = (65536, 1 << 30)
+    #: The bounds of ``max_datagram`` in bytes, both included, when it is not 0 (65507: the largest UDP payload
+    #: over IPv4).
     MAX_DATAGRAM_RANGE = (256, 65507)
 
     def __init__(
@@ -93,7 +97,7 @@ class Gateway:
 
     def status(self) -> dict[str, Any]:
         """Per federation, each federate's time, lookahead, regulating/constrained, pending request and
-        queued messages: see :func:`hlacore.status.status`."""
+        queued messages: see ``hlacore.status.status``."""
         from .status import status
 
         return status(self.address, self._secret_file)

@@ -41,8 +41,10 @@ from ._core import (  # noqa: F401  (re-exported handle types)
     TransportationHandle,
 )
 
-# Bounds of a region's ranges (data distribution management, docs/ddm.md): closed ranges within them.
+#: Lowest bound of a region's ranges (data distribution management, docs/ddm.md): ranges are closed,
+#: ``MIN_EXTENT <= lower <= upper <= MAX_EXTENT``.
 MIN_EXTENT: int = _core.MIN_EXTENT
+#: Highest bound of a region's ranges (2**32 - 1).
 MAX_EXTENT: int = _core.MAX_EXTENT
 
 DEFAULT_ADDRESS = "127.0.0.1:60400"
@@ -52,6 +54,7 @@ from .exceptions import *  # noqa: F401,F403  (the HLA 1.3 exceptions, PyHLA exp
 
 _EXCEPTION_NAMES = list(_exceptions.__all__)
 # PyHLA's spellings.
+#: PyHLA's spelling of :class:`RTIinternalError`, the same class.
 RTIInternalError = _core.RTIinternalError
 Exception = _core.RTIexception  # noqa: A001  (hla.rti.Exception was PyHLA's base class)
 
@@ -59,9 +62,13 @@ Exception = _core.RTIexception  # noqa: A001  (hla.rti.Exception was PyHLA's bas
 class ResignAction:
     """Actions for :meth:`RTIAmbassador.resignFederationExecution` (PyHLA's values)."""
 
+    #: Leave the attributes this federate owns unowned (or to a federate waiting to acquire them).
     ReleaseAttributes = 1
+    #: Delete the objects this federate may delete (``removeObjectInstance`` at the others).
     DeleteObjects = 2
+    #: Both: delete the objects this federate may delete, release its other attributes.
     DeleteObjectsAndReleaseAttributes = 3
+    #: Neither: raises :class:`FederateOwnsAttributes` while this federate owns attributes.
     NoAction = 4
 
 
@@ -69,33 +76,254 @@ class FederateAmbassador:
     """Base class for a federate's callbacks.
 
     Define the callbacks you need with PyHLA's signatures; a callback you do not define is not called.
-    ``hlacore._core.CALLBACKS`` lists their names (declared once, in ``cpp/rti/wire/callbacks.hpp``): ``synchronizationPointRegistrationSucceeded(label)``,
-    ``synchronizationPointRegistrationFailed(label)``, ``announceSynchronizationPoint(label, tag)``,
-    ``federationSynchronized(label)``, ``startRegistrationForObjectClass(objectClass)``,
-    ``stopRegistrationForObjectClass(objectClass)``, ``turnInteractionsOn(interactionClass)``,
-    ``turnInteractionsOff(interactionClass)``, ``discoverObjectInstance(object, objectClass, name)``,
-    ``reflectAttributeValues(object, attributes, tag, order, transport[, time, retraction])``,
-    ``receiveInteraction(interactionClass, parameters, tag, order, transport[, time, retraction])``,
-    ``removeObjectInstance(object, tag[, time, retraction])``,
-    ``provideAttributeValueUpdate(object, attributes)``, ``timeRegulationEnabled(time)``,
-    ``timeConstrainedEnabled(time)``, ``timeAdvanceGrant(time)``, ``requestRetraction(retraction)``,
-    and for ownership management (HLA 1.3 §7; ``attributes`` is a tuple of :class:`AttributeHandle`)
-    ``requestAttributeOwnershipAssumption(object, attributes, tag)``,
-    ``attributeOwnershipDivestitureNotification(object, attributes)``,
-    ``attributeOwnershipAcquisitionNotification(object, attributes)``,
-    ``attributeOwnershipUnavailable(object, attributes)``,
-    ``requestAttributeOwnershipRelease(object, attributes, tag)``,
-    ``confirmAttributeOwnershipAcquisitionCancellation(object, attributes)``,
-    ``informAttributeOwnership(object, attribute, owner)``, ``attributeIsNotOwned(object, attribute)`` and
-    ``attributeOwnedByRTI(object, attribute)`` (never called: hlacore has no RTI-owned attributes);
-    with the attribute scope advisory switch on (HLA 1.3 §6.13-6.14, docs/ddm.md)
-    ``attributesInScope(object, attributes)`` and ``attributesOutOfScope(object, attributes)``; with the
-    attribute relevance advisory switch on, ``turnUpdatesOnForObjectInstance(object, attributes)`` and
-    ``turnUpdatesOffForObjectInstance(object, attributes)``; and for save/restore (HLA 1.3 §4.11-4.22,
-    docs/save-restore.md) ``initiateFederateSave(label)``, ``federationSaved()``, ``federationNotSaved()``,
-    ``requestFederationRestoreSucceeded(label)``, ``requestFederationRestoreFailed(label, reason)``,
-    ``federationRestoreBegun()``, ``initiateFederateRestore(label, federateHandle)``, ``federationRestored()``
-    and ``federationNotRestored()``.
+    :meth:`RTIAmbassador.tick` delivers them on the ticking thread, and an exception a callback raises
+    propagates out of ``tick``. ``hlacore._core.CALLBACKS`` lists their names (declared once, in
+    ``cpp/rti/wire/callbacks.hpp``). Labels, tags and names arrive as ``str`` (the bytes sent, decoded as
+    UTF-8 with ``surrogateescape``); ``attributes`` is a dict ``{AttributeHandle: bytes}`` in
+    ``reflectAttributeValues`` and a tuple of :class:`AttributeHandle` in the other callbacks.
+
+    - synchronization points (HLA 1.3 §4.6-4.10): ``synchronizationPointRegistrationSucceeded(label)``,
+      ``synchronizationPointRegistrationFailed(label)``, ``announceSynchronizationPoint(label, tag)``,
+      ``federationSynchronized(label)``;
+    - save and restore (HLA 1.3 §4.11-4.22, docs/save-restore.md): ``initiateFederateSave(label)``,
+      ``federationSaved()``, ``federationNotSaved()``, ``requestFederationRestoreSucceeded(label)``,
+      ``requestFederationRestoreFailed(label, reason)``, ``federationRestoreBegun()``,
+      ``initiateFederateRestore(label, federateHandle)``, ``federationRestored()``,
+      ``federationNotRestored()``;
+    - declarations (HLA 1.3 §5): ``startRegistrationForObjectClass(objectClass)``,
+      ``stopRegistrationForObjectClass(objectClass)``, ``turnInteractionsOn(interactionClass)``,
+      ``turnInteractionsOff(interactionClass)``;
+    - objects (HLA 1.3 §6): ``discoverObjectInstance(object, objectClass, name)``,
+      ``reflectAttributeValues(object, attributes, tag, order, transport[, time, retraction])``,
+      ``receiveInteraction(interactionClass, parameters, tag, order, transport[, time, retraction])``,
+      ``removeObjectInstance(object, tag[, time, retraction])``,
+      ``provideAttributeValueUpdate(object, attributes)``; with the attribute scope advisory switch on
+      (HLA 1.3 §6.13-6.14, docs/ddm.md) ``attributesInScope(object, attributes)`` and
+      ``attributesOutOfScope(object, attributes)``; with the attribute relevance advisory switch on,
+      ``turnUpdatesOnForObjectInstance(object, attributes)`` and
+      ``turnUpdatesOffForObjectInstance(object, attributes)``;
+    - ownership (HLA 1.3 §7): ``requestAttributeOwnershipAssumption(object, attributes, tag)``,
+      ``attributeOwnershipDivestitureNotification(object, attributes)``,
+      ``attributeOwnershipAcquisitionNotification(object, attributes)``,
+      ``attributeOwnershipUnavailable(object, attributes)``,
+      ``requestAttributeOwnershipRelease(object, attributes, tag)``,
+      ``confirmAttributeOwnershipAcquisitionCancellation(object, attributes)``,
+      ``informAttributeOwnership(object, attribute, owner)``, ``attributeIsNotOwned(object, attribute)``,
+      ``attributeOwnedByRTI(object, attribute)``;
+    - time (HLA 1.3 §8): ``timeRegulationEnabled(time)``, ``timeConstrainedEnabled(time)``,
+      ``timeAdvanceGrant(time)``, ``requestRetraction(retraction)``.
+
+    .. rubric:: Synchronization points (HLA 1.3 §4.6-4.10)
+
+    .. method:: synchronizationPointRegistrationSucceeded(label: str) -> None
+
+       :meth:`RTIAmbassador.registerFederationSynchronizationPoint` registered ``label``.
+
+    .. method:: synchronizationPointRegistrationFailed(label: str) -> None
+
+       :meth:`RTIAmbassador.registerFederationSynchronizationPoint` did not register ``label``: the label
+       is in use, or a federate it names is not joined.
+
+    .. method:: announceSynchronizationPoint(label: str, tag: str) -> None
+
+       A federate registered the synchronization point ``label`` for this federate; answer with
+       :meth:`RTIAmbassador.synchronizationPointAchieved` once it is reached.
+
+    .. method:: federationSynchronized(label: str) -> None
+
+       Every federate of the synchronization point ``label`` has achieved it.
+
+    .. rubric:: Save and restore (HLA 1.3 §4.11-4.22, docs/save-restore.md)
+
+    .. method:: initiateFederateSave(label: str) -> None
+
+       Save this federate's state under ``label`` now, then call
+       :meth:`RTIAmbassador.federateSaveComplete` (or :meth:`RTIAmbassador.federateSaveNotComplete`).
+
+    .. method:: federationSaved() -> None
+
+       Every federate completed the save.
+
+    .. method:: federationNotSaved() -> None
+
+       The save failed: a federate answered :meth:`RTIAmbassador.federateSaveNotComplete`, or the gateway
+       could not write the save file.
+
+    .. method:: requestFederationRestoreSucceeded(label: str) -> None
+
+       This federate's :meth:`RTIAmbassador.requestFederationRestore` is accepted; the restore begins.
+
+    .. method:: requestFederationRestoreFailed(label: str, reason: str) -> None
+
+       This federate's :meth:`RTIAmbassador.requestFederationRestore` is refused, for ``reason``: no save
+       has that label, it was made with another FOM, or the federates joined are not those saved.
+
+    .. method:: federationRestoreBegun() -> None
+
+       A restore has begun: the services that would cross it raise :class:`RestoreInProgress` until
+       :meth:`federationRestored` or :meth:`federationNotRestored`.
+
+    .. method:: initiateFederateRestore(label: str, federateHandle: FederateHandle) -> None
+
+       Restore this federate's state saved under ``label``; from now on it is the federate
+       ``federateHandle`` of the save. Then call :meth:`RTIAmbassador.federateRestoreComplete` (or
+       :meth:`RTIAmbassador.federateRestoreNotComplete`).
+
+    .. method:: federationRestored() -> None
+
+       Every federate completed the restore.
+
+    .. method:: federationNotRestored() -> None
+
+       The restore failed: a federate answered :meth:`RTIAmbassador.federateRestoreNotComplete`.
+
+    .. rubric:: Declarations (HLA 1.3 §5)
+
+    .. method:: startRegistrationForObjectClass(objectClass: ObjectClassHandle) -> None
+
+       Some federate subscribes to attributes this federate publishes for ``objectClass``: its instances
+       are wanted (class relevance advisory switch, on by default).
+
+    .. method:: stopRegistrationForObjectClass(objectClass: ObjectClassHandle) -> None
+
+       No federate subscribes to what this federate publishes for ``objectClass`` any more.
+
+    .. method:: turnInteractionsOn(interactionClass: InteractionClassHandle) -> None
+
+       Some federate subscribes to ``interactionClass``, which this federate publishes (interaction
+       relevance advisory switch, on by default).
+
+    .. method:: turnInteractionsOff(interactionClass: InteractionClassHandle) -> None
+
+       No federate subscribes to ``interactionClass`` any more.
+
+    .. rubric:: Objects (HLA 1.3 §6)
+
+    .. method:: discoverObjectInstance(object: ObjectHandle, objectClass: ObjectClassHandle, name: str) -> None
+
+       A new object of a subscribed class: ``objectClass`` is the subscribed class it is known as here
+       (the registered class or its closest subscribed superclass).
+
+    .. method:: reflectAttributeValues(object: ObjectHandle, attributes: dict[AttributeHandle, bytes], \
+                tag: str, order: OrderingHandle, transport: TransportationHandle, time: float | None = None, \
+                retraction: EventRetractionHandle | None = None) -> None
+
+       New values of subscribed attributes of ``object``, as its owner sent them with
+       :meth:`RTIAmbassador.updateAttributeValues`. A timestamp-ordered update also passes ``time`` and
+       the ``retraction`` handle of the message.
+
+    .. method:: receiveInteraction(interactionClass: InteractionClassHandle, \
+                parameters: dict[ParameterHandle, bytes], tag: str, order: OrderingHandle, \
+                transport: TransportationHandle, time: float | None = None, \
+                retraction: EventRetractionHandle | None = None) -> None
+
+       An interaction of a subscribed class (:meth:`RTIAmbassador.sendInteraction`); ``time`` and
+       ``retraction`` as in :meth:`reflectAttributeValues`.
+
+    .. method:: removeObjectInstance(object: ObjectHandle, tag: str, time: float | None = None, \
+                retraction: EventRetractionHandle | None = None) -> None
+
+       ``object`` was deleted (:meth:`RTIAmbassador.deleteObjectInstance`, or its owner resigned with
+       :attr:`ResignAction.DeleteObjects`); ``time`` and ``retraction`` as in
+       :meth:`reflectAttributeValues`.
+
+    .. method:: provideAttributeValueUpdate(object: ObjectHandle, attributes: tuple[AttributeHandle, ...]) -> None
+
+       A federate asked for the current values of ``attributes`` of ``object``, which this federate owns
+       (:meth:`RTIAmbassador.requestObjectAttributeValueUpdate` and the like): send them with
+       :meth:`RTIAmbassador.updateAttributeValues`.
+
+    .. method:: attributesInScope(object: ObjectHandle, attributes: tuple[AttributeHandle, ...]) -> None
+
+       ``attributes`` of ``object`` came into scope (attribute scope advisory switch,
+       :meth:`RTIAmbassador.enableAttributeScopeAdvisorySwitch`).
+
+    .. method:: attributesOutOfScope(object: ObjectHandle, attributes: tuple[AttributeHandle, ...]) -> None
+
+       ``attributes`` of ``object`` went out of scope.
+
+    .. method:: turnUpdatesOnForObjectInstance(object: ObjectHandle, attributes: tuple[AttributeHandle, ...]) -> None
+
+       Some other federate has ``attributes`` of ``object``, owned by this federate, in scope: updates
+       of them are wanted (attribute relevance advisory switch,
+       :meth:`RTIAmbassador.enableAttributeRelevanceAdvisorySwitch`).
+
+    .. method:: turnUpdatesOffForObjectInstance(object: ObjectHandle, attributes: tuple[AttributeHandle, ...]) -> None
+
+       No other federate has ``attributes`` of ``object`` in scope any more.
+
+    .. rubric:: Ownership (HLA 1.3 §7)
+
+    .. method:: requestAttributeOwnershipAssumption(object: ObjectHandle, \
+                attributes: tuple[AttributeHandle, ...], tag: str) -> None
+
+       The owner of ``attributes`` of ``object`` offers them
+       (:meth:`RTIAmbassador.negotiatedAttributeOwnershipDivestiture`) to the federates that know the
+       object and publish them; take them with :meth:`RTIAmbassador.attributeOwnershipAcquisition` if
+       wanted.
+
+    .. method:: attributeOwnershipDivestitureNotification(object: ObjectHandle, \
+                attributes: tuple[AttributeHandle, ...]) -> None
+
+       The negotiated divestiture of ``attributes`` of ``object`` is complete: this federate no longer
+       owns them.
+
+    .. method:: attributeOwnershipAcquisitionNotification(object: ObjectHandle, \
+                attributes: tuple[AttributeHandle, ...]) -> None
+
+       This federate now owns ``attributes`` of ``object``.
+
+    .. method:: attributeOwnershipUnavailable(object: ObjectHandle, attributes: tuple[AttributeHandle, ...]) -> None
+
+       :meth:`RTIAmbassador.attributeOwnershipAcquisitionIfAvailable` could not get ``attributes`` of
+       ``object``: another federate owns them or is acquiring them.
+
+    .. method:: requestAttributeOwnershipRelease(object: ObjectHandle, \
+                attributes: tuple[AttributeHandle, ...], tag: str) -> None
+
+       Another federate wants ``attributes`` of ``object``, owned by this federate; release them with
+       :meth:`RTIAmbassador.attributeOwnershipReleaseResponse` if willing.
+
+    .. method:: confirmAttributeOwnershipAcquisitionCancellation(object: ObjectHandle, \
+                attributes: tuple[AttributeHandle, ...]) -> None
+
+       :meth:`RTIAmbassador.cancelAttributeOwnershipAcquisition` succeeded for ``attributes`` of
+       ``object``.
+
+    .. method:: informAttributeOwnership(object: ObjectHandle, attribute: AttributeHandle, \
+                owner: FederateHandle) -> None
+
+       Answer to :meth:`RTIAmbassador.queryAttributeOwnership`: the federate ``owner`` owns
+       ``attribute`` of ``object``.
+
+    .. method:: attributeIsNotOwned(object: ObjectHandle, attribute: AttributeHandle) -> None
+
+       Answer to :meth:`RTIAmbassador.queryAttributeOwnership`: no federate owns ``attribute`` of
+       ``object``.
+
+    .. method:: attributeOwnedByRTI(object: ObjectHandle, attribute: AttributeHandle) -> None
+
+       Answer to :meth:`RTIAmbassador.queryAttributeOwnership` for an attribute the RTI owns; never
+       called: hlacore has no RTI-owned attributes.
+
+    .. rubric:: Time (HLA 1.3 §8, docs/time-management.md)
+
+    .. method:: timeRegulationEnabled(time: float) -> None
+
+       :meth:`RTIAmbassador.enableTimeRegulation` took effect; ``time`` is the federate's time now.
+
+    .. method:: timeConstrainedEnabled(time: float) -> None
+
+       :meth:`RTIAmbassador.enableTimeConstrained` took effect; ``time`` is the federate's time now.
+
+    .. method:: timeAdvanceGrant(time: float) -> None
+
+       The pending time advance request is granted: the federate's time is now ``time``.
+
+    .. method:: requestRetraction(retraction: EventRetractionHandle) -> None
+
+       The sender retracted (:meth:`RTIAmbassador.retract`) a timestamped message this federate was
+       already delivered; ``retraction`` is the handle that came with it.
     """
 
 

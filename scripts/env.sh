@@ -6,6 +6,16 @@ if [ ! -x .venv/bin/python ]; then
 fi
 pip_install() { .venv/bin/python -m pip install --quiet --disable-pip-version-check "$@"; }
 
+# Opens build/wheel.lock on a new descriptor (its number in the variable named $1) and waits (20 min at most)
+# for the lock: one build at a time in build/wheel (install_hlacore, scripts/wheel.sh), since two ninjas
+# writing the same objects break the link. Closing the descriptor releases it.
+lock_build_dir() {
+    local -n fd=$1
+    mkdir -p build
+    exec {fd}>build/wheel.lock
+    flock -w 1200 "$fd" || { echo "another build holds build/wheel.lock (20 min)" >&2; exec {fd}>&-; return 1; }
+}
+
 # Installs hlacore with the given extras (e.g. "test", or "" for none) into .venv, unless those very
 # sources are installed with those extras already (.venv/hlacore-installed holds a hash of every file the
 # build reads). A rebuild reuses build/wheel, so CMake compiles only what changed.
@@ -17,11 +27,15 @@ install_hlacore() {
     fi
     echo "Building hlacore into .venv (the C++ core: a few minutes the first time, seconds after a change) ..." >&2
     pip_install scikit-build-core pybind11 cmake ninja
-    mkdir -p build
+    local lock status=0
+    lock_build_dir lock || return 1
     # The compiler's progress lines as they come; the whole log in build/install.log, its end on failure.
-    if ! .venv/bin/python -m pip install --disable-pip-version-check --no-build-isolation -v \
+    .venv/bin/python -m pip install --disable-pip-version-check --no-build-isolation -v \
             -C build-dir=build/wheel ".${extras:+[$extras]}" 2>&1 | tee build/install.log \
-            | { grep --line-buffered -E '^ *\[[0-9]+/[0-9]+\] (Building|Linking)' || true; } | cut -c1-110 >&2; then
+            | { grep --line-buffered -E '^ *\[[0-9]+/[0-9]+\] (Building|Linking)' || true; } | cut -c1-110 >&2 \
+        || status=$?
+    exec {lock}>&-
+    if [ "$status" -ne 0 ]; then
         tail -n 40 build/install.log >&2
         echo "install_hlacore: the build failed; the whole log is build/install.log" >&2
         return 1

@@ -21,24 +21,8 @@ if ! .venv/bin/python -c "import scikit_build_core, pybind11" 2>/dev/null || [ !
     pip_install scikit-build-core pybind11 cmake ninja
 fi
 
-mkdir -p build "$outdir"
-# One build at a time in build/wheel: two ninjas writing the same objects break the link (LTO then fails
-# with "resolution sub id ... not in object file"). Wheels take build/wheel.lock; install_hlacore takes none,
-# so first wait (at most 20 min) for a pip or CMake build of this checkout's build/wheel to end.
-exec {lock}>build/wheel.lock
-flock -w 1200 "$lock" || { echo "wheel.sh: another wheel build holds build/wheel.lock" >&2; exit 1; }
-building_elsewhere() {
-    local pid
-    for pid in $(pgrep -f -- 'build-dir=build/wheel|cmake --build build/wheel' || true); do
-        [ "$pid" != $$ ] && [ "$(readlink "/proc/$pid/cwd" 2>/dev/null)" = "$PWD" ] && return 0
-    done
-    return 1
-}
-if building_elsewhere; then
-    echo "waiting for the build running in build/wheel (an install of hlacore) to end ..." >&2
-    for _ in $(seq 1200); do building_elsewhere || break; sleep 1; done
-    ! building_elsewhere || { echo "wheel.sh: build/wheel is still busy after 20 min" >&2; exit 1; }
-fi
+mkdir -p "$outdir"
+lock_build_dir lock || exit 1  # held until this script exits: one build at a time in build/wheel
 staging=$(mktemp -d build/wheel-out.XXXXXX)
 trap 'rm -rf "$staging"' EXIT
 echo "Building the hlacore wheel (build/wheel: seconds when the scripts have built these sources) ..." >&2

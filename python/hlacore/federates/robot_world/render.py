@@ -191,7 +191,7 @@ def _pyplot() -> Any:
         import matplotlib.pyplot as plt
     except ImportError as exc:
         raise ImportError(
-            "plotting trajectories needs matplotlib: pip install matplotlib (or hlacore[bench])"
+            "plotting trajectories needs matplotlib: pip install matplotlib (or hlacore[plot])"
         ) from exc
     return plt
 

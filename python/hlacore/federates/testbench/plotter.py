@@ -1,7 +1,7 @@
 """The plotter: a CSV trace of every checked cycle and a trajectory PNG (robot vs reference, Fig. 8/9),
 and :func:`write_outputs`, which writes both and the delay table.
 
-The PNG needs matplotlib (the ``bench`` extra: ``pip install hlacore[bench]``); without it
+The PNG needs matplotlib (the ``plot`` extra: ``pip install 'hlacore[plot]'``); without it
 :func:`write_plot` returns a message saying so and writes nothing.
 """
 
@@ -60,7 +60,7 @@ def write_plot(path: pathlib.Path, verdicts: Sequence[Verdict], scenario: Scenar
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt  # type: ignore[import-not-found, unused-ignore]
     except ImportError:
-        return "no plot: matplotlib is not installed (pip install 'hlacore[bench]' or matplotlib)"
+        return "no plot: matplotlib is not installed (pip install 'hlacore[plot]' or matplotlib)"
     ordered = sorted(verdicts, key=lambda v: v.cycle)
     figure, axes = plt.subplots(figsize=(5.5, 6.0))
     for i, (a, b) in enumerate(scenario.walls):

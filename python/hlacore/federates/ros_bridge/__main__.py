@@ -4,11 +4,14 @@
         [--untimed] [--period 0.1] [--lookahead 0.1] [--clock] [--rate R] [--until T]
     python -m hlacore.federates.ros_bridge --rtig HOST:PORT --world-node FILE [--robot ...] --clock
         [--await-state 5] [--wait-connections 30] ...
+    python -m hlacore.federates.ros_bridge --rtig HOST:PORT --robot-node NAME [--sensor scan|range|none]
+        --untimed
 
 ``--world`` bridges robots simulated by an HLA federate (the robot world) to ROS; ``--world-node`` bridges
 robots simulated by a ROS node (``python -m hlacore.federates.ros_bridge.stage_node FILE``) to HLA: the
 ``cmd_vel`` interactions go out as Twist, the node's odometry, ground truth, scan and stall come back as
-``WorldRobot`` attributes of instances the bridge registers.
+``WorldRobot`` attributes of instances the bridge registers. ``--robot-node NAME`` does the same for one
+robot with no world file, a real one for instance (docs/own-robot.md): its topics under ``/NAME``.
 
 The ROS master is ``$ROS_MASTER_URI`` (set ``ROS_IP=127.0.0.1`` on loopback). Prints ``ros_bridge ready``
 once the node is up and the federate joined (and time-enabled), ``ros_bridge stopped at T`` at the end;
@@ -24,7 +27,7 @@ from typing import Any, Optional, Sequence
 
 from hlacore.federates.robot_world import read_world
 
-from .bridge import Mapping, RosBridge, stage_mappings, world_mappings, world_node_mappings
+from .bridge import Mapping, RosBridge, node_mappings, stage_mappings, world_mappings, world_node_mappings
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
@@ -38,6 +41,11 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                                         "ranger's field of view and range")
     parser.add_argument("--world-node", help="a .world file simulated by a stageros-style ROS node: bridge its "
                                              "robots (or the --robot ones) the other way")
+    parser.add_argument("--robot-node", action="append", default=[], metavar="NAME",
+                        help="a robot that is a ROS node, its topics under /NAME: bridge it the other way "
+                             "(repeatable)")
+    parser.add_argument("--sensor", choices=("scan", "range", "none"), default="scan",
+                        help="with --robot-node: the ranger topic, /NAME/base_scan or /NAME/range (default scan)")
     parser.add_argument("--await-state", type=float, default=None, metavar="SECONDS",
                         help="after each /clock, wait for the node's state stamped with it (lockstep)")
     parser.add_argument("--acks", action="store_true",
@@ -54,16 +62,18 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--until", type=float, default=None, help="stop at this federation time")
     parser.add_argument("--node-name", default="hla_bridge")
     args = parser.parse_args(argv)
+    mappings: list[Mapping] = []
     if args.world or args.world_node:
-        mappings: list[Mapping] = []
         if args.world:
             mappings += world_mappings(read_world(args.world), args.robot or None)
         if args.world_node:
             mappings += world_node_mappings(read_world(args.world_node), args.robot or None, acks=args.acks)
     else:
-        mappings = [m for robot in args.robot for m in stage_mappings(robot)]
+        mappings += [m for robot in args.robot for m in stage_mappings(robot)]
+    sensor = None if args.sensor == "none" else args.sensor
+    mappings += [m for robot in args.robot_node for m in node_mappings(robot, sensor=sensor, acks=args.acks)]
     if not mappings:
-        parser.error("nothing to bridge: give --robot or --world")
+        parser.error("nothing to bridge: give --robot, --robot-node, --world or --world-node")
     bridge = RosBridge(mappings, args.rtig, federation=args.federation, node_name=args.node_name,
                        timed=not args.untimed, period=args.period, lookahead=args.lookahead, clock=args.clock,
                        rate=args.rate, await_state=args.await_state)

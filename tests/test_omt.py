@@ -458,13 +458,15 @@ def test_enumerated_attribute_access_and_pack():
                              {"Little": 0, "Big": 1, "Yellow": 64})
     assert isinstance(enum.Yellow, int)
     assert enum.Yellow == 64
-    assert repr(enum.Little) == "Enum.Little"
-    assert str(enum.Big) == "Big"
+    assert repr(enum.Yellow) == "<Enum.Yellow=64>"
+    assert str(enum.Little) == "Enum.Little"
+    assert f"{enum.Big}" == "Enum.Big"
     assert enum["Big"] is enum.Big
     assert enum.pack(enum.Yellow) == b"\x00\x00\x00\x40"
     assert enum.pack(1) == enum.pack("Big") == b"\x00\x00\x00\x01"
     assert enum.octetBoundary == 4
-    assert [str(e) for e in enum] == ["Little", "Big", "Yellow"]
+    assert [e.name for e in enum] == ["Little", "Big", "Yellow"]
+    assert [str(e) for e in enum] == ["Enum.Little", "Enum.Big", "Enum.Yellow"]
 
 
 def test_enumerated_unpack_returns_enumerator():
@@ -501,7 +503,7 @@ def test_enumerated_in_record_and_pickle():
     assert data == b"\x00\x00\x00\x03\x00\x00\x00\x01"
     assert record.unpack(data) == ({"kind": 3, "ok": True}, 8)
     copy = pickle.loads(pickle.dumps(enum.X))
-    assert copy == 3 and repr(copy) == "Kind.X"
+    assert copy == 3 and repr(copy) == "<Kind.X=3>" and str(copy) == "Kind.X"
 
 
 # --------------------------------------------------------------------------
@@ -596,3 +598,281 @@ def test_public_names_have_docstrings():
     for name in omt.__all__:
         obj = getattr(omt, name)
         assert (obj.__doc__ or "").strip(), name
+
+
+def test_public_methods_have_docstrings():
+    """Every public method and property of the public classes is documented
+    (the API reference is generated from the docstrings)."""
+    for name in omt.__all__:
+        cls = getattr(omt, name)
+        if not isinstance(cls, type):
+            continue
+        for attribute, member in vars(cls).items():
+            if attribute.startswith("_") and attribute not in (
+                    "__init__", "__new__", "__repr__", "__str__"):
+                continue
+            if callable(member) or isinstance(member, property):
+                assert (member.__doc__ or "").strip(), f"{name}.{attribute}"
+
+
+# --------------------------------------------------------------------------
+# the MIM's standard names
+# --------------------------------------------------------------------------
+
+def test_mim_octet_types():
+    """HLAbyte and HLAASCIIchar are one octet; HLAASCIIchar also packs an
+    ASCII character."""
+    assert omt.HLAbyte.pack(b"\x80") == b"\x80"
+    assert omt.HLAbyte.unpack(b"\x07") == (b"\x07", 1)
+    assert omt.HLAASCIIchar.pack("A") == omt.HLAASCIIchar.pack(65) == b"A"
+    assert omt.HLAASCIIchar.unpack(b"Az") == (b"A", 1)
+    assert omt.HLAbyte.octetBoundary == omt.HLAASCIIchar.octetBoundary == 1
+    with pytest.raises(ValueError, match="HLAASCIIchar: expected one ASCII"):
+        omt.HLAASCIIchar.pack("\u00e9")
+    with pytest.raises(ValueError, match="HLAASCIIchar: expected one ASCII"):
+        omt.HLAASCIIchar.pack("AB")
+    with pytest.raises(TypeError, match="HLAbyte"):
+        omt.HLAbyte.pack("A")
+
+
+def test_mim_sixteen_bit_types():
+    """HLAoctetPairBE/LE are 16-bit unsigned; HLAunicodeChar a UTF-16BE
+    code unit unpacked to a one-character str."""
+    assert omt.HLAoctetPairBE.pack(0x1234) == b"\x12\x34"
+    assert omt.HLAoctetPairLE.pack(0x1234) == b"\x34\x12"
+    assert omt.HLAoctetPairLE.unpack(b"\xff\xff") == (0xFFFF, 2)
+    assert omt.HLAunicodeChar.pack("\u00e9") == b"\x00\xe9"
+    assert omt.HLAunicodeChar.pack(0x65E5) == b"\x65\xe5"
+    assert omt.HLAunicodeChar.unpack(b"\x65\xe5") == ("\u65e5", 2)
+    assert omt.HLAunicodeChar.octetBoundary == 2
+    with pytest.raises(ValueError, match="HLAunicodeChar.*Basic Multilingual"):
+        omt.HLAunicodeChar.pack("\U0001f680")
+    with pytest.raises(ValueError, match="HLAunicodeChar: need 2 bytes"):
+        omt.HLAunicodeChar.unpack(b"\x00")
+
+
+def test_mim_opaque_data():
+    """HLAopaqueData is an HLAinteger32BE count and the bytes."""
+    assert omt.HLAopaqueData.pack(b"\x00\xff") == b"\x00\x00\x00\x02\x00\xff"
+    assert omt.HLAopaqueData.unpack(b"\x00\x00\x00\x01zq") == (b"z", 5)
+    assert omt.HLAopaqueData.pack(bytearray()) == b"\x00\x00\x00\x00"
+    assert omt.HLAopaqueData.octetBoundary == 4
+    with pytest.raises(TypeError, match="HLAopaqueData: expected bytes"):
+        omt.HLAopaqueData.pack("text")
+    with pytest.raises(ValueError, match="HLAopaqueData: need 3 bytes"):
+        omt.HLAopaqueData.unpack(b"\x00\x00\x00\x03ab")
+
+
+def test_enumerated_with_octet_representation():
+    """An enumeration represented by HLAoctet unpacks to its enumerators."""
+    enum = omt.HLAenumerated("Small", omt.HLAoctet, {"A": 1, "B": 200})
+    assert enum.pack("B") == b"\xc8"
+    assert enum.unpack(b"\xc8") == (enum.B, 1)
+
+
+# --------------------------------------------------------------------------
+# HLAvariantRecord
+# --------------------------------------------------------------------------
+
+MODE = omt.HLAenumerated("Mode", omt.HLAinteger32BE, {
+    "Off": 0, "Slow": 1, "Fast": 2, "Reverse": 3, "Turbo": 7, "Test": 9})
+SPEEDS = omt.HLAfixedRecord("Speeds", [("left", omt.HLAfloat64BE),
+                                       ("right", omt.HLAfloat64BE)])
+
+
+def _motor(others=True):
+    """A variant record listing its enumerators in every accepted form."""
+    alternatives = [
+        (["Off"], None, None),                       # no value
+        ([1, MODE.Fast], "speeds", SPEEDS),           # value and enumerator
+        (slice("Reverse", "Turbo"), "throttle", omt.HLAoctet),
+        (["Test"], "NA", "NA"),                       # the OMT's NA
+    ]
+    if others:
+        alternatives.append(([None], "code", omt.HLAinteger16BE))
+    return omt.HLAvariantRecord("Motor", ("mode", MODE), alternatives)
+
+
+def test_variant_record_layout_by_hand():
+    """Discriminant, pad to the alternative's boundary, then the value."""
+    motor = _motor()
+    data = motor.pack({"mode": MODE.Slow, "speeds": {"left": 1.5, "right": -2.0}})
+    assert data == (b"\x00\x00\x00\x01" + b"\x00" * 4
+                    + b"\x3f\xf8\x00\x00\x00\x00\x00\x00"
+                    + b"\xc0\x00\x00\x00\x00\x00\x00\x00")
+    assert motor.unpack(data) == (
+        {"mode": MODE.Slow, "speeds": {"left": 1.5, "right": -2.0}}, 24)
+    assert motor.pack({"mode": "Turbo", "throttle": 9}) == b"\x00\x00\x00\x07\x09"
+    assert motor.pack({"mode": "Off"}) == b"\x00\x00\x00\x00"
+    assert motor.pack({"mode": MODE.Test}) == b"\x00\x00\x00\x09"
+    assert motor.octetBoundary == 8
+    assert motor.fixed_size is None
+
+
+def test_variant_record_unpack_returns_the_enumerator():
+    """unpack gives {discriminant: enumerator, alternative: value}, PyHLA's
+    shape, with only the discriminant when the alternative has no value."""
+    motor = _motor()
+    value, size = motor.unpack(b"\xee" + motor.pack({"mode": 2, "speeds": {
+        "left": 0.0, "right": 0.0}}), 1)
+    assert value["mode"] is MODE.Fast and size == 24
+    assert motor.unpack(b"\x00\x00\x00\x00") == ({"mode": MODE.Off}, 4)
+    assert motor.unpack(b"\x00\x00\x00\x03\x05") == (
+        {"mode": MODE.Reverse, "throttle": b"\x05"}, 5)
+
+
+def test_variant_record_matches_enumerators_by_name_and_value():
+    """Alternatives given by value match a discriminant given by name and
+    vice versa (PyHLA compared ints with names and never matched)."""
+    motor = _motor()
+    expected = motor.pack({"mode": MODE.Fast, "speeds": {"left": 1, "right": 2}})
+    for mode in ("Fast", 2, MODE.Fast):
+        assert motor.pack({"mode": mode, "speeds": {"left": 1, "right": 2}}) == expected
+    assert motor.pack({"mode": "Slow", "speeds": {"left": 1, "right": 2}})[3] == 1
+
+
+def test_variant_record_other_alternative():
+    """HLAother takes every enumerator no alternative lists; None itself
+    works as well as a list holding None."""
+    motor = _motor()
+    assert motor.pack({"mode": 1, "speeds": {"left": 0, "right": 0}})  # listed
+    # every enumerator is listed, so build one where HLAother is used
+    record = omt.HLAvariantRecord("R", ("mode", MODE), [
+        ("Off", None, None), (None, "code", omt.HLAinteger16BE)])
+    data = record.pack({"mode": "Turbo", "code": -3})
+    assert data == b"\x00\x00\x00\x07\xff\xfd"
+    assert record.unpack(data) == ({"mode": MODE.Turbo, "code": -3}, 6)
+
+
+def test_variant_record_integer_discriminant():
+    """An integer discriminant type works with integer enumerators."""
+    record = omt.HLAvariantRecord("ByNumber", ("tag", omt.HLAoctet), [
+        ([1, 2], "small", omt.HLAinteger16BE), ([None], "big", omt.HLAfloat32BE)])
+    assert record.pack({"tag": 2, "small": 5}) == b"\x02\x00\x00\x05"
+    assert record.unpack(b"\x02\x00\x00\x05") == ({"tag": b"\x02", "small": 5}, 4)
+    assert record.pack({"tag": 9, "big": 1.0}) == b"\x09\x00\x00\x00\x3f\x80\x00\x00"
+    with pytest.raises(ValueError, match="needs an enumerated discriminant"):
+        omt.HLAvariantRecord("Bad", ("tag", omt.HLAoctet), [(["A"], "a", omt.HLAoctet)])
+
+
+def test_variant_record_errors():
+    """Clear, typed errors with the record and field in the message."""
+    motor = _motor(others=False)
+    with pytest.raises(ValueError,
+                       match=r"Motor: no alternative for mode = 5 and no HLAother"):
+        motor.pack({"mode": 5})
+    with pytest.raises(ValueError, match=r"Motor\.mode: unknown enumerator 'Warp'"):
+        motor.pack({"mode": "Warp"})
+    with pytest.raises(KeyError, match="Motor: missing discriminant 'mode'"):
+        motor.pack({"speeds": {}})
+    with pytest.raises(KeyError, match=r"Motor: missing field 'speeds' \(the "
+                                       r"alternative for mode = Mode\.Slow\)"):
+        motor.pack({"mode": 1})
+    with pytest.raises(KeyError, match=r"Motor\.speeds: Speeds: missing field 'right'"):
+        motor.pack({"mode": 1, "speeds": {"left": 1.0}})
+    with pytest.raises(ValueError, match=r"Motor\.throttle: HLAoctet.*out of range"):
+        motor.pack({"mode": "Turbo", "throttle": 300})
+    with pytest.raises(TypeError, match="Motor: expected a mapping"):
+        motor.pack([1])
+    with pytest.raises(ValueError, match=r"Motor\.mode: Mode: 5 is not an enumerator"):
+        motor.unpack(b"\x00\x00\x00\x05")
+    with pytest.raises(ValueError, match=r"Motor\.speeds: Speeds\.left: HLAfloat64BE: need 8"):
+        motor.unpack(b"\x00\x00\x00\x01" + b"\x00" * 8)
+
+
+def test_variant_record_definition_errors():
+    """Bad alternatives are rejected when the type is created."""
+    with pytest.raises(ValueError, match="'Warp' is not an enumerator of Mode"):
+        omt.HLAvariantRecord("V", ("mode", MODE), [(["Warp"], "a", omt.HLAoctet)])
+    with pytest.raises(ValueError, match="5 is not a value of Mode"):
+        omt.HLAvariantRecord("V", ("mode", MODE), [([5], "a", omt.HLAoctet)])
+    with pytest.raises(ValueError, match="discriminant value 1 selects two"):
+        omt.HLAvariantRecord("V", ("mode", MODE), [
+            (["Slow"], "a", omt.HLAoctet), ([1], "b", omt.HLAoctet)])
+    with pytest.raises(ValueError, match="two alternatives for HLAother"):
+        omt.HLAvariantRecord("V", ("mode", MODE), [
+            ([None], "a", omt.HLAoctet), (None, "b", omt.HLAoctet)])
+    with pytest.raises(ValueError, match="empty range"):
+        omt.HLAvariantRecord("V", ("mode", MODE), [
+            (slice("Turbo", "Slow"), "a", omt.HLAoctet)])
+    with pytest.raises(TypeError, match=r"V\.a: the alternative type must be"):
+        omt.HLAvariantRecord("V", ("mode", MODE), [(["Slow"], "a", "HLAoctet")])
+
+
+def test_variant_record_in_record_and_array():
+    """A variant record is aligned to its octetBoundary inside composites."""
+    motor = _motor()
+    outer = omt.HLAfixedRecord("Outer", [("id", omt.HLAinteger16BE),
+                                         ("motor", motor),
+                                         ("tail", omt.HLAoctet)])
+    value = {"id": 7, "motor": {"mode": MODE.Off}, "tail": b"!"}
+    data = outer.pack(value)
+    assert data == b"\x00\x07" + b"\x00" * 6 + b"\x00\x00\x00\x00" + b"!"
+    assert outer.unpack(data) == (value, 13)
+    many = omt.HLAvariableArray("Motors", motor)
+    values = ({"mode": MODE.Off}, {"mode": MODE.Turbo, "throttle": b"\x01"})
+    data = many.pack(values)
+    assert data == (b"\x00\x00\x00\x02" + b"\x00" * 4 + b"\x00\x00\x00\x00"
+                    + b"\x00" * 4 + b"\x00\x00\x00\x07\x01")
+    assert many.unpack(data) == (values, len(data))
+
+
+# --------------------------------------------------------------------------
+# HLAencoding
+# --------------------------------------------------------------------------
+
+def test_encoding_forward_reference(monkeypatch):
+    """A composite may use a type defined later in the module namespace."""
+    path = omt.HLAvariableArray("Path", omt.HLAencoding("LaterPoint"))
+    with pytest.raises(KeyError, match="no data type named 'LaterPoint'"):
+        path.pack([{"x": 1.0}])
+    point = omt.HLAfixedRecord("LaterPoint", [("x", omt.HLAfloat64BE)])
+    monkeypatch.setattr(omt, "LaterPoint", point, raising=False)
+    data = path.pack([{"x": 1.0}])
+    assert data == b"\x00\x00\x00\x01" + b"\x00" * 4 + struct.pack(">d", 1.0)
+    assert path.unpack(data) == (({"x": 1.0},), 16)
+    assert path.octetBoundary == 8
+    reference = path.elementType
+    assert reference.resolved and reference.encoding is point
+    assert reference.fields == point.fields  # attributes of the target
+
+
+def test_encoding_unresolved_in_record_names_the_field():
+    """An unresolved reference inside a record fails with its context."""
+    record = omt.HLAfixedRecord("Rec", [("a", omt.HLAoctet),
+                                        ("b", omt.HLAencoding("NoSuchType"))])
+    with pytest.raises(KeyError, match=r"Rec\.b: HLAencoding: no data type "
+                                       r"named 'NoSuchType'"):
+        record.pack({"a": 1, "b": 2})
+    with pytest.raises(KeyError, match="NoSuchType"):
+        record.octetBoundary  # noqa: B018
+    with pytest.raises(KeyError, match="NoSuchType"):
+        omt.HLAencoding("NoSuchType").unpack(b"\x00")
+
+
+def test_encoding_type_parameters():
+    """With typeParameters the named constructor is called on first use."""
+    vector = omt.HLAencoding("HLAfixedArray", ("Vector", omt.HLAfloat32BE, 3))
+    assert vector.name == "Vector" and not vector.resolved
+    assert vector.pack([1.0, 2.0, 3.0]) == struct.pack(">3f", 1.0, 2.0, 3.0)
+    assert vector.cardinality == 3 and vector.fixed_size == 12
+    named = omt.HLAencoding("HLAvariableArray", {
+        "name": "Bytes", "elementType": omt.HLAoctet, "cardinality": 2})
+    assert named.unpack(b"\x00\x00\x00\x01z") == ((b"z",), 5)
+    with pytest.raises(KeyError, match="no data type constructor named 'pack_int'"):
+        omt.HLAencoding("pack_int", (1,)).pack(1)
+
+
+def test_encoding_cycles(monkeypatch):
+    """A name that leads back to itself, or a type that contains itself,
+    fails clearly instead of recursing forever."""
+    monkeypatch.setattr(omt, "LoopA", omt.HLAencoding("LoopB"), raising=False)
+    monkeypatch.setattr(omt, "LoopB", omt.HLAencoding("LoopA"), raising=False)
+    with pytest.raises(ValueError, match="circular reference"):
+        omt.LoopA.pack(1)
+    tree = omt.HLAfixedRecord("Tree", [
+        ("value", omt.HLAinteger32BE),
+        ("children", omt.HLAvariableArray("Trees", omt.HLAencoding("Tree")))])
+    monkeypatch.setattr(omt, "Tree", tree, raising=False)
+    with pytest.raises(NotImplementedError, match="recursive data type"):
+        tree.pack({"value": 1, "children": []})

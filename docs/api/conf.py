@@ -24,11 +24,6 @@ nitpick_ignore = [
     ("py:class", "collections.abc.Mapping"),
     ("py:class", "collections.abc.Sequence"),
     ("py:class", "os.PathLike"),
-    # TEMPORARY, the one name of our own: omt's JCERTI helpers (pack_int, unpack_int, ...) are made by
-    # omt._helpers, whose inner functions are annotated with its private TypeVar _V, so the reference shows
-    # pack_int(value: _V). The fix belongs in omt.py (concrete annotations on the helpers it makes); remove
-    # this line with it.
-    ("py:class", "hlacore.omt._V"),
 ]
 
 # pybind11 puts a method's signature in the first line of its docstring; autodoc reads it from there.

@@ -5,6 +5,8 @@ on loopback and bound to a test host's address in a network namespace."""
 
 from __future__ import annotations
 
+import hashlib
+import hmac
 import os
 import pathlib
 import re
@@ -85,7 +87,7 @@ def test_a_client_that_skips_the_proof_gets_nothing(guarded: RtigProcess, secret
         code, welcome = sneaky.recv_frame()
         assert code == T["Welcome"] and len(welcome) > 32  # the challenge
         sneaky.send(frame("QueryStatus", u32(1)), tolerate_drop=True)
-        sneaky.send(frame("DestroyFederation", u32(2) + string("TestFed")), tolerate_drop=True)
+        sneaky.send(frame("DestroyFederation", u32(2) + string("TestFed") + string("")), tolerate_drop=True)
         sneaky.wait_eof()
         assert sneaky.buffer == b""
     wait_for_log(guarded, "QueryStatus sent before authenticating")
@@ -161,3 +163,101 @@ def test_across_hosts_the_secret_never_crosses_the_link(nethosts: NetHosts, tmp_
     assert outcomes["right"] == "joined"
     assert SECRET.encode() not in captured and b"incorrect horse" not in captured
     assert b"robot.fed" in captured  # the capture is real: the right client's join reply carries the FOM's name
+
+
+# ---- a federation's own secret: creating, joining and destroying it (rtig --federation-secret NAME=FILE) ----
+
+FEDERATION_SECRET = "the robot lab's own"
+
+
+@pytest.fixture
+def federation_secret(tmp_path: pathlib.Path) -> pathlib.Path:
+    return secret_file(tmp_path, FEDERATION_SECRET, "lab")
+
+
+@pytest.fixture
+def lab_gateway(tmp_path: pathlib.Path, federation_secret: pathlib.Path) -> Iterator[RtigProcess]:
+    """A loopback rtig without a connection secret where federation "Lab" has a secret of its own."""
+    with running_rtig(tmp_path, "--federation-secret", f"Lab={federation_secret}") as server:
+        yield server
+
+
+def test_a_federation_with_its_own_secret_is_created_joined_and_destroyed_only_with_it(
+        lab_gateway: RtigProcess, federation_secret: pathlib.Path, tmp_path: pathlib.Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("HLACORE_FEDERATION_SECRET_FILE", raising=False)
+    stranger = rti.RTIAmbassador(lab_gateway.address)
+    wrong = rti.RTIAmbassador(lab_gateway.address, federation_secret_file=secret_file(tmp_path, "guess", "guess"))
+    member = rti.RTIAmbassador(lab_gateway.address, federation_secret_file=federation_secret)
+    with pytest.raises(rti.AuthenticationFailed, match="federation 'Lab' has a secret of its own and no secret "
+                                                       r"was given \(RTIAmbassador\(federation_secret_file="):
+        stranger.createFederationExecution("Lab", ROBOT_FED)
+    with pytest.raises(rti.AuthenticationFailed, match="federation 'Lab' has a secret of its own and the secret is wrong"):
+        wrong.createFederationExecution("Lab", ROBOT_FED)
+    wait_for_log(lab_gateway, r"rtig: refused to create federation 'Lab' for \S+: the secret is wrong")
+    member.createFederationExecution("Lab", ROBOT_FED)
+    for outsider in (stranger, wrong):
+        with pytest.raises(rti.AuthenticationFailed):
+            outsider.joinFederationExecution("intruder", "Lab", rti.FederateAmbassador())
+    wait_for_log(lab_gateway, r"rtig: refused to join federation 'Lab' for \S+: no secret was given")
+    member.joinFederationExecution("robot", "Lab", rti.FederateAmbassador())
+    member.resignFederationExecution(rti.ResignAction.NoAction)
+    with pytest.raises(rti.AuthenticationFailed):
+        stranger.destroyFederationExecution("Lab")
+    # Other federations are open to every client the gateway lets in; the guarded one is still there.
+    stranger.createFederationExecution("Open", ROBOT_FED)
+    stranger.joinFederationExecution("visitor", "Open", rti.FederateAmbassador())
+    assert sorted(f["name"] for f in status(lab_gateway.address)["federations"]) == ["Lab", "Open"]
+    member.destroyFederationExecution("Lab")
+
+
+def test_the_federation_secret_may_come_from_the_environment_and_the_in_process_gateway_takes_them(
+        federation_secret: pathlib.Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    with hlacore.Gateway(port=0, federation_secrets={"Lab": federation_secret}) as gw:
+        monkeypatch.delenv("HLACORE_FEDERATION_SECRET_FILE", raising=False)
+        with pytest.raises(rti.AuthenticationFailed):
+            rti.RTIAmbassador(gw.address).createFederationExecution("Lab", ROBOT_FED)
+        monkeypatch.setenv("HLACORE_FEDERATION_SECRET_FILE", str(federation_secret))
+        rtia = rti.RTIAmbassador(gw.address)  # as a PyHLA script gets it, unchanged
+        rtia.createFederationExecution("Lab", ROBOT_FED)
+        rtia.joinFederationExecution("robot", "Lab", rti.FederateAmbassador())
+
+
+def test_a_federation_proof_is_bound_to_its_connection_action_and_federation(
+        lab_gateway: RtigProcess, federation_secret: pathlib.Path) -> None:
+    """A raw client computes the proof as docs/networking.md describes it: accepted over its own
+    connection's nonce; the same bytes replayed on another connection, or given for another action, are
+    refused."""
+    rti.RTIAmbassador(lab_gateway.address, federation_secret_file=federation_secret).createFederationExecution(
+        "Lab", ROBOT_FED)
+
+    def proof(nonce: bytes, action: str, federation: str = "Lab") -> bytes:
+        message = (b"hlacore federation authentication 1\n" + f"{len(action)}:{action}".encode()
+                   + f"{len(federation)}:{federation}".encode() + nonce)
+        return hmac.new(FEDERATION_SECRET.encode(), message, hashlib.sha256).digest()
+
+    with raw_client(lab_gateway.address) as first, raw_client(lab_gateway.address) as second:
+        first.handshake()
+        second.handshake()
+        assert len(first.nonce) == 32 and first.nonce != second.nonce
+        joined = first.call("JoinFederation", string("first") + string("Lab") + string(proof(first.nonce, "join")))
+        assert joined.error == 0, joined.message
+        replayed = second.call("JoinFederation", string("second") + string("Lab") + string(proof(first.nonce, "join")))
+        assert "the secret is wrong" in replayed.message
+        other_action = second.call("JoinFederation", string("second") + string("Lab")
+                                   + string(proof(second.nonce, "destroy")))
+        assert "the secret is wrong" in other_action.message
+        right = second.call("JoinFederation", string("second") + string("Lab") + string(proof(second.nonce, "join")))
+        assert right.error == 0, right.message
+
+
+@pytest.mark.parametrize("value, why", [
+    ("Lab", "--federation-secret takes NAME=FILE, not 'Lab'"),
+    ("=file", "--federation-secret takes NAME=FILE, not '=file'"),
+    ("Lab=", "--federation-secret takes NAME=FILE, not 'Lab='"),
+    ("Lab=/no/such/file", "cannot read the secret file '/no/such/file'"),
+])
+def test_rtig_refuses_a_malformed_federation_secret(value: str, why: str) -> None:
+    result = subprocess.run([rtig_executable(), "--port", "0", "--federation-secret", value], capture_output=True,
+                            text=True, timeout=30)
+    assert result.returncode == 2 and why in result.stderr, result.stderr

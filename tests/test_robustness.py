@@ -159,13 +159,15 @@ class RawClient:
             self.buffer += chunk
 
     def handshake(self) -> tuple[int, bytes, int]:
-        """Hello, then the Welcome (with no challenge): returns (version, server name, frame limit)."""
+        """Hello, then the Welcome (with no challenge): returns (version, server name, frame limit); keeps the
+        datagram token and limit, and the nonce of federation proofs (empty unless a federation has a secret)."""
         self.send(hello())
         code, payload = self.recv_frame()
         assert code == T["Welcome"]
         c = Cursor(payload)
         version, server, max_frame, challenge = c.take("<H"), c.string(), c.take("<I"), c.string()
         self.datagram_token, self.max_datagram = c.take("<Q"), c.take("<I")
+        self.nonce = c.string()
         assert c.pos == len(payload) and challenge == b""
         return version, server, max_frame
 
@@ -186,13 +188,13 @@ class RawClient:
 
     def join(self, federate: str, federation: str = "TestFed") -> int:
         self.handshake()
-        reply = self.call("JoinFederation", string(federate) + string(federation))
+        reply = self.call("JoinFederation", string(federate) + string(federation) + string(""))
         assert reply.error == 0, reply.message
         return reply.handle
 
     def ping(self) -> None:
         """A round trip (an error Reply) proving that everything sent before was handled."""
-        reply = self.call("DestroyFederation", string("no-such-federation"))
+        reply = self.call("DestroyFederation", string("no-such-federation") + string(""))
         assert reply.error != 0
 
     def frames_until(self, message: str, timeout: float = 5.0) -> tuple[list[tuple[int, bytes]], bytes]:
@@ -472,8 +474,8 @@ def test_a_connection_that_never_says_hello_times_out(tmp_path: pathlib.Path) ->
     [
         (hello(magic=0xDEADBEEF), "expected a Hello handshake, got Hello"),
         (hello(version=99), f"protocol version 99 is not supported (gateway speaks {VERSION})"),
-        (frame("JoinFederation", u32(1) + string("sneaky") + string("TestFed")), "expected a Hello handshake, got JoinFederation"),
-        (frame("Welcome", u16(1) + string("me") + u32(64) + string("") + struct.pack("<QI", 0, 0)),
+        (frame("JoinFederation", u32(1) + string("sneaky") + string("TestFed") + string("")), "expected a Hello handshake, got JoinFederation"),
+        (frame("Welcome", u16(1) + string("me") + u32(64) + string("") + struct.pack("<QI", 0, 0) + string("")),
          "expected a Hello handshake, got Welcome"),
         (frame("Hello", u32(MAGIC) + u16(VERSION) + b"extra"), "trailing bytes in Hello message"),
         (frame("Hello", u32(MAGIC)), "truncated field in Hello message"),
@@ -732,7 +734,7 @@ def test_fed_name_naming_a_fifo_does_not_freeze_the_gateway(
     try:
         with raw_client(rtig.address) as hostile, raw_client(rtig.address) as bystander:
             hostile.handshake()
-            hostile.send(frame("CreateFederation", u32(1) + string("Trap") + string(str(fifo)) + string("")))
+            hostile.send(frame("CreateFederation", u32(1) + string("Trap") + string(str(fifo)) + string("") + string("")))
             # Another client must still get its handshake answered...
             try:
                 bystander.handshake()

@@ -1,6 +1,7 @@
 // hlacore._core: the native layer under `import hlacore`. Declarations and conversions only: the handles,
 // the in-process gateway, RTIAmbassadorBase (its services added per HLA service group by the files of the
 // same name in this folder), the pure TimeManager for the property tests.
+#include <map>
 #include <memory>
 #include <thread>
 
@@ -22,10 +23,12 @@ public:
     BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose,
                       const std::string& save_dir, std::string trace_path, std::size_t client_budget,
                       double stall_timeout, std::uint32_t max_frame, const std::string& secret_file,
-                      std::uint32_t max_datagram) {
+                      std::uint32_t max_datagram, const std::map<std::string, std::string>& federation_secret_files) {
         GatewayOptions options;
         options.max_datagram = max_datagram;
         if (!secret_file.empty()) options.secret = auth::read_secret_file(secret_file);  // RuntimeError, saying why
+        for (const auto& [federation, path] : federation_secret_files)
+            options.federation_secrets[federation] = auth::read_secret_file(path);
         options.max_frame_bytes = max_frame;
         options.client_budget = client_budget;
         options.stall_timeout_s = stall_timeout;
@@ -68,17 +71,26 @@ public:
     }
 };
 
-std::unique_ptr<Client> connect_client(const std::string& host, std::uint16_t port, double timeout,
-                                       const std::string& secret_file, bool datagrams) {
-    static PythonWaitHost wait_host;
-    ClientOptions options{timeout, &wait_host, "", datagrams};
-    if (!secret_file.empty()) {
-        try {
-            options.secret = auth::read_secret_file(secret_file);
-        } catch (const std::exception& e) {
-            throw RtiError(ErrorCode::AuthenticationFailed, e.what());
-        }
+// A secret file's content for the client; AuthenticationFailed, saying why, when it cannot be used.
+std::string client_secret(const std::string& path) {
+    if (path.empty()) return "";
+    try {
+        return auth::read_secret_file(path);
+    } catch (const std::exception& e) {
+        throw RtiError(ErrorCode::AuthenticationFailed, e.what());
     }
+}
+
+std::unique_ptr<Client> connect_client(const std::string& host, std::uint16_t port, double timeout,
+                                       const std::string& secret_file, bool datagrams,
+                                       const std::string& federation_secret_file) {
+    static PythonWaitHost wait_host;
+    ClientOptions options;
+    options.timeout_s = timeout;
+    options.wait_host = &wait_host;
+    options.datagrams = datagrams;
+    options.secret = client_secret(secret_file);
+    options.federation_secret = client_secret(federation_secret_file);
     py::gil_scoped_release release;
     return std::make_unique<Client>(host, port, options);
 }
@@ -122,12 +134,14 @@ PYBIND11_MODULE(_core, m) {
 
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
-                      std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t>(),
+                      std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t,
+                      const std::map<std::string, std::string>&>(),
              py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
              py::arg("trace_path") = "", py::arg("client_budget") = hlacore::GatewayOptions{}.client_budget,
              py::arg("stall_timeout") = hlacore::GatewayOptions{}.stall_timeout_s,
              py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes, py::arg("secret_file") = "",
              py::arg("max_datagram") = hlacore::GatewayOptions{}.max_datagram,
+             py::arg("federation_secret_files") = std::map<std::string, std::string>{},
              py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)
@@ -137,7 +151,7 @@ PYBIND11_MODULE(_core, m) {
     Ambassador rtia(m, "RTIAmbassadorBase");
     rtia
         .def(py::init(&connect_client), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s,
-             py::arg("secret_file") = "", py::arg("datagrams") = true)
+             py::arg("secret_file") = "", py::arg("datagrams") = true, py::arg("federation_secret_file") = "")
         .def_property_readonly("address", &Client::address, "The gateway's \"host:port\" this ambassador is connected to.")
         .def("fileno", &Client::fileno,
              "The connection's socket, for select() or an event loop's add_reader (hlacore.aio): readable when the "

@@ -36,8 +36,10 @@ def frame(name, payload=b""):
 FED = (ROOT / "tests" / "data" / "robot.fed").read_text()
 MESSAGES = {
     "Hello": u32(0x484C4143) + u16(VERSION),
-    "Welcome": u16(VERSION) + s("hlacore rtig") + u32(64 << 20) + s("") + u64(0x1234_5678_9ABC_DEF0) + u32(1400),
-    "Welcome-challenge": u16(VERSION) + s("hlacore rtig") + u32(64 << 20) + s(bytes(range(32))) + u64(0) + u32(0),
+    "Welcome": u16(VERSION) + s("hlacore rtig") + u32(64 << 20) + s("") + u64(0x1234_5678_9ABC_DEF0) + u32(1400) + s(""),
+    "Welcome-challenge": u16(VERSION) + s("hlacore rtig") + u32(64 << 20) + s(bytes(range(32))) + u64(0) + u32(0)
+    + s(""),
+    "Welcome-nonce": u16(VERSION) + s("hlacore rtig") + u32(64 << 20) + s("") + u64(0) + u32(0) + s(bytes(range(32))),
     "Ping": u32(1),
     "Pong": u32(1),
     "Authenticate": s(bytes(32)),
@@ -47,10 +49,11 @@ MESSAGES = {
     "ClockEcho": u32(1) + u64(123_456_789) + u64(987_654_321),
     "DatagramHello": u32(1),
     "DatagramPath": b"",
-    "CreateFederation": u32(1) + s("TestFed") + s("robot.fed") + s(FED),
-    "CreateFederation-by-name": u32(1) + s("TestFed") + s("robot.fed") + s(""),
-    "DestroyFederation": u32(2) + s("TestFed"),
-    "JoinFederation": u32(3) + s("alice") + s("TestFed"),
+    "CreateFederation": u32(1) + s("TestFed") + s("robot.fed") + s(FED) + s(""),
+    "CreateFederation-by-name": u32(1) + s("TestFed") + s("robot.fed") + s("") + s(""),
+    "DestroyFederation": u32(2) + s("TestFed") + s(""),
+    "JoinFederation": u32(3) + s("alice") + s("TestFed") + s(""),
+    "JoinFederation-proof": u32(3) + s("alice") + s("TestFed") + s(bytes(32)),
     "ResignFederation": u32(4) + u8(3),
     "RegisterSyncPoint": s("start") + s("tag") + b(False) + hs([1, 2]),
     "SyncPointAchieved": s("start"),

@@ -16,6 +16,20 @@ namespace hlacore::auth {
 namespace {
 // Binds a proof to this protocol, so that an answer cannot be replayed to another that signs challenges.
 constexpr char kLabel[] = "hlacore gateway authentication 1\n";
+constexpr char kFederationLabel[] = "hlacore federation authentication 1\n";
+
+std::string hmac_sha256(const std::string& key, const std::string& message) {
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int length = 0;
+    if (!HMAC(EVP_sha256(), key.data(), static_cast<int>(key.size()),
+              reinterpret_cast<const unsigned char*>(message.data()), message.size(), digest, &length))
+        throw std::runtime_error("HMAC-SHA256 failed");
+    return std::string(reinterpret_cast<const char*>(digest), length);
+}
+
+bool same(const std::string& answer, const std::string& expected) {
+    return answer.size() == expected.size() && CRYPTO_memcmp(answer.data(), expected.data(), expected.size()) == 0;
+}
 }  // namespace
 
 std::string random_challenge() {
@@ -26,18 +40,23 @@ std::string random_challenge() {
 }
 
 std::string proof(const std::string& secret, const std::string& challenge) {
-    const std::string message = kLabel + challenge;
-    unsigned char digest[EVP_MAX_MD_SIZE];
-    unsigned int length = 0;
-    if (!HMAC(EVP_sha256(), secret.data(), static_cast<int>(secret.size()),
-              reinterpret_cast<const unsigned char*>(message.data()), message.size(), digest, &length))
-        throw std::runtime_error("HMAC-SHA256 failed");
-    return std::string(reinterpret_cast<const char*>(digest), length);
+    return hmac_sha256(secret, kLabel + challenge);
 }
 
 bool verify(const std::string& secret, const std::string& challenge, const std::string& answer) {
-    const std::string expected = proof(secret, challenge);
-    return answer.size() == expected.size() && CRYPTO_memcmp(answer.data(), expected.data(), expected.size()) == 0;
+    return same(answer, proof(secret, challenge));
+}
+
+std::string federation_proof(const std::string& secret, const std::string& nonce, const std::string& action,
+                             const std::string& federation) {
+    // Lengths first: no two (action, federation, nonce) triples make the same message.
+    return hmac_sha256(secret, kFederationLabel + std::to_string(action.size()) + ":" + action +
+                                   std::to_string(federation.size()) + ":" + federation + nonce);
+}
+
+bool verify_federation(const std::string& secret, const std::string& nonce, const std::string& action,
+                       const std::string& federation, const std::string& answer) {
+    return same(answer, federation_proof(secret, nonce, action, federation));
 }
 
 std::string read_secret_file(const std::string& path) {

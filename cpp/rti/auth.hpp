@@ -16,6 +16,14 @@ std::string random_challenge();
 std::string proof(const std::string& secret, const std::string& challenge);
 // Whether the proof answers the challenge, compared in constant time.
 bool verify(const std::string& secret, const std::string& challenge, const std::string& proof);
+
+// A federation's own secret (rtig --federation-secret NAME=FILE) guards its creation, joining and
+// destruction: the client proves it for one `action` ("create", "join", "destroy") on one federation,
+// over the connection's nonce (sent in the Welcome), so a proof seen on the network opens nothing else.
+std::string federation_proof(const std::string& secret, const std::string& nonce, const std::string& action,
+                             const std::string& federation);
+bool verify_federation(const std::string& secret, const std::string& nonce, const std::string& action,
+                       const std::string& federation, const std::string& proof);
 // The secret kept in `path` (its content, without one trailing newline). Throws std::runtime_error, saying
 // why, for a file that cannot be read, is empty, or that users other than its owner may read.
 std::string read_secret_file(const std::string& path);

@@ -22,7 +22,7 @@ int usage(int status) {
     std::fprintf(status ? stderr : stdout,
                  "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--client-budget B]\n"
                  "            [--stall-timeout S] [--max-frame B] [--max-datagram B] [--secret-file FILE | --no-secret]\n"
-                 "            [--save-dir DIR] [--trace FILE] [--verbose]\n"
+                 "            [--federation-secret NAME=FILE]... [--save-dir DIR] [--trace FILE] [--verbose]\n"
                  "       rtig [--secret-file FILE] --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
@@ -44,6 +44,8 @@ int usage(int status) {
                  "                     (docs/networking.md); with --status: the secret to show\n"
                  "  --no-secret        listen beyond loopback without a secret: anyone who reaches the port may\n"
                  "                     read, join, and destroy federations\n"
+                 "  --federation-secret NAME=FILE  creating, joining or destroying federation NAME needs a proof of\n"
+                 "                     the secret in FILE, whatever the client's connection secret (docs/networking.md)\n"
                  "  --save-dir DIR     write federation saves to DIR (created if missing) and restore from\n"
                  "                     there, also after a restart; without it saves live in memory only\n"
                  "  --trace FILE       write when each update/interaction arrived and each reflection of it left,\n"
@@ -145,6 +147,19 @@ int main(int argc, char** argv) {
             const char* path = value("--secret-file");
             try {
                 options.secret = hlacore::auth::read_secret_file(path);
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "rtig: %s\n", e.what());
+                return 2;
+            }
+        } else if (arg == "--federation-secret") {
+            const std::string text = value("--federation-secret");
+            const auto equals = text.find('=');
+            if (equals == 0 || equals == std::string::npos || equals + 1 == text.size()) {
+                std::fprintf(stderr, "rtig: --federation-secret takes NAME=FILE, not '%s'\n", text.c_str());
+                return usage(2);
+            }
+            try {
+                options.federation_secrets[text.substr(0, equals)] = hlacore::auth::read_secret_file(text.substr(equals + 1));
             } catch (const std::exception& e) {
                 std::fprintf(stderr, "rtig: %s\n", e.what());
                 return 2;

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import os
 from types import TracebackType
-from typing import Any, Iterable, Optional
+from typing import Any, Iterable, Mapping, Optional
 
 from . import _core
 
@@ -33,6 +33,9 @@ class Gateway:
     --secret-file``: clients prove they know the secret in it before anything else (docs/networking.md).
     ``max_datagram`` is ``rtig --max-datagram``: best effort over UDP on the same port, the largest datagram
     either side sends (larger best-effort messages go over TCP); 0 turns datagrams off.
+    ``federation_secrets`` maps federation names to secret files (``rtig --federation-secret NAME=FILE``):
+    creating, joining or destroying such a federation needs a proof of its secret
+    (``RTIAmbassador(federation_secret_file=...)``).
     """
 
     #: The smallest ``client_budget`` in bytes (a smaller one raises :class:`ValueError`).
@@ -56,6 +59,7 @@ class Gateway:
         max_frame: int = 64 << 20,
         secret_file: Optional[str | os.PathLike[str]] = None,
         max_datagram: int = 1400,
+        federation_secrets: Optional[Mapping[str, str | os.PathLike[str]]] = None,
     ) -> None:
         if client_budget < self.MIN_CLIENT_BUDGET:
             raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
@@ -73,7 +77,8 @@ class Gateway:
                                                 os.fspath(trace) if trace is not None else "",
                                                 client_budget, stall_timeout, max_frame,
                                                 os.fspath(secret_file) if secret_file is not None else "",
-                                                max_datagram)
+                                                max_datagram,
+                                                {name: os.fspath(path) for name, path in (federation_secrets or {}).items()})
 
     @property
     def host(self) -> str:

@@ -378,11 +378,11 @@ def _resolve_timeout(timeout: Optional[float]) -> float:
         raise _core.RTIinternalError(f"HLACORE_TIMEOUT={text!r} is not a number of seconds") from None
 
 
-def _resolve_secret_file(secret_file: Optional[str | os.PathLike[str]]) -> str:
-    """The secret file's path for the client: `secret_file`, else $HLACORE_SECRET_FILE, else "" (none)."""
+def _resolve_secret_file(secret_file: Optional[str | os.PathLike[str]], variable: str = "HLACORE_SECRET_FILE") -> str:
+    """A secret file's path for the client: `secret_file`, else $`variable`, else "" (none)."""
     if secret_file is not None:
         return os.fspath(secret_file)
-    return os.environ.get("HLACORE_SECRET_FILE", "")
+    return os.environ.get(variable, "")
 
 
 def _resolve_datagrams(datagrams: Optional[bool]) -> bool:
@@ -412,6 +412,9 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     ``secret_file`` (else ``$HLACORE_SECRET_FILE``) names the file with the secret a gateway may ask for
     (``rtig --secret-file``): it is proven by challenge-response, never sent; a gateway that asks when none
     is given, or refuses it, raises :class:`AuthenticationFailed` (docs/networking.md).
+    ``federation_secret_file`` (else ``$HLACORE_FEDERATION_SECRET_FILE``) names the file with the secret of
+    a federation that has one of its own (``rtig --federation-secret NAME=FILE``): creating, joining or
+    destroying that federation proves it, and raises :class:`AuthenticationFailed` without it.
 
     ``datagrams`` (else ``$HLACORE_DATAGRAMS``, 0 or 1; default on): updates and interactions whose values
     all travel ``best_effort`` and carry no timestamp go to the gateway as UDP datagrams, and the gateway
@@ -420,10 +423,12 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     """
 
     def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None,
-                 secret_file: Optional[str | os.PathLike[str]] = None, datagrams: Optional[bool] = None) -> None:
+                 secret_file: Optional[str | os.PathLike[str]] = None, datagrams: Optional[bool] = None,
+                 federation_secret_file: Optional[str | os.PathLike[str]] = None) -> None:
         host, port = _resolve_address(address)
         super().__init__(host, port, _resolve_timeout(timeout), _resolve_secret_file(secret_file),
-                         _resolve_datagrams(datagrams))
+                         _resolve_datagrams(datagrams),
+                         _resolve_secret_file(federation_secret_file, "HLACORE_FEDERATION_SECRET_FILE"))
         self._federate_ambassador: Any = None
 
     # ---- federation management ----

@@ -478,6 +478,7 @@ void Client::file(Arrivals& got) {
             welcomed_ = true;
             max_frame_bytes_ = w->max_frame_bytes;
             challenge_ = std::move(w->challenge);
+            nonce_ = std::move(w->nonce);
             datagram_token_ = w->datagram_token;
             max_datagram_ = w->max_datagram;
             continue;
@@ -593,14 +594,19 @@ void Client::check_attributes(const fom::ObjectClass& cls, const std::vector<fom
 
 // ---- federation management ----
 
+std::string Client::federation_proof(const char* action, const std::string& federation) const {
+    if (options_.federation_secret.empty() || nonce_.empty()) return "";
+    return auth::federation_proof(options_.federation_secret, nonce_, action, federation);
+}
+
 void Client::create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text) {
     const auto id = next_request();
-    call(wire::CreateFederation{id, name, fed_name, fed_text}, id);
+    call(wire::CreateFederation{id, name, fed_name, fed_text, federation_proof("create", name)}, id);
 }
 
 void Client::destroy_federation(const std::string& name) {
     const auto id = next_request();
-    call(wire::DestroyFederation{id, name}, id);
+    call(wire::DestroyFederation{id, name, federation_proof("destroy", name)}, id);
 }
 
 std::uint32_t Client::join(const std::string& federate, const std::string& federation) {
@@ -609,7 +615,7 @@ std::uint32_t Client::join(const std::string& federate, const std::string& feder
         if (fom_) raise(ErrorCode::FederateAlreadyExecutionMember, "this ambassador is already joined");
     }
     const auto id = next_request();
-    wire::Reply reply = call(wire::JoinFederation{id, federate, federation}, id);
+    wire::Reply reply = call(wire::JoinFederation{id, federate, federation, federation_proof("join", federation)}, id);
     auto parsed = std::make_unique<fom::Fom>(fom::parse_fed(reply.text, reply.text2));
     {
         auto sending = lock_send();

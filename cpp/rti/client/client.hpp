@@ -50,6 +50,9 @@ struct ClientOptions {
     WaitHost* wait_host = nullptr;  // not owned; must outlive the client
     // Proven to a gateway that asks (its Welcome carries a challenge; rti/auth.hpp); never sent.
     std::string secret;
+    // Proven when creating, joining or destroying a federation that has a secret of its own (over the
+    // Welcome's nonce; auth::federation_proof); never sent.
+    std::string federation_secret;
     // Best effort over UDP when the gateway offers it and datagrams get through (client/datagrams.cpp).
     bool datagrams = true;
 };
@@ -247,6 +250,8 @@ public:
     bool has_callbacks() const;
 
 private:
+    // The proof of options.federation_secret for `action` on `federation`; empty when there is nothing to prove.
+    std::string federation_proof(const char* action, const std::string& federation) const;
     struct TimeState {
         Time time = 0;
         Time lookahead = 0;
@@ -440,6 +445,7 @@ private:
     ErrorCode closed_code_ = ErrorCode::RTIinternalError;
     std::string closed_reason_;
     std::string challenge_;                           // from the Welcome
+    std::string nonce_;                               // from the Welcome: what federation proofs sign
     std::optional<wire::Authenticated> authenticated_;  // the gateway's answer to Authenticate
     std::optional<wire::ClockEcho> clock_echo_;        // the last answer to a ClockProbe
     std::uint32_t clock_probes_ = 0;

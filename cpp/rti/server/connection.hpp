@@ -30,6 +30,7 @@ struct Gateway::Connection {
     std::string tail;
     bool greeted = false;
     std::string challenge;  // sent in the Welcome while the gateway has a secret and the client has not answered
+    std::string nonce;      // sent in the Welcome when some federation has a secret: its proofs sign it
     bool write_armed = false;
     bool dirty = false;
     FederationEntry* federation = nullptr;

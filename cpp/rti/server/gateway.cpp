@@ -346,9 +346,10 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
                                   std::to_string(wire::kProtocolVersion) + ")");
         c.greeted = true;
         if (!options_.secret.empty()) c.challenge = auth::random_challenge();
+        if (!options_.federation_secrets.empty()) c.nonce = auth::random_challenge();
         give_datagram_token(c);
         wire::encode(c.out, wire::Welcome{wire::kProtocolVersion, "hlacore rtig", options_.max_frame_bytes, c.challenge,
-                                          c.datagram_token, c.datagram_token ? options_.max_datagram : 0});
+                                          c.datagram_token, c.datagram_token ? options_.max_datagram : 0, c.nonce});
         mark_dirty(c);
         return;
     }
@@ -433,8 +434,21 @@ void Gateway::serve(Connection& c, const M& m) {
     }
 }
 
+void Gateway::require_federation_secret(const Connection& c, const char* action, const std::string& federation,
+                                        const std::string& proof) const {
+    const auto secret = options_.federation_secrets.find(federation);
+    if (secret == options_.federation_secrets.end()) return;
+    if (auth::verify_federation(secret->second, c.nonce, action, federation, proof)) return;
+    const std::string why = proof.empty() ? "no secret was given" : "the secret is wrong";
+    log("refused to " + std::string(action) + " federation '" + federation + "' for " + c.peer + ": " + why);
+    throw RtiError(ErrorCode::AuthenticationFailed,
+                   "federation '" + federation + "' has a secret of its own and " + why +
+                       " (RTIAmbassador(federation_secret_file=...), $HLACORE_FEDERATION_SECRET_FILE; docs/networking.md)");
+}
+
 void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
     answer(c, m.request, [&] {
+        require_federation_secret(c, "create", m.federation, m.proof);
         if (federations_.count(m.federation))
             throw RtiError(ErrorCode::FederationExecutionAlreadyExists, "federation '" + m.federation + "' already exists");
         std::string text = m.fed_text;
@@ -462,6 +476,7 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
 
 void Gateway::serve(Connection& c, const wire::DestroyFederation& m) {
     answer(c, m.request, [&] {
+        require_federation_secret(c, "destroy", m.federation, m.proof);
         auto it = federations_.find(m.federation);
         if (it == federations_.end())
             throw RtiError(ErrorCode::FederationExecutionDoesNotExist, "federation '" + m.federation + "' does not exist");
@@ -480,6 +495,7 @@ void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
         if (c.federation)
             throw RtiError(ErrorCode::FederateAlreadyExecutionMember,
                            "this ambassador is already joined to '" + c.federation->federation.name() + "'");
+        require_federation_secret(c, "join", m.federation, m.proof);
         auto it = federations_.find(m.federation);
         if (it == federations_.end())
             throw RtiError(ErrorCode::FederationExecutionDoesNotExist, "federation '" + m.federation + "' does not exist");

@@ -38,6 +38,9 @@ struct GatewayOptions {
     // Non-empty: every client proves it knows this secret (challenge-response, rti/auth.hpp) before anything
     // else; docs/networking.md.
     std::string secret;
+    // Federations with a secret of their own: creating, joining or destroying one needs a proof of it
+    // (auth::federation_proof), whatever the connection's secret.
+    std::map<std::string, std::string> federation_secrets;
     std::string trace_path;  // non-empty: write the message trace there (trace.hpp)
     // Best effort over UDP, on the same port (server/datagrams.cpp, docs/networking.md): the largest datagram
     // either side sends; larger best-effort messages go over TCP. 0: no datagrams, everything over TCP.
@@ -83,6 +86,10 @@ private:
     template <class F>
     void answer(Connection& c, std::uint32_t request, F&& serve_request);
     Federation& joined(const Connection& c) const;  // throws FederateNotExecutionMember
+    // For a federation with a secret of its own: throws AuthenticationFailed (and logs) unless `proof` proves
+    // it for `action` over c's nonce.
+    void require_federation_secret(const Connection& c, const char* action, const std::string& federation,
+                                   const std::string& proof) const;
     const std::string& federation_name(const Connection& c) const;  // c is joined
     void close(int fd, const std::string& why);
     void flush(Connection& c);

@@ -20,8 +20,9 @@ namespace hlacore::wire {
 constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // 2: initiateFederateRestore's nested records; 3: its SavedTime; 4: Welcome's frame limit, Ping and Pong;
 // 5: Welcome's challenge, Authenticate and Authenticated; 6: ClockProbe and ClockEcho; 7: Welcome's datagram
-// token and size limit, DatagramHello and DatagramPath
-constexpr std::uint16_t kProtocolVersion = 7;
+// token and size limit, DatagramHello and DatagramPath; 8: Welcome's nonce, the federation proofs of
+// CreateFederation, DestroyFederation and JoinFederation
+constexpr std::uint16_t kProtocolVersion = 8;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -231,7 +232,9 @@ struct Welcome {
     // (0: the gateway takes none) and the largest datagram either side sends.
     std::uint64_t datagram_token = 0;
     std::uint32_t max_datagram = 0;
-    HLACORE_FIELDS(version, server, max_frame_bytes, challenge, datagram_token, max_datagram)
+    // Non-empty when some federation has a secret of its own: what this connection's federation proofs sign.
+    std::string nonce;
+    HLACORE_FIELDS(version, server, max_frame_bytes, challenge, datagram_token, max_datagram, nonce)
 };
 struct Authenticate {
     HLACORE_TYPE(Authenticate)
@@ -292,20 +295,23 @@ struct CreateFederation {
     std::string federation;
     std::string fed_name;  // as given by the caller
     std::string fed_text;  // empty: the gateway looks fed_name up in its --fom-path
-    HLACORE_FIELDS(request, federation, fed_name, fed_text)
+    std::string proof;     // auth::federation_proof(secret, nonce, "create", federation); empty: none
+    HLACORE_FIELDS(request, federation, fed_name, fed_text, proof)
 };
 struct DestroyFederation {
     HLACORE_TYPE(DestroyFederation)
     std::uint32_t request = 0;
     std::string federation;
-    HLACORE_FIELDS(request, federation)
+    std::string proof;  // as CreateFederation's, for "destroy"
+    HLACORE_FIELDS(request, federation, proof)
 };
 struct JoinFederation {
     HLACORE_TYPE(JoinFederation)
     std::uint32_t request = 0;
     std::string federate;
     std::string federation;
-    HLACORE_FIELDS(request, federate, federation)
+    std::string proof;  // as CreateFederation's, for "join"
+    HLACORE_FIELDS(request, federate, federation, proof)
 };
 struct ResignFederation {
     HLACORE_TYPE(ResignFederation)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 import pathlib
+import re
 import struct
 import sys
 import zlib
@@ -409,3 +410,18 @@ def test_trajectory_plot_names_everything_it_draws(tmp_path: pathlib.Path) -> No
                                        marks={"held back": [(0.1, 0.0)]}).read_text()
     for text in ("a run", "x (m)", "y (m)", "r0", "r1", "wall", "start", "end", "held back"):
         assert f">{text}<" in svg, text
+
+
+def test_the_labelled_snapshot_names_every_box_robot_trail_and_the_beams(tmp_path: pathlib.Path) -> None:
+    """The experiments' snapshot is a figure for readers: title, axes in metres, a legend of what is drawn
+    (matplotlib's SVG keeps each text as a comment beside its glyphs)."""
+    world = corridor(watchdog=None)
+    world.command("r0", 0.5, 0.0)
+    trail = []
+    for _ in range(10):
+        world.step()
+        trail.append((world.robot("r0").pose.x, world.robot("r0").pose.y))
+    out = render.write_labelled_snapshot(world, tmp_path / "s.svg", "the world", trails={"r0": trail})
+    texts = set(re.findall(r"<!-- (.*?) -->", out.read_text()))
+    assert {"the world", "x (m)", "y (m)", "ranger beams", "r0 trail", f"r0 at {world.time:.1f} s"} <= texts, texts
+    assert {block.name or "wall" for block in world.spec.blocks} <= texts, texts

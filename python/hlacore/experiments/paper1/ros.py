@@ -150,7 +150,9 @@ def write_outputs(result: Result, directory: str) -> list[str]:
             writer.writerow([repr(t)] + [repr(c) for n in names for c in (poses[n].x, poses[n].y)])
     written = [str(out / "paper1-ros-trace.csv")]
     tracks = render.trajectories(result.poses)
-    written.append(str(render.write_snapshot(world, out / "paper1-ros-snapshot.png", trails=tracks)))
+    written.append(str(render.write_labelled_snapshot(world, out / "paper1-ros-snapshot.png",
+                                                      "paper 1 through ROS: the world at the end, with trails",
+                                                      trails=tracks)))
     try:
         written.append(str(render.plot_trajectories(world, result.poses, out / "paper1-ros-trajectories.png",
                                                     title="paper 1 through ROS",

@@ -129,7 +129,9 @@ def write_outputs(world: World, trace: Trace, directory: str) -> list[str]:
             writer.writerow([repr(t), repr(d), repr(v)] + [repr(c) for n in names for c in (poses[n].x, poses[n].y)])
     written = [str(out / "paper1-trace.csv")]
     tracks = render.trajectories(trace.poses)
-    written.append(str(render.write_snapshot(world, out / "paper1-snapshot.png", trails=tracks)))
+    written.append(str(render.write_labelled_snapshot(world, out / "paper1-snapshot.png",
+                                                      "paper 1: the world at the end, with each robot's trail",
+                                                      trails=tracks)))
     title = "paper 1: avatar, crossing obstacles, wall"
     try:
         written.append(str(render.plot_trajectories(world, trace.poses, out / "paper1-trajectories.png",

@@ -7,7 +7,8 @@ Federates layer: imports only the core; it knows nothing of ROS (the stageros-st
 
 from .codec import FEDERATION, FOM_PATH
 from .federate import Command, WorldFederate
-from .render import animate_trajectories, plot_trajectories, snapshot, trajectories, write_snapshot
+from .render import (animate_trajectories, plot_trajectories, snapshot, trajectories, write_labelled_snapshot,
+                     write_snapshot)
 from .world import GridError, Pose, Robot, World, beam_angles, first_step_at_or_after, steps_at
 from .worldfile import BlockSpec, RobotSpec, SensorSpec, WorldFileError, WorldSpec, load_world, read_world
 
@@ -34,5 +35,6 @@ __all__ = [
     "snapshot",
     "steps_at",
     "trajectories",
+    "write_labelled_snapshot",
     "write_snapshot",
 ]

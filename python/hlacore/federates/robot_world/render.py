@@ -196,6 +196,64 @@ def _pyplot() -> Any:
     return plt
 
 
+def _draw_blocks(ax: Any, world: World, labelled: bool = True) -> None:
+    """The world's static boxes in their colours, each name once in the legend ("wall" when unnamed)."""
+    seen: set[str] = set()
+    for block in world.spec.blocks:
+        pts = [(float(v.x), float(v.y)) for v in _static_vertices(world, block.pose, block.size)]
+        label = block.name or "wall"
+        ax.fill([p[0] for p in pts], [p[1] for p in pts], color=[c / 255 for c in color(block.color)],
+                label=label if labelled and label not in seen else None)
+        seen.add(label)
+
+
+def _finish(fig: Any, ax: Any, path: Union[str, pathlib.Path], title: str, handles: Optional[list[Any]] = None
+            ) -> pathlib.Path:
+    """Axes in metres, the title, the legend beside the plot; written by suffix (PNG or SVG)."""
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.grid(True, alpha=0.3)
+    if title:
+        ax.set_title(title)
+    ax.legend(handles=handles, loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize="small")
+    fig.tight_layout()
+    out = pathlib.Path(path)
+    fig.savefig(out, dpi=100)
+    return out
+
+
+def write_labelled_snapshot(world: World, path: Union[str, pathlib.Path], title: str,
+                            trails: Optional[Mapping[str, Sequence[tuple[float, float]]]] = None) -> pathlib.Path:
+    """The world from above as a figure for readers: axes in metres, ``title``, and a legend naming every
+    box, robot, its trail and the ranger beams (matplotlib). Without matplotlib, :func:`write_snapshot`'s
+    raster (no text) and a line saying so. Returns the path."""
+    try:
+        plt = _pyplot()
+    except ImportError as exc:
+        print(f"snapshot without labels: {exc}")
+        return write_snapshot(world, path, trails=trails)
+    fig, ax = plt.subplots(figsize=(7, 5))
+    try:
+        _draw_blocks(ax, world)
+        beams_labelled = False
+        for robot in world.robots:
+            rgb = [c / 255 for c in color(robot.spec.color)]
+            for start, end in beam_segments(world, robot.name):
+                ax.plot([start[0], end[0]], [start[1], end[1]], color=[c / 255 for c in BEAM], lw=0.8,
+                        label=None if beams_labelled else "ranger beams")
+                beams_labelled = True
+            trail = (trails or {}).get(robot.name, [])
+            if trail:
+                ax.plot([p[0] for p in trail], [p[1] for p in trail], ":", color=rgb, label=f"{robot.name} trail")
+            corners = [robot.body.local_to_world(v) for v in robot.shape.get_vertices()]
+            ax.fill([float(p.x) for p in corners], [float(p.y) for p in corners], color=rgb,
+                    label=f"{robot.name} at {world.time:.1f} s")
+        return _finish(fig, ax, path, title)
+    finally:
+        plt.close(fig)
+
+
 def plot_trajectories(world: World, poses: Iterable[Mapping[str, Pose]], path: Union[str, pathlib.Path],
                       title: str = "", marks: Optional[Mapping[str, Sequence[tuple[float, float]]]] = None
                       ) -> pathlib.Path:
@@ -210,13 +268,7 @@ def plot_trajectories(world: World, poses: Iterable[Mapping[str, Pose]], path: U
     tracks = trajectories(poses)
     fig, ax = plt.subplots(figsize=(7, 5))
     try:
-        labelled: set[str] = set()
-        for block in world.spec.blocks:
-            pts = [(float(v.x), float(v.y)) for v in _static_vertices(world, block.pose, block.size)]
-            label = block.name or "wall"
-            ax.fill([p[0] for p in pts], [p[1] for p in pts], color=[c / 255 for c in color(block.color)],
-                    label=None if label in labelled else label)
-            labelled.add(label)
+        _draw_blocks(ax, world)
         for robot in world.robots:
             track = tracks.get(robot.name, [])
             if track:
@@ -230,19 +282,9 @@ def plot_trajectories(world: World, poses: Iterable[Mapping[str, Pose]], path: U
         handles, _ = ax.get_legend_handles_labels()
         handles += [Line2D([], [], marker="o", fillstyle="none", color="0.4", ls="", label="start"),
                     Line2D([], [], marker="s", color="0.4", ls="", label="end")]
-        ax.set_aspect("equal")
-        ax.set_xlabel("x (m)")
-        ax.set_ylabel("y (m)")
-        ax.grid(True, alpha=0.3)
-        if title:
-            ax.set_title(title)
-        ax.legend(handles=handles, loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize="small")
-        fig.tight_layout()
-        out = pathlib.Path(path)
-        fig.savefig(out, dpi=100)
+        return _finish(fig, ax, path, title, handles)
     finally:
         plt.close(fig)
-    return out
 
 
 def animation_frames(poses: Sequence[Mapping[str, Pose]], frames: int) -> list[int]:
@@ -267,9 +309,7 @@ def animate_trajectories(world: World, poses: Sequence[Mapping[str, Pose]], path
     indices = animation_frames(poses, frames)
     fig, ax = plt.subplots(figsize=(7, 5))
     try:
-        for block in world.spec.blocks:
-            pts = [(float(v.x), float(v.y)) for v in _static_vertices(world, block.pose, block.size)]
-            ax.fill([p[0] for p in pts], [p[1] for p in pts], color=[c / 255 for c in color(block.color)])
+        _draw_blocks(ax, world, labelled=False)
         lines, marks = {}, {}
         for robot in world.robots:
             rgb = [c / 255 for c in color(robot.spec.color)]

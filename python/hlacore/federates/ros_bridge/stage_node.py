@@ -40,7 +40,7 @@ import threading
 import time as _time
 from typing import Any, Optional, Sequence
 
-from hlacore.federates.robot_world.render import trajectories, write_snapshot
+from hlacore.federates.robot_world.render import trajectories, write_labelled_snapshot
 from hlacore.federates.robot_world.world import Pose, World
 from hlacore.federates.robot_world.worldfile import read_world
 
@@ -241,7 +241,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             json.dump(summary, f)
     if args.snapshot:
         poses = [p for _, p in node.history]
-        write_snapshot(world, args.snapshot, trails=trajectories(poses) if poses else None)
+        write_labelled_snapshot(world, args.snapshot, f"stage node: the world at {world.time:.1f} s, with trails",
+                                trails=trajectories(poses) if poses else None)
     print(f"stage_node stopped at {world.time!r} ({node.ticks} ticks, {node.commands} commands)", flush=True)
     return 0
 

@@ -91,6 +91,10 @@ Context new_context(const SSL_METHOD* method) {
     // No renegotiation (TLS 1.2): a read never has to write nor a write to read once the handshake is done.
     // An end of the stream without close_notify is an end like any other: the frames say whether one was cut.
     SSL_CTX_set_options(ctx.get(), SSL_OP_NO_RENEGOTIATION | SSL_OP_IGNORE_UNEXPECTED_EOF);
+    // One recv() for what the socket has rather than one for each record's header and another for its body.
+    // The readers then go on with SSL_read while SSL_has_pending(): what stays in the session after they
+    // stop is at most the start of a record whose rest is still to come through the socket.
+    SSL_CTX_set_read_ahead(ctx.get(), 1);
     return ctx;
 }
 

@@ -217,6 +217,11 @@ bool Client::tls_pending() {
     return SSL_has_pending(ssl_.get()) != 0;
 }
 
+bool Client::tls_readable() {
+    std::lock_guard<std::mutex> lock(ssl_mu_);
+    return SSL_pending(ssl_.get()) > 0;
+}
+
 template <class Pred>
 void Client::await_answer(Clock::time_point deadline, Pred done, const char* what) {
     for (;;) {
@@ -545,8 +550,9 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
         ts.tv_nsec = static_cast<long>(left % 1000000000);
         timeout = &ts;
     }
-    // Decrypted bytes already in the TLS session: the socket may have nothing more to say.
-    const bool buffered = ssl_ && tls_pending();
+    // Decrypted bytes already in the TLS session: the socket may have nothing more to say. (The reads below
+    // leave none, nor a whole record; this is the belt to their braces.)
+    const bool buffered = ssl_ && tls_readable();
     const timespec now{};
     if (buffered) timeout = &now;
     int n = ::ppoll(p, datagram_path_ ? 2 : 1, timeout, nullptr);
@@ -564,9 +570,9 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
     const bool first_bytes = heard_bytes_ == 0;
     for (;;) {
         if (ssl_) {
-            // SSL_read until the session wants more from the socket: without read-ahead it reads one record
-            // at a time, so once it holds nothing what is left is in the socket, where poll() (and
-            // hlacore.aio's add_reader on fileno()) sees it.
+            // SSL_read while the session holds bytes (SSL_has_pending), until it wants more from the socket:
+            // what it may keep then is the start of a record whose rest is still to come, which poll() (and
+            // hlacore.aio's add_reader on fileno()) will see.
             const long r = tls_read(chunk, sizeof chunk, reason);
             if (r <= 0) break;
             last_heard_ = Clock::now();

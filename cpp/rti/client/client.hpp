@@ -382,7 +382,8 @@ private:
     // -1 with `error` (and `eof` for the end of the stream).
     long tls_write(const char* data, std::size_t length, std::string& error);
     long tls_read(char* data, std::size_t length, std::string& error);
-    bool tls_pending();
+    bool tls_pending();   // bytes in the session, decrypted or not (perhaps a record's start)
+    bool tls_readable();  // decrypted bytes SSL_read would return at once
     ClockEstimate measure_clock(int probes);
 
     // The checks behind the services; callers hold mu_.

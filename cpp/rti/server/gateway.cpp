@@ -317,9 +317,9 @@ std::string Gateway::read_plain(Connection& c, std::size_t budget, bool& peer_cl
     return "";
 }
 
-// SSL_read until the session wants more from the socket, so that no decrypted byte waits inside it while
-// epoll reports nothing: without read-ahead the session reads one record at a time, so once it holds nothing
-// (SSL_has_pending) whatever is left is in the socket, which epoll sees.
+// SSL_read until the session holds nothing more (SSL_has_pending) or wants more from the socket, so that no
+// decrypted byte, nor a whole record, waits inside it while epoll reports nothing: what it may keep is the
+// start of a record whose rest is still to come, which epoll will report.
 std::string Gateway::read_tls(Connection& c, std::size_t budget, bool& peer_closed) {
     SSL* ssl = c.ssl.get();
     char chunk[kReadChunk];

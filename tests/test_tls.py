@@ -178,7 +178,8 @@ def test_an_untrusted_certificate_is_refused(tls_rtig: RtigProcess, certs: Certi
     with pytest.raises(rti.RTIinternalError, match="not trusted"):  # PyHLA's catch still catches it
         rti.RTIAmbassador(tls_rtig.address, tls=True)  # the system's CA store knows no test certificate
     assert time.monotonic() - start < 5
-    wait_for_log(tls_rtig, r"rtig: dropped \S+: TLS handshake failed[^\n]*")
+    line = wait_for_log(tls_rtig, r"rtig: dropped \S+: TLS handshake failed[^\n]*")
+    assert "the client refused it (tlsv1 alert unknown ca)" in line, line
     rti.RTIAmbassador(tls_rtig.address, tls=certs.cert)  # the gateway serves on
 
 
@@ -188,6 +189,8 @@ def test_a_certificate_for_another_host_is_refused(tls_rtig: RtigProcess, certs:
     with pytest.raises(rti.AuthenticationFailed, match=r"certificate at localhost:\d+ is not for 'localhost' "
                                                        r"\(hostname mismatch\)"):
         rti.RTIAmbassador(f"localhost:{tls_rtig.port}", tls=certs.cert)
+    line = wait_for_log(tls_rtig, r"rtig: dropped \S+: TLS handshake failed[^\n]*")
+    assert "the client refused it (sslv3 alert bad certificate)" in line, line
 
 
 def test_a_client_without_tls_at_a_gateway_with_it(tls_rtig: RtigProcess, certs: Certificates) -> None:

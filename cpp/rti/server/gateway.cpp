@@ -350,9 +350,14 @@ std::string Gateway::read_tls(Connection& c, std::size_t budget, bool& peer_clos
                     break;
                 }
                 return std::string("read failed: ") + std::strerror(errno);
-            default:
-                return handshaking ? "TLS handshake failed (a client without TLS?): " + tls::errors("protocol error")
-                                   : "TLS error: " + tls::errors("protocol error");
+            default: {
+                if (!handshaking) return "TLS error: " + tls::errors("protocol error");
+                // An alert from the client (OpenSSL's reasons from SSL_AD_REASON_OFFSET on): it refused the
+                // certificate, most often; anything else at this stage is most often not TLS at all.
+                const bool alert = ERR_GET_REASON(ERR_peek_error()) >= SSL_AD_REASON_OFFSET;
+                return alert ? "TLS handshake failed: the client refused it (" + tls::errors() + ")"
+                             : "TLS handshake failed (a client without TLS?): " + tls::errors("protocol error");
+            }
         }
         break;
     }

@@ -352,6 +352,11 @@ std::string Gateway::read_tls(Connection& c, std::size_t budget, bool& peer_clos
                 return std::string("read failed: ") + std::strerror(errno);
             default: {
                 if (!handshaking) return "TLS error: " + tls::errors("protocol error");
+                // What the client sent besides is read and dropped, so that closing sends a FIN rather than a
+                // reset that could overtake an alert: a client without TLS sees the connection closed (or
+                // reads the alert, when OpenSSL sent one) and says what to do.
+                for (int i = 0; i < 4 && ::recv(c.fd, chunk, sizeof chunk, MSG_DONTWAIT) > 0; ++i) {
+                }
                 // An alert from the client (OpenSSL's reasons from SSL_AD_REASON_OFFSET on): it refused the
                 // certificate, most often; anything else at this stage is most often not TLS at all.
                 const bool alert = ERR_GET_REASON(ERR_peek_error()) >= SSL_AD_REASON_OFFSET;

@@ -1,10 +1,13 @@
 """The bench's child processes, through hlacore.processes: its peers (bench/peers/) and the rtig it
-measures (the Release one `pip install .` put beside this interpreter; $HLACORE_BENCH_RTIG overrides)."""
+measures (the Release one `pip install .` put beside this interpreter; $HLACORE_BENCH_RTIG overrides, and
+$HLACORE_BENCH_RTIG_ARGS adds arguments: `--tls-cert FILE --tls-key FILE` with $HLACORE_TLS=FILE for the
+federates measures TLS, docs/networking.md)."""
 
 from __future__ import annotations
 
 import os
 import pathlib
+import shlex
 from typing import Optional
 
 from hlacore.processes import Child, Rtig, python_peer
@@ -23,4 +26,5 @@ def close_all(children: list[Child]) -> None:
 
 
 def bench_rtig(executable: Optional[str] = None) -> Rtig:
-    return Rtig(executable=executable or os.environ.get("HLACORE_BENCH_RTIG"))
+    return Rtig(*shlex.split(os.environ.get("HLACORE_BENCH_RTIG_ARGS", "")),
+                executable=executable or os.environ.get("HLACORE_BENCH_RTIG"))

@@ -25,6 +25,7 @@ install_hlacore() {
     if [ -f "$stamp" ] && grep -qxF "$digest [$extras]" "$stamp" && .venv/bin/python -c "import hlacore._core" 2>/dev/null; then
         return 0
     fi
+    require_openssl_headers
     echo "Building hlacore into .venv (the C++ core: a few minutes the first time, seconds after a change) ..." >&2
     pip_install scikit-build-core pybind11 cmake ninja
     local lock status=0
@@ -43,6 +44,13 @@ install_hlacore() {
     # The stamp lists the extras installed with these sources, so run.sh and test.sh do not undo each other.
     { [ -f "$stamp" ] && grep "^$digest " "$stamp" || true; echo "$digest [$extras]"; } >"$stamp.new"
     mv "$stamp.new" "$stamp"
+}
+
+# OpenSSL's headers and link libraries for the build (Debian's libssl-dev): libcrypto for the shared
+# secret's HMAC (cpp/rti/auth.cpp), libssl for the optional TLS (cpp/rti/tls.cpp).
+require_openssl_headers() {
+    [ -e /usr/include/openssl/ssl.h ] \
+        || debian_install "hlacore's C++ core compiles against OpenSSL (libcrypto for the shared secret, libssl for TLS)" libssl-dev
 }
 
 # Builds TARGETS in the configured CMake build directory DIR, saying so (LABEL) and showing the compiler's

@@ -10,6 +10,8 @@ command -v ip >/dev/null 2>&1 \
     || debian_install "the ip command makes the test hosts (network namespaces) of tests/test_link.py" iproute2
 command -v nft >/dev/null 2>&1 \
     || debian_install "nft drops packets in the namespace of the best-effort loss bench (bench/lossy_stream.py)" nftables
+command -v openssl >/dev/null 2>&1 \
+    || debian_install "the openssl command makes the test certificates of tests/test_tls.py" openssl
 install_hlacore test
 [ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build

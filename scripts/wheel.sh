@@ -6,10 +6,10 @@
 # It builds with the project venv's scikit-build-core in the CMake build directory the scripts' installs use
 # (build/wheel, scripts/env.sh), so after ./scripts/run.sh or ./scripts/test.sh a wheel costs seconds: CMake
 # recompiles only what changed since. The wheel's tag (cp311-cp311-linux_x86_64, say) means this CPython on a
-# Linux like this one: the binaries load the system's glibc, libstdc++ and OpenSSL 3 libcrypto, at the versions
-# they were built against (Debian 12: glibc >= 2.34, GCC 12's libstdc++, libcrypto.so.3), and PyPI refuses the
-# tag. A wheel for any Linux (manylinux) needs a build in a manylinux image and auditwheel repair. The last
-# line printed is the wheel's path; the build log is build/wheel.log.
+# Linux like this one: the binaries load the system's glibc, libstdc++ and OpenSSL 3's libssl and libcrypto,
+# at the versions they were built against (Debian 12: glibc >= 2.34, GCC 12's libstdc++, libssl.so.3 and
+# libcrypto.so.3), and PyPI refuses the tag. A wheel for any Linux (manylinux) needs a build in a manylinux
+# image and auditwheel repair. The last line printed is the wheel's path; the build log is build/wheel.log.
 caller=$PWD
 source "$(dirname "$0")/env.sh"
 outdir=${1:-$PWD/dist}
@@ -21,6 +21,7 @@ if ! .venv/bin/python -c "import scikit_build_core, pybind11" 2>/dev/null || [ !
     pip_install scikit-build-core pybind11 cmake ninja
 fi
 
+require_openssl_headers
 mkdir -p "$outdir"
 lock_build_dir lock || exit 1  # held until this script exits: one build at a time in build/wheel
 staging=$(mktemp -d build/wheel-out.XXXXXX)

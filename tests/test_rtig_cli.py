@@ -99,7 +99,7 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith("usage: rtig")
     for option in ("--host", "--port", "--fom-path", "--frame-timeout", "--client-budget", "--stall-timeout",
-                   "--max-frame", "--max-datagram", "--save-dir", "--verbose"):
+                   "--max-frame", "--max-datagram", "--save-dir", "--verbose", "--tls-cert", "--tls-key", "--tls-ca"):
         assert option in result.stdout
     assert "rtig listening" not in result.stdout
 
@@ -131,6 +131,8 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
         (["--port", "0", "extra"], "unknown argument 'extra'"),
         (["--save-dir"], "--save-dir needs a value"),
         (["--save-dir", ""], "--save-dir needs a directory"),
+        (["--tls-cert"], "--tls-cert needs a value"),
+        (["--tls-key", "key.pem"], "--tls-cert and --tls-key go together"),
     ],
 )
 def test_bad_arguments_exit_2_with_a_message(args: list[str], message: str) -> None:

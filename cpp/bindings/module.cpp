@@ -23,8 +23,11 @@ public:
     BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose,
                       const std::string& save_dir, std::string trace_path, std::size_t client_budget,
                       double stall_timeout, std::uint32_t max_frame, const std::string& secret_file,
-                      std::uint32_t max_datagram, const std::map<std::string, std::string>& federation_secret_files) {
+                      std::uint32_t max_datagram, const std::map<std::string, std::string>& federation_secret_files,
+                      const std::string& tls_cert, const std::string& tls_key) {
         GatewayOptions options;
+        options.tls_cert = tls_cert;  // loaded by the Gateway: RuntimeError saying why, ValueError for one alone
+        options.tls_key = tls_key;
         options.max_datagram = max_datagram;
         if (!secret_file.empty()) options.secret = auth::read_secret_file(secret_file);  // RuntimeError, saying why
         for (const auto& [federation, path] : federation_secret_files)
@@ -83,7 +86,7 @@ std::string client_secret(const std::string& path) {
 
 std::unique_ptr<Client> connect_client(const std::string& host, std::uint16_t port, double timeout,
                                        const std::string& secret_file, bool datagrams,
-                                       const std::string& federation_secret_file) {
+                                       const std::string& federation_secret_file, bool tls, const std::string& tls_ca) {
     static PythonWaitHost wait_host;
     ClientOptions options;
     options.timeout_s = timeout;
@@ -91,6 +94,8 @@ std::unique_ptr<Client> connect_client(const std::string& host, std::uint16_t po
     options.datagrams = datagrams;
     options.secret = client_secret(secret_file);
     options.federation_secret = client_secret(federation_secret_file);
+    options.tls = tls;
+    options.tls_ca = tls_ca;
     py::gil_scoped_release release;
     return std::make_unique<Client>(host, port, options);
 }
@@ -135,14 +140,14 @@ PYBIND11_MODULE(_core, m) {
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
                       std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t,
-                      const std::map<std::string, std::string>&>(),
+                      const std::map<std::string, std::string>&, const std::string&, const std::string&>(),
              py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
              py::arg("trace_path") = "", py::arg("client_budget") = hlacore::GatewayOptions{}.client_budget,
              py::arg("stall_timeout") = hlacore::GatewayOptions{}.stall_timeout_s,
              py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes, py::arg("secret_file") = "",
              py::arg("max_datagram") = hlacore::GatewayOptions{}.max_datagram,
-             py::arg("federation_secret_files") = std::map<std::string, std::string>{},
-             py::call_guard<py::gil_scoped_release>())
+             py::arg("federation_secret_files") = std::map<std::string, std::string>{}, py::arg("tls_cert") = "",
+             py::arg("tls_key") = "", py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)
         .def_property_readonly("port", &BackgroundGateway::port)
@@ -151,7 +156,8 @@ PYBIND11_MODULE(_core, m) {
     Ambassador rtia(m, "RTIAmbassadorBase");
     rtia
         .def(py::init(&connect_client), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s,
-             py::arg("secret_file") = "", py::arg("datagrams") = true, py::arg("federation_secret_file") = "")
+             py::arg("secret_file") = "", py::arg("datagrams") = true, py::arg("federation_secret_file") = "",
+             py::arg("tls") = false, py::arg("tls_ca") = "")
         .def_property_readonly("address", &Client::address, "The gateway's \"host:port\" this ambassador is connected to.")
         .def("fileno", &Client::fileno,
              "The connection's socket, for select() or an event loop's add_reader (hlacore.aio): readable when the "

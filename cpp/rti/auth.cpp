@@ -59,12 +59,16 @@ bool verify_federation(const std::string& secret, const std::string& nonce, cons
     return same(answer, federation_proof(secret, nonce, action, federation));
 }
 
-std::string read_secret_file(const std::string& path) {
+void require_owner_only(const std::string& path, const std::string& what) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0)
-        throw std::runtime_error("cannot read the secret file '" + path + "': " + std::strerror(errno));
+        throw std::runtime_error("cannot read " + what + " '" + path + "': " + std::strerror(errno));
     if (st.st_mode & (S_IRWXG | S_IRWXO))
-        throw std::runtime_error("the secret file '" + path + "' may be read by other users: chmod 600 '" + path + "'");
+        throw std::runtime_error(what + " '" + path + "' may be read by other users: chmod 600 '" + path + "'");
+}
+
+std::string read_secret_file(const std::string& path) {
+    require_owner_only(path, "the secret file");
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();

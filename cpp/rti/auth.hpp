@@ -27,5 +27,8 @@ bool verify_federation(const std::string& secret, const std::string& nonce, cons
 // The secret kept in `path` (its content, without one trailing newline). Throws std::runtime_error, saying
 // why, for a file that cannot be read, is empty, or that users other than its owner may read.
 std::string read_secret_file(const std::string& path);
+// Throws std::runtime_error unless `path` exists and only its owner may read or write it; `what` names the
+// file in the message ("the secret file", "the TLS key file").
+void require_owner_only(const std::string& path, const std::string& what);
 
 }  // namespace hlacore::auth

@@ -22,8 +22,9 @@ int usage(int status) {
     std::fprintf(status ? stderr : stdout,
                  "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--client-budget B]\n"
                  "            [--stall-timeout S] [--max-frame B] [--max-datagram B] [--secret-file FILE | --no-secret]\n"
-                 "            [--federation-secret NAME=FILE]... [--save-dir DIR] [--trace FILE] [--verbose]\n"
-                 "       rtig [--secret-file FILE] --status [HOST:PORT]\n"
+                 "            [--federation-secret NAME=FILE]... [--tls-cert FILE --tls-key FILE] [--save-dir DIR]\n"
+                 "            [--trace FILE] [--verbose]\n"
+                 "       rtig [--secret-file FILE] [--tls | --tls-ca FILE] --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
                  "  --fom-path DIR     where to look for FED files a federate could not read itself\n"
@@ -46,6 +47,14 @@ int usage(int status) {
                  "                     read, join, and destroy federations\n"
                  "  --federation-secret NAME=FILE  creating, joining or destroying federation NAME needs a proof of\n"
                  "                     the secret in FILE, whatever the client's connection secret (docs/networking.md)\n"
+                 "  --tls-cert FILE    every connection is TLS (1.2 at least, 1.3 preferred) with the certificate\n"
+                 "  --tls-key FILE     (chain) and the private key in these PEM files (the key readable by its owner\n"
+                 "                     only); clients without TLS are refused. No datagrams are then offered:\n"
+                 "                     best-effort messages go over the encrypted TCP stream (docs/networking.md)\n"
+                 "  --tls              with --status: TLS, the gateway's certificate verified against the system's\n"
+                 "                     CA store (also $HLACORE_TLS=1)\n"
+                 "  --tls-ca FILE      with --status: TLS, trusting the CA or self-signed certificate in FILE (also\n"
+                 "                     $HLACORE_TLS=FILE)\n"
                  "  --save-dir DIR     write federation saves to DIR (created if missing) and restore from\n"
                  "                     there, also after a restart; without it saves live in memory only\n"
                  "  --trace FILE       write when each update/interaction arrived and each reflection of it left,\n"
@@ -62,7 +71,7 @@ bool is_loopback(const std::string& host) {
 }
 
 // Connects to a running gateway and prints its status report.
-int print_status(const std::string& address, const std::string& secret) {
+int print_status(const std::string& address, const std::string& secret, bool tls, const std::string& tls_ca) {
     const auto colon = address.rfind(':');
     const std::string host = colon == std::string::npos ? address : address.substr(0, colon);
     const std::string port_text = colon == std::string::npos ? "60400" : address.substr(colon + 1);
@@ -76,6 +85,8 @@ int print_status(const std::string& address, const std::string& secret) {
         hlacore::ClientOptions client_options;
         client_options.secret = secret;
         client_options.datagrams = false;  // a status query sends nothing best effort
+        client_options.tls = tls;
+        client_options.tls_ca = tls_ca;
         hlacore::Client client(host.empty() ? "127.0.0.1" : host, static_cast<std::uint16_t>(port), client_options);
         std::printf("%s\n", client.query_status().c_str());
         return 0;
@@ -90,6 +101,14 @@ int print_status(const std::string& address, const std::string& secret) {
 int main(int argc, char** argv) {
     hlacore::GatewayOptions options;
     bool no_secret = false;
+    // --status over TLS: --tls, --tls-ca FILE, else $HLACORE_TLS as the Python client reads it (1: the
+    // system's CA store, a path: that CA file, unset, empty or 0: no TLS).
+    bool status_tls = false;
+    std::string status_tls_ca;
+    if (const char* env = std::getenv("HLACORE_TLS"); env && *env && std::string(env) != "0") {
+        status_tls = true;
+        if (std::string(env) != "1") status_tls_ca = env;
+    }
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&](const char* name) -> const char* {
@@ -164,6 +183,16 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "rtig: %s\n", e.what());
                 return 2;
             }
+        } else if (arg == "--tls-cert") {
+            options.tls_cert = value("--tls-cert");
+        } else if (arg == "--tls-key") {
+            options.tls_key = value("--tls-key");
+        } else if (arg == "--tls") {
+            status_tls = true;
+            status_tls_ca.clear();
+        } else if (arg == "--tls-ca") {
+            status_tls = true;
+            status_tls_ca = value("--tls-ca");
         } else if (arg == "--no-secret") {
             no_secret = true;
         } else if (arg == "--save-dir") {
@@ -181,13 +210,17 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "rtig: --status takes at most one HOST:PORT\n");
                 return usage(2);
             }
-            return print_status(i + 1 < argc ? argv[i + 1] : "127.0.0.1:60400", options.secret);
+            return print_status(i + 1 < argc ? argv[i + 1] : "127.0.0.1:60400", options.secret, status_tls, status_tls_ca);
         } else if (arg == "--help" || arg == "-h") {
             return usage(0);
         } else {
             std::fprintf(stderr, "rtig: unknown argument '%s'\n", arg.c_str());
             return usage(2);
         }
+    }
+    if (options.tls_cert.empty() != options.tls_key.empty()) {
+        std::fprintf(stderr, "rtig: --tls-cert and --tls-key go together\n");
+        return usage(2);
     }
     if (options.secret.empty() && !no_secret && !is_loopback(options.host)) {
         std::fprintf(stderr,

@@ -36,6 +36,10 @@ class Gateway:
     ``federation_secrets`` maps federation names to secret files (``rtig --federation-secret NAME=FILE``):
     creating, joining or destroying such a federation needs a proof of its secret
     (``RTIAmbassador(federation_secret_file=...)``).
+    ``tls_cert`` and ``tls_key`` are ``rtig --tls-cert`` and ``--tls-key`` (both or neither): PEM files of the
+    certificate (chain) and its private key (readable by its owner only); every connection is then TLS and
+    clients connect with ``RTIAmbassador(tls=...)``; no datagrams are offered (best effort goes over the
+    encrypted stream). :meth:`status` then trusts ``tls_cert`` itself.
     """
 
     #: The smallest ``client_budget`` in bytes (a smaller one raises :class:`ValueError`).
@@ -60,12 +64,17 @@ class Gateway:
         secret_file: Optional[str | os.PathLike[str]] = None,
         max_datagram: int = 1400,
         federation_secrets: Optional[Mapping[str, str | os.PathLike[str]]] = None,
+        tls_cert: Optional[str | os.PathLike[str]] = None,
+        tls_key: Optional[str | os.PathLike[str]] = None,
     ) -> None:
         if client_budget < self.MIN_CLIENT_BUDGET:
             raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
         if not (math.isfinite(stall_timeout) and stall_timeout >= 0):
             raise ValueError(f"stall_timeout must be a finite number of seconds >= 0, not {stall_timeout}")
         self._secret_file = secret_file
+        if (tls_cert is None) != (tls_key is None):
+            raise ValueError("tls_cert and tls_key go together")
+        self._tls_cert = os.fspath(tls_cert) if tls_cert is not None else None
         low, high = self.MAX_FRAME_RANGE
         if not low <= max_frame <= high:
             raise ValueError(f"max_frame must be between {low} and {high} bytes, not {max_frame}")
@@ -78,7 +87,9 @@ class Gateway:
                                                 client_budget, stall_timeout, max_frame,
                                                 os.fspath(secret_file) if secret_file is not None else "",
                                                 max_datagram,
-                                                {name: os.fspath(path) for name, path in (federation_secrets or {}).items()})
+                                                {name: os.fspath(path) for name, path in (federation_secrets or {}).items()},
+                                                self._tls_cert or "",
+                                                os.fspath(tls_key) if tls_key is not None else "")
 
     @property
     def host(self) -> str:
@@ -105,7 +116,7 @@ class Gateway:
         queued messages: see ``hlacore.status.status``."""
         from .status import status
 
-        return status(self.address, self._secret_file)
+        return status(self.address, self._secret_file, tls=self._tls_cert if self._tls_cert else False)
 
     def stop(self) -> None:
         """Stop serving and close every connection; idempotent."""

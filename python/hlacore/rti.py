@@ -395,6 +395,23 @@ def _resolve_datagrams(datagrams: Optional[bool]) -> bool:
     return text == "1"
 
 
+def _resolve_tls(tls: Optional[bool | str | os.PathLike[str]]) -> tuple[bool, str]:
+    """Whether to speak TLS and the CA file to trust ("" for the system's CA store): `tls`, else $HLACORE_TLS.
+
+    None (and an unset, empty or "0" $HLACORE_TLS) or False: no TLS; True or "1": TLS verified against the
+    system's default CA store; a path: TLS trusting the CA or self-signed certificate in that PEM file."""
+    if tls is None:
+        tls = os.environ.get("HLACORE_TLS", "")
+    if isinstance(tls, bool):
+        return tls, ""
+    text = os.fspath(tls)
+    if text in ("", "0"):
+        return False, ""
+    if text == "1":
+        return True, ""
+    return True, text
+
+
 class RTIAmbassador(_core.RTIAmbassadorBase):
     """A federate's connection to the RTI (HLA 1.3 RTIambassador).
 
@@ -420,15 +437,26 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     all travel ``best_effort`` and carry no timestamp go to the gateway as UDP datagrams, and the gateway
     sends such reflections back the same way, when it offers them and datagrams get through (tried at
     connect; otherwise one line on stderr and TCP). :meth:`datagram_status` tells which, with the counts.
+
+    ``tls`` (else ``$HLACORE_TLS``) encrypts the connection for a gateway with TLS (``rtig --tls-cert``):
+    ``None`` or ``False`` (``$HLACORE_TLS`` unset, empty or ``0``): plain TCP; ``True`` (``1``): TLS, the
+    gateway's certificate verified against the system's default CA store; a path: TLS trusting the CA or
+    self-signed certificate in that PEM file. The certificate must also name the host or IP address
+    connected to. The handshake is bounded by ``timeout``; an untrusted certificate, a name that does not
+    match, or a gateway without TLS raises :class:`AuthenticationFailed` saying which. Under TLS the gateway
+    offers no datagrams: best-effort messages go over the encrypted stream (docs/networking.md).
     """
 
     def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None,
                  secret_file: Optional[str | os.PathLike[str]] = None, datagrams: Optional[bool] = None,
-                 federation_secret_file: Optional[str | os.PathLike[str]] = None) -> None:
+                 federation_secret_file: Optional[str | os.PathLike[str]] = None,
+                 tls: Optional[bool | str | os.PathLike[str]] = None) -> None:
         host, port = _resolve_address(address)
+        use_tls, tls_ca = _resolve_tls(tls)
         super().__init__(host, port, _resolve_timeout(timeout), _resolve_secret_file(secret_file),
                          _resolve_datagrams(datagrams),
-                         _resolve_secret_file(federation_secret_file, "HLACORE_FEDERATION_SECRET_FILE"))
+                         _resolve_secret_file(federation_secret_file, "HLACORE_FEDERATION_SECRET_FILE"),
+                         use_tls, tls_ca)
         self._federate_ambassador: Any = None
 
     # ---- federation management ----

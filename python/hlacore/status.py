@@ -16,12 +16,13 @@ import time
 from typing import Any, Optional
 
 from . import _core
-from .rti import _resolve_address, _resolve_secret_file
+from .rti import _resolve_address, _resolve_secret_file, _resolve_tls
 
 _NUMBERS = ("time", "lookahead", "lbts", "output_bound")
 
 
-def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLike[str]] = None) -> dict[str, Any]:
+def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLike[str]] = None,
+           tls: Optional[bool | str | os.PathLike[str]] = None) -> dict[str, Any]:
     """The gateway's report as a dict; ``address`` as for :class:`hlacore.rti.RTIAmbassador`.
 
     ``{"server", "address", "connections", "federations": [{"name", "fed", "objects", "sync_points",
@@ -34,9 +35,10 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
     docs/networking.md, sent/failed/oversize towards each federate and received/lost/reordered from it).
     On the wire infinite times are null; here
     they are ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A gateway with a
-    secret asks for it here too: ``secret_file``, else ``$HLACORE_SECRET_FILE``.
+    secret asks for it here too: ``secret_file``, else ``$HLACORE_SECRET_FILE``; a gateway with TLS needs
+    ``tls`` (else ``$HLACORE_TLS``) as :class:`hlacore.rti.RTIAmbassador` takes it.
     """
-    report: dict[str, Any] = json.loads(_raw_status(address, secret_file))
+    report: dict[str, Any] = json.loads(_raw_status(address, secret_file, tls))
     for federation in report["federations"]:
         for federate in federation["federates"]:
             for key in _NUMBERS:
@@ -45,10 +47,12 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
     return report
 
 
-def _raw_status(address: Optional[str], secret_file: Optional[str | os.PathLike[str]] = None) -> str:
+def _raw_status(address: Optional[str], secret_file: Optional[str | os.PathLike[str]] = None,
+                tls: Optional[bool | str | os.PathLike[str]] = None) -> str:
     host, port = _resolve_address(address)
+    use_tls, tls_ca = _resolve_tls(tls)
     return str(_core.RTIAmbassadorBase(host, port, secret_file=_resolve_secret_file(secret_file),
-                                       datagrams=False)._status())
+                                       datagrams=False, tls=use_tls, tls_ca=tls_ca)._status())
 
 
 def format_table(report: dict[str, Any], width: int = 80) -> str:
@@ -121,16 +125,22 @@ def main(argv: Optional[list[str]] = None) -> int:
     parser.add_argument("--watch", type=float, metavar="SECONDS",
                         help="repeat every SECONDS until Ctrl-C, redrawn in place on a terminal")
     parser.add_argument("--count", type=int, metavar="N", help="with --watch: stop after N reports")
+    parser.add_argument("--tls", action="store_true",
+                        help="TLS, the gateway's certificate verified against the system's CA store "
+                             "(default $HLACORE_TLS: 1, a CA file, or none)")
+    parser.add_argument("--tls-ca", metavar="FILE",
+                        help="TLS, trusting the CA or self-signed certificate in FILE")
     args = parser.parse_args(argv)
+    tls: Optional[bool | str] = args.tls_ca if args.tls_ca else (True if args.tls else None)
     redraw = bool(args.watch) and not args.json and sys.stdout.isatty()
     shown = 0
     try:
         while True:
             columns, rows = shutil.get_terminal_size()
             if args.json:
-                text = _raw_status(args.address)
+                text = _raw_status(args.address, tls=tls)
             else:
-                text = format_table(status(args.address), columns if sys.stdout.isatty() else 80)
+                text = format_table(status(args.address, tls=tls), columns if sys.stdout.isatty() else 80)
             if redraw:
                 stamp = time.strftime("%H:%M:%S")
                 text = _screen(f"{text}\n(every {args.watch:g} s, last {stamp}; Ctrl-C stops)", columns, rows)

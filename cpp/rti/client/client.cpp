@@ -5,8 +5,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstring>
+
+#include <openssl/err.h>
+#include <openssl/x509_vfy.h>
 
 #include <netdb.h>
 #include <netinet/in.h>
@@ -23,6 +27,12 @@ std::string seconds(std::chrono::steady_clock::duration d) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1f s", std::chrono::duration<double>(d).count());
     return text;
+}
+
+// Whether the first bytes from a gateway are a TLS record (a handshake or an alert): what a gateway with TLS
+// answers a client without it. No hlacore frame starts so before the Welcome.
+bool looks_like_tls(const std::string& bytes) {
+    return bytes.size() >= 2 && (bytes[0] == 0x16 || bytes[0] == 0x15) && bytes[1] == 0x03;
 }
 
 }  // namespace
@@ -43,6 +53,14 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
     if (int rc = getaddrinfo(host.c_str(), service.c_str(), &hints, &found); rc != 0)
         raise(ErrorCode::RTIinternalError, "cannot resolve rtig host '" + host + "': " + gai_strerror(rc));
     std::unique_ptr<addrinfo, decltype(&freeaddrinfo)> guard(found, freeaddrinfo);
+    tls::Context tls_context;  // before connecting: a CA file that cannot be used fails without the network
+    if (options_.tls) {
+        try {
+            tls_context = tls::client_context(options_.tls_ca);
+        } catch (const std::exception& e) {
+            raise(ErrorCode::AuthenticationFailed, e.what());
+        }
+    }
     const auto deadline = Clock::now() + timeout_;
     std::string error = "no address";
     ErrorCode code = ErrorCode::RTIinternalError;
@@ -83,6 +101,7 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
         if (fd_ < 0) raise(code, "cannot connect to rtig at " + address_ + ": " + error);
         int one = 1;
         setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+        if (tls_context) start_tls(tls_context.get(), host, deadline);
         last_heard_ = Clock::now();
         send(wire::Hello{});
         await_answer(deadline, [this] { return welcomed_; }, "no hlacore handshake");
@@ -91,14 +110,116 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
             if (options_.datagrams) open_datagram_path(deadline);
             else datagram_reason_ = "datagrams turned off on this side";
         } else {
-            datagram_reason_ = "the gateway offers no datagrams";
+            datagram_reason_ = ssl_ ? "the gateway offers no datagrams under TLS: best-effort messages go over the "
+                                      "encrypted TCP stream"
+                                    : "the gateway offers no datagrams";
         }
     } catch (...) {
+        ssl_.reset();
         if (fd_ >= 0) ::close(fd_);
         if (datagram_fd_ >= 0) ::close(datagram_fd_);
         fd_ = datagram_fd_ = -1;
         throw;
     }
+}
+
+void Client::start_tls(SSL_CTX* context, const std::string& host, Clock::time_point deadline) {
+    try {
+        ssl_ = tls::session(context, fd_);  // the session holds its own reference to the context
+    } catch (const std::exception& e) {
+        raise(ErrorCode::AuthenticationFailed, e.what());
+    }
+    tls::expect_host(ssl_.get(), host);
+    SSL_set_connect_state(ssl_.get());
+    const std::string trusted = options_.tls_ca.empty() ? "the system's CA store" : "the CA file '" + options_.tls_ca + "'";
+    for (;;) {
+        ERR_clear_error();
+        errno = 0;
+        const int rc = SSL_do_handshake(ssl_.get());
+        if (rc == 1) return;
+        const int error = SSL_get_error(ssl_.get(), rc);
+        const short events = error == SSL_ERROR_WANT_READ ? POLLIN : error == SSL_ERROR_WANT_WRITE ? POLLOUT : 0;
+        if (!events) {
+            const int saved_errno = errno;
+            const long verify = SSL_get_verify_result(ssl_.get());
+            const unsigned long first = ERR_peek_error();
+            const std::string errors = tls::errors();
+            if (verify == X509_V_ERR_HOSTNAME_MISMATCH || verify == X509_V_ERR_IP_ADDRESS_MISMATCH)
+                raise(ErrorCode::AuthenticationFailed,
+                      "the gateway's certificate at " + address_ + " is not for '" + host + "' (" +
+                          X509_verify_cert_error_string(verify) + "): connect by a name or address it names "
+                          "(docs/networking.md)");
+            if (verify != X509_V_OK)
+                raise(ErrorCode::AuthenticationFailed, "the gateway's certificate is not trusted: " +
+                                                           std::string(X509_verify_cert_error_string(verify)) + " (" +
+                                                           address_ + ", checked against " + trusted + ")");
+            const int reason = ERR_GET_REASON(first);
+            if ((error == SSL_ERROR_SYSCALL || error == SSL_ERROR_ZERO_RETURN) && errors.empty())
+                raise(ErrorCode::AuthenticationFailed,
+                      "the gateway at " + address_ + " does not speak TLS: it closed the connection during the TLS "
+                      "handshake (" + (saved_errno ? std::strerror(saved_errno) : "end of stream") +
+                          "; an rtig without --tls-cert does so)");
+            if (reason == SSL_R_WRONG_VERSION_NUMBER || reason == SSL_R_PACKET_LENGTH_TOO_LONG ||
+                reason == SSL_R_RECORD_LENGTH_MISMATCH || reason == SSL_R_UNEXPECTED_EOF_WHILE_READING)
+                raise(ErrorCode::AuthenticationFailed,
+                      "the gateway at " + address_ + " does not speak TLS: " + errors);
+            raise(ErrorCode::AuthenticationFailed, "the TLS handshake with the gateway at " + address_ +
+                                                       " failed: " + (errors.empty() ? std::strerror(saved_errno) : errors));
+        }
+        pollfd p{fd_, events, 0};
+        int n;
+        {
+            Waiting waiting(options_.wait_host);
+            n = ::poll(&p, 1, ms_until(deadline));
+        }
+        if (n < 0 && errno == EINTR) {
+            if (options_.wait_host) options_.wait_host->interrupted();
+            continue;
+        }
+        if (n == 0)
+            raise(ErrorCode::GatewayNotResponding, "no TLS handshake from " + address_ + " within " + seconds(timeout_) +
+                                                       ": the gateway is not responding (or does not speak TLS)");
+    }
+}
+
+long Client::tls_write(const char* data, std::size_t length, std::string& error) {
+    std::lock_guard<std::mutex> lock(ssl_mu_);
+    ERR_clear_error();
+    errno = 0;
+    const int n = SSL_write(ssl_.get(), data, static_cast<int>(std::min<std::size_t>(length, INT_MAX)));
+    if (n > 0) return n;
+    switch (SSL_get_error(ssl_.get(), n)) {
+        case SSL_ERROR_WANT_WRITE:
+        case SSL_ERROR_WANT_READ: return 0;  // not after the handshake: no renegotiation
+        case SSL_ERROR_ZERO_RETURN: error = "the gateway closed the connection"; return -1;
+        case SSL_ERROR_SYSCALL: error = errno ? std::strerror(errno) : "the gateway closed the connection"; return -1;
+        default: error = "TLS error: " + tls::errors("protocol error"); return -1;
+    }
+}
+
+long Client::tls_read(char* data, std::size_t length, std::string& error) {
+    std::lock_guard<std::mutex> lock(ssl_mu_);
+    ERR_clear_error();
+    errno = 0;
+    const int n = SSL_read(ssl_.get(), data, static_cast<int>(std::min<std::size_t>(length, INT_MAX)));
+    if (n > 0) return n;
+    switch (SSL_get_error(ssl_.get(), n)) {
+        case SSL_ERROR_WANT_READ:
+        case SSL_ERROR_WANT_WRITE: return 0;
+        case SSL_ERROR_ZERO_RETURN: error = "the gateway closed the connection"; return -1;
+        case SSL_ERROR_SYSCALL: error = errno ? std::strerror(errno) : "the gateway closed the connection"; return -1;
+        default: error = "TLS error: " + tls::errors("protocol error"); return -1;
+    }
+}
+
+bool Client::tls_pending() {
+    std::lock_guard<std::mutex> lock(ssl_mu_);
+    return SSL_has_pending(ssl_.get()) != 0;
+}
+
+bool Client::tls_readable() {
+    std::lock_guard<std::mutex> lock(ssl_mu_);
+    return SSL_pending(ssl_.get()) > 0;
 }
 
 template <class Pred>
@@ -179,6 +300,12 @@ ClockEstimate Client::clock_offset(double max_age_s) {
 }
 
 Client::~Client() {
+    if (ssl_) {  // close_notify, if the socket takes it: the gateway sees a clean end
+        std::lock_guard<std::mutex> lock(ssl_mu_);
+        SSL_shutdown(ssl_.get());
+        ERR_clear_error();
+        ssl_.reset();
+    }
     if (fd_ >= 0) ::close(fd_);
     if (datagram_fd_ >= 0) ::close(datagram_fd_);
 }
@@ -234,6 +361,21 @@ void Client::require_member(wire::MessageType type) const {
 void Client::write_send_buffer() {
     std::size_t done = 0;
     while (done < send_buffer_.size()) {
+        if (ssl_) {
+            std::string error;
+            const long n = tls_write(send_buffer_.data() + done, send_buffer_.size() - done, error);
+            if (n > 0) {
+                done += static_cast<std::size_t>(n);
+            } else if (n == 0) {
+                // The session may hold part of the message in a record it could not finish: the message is
+                // owed from the first WANT_WRITE on (an abandoned wait closes the connection).
+                wait_writable(std::max<std::size_t>(done, 1));
+            } else {
+                close_connection(ErrorCode::RTIinternalError, error);
+                connection_lost();
+            }
+            continue;
+        }
         ssize_t n = ::send(fd_, send_buffer_.data() + done, send_buffer_.size() - done, MSG_NOSIGNAL | MSG_DONTWAIT);
         if (n > 0) {
             done += static_cast<std::size_t>(n);
@@ -408,14 +550,37 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
         ts.tv_nsec = static_cast<long>(left % 1000000000);
         timeout = &ts;
     }
+    // Decrypted bytes already in the TLS session: the socket may have nothing more to say. (The reads below
+    // leave none, nor a whole record; this is the belt to their braces.)
+    const bool buffered = ssl_ && tls_readable();
+    const timespec now{};
+    if (buffered) timeout = &now;
     int n = ::ppoll(p, datagram_path_ ? 2 : 1, timeout, nullptr);
+    if (buffered && n >= 0) {
+        p[0].revents |= POLLIN;
+        n = std::max(n, 1);
+    }
     if (n < 0) return errno == EINTR ? WaitStatus::Interrupted : WaitStatus::Ready;
     if (n == 0) return WaitStatus::Timeout;
     if (datagram_path_ && p[1].revents) read_datagrams(got.datagrams);
     if (!p[0].revents) return WaitStatus::Ready;
     char chunk[65536];
     std::string reason;
+    ErrorCode code = ErrorCode::RTIinternalError;
+    const bool first_bytes = heard_bytes_ == 0;
     for (;;) {
+        if (ssl_) {
+            // SSL_read while the session holds bytes (SSL_has_pending), until it wants more from the socket:
+            // what it may keep then is the start of a record whose rest is still to come, which poll() (and
+            // hlacore.aio's add_reader on fileno()) will see.
+            const long r = tls_read(chunk, sizeof chunk, reason);
+            if (r <= 0) break;
+            last_heard_ = Clock::now();
+            heard_bytes_ += static_cast<std::uint64_t>(r);
+            in_.append(chunk, static_cast<std::size_t>(r));
+            if (static_cast<std::size_t>(r) < sizeof chunk && !tls_pending()) break;
+            continue;
+        }
         ssize_t r = ::recv(fd_, chunk, sizeof chunk, MSG_DONTWAIT);
         if (r > 0) {
             last_heard_ = Clock::now();
@@ -429,6 +594,17 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
         reason = r == 0 ? "the gateway closed the connection" : std::strerror(errno);
         break;
     }
+    if (!ssl_ && first_bytes) {  // a client without TLS at a gateway with it
+        if (looks_like_tls(in_)) {
+            reason = "it answered with TLS: give RTIAmbassador(tls=...) or $HLACORE_TLS for a gateway with TLS "
+                     "(rtig --tls-cert; docs/networking.md)";
+            code = ErrorCode::AuthenticationFailed;
+            in_.clear();
+        } else if (in_.empty() && !reason.empty()) {
+            reason += " before its Welcome, as a gateway with TLS does to a client without it: give "
+                      "RTIAmbassador(tls=...) or $HLACORE_TLS for a gateway with TLS (rtig --tls-cert; docs/networking.md)";
+        }
+    }
     std::size_t offset = 0;
     try {
         wire::Frame frame;
@@ -440,7 +616,7 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
         reason = std::string("protocol error from the gateway: ") + e.what();
     }
     in_.erase(0, offset);
-    if (!reason.empty()) close_connection(ErrorCode::RTIinternalError, reason);
+    if (!reason.empty()) close_connection(code, reason);
     return WaitStatus::Ready;
 }
 

@@ -26,6 +26,7 @@
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
 #include "rti/server/time_manager.hpp"
+#include "rti/tls.hpp"
 #include "rti/wire/codec.hpp"
 #include "rti/wire/datagram.hpp"
 
@@ -55,6 +56,11 @@ struct ClientOptions {
     std::string federation_secret;
     // Best effort over UDP when the gateway offers it and datagrams get through (client/datagrams.cpp).
     bool datagrams = true;
+    // TLS (rtig --tls-cert): the gateway's certificate is verified against the system's default CA store
+    // (tls_ca empty) or the CA / self-signed certificate in the PEM file tls_ca, and must name the host
+    // connected to. Failures raise AuthenticationFailed.
+    bool tls = false;
+    std::string tls_ca;
 };
 
 // The client's datagram path: whether best-effort messages travel as datagrams, and the counts both ways.
@@ -370,6 +376,14 @@ private:
     template <class Pred>
     void await_answer(Clock::time_point deadline, Pred done, const char* what);
     void authenticate(Clock::time_point deadline);
+    // The TLS handshake right after connecting, bounded by `deadline` (client.cpp).
+    void start_tls(SSL_CTX* context, const std::string& host, Clock::time_point deadline);
+    // One SSL_write / SSL_read under ssl_mu_: bytes moved, 0 when the socket would block (WANT_READ/WRITE),
+    // -1 with `error` (and `eof` for the end of the stream).
+    long tls_write(const char* data, std::size_t length, std::string& error);
+    long tls_read(char* data, std::size_t length, std::string& error);
+    bool tls_pending();   // bytes in the session, decrypted or not (perhaps a record's start)
+    bool tls_readable();  // decrypted bytes SSL_read would return at once
     ClockEstimate measure_clock(int probes);
 
     // The checks behind the services; callers hold mu_.
@@ -432,6 +446,10 @@ private:
     ClientOptions options_;
     Clock::duration timeout_;
     int fd_ = -1;
+    // With TLS: the session on fd_. OpenSSL's SSL object is not thread-safe and one thread may send while
+    // another reads: each SSL_read and SSL_write runs under ssl_mu_ (never held while waiting).
+    tls::Session ssl_;
+    std::mutex ssl_mu_;
 
     std::mutex send_mu_;
     std::string send_buffer_;

@@ -19,6 +19,12 @@ struct Gateway::Connection {
 
     int fd = -1;
     std::string peer;
+    // With TLS (rtig --tls-cert): the session, in accept state, on the non-blocking socket. A read that must
+    // write first (the handshake's answer to a full socket) waits for EPOLLOUT, a write that must read first
+    // for EPOLLIN.
+    tls::Session ssl;
+    bool read_wants_write = false;
+    bool write_wants_read = false;
     std::string in;
     std::size_t in_offset = 0;
     std::string out;

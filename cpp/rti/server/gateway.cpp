@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstring>
 #include <deque>
@@ -25,6 +26,8 @@
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
+
+#include <openssl/err.h>
 
 namespace hlacore {
 
@@ -138,6 +141,9 @@ Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
         throw std::invalid_argument("max_datagram must be 0 or between " + std::to_string(kMinMaxDatagram) + " and " +
                                     std::to_string(wire::kMaxDatagramLimit) + " bytes, not " +
                                     std::to_string(options_.max_datagram));
+    if (options_.tls_cert.empty() != options_.tls_key.empty())
+        throw std::invalid_argument("TLS needs both a certificate and its key (rtig --tls-cert FILE --tls-key FILE)");
+    if (!options_.tls_cert.empty()) tls_ = tls::server_context(options_.tls_cert, options_.tls_key);
     addrinfo hints{};
     hints.ai_family = AF_UNSPEC;
     hints.ai_socktype = SOCK_STREAM;
@@ -168,7 +174,8 @@ Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
     loop_.add(listen_fd_, EPOLLIN);
     loop_.add(wake_fd_, EPOLLIN);
     reserve_fd_ = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
-    if (options_.max_datagram) open_datagrams(bound, len);
+    // Datagrams are neither encrypted nor signed: under TLS best effort goes over the encrypted stream.
+    if (options_.max_datagram && !tls_) open_datagrams(bound, len);
     if (!options_.trace_path.empty()) trace_ = std::make_unique<MessageTrace>(options_.trace_path);
 }
 
@@ -213,7 +220,9 @@ void Gateway::run() {
             }
             auto it = connections_.find(fd);
             if (it == connections_.end()) continue;
-            if (ev.events & (EPOLLIN | EPOLLHUP | EPOLLERR)) on_readable(*it->second);
+            // A TLS read that had to write (the handshake into a full socket) goes on when it may.
+            const bool read_on_write = (ev.events & EPOLLOUT) && it->second->read_wants_write;
+            if ((ev.events & (EPOLLIN | EPOLLHUP | EPOLLERR)) || read_on_write) on_readable(*it->second);
             it = connections_.find(fd);
             if (it != connections_.end() && (ev.events & EPOLLOUT)) mark_dirty(*it->second);
         }
@@ -256,22 +265,42 @@ void Gateway::accept_all() {
         auto c = std::make_unique<Connection>();
         c->fd = fd;
         c->peer = describe_peer(addr);
+        if (tls_) {
+            try {
+                c->ssl = tls::session(tls_.get(), fd);
+            } catch (const std::exception& e) {
+                log("refused a connection from " + c->peer + ": " + e.what());
+                ::close(fd);
+                continue;
+            }
+            SSL_set_accept_state(c->ssl.get());
+        }
         loop_.add(fd, EPOLLIN);
         if (options_.verbose) log("connection from " + c->peer);
         connections_[fd] = std::move(c);
     }
 }
 
-void Gateway::on_readable(Connection& c) {
-    const int fd = c.fd;
-    bool peer_closed = false;
-    char chunk[65536];
-    // Bounded per turn so that one busy peer cannot starve the others.
-    for (int round = 0; round < 16; ++round) {
-        const ssize_t n = ::recv(fd, chunk, sizeof chunk, 0);
+namespace {
+constexpr std::size_t kReadChunk = 65536;
+// Bounded per turn so that one busy peer cannot starve the others.
+constexpr std::size_t kReadBudget = 16 * kReadChunk;
+
+// Whether `bytes` begin like a TLS record (a handshake or an alert, TLS 1.x): what a TLS client sends first.
+// No hlacore Hello starts so: its length field is small.
+bool looks_like_tls(std::string_view bytes) {
+    return bytes.size() >= 2 && (bytes[0] == 0x16 || bytes[0] == 0x15) && bytes[1] == 0x03;
+}
+}  // namespace
+
+std::string Gateway::read_plain(Connection& c, std::size_t budget, bool& peer_closed) {
+    char chunk[kReadChunk];
+    for (std::size_t got = 0; got < budget;) {
+        const ssize_t n = ::recv(c.fd, chunk, sizeof chunk, 0);
         if (n > 0) {
             if (c.in.size() == c.in_offset) c.partial_since = Clock::now();
             c.in.append(chunk, static_cast<std::size_t>(n));
+            got += static_cast<std::size_t>(n);
             if (static_cast<std::size_t>(n) < sizeof chunk) break;
             continue;
         }
@@ -281,7 +310,76 @@ void Gateway::on_readable(Connection& c) {
         }
         if (errno == EINTR) continue;
         if (errno == EAGAIN || errno == EWOULDBLOCK) break;
-        close(fd, std::string("read failed: ") + std::strerror(errno));
+        return std::string("read failed: ") + std::strerror(errno);
+    }
+    if (!c.greeted && looks_like_tls(std::string_view(c.in).substr(c.in_offset)))
+        return "it began a TLS handshake and this gateway has no TLS (rtig --tls-cert FILE --tls-key FILE)";
+    return "";
+}
+
+// SSL_read until the session holds nothing more (SSL_has_pending) or wants more from the socket, so that no
+// decrypted byte, nor a whole record, waits inside it while epoll reports nothing: what it may keep is the
+// start of a record whose rest is still to come, which epoll will report.
+std::string Gateway::read_tls(Connection& c, std::size_t budget, bool& peer_closed) {
+    SSL* ssl = c.ssl.get();
+    char chunk[kReadChunk];
+    const bool waited_for_write = c.read_wants_write, write_waited = c.write_wants_read;
+    c.read_wants_write = false;
+    for (std::size_t got = 0; got < budget || SSL_has_pending(ssl);) {
+        ERR_clear_error();
+        errno = 0;
+        const int n = SSL_read(ssl, chunk, static_cast<int>(sizeof chunk));
+        if (n > 0) {
+            if (c.in.size() == c.in_offset) c.partial_since = Clock::now();
+            c.in.append(chunk, static_cast<std::size_t>(n));
+            got += static_cast<std::size_t>(n);
+            if (!SSL_has_pending(ssl) && static_cast<std::size_t>(n) < sizeof chunk) break;
+            continue;
+        }
+        const bool handshaking = !SSL_is_init_finished(ssl);
+        switch (SSL_get_error(ssl, n)) {
+            case SSL_ERROR_WANT_READ: break;
+            case SSL_ERROR_WANT_WRITE:
+                c.read_wants_write = true;
+                break;
+            case SSL_ERROR_ZERO_RETURN: peer_closed = true; break;
+            case SSL_ERROR_SYSCALL:
+                if (errno == 0 || errno == ECONNRESET) {
+                    if (handshaking) return "connection closed during the TLS handshake";
+                    peer_closed = true;
+                    break;
+                }
+                return std::string("read failed: ") + std::strerror(errno);
+            default: {
+                if (!handshaking) return "TLS error: " + tls::errors("protocol error");
+                // What the client sent besides is read and dropped, so that closing sends a FIN rather than a
+                // reset that could overtake an alert: a client without TLS sees the connection closed (or
+                // reads the alert, when OpenSSL sent one) and says what to do.
+                for (int i = 0; i < 4 && ::recv(c.fd, chunk, sizeof chunk, MSG_DONTWAIT) > 0; ++i) {
+                }
+                // An alert from the client (OpenSSL's reasons from SSL_AD_REASON_OFFSET on): it refused the
+                // certificate, most often; anything else at this stage is most often not TLS at all.
+                const bool alert = ERR_GET_REASON(ERR_peek_error()) >= SSL_AD_REASON_OFFSET;
+                return alert ? "TLS handshake failed: the client refused it (" + tls::errors() + ")"
+                             : "TLS handshake failed (a client without TLS?): " + tls::errors("protocol error");
+            }
+        }
+        break;
+    }
+    if (write_waited) {  // the write that waited for a read may go on
+        c.write_wants_read = false;
+        mark_dirty(c);
+    }
+    if (waited_for_write != c.read_wants_write || write_waited) update_events(c);
+    return "";
+}
+
+void Gateway::on_readable(Connection& c) {
+    const int fd = c.fd;
+    bool peer_closed = false;
+    const std::string error = c.ssl ? read_tls(c, kReadBudget, peer_closed) : read_plain(c, kReadBudget, peer_closed);
+    if (!error.empty()) {
+        close(fd, error);
         return;
     }
     if (trace_) c.read_ns = MessageTrace::now_ns();
@@ -345,6 +443,8 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
             throw wire::WireError("protocol version " + std::to_string(hello->version) + " is not supported (gateway speaks " +
                                   std::to_string(wire::kProtocolVersion) + ")");
         c.greeted = true;
+        if (c.ssl && options_.verbose)
+            log("TLS with " + c.peer + ": " + SSL_get_version(c.ssl.get()) + ", " + SSL_get_cipher_name(c.ssl.get()));
         if (!options_.secret.empty()) c.challenge = auth::random_challenge();
         if (!options_.federation_secrets.empty()) c.nonce = auth::random_challenge();
         give_datagram_token(c);
@@ -665,7 +765,11 @@ void Gateway::pause(Connection& producer, const Connection& consumer) {
 }
 
 void Gateway::update_events(Connection& c) {
-    loop_.modify(c.fd, (c.paused ? 0u : static_cast<std::uint32_t>(EPOLLIN)) | (c.write_armed ? EPOLLOUT : 0u));
+    // A TLS write waiting for a read waits on EPOLLIN (which a paused connection still needs then), not on
+    // EPOLLOUT, which would fire at once.
+    const bool in = !c.paused || c.write_wants_read;
+    const bool out = (c.write_armed && !c.write_wants_read) || c.read_wants_write;
+    loop_.modify(c.fd, (in ? static_cast<std::uint32_t>(EPOLLIN) : 0u) | (out ? static_cast<std::uint32_t>(EPOLLOUT) : 0u));
 }
 
 // Each turn of the loop while connections are paused: resumes those whose consumer is below half its
@@ -741,16 +845,16 @@ void Gateway::flush(Connection& c) {
         c.progress_at = Clock::now();
     }
     while (c.out_offset < c.out.size()) {
-        ssize_t n = ::send(c.fd, c.out.data() + c.out_offset, c.out.size() - c.out_offset, MSG_NOSIGNAL);
+        std::string error;
+        const long n = write_some(c, error);
         if (n > 0) {
             c.out_offset += static_cast<std::size_t>(n);
             c.progress_at = Clock::now();
             if (c.out.size() - c.out_offset < kPacedBytes) refill(c);
             continue;
         }
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
-        close(c.fd, std::string("write failed: ") + std::strerror(errno));
+        if (n == 0) break;
+        close(c.fd, error);
         return;
     }
     const std::size_t queued = c.out.size() - c.out_offset;
@@ -775,6 +879,39 @@ void Gateway::flush(Connection& c) {
     if (!c.write_armed) {
         c.write_armed = true;
         update_events(c);
+    }
+}
+
+long Gateway::write_some(Connection& c, std::string& error) {
+    const std::size_t left = c.out.size() - c.out_offset;
+    if (!c.ssl) {
+        for (;;) {
+            const ssize_t n = ::send(c.fd, c.out.data() + c.out_offset, left, MSG_NOSIGNAL);
+            if (n > 0) return static_cast<long>(n);
+            if (n < 0 && errno == EINTR) continue;
+            if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return 0;
+            error = std::string("write failed: ") + std::strerror(n < 0 ? errno : EPIPE);
+            return -1;
+        }
+    }
+    // Partial writes are on and the buffer may move: a retry after WANT_WRITE passes the same bytes from
+    // c.out_offset on, with more behind them perhaps, as OpenSSL requires.
+    ERR_clear_error();
+    errno = 0;
+    const int n = SSL_write(c.ssl.get(), c.out.data() + c.out_offset, static_cast<int>(std::min<std::size_t>(left, INT_MAX)));
+    if (n > 0) return n;
+    switch (SSL_get_error(c.ssl.get(), n)) {
+        case SSL_ERROR_WANT_WRITE: return 0;
+        case SSL_ERROR_WANT_READ:  // not after the handshake (no renegotiation); EPOLLIN brings it back
+            c.write_wants_read = true;
+            update_events(c);
+            return 0;
+        case SSL_ERROR_SYSCALL:
+            error = std::string("write failed: ") + std::strerror(errno ? errno : EPIPE);
+            return -1;
+        default:
+            error = "TLS error while writing: " + tls::errors("protocol error");
+            return -1;
     }
 }
 
@@ -816,7 +953,9 @@ void Gateway::drop_stale_partials() {
         if (!c->paused && c->in.size() > c->in_offset && now - c->partial_since > limit)
             stale.emplace_back(fd, "incomplete frame for too long");
         else if (!c->greeted && now - c->accepted_at > limit)  // connected, and silent since
-            stale.emplace_back(fd, "no handshake within the frame timeout");
+            stale.emplace_back(fd, c->ssl && !SSL_is_init_finished(c->ssl.get())
+                                       ? "no TLS handshake within the frame timeout"
+                                       : "no handshake within the frame timeout");
     }
     for (const auto& [fd, why] : stale) close(fd, why);
 }

@@ -16,6 +16,7 @@
 
 #include "rti/server/event_loop.hpp"
 #include "rti/server/federation.hpp"
+#include "rti/tls.hpp"
 #include "rti/trace.hpp"
 #include "rti/wire/datagram.hpp"
 
@@ -45,6 +46,11 @@ struct GatewayOptions {
     // Best effort over UDP, on the same port (server/datagrams.cpp, docs/networking.md): the largest datagram
     // either side sends; larger best-effort messages go over TCP. 0: no datagrams, everything over TCP.
     std::uint32_t max_datagram = wire::kDefaultMaxDatagram;
+    // Both non-empty: every TCP connection is TLS with this certificate (chain) and private key, PEM files
+    // (the key readable by its owner only; rti/tls.hpp); then no datagrams are offered (best effort goes
+    // over the encrypted stream). Both empty: plain TCP.
+    std::string tls_cert;
+    std::string tls_key;
 };
 // The smallest max_datagram (or 0) a gateway takes: room for a header and a small message.
 constexpr std::uint32_t kMinMaxDatagram = 256;
@@ -72,6 +78,13 @@ private:
 
     void accept_all();
     void on_readable(Connection& c);
+    // Reads into c.in what the socket (or, with TLS, the TLS session) has, at most about `budget` bytes but
+    // never leaving decrypted bytes inside the session; "" or why the connection must be closed, with
+    // `peer_closed` set at the end of the stream.
+    std::string read_plain(Connection& c, std::size_t budget, bool& peer_closed);
+    std::string read_tls(Connection& c, std::size_t budget, bool& peer_closed);
+    // Writes from c.out at c.out_offset: bytes taken, 0 when the socket takes no more now, -1 with `error`.
+    long write_some(Connection& c, std::string& error);
     // Serves the whole frames read from c, until one of them delivers to a client over its budget.
     void serve_frames(Connection& c);
     void on_frame(Connection& c, const wire::Frame& frame);
@@ -130,6 +143,7 @@ private:
     int reserve_fd_ = -1;  // kept open to accept-and-close a connection when out of file descriptors
     std::uint16_t port_ = 0;
     EventLoop loop_;
+    tls::Context tls_;  // set: every connection is TLS
     std::map<int, std::unique_ptr<Connection>> connections_;
     std::map<std::string, std::unique_ptr<FederationEntry>> federations_;
     std::vector<int> dirty_;

@@ -70,28 +70,17 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
             if (fd_ < 0) continue;
             int rc = ::connect(fd_, a->ai_addr, a->ai_addrlen);
             // A gateway host that drops packets leaves the connect pending: bounded by the timeout.
-            while (rc < 0 && (errno == EINPROGRESS || errno == EINTR)) {
-                pollfd p{fd_, POLLOUT, 0};
-                int n;
-                {
-                    Waiting waiting(options_.wait_host);
-                    n = ::poll(&p, 1, ms_until(deadline));
-                }
-                if (n < 0 && errno == EINTR) {
-                    if (options_.wait_host) options_.wait_host->interrupted();
-                    continue;
-                }
-                if (n == 0) {
+            if (rc < 0 && (errno == EINPROGRESS || errno == EINTR)) {
+                if (poll_until(options_.wait_host, fd_, POLLOUT, deadline) == 0) {
                     errno = ETIMEDOUT;
                     code = ErrorCode::GatewayNotResponding;
-                    break;
+                } else {
+                    int so_error = 0;
+                    socklen_t len = sizeof so_error;
+                    getsockopt(fd_, SOL_SOCKET, SO_ERROR, &so_error, &len);
+                    errno = so_error;
+                    rc = so_error == 0 ? 0 : -1;
                 }
-                int so_error = 0;
-                socklen_t len = sizeof so_error;
-                getsockopt(fd_, SOL_SOCKET, SO_ERROR, &so_error, &len);
-                errno = so_error;
-                rc = so_error == 0 ? 0 : -1;
-                break;
             }
             if (rc == 0) break;
             error = std::strerror(errno);
@@ -166,17 +155,7 @@ void Client::start_tls(SSL_CTX* context, const std::string& host, Clock::time_po
             raise(ErrorCode::AuthenticationFailed, "the TLS handshake with the gateway at " + address_ +
                                                        " failed: " + (errors.empty() ? std::strerror(saved_errno) : errors));
         }
-        pollfd p{fd_, events, 0};
-        int n;
-        {
-            Waiting waiting(options_.wait_host);
-            n = ::poll(&p, 1, ms_until(deadline));
-        }
-        if (n < 0 && errno == EINTR) {
-            if (options_.wait_host) options_.wait_host->interrupted();
-            continue;
-        }
-        if (n == 0)
+        if (poll_until(options_.wait_host, fd_, events, deadline) == 0)
             raise(ErrorCode::GatewayNotResponding, "no TLS handshake from " + address_ + " within " + seconds(timeout_) +
                                                        ": the gateway is not responding (or does not speak TLS)");
     }

@@ -37,17 +37,7 @@ void Client::open_datagram_path(Clock::time_point deadline) {
         ::send(datagram_fd_, hello.data(), hello.size(), MSG_DONTWAIT | MSG_NOSIGNAL);
         const auto until = std::min(deadline, Clock::now() + std::chrono::milliseconds(wait_ms));
         for (;;) {
-            pollfd p{datagram_fd_, POLLIN, 0};
-            int n;
-            {
-                Waiting waiting(options_.wait_host);
-                n = ::poll(&p, 1, ms_until(until));
-            }
-            if (n < 0 && errno == EINTR) {
-                if (options_.wait_host) options_.wait_host->interrupted();
-                continue;
-            }
-            if (n <= 0) break;
+            if (poll_until(options_.wait_host, datagram_fd_, POLLIN, until) <= 0) break;
             char echo[512];
             const ssize_t r = ::recv(datagram_fd_, echo, sizeof echo, MSG_DONTWAIT);
             if (r < 0 && errno == ECONNREFUSED)  // an ICMP "port unreachable" for an earlier hello

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cstdint>
+
+#include <poll.h>
 
 #include "rti/client/client.hpp"
 
@@ -30,5 +33,20 @@ private:
     WaitHost* host_;
     void* token_;
 };
+
+// Waits until `fd` has one of `events` or `deadline` passes, the GIL released; a signal goes to the host
+// (which may throw, for Ctrl-C) and the wait goes on. Returns poll()'s count: 1 ready, 0 timed out, -1 failed.
+inline int poll_until(WaitHost* host, int fd, short events, std::chrono::steady_clock::time_point deadline) {
+    for (;;) {
+        pollfd p{fd, events, 0};
+        int n;
+        {
+            Waiting waiting(host);
+            n = ::poll(&p, 1, ms_until(deadline));
+        }
+        if (n >= 0 || errno != EINTR) return n;
+        if (host) host->interrupted();
+    }
+}
 
 }  // namespace hlacore

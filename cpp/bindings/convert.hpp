@@ -31,6 +31,7 @@ using H32 = std::uint32_t;
 
 template <int Kind>
 struct Handle {
+    static constexpr int kind = Kind;
     std::uint32_t value;
 };
 using ObjectClassHandle = Handle<1>;
@@ -84,8 +85,9 @@ struct EventRetractionHandle {
 template <class H, class Compare>
 auto handle_equality(Compare compare) {
     return [compare](const H& a, py::handle b) -> py::object {
-        if (!py::isinstance<H>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
-        return py::bool_(compare(a.value, b.cast<const H&>().value));
+        py::detail::make_caster<H> other;
+        if (!other.load(b, false)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+        return py::bool_(compare(a.value, py::detail::cast_op<const H&>(other).value));
     };
 }
 
@@ -99,7 +101,8 @@ void bind_handle(py::module_& m, const char* name) {
         .def("__le__", [](const H& a, const H& b) { return a.value <= b.value; }, py::is_operator())
         .def("__gt__", [](const H& a, const H& b) { return a.value > b.value; }, py::is_operator())
         .def("__ge__", [](const H& a, const H& b) { return a.value >= b.value; }, py::is_operator())
-        .def("__hash__", [name](const H& h) { return py::hash(py::make_tuple(name, h.value)); })
+        // The kind in the high bits: handles of two kinds with one value (never equal) rarely collide.
+        .def("__hash__", [](const H& h) { return (static_cast<std::uint64_t>(H::kind) << 32) | h.value; })
         .def("__int__", [](const H& h) { return h.value; })
         .def("__index__", [](const H& h) { return h.value; })
         .def("__repr__", [repr_prefix](const H& h) { return repr_prefix + std::to_string(h.value) + ">"; });

@@ -4,6 +4,7 @@ does 1000 operations, so the figure per round in µs is ns per operation."""
 
 from __future__ import annotations
 
+import pathlib
 from typing import Any, Callable, Iterator
 
 import pytest
@@ -12,6 +13,7 @@ import hlacore
 from hlacore import rti
 
 OPERATIONS = range(1000)
+ROBOT_FED = pathlib.Path(__file__).resolve().parent.parent / "tests" / "data" / "robot.fed"
 
 pytestmark = pytest.mark.benchmark(group="handles (µs per round = ns per operation)")
 
@@ -21,7 +23,7 @@ def handles() -> Iterator[tuple[Any, Any]]:
     """Two ``location`` handle objects of one federation, equal and distinct."""
     with hlacore.Gateway(port=0) as gw:
         rtia = rti.RTIAmbassador(gw.address)
-        rtia.createFederationExecution("Handles", "tests/data/robot.fed")
+        rtia.createFederationExecution("Handles", str(ROBOT_FED))
         rtia.joinFederationExecution("bench", "Handles", rti.FederateAmbassador())
         robot = rtia.getObjectClassHandle("robot")
         first, second = (rtia.getAttributeHandle("location", robot) for _ in range(2))

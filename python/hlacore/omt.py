@@ -178,6 +178,20 @@ def _pack_padded(parts: list[bytes], position: int, datatype: HLAdataType,
     return position + pad + len(data)
 
 
+def _unpack_padded(context: str, datatype: HLAdataType, buffer: Buffer,
+                   offset: int, position: int) -> tuple[Any, int]:
+    """Decode a ``datatype`` value at ``position`` in the composite that
+    starts at ``offset``, after the pad bytes to its octet boundary; return
+    ``(value, position after it)``; errors name ``context``
+    (``Record.field``)."""
+    try:
+        position += _padding(position, datatype.octetBoundary)
+        value, used = datatype.unpack(buffer, offset + position)
+    except _ERRORS as exc:
+        _rethrow(context, exc)
+    return value, position + used
+
+
 def _as_int(type_name: str, value: Any) -> int:
     """Convert ``value`` to ``int`` via ``__index__``, else ``TypeError``."""
     try:
@@ -1024,13 +1038,9 @@ class HLAfixedRecord(_Composite):
         result: dict[str, Any] = {}
         position = 0
         for field_name, field_type in self.fields:
-            try:
-                position += _padding(position, field_type.octetBoundary)
-                result[field_name], used = field_type.unpack(
-                    buffer, offset + position)
-            except _ERRORS as exc:
-                _rethrow(f"{self.name}.{field_name}", exc)
-            position += used
+            result[field_name], position = _unpack_padded(
+                f"{self.name}.{field_name}", field_type, buffer, offset,
+                position)
         return result, position
 
 
@@ -1397,13 +1407,9 @@ class HLAvariantRecord(_Composite):
         result: dict[str, Any] = {self.discriminantName: discriminant}
         if alternative_type is not None:
             assert alternative_name is not None
-            try:
-                position += _padding(position, alternative_type.octetBoundary)
-                result[alternative_name], used = alternative_type.unpack(
-                    buffer, offset + position)
-            except _ERRORS as exc:
-                _rethrow(f"{self.name}.{alternative_name}", exc)
-            position += used
+            result[alternative_name], position = _unpack_padded(
+                f"{self.name}.{alternative_name}", alternative_type, buffer,
+                offset, position)
         return result, position
 
 

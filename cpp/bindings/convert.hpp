@@ -191,12 +191,20 @@ std::vector<std::uint32_t> raw(const std::vector<Handle<Kind>>& handles) {
 inline std::string raw(const py::handle& tag) { return to_bytes(tag, "tag"); }
 inline const std::string& raw(const std::string& name) { return name; }
 inline bool raw(bool flag) { return flag; }
+inline std::uint8_t raw(std::uint8_t value) { return value; }
 
 // A Python method whose arguments (typed handles, lists of them, a tag) go to the client service `f` as
 // their raw values: the binding of every service that needs no other conversion.
 template <class... Py, class... Raw>
 auto forward(void (Client::*f)(Raw...)) {
     return [f](Client& c, Py... args) { (c.*f)(raw(args)...); };
+}
+
+// A Python method that sends the request M of HLACORE_CLIENT_REQUESTS (wire/messages.hpp), its fields the
+// raw values of the method's arguments in order; Client::request runs the service's check first.
+template <class M, class... Py>
+auto request() {
+    return [](Client& c, Py... args) { c.request(M{raw(args)...}); };
 }
 
 // The same for a query answered from the client's state: its result becomes an Out (a typed handle, a name).

@@ -25,20 +25,19 @@ void bind_declarations(Ambassador& rtia) {
              py::arg("objectClass"), py::arg("attributes"))
         .def("unpublishObjectClass", forward<ObjectClassHandle>(&Client::unpublish_object_class),
              py::arg("objectClass"))
-        .def("subscribeObjectClassAttributes", forward<ObjectClassHandle, std::vector<AttributeHandle>, bool>(&Client::subscribe_object_class),
+        .def("subscribeObjectClassAttributes", request<wire::SubscribeObjectClass, ObjectClassHandle, std::vector<AttributeHandle>, bool>(),
              py::arg("objectClass"), py::arg("attributes"), py::arg("active") = true)
-        .def("unsubscribeObjectClass", forward<ObjectClassHandle>(&Client::unsubscribe_object_class),
+        .def("unsubscribeObjectClass", request<wire::UnsubscribeObjectClass, ObjectClassHandle>(),
              py::arg("objectClass"))
-        .def("publishInteractionClass", forward<InteractionClassHandle>(&Client::publish_interaction_class),
+        .def("publishInteractionClass", request<wire::PublishInteractionClass, InteractionClassHandle>(),
              py::arg("interactionClass"))
-        .def("unpublishInteractionClass", forward<InteractionClassHandle>(&Client::unpublish_interaction_class),
+        .def("unpublishInteractionClass", request<wire::UnpublishInteractionClass, InteractionClassHandle>(),
              py::arg("interactionClass"))
-        .def("subscribeInteractionClass", forward<InteractionClassHandle, bool>(&Client::subscribe_interaction_class),
+        .def("subscribeInteractionClass", request<wire::SubscribeInteractionClass, InteractionClassHandle, bool>(),
              py::arg("interactionClass"), py::arg("active") = true)
-        .def("unsubscribeInteractionClass", forward<InteractionClassHandle>(&Client::unsubscribe_interaction_class),
+        .def("unsubscribeInteractionClass", request<wire::UnsubscribeInteractionClass, InteractionClassHandle>(),
              py::arg("interactionClass"))
-        .def("_set_advisory_switch",
-             [](Client& c, int which, bool on) { c.set_advisory_switch(static_cast<wire::AdvisorySwitch>(which), on); });
+        .def("_set_advisory_switch", request<wire::SetAdvisorySwitch, std::uint8_t, bool>());
 }
 
 }  // namespace hlacore::bindings

@@ -46,10 +46,10 @@ void bind_objects(Ambassador& rtia) {
         .def("deleteObjectInstance", [](Client& c, ObjectHandle obj, py::handle tag, std::optional<double> time) {
                  return serial_result(c.delete_object(obj.value, raw(tag), time), time, c);
              }, py::arg("object"), py::arg("tag"), py::arg("time") = py::none())
-        .def("localDeleteObjectInstance", forward<ObjectHandle>(&Client::local_delete_object), py::arg("object"))
-        .def("requestObjectAttributeValueUpdate", forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::request_object_update),
+        .def("localDeleteObjectInstance", request<wire::LocalDeleteObject, ObjectHandle>(), py::arg("object"))
+        .def("requestObjectAttributeValueUpdate", request<wire::RequestObjectUpdate, ObjectHandle, std::vector<AttributeHandle>>(),
              py::arg("object"), py::arg("attributes"))
-        .def("requestClassAttributeValueUpdate", forward<ObjectClassHandle, std::vector<AttributeHandle>>(&Client::request_class_update),
+        .def("requestClassAttributeValueUpdate", request<wire::RequestClassUpdate, ObjectClassHandle, std::vector<AttributeHandle>>(),
              py::arg("objectClass"), py::arg("attributes"))
         // transport and order changes (HLA 1.3 §6.19-6.22)
         .def("changeAttributeTransportationType", forward<ObjectHandle, std::vector<AttributeHandle>, TransportationHandle>(&Client::change_attribute_transportation),

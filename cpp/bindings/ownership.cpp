@@ -39,11 +39,11 @@ void bind_ownership(Ambassador& rtia) {
                  }
                  return to_tuple<AttributeHandle>(released);
              }, py::arg("object"), py::arg("attributes"))
-        .def("cancelNegotiatedAttributeOwnershipDivestiture", forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::cancel_negotiated_divestiture),
+        .def("cancelNegotiatedAttributeOwnershipDivestiture", request<wire::CancelNegotiatedDivestiture, ObjectHandle, std::vector<AttributeHandle>>(),
              py::arg("object"), py::arg("attributes"))
-        .def("cancelAttributeOwnershipAcquisition", forward<ObjectHandle, std::vector<AttributeHandle>>(&Client::cancel_ownership_acquisition),
+        .def("cancelAttributeOwnershipAcquisition", request<wire::CancelOwnershipAcquisition, ObjectHandle, std::vector<AttributeHandle>>(),
              py::arg("object"), py::arg("attributes"))
-        .def("queryAttributeOwnership", forward<ObjectHandle, AttributeHandle>(&Client::query_ownership),
+        .def("queryAttributeOwnership", request<wire::QueryOwnership, ObjectHandle, AttributeHandle>(),
              py::arg("object"), py::arg("attribute"))
         .def("isAttributeOwnedByFederate",
              [](Client& c, ObjectHandle obj, AttributeHandle attr) { return c.is_owned(obj.value, attr.value); },

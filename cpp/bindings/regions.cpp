@@ -64,17 +64,17 @@ void bind_regions(Ambassador& rtia) {
                  }
                  return ObjectHandle{h};
              }, py::arg("objectClass"), py::arg("attributes"), py::arg("objectName") = py::none())
-        .def("associateRegionForUpdates", forward<RegionHandle, ObjectHandle, std::vector<AttributeHandle>>(&Client::associate_region),
+        .def("associateRegionForUpdates", request<wire::AssociateRegion, RegionHandle, ObjectHandle, std::vector<AttributeHandle>>(),
              py::arg("region"), py::arg("object"), py::arg("attributes"))
-        .def("unassociateRegionForUpdates", forward<RegionHandle, ObjectHandle>(&Client::unassociate_region),
+        .def("unassociateRegionForUpdates", request<wire::UnassociateRegion, RegionHandle, ObjectHandle>(),
              py::arg("region"), py::arg("object"))
-        .def("subscribeObjectClassAttributesWithRegion", forward<ObjectClassHandle, RegionHandle, std::vector<AttributeHandle>, bool>(&Client::subscribe_object_class_with_region),
+        .def("subscribeObjectClassAttributesWithRegion", request<wire::SubscribeObjectClassWithRegion, ObjectClassHandle, RegionHandle, std::vector<AttributeHandle>, bool>(),
              py::arg("objectClass"), py::arg("region"), py::arg("attributes"), py::arg("active") = true)
-        .def("unsubscribeObjectClassWithRegion", forward<ObjectClassHandle, RegionHandle>(&Client::unsubscribe_object_class_with_region),
+        .def("unsubscribeObjectClassWithRegion", request<wire::UnsubscribeObjectClassWithRegion, ObjectClassHandle, RegionHandle>(),
              py::arg("objectClass"), py::arg("region"))
-        .def("subscribeInteractionClassWithRegion", forward<InteractionClassHandle, RegionHandle, bool>(&Client::subscribe_interaction_class_with_region),
+        .def("subscribeInteractionClassWithRegion", request<wire::SubscribeInteractionClassWithRegion, InteractionClassHandle, RegionHandle, bool>(),
              py::arg("interactionClass"), py::arg("region"), py::arg("active") = true)
-        .def("unsubscribeInteractionClassWithRegion", forward<InteractionClassHandle, RegionHandle>(&Client::unsubscribe_interaction_class_with_region),
+        .def("unsubscribeInteractionClassWithRegion", request<wire::UnsubscribeInteractionClassWithRegion, InteractionClassHandle, RegionHandle>(),
              py::arg("interactionClass"), py::arg("region"))
         .def("sendInteractionWithRegion",
              [](Client& c, InteractionClassHandle ic, py::handle values, RegionHandle r, py::handle tag,
@@ -84,7 +84,7 @@ void bind_regions(Ambassador& rtia) {
                  return serial_result(serial, time, c);
              }, py::arg("interactionClass"), py::arg("parameters"), py::arg("region"), py::arg("tag"),
              py::arg("time") = py::none())
-        .def("requestClassAttributeValueUpdateWithRegion", forward<ObjectClassHandle, std::vector<AttributeHandle>, RegionHandle>(&Client::request_class_update_with_region),
+        .def("requestClassAttributeValueUpdateWithRegion", request<wire::RequestClassUpdateWithRegion, ObjectClassHandle, std::vector<AttributeHandle>, RegionHandle>(),
              py::arg("objectClass"), py::arg("attributes"), py::arg("region"));
 }
 

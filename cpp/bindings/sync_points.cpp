@@ -17,13 +17,13 @@ void bind_sync_points(Ambassador& rtia) {
     Documented(rtia, kDocs)
         .def("registerFederationSynchronizationPoint",
              [](Client& c, py::object label, py::object tag, std::optional<std::vector<FederateHandle>> federates) {
-                 std::optional<std::vector<H32>> set;
-                 if (federates) set = to_handles(*federates);
-                 c.register_sync_point(to_bytes(label, "label"), to_bytes(tag, "tag"), set);
+                 c.request(wire::RegisterSyncPoint{to_bytes(label, "label"), to_bytes(tag, "tag"), !federates,
+                                                   federates ? to_handles(*federates) : wire::Handles{}});
              },
              py::arg("label"), py::arg("tag"), py::arg("federates") = py::none())
         .def("synchronizationPointAchieved",
-             [](Client& c, py::object label) { c.sync_point_achieved(to_bytes(label, "label")); }, py::arg("label"));
+             [](Client& c, py::object label) { c.request(wire::SyncPointAchieved{to_bytes(label, "label")}); },
+             py::arg("label"));
 }
 
 }  // namespace hlacore::bindings

@@ -100,25 +100,25 @@ public:
     int datagram_fileno() const { return datagram_path_ ? datagram_fd_ : -1; }  // beside fileno() for select()
     DatagramStatus datagram_status() const;
 
+    // A request of HLACORE_CLIENT_REQUESTS (wire/messages.hpp): its check in client/<group>.cpp, then the send.
+    template <class M>
+    void request(const M& message) {
+        {
+            std::lock_guard<std::mutex> lock(mu_);
+            check(message);
+        }
+        send(message);
+    }
+
     // ---- federation management ----
     void create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text);
     void destroy_federation(const std::string& name);
     std::uint32_t join(const std::string& federate, const std::string& federation);
     void resign(std::uint8_t action);
-    void register_sync_point(const std::string& label, const std::string& tag,
-                             const std::optional<std::vector<std::uint32_t>>& federates);
-    void sync_point_achieved(const std::string& label);
 
     // ---- declaration management ----
     void publish_object_class(fom::Handle cls, const std::vector<fom::Handle>& attributes);
     void unpublish_object_class(fom::Handle cls);
-    void subscribe_object_class(fom::Handle cls, const std::vector<fom::Handle>& attributes, bool active);
-    void unsubscribe_object_class(fom::Handle cls);
-    void publish_interaction_class(fom::Handle cls);
-    void unpublish_interaction_class(fom::Handle cls);
-    void subscribe_interaction_class(fom::Handle cls, bool active);
-    void unsubscribe_interaction_class(fom::Handle cls);
-    void set_advisory_switch(wire::AdvisorySwitch which, bool on);
 
     // ---- object management; the update calls return the serial of the event retraction handle ----
     std::uint32_t register_object(fom::Handle cls, const std::string& name);
@@ -127,9 +127,6 @@ public:
     std::uint64_t send_interaction(fom::Handle cls, wire::HandleValues values, const std::string& tag,
                                    wire::OptionalTime time);
     std::uint64_t delete_object(std::uint32_t object, const std::string& tag, wire::OptionalTime time);
-    void local_delete_object(std::uint32_t object);
-    void request_object_update(std::uint32_t object, const std::vector<fom::Handle>& attributes);
-    void request_class_update(fom::Handle cls, const std::vector<fom::Handle>& attributes);
 
     // ---- transport and order changes (HLA 1.3 §6.19-6.22) ----
     // Handles are fom::Transport / fom::Order values (InvalidTransportationHandle / InvalidOrderingHandle
@@ -154,9 +151,6 @@ public:
     void ownership_acquisition_if_available(std::uint32_t object, const std::vector<fom::Handle>& attributes);
     // Returns the attributes actually released (those another federate is waiting for).
     std::vector<fom::Handle> release_response(std::uint32_t object, const std::vector<fom::Handle>& attributes);
-    void cancel_negotiated_divestiture(std::uint32_t object, const std::vector<fom::Handle>& attributes);
-    void cancel_ownership_acquisition(std::uint32_t object, const std::vector<fom::Handle>& attributes);
-    void query_ownership(std::uint32_t object, fom::Handle attribute);
     bool is_owned(std::uint32_t object, fom::Handle attribute) const;
 
     // ---- data distribution management (HLA 1.3 §9), client/regions.cpp ----
@@ -182,17 +176,8 @@ public:
     std::uint32_t register_object_with_region(fom::Handle cls,
                                               const std::vector<std::pair<fom::Handle, std::uint32_t>>& regions,
                                               const std::string& name);
-    void associate_region(std::uint32_t region, std::uint32_t object, const std::vector<fom::Handle>& attributes);
-    void unassociate_region(std::uint32_t region, std::uint32_t object);
-    void subscribe_object_class_with_region(fom::Handle cls, std::uint32_t region,
-                                            const std::vector<fom::Handle>& attributes, bool active);
-    void unsubscribe_object_class_with_region(fom::Handle cls, std::uint32_t region);
-    void subscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region, bool active);
-    void unsubscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region);
     std::uint64_t send_interaction_with_region(fom::Handle cls, wire::HandleValues values, std::uint32_t region,
                                                const std::string& tag, wire::OptionalTime time);
-    void request_class_update_with_region(fom::Handle cls, const std::vector<fom::Handle>& attributes,
-                                          std::uint32_t region);
 
     // ---- time management (HLA 1.3 §8; the rules are in docs/time-management.md) ----
     // The federate's time state changes when its callbacks are popped (timeRegulationEnabled,
@@ -386,6 +371,10 @@ private:
     bool tls_readable();  // decrypted bytes SSL_read would return at once
     ClockEstimate measure_clock(int probes);
 
+    // The checks and the federate's own state change behind each of HLACORE_CLIENT_REQUESTS; callers hold mu_.
+#define HLACORE_X(name) void check(const wire::name& m);
+    HLACORE_CLIENT_REQUESTS(HLACORE_X)
+#undef HLACORE_X
     // The checks behind the services; callers hold mu_.
     void require_joined() const;
     // ValueLengthExceeded unless `message` and what the gateway forwards of it fit the gateway's frame limit.
@@ -426,11 +415,6 @@ private:
     // applies the save/restore callbacks when popped (initiateFederateRestore replaces the mirrored state).
     void check_not_saving_or_restoring(const char* service) const;
     void require_idle(const char* service) const;  // require_joined, then check_not_saving_or_restoring
-    // unpublishInteractionClass / unsubscribeInteractionClass (client/declarations.cpp): the class leaves
-    // `declared`, refused with `code` when it was not in it; then the gateway is told with a Message.
-    template <class Message>
-    void undeclare_interaction(std::set<fom::Handle>& declared, fom::Handle cls, ErrorCode code,
-                               const char* declared_as);
     void require_no_advance() const;                // TimeAdvanceAlreadyInProgress (client/time.cpp)
     void apply_save_callback(const wire::Message& m);
     enum class SavePhase : std::uint8_t { None, Initiated, Begun, Answered };

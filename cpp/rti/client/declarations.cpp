@@ -57,70 +57,38 @@ void Client::unpublish_object_class(fom::Handle cls) {
     send(wire::UnpublishObjectClass{cls});
 }
 
-void Client::subscribe_object_class(fom::Handle cls, const std::vector<fom::Handle>& attributes, bool active) {
-    (void)active;  // passive subscriptions only change advisories, which follow any subscription here
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        check_attributes(defined_object_class(cls), attributes);
-        declare(subscribed_, cls, attributes);
-    }
-    send(wire::SubscribeObjectClass{cls, attributes, active});
+void Client::check(const wire::SubscribeObjectClass& m) {
+    // Passive subscriptions (m.active false) only change advisories, which follow any subscription here.
+    check_attributes(defined_object_class(m.object_class), m.attributes);
+    declare(subscribed_, m.object_class, m.attributes);
 }
 
-void Client::unsubscribe_object_class(fom::Handle cls) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        undeclare(subscribed_, defined_object_class(cls), "object class", ErrorCode::ObjectClassNotSubscribed, "subscribed");
-    }
-    send(wire::UnsubscribeObjectClass{cls});
+void Client::check(const wire::UnsubscribeObjectClass& m) {
+    undeclare(subscribed_, defined_object_class(m.object_class), "object class", ErrorCode::ObjectClassNotSubscribed,
+              "subscribed");
 }
 
-void Client::publish_interaction_class(fom::Handle cls) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        defined_interaction_class(cls);
-        published_interactions_.insert(cls);
-    }
-    send(wire::PublishInteractionClass{cls});
+void Client::check(const wire::PublishInteractionClass& m) {
+    defined_interaction_class(m.interaction_class);
+    published_interactions_.insert(m.interaction_class);
 }
 
-template <class Message>
-void Client::undeclare_interaction(std::set<fom::Handle>& declared, fom::Handle cls, ErrorCode code,
-                                   const char* declared_as) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        undeclare(declared, defined_interaction_class(cls), "interaction class", code, declared_as);
-    }
-    send(Message{cls});
+void Client::check(const wire::UnpublishInteractionClass& m) {
+    undeclare(published_interactions_, defined_interaction_class(m.interaction_class), "interaction class",
+              ErrorCode::InteractionClassNotPublished, "published");
+    interaction_transport_.erase(m.interaction_class);  // the gateway forgets the class's transport change too
 }
 
-void Client::unpublish_interaction_class(fom::Handle cls) {
-    undeclare_interaction<wire::UnpublishInteractionClass>(published_interactions_, cls,
-                                                           ErrorCode::InteractionClassNotPublished, "published");
-    std::lock_guard<std::mutex> lock(mu_);
-    interaction_transport_.erase(cls);  // the gateway forgets the class's transport change too
+void Client::check(const wire::SubscribeInteractionClass& m) {
+    defined_interaction_class(m.interaction_class);
+    subscribed_interactions_.insert(m.interaction_class);
 }
 
-void Client::subscribe_interaction_class(fom::Handle cls, bool active) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        defined_interaction_class(cls);
-        subscribed_interactions_.insert(cls);
-    }
-    send(wire::SubscribeInteractionClass{cls, active});
+void Client::check(const wire::UnsubscribeInteractionClass& m) {
+    undeclare(subscribed_interactions_, defined_interaction_class(m.interaction_class), "interaction class",
+              ErrorCode::InteractionClassNotSubscribed, "subscribed");
 }
 
-void Client::unsubscribe_interaction_class(fom::Handle cls) {
-    undeclare_interaction<wire::UnsubscribeInteractionClass>(subscribed_interactions_, cls,
-                                                             ErrorCode::InteractionClassNotSubscribed, "subscribed");
-}
-
-void Client::set_advisory_switch(wire::AdvisorySwitch which, bool on) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-    }
-    send(wire::SetAdvisorySwitch{static_cast<std::uint8_t>(which), on});
-}
+void Client::check(const wire::SetAdvisorySwitch&) { require_joined(); }
 
 }  // namespace hlacore

@@ -107,33 +107,21 @@ std::uint64_t Client::delete_object(std::uint32_t object, const std::string& tag
     return serial;
 }
 
-void Client::local_delete_object(std::uint32_t object) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        const LocalObject& obj = known_object(object);
-        if (!obj.owned.empty())
-            raise(ErrorCode::FederateOwnsAttributes,
-                  "this federate owns attributes of object '" + obj.name + "' and cannot delete it locally");
-        objects_.erase(object);
-    }
-    send(wire::LocalDeleteObject{object});
+void Client::check(const wire::LocalDeleteObject& m) {
+    const LocalObject& obj = known_object(m.object);
+    if (!obj.owned.empty())
+        raise(ErrorCode::FederateOwnsAttributes,
+              "this federate owns attributes of object '" + obj.name + "' and cannot delete it locally");
+    objects_.erase(m.object);
 }
 
-void Client::request_object_update(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        const LocalObject& obj = known_object(object);
-        check_attributes(*fom_->object_class(obj.object_class), attributes);
-    }
-    send(wire::RequestObjectUpdate{object, attributes});
+void Client::check(const wire::RequestObjectUpdate& m) {
+    const LocalObject& obj = known_object(m.object);
+    check_attributes(*fom_->object_class(obj.object_class), m.attributes);
 }
 
-void Client::request_class_update(fom::Handle cls, const std::vector<fom::Handle>& attributes) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        check_attributes(defined_object_class(cls), attributes);
-    }
-    send(wire::RequestClassUpdate{cls, attributes});
+void Client::check(const wire::RequestClassUpdate& m) {
+    check_attributes(defined_object_class(m.object_class), m.attributes);
 }
 
 // ---- transport and order changes (HLA 1.3 §6.19-6.22) ----

@@ -170,45 +170,31 @@ std::vector<fom::Handle> Client::release_response(std::uint32_t object, const st
 }
 
 // §7.12.
-void Client::cancel_negotiated_divestiture(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        LocalObject& obj = ownership_object(object, attributes);
-        check_owned(*fom_, obj, attributes, [&](fom::Handle a) {
-            if (!obj.divesting.count(a))
-                raise(ErrorCode::AttributeDivestitureWasNotRequested,
-                      "no negotiated divestiture of " + describe(*fom_, obj, a) + " is in progress");
-        });
-        for (auto a : attributes) obj.divesting.erase(a);
-    }
-    send(wire::CancelNegotiatedDivestiture{object, attributes});
+void Client::check(const wire::CancelNegotiatedDivestiture& m) {
+    LocalObject& obj = ownership_object(m.object, m.attributes);
+    check_owned(*fom_, obj, m.attributes, [&](fom::Handle a) {
+        if (!obj.divesting.count(a))
+            raise(ErrorCode::AttributeDivestitureWasNotRequested,
+                  "no negotiated divestiture of " + describe(*fom_, obj, a) + " is in progress");
+    });
+    for (auto a : m.attributes) obj.divesting.erase(a);
 }
 
 // §7.13: confirmAttributeOwnershipAcquisitionCancellation follows for what was still awaited; an
 // attribute acquired meanwhile arrives with attributeOwnershipAcquisitionNotification instead.
-void Client::cancel_ownership_acquisition(std::uint32_t object, const std::vector<fom::Handle>& attributes) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        LocalObject& obj = ownership_object(object, attributes);
-        for (auto a : attributes) {
-            if (obj.owned.count(a))
-                raise(ErrorCode::AttributeAlreadyOwned, describe(*fom_, obj, a) + " is already owned by this federate");
-            if (!obj.acquiring.count(a))
-                raise(ErrorCode::AttributeAcquisitionWasNotRequested,
-                      "no acquisition of " + describe(*fom_, obj, a) + " is pending");
-        }
+void Client::check(const wire::CancelOwnershipAcquisition& m) {
+    LocalObject& obj = ownership_object(m.object, m.attributes);
+    for (auto a : m.attributes) {
+        if (obj.owned.count(a))
+            raise(ErrorCode::AttributeAlreadyOwned, describe(*fom_, obj, a) + " is already owned by this federate");
+        if (!obj.acquiring.count(a))
+            raise(ErrorCode::AttributeAcquisitionWasNotRequested,
+                  "no acquisition of " + describe(*fom_, obj, a) + " is pending");
     }
-    send(wire::CancelOwnershipAcquisition{object, attributes});
 }
 
 // §7.15: answered by informAttributeOwnership, attributeIsNotOwned or attributeOwnedByRTI.
-void Client::query_ownership(std::uint32_t object, fom::Handle attribute) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        ownership_object(object, {attribute});
-    }
-    send(wire::QueryOwnership{object, attribute});
-}
+void Client::check(const wire::QueryOwnership& m) { ownership_object(m.object, {m.attribute}); }
 
 // §7.17: answered locally, from the notifications delivered so far.
 bool Client::is_owned(std::uint32_t object, fom::Handle attribute) const {

@@ -209,73 +209,56 @@ std::uint32_t Client::register_object_with_region(fom::Handle cls,
     return reply.handle;
 }
 
-void Client::associate_region(std::uint32_t region, std::uint32_t object, const std::vector<fom::Handle>& attributes) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        refuse_region_change_while_restoring("associateRegionForUpdates");
-        const LocalObject& obj = known_object(object);
-        const auto& cls = *fom_->object_class(obj.object_class);
-        check_attributes(cls, attributes);
-        const LocalRegion& r = known_region(region);
-        for (auto attr : attributes) check_region_space(r, cls, attr);
-        for (auto attr : attributes) ddm_.update_regions[object][attr] = region;
-    }
-    send(wire::AssociateRegion{region, object, attributes});
+void Client::check(const wire::AssociateRegion& m) {
+    refuse_region_change_while_restoring("associateRegionForUpdates");
+    const LocalObject& obj = known_object(m.object);
+    const auto& cls = *fom_->object_class(obj.object_class);
+    check_attributes(cls, m.attributes);
+    const LocalRegion& r = known_region(m.region);
+    for (auto attr : m.attributes) check_region_space(r, cls, attr);
+    for (auto attr : m.attributes) ddm_.update_regions[m.object][attr] = m.region;
 }
 
-void Client::unassociate_region(std::uint32_t region, std::uint32_t object) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        refuse_region_change_while_restoring("unassociateRegionForUpdates");
-        const LocalObject& obj = known_object(object);
-        known_region(region);
-        auto associations = ddm_.update_regions.find(object);
-        bool associated = false;
-        if (associations != ddm_.update_regions.end()) {
-            for (auto it = associations->second.begin(); it != associations->second.end();) {
-                associated = associated || it->second == region;
-                it = it->second == region ? associations->second.erase(it) : std::next(it);
-            }
-            if (associations->second.empty()) ddm_.update_regions.erase(associations);
+void Client::check(const wire::UnassociateRegion& m) {
+    refuse_region_change_while_restoring("unassociateRegionForUpdates");
+    const LocalObject& obj = known_object(m.object);
+    known_region(m.region);
+    auto associations = ddm_.update_regions.find(m.object);
+    bool associated = false;
+    if (associations != ddm_.update_regions.end()) {
+        for (auto it = associations->second.begin(); it != associations->second.end();) {
+            associated = associated || it->second == m.region;
+            it = it->second == m.region ? associations->second.erase(it) : std::next(it);
         }
-        if (!associated)
-            raise(ErrorCode::InvalidRegionContext,
-                  region_text(region) + " is not associated with attributes of object '" + obj.name + "'");
+        if (associations->second.empty()) ddm_.update_regions.erase(associations);
     }
-    send(wire::UnassociateRegion{region, object});
+    if (!associated)
+        raise(ErrorCode::InvalidRegionContext,
+              region_text(m.region) + " is not associated with attributes of object '" + obj.name + "'");
 }
 
 // ---- subscriptions through regions (HLA 1.3 §9.8-9.11) ----
 
-void Client::subscribe_object_class_with_region(fom::Handle cls, std::uint32_t region,
-                                                const std::vector<fom::Handle>& attributes, bool active) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        refuse_region_change_while_restoring("subscribeObjectClassAttributesWithRegion");
-        const auto& c = defined_object_class(cls);
-        check_attributes(c, attributes);
-        const LocalRegion& r = known_region(region);
-        for (auto attr : attributes) check_region_space(r, c, attr);
-        if (attributes.empty()) {
-            erase_nested(ddm_.object_subscriptions, cls, region);
-        } else {
-            ddm_.object_subscriptions[cls][region] = std::set<fom::Handle>(attributes.begin(), attributes.end());
-        }
+void Client::check(const wire::SubscribeObjectClassWithRegion& m) {
+    refuse_region_change_while_restoring("subscribeObjectClassAttributesWithRegion");
+    const auto& c = defined_object_class(m.object_class);
+    check_attributes(c, m.attributes);
+    const LocalRegion& r = known_region(m.region);
+    for (auto attr : m.attributes) check_region_space(r, c, attr);
+    if (m.attributes.empty()) {
+        erase_nested(ddm_.object_subscriptions, m.object_class, m.region);
+    } else {
+        ddm_.object_subscriptions[m.object_class][m.region] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
     }
-    send(wire::SubscribeObjectClassWithRegion{cls, region, attributes, active});
 }
 
-void Client::unsubscribe_object_class_with_region(fom::Handle cls, std::uint32_t region) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        refuse_region_change_while_restoring("unsubscribeObjectClassWithRegion");
-        const auto& c = defined_object_class(cls);
-        known_region(region);
-        if (!erase_nested(ddm_.object_subscriptions, cls, region))
-            raise(ErrorCode::ObjectClassNotSubscribed,
-                  "object class '" + c.qualified_name + "' is not subscribed with " + region_text(region));
-    }
-    send(wire::UnsubscribeObjectClassWithRegion{cls, region});
+void Client::check(const wire::UnsubscribeObjectClassWithRegion& m) {
+    refuse_region_change_while_restoring("unsubscribeObjectClassWithRegion");
+    const auto& c = defined_object_class(m.object_class);
+    known_region(m.region);
+    if (!erase_nested(ddm_.object_subscriptions, m.object_class, m.region))
+        raise(ErrorCode::ObjectClassNotSubscribed,
+              "object class '" + c.qualified_name + "' is not subscribed with " + region_text(m.region));
 }
 
 void Client::check_interaction_region(const fom::InteractionClass& c, std::uint32_t region) const {
@@ -287,27 +270,19 @@ void Client::check_interaction_region(const fom::InteractionClass& c, std::uint3
                                                    fom_->space(r.space)->name + "'");
 }
 
-void Client::subscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region, bool active) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        refuse_region_change_while_restoring("subscribeInteractionClassWithRegion");
-        check_interaction_region(defined_interaction_class(cls), region);
-        ddm_.interaction_subscriptions[cls].insert(region);
-    }
-    send(wire::SubscribeInteractionClassWithRegion{cls, region, active});
+void Client::check(const wire::SubscribeInteractionClassWithRegion& m) {
+    refuse_region_change_while_restoring("subscribeInteractionClassWithRegion");
+    check_interaction_region(defined_interaction_class(m.interaction_class), m.region);
+    ddm_.interaction_subscriptions[m.interaction_class].insert(m.region);
 }
 
-void Client::unsubscribe_interaction_class_with_region(fom::Handle cls, std::uint32_t region) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        refuse_region_change_while_restoring("unsubscribeInteractionClassWithRegion");
-        const auto& c = defined_interaction_class(cls);
-        known_region(region);
-        if (!erase_nested(ddm_.interaction_subscriptions, cls, region))
-            raise(ErrorCode::InteractionClassNotSubscribed,
-                  "interaction class '" + c.qualified_name + "' is not subscribed with " + region_text(region));
-    }
-    send(wire::UnsubscribeInteractionClassWithRegion{cls, region});
+void Client::check(const wire::UnsubscribeInteractionClassWithRegion& m) {
+    refuse_region_change_while_restoring("unsubscribeInteractionClassWithRegion");
+    const auto& c = defined_interaction_class(m.interaction_class);
+    known_region(m.region);
+    if (!erase_nested(ddm_.interaction_subscriptions, m.interaction_class, m.region))
+        raise(ErrorCode::InteractionClassNotSubscribed,
+              "interaction class '" + c.qualified_name + "' is not subscribed with " + region_text(m.region));
 }
 
 // ---- sending and requesting through regions (HLA 1.3 §9.12-9.13) ----
@@ -326,14 +301,9 @@ std::uint64_t Client::send_interaction_with_region(fom::Handle cls, wire::Handle
     return interaction.serial;
 }
 
-void Client::request_class_update_with_region(fom::Handle cls, const std::vector<fom::Handle>& attributes,
-                                              std::uint32_t region) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        check_attributes(defined_object_class(cls), attributes);
-        known_region(region);
-    }
-    send(wire::RequestClassUpdateWithRegion{cls, attributes, region});
+void Client::check(const wire::RequestClassUpdateWithRegion& m) {
+    check_attributes(defined_object_class(m.object_class), m.attributes);
+    known_region(m.region);
 }
 
 }  // namespace hlacore

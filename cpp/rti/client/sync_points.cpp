@@ -3,24 +3,13 @@
 
 namespace hlacore {
 
-void Client::register_sync_point(const std::string& label, const std::string& tag,
-                                 const std::optional<std::vector<std::uint32_t>>& federates) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-    }
-    send(wire::RegisterSyncPoint{label, tag, !federates.has_value(), federates.value_or(wire::Handles{})});
-}
+void Client::check(const wire::RegisterSyncPoint&) { require_joined(); }
 
-void Client::sync_point_achieved(const std::string& label) {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-        if (!announced_.count(label))
-            raise(ErrorCode::SynchronizationPointLabelWasNotAnnounced,
-                  "synchronization point '" + label + "' was not announced to this federate");
-    }
-    send(wire::SyncPointAchieved{label});
+void Client::check(const wire::SyncPointAchieved& m) {
+    require_joined();
+    if (!announced_.count(m.label))
+        raise(ErrorCode::SynchronizationPointLabelWasNotAnnounced,
+              "synchronization point '" + m.label + "' was not announced to this federate");
 }
 
 }  // namespace hlacore

@@ -188,6 +188,26 @@ using OptionalTime = std::optional<double>;
     X(SubscribeInteractionClassWithRegion) X(UnsubscribeInteractionClassWithRegion)                    \
     X(SendInteractionWithRegion) X(RequestClassUpdateWithRegion)
 
+// The requests whose federate side is a check followed by the send: each has a
+// `void Client::check(const M&)` in cpp/rti/client/<group>.cpp (the service's checks and the federate's own
+// state change, under the client's lock), declared from this list; the binding sends one with
+// `request<M>` (cpp/bindings/convert.hpp) through `Client::request`.
+#define HLACORE_CLIENT_REQUESTS(X)                                                                     \
+    /* sync_points */                                                                                  \
+    X(RegisterSyncPoint) X(SyncPointAchieved)                                                          \
+    /* declarations */                                                                                 \
+    X(SubscribeObjectClass) X(UnsubscribeObjectClass) X(PublishInteractionClass)                       \
+    X(UnpublishInteractionClass) X(SubscribeInteractionClass) X(UnsubscribeInteractionClass)           \
+    X(SetAdvisorySwitch)                                                                               \
+    /* objects */                                                                                      \
+    X(LocalDeleteObject) X(RequestObjectUpdate) X(RequestClassUpdate)                                  \
+    /* ownership */                                                                                    \
+    X(CancelNegotiatedDivestiture) X(CancelOwnershipAcquisition) X(QueryOwnership)                     \
+    /* regions */                                                                                      \
+    X(AssociateRegion) X(UnassociateRegion) X(SubscribeObjectClassWithRegion)                          \
+    X(UnsubscribeObjectClassWithRegion) X(SubscribeInteractionClassWithRegion)                         \
+    X(UnsubscribeInteractionClassWithRegion) X(RequestClassUpdateWithRegion)
+
 enum class MessageType : std::uint16_t { HLACORE_LIST_CODES(Invalid, HLACORE_MESSAGES) };
 
 const char* message_name(MessageType type);

@@ -14,6 +14,7 @@
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
 #include "rti/server/outbox.hpp"
+#include "rti/server/regions.hpp"
 #include "rti/server/sync_points.hpp"
 #include "rti/server/time_manager.hpp"
 #include "rti/wire/codec.hpp"
@@ -77,35 +78,14 @@ public:
     void handle(FederateHandle from, const M& message);
 
 private:
-    // ---- data distribution management (HLA 1.3 §9), in server/regions.cpp ----
-    // A region belongs to the federate that created it; its handle is chosen by that federate's client.
-    using RegionHandle = std::uint32_t;
-    using Range = std::pair<std::uint32_t, std::uint32_t>;  // closed: lower <= value <= upper
-    struct Region {
-        fom::Handle space = 0;
-        std::vector<std::vector<Range>> extents;  // each extent: one range per dimension, in the FOM's order
-    };
-    struct FederateRegions {
-        std::map<RegionHandle, Region> regions;
-        // Subscriptions through a region; the plain ones (default region: the whole space) stay in
-        // FederateState::subscribed / subscribed_interactions.
-        std::map<fom::Handle, std::map<RegionHandle, std::set<fom::Handle>>> object_subscriptions;
-        std::map<fom::Handle, std::set<RegionHandle>> interaction_subscriptions;
-        // This federate's update regions: object -> attribute -> region (absent: the default region).
-        std::map<ObjectHandle, std::map<fom::Handle, RegionHandle>> update_regions;
-        // The attributes last reported in scope, while the attribute scope advisory switch is on.
-        std::map<ObjectHandle, std::set<fom::Handle>> in_scope;
-        // Owned attributes last reported relevant (turnUpdatesOn), while the relevance switch is on.
-        std::map<ObjectHandle, std::set<fom::Handle>> relevant;
-        // The highest region number the federate created: saved, so that a restored client never numbers
-        // a new region like one the federate had before the save (server/save_restore.cpp).
-        RegionHandle last_region = 0;
-    };
     struct FederateState;
     struct ObjectInstance;
-    static bool overlap(const Region& a, const Region& b);
-    Region make_region(fom::Handle space, const wire::Handles& bounds) const;  // WireError on bad extents
-    const Region& region_of(const FederateState& f, RegionHandle r) const;   // WireError when unknown
+
+    // ---- data distribution management (HLA 1.3 §9): the state in server/regions.hpp, the routing in
+    // server/regions.cpp ----
+    // WireError unless the class's attribute is in the routing space of the federate's region `r`.
+    void check_region_space(const fom::ObjectClass& cls, fom::Handle attribute, RegionHandle r,
+                            const Region& region) const;
     // The federate's region `r`, which must be in the routing space of interaction class `cls` (WireError).
     const Region& interaction_region(const FederateState& f, RegionHandle r, fom::Handle cls) const;
     // The region `owner` updates the attribute of the object in, or null for the default region.
@@ -152,7 +132,7 @@ private:
         // federate's interactions of a class go this way instead of the FOM's, until it unpublishes the class.
         std::map<fom::Handle, fom::Order> interaction_order;
         std::map<fom::Handle, fom::Transport> interaction_transport;
-        FederateRegions ddm;  // data distribution management (HLA 1.3 §9)
+        FederateRegions ddm;  // data distribution management (HLA 1.3 §9, server/regions.hpp)
     };
     struct ObjectInstance {
         fom::Handle object_class = 0;

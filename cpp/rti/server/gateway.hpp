@@ -12,15 +12,35 @@
 #include <unordered_map>
 #include <vector>
 
+#include <sys/epoll.h>
 #include <sys/socket.h>
 
-#include "rti/server/event_loop.hpp"
 #include "rti/server/federation.hpp"
 #include "rti/tls.hpp"
 #include "rti/trace.hpp"
 #include "rti/wire/datagram.hpp"
 
 namespace hlacore {
+
+// A thin epoll wrapper for the gateway's loop: register file descriptors, wait for readiness (gateway.cpp).
+class EventLoop {
+public:
+    EventLoop();
+    ~EventLoop();
+    EventLoop(const EventLoop&) = delete;
+    EventLoop& operator=(const EventLoop&) = delete;
+
+    void add(int fd, std::uint32_t events);
+    void modify(int fd, std::uint32_t events);
+    void remove(int fd);
+
+    // Waits up to timeout_ms (-1: forever) and returns the ready events; EINTR yields an empty list.
+    const std::vector<epoll_event>& wait(int timeout_ms);
+
+private:
+    int epoll_fd_;
+    std::vector<epoll_event> ready_;
+};
 
 struct GatewayOptions {
     std::string host = "127.0.0.1";

@@ -301,7 +301,7 @@ void Federation::request_class_update(FederateHandle from, fom::Handle cls, cons
             auto owner = obj.owners.find(attr);
             if (owner == obj.owners.end() || owner->second == from) continue;
             const Region* updated_in = region ? update_region(owner->second, oh, attr) : nullptr;
-            if (!updated_in || overlap(*region, *updated_in)) by_owner[owner->second].push_back(attr);
+            if (!updated_in || region->overlaps(*updated_in)) by_owner[owner->second].push_back(attr);
         }
         for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{oh, attrs});
     }

@@ -6,6 +6,7 @@
 // some extent of one and some extent of the other overlap in every dimension; the default region (a plain
 // subscription, an unassociated attribute, an interaction sent without region) is the whole space and
 // overlaps every region.
+#include "rti/server/regions.hpp"
 #include "rti/server/federation.hpp"
 #include "rti/erase_nested.hpp"
 
@@ -15,9 +16,11 @@ namespace hlacore {
 
 using wire::WireError;
 
-bool Federation::overlap(const Region& a, const Region& b) {
-    for (const auto& ea : a.extents) {
-        for (const auto& eb : b.extents) {
+// ---- the state (regions.hpp) ----
+
+bool Region::overlaps(const Region& other) const {
+    for (const auto& ea : extents) {
+        for (const auto& eb : other.extents) {
             bool all = ea.size() == eb.size();
             for (std::size_t d = 0; all && d < ea.size(); ++d)
                 all = ea[d].first <= eb[d].second && eb[d].first <= ea[d].second;
@@ -27,8 +30,8 @@ bool Federation::overlap(const Region& a, const Region& b) {
     return false;
 }
 
-Federation::Region Federation::make_region(fom::Handle space, const wire::Handles& bounds) const {
-    const auto* s = fom_.space(space);
+Region Region::from_bounds(const fom::Fom& fom, fom::Handle space, const wire::Handles& bounds) {
+    const auto* s = fom.space(space);
     if (!s) throw WireError("routing space handle " + std::to_string(space) + " is not defined in the FOM");
     const std::size_t per_extent = 2 * s->dimensions.size();
     Region region;
@@ -52,37 +55,84 @@ Federation::Region Federation::make_region(fom::Handle space, const wire::Handle
     return region;
 }
 
-const Federation::Region& Federation::region_of(const FederateState& f, RegionHandle r) const {
-    auto it = f.ddm.regions.find(r);
-    if (it == f.ddm.regions.end()) throw WireError("region " + std::to_string(r) + " is not known");
+const Region& FederateRegions::at(RegionHandle r) const {
+    auto it = regions.find(r);
+    if (it == regions.end()) throw WireError("region " + std::to_string(r) + " is not known");
     return it->second;
 }
 
-const Federation::Region* Federation::update_region(FederateHandle owner, ObjectHandle object,
-                                                    fom::Handle attribute) const {
-    auto f = federates_.find(owner);
-    if (f == federates_.end()) return nullptr;
-    const auto& ddm = f->second.ddm;
-    auto obj = ddm.update_regions.find(object);
-    if (obj == ddm.update_regions.end()) return nullptr;
+void FederateRegions::create(RegionHandle r, Region region) {
+    if (r == 0 || regions.count(r)) throw WireError("region handle " + std::to_string(r) + " is 0 or already in use");
+    regions[r] = std::move(region);
+    last_region = std::max(last_region, r);
+}
+
+void FederateRegions::erase(RegionHandle r) {
+    regions.erase(r);
+    for (auto it = object_subscriptions.begin(); it != object_subscriptions.end();) {
+        it->second.erase(r);
+        it = it->second.empty() ? object_subscriptions.erase(it) : std::next(it);
+    }
+    for (auto it = interaction_subscriptions.begin(); it != interaction_subscriptions.end();) {
+        it->second.erase(r);
+        it = it->second.empty() ? interaction_subscriptions.erase(it) : std::next(it);
+    }
+    for (auto& [object, attributes] : update_regions) {
+        for (auto it = attributes.begin(); it != attributes.end();)
+            it = it->second == r ? attributes.erase(it) : std::next(it);
+    }
+}
+
+const Region* FederateRegions::update_region(ObjectHandle object, fom::Handle attribute) const {
+    auto obj = update_regions.find(object);
+    if (obj == update_regions.end()) return nullptr;
     auto attr = obj->second.find(attribute);
     if (attr == obj->second.end()) return nullptr;
-    auto region = ddm.regions.find(attr->second);
-    return region == ddm.regions.end() ? nullptr : &region->second;
+    auto region = regions.find(attr->second);
+    return region == regions.end() ? nullptr : &region->second;
+}
+
+bool FederateRegions::subscribed(fom::Handle known, fom::Handle attribute, const Region* updated_in) const {
+    auto by_class = object_subscriptions.find(known);
+    if (by_class == object_subscriptions.end()) return false;
+    for (const auto& [r, attributes] : by_class->second) {
+        if (!attributes.count(attribute)) continue;
+        if (!updated_in) return true;  // the default region overlaps every region
+        auto region = regions.find(r);
+        if (region != regions.end() && region->second.overlaps(*updated_in)) return true;
+    }
+    return false;
+}
+
+bool FederateRegions::subscribed_interaction(fom::Handle cls, const Region* sent_in) const {
+    auto by_class = interaction_subscriptions.find(cls);
+    if (by_class == interaction_subscriptions.end()) return false;
+    if (!sent_in) return true;
+    for (RegionHandle r : by_class->second) {
+        auto subscribed = regions.find(r);
+        if (subscribed != regions.end() && subscribed->second.overlaps(*sent_in)) return true;
+    }
+    return false;
+}
+
+// ---- routing with it ----
+
+void Federation::check_region_space(const fom::ObjectClass& cls, fom::Handle attribute, RegionHandle r,
+                                    const Region& region) const {
+    const auto* space = fom_.find_space(cls.attribute(attribute)->space);
+    if (!space || space->handle != region.space)
+        throw WireError("region " + std::to_string(r) + " is not in the routing space of attribute " +
+                        std::to_string(attribute));
+}
+
+const Region* Federation::update_region(FederateHandle owner, ObjectHandle object, fom::Handle attribute) const {
+    auto f = federates_.find(owner);
+    return f == federates_.end() ? nullptr : f->second.ddm.update_region(object, attribute);
 }
 
 bool Federation::region_wanted(const FederateState& g, fom::Handle known, FederateHandle owner, ObjectHandle object,
                                fom::Handle attribute) const {
-    auto by_class = g.ddm.object_subscriptions.find(known);
-    if (by_class == g.ddm.object_subscriptions.end()) return false;
-    const Region* updated_in = update_region(owner, object, attribute);
-    for (const auto& [r, attributes] : by_class->second) {
-        if (!attributes.count(attribute)) continue;
-        if (!updated_in) return true;  // the default region overlaps every region
-        auto region = g.ddm.regions.find(r);
-        if (region != g.ddm.regions.end() && overlap(region->second, *updated_in)) return true;
-    }
-    return false;
+    return g.ddm.subscribed(known, attribute, update_region(owner, object, attribute));
 }
 
 bool Federation::discovers(FederateHandle gh, const FederateState& g, ObjectHandle object,
@@ -98,16 +148,8 @@ bool Federation::discovers(FederateHandle gh, const FederateState& g, ObjectHand
 
 fom::Handle Federation::interaction_receiver(const FederateState& g, fom::Handle cls, const Region* region) const {
     // Received as the nearest class through which it is in scope.
-    for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent) {
-        if (g.subscribed_interactions.count(c)) return c;
-        auto by_class = g.ddm.interaction_subscriptions.find(c);
-        if (by_class == g.ddm.interaction_subscriptions.end()) continue;
-        if (!region) return c;
-        for (RegionHandle r : by_class->second) {
-            auto subscribed = g.ddm.regions.find(r);
-            if (subscribed != g.ddm.regions.end() && overlap(subscribed->second, *region)) return c;
-        }
-    }
+    for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent)
+        if (g.subscribed_interactions.count(c) || g.ddm.subscribed_interaction(c, region)) return c;
     return 0;
 }
 
@@ -224,11 +266,7 @@ std::pair<ObjectHandle, std::string> Federation::register_object_with_region(Fed
     check_attributes(cls, m.attributes);
     std::map<fom::Handle, RegionHandle> associations;
     for (std::size_t i = 0; i < m.attributes.size(); ++i) {
-        const Region& region = region_of(f, m.regions[i]);
-        const auto* space = fom_.find_space(cls.attribute(m.attributes[i])->space);
-        if (!space || space->handle != region.space)
-            throw WireError("region " + std::to_string(m.regions[i]) + " is not in the routing space of attribute " +
-                            std::to_string(m.attributes[i]));
+        check_region_space(cls, m.attributes[i], m.regions[i], f.ddm.at(m.regions[i]));
         associations[m.attributes[i]] = m.regions[i];
     }
     // register_object discovers the instance at once: the associations must be there under the handle it
@@ -244,55 +282,34 @@ std::pair<ObjectHandle, std::string> Federation::register_object_with_region(Fed
 }
 
 void Federation::on(FederateHandle from, const wire::CreateRegion& m) {
-    auto& f = federate(from);
-    if (m.region == 0 || f.ddm.regions.count(m.region))
-        throw WireError("region handle " + std::to_string(m.region) + " is 0 or already in use");
-    f.ddm.regions[m.region] = make_region(m.space, m.bounds);
-    f.ddm.last_region = std::max(f.ddm.last_region, m.region);
+    federate(from).ddm.create(m.region, Region::from_bounds(fom_, m.space, m.bounds));
 }
 
 // §9.3: from now on, routing uses the new extents; instances that come into scope are discovered.
 void Federation::on(FederateHandle from, const wire::ModifyRegion& m) {
     auto& f = federate(from);
-    const fom::Handle space = region_of(f, m.region).space;
-    f.ddm.regions[m.region] = make_region(space, m.bounds);
+    const fom::Handle space = f.ddm.at(m.region).space;
+    f.ddm.regions[m.region] = Region::from_bounds(fom_, space, m.bounds);
     discover_in_scope();
 }
 
 // §9.4: the client refuses a region in use (RegionInUse); here whatever still refers to it goes with it.
 void Federation::on(FederateHandle from, const wire::DeleteRegion& m) {
     auto& f = federate(from);
-    region_of(f, m.region);
-    f.ddm.regions.erase(m.region);
-    for (auto it = f.ddm.object_subscriptions.begin(); it != f.ddm.object_subscriptions.end();) {
-        it->second.erase(m.region);
-        it = it->second.empty() ? f.ddm.object_subscriptions.erase(it) : std::next(it);
-    }
-    for (auto it = f.ddm.interaction_subscriptions.begin(); it != f.ddm.interaction_subscriptions.end();) {
-        it->second.erase(m.region);
-        it = it->second.empty() ? f.ddm.interaction_subscriptions.erase(it) : std::next(it);
-    }
-    for (auto& [object, attributes] : f.ddm.update_regions) {
-        for (auto it = attributes.begin(); it != attributes.end();)
-            it = it->second == m.region ? attributes.erase(it) : std::next(it);
-    }
+    f.ddm.at(m.region);
+    f.ddm.erase(m.region);
     update_advisories();
 }
 
 // §9.6: an attribute has one update region per federate; associating replaces the previous one.
 void Federation::on(FederateHandle from, const wire::AssociateRegion& m) {
     auto& f = federate(from);
-    const Region& region = region_of(f, m.region);
+    const Region& region = f.ddm.at(m.region);
     auto obj = objects_.find(m.object);
     if (obj == objects_.end()) return;  // deleted meanwhile
     const auto& cls = object_class(obj->second.object_class);
     check_attributes(cls, m.attributes);
-    for (auto attr : m.attributes) {
-        const auto* space = fom_.find_space(cls.attribute(attr)->space);
-        if (!space || space->handle != region.space)
-            throw WireError("region " + std::to_string(m.region) + " is not in the routing space of attribute " +
-                            std::to_string(attr));
-    }
+    for (auto attr : m.attributes) check_region_space(cls, attr, m.region, region);
     auto& associations = f.ddm.update_regions[m.object];
     for (auto attr : m.attributes) associations[attr] = m.region;
     discover_in_scope();
@@ -301,7 +318,7 @@ void Federation::on(FederateHandle from, const wire::AssociateRegion& m) {
 // §9.7: the object's attributes associated with this region go back to the default region.
 void Federation::on(FederateHandle from, const wire::UnassociateRegion& m) {
     auto& f = federate(from);
-    region_of(f, m.region);
+    f.ddm.at(m.region);
     auto obj = f.ddm.update_regions.find(m.object);
     if (obj == f.ddm.update_regions.end()) return;
     for (auto it = obj->second.begin(); it != obj->second.end();)
@@ -313,15 +330,10 @@ void Federation::on(FederateHandle from, const wire::UnassociateRegion& m) {
 // §9.8: the attribute set replaces the previous one for this class and region; an empty one unsubscribes.
 void Federation::on(FederateHandle from, const wire::SubscribeObjectClassWithRegion& m) {
     auto& f = federate(from);
-    const Region& region = region_of(f, m.region);
+    const Region& region = f.ddm.at(m.region);
     const auto& cls = object_class(m.object_class);
     check_attributes(cls, m.attributes);
-    for (auto attr : m.attributes) {
-        const auto* space = fom_.find_space(cls.attribute(attr)->space);
-        if (!space || space->handle != region.space)
-            throw WireError("region " + std::to_string(m.region) + " is not in the routing space of attribute " +
-                            std::to_string(attr));
-    }
+    for (auto attr : m.attributes) check_region_space(cls, attr, m.region, region);
     if (m.attributes.empty()) {
         erase_nested(f.ddm.object_subscriptions, m.object_class, m.region);
     } else {
@@ -333,14 +345,14 @@ void Federation::on(FederateHandle from, const wire::SubscribeObjectClassWithReg
 
 void Federation::on(FederateHandle from, const wire::UnsubscribeObjectClassWithRegion& m) {
     auto& f = federate(from);
-    region_of(f, m.region);
+    f.ddm.at(m.region);
     object_class(m.object_class);
     if (erase_nested(f.ddm.object_subscriptions, m.object_class, m.region)) update_advisories();
 }
 
-const Federation::Region& Federation::interaction_region(const FederateState& f, RegionHandle r,
+const Region& Federation::interaction_region(const FederateState& f, RegionHandle r,
                                                          fom::Handle cls) const {
-    const Region& region = region_of(f, r);
+    const Region& region = f.ddm.at(r);
     const auto& ic = interaction_class(cls);
     const auto* space = fom_.find_space(ic.space);
     if (!space || space->handle != region.space)
@@ -358,7 +370,7 @@ void Federation::on(FederateHandle from, const wire::SubscribeInteractionClassWi
 
 void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClassWithRegion& m) {
     auto& f = federate(from);
-    region_of(f, m.region);
+    f.ddm.at(m.region);
     interaction_class(m.interaction_class);
     if (erase_nested(f.ddm.interaction_subscriptions, m.interaction_class, m.region)) update_advisories();
 }
@@ -371,7 +383,7 @@ void Federation::on(FederateHandle from, const wire::SendInteractionWithRegion& 
 
 // §9.13: the owners of attributes whose update region overlaps `region` are asked to provide them.
 void Federation::on(FederateHandle from, const wire::RequestClassUpdateWithRegion& m) {
-    request_class_update(from, m.object_class, m.attributes, &region_of(federate(from), m.region));
+    request_class_update(from, m.object_class, m.attributes, &federate(from).ddm.at(m.region));
 }
 
 }  // namespace hlacore

@@ -418,7 +418,7 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
         for (const auto& [region, space, bounds] : f.regions) {
             if (region == 0 || region > f.last_region || !spaces.emplace(region, space).second)
                 throw WireError("bad region handle " + std::to_string(region) + whose);
-            make_region(space, bounds);  // the space exists, the bounds fit its dimensions
+            Region::from_bounds(fom_, space, bounds);  // the space exists, the bounds fit its dimensions
         }
         auto space_of = [&](std::uint32_t region) {
             auto it = spaces.find(region);
@@ -568,7 +568,7 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         for (const auto& [ic, v] : r.interaction_transport) f.interaction_transport[ic] = static_cast<fom::Transport>(v);
         for (const auto& m : r.time_management.tso) last_serial[m.sender] = std::max(last_serial[m.sender], m.serial);
         time_.restore_state(r.handle, std::move(r.time_management));
-        for (const auto& [region, space, bounds] : r.regions) f.ddm.regions[region] = make_region(space, bounds);
+        for (const auto& [region, space, bounds] : r.regions) f.ddm.regions[region] = Region::from_bounds(fom_, space, bounds);
         for (const auto& [cls, region, attrs] : r.region_subscriptions)
             f.ddm.object_subscriptions[cls][region] = std::set<fom::Handle>(attrs.begin(), attrs.end());
         for (const auto& [ic, region] : r.region_interaction_subscriptions) f.ddm.interaction_subscriptions[ic].insert(region);

@@ -187,10 +187,10 @@ def settle(*ambassadors: rti.RTIAmbassador, seconds: float = 0.2) -> None:
 
 
 class Federate:
-    """One joined federate: its RTI ambassador and a Recorder."""
+    """One joined federate: its RTI ambassador (connected with `tls`, as RTIAmbassador takes it) and a Recorder."""
 
-    def __init__(self, address: str, name: str, federation: str = "TestFed") -> None:
-        self.rtia = rti.RTIAmbassador(address)
+    def __init__(self, address: str, name: str, federation: str = "TestFed", tls: Any = None) -> None:
+        self.rtia = rti.RTIAmbassador(address, tls=tls)
         self.amb = Recorder()
         self.handle = self.rtia.joinFederationExecution(name, federation, self.amb)
 
@@ -212,10 +212,11 @@ def share_robot_location(publisher: Federate, subscriber: Federate) -> tuple[Any
 
 @contextlib.contextmanager
 def joined_federation(address: str, federation: str, fed_file: str,
-                      make: Callable[[str, str], Any]) -> Iterator[Callable[[str], Any]]:
-    """Creates `federation` from `fed_file`; yields join(name) -> make(address, name); at the end every
-    federate joined so resigns (best effort: it may be gone or mid-save) and the federation is destroyed."""
-    creator = rti.RTIAmbassador(address)
+                      make: Callable[[str, str], Any], tls: Any = None) -> Iterator[Callable[[str], Any]]:
+    """Creates `federation` from `fed_file` (connected with `tls`); yields join(name) -> make(address, name); at
+    the end every federate joined so resigns (best effort: it may be gone or mid-save) and the federation is
+    destroyed."""
+    creator = rti.RTIAmbassador(address, tls=tls)
     creator.createFederationExecution(federation, fed_file)
     joined: list[Any] = []
 

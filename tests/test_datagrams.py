@@ -165,20 +165,16 @@ def test_changed_transport_decides_too(tmp_path: pathlib.Path) -> None:
     """changeAttributeTransportationType / changeInteractionTransportationType move a reliable attribute or
     class to datagrams and back."""
     with running_rtig(tmp_path) as server, pair(server.address) as p:
-        best_effort = p.alice.getTransportationHandle("best_effort")
-        reliable = p.alice.getTransportationHandle("reliable")
-        p.alice.changeAttributeTransportationType(p.obj, [p.location], best_effort)
-        p.alice.changeInteractionTransportationType(p.command, best_effort)
-        p.alice.updateAttributeValues(p.obj, {p.location: b"fast"}, "")
-        p.alice.sendInteraction(p.command, {p.name: b"fast"}, "")
-        p.wait(lambda: len(p.bob_amb.reflections) == 1 and len(p.bob_amb.interactions) == 1)
-        assert p.alice.datagram_status()["sent"] == 2
-        p.alice.changeAttributeTransportationType(p.obj, [p.location], reliable)
-        p.alice.changeInteractionTransportationType(p.command, reliable)
-        p.alice.updateAttributeValues(p.obj, {p.location: b"sure"}, "")
-        p.alice.sendInteraction(p.command, {p.name: b"sure"}, "")
-        p.wait(lambda: len(p.bob_amb.reflections) == 2 and len(p.bob_amb.interactions) == 2)
-        assert p.alice.datagram_status()["sent"] == 2
+        # After each change one update and one interaction: the best-effort pair goes as 2 datagrams, the
+        # reliable pair adds none.
+        for step, (transport, value) in enumerate([("best_effort", b"fast"), ("reliable", b"sure")], start=1):
+            handle = p.alice.getTransportationHandle(transport)
+            p.alice.changeAttributeTransportationType(p.obj, [p.location], handle)
+            p.alice.changeInteractionTransportationType(p.command, handle)
+            p.alice.updateAttributeValues(p.obj, {p.location: value}, "")
+            p.alice.sendInteraction(p.command, {p.name: value}, "")
+            p.wait(lambda: len(p.bob_amb.reflections) == step and len(p.bob_amb.interactions) == step)
+            assert p.alice.datagram_status()["sent"] == 2, transport
         assert p.bob.datagram_status()["received"] == 2
 
 

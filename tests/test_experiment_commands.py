@@ -10,7 +10,7 @@ import socket
 import subprocess
 import sys
 
-from hlacore.processes import process_info
+from hlacore.processes import Child, process_info
 from test_ros_bridge import require_ros
 
 MAIN_JOB = "hlacore.experiments.robot_in_the_loop"
@@ -51,21 +51,13 @@ def test_mirror_with_a_dead_gateway_says_so_in_one_line(tmp_path: pathlib.Path) 
 
 
 def test_interrupted_main_job_keeps_its_partial_trace_and_plot(tmp_path: pathlib.Path) -> None:
-    out = tmp_path / "out"
-    proc = subprocess.Popen([sys.executable, "-m", MAIN_JOB, "--out", str(out), "--cycles", "400"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, stdin=subprocess.DEVNULL)
-    try:
-        assert proc.stdout is not None
-        for line in proc.stdout:  # interrupt once a few cycles have been checked
-            if line.startswith("cycle   3"):
-                break
-        proc.send_signal(signal.SIGINT)
-        _, stderr = proc.communicate(timeout=60)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-    assert proc.returncode == 130
+    out, stderr_file = tmp_path / "out", tmp_path / "stderr"
+    with Child([sys.executable, "-m", MAIN_JOB, "--out", str(out), "--cycles", "400"], stderr_path=stderr_file) as job:
+        while not job.read_line(120).startswith("cycle   3"):  # interrupt once a few cycles have been checked
+            pass
+        job.send_signal(signal.SIGINT)
+        assert job.wait(60) == 130
+    stderr = stderr_file.read_text()
     assert stderr.strip().splitlines()[-1] == f"python -m {MAIN_JOB}: interrupted; what it wrote so far is in {out}"
     assert "Traceback" not in stderr
     rows = (out / "trace.csv").read_text().splitlines()

@@ -18,7 +18,7 @@ import pytest
 
 from hlacore.experiments.robot_in_the_loop.experiment import ExperimentOptions, run_experiment
 from hlacore.link import Direction, Link, main
-from hlacore.processes import SyncAmbassador, python_peer
+from hlacore.processes import Child, SyncAmbassador, python_peer
 
 import hlacore.rti as rti
 
@@ -149,24 +149,17 @@ def test_the_command_line_refuses_bad_figures(capsys: pytest.CaptureFixture[str]
 def test_the_command_line_relays_until_interrupted(echo: EchoServer) -> None:
     """`python -m hlacore.link LISTEN TARGET --delay 5` prints where it listens, relays, and on Ctrl-C
     prints its counters and exits 0."""
-    proc = subprocess.Popen([sys.executable, "-m", "hlacore.link", "127.0.0.1:0", f"127.0.0.1:{echo.port}",
-                             "--delay", "5", "--down", "delay=1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            text=True)
-    try:
-        assert proc.stdout is not None
-        line = proc.stdout.readline()
+    with Child([sys.executable, "-m", "hlacore.link", "127.0.0.1:0", f"127.0.0.1:{echo.port}",
+                "--delay", "5", "--down", "delay=1"]) as link:
+        line = link.read_line(30)
         assert line.startswith("link listening on 127.0.0.1:"), line
         port = int(line.split()[3].rsplit(":", 1)[1])
         with socket.create_connection(("127.0.0.1", port)) as s:
             s.sendall(b"ping")
             assert recv_exactly(s, 4) == b"ping"
-        proc.send_signal(signal.SIGINT)
-        _, err = proc.communicate(timeout=10)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-    assert proc.returncode == 0, err
+        link.send_signal(signal.SIGINT)
+        assert link.wait(10) == 0, link.stderr()
+        err = link.stderr()
     assert "up: 4 bytes" in err and "down: 4 bytes" in err
 
 

@@ -619,48 +619,48 @@ def test_public_methods_have_docstrings():
 # the MIM's standard names
 # --------------------------------------------------------------------------
 
-def test_mim_octet_types():
-    """HLAbyte and HLAASCIIchar are one octet; HLAASCIIchar also packs an
-    ASCII character."""
-    assert omt.HLAbyte.pack(b"\x80") == b"\x80"
-    assert omt.HLAbyte.unpack(b"\x07") == (b"\x07", 1)
-    assert omt.HLAASCIIchar.pack("A") == omt.HLAASCIIchar.pack(65) == b"A"
-    assert omt.HLAASCIIchar.unpack(b"Az") == (b"A", 1)
-    assert omt.HLAbyte.octetBoundary == omt.HLAASCIIchar.octetBoundary == 1
-    with pytest.raises(ValueError, match="HLAASCIIchar: expected one ASCII"):
-        omt.HLAASCIIchar.pack("\u00e9")
-    with pytest.raises(ValueError, match="HLAASCIIchar: expected one ASCII"):
-        omt.HLAASCIIchar.pack("AB")
-    with pytest.raises(TypeError, match="HLAbyte"):
-        omt.HLAbyte.pack("A")
+# Each type: [(value, what it packs to)], [(buffer, what it unpacks to)],
+# its octet boundary, and the calls it refuses:
+# [(method, argument, exception, message)].
+MIM_TYPES = [
+    # HLAbyte and HLAASCIIchar are one octet; HLAASCIIchar also packs an
+    # ASCII character.
+    (omt.HLAbyte, [(b"\x80", b"\x80")], [(b"\x07", (b"\x07", 1))], 1,
+     [("pack", "A", TypeError, "HLAbyte")]),
+    (omt.HLAASCIIchar, [("A", b"A"), (65, b"A")], [(b"Az", (b"A", 1))], 1,
+     [("pack", "\u00e9", ValueError, "HLAASCIIchar: expected one ASCII"),
+      ("pack", "AB", ValueError, "HLAASCIIchar: expected one ASCII")]),
+    # HLAoctetPairBE/LE are 16-bit unsigned; HLAunicodeChar a UTF-16BE code
+    # unit unpacked to a one-character str.
+    (omt.HLAoctetPairBE, [(0x1234, b"\x12\x34")], [], 2, []),
+    (omt.HLAoctetPairLE, [(0x1234, b"\x34\x12")], [(b"\xff\xff", (0xFFFF, 2))],
+     2, []),
+    (omt.HLAunicodeChar, [("\u00e9", b"\x00\xe9"), (0x65E5, b"\x65\xe5")],
+     [(b"\x65\xe5", ("\u65e5", 2))], 2,
+     [("pack", "\U0001f680", ValueError, "HLAunicodeChar.*Basic Multilingual"),
+      ("unpack", b"\x00", ValueError, "HLAunicodeChar: need 2 bytes")]),
+    # HLAopaqueData is an HLAinteger32BE count and the bytes.
+    (omt.HLAopaqueData, [(b"\x00\xff", b"\x00\x00\x00\x02\x00\xff"),
+                         (bytearray(), b"\x00\x00\x00\x00")],
+     [(b"\x00\x00\x00\x01zq", (b"z", 5))], 4,
+     [("pack", "text", TypeError, "HLAopaqueData: expected bytes"),
+      ("unpack", b"\x00\x00\x00\x03ab", ValueError, "HLAopaqueData: need 3 bytes")]),
+]
 
 
-def test_mim_sixteen_bit_types():
-    """HLAoctetPairBE/LE are 16-bit unsigned; HLAunicodeChar a UTF-16BE
-    code unit unpacked to a one-character str."""
-    assert omt.HLAoctetPairBE.pack(0x1234) == b"\x12\x34"
-    assert omt.HLAoctetPairLE.pack(0x1234) == b"\x34\x12"
-    assert omt.HLAoctetPairLE.unpack(b"\xff\xff") == (0xFFFF, 2)
-    assert omt.HLAunicodeChar.pack("\u00e9") == b"\x00\xe9"
-    assert omt.HLAunicodeChar.pack(0x65E5) == b"\x65\xe5"
-    assert omt.HLAunicodeChar.unpack(b"\x65\xe5") == ("\u65e5", 2)
-    assert omt.HLAunicodeChar.octetBoundary == 2
-    with pytest.raises(ValueError, match="HLAunicodeChar.*Basic Multilingual"):
-        omt.HLAunicodeChar.pack("\U0001f680")
-    with pytest.raises(ValueError, match="HLAunicodeChar: need 2 bytes"):
-        omt.HLAunicodeChar.unpack(b"\x00")
-
-
-def test_mim_opaque_data():
-    """HLAopaqueData is an HLAinteger32BE count and the bytes."""
-    assert omt.HLAopaqueData.pack(b"\x00\xff") == b"\x00\x00\x00\x02\x00\xff"
-    assert omt.HLAopaqueData.unpack(b"\x00\x00\x00\x01zq") == (b"z", 5)
-    assert omt.HLAopaqueData.pack(bytearray()) == b"\x00\x00\x00\x00"
-    assert omt.HLAopaqueData.octetBoundary == 4
-    with pytest.raises(TypeError, match="HLAopaqueData: expected bytes"):
-        omt.HLAopaqueData.pack("text")
-    with pytest.raises(ValueError, match="HLAopaqueData: need 3 bytes"):
-        omt.HLAopaqueData.unpack(b"\x00\x00\x00\x03ab")
+@pytest.mark.parametrize("datatype, packs, unpacks, boundary, refused", MIM_TYPES,
+                         ids=[row[0].name for row in MIM_TYPES])
+def test_mim_types(datatype, packs, unpacks, boundary, refused):
+    """The MIM's standard simple types and HLAopaqueData: layout, octet
+    boundary, errors naming the type."""
+    for value, encoded in packs:
+        assert datatype.pack(value) == encoded
+    for buffer, decoded in unpacks:
+        assert datatype.unpack(buffer) == decoded
+    assert datatype.octetBoundary == boundary
+    for method, argument, error, message in refused:
+        with pytest.raises(error, match=message):
+            getattr(datatype, method)(argument)
 
 
 def test_enumerated_with_octet_representation():

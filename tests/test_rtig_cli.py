@@ -104,35 +104,28 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
     assert "rtig listening" not in result.stdout
 
 
+# The values each option refuses, with how rtig names the option then ("invalid port 'abc'").
+REFUSED_VALUES = [
+    ("--port", "port", ["abc", "70000", "-1", "", "80x"]),
+    ("--frame-timeout", "--frame-timeout", ["0", "-1", "soon"]),
+    ("--client-budget", "--client-budget", ["1000", "lots"]),
+    ("--stall-timeout", "--stall-timeout", ["-1"]),
+    ("--max-frame", "--max-frame", ["1000", "2000000000"]),
+    ("--max-datagram", "--max-datagram", ["100", "70000", "1400.5"]),
+]
+NEEDING_A_VALUE = ["--port", "--host", "--fom-path", "--frame-timeout", "--save-dir", "--tls-cert"]
+
+
 @pytest.mark.parametrize(
     "args, message",
     [
         (["--bogus"], "unknown argument '--bogus'"),
-        (["--port", "abc"], "invalid port 'abc'"),
-        (["--port", "70000"], "invalid port '70000'"),
-        (["--port", "-1"], "invalid port '-1'"),
-        (["--port", ""], "invalid port ''"),
-        (["--port", "80x"], "invalid port '80x'"),
-        (["--port"], "--port needs a value"),
-        (["--host"], "--host needs a value"),
-        (["--fom-path"], "--fom-path needs a value"),
-        (["--frame-timeout"], "--frame-timeout needs a value"),
-        (["--frame-timeout", "0"], "invalid --frame-timeout '0'"),
-        (["--frame-timeout", "-1"], "invalid --frame-timeout '-1'"),
-        (["--frame-timeout", "soon"], "invalid --frame-timeout 'soon'"),
-        (["--client-budget", "1000"], "invalid --client-budget '1000'"),
-        (["--client-budget", "lots"], "invalid --client-budget 'lots'"),
-        (["--stall-timeout", "-1"], "invalid --stall-timeout '-1'"),
-        (["--max-frame", "1000"], "invalid --max-frame '1000'"),
-        (["--max-frame", "2000000000"], "invalid --max-frame '2000000000'"),
-        (["--max-datagram", "100"], "invalid --max-datagram '100'"),
-        (["--max-datagram", "70000"], "invalid --max-datagram '70000'"),
-        (["--max-datagram", "1400.5"], "invalid --max-datagram '1400.5'"),
         (["--port", "0", "extra"], "unknown argument 'extra'"),
-        (["--save-dir"], "--save-dir needs a value"),
         (["--save-dir", ""], "--save-dir needs a directory"),
-        (["--tls-cert"], "--tls-cert needs a value"),
         (["--tls-key", "key.pem"], "--tls-cert and --tls-key go together"),
+        *[([option], f"{option} needs a value") for option in NEEDING_A_VALUE],
+        *[([option, value], f"invalid {named} '{value}'") for option, named, values in REFUSED_VALUES
+          for value in values],
     ],
 )
 def test_bad_arguments_exit_2_with_a_message(args: list[str], message: str) -> None:

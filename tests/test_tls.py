@@ -22,7 +22,8 @@ import hlacore.rti as rti
 from hlacore.link import Link
 from hlacore.status import status
 
-from conftest import ROBOT_FED, Recorder, RtigProcess, rtig_executable, running_rtig, tick_until, wait_for_log
+from conftest import (ROBOT_FED, Federate, RtigProcess, joined_federation, rtig_executable, running_rtig,
+                      share_robot_location, tick_until, wait_for_log)
 from test_robustness import closed_and_dropped, raw_client
 
 FEDERATION = "SecretLabFederation"
@@ -66,37 +67,28 @@ def no_tls_from_the_environment(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 def run_federation(address: str, tls: Any, value: bytes = VALUE) -> dict[str, Any]:
-    """Two federates: create, join, publish/subscribe, an update reflected, a best-effort interaction received,
-    a TSO advance; returns what the subscriber saw and the datagram status."""
-    alice = rti.RTIAmbassador(address, tls=tls)
-    bob = rti.RTIAmbassador(address, tls=tls)
-    alice.createFederationExecution(FEDERATION, ROBOT_FED)
-    seen = Recorder()
-    alice.joinFederationExecution("alice", FEDERATION, rti.FederateAmbassador())
-    bob.joinFederationExecution("bob", FEDERATION, seen)
-    robot = alice.getObjectClassHandle("robot")
-    location = alice.getAttributeHandle("location", robot)
-    reply = alice.getInteractionClassHandle("reply")
-    reply_value = alice.getParameterHandle("value", reply)
-    alice.publishObjectClass(robot, [location])
-    alice.publishInteractionClass(reply)
-    bob.subscribeObjectClassAttributes(robot, [location])
-    bob.subscribeInteractionClass(reply)
-    obj = alice.registerObjectInstance(robot)
-    alice.updateAttributeValues(obj, {location: value}, "tag")
-    tick_until(lambda: bool(seen.named("reflectAttributeValues")), bob, timeout=30)
-    for i in range(5):  # best effort (the FED's reply class), no timestamp
-        alice.sendInteraction(reply, {reply_value: b"best-effort %d" % i}, "")
-    tick_until(lambda: len(seen.named("receiveInteraction")) == 5, bob)
-    t = alice.enable_time_management(1.0, timeout=5.0)
-    granted = alice.advance_to(t + 2.0, timeout=5.0)
-    result = {"reflected": seen.named("reflectAttributeValues")[0][1], "granted": granted, "start": t,
-              "interactions": [args[1] for args in seen.named("receiveInteraction")],
-              "alice_datagrams": alice.datagram_status(), "bob_datagrams": bob.datagram_status()}
-    for amb in (alice, bob):
-        amb.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-    alice.destroyFederationExecution(FEDERATION)
-    return result
+    """Two federates: join, publish/subscribe, an update reflected, a best-effort interaction received, a TSO
+    advance; returns what the subscriber saw and the datagram status. Every connection with `tls`."""
+    with joined_federation(address, FEDERATION, ROBOT_FED,
+                           lambda address, name: Federate(address, name, FEDERATION, tls=tls), tls=tls) as join:
+        alice, bob = join("alice"), join("bob")
+        robot, location = share_robot_location(alice, bob)
+        reply = alice.rtia.getInteractionClassHandle("reply")
+        reply_value = alice.rtia.getParameterHandle("value", reply)
+        alice.rtia.publishInteractionClass(reply)
+        bob.rtia.subscribeInteractionClass(reply)
+        obj = alice.rtia.registerObjectInstance(robot)
+        alice.rtia.updateAttributeValues(obj, {location: value}, "tag")
+        seen = bob.amb
+        tick_until(lambda: bool(seen.named("reflectAttributeValues")), bob.rtia, timeout=30)
+        for i in range(5):  # best effort (the FED's reply class), no timestamp
+            alice.rtia.sendInteraction(reply, {reply_value: b"best-effort %d" % i}, "")
+        tick_until(lambda: len(seen.named("receiveInteraction")) == 5, bob.rtia)
+        t = alice.rtia.enable_time_management(1.0, timeout=5.0)
+        granted = alice.rtia.advance_to(t + 2.0, timeout=5.0)
+        return {"reflected": seen.named("reflectAttributeValues")[0][1], "granted": granted, "start": t,
+                "interactions": [args[1] for args in seen.named("receiveInteraction")],
+                "alice_datagrams": alice.rtia.datagram_status(), "bob_datagrams": bob.rtia.datagram_status()}
 
 
 def check_federation(result: dict[str, Any], value: bytes = VALUE) -> None:
@@ -193,32 +185,34 @@ def test_a_certificate_for_another_host_is_refused(tls_rtig: RtigProcess, certs:
     assert "the client refused it (sslv3 alert bad certificate)" in line, line
 
 
+def refused_at_once(server: RtigProcess, who: str, error: type[Exception], message: str, tls: Any = None) -> str:
+    """A client whose TLS does not match the gateway's is refused with `error` (matching `message`) well within its
+    3 s timeout, and the gateway drops its connection; returns the gateway's log line of that drop (the only one)."""
+    start = time.monotonic()
+    with pytest.raises(error, match=message) as caught:
+        rti.RTIAmbassador(server.address, tls=tls, timeout=3)
+    elapsed = time.monotonic() - start
+    print(f"\n{who}, after {elapsed:.2f} s: {caught.value}")
+    assert elapsed < 3
+    line = wait_for_log(server, r"rtig: dropped \S+: [^\n]*")
+    assert server.log().count("rtig: dropped") == 1
+    return line
+
+
 def test_a_client_without_tls_at_a_gateway_with_it(tls_rtig: RtigProcess, certs: Certificates) -> None:
     served = rti.RTIAmbassador(tls_rtig.address, tls=certs.cert)
     served.createFederationExecution(FEDERATION, ROBOT_FED)
-    start = time.monotonic()
-    with pytest.raises(rti.RTIinternalError, match=r"give RTIAmbassador\(tls=\.\.\.\) or \$HLACORE_TLS") as caught:
-        rti.RTIAmbassador(tls_rtig.address, timeout=3)
-    elapsed = time.monotonic() - start
-    print(f"\nplain client at a TLS gateway, after {elapsed:.2f} s: {caught.value}")
-    assert elapsed < 3
-    line = wait_for_log(tls_rtig, r"rtig: dropped \S+: TLS handshake failed[^\n]*")
-    assert "a client without TLS?" in line
-    assert tls_rtig.log().count("rtig: dropped") == 1
+    line = refused_at_once(tls_rtig, "plain client at a TLS gateway", rti.RTIinternalError,
+                           r"give RTIAmbassador\(tls=\.\.\.\) or \$HLACORE_TLS")
+    assert "TLS handshake failed" in line and "a client without TLS?" in line, line
     served.destroyFederationExecution(FEDERATION)  # the others are served on
 
 
 def test_a_client_with_tls_at_a_gateway_without_it(rtig: RtigProcess, certs: Certificates) -> None:
     served = rti.RTIAmbassador(rtig.address)
-    start = time.monotonic()
-    with pytest.raises(rti.AuthenticationFailed, match=r"the gateway at \S+ does not speak TLS") as caught:
-        rti.RTIAmbassador(rtig.address, tls=certs.cert, timeout=3)
-    elapsed = time.monotonic() - start
-    print(f"\nTLS client at a plain gateway, after {elapsed:.2f} s: {caught.value}")
-    assert elapsed < 3
-    line = wait_for_log(rtig, r"rtig: dropped \S+: [^\n]*")
-    assert "began a TLS handshake and this gateway has no TLS" in line
-    assert rtig.log().count("rtig: dropped") == 1
+    line = refused_at_once(rtig, "TLS client at a plain gateway", rti.AuthenticationFailed,
+                           r"the gateway at \S+ does not speak TLS", tls=certs.cert)
+    assert "began a TLS handshake and this gateway has no TLS" in line, line
     served.createFederationExecution(FEDERATION, ROBOT_FED)
     served.destroyFederationExecution(FEDERATION)
 

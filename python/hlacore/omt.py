@@ -165,30 +165,43 @@ def _padding(position: int, boundary: int) -> int:
     return -position % boundary
 
 
-def _pack_padded(parts: list[bytes], position: int, datatype: HLAdataType,
-                 value: Any) -> int:
+def _member(owner: str, member: str | int) -> str:
+    """How an error names a composite's member: ``Record.field`` or
+    ``Array[3]``."""
+    if isinstance(member, int):
+        return f"{owner}[{member}]"
+    return f"{owner}.{member}"
+
+
+def _pack_padded(owner: str, member: str | int, parts: list[bytes],
+                 position: int, datatype: HLAdataType, value: Any) -> int:
     """Append the pad bytes that bring ``position`` (in the composite) to
     ``datatype``'s octet boundary, then ``value`` packed, to ``parts``;
-    return the position after it."""
-    pad = _padding(position, datatype.octetBoundary)
-    data = datatype.pack(value)
+    return the position after it; errors name the member (see
+    :func:`_member`, called only then: formatting costs)."""
+    try:
+        pad = _padding(position, datatype.octetBoundary)
+        data = datatype.pack(value)
+    except _ERRORS as exc:
+        _rethrow(_member(owner, member), exc)
     if pad:
         parts.append(b"\x00" * pad)
     parts.append(data)
     return position + pad + len(data)
 
 
-def _unpack_padded(context: str, datatype: HLAdataType, buffer: Buffer,
-                   offset: int, position: int) -> tuple[Any, int]:
+def _unpack_padded(owner: str, member: str | int, datatype: HLAdataType,
+                   buffer: Buffer, offset: int, position: int
+                   ) -> tuple[Any, int]:
     """Decode a ``datatype`` value at ``position`` in the composite that
     starts at ``offset``, after the pad bytes to its octet boundary; return
-    ``(value, position after it)``; errors name ``context``
-    (``Record.field``)."""
+    ``(value, position after it)``; errors name the member as
+    :func:`_pack_padded`'s do."""
     try:
         position += _padding(position, datatype.octetBoundary)
         value, used = datatype.unpack(buffer, offset + position)
     except _ERRORS as exc:
-        _rethrow(context, exc)
+        _rethrow(_member(owner, member), exc)
     return value, position + used
 
 
@@ -830,11 +843,8 @@ class _ArrayBase(_Composite):
         parts: list[bytes] = []
         position = start
         for index, value in enumerate(values):
-            try:
-                position = _pack_padded(parts, position, self.elementType,
-                                        value)
-            except _ERRORS as exc:
-                _rethrow(f"{self.name}[{index}]", exc)
+            position = _pack_padded(self.name, index, parts, position,
+                                    self.elementType, value)
         return parts
 
     def _pack_fast(self, values: Sequence[Any]) -> bytes | None:
@@ -1024,11 +1034,8 @@ class HLAfixedRecord(_Composite):
             except KeyError:
                 raise KeyError(
                     f"{self.name}: missing field {field_name!r}") from None
-            try:
-                position = _pack_padded(parts, position, field_type,
-                                        field_value)
-            except _ERRORS as exc:
-                _rethrow(f"{self.name}.{field_name}", exc)
+            position = _pack_padded(self.name, field_name, parts, position,
+                                    field_type, field_value)
         return b"".join(parts)
 
     def unpack(self, buffer: Buffer, offset: int = 0
@@ -1039,8 +1046,7 @@ class HLAfixedRecord(_Composite):
         position = 0
         for field_name, field_type in self.fields:
             result[field_name], position = _unpack_padded(
-                f"{self.name}.{field_name}", field_type, buffer, offset,
-                position)
+                self.name, field_name, field_type, buffer, offset, position)
         return result, position
 
 
@@ -1370,11 +1376,8 @@ class HLAvariantRecord(_Composite):
                 f"{self.discriminantName!r}") from None
         alternative_name, alternative_type, shown = self._choose(discriminant)
         parts: list[bytes] = []
-        try:
-            position = _pack_padded(parts, 0, self.discriminantType,
-                                    discriminant)
-        except _ERRORS as exc:
-            _rethrow(f"{self.name}.{self.discriminantName}", exc)
+        position = _pack_padded(self.name, self.discriminantName, parts, 0,
+                                self.discriminantType, discriminant)
         if alternative_type is not None:
             assert alternative_name is not None
             try:
@@ -1384,11 +1387,8 @@ class HLAvariantRecord(_Composite):
                     f"{self.name}: missing field {alternative_name!r} (the "
                     f"alternative for {self.discriminantName} = "
                     f"{shown})") from None
-            try:
-                _pack_padded(parts, position, alternative_type,
-                             alternative_value)
-            except _ERRORS as exc:
-                _rethrow(f"{self.name}.{alternative_name}", exc)
+            _pack_padded(self.name, alternative_name, parts, position,
+                         alternative_type, alternative_value)
         return b"".join(parts)
 
     def unpack(self, buffer: Buffer, offset: int = 0
@@ -1408,8 +1408,8 @@ class HLAvariantRecord(_Composite):
         if alternative_type is not None:
             assert alternative_name is not None
             result[alternative_name], position = _unpack_padded(
-                f"{self.name}.{alternative_name}", alternative_type, buffer,
-                offset, position)
+                self.name, alternative_name, alternative_type, buffer, offset,
+                position)
         return result, position
 
 

@@ -161,34 +161,36 @@ void Client::start_tls(SSL_CTX* context, const std::string& host, Clock::time_po
     }
 }
 
-long Client::tls_write(const char* data, std::size_t length, std::string& error) {
-    std::lock_guard<std::mutex> lock(ssl_mu_);
+namespace {
+
+// One SSL_read or SSL_write (`io`) under the session's lock: bytes moved, 0 when the socket would block,
+// -1 with `error`.
+template <class Io>
+long tls_io(std::mutex& mu, SSL* ssl, Io io, std::string& error) {
+    std::lock_guard<std::mutex> lock(mu);
     ERR_clear_error();
     errno = 0;
-    const int n = SSL_write(ssl_.get(), data, static_cast<int>(std::min<std::size_t>(length, INT_MAX)));
+    const int n = io(ssl);
     if (n > 0) return n;
-    switch (SSL_get_error(ssl_.get(), n)) {
-        case SSL_ERROR_WANT_WRITE:
-        case SSL_ERROR_WANT_READ: return 0;  // not after the handshake: no renegotiation
+    switch (SSL_get_error(ssl, n)) {
+        case SSL_ERROR_WANT_READ:
+        case SSL_ERROR_WANT_WRITE: return 0;  // not after the handshake: no renegotiation
         case SSL_ERROR_ZERO_RETURN: error = "the gateway closed the connection"; return -1;
         case SSL_ERROR_SYSCALL: error = errno ? std::strerror(errno) : "the gateway closed the connection"; return -1;
         default: error = "TLS error: " + tls::errors("protocol error"); return -1;
     }
 }
 
+int clamped(std::size_t length) { return static_cast<int>(std::min<std::size_t>(length, INT_MAX)); }
+
+}  // namespace
+
+long Client::tls_write(const char* data, std::size_t length, std::string& error) {
+    return tls_io(ssl_mu_, ssl_.get(), [&](SSL* ssl) { return SSL_write(ssl, data, clamped(length)); }, error);
+}
+
 long Client::tls_read(char* data, std::size_t length, std::string& error) {
-    std::lock_guard<std::mutex> lock(ssl_mu_);
-    ERR_clear_error();
-    errno = 0;
-    const int n = SSL_read(ssl_.get(), data, static_cast<int>(std::min<std::size_t>(length, INT_MAX)));
-    if (n > 0) return n;
-    switch (SSL_get_error(ssl_.get(), n)) {
-        case SSL_ERROR_WANT_READ:
-        case SSL_ERROR_WANT_WRITE: return 0;
-        case SSL_ERROR_ZERO_RETURN: error = "the gateway closed the connection"; return -1;
-        case SSL_ERROR_SYSCALL: error = errno ? std::strerror(errno) : "the gateway closed the connection"; return -1;
-        default: error = "TLS error: " + tls::errors("protocol error"); return -1;
-    }
+    return tls_io(ssl_mu_, ssl_.get(), [&](SSL* ssl) { return SSL_read(ssl, data, clamped(length)); }, error);
 }
 
 bool Client::tls_pending() {

@@ -13,6 +13,14 @@ namespace {
 
 std::string region_text(std::uint32_t region) { return "region " + std::to_string(region); }
 
+// unsubscribe...WithRegion: the class's subscription through the region goes, refused with `code` when it had none.
+template <class Subscriptions, class Class>
+void unsubscribe_through(Subscriptions& subscriptions, const Class& cls, const char* kind, std::uint32_t region,
+                         ErrorCode code) {
+    if (!erase_nested(subscriptions, cls.handle, region))
+        raise(code, std::string(kind) + " '" + cls.qualified_name + "' is not subscribed with " + region_text(region));
+}
+
 // Region numbers are unique in the process, not only per federate: a RegionHandle of another ambassador
 // then raises RegionNotKnown instead of naming this federate's region of the same number.
 std::atomic<std::uint32_t> last_region_number{0};
@@ -256,9 +264,7 @@ void Client::check(const wire::UnsubscribeObjectClassWithRegion& m) {
     refuse_region_change_while_restoring("unsubscribeObjectClassWithRegion");
     const auto& c = defined_object_class(m.object_class);
     known_region(m.region);
-    if (!erase_nested(ddm_.object_subscriptions, m.object_class, m.region))
-        raise(ErrorCode::ObjectClassNotSubscribed,
-              "object class '" + c.qualified_name + "' is not subscribed with " + region_text(m.region));
+    unsubscribe_through(ddm_.object_subscriptions, c, "object class", m.region, ErrorCode::ObjectClassNotSubscribed);
 }
 
 void Client::check_interaction_region(const fom::InteractionClass& c, std::uint32_t region) const {
@@ -280,9 +286,8 @@ void Client::check(const wire::UnsubscribeInteractionClassWithRegion& m) {
     refuse_region_change_while_restoring("unsubscribeInteractionClassWithRegion");
     const auto& c = defined_interaction_class(m.interaction_class);
     known_region(m.region);
-    if (!erase_nested(ddm_.interaction_subscriptions, m.interaction_class, m.region))
-        raise(ErrorCode::InteractionClassNotSubscribed,
-              "interaction class '" + c.qualified_name + "' is not subscribed with " + region_text(m.region));
+    unsubscribe_through(ddm_.interaction_subscriptions, c, "interaction class", m.region,
+                        ErrorCode::InteractionClassNotSubscribed);
 }
 
 // ---- sending and requesting through regions (HLA 1.3 §9.12-9.13) ----

@@ -344,10 +344,9 @@ void Federation::on(FederateHandle from, const wire::SubscribeObjectClassWithReg
 }
 
 void Federation::on(FederateHandle from, const wire::UnsubscribeObjectClassWithRegion& m) {
-    auto& f = federate(from);
-    f.ddm.at(m.region);
     object_class(m.object_class);
-    if (erase_nested(f.ddm.object_subscriptions, m.object_class, m.region)) update_advisories();
+    auto& ddm = federate(from).ddm;
+    if (ddm.unsubscribe(ddm.object_subscriptions, m.object_class, m.region)) update_advisories();
 }
 
 const Region& Federation::interaction_region(const FederateState& f, RegionHandle r,
@@ -369,10 +368,9 @@ void Federation::on(FederateHandle from, const wire::SubscribeInteractionClassWi
 }
 
 void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClassWithRegion& m) {
-    auto& f = federate(from);
-    f.ddm.at(m.region);
     interaction_class(m.interaction_class);
-    if (erase_nested(f.ddm.interaction_subscriptions, m.interaction_class, m.region)) update_advisories();
+    auto& ddm = federate(from).ddm;
+    if (ddm.unsubscribe(ddm.interaction_subscriptions, m.interaction_class, m.region)) update_advisories();
 }
 
 // §9.12: reaches the plain subscribers and those whose subscription region overlaps `region`.

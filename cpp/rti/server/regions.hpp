@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fed_parser/fom.hpp"
+#include "rti/erase_nested.hpp"
 #include "rti/server/outbox.hpp"
 
 namespace hlacore {
@@ -52,6 +53,13 @@ struct FederateRegions {
     void create(RegionHandle r, Region region);  // wire::WireError for 0 or a handle in use
     // The region and whatever refers to it: subscriptions through it, update associations.
     void erase(RegionHandle r);
+    // The subscription of class `cls` through region `r` (in object_ or interaction_subscriptions) goes;
+    // false when there was none, wire::WireError for an unknown region.
+    template <class Subscriptions>
+    bool unsubscribe(Subscriptions& subscriptions, fom::Handle cls, RegionHandle r) {
+        at(r);
+        return erase_nested(subscriptions, cls, r);
+    }
     // The region the object's attribute is updated in, null for the default region.
     const Region* update_region(ObjectHandle object, fom::Handle attribute) const;
     // Is the attribute subscribed at class `known` through a region overlapping `updated_in` (null: the

@@ -103,7 +103,7 @@ void Federation::on(FederateHandle from, const wire::SyncPointAchieved& m) {
 
 template <class M>
 void Federation::handle(FederateHandle from, const M& message) {
-    if (!std::is_same_v<M, wire::FederateRestoreComplete> && restoring(from)) return;
+    if (!std::is_same_v<M, wire::FederateRestoreComplete> && save_restore_.restoring(from)) return;
     on(from, message);
     refresh_scope();
 }

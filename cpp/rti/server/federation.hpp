@@ -15,6 +15,7 @@
 #include "rti/exceptions.hpp"
 #include "rti/server/outbox.hpp"
 #include "rti/server/regions.hpp"
+#include "rti/server/save_restore.hpp"
 #include "rti/server/sync_points.hpp"
 #include "rti/server/time_manager.hpp"
 #include "rti/wire/codec.hpp"
@@ -61,7 +62,7 @@ public:
 
     // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/server/save_restore.cpp, docs/save-restore.md) ----
     // Where saves are written as files ("" keeps them in memory only).
-    void set_save_dir(std::string dir) { save_dir_ = std::move(dir); }
+    void set_save_dir(std::string dir) { save_restore_.dir = std::move(dir); }
     // requestFederationSave: throws SaveInProgress, RestoreInProgress, FederationTimeAlreadyPassed,
     // InvalidFederationTime.
     void request_save(FederateHandle federate, const std::string& label, const wire::OptionalTime& time);
@@ -226,26 +227,8 @@ private:
 
     // ---- save/restore (cpp/rti/server/save_restore.cpp) ----
     struct Snapshot;  // a decoded save
-    // A save or a restore in progress.
-    struct Run {
-        bool active = false;
-        std::string label;
-        // federateSaveComplete / federateRestoreComplete (true), or the NotComplete one (false).
-        std::map<FederateHandle, bool> answered;
-        bool failed = false;  // a federate left meanwhile
-        std::map<FederateHandle, std::vector<std::string>> held;  // frames held from the federates in it
-        void departed(FederateHandle federate) {
-            answered.erase(federate);
-            held.erase(federate);
-            failed = true;
-        }
-    };
-    struct SaveRun : Run {
-        wire::OptionalTime time;        // a timed save
-        std::set<FederateHandle> told;  // sent initiateFederateSave
-    };
     // Once every joined federate answered: whether they all succeeded and none left. Empty until then.
-    std::optional<bool> outcome(const Run& run) const;
+    std::optional<bool> outcome(const SaveRestore::Run& run) const;
     // Ends `run`: each federate is sent `done` (federationSaved, federationRestored), then what was held for it.
     template <class R, class M>
     void end_run(R& run, const M& done);
@@ -257,15 +240,12 @@ private:
     void finish_restore_if_answered();
     std::string encode_snapshot() const;
     Snapshot decode_snapshot(const std::string& bytes) const;  // throws wire::WireError
-    std::string save_file(const std::string& label) const;
     // Hooks into the rest of the federation: grants and deliveries wait while every federate saves or
     // restores; what is sent to a federate saving or restoring is held (Outbox::holding).
     bool time_frozen() const;
     // Delivers frames held during a save or restore: receive-order ones as deliver_receive_order would.
     void deliver_held(FederateHandle to, std::vector<std::string>& frames);
     void save_restore_departed(FederateHandle federate);
-    // While a restore runs, what a federate sends before its federateRestoreComplete is dropped.
-    bool restoring(FederateHandle from) const;
     void check_not_restoring(FederateHandle federate) const;
     void write_save_status(std::string& json) const;
 
@@ -290,12 +270,7 @@ private:
     };
     std::map<FederateHandle, std::map<std::uint64_t, Routed>> routed_;
 
-    // Save/restore state.
-    std::string save_dir_;
-    std::map<std::string, std::string> saves_;  // label -> encoded save, this gateway's run
-    SaveRun save_;
-    Run restore_;
-    std::string save_error_;  // why the gateway could not keep the last save, if it could not
+    SaveRestore save_restore_;
 };
 
 }  // namespace hlacore

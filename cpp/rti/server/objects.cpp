@@ -189,7 +189,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
         for (auto& r : out[0])
             if (!r.values.empty()) deliver_receive_order(gh, r);
     }
-    release_time();
+    if (m.time) release_time();  // only a timestamped message can have been queued for a grant
 }
 
 void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
@@ -240,7 +240,7 @@ void Federation::route_interaction(FederateHandle from, const wire::SendInteract
             deliver_receive_order(gh, receive);
         }
     }
-    release_time();
+    if (m.time) release_time();  // only a timestamped message can have been queued for a grant
 }
 
 void Federation::on(FederateHandle from, const wire::DeleteObject& m) {
@@ -249,7 +249,7 @@ void Federation::on(FederateHandle from, const wire::DeleteObject& m) {
     auto it = objects_.find(m.object);
     if (it == objects_.end() || deleter(it->second) != from) return;  // checked by the client
     remove_object(m.object, from, m.tag, m.time, m.serial);
-    release_time();
+    if (m.time) release_time();  // only a timestamped message can have been queued for a grant
 }
 
 void Federation::on(FederateHandle from, const wire::LocalDeleteObject& m) {

@@ -12,6 +12,7 @@
 // now; they get back the handles they had in the save, and each is sent its mirrored state with
 // initiateFederateRestore. Until a federate answers, what it sends is ignored: it belongs to the world
 // being replaced.
+#include "rti/server/save_restore.hpp"
 #include "rti/server/federation.hpp"
 #include "rti/server/status.hpp"
 
@@ -185,20 +186,48 @@ struct Federation::Snapshot {
     std::vector<ObjectRecord> objects;
 };
 
-// ---- requests ----
+// ---- the state (save_restore.hpp) ----
 
-void Federation::check_membership_change(const char* service) const {
-    if (save_.active)
+void SaveRestore::check_idle(const char* service) const {
+    if (save.active)
         throw RtiError(ErrorCode::SaveInProgress,
-                       std::string(service) + " refused: the federation save '" + save_.label + "' is in progress");
-    if (restore_.active)
+                       std::string(service) + " refused: the federation save '" + save.label + "' is in progress");
+    if (restore.active)
         throw RtiError(ErrorCode::RestoreInProgress,
-                       std::string(service) + " refused: the federation restore '" + restore_.label + "' is in progress");
+                       std::string(service) + " refused: the federation restore '" + restore.label + "' is in progress");
 }
 
+std::string SaveRestore::file(const std::string& federation, const std::string& label) const {
+    return dir + "/" + file_component(federation) + "--" + file_component(label) + ".hlasave";
+}
+
+bool SaveRestore::keep(const std::string& federation, const std::string& label, std::string bytes) {
+    error.clear();
+    if (!dir.empty()) {
+        const std::string path = file(federation, label);
+        const std::string partial = path + ".partial";
+        ::mkdir(dir.c_str(), 0777);
+        std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        out.close();
+        if (!out || std::rename(partial.c_str(), path.c_str()) != 0) {
+            error = "cannot write " + path + ": " + std::strerror(errno);
+            std::remove(partial.c_str());
+            return false;
+        }
+    }
+    saves[label] = std::move(bytes);
+    return true;
+}
+
+// ---- requests ----
+
+void Federation::check_membership_change(const char* service) const { save_restore_.check_idle(service); }
+
 void Federation::check_not_restoring(FederateHandle) const {
-    if (restore_.active)
-        throw RtiError(ErrorCode::RestoreInProgress, "the federation restore '" + restore_.label + "' is in progress");
+    if (save_restore_.restore.active)
+        throw RtiError(ErrorCode::RestoreInProgress,
+                       "the federation restore '" + save_restore_.restore.label + "' is in progress");
 }
 
 // HLA 1.3 §4.11.
@@ -216,11 +245,11 @@ void Federation::request_save(FederateHandle from, const std::string& label, con
                                    ", past the save time " + time_text(*time));
         }
     }
-    save_ = SaveRun{};
-    save_.active = true;
-    save_.label = label;
-    save_.time = time;
-    outbox_.holding = &save_.held;
+    save_restore_.save = SaveRestore::SaveRun{};
+    save_restore_.save.active = true;
+    save_restore_.save.label = label;
+    save_restore_.save.time = time;
+    outbox_.holding = &save_restore_.save.held;
     tell_savers();
     release_time();  // for a timed save: pending requests beyond its time now stop there
 }
@@ -231,13 +260,13 @@ void Federation::request_save(FederateHandle from, const std::string& label, con
 // constrained federates below the save time for ever).
 void Federation::tell_savers() {
     for (const auto& [h, f] : federates_) {
-        if (save_.told.count(h)) continue;
-        if (save_.time && (time_.regulating(h) || time_.constrained(h)) &&
-            (time_.advancing(h) || time_.federate_time(h) < *save_.time))
+        if (save_restore_.save.told.count(h)) continue;
+        if (save_restore_.save.time && (time_.regulating(h) || time_.constrained(h)) &&
+            (time_.advancing(h) || time_.federate_time(h) < *save_restore_.save.time))
             continue;
-        save_.told.insert(h);
-        wire::encode(outbox_.buffer(h), wire::InitiateFederateSave{save_.label});
-        save_.held[h];  // from now on, what is sent to h waits
+        save_restore_.save.told.insert(h);
+        wire::encode(outbox_.buffer(h), wire::InitiateFederateSave{save_restore_.save.label});
+        save_restore_.save.held[h];  // from now on, what is sent to h waits
     }
 }
 
@@ -246,46 +275,29 @@ void Federation::tell_savers() {
 // request beyond the save time is granted the save time (HLA 1.3 leaves this open).
 void Federation::cap_requests_at_save_time() {
     for (const auto& [h, f] : federates_)
-        if (!save_.told.count(h)) time_.cap_request(h, *save_.time);
+        if (!save_restore_.save.told.count(h)) time_.cap_request(h, *save_restore_.save.time);
 }
 
 // §4.14-4.15: federateSaveComplete / federateSaveNotComplete.
 void Federation::on(FederateHandle from, const wire::FederateSaveComplete& m) {
     federate(from);
-    if (!save_.active || !save_.told.count(from)) return;  // the client raises SaveNotInitiated
-    save_.answered[from] = m.success;
+    auto& save = save_restore_.save;
+    if (!save.active || !save.told.count(from)) return;  // the client raises SaveNotInitiated
+    save.answered[from] = m.success;
     finish_save_if_answered();
 }
 
 // §4.16: federationSaved once every federate saved, federationNotSaved if one did not (or left).
 void Federation::finish_save_if_answered() {
-    const auto answered = outcome(save_);
+    const auto answered = outcome(save_restore_.save);
     if (!answered) return;
     bool success = *answered;
-    if (success) {
-        std::string bytes = encode_snapshot();
-        save_error_.clear();
-        if (!save_dir_.empty()) {
-            // Written beside, then renamed: a crash never leaves half a save under the label's name.
-            const std::string path = save_file(save_.label);
-            const std::string partial = path + ".partial";
-            ::mkdir(save_dir_.c_str(), 0777);
-            std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-            out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-            out.close();
-            if (!out || std::rename(partial.c_str(), path.c_str()) != 0) {
-                save_error_ = "cannot write " + path + ": " + std::strerror(errno);
-                std::remove(partial.c_str());
-                success = false;
-            }
-        }
-        if (success) saves_[save_.label] = std::move(bytes);
-    }
-    end_run(save_, wire::FederationSaved{success});
+    if (success) success = save_restore_.keep(name_, save_restore_.save.label, encode_snapshot());
+    end_run(save_restore_.save, wire::FederationSaved{success});
     release_time();
 }
 
-std::optional<bool> Federation::outcome(const Run& run) const {
+std::optional<bool> Federation::outcome(const SaveRestore::Run& run) const {
     if (!run.active) return std::nullopt;
     for (const auto& [h, f] : federates_)
         if (!run.answered.count(h)) return std::nullopt;
@@ -308,9 +320,7 @@ void Federation::end_run(R& run, const M& done) {
 
 // ---- hooks ----
 
-bool Federation::time_frozen() const {
-    return restore_.active || (save_.active && save_.told.size() >= federates_.size());
-}
+bool Federation::time_frozen() const { return save_restore_.time_frozen(federates_.size()); }
 
 // Receive-order messages that time management holds (constrained, not advancing) never reach the
 // outbox: what was held here would have been written at once.
@@ -321,31 +331,24 @@ void Federation::deliver_held(FederateHandle to, std::vector<std::string>& frame
 
 // A federate that leaves (only by a dropped connection: resigning is refused) fails the save or restore.
 void Federation::save_restore_departed(FederateHandle h) {
-    if (save_.active) {
-        save_.told.erase(h);
-        save_.departed(h);
+    if (save_restore_.save.active) {
+        save_restore_.save.told.erase(h);
+        save_restore_.save.departed(h);
         finish_save_if_answered();
     }
-    if (restore_.active) {
-        restore_.departed(h);
+    if (save_restore_.restore.active) {
+        save_restore_.restore.departed(h);
         finish_restore_if_answered();
     }
 }
 
-bool Federation::restoring(FederateHandle from) const {
-    return restore_.active && !restore_.answered.count(from);
-}
-
 // ---- the file ----
-
-std::string Federation::save_file(const std::string& label) const {
-    return save_dir_ + "/" + file_component(name_) + "--" + file_component(label) + ".hlasave";
-}
 
 std::string Federation::encode_snapshot() const {
     std::string out(kFileMagic, sizeof kFileMagic);
     wire::Writer w(out);
-    w(kFormatVersion, save_.label, name_, fed_name_, fed_text_, next_federate_, next_object_, save_.time);
+    const auto& save = save_restore_.save;
+    w(kFormatVersion, save.label, name_, fed_name_, fed_text_, next_federate_, next_object_, save.time);
     std::vector<FederateRecord> federates;
     for (const auto& [h, f] : federates_) {
         FederateRecord r;
@@ -365,8 +368,8 @@ std::string Federation::encode_snapshot() const {
         r.interaction_order = pairs(f.interaction_order);
         r.interaction_transport = pairs(f.interaction_transport);
         r.time_management = time_.save_state(h);
-        auto held = save_.held.find(h);
-        if (held != save_.held.end()) r.held_after_save = held->second;
+        auto held = save_restore_.save.held.find(h);
+        if (held != save_restore_.save.held.end()) r.held_after_save = held->second;
         put_ddm(f.ddm, r);
         r.in_scope = records_of<ObjectAttributes>(f.ddm.in_scope);
         r.relevant = records_of<ObjectAttributes>(f.ddm.relevant);
@@ -503,10 +506,10 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
     };
     std::string bytes;
     std::string source = "this gateway's memory";
-    if (auto kept = saves_.find(label); kept != saves_.end()) {
+    if (auto kept = save_restore_.saves.find(label); kept != save_restore_.saves.end()) {
         bytes = kept->second;
-    } else if (!save_dir_.empty()) {
-        source = save_file(label);
+    } else if (!save_restore_.dir.empty()) {
+        source = save_restore_.file(name_, label);
         std::ifstream in(source, std::ios::binary);
         if (!in) return fail("no save labelled '" + label + "': cannot open " + source + ": " + std::strerror(errno));
         std::ostringstream text;
@@ -546,9 +549,9 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
     sync_points_.clear();  // their members' handles are gone
     routed_.clear();
     time_ = TimeManager{};
-    restore_ = Run{};
-    restore_.active = true;
-    restore_.label = label;
+    save_restore_.restore = SaveRestore::Run{};
+    save_restore_.restore.active = true;
+    save_restore_.restore.label = label;
     std::map<FederateHandle, std::uint64_t> last_serial;
     for (auto& r : snap.federates) {
         FederateState& f = federates_[r.handle];
@@ -577,7 +580,7 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         for (const auto& [object, attrs] : r.relevant) f.ddm.relevant[object].insert(attrs.begin(), attrs.end());
         f.ddm.last_region = r.last_region;
         // What the save held back is delivered after federationRestored, as it was after federationSaved.
-        if (!r.held_after_save.empty()) restore_.held[r.handle] = std::move(r.held_after_save);
+        if (!r.held_after_save.empty()) save_restore_.restore.held[r.handle] = std::move(r.held_after_save);
     }
     for (const auto& r : snap.objects) {
         ObjectInstance& obj = objects_[r.handle];
@@ -624,24 +627,25 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         outbox_.send(h, m);
     }
     // Until federationRestored, what is sent to the federates waits.
-    for (const auto& [h, f] : federates_) restore_.held[h];
-    outbox_.holding = &restore_.held;
+    for (const auto& [h, f] : federates_) save_restore_.restore.held[h];
+    outbox_.holding = &save_restore_.restore.held;
 }
 
 // §4.21: federateRestoreComplete / federateRestoreNotComplete.
 void Federation::on(FederateHandle from, const wire::FederateRestoreComplete& m) {
     federate(from);
-    if (!restore_.active || restore_.answered.count(from)) return;  // the client raises RestoreNotRequested
-    restore_.answered[from] = m.success;
+    auto& restore = save_restore_.restore;
+    if (!restore.active || restore.answered.count(from)) return;  // the client raises RestoreNotRequested
+    restore.answered[from] = m.success;
     finish_restore_if_answered();
 }
 
 // §4.22: federationRestored, or federationNotRestored if a federate could not restore (or left); the
 // gateway's state is the save's either way.
 void Federation::finish_restore_if_answered() {
-    const auto answered = outcome(restore_);
+    const auto answered = outcome(save_restore_.restore);
     if (!answered) return;
-    end_run(restore_, wire::FederationRestored{*answered});
+    end_run(save_restore_.restore, wire::FederationRestored{*answered});
     update_advisories();
     count_scope_watchers();
     refresh_scope();  // from the scope and relevance already announced in the save
@@ -652,35 +656,35 @@ void Federation::finish_restore_if_answered() {
 
 void Federation::write_save_status(std::string& out) const {
     out += ",\"save_restore\":{\"state\":";
-    if (restore_.active) {
+    if (save_restore_.restore.active) {
         out += "\"restoring\",\"label\":";
-        json_string(out, restore_.label);
-    } else if (save_.active) {
-        out += save_.told.size() >= federates_.size() ? "\"saving\"" : "\"waiting for the save time\"";
+        json_string(out, save_restore_.restore.label);
+    } else if (save_restore_.save.active) {
+        out += save_restore_.save.told.size() >= federates_.size() ? "\"saving\"" : "\"waiting for the save time\"";
         out += ",\"label\":";
-        json_string(out, save_.label);
+        json_string(out, save_restore_.save.label);
         out += ",\"time\":";
-        if (save_.time) {
-            json_number(out, *save_.time);
+        if (save_restore_.save.time) {
+            json_number(out, *save_restore_.save.time);
         } else {
             out += "null";
         }
         out += ",\"told\":";
-        json_array(out, save_.told, [&](FederateHandle h) { out += std::to_string(h); });
+        json_array(out, save_restore_.save.told, [&](FederateHandle h) { out += std::to_string(h); });
     } else {
         out += "\"idle\"";
     }
-    if (restore_.active || save_.active) {
+    if (save_restore_.restore.active || save_restore_.save.active) {
         out += ",\"answered\":";
-        json_array(out, restore_.active ? restore_.answered : save_.answered,
+        json_array(out, save_restore_.restore.active ? save_restore_.restore.answered : save_restore_.save.answered,
                    [&](const auto& answer) { out += std::to_string(answer.first); });
     }
     out += ",\"saves\":";
-    json_array(out, saves_, [&](const auto& save) { json_string(out, save.first); });
+    json_array(out, save_restore_.saves, [&](const auto& save) { json_string(out, save.first); });
     out += ",\"save_dir\":";
-    json_string(out, save_dir_);
+    json_string(out, save_restore_.dir);
     out += ",\"save_error\":";
-    json_string(out, save_error_);
+    json_string(out, save_restore_.error);
     out += "},\"instances\":";
     json_array(out, objects_, [&](const auto& object) {
         const auto& [oh, obj] = object;

@@ -22,7 +22,7 @@ void Federation::check_timestamp(FederateHandle from, const wire::OptionalTime& 
 
 void Federation::release_time() {
     if (time_frozen()) return;  // every federate is saving or restoring
-    if (save_.active && save_.time) cap_requests_at_save_time();
+    if (save_restore_.save.active && save_restore_.save.time) cap_requests_at_save_time();
     // A message at or below the sender's time can no longer be retracted (HLA 1.3 §8.21).
     auto forget_retractable = [&](FederateHandle sender, double time) {
         auto routed = routed_.find(sender);
@@ -44,7 +44,8 @@ void Federation::release_time() {
             forget_retractable(r.federate, *r.grant);
         }
     }
-    if (save_.active && save_.time) tell_savers();  // a timed save starts at the grants reaching its time
+    // A timed save starts at the grants reaching its time.
+    if (save_restore_.save.active && save_restore_.save.time) tell_savers();
 }
 
 double Federation::query_time(FederateHandle f, wire::TimeQuery which) {

@@ -5,21 +5,6 @@ namespace hlacore {
 
 using wire::WireError;
 
-fom::Handle Federation::known_class(const FederateState& f, fom::Handle cls) const {
-    for (fom::Handle c = cls; c != 0; c = fom_.object_class(c)->parent) {
-        if (f.subscribed.count(c) || f.ddm.object_subscriptions.count(c)) return c;
-    }
-    return 0;
-}
-
-fom::Handle Federation::receiving_interaction_class(const FederateState& f, fom::Handle cls) const {
-    for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent) {
-        if (f.subscribed_interactions.count(c) || f.ddm.interaction_subscriptions.count(c)) return c;
-    }
-    return 0;
-}
-
-
 namespace {
 
 fom::Handle class_of(fom::Handle published_interaction) { return published_interaction; }
@@ -32,14 +17,14 @@ fom::Handle class_of(const std::pair<const fom::Handle, Attributes>& published_c
 // a published class is relevant when another federate would discover (receive) its instances (interactions).
 void Federation::update_advisories() {
     for (auto& [ph, p] : federates_) {
-        if (p.class_relevance) {
+        if (p.declarations.class_relevance) {
             advise<wire::StartRegistration, wire::StopRegistration>(
-                ph, p.published, p.registration_started,
+                ph, p.declarations.published, p.declarations.registration_started,
                 [&](const FederateState& g, fom::Handle cls) { return known_class(g, cls) != 0; });
         }
-        if (p.interaction_relevance) {
+        if (p.declarations.interaction_relevance) {
             advise<wire::TurnInteractionsOn, wire::TurnInteractionsOff>(
-                ph, p.published_interactions, p.interactions_turned_on,
+                ph, p.declarations.published_interactions, p.declarations.interactions_turned_on,
                 [&](const FederateState& g, fom::Handle ic) { return receiving_interaction_class(g, ic) != 0; });
         }
     }
@@ -69,17 +54,17 @@ void Federation::on(FederateHandle from, const wire::PublishObjectClass& m) {
     auto& f = federate(from);
     check_attributes(object_class(m.object_class), m.attributes);
     if (m.attributes.empty()) {
-        f.published.erase(m.object_class);
+        f.declarations.published.erase(m.object_class);
     } else {
-        f.published[m.object_class] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
+        f.declarations.published[m.object_class] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
     }
     update_advisories();
 }
 
 void Federation::on(FederateHandle from, const wire::UnpublishObjectClass& m) {
     object_class(m.object_class);
-    federate(from).published.erase(m.object_class);
-    federate(from).registration_started.erase(m.object_class);
+    federate(from).declarations.published.erase(m.object_class);
+    federate(from).declarations.registration_started.erase(m.object_class);
     update_advisories();
 }
 
@@ -87,9 +72,9 @@ void Federation::on(FederateHandle from, const wire::SubscribeObjectClass& m) {
     auto& f = federate(from);
     check_attributes(object_class(m.object_class), m.attributes);
     if (m.attributes.empty()) {
-        f.subscribed.erase(m.object_class);
+        f.declarations.subscribed.erase(m.object_class);
     } else {
-        f.subscribed[m.object_class] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
+        f.declarations.subscribed[m.object_class] = std::set<fom::Handle>(m.attributes.begin(), m.attributes.end());
         discover_all_for(from);
     }
     update_advisories();
@@ -97,21 +82,21 @@ void Federation::on(FederateHandle from, const wire::SubscribeObjectClass& m) {
 
 void Federation::on(FederateHandle from, const wire::UnsubscribeObjectClass& m) {
     object_class(m.object_class);
-    federate(from).subscribed.erase(m.object_class);
+    federate(from).declarations.subscribed.erase(m.object_class);
     update_advisories();
 }
 
 void Federation::on(FederateHandle from, const wire::PublishInteractionClass& m) {
     interaction_class(m.interaction_class);
-    federate(from).published_interactions.insert(m.interaction_class);
+    federate(from).declarations.published_interactions.insert(m.interaction_class);
     update_advisories();
 }
 
 void Federation::on(FederateHandle from, const wire::UnpublishInteractionClass& m) {
     interaction_class(m.interaction_class);
     auto& f = federate(from);
-    f.published_interactions.erase(m.interaction_class);
-    f.interactions_turned_on.erase(m.interaction_class);
+    f.declarations.published_interactions.erase(m.interaction_class);
+    f.declarations.interactions_turned_on.erase(m.interaction_class);
     f.interaction_order.erase(m.interaction_class);
     f.interaction_transport.erase(m.interaction_class);
     update_advisories();
@@ -119,13 +104,13 @@ void Federation::on(FederateHandle from, const wire::UnpublishInteractionClass& 
 
 void Federation::on(FederateHandle from, const wire::SubscribeInteractionClass& m) {
     interaction_class(m.interaction_class);
-    federate(from).subscribed_interactions.insert(m.interaction_class);
+    federate(from).declarations.subscribed_interactions.insert(m.interaction_class);
     update_advisories();
 }
 
 void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClass& m) {
     interaction_class(m.interaction_class);
-    federate(from).subscribed_interactions.erase(m.interaction_class);
+    federate(from).declarations.subscribed_interactions.erase(m.interaction_class);
     update_advisories();
 }
 
@@ -133,15 +118,15 @@ void Federation::on(FederateHandle from, const wire::SetAdvisorySwitch& m) {
     auto& f = federate(from);
     switch (static_cast<wire::AdvisorySwitch>(m.which)) {
         case wire::AdvisorySwitch::ClassRelevance:
-            f.class_relevance = m.on;
-            if (!m.on) f.registration_started.clear();
+            f.declarations.class_relevance = m.on;
+            if (!m.on) f.declarations.registration_started.clear();
             break;
         case wire::AdvisorySwitch::InteractionRelevance:
-            f.interaction_relevance = m.on;
-            if (!m.on) f.interactions_turned_on.clear();
+            f.declarations.interaction_relevance = m.on;
+            if (!m.on) f.declarations.interactions_turned_on.clear();
             break;
-        case wire::AdvisorySwitch::AttributeRelevance: f.attribute_relevance = m.on; break;
-        case wire::AdvisorySwitch::AttributeScope: f.attribute_scope = m.on; break;
+        case wire::AdvisorySwitch::AttributeRelevance: f.declarations.attribute_relevance = m.on; break;
+        case wire::AdvisorySwitch::AttributeScope: f.declarations.attribute_scope = m.on; break;
         default: throw WireError("unknown advisory switch " + std::to_string(m.which));
     }
     count_scope_watchers();

@@ -47,8 +47,8 @@ void Federation::resign(FederateHandle h, wire::ResignAction action) {
     // HLA 1.3 §4.5: the federate may not leave attributes owned behind unless the action disposes of them.
     if (!releases) {
         for (const auto& [oh, obj] : objects_) {
-            if (deletes && deleter(obj) == h) continue;
-            for (const auto& [attr, owner] : obj.owners) {
+            if (deletes && obj.ownership.deleter() == h) continue;
+            for (const auto& [attr, owner] : obj.ownership.owners) {
                 if (owner == h)
                     throw RtiError(ErrorCode::FederateOwnsAttributes,
                                    "federate owns attributes of object '" + obj.name + "'; resign with an action "
@@ -59,20 +59,20 @@ void Federation::resign(FederateHandle h, wire::ResignAction action) {
     if (deletes) {
         std::vector<ObjectHandle> doomed;
         for (const auto& [oh, obj] : objects_)
-            if (deleter(obj) == h) doomed.push_back(oh);
+            if (obj.ownership.deleter() == h) doomed.push_back(oh);
         for (ObjectHandle oh : doomed) remove_object(oh, h, "", std::nullopt, 0);
     }
     // Released attributes become unowned, or go to a federate waiting to acquire them (HLA 1.3 §7.7);
     // the departing federate's own acquisitions and divestitures end with it.
     for (auto& [oh, obj] : objects_) {
-        if (obj.privilege_holder == h) obj.privilege_holder = 0;
-        for (auto it = obj.acquirers.begin(); it != obj.acquirers.end();) {
+        if (obj.ownership.privilege_holder == h) obj.ownership.privilege_holder = 0;
+        for (auto it = obj.ownership.acquirers.begin(); it != obj.ownership.acquirers.end();) {
             auto& waiting = it->second;
             waiting.erase(std::remove(waiting.begin(), waiting.end(), h), waiting.end());
-            it = waiting.empty() ? obj.acquirers.erase(it) : std::next(it);
+            it = waiting.empty() ? obj.ownership.acquirers.erase(it) : std::next(it);
         }
         std::vector<fom::Handle> released;
-        for (const auto& [attr, owner] : obj.owners)
+        for (const auto& [attr, owner] : obj.ownership.owners)
             if (owner == h) released.push_back(attr);
         OwnershipNotices notices;
         for (fom::Handle attr : released) release_attribute(obj, attr, notices);

@@ -13,6 +13,8 @@
 
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
+#include "rti/server/declarations.hpp"
+#include "rti/server/objects.hpp"
 #include "rti/server/outbox.hpp"
 #include "rti/server/regions.hpp"
 #include "rti/server/save_restore.hpp"
@@ -80,7 +82,6 @@ public:
 
 private:
     struct FederateState;
-    struct ObjectInstance;
 
     // ---- data distribution management (HLA 1.3 §9): the state in server/regions.hpp, the routing in
     // server/regions.cpp ----
@@ -118,40 +119,13 @@ private:
 
     struct FederateState {
         std::string name;
-        std::map<fom::Handle, std::set<fom::Handle>> published;   // object class -> attributes
-        std::map<fom::Handle, std::set<fom::Handle>> subscribed;  // object class -> attributes
-        std::set<fom::Handle> published_interactions;
-        std::set<fom::Handle> subscribed_interactions;
-        std::set<ObjectHandle> known;                  // registered or discovered, not locally deleted
-        std::set<fom::Handle> registration_started;    // classes told startRegistrationForObjectClass
-        std::set<fom::Handle> interactions_turned_on;  // classes told turnInteractionsOn
-        bool class_relevance = true;                   // HLA 1.3 advisory switch defaults
-        bool interaction_relevance = true;
-        bool attribute_relevance = false;
-        bool attribute_scope = false;
+        FederateDeclarations declarations;  // declaration management (HLA 1.3 §5, server/declarations.hpp)
+        std::set<ObjectHandle> known;       // registered or discovered, not locally deleted
         // changeInteractionOrderType / changeInteractionTransportationType (HLA 1.3 §6.20, §6.22): this
         // federate's interactions of a class go this way instead of the FOM's, until it unpublishes the class.
         std::map<fom::Handle, fom::Order> interaction_order;
         std::map<fom::Handle, fom::Transport> interaction_transport;
         FederateRegions ddm;  // data distribution management (HLA 1.3 §9, server/regions.hpp)
-    };
-    struct ObjectInstance {
-        fom::Handle object_class = 0;
-        std::string name;
-        // With a privilegeToDelete attribute in the FOM, its owner may delete the object (HLA 1.3 §6.8);
-        // without one, the registrant may (privilege_holder, 0 once released).
-        fom::Handle privilege_attribute = 0;
-        FederateHandle privilege_holder = 0;
-        std::map<fom::Handle, FederateHandle> owners;  // attribute -> owner, absent = unowned
-        // Ownership transfers in progress (HLA 1.3 §7): attributes their owner offers by negotiated
-        // divestiture, and the federates waiting for an attribute (attributeOwnershipAcquisition), in
-        // request order.
-        std::map<fom::Handle, std::string> divesting;
-        std::map<fom::Handle, std::vector<FederateHandle>> acquirers;
-        // changeAttributeOrderType / changeAttributeTransportationType (HLA 1.3 §6.19, §6.21) by the
-        // attribute's owner; forgotten when the attribute changes owner.
-        std::map<fom::Handle, fom::Order> order;
-        std::map<fom::Handle, fom::Transport> transport;
     };
     // Ownership callbacks gathered while handling one request, one message per federate and kind; the
     // requests for assumption and release carry the request's tag.
@@ -179,12 +153,8 @@ private:
     // received; `announced` becomes the received ones.
     template <class On, class Off, class Published, class Receives>
     void advise(FederateHandle ph, const Published& published, std::set<fom::Handle>& announced, Receives receives);
-    // Who may delete the object: the owner of privilegeToDelete, else the privilege holder (0: nobody).
-    FederateHandle deleter(const ObjectInstance& obj) const;
     // Does the federate publish `attribute` for the object's class (or a superclass of it)?
     bool publishes(const FederateState& f, const ObjectInstance& obj, fom::Handle attribute) const;
-    // The attribute's owner, 0 when unowned.
-    static FederateHandle owner_of(const ObjectInstance& obj, fom::Handle attribute);
     // attributeOwnershipAcquisition(IfAvailable): transfers what is free to take; returns the rest that
     // another federate owns, with its owner.
     std::vector<std::pair<fom::Handle, FederateHandle>> acquire_available(FederateHandle from, const FederateState& f,
@@ -208,7 +178,7 @@ private:
     // Sends what time management allows now: held messages, TSO messages, grants and enable callbacks.
     void release_time();
     // Throws WireError for a timestamp below a regulating sender's bound; `what` names the message.
-    void check_timestamp(FederateHandle from, const wire::OptionalTime& time, const char* what) const;
+    void check_timestamp(FederateHandle from, double time, const char* what) const;
     // Receive-order delivery, held back from a constrained federate that is not advancing.
     template <class M>
     void deliver_receive_order(FederateHandle to, const M& message);

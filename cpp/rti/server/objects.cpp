@@ -14,8 +14,8 @@ std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle 
     const auto& cls = object_class(cls_handle);
     auto& f = federate(h);
     check_not_restoring(h);
-    auto pub = f.published.find(cls_handle);
-    if (pub == f.published.end())
+    auto pub = f.declarations.published.find(cls_handle);
+    if (pub == f.declarations.published.end())
         throw RtiError(ErrorCode::ObjectClassNotPublished, "object class '" + cls.qualified_name + "' is not published");
     std::string name = requested_name;
     const ObjectHandle oh = next_object_;
@@ -30,12 +30,12 @@ std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle 
     ObjectInstance& obj = objects_[oh];
     obj.object_class = cls_handle;
     obj.name = name;
-    obj.privilege_holder = h;
-    for (fom::Handle attr : pub->second) obj.owners[attr] = h;
+    obj.ownership.privilege_holder = h;
+    for (fom::Handle attr : pub->second) obj.ownership.owners[attr] = h;
     // The registrant holds the privilege to delete, as an attribute that transfers like the others.
     if (const auto* privilege = cls.privilege_to_delete()) {
-        obj.privilege_attribute = privilege->handle;
-        obj.owners[privilege->handle] = h;
+        obj.ownership.privilege_attribute = privilege->handle;
+        obj.ownership.owners[privilege->handle] = h;
     }
     object_names_[name] = oh;
     f.known.insert(oh);
@@ -117,9 +117,26 @@ void Federation::deliver_timestamp_order(FederateHandle to, const M& message, Fe
 
 // ---- object management (HLA 1.3 §6) ----
 
+// The class a federate knows an instance of `cls` as (HLA 1.3 §6.3: discovered as the nearest subscribed
+// class), and the class it receives an interaction of `cls` as (§6.6); 0 when it subscribes to neither.
+fom::Handle Federation::known_class(const FederateState& f, fom::Handle cls) const {
+    for (fom::Handle c = cls; c != 0; c = fom_.object_class(c)->parent) {
+        if (f.declarations.subscribed.count(c) || f.ddm.object_subscriptions.count(c)) return c;
+    }
+    return 0;
+}
+
+fom::Handle Federation::receiving_interaction_class(const FederateState& f, fom::Handle cls) const {
+    for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent) {
+        if (f.declarations.subscribed_interactions.count(c) || f.ddm.interaction_subscriptions.count(c)) return c;
+    }
+    return 0;
+}
+
+
 void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
     federate(from);
-    check_timestamp(from, m.time, "attribute update");
+    if (m.time) check_timestamp(from, *m.time, "attribute update");
     auto it = objects_.find(m.object);
     if (it == objects_.end()) return;  // deleted meanwhile
     const ObjectInstance& obj = it->second;
@@ -159,7 +176,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
         if (known == 0) continue;
         // A plain subscription (the default region) wants every subscribed attribute; a subscription
         // region only those whose update region overlaps it (HLA 1.3 §9).
-        const auto plain = g.subscribed.find(known);
+        const auto plain = g.declarations.subscribed.find(known);
         // HLA 1.3 §8.1.1: timestamp order needs a time, a regulating sender, a constrained receiver and
         // `timestamp` as the attribute's order; each attribute goes its own way, so one update may split.
         const bool tso = m.time && time_.is_tso(from, gh);
@@ -167,9 +184,9 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
             for (auto& r : row) r.values.clear();
         for (const auto& pair : m.values) {
             // Values of attributes the sender does not own are not reflected (clients check this first).
-            auto owner = obj.owners.find(pair.first);
-            if (owner == obj.owners.end() || owner->second != from) continue;
-            if (!(plain != g.subscribed.end() && plain->second.count(pair.first)) &&
+            auto owner = obj.ownership.owners.find(pair.first);
+            if (owner == obj.ownership.owners.end() || owner->second != from) continue;
+            if (!(plain != g.declarations.subscribed.end() && plain->second.count(pair.first)) &&
                 !region_wanted(g, known, from, m.object, pair.first))
                 continue;
             const bool timed = tso && order_of(pair.first) == fom::Order::Timestamp;
@@ -178,7 +195,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
         }
         if (!g.known.count(m.object)) {
             // Discovered when an attribute comes into scope; a plain subscriber as before DDM.
-            bool in_scope = plain != g.subscribed.end();
+            bool in_scope = plain != g.declarations.subscribed.end();
             for (const auto& row : out)
                 for (const auto& r : row) in_scope = in_scope || !r.values.empty();
             if (!in_scope) continue;
@@ -200,7 +217,7 @@ void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
 // `region`: the region the interaction was sent with (sendInteractionWithRegion), null for the default
 // region, which reaches every subscriber of the class.
 void Federation::route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region) {
-    check_timestamp(from, m.time, "interaction");
+    if (m.time) check_timestamp(from, *m.time, "interaction");
     const auto& sent_class = interaction_class(m.interaction_class);
     for (const auto& [param, value] : m.values) {
         if (!sent_class.parameter(param))
@@ -245,9 +262,9 @@ void Federation::route_interaction(FederateHandle from, const wire::SendInteract
 
 void Federation::on(FederateHandle from, const wire::DeleteObject& m) {
     federate(from);
-    check_timestamp(from, m.time, "object deletion");
+    if (m.time) check_timestamp(from, *m.time, "object deletion");
     auto it = objects_.find(m.object);
-    if (it == objects_.end() || deleter(it->second) != from) return;  // checked by the client
+    if (it == objects_.end() || it->second.ownership.deleter() != from) return;  // checked by the client
     remove_object(m.object, from, m.tag, m.time, m.serial);
     if (m.time) release_time();  // only a timestamped message can have been queued for a grant
 }
@@ -259,12 +276,12 @@ void Federation::on(FederateHandle from, const wire::LocalDeleteObject& m) {
     auto it = objects_.find(m.object);
     if (it == objects_.end()) return;
     ObjectInstance& obj = it->second;
-    for (auto w = obj.acquirers.begin(); w != obj.acquirers.end();) {
+    for (auto w = obj.ownership.acquirers.begin(); w != obj.ownership.acquirers.end();) {
         w->second.erase(std::remove(w->second.begin(), w->second.end(), from), w->second.end());
-        w = w->second.empty() ? obj.acquirers.erase(w) : std::next(w);
+        w = w->second.empty() ? obj.ownership.acquirers.erase(w) : std::next(w);
     }
     std::vector<fom::Handle> owned;
-    for (const auto& [attr, owner] : obj.owners)
+    for (const auto& [attr, owner] : obj.ownership.owners)
         if (owner == from) owned.push_back(attr);
     OwnershipNotices notices;
     for (fom::Handle attr : owned) release_attribute(obj, attr, notices);
@@ -278,8 +295,8 @@ void Federation::on(FederateHandle from, const wire::RequestObjectUpdate& m) {
     check_attributes(object_class(it->second.object_class), m.attributes);
     std::map<FederateHandle, wire::Handles> by_owner;
     for (auto attr : m.attributes) {
-        auto owner = it->second.owners.find(attr);
-        if (owner != it->second.owners.end() && owner->second != from) by_owner[owner->second].push_back(attr);
+        auto owner = it->second.ownership.owners.find(attr);
+        if (owner != it->second.ownership.owners.end() && owner->second != from) by_owner[owner->second].push_back(attr);
     }
     for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{m.object, attrs});
 }
@@ -298,8 +315,8 @@ void Federation::request_class_update(FederateHandle from, fom::Handle cls, cons
         if (!fom_.is_object_subclass(obj.object_class, cls)) continue;
         std::map<FederateHandle, wire::Handles> by_owner;
         for (auto attr : attributes) {
-            auto owner = obj.owners.find(attr);
-            if (owner == obj.owners.end() || owner->second == from) continue;
+            auto owner = obj.ownership.owners.find(attr);
+            if (owner == obj.ownership.owners.end() || owner->second == from) continue;
             const Region* updated_in = region ? update_region(owner->second, oh, attr) : nullptr;
             if (!updated_in || region->overlaps(*updated_in)) by_owner[owner->second].push_back(attr);
         }
@@ -334,8 +351,8 @@ void Federation::on(FederateHandle from, const wire::ChangeAttributeDelivery& m)
     ObjectInstance* obj = owned_object(m.object, m.attributes);
     if (!obj) return;
     for (auto attr : m.attributes) {
-        auto owner = obj->owners.find(attr);
-        if (owner == obj->owners.end() || owner->second != from) continue;
+        auto owner = obj->ownership.owners.find(attr);
+        if (owner == obj->ownership.owners.end() || owner->second != from) continue;
         if (order) obj->order[attr] = *order;
         if (transport) obj->transport[attr] = *transport;
     }
@@ -346,7 +363,7 @@ void Federation::on(FederateHandle from, const wire::ChangeInteractionDelivery& 
     interaction_class(m.interaction_class);
     const auto order = delivery_value<fom::Order>(m.order, "ordering handle");
     const auto transport = delivery_value<fom::Transport>(m.transport, "transportation handle");
-    if (!f.published_interactions.count(m.interaction_class)) return;
+    if (!f.declarations.published_interactions.count(m.interaction_class)) return;
     if (order) f.interaction_order[m.interaction_class] = *order;
     if (transport) f.interaction_transport[m.interaction_class] = *transport;
 }

@@ -13,46 +13,41 @@ using wire::WireError;
 // to a federate that has not evoked the notification yet.
 
 
-FederateHandle Federation::deleter(const ObjectInstance& obj) const {
-    if (obj.privilege_attribute == 0) return obj.privilege_holder;
-    auto owner = obj.owners.find(obj.privilege_attribute);
-    return owner == obj.owners.end() ? 0 : owner->second;
-}
 
 // privilegeToDelete counts as published with its class (the registrant holds it without naming it).
 bool Federation::publishes(const FederateState& f, const ObjectInstance& obj, fom::Handle attribute) const {
     for (fom::Handle c = obj.object_class; c != 0; c = fom_.object_class(c)->parent) {
-        auto pub = f.published.find(c);
-        if (pub != f.published.end() && (pub->second.count(attribute) || attribute == obj.privilege_attribute))
+        auto pub = f.declarations.published.find(c);
+        if (pub != f.declarations.published.end() && (pub->second.count(attribute) || attribute == obj.ownership.privilege_attribute))
             return true;
     }
     return false;
 }
 
 void Federation::transfer(ObjectInstance& obj, fom::Handle attr, FederateHandle to, OwnershipNotices& notices) {
-    auto owner = obj.owners.find(attr);
+    auto owner = obj.ownership.owners.find(attr);
     // §7.5: a negotiated divestiture completes with attributeOwnershipDivestitureNotification.
-    if (owner != obj.owners.end() && owner->second != to && obj.divesting.count(attr))
+    if (owner != obj.ownership.owners.end() && owner->second != to && obj.ownership.divesting.count(attr))
         notices.divested[owner->second].push_back(attr);
-    obj.divesting.erase(attr);
-    if (owner == obj.owners.end() || owner->second != to) forget_delivery(obj, attr);
-    obj.owners[attr] = to;
-    auto waiting = obj.acquirers.find(attr);
-    if (waiting != obj.acquirers.end()) {
+    obj.ownership.divesting.erase(attr);
+    if (owner == obj.ownership.owners.end() || owner->second != to) forget_delivery(obj, attr);
+    obj.ownership.owners[attr] = to;
+    auto waiting = obj.ownership.acquirers.find(attr);
+    if (waiting != obj.ownership.acquirers.end()) {
         auto& list = waiting->second;
         list.erase(std::remove(list.begin(), list.end(), to), list.end());
-        if (list.empty()) obj.acquirers.erase(waiting);
+        if (list.empty()) obj.ownership.acquirers.erase(waiting);
     }
     // §7.6: attributeOwnershipAcquisitionNotification.
     notices.acquired[to].push_back(attr);
 }
 
 void Federation::release_attribute(ObjectInstance& obj, fom::Handle attr, OwnershipNotices& notices) {
-    obj.owners.erase(attr);
+    obj.ownership.owners.erase(attr);
     forget_delivery(obj, attr);
-    obj.divesting.erase(attr);
-    auto waiting = obj.acquirers.find(attr);
-    if (waiting != obj.acquirers.end() && !waiting->second.empty())
+    obj.ownership.divesting.erase(attr);
+    auto waiting = obj.ownership.acquirers.find(attr);
+    if (waiting != obj.ownership.acquirers.end() && !waiting->second.empty())
         transfer(obj, attr, waiting->second.front(), notices);
 }
 
@@ -75,17 +70,13 @@ void Federation::send_notices(ObjectHandle oh, OwnershipNotices& notices) {
     send_each(wire::RequestOwnershipRelease{0, {}, notices.tag}, notices.release_requested);
 }
 
-Federation::ObjectInstance* Federation::owned_object(ObjectHandle oh, const wire::Handles& attributes) {
+ObjectInstance* Federation::owned_object(ObjectHandle oh, const wire::Handles& attributes) {
     auto it = objects_.find(oh);
     if (it == objects_.end()) return nullptr;  // deleted meanwhile
     check_attributes(object_class(it->second.object_class), attributes);
     return &it->second;
 }
 
-FederateHandle Federation::owner_of(const ObjectInstance& obj, fom::Handle attribute) {
-    auto owner = obj.owners.find(attribute);
-    return owner == obj.owners.end() ? 0 : owner->second;
-}
 
 // §7.7-7.8: the attributes `from` publishes that are unowned, or that their owner is divesting, go to it at
 // once. Returns those another federate owns (and keeps for now), with their owner.
@@ -95,8 +86,8 @@ std::vector<std::pair<fom::Handle, FederateHandle>> Federation::acquire_availabl
     std::vector<std::pair<fom::Handle, FederateHandle>> owned_by_others;
     for (auto attr : attributes) {
         if (!publishes(f, obj, attr)) continue;  // AttributeNotPublished at the client
-        const FederateHandle owner = owner_of(obj, attr);
-        if (owner == 0 || (owner != from && obj.divesting.count(attr))) {
+        const FederateHandle owner = obj.ownership.owner(attr);
+        if (owner == 0 || (owner != from && obj.ownership.divesting.count(attr))) {
             transfer(obj, attr, from, notices);
         } else if (owner != from) {
             owned_by_others.emplace_back(attr, owner);
@@ -120,7 +111,7 @@ bool Federation::change_ownership(FederateHandle from, ObjectHandle oh, const wi
 void Federation::on(FederateHandle from, const wire::UnconditionalDivestiture& m) {
     change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
         for (auto attr : m.attributes)
-            if (owner_of(obj, attr) == from) release_attribute(obj, attr, notices);
+            if (obj.ownership.owner(attr) == from) release_attribute(obj, attr, notices);
     });
 }
 
@@ -131,10 +122,10 @@ void Federation::on(FederateHandle from, const wire::NegotiatedDivestiture& m) {
     change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
         notices.tag = m.tag;
         for (auto attr : m.attributes) {
-            if (owner_of(obj, attr) != from) continue;
-            obj.divesting[attr] = m.tag;
-            auto waiting = obj.acquirers.find(attr);
-            if (waiting != obj.acquirers.end() && !waiting->second.empty()) {
+            if (obj.ownership.owner(attr) != from) continue;
+            obj.ownership.divesting[attr] = m.tag;
+            auto waiting = obj.ownership.acquirers.find(attr);
+            if (waiting != obj.ownership.acquirers.end() && !waiting->second.empty()) {
                 transfer(obj, attr, waiting->second.front(), notices);
                 continue;
             }
@@ -150,7 +141,7 @@ void Federation::on(FederateHandle from, const wire::NegotiatedDivestiture& m) {
 void Federation::on(FederateHandle from, const wire::CancelNegotiatedDivestiture& m) {
     change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices&) {
         for (auto attr : m.attributes)
-            if (owner_of(obj, attr) == from) obj.divesting.erase(attr);
+            if (obj.ownership.owner(attr) == from) obj.ownership.divesting.erase(attr);
     });
 }
 
@@ -162,7 +153,7 @@ void Federation::on(FederateHandle from, const wire::OwnershipAcquisition& m) {
         if (!f.known.count(m.object)) return;
         notices.tag = m.tag;
         for (const auto& [attr, owner] : acquire_available(from, f, obj, m.attributes, notices)) {
-            auto& waiting = obj.acquirers[attr];
+            auto& waiting = obj.ownership.acquirers[attr];
             if (std::find(waiting.begin(), waiting.end(), from) == waiting.end()) waiting.push_back(from);
             notices.release_requested[owner].push_back(attr);
         }
@@ -184,13 +175,13 @@ void Federation::on(FederateHandle from, const wire::OwnershipAcquisitionIfAvail
 void Federation::on(FederateHandle from, const wire::CancelOwnershipAcquisition& m) {
     change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
         for (auto attr : m.attributes) {
-            auto waiting = obj.acquirers.find(attr);
-            if (waiting == obj.acquirers.end()) continue;
+            auto waiting = obj.ownership.acquirers.find(attr);
+            if (waiting == obj.ownership.acquirers.end()) continue;
             auto& list = waiting->second;
             auto it = std::find(list.begin(), list.end(), from);
             if (it == list.end()) continue;
             list.erase(it);
-            if (list.empty()) obj.acquirers.erase(waiting);
+            if (list.empty()) obj.ownership.acquirers.erase(waiting);
             notices.cancelled[from].push_back(attr);
         }
     });
@@ -202,9 +193,9 @@ wire::Handles Federation::release_response(FederateHandle from, const wire::Rele
     const bool acted =
         change_ownership(from, m.object, m.attributes, [&](ObjectInstance& obj, OwnershipNotices& notices) {
         for (auto attr : m.attributes) {
-            auto waiting = obj.acquirers.find(attr);
-            if (owner_of(obj, attr) != from || waiting == obj.acquirers.end()) continue;
-            obj.divesting.erase(attr);  // the release response itself tells the releasing federate
+            auto waiting = obj.ownership.acquirers.find(attr);
+            if (obj.ownership.owner(attr) != from || waiting == obj.ownership.acquirers.end()) continue;
+            obj.ownership.divesting.erase(attr);  // the release response itself tells the releasing federate
             transfer(obj, attr, waiting->second.front(), notices);
             released.push_back(attr);
         }
@@ -222,13 +213,8 @@ void Federation::on(FederateHandle from, const wire::QueryOwnership& m) {
     wire::OwnershipInformation info;
     info.object = m.object;
     info.attribute = m.attribute;
-    auto owner = obj->owners.find(m.attribute);
-    if (owner == obj->owners.end()) {
-        info.kind = static_cast<std::uint8_t>(wire::OwnershipKind::NotOwned);
-    } else {
-        info.kind = static_cast<std::uint8_t>(wire::OwnershipKind::OwnedByFederate);
-        info.owner = owner->second;
-    }
+    info.owner = obj->ownership.owner(m.attribute);
+    info.kind = static_cast<std::uint8_t>(info.owner ? wire::OwnershipKind::OwnedByFederate : wire::OwnershipKind::NotOwned);
     outbox_.send(from, info);
 }
 

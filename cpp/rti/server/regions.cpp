@@ -139,8 +139,8 @@ bool Federation::discovers(FederateHandle gh, const FederateState& g, ObjectHand
                            const ObjectInstance& obj) const {
     const fom::Handle known = known_class(g, obj.object_class);
     if (known == 0) return false;
-    if (g.subscribed.count(known)) return true;
-    for (const auto& [attr, owner] : obj.owners) {
+    if (g.declarations.subscribed.count(known)) return true;
+    for (const auto& [attr, owner] : obj.ownership.owners) {
         if (owner != gh && region_wanted(g, known, owner, object, attr)) return true;
     }
     return false;
@@ -149,7 +149,7 @@ bool Federation::discovers(FederateHandle gh, const FederateState& g, ObjectHand
 fom::Handle Federation::interaction_receiver(const FederateState& g, fom::Handle cls, const Region* region) const {
     // Received as the nearest class through which it is in scope.
     for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent)
-        if (g.subscribed_interactions.count(c) || g.ddm.subscribed_interaction(c, region)) return c;
+        if (g.declarations.subscribed_interactions.count(c) || g.ddm.subscribed_interaction(c, region)) return c;
     return 0;
 }
 
@@ -162,10 +162,10 @@ std::set<fom::Handle> Federation::scope_of(FederateHandle gh, const FederateStat
     std::set<fom::Handle> scope;
     const fom::Handle known = known_class(g, obj.object_class);
     if (known == 0) return scope;
-    auto plain = g.subscribed.find(known);
-    for (const auto& [attr, owner] : obj.owners) {
+    auto plain = g.declarations.subscribed.find(known);
+    for (const auto& [attr, owner] : obj.ownership.owners) {
         if (owner == gh) continue;
-        if ((plain != g.subscribed.end() && plain->second.count(attr)) || region_wanted(g, known, owner, object, attr))
+        if ((plain != g.declarations.subscribed.end() && plain->second.count(attr)) || region_wanted(g, known, owner, object, attr))
             scope.insert(attr);
     }
     return scope;
@@ -199,25 +199,25 @@ void Federation::refresh_scope() {
     bool scope_wanted = false;
     bool relevance_wanted = false;
     for (auto& [h, f] : federates_) {
-        if (!f.attribute_scope) f.ddm.in_scope.clear();
-        if (!f.attribute_relevance) f.ddm.relevant.clear();
-        scope_wanted = scope_wanted || f.attribute_scope;
-        relevance_wanted = relevance_wanted || f.attribute_relevance;
+        if (!f.declarations.attribute_scope) f.ddm.in_scope.clear();
+        if (!f.declarations.attribute_relevance) f.ddm.relevant.clear();
+        scope_wanted = scope_wanted || f.declarations.attribute_scope;
+        relevance_wanted = relevance_wanted || f.declarations.attribute_relevance;
     }
     if (!scope_wanted && !relevance_wanted) return;
     using Scopes = std::map<ObjectHandle, std::set<fom::Handle>>;
     std::map<FederateHandle, Scopes> relevant;  // owner -> what some other federate has in scope
     for (auto& [gh, g] : federates_) {
-        if (!g.attribute_scope && !relevance_wanted) continue;
+        if (!g.declarations.attribute_scope && !relevance_wanted) continue;
         Scopes now;
         for (ObjectHandle oh : g.known) {
             auto obj = objects_.find(oh);
             if (obj == objects_.end()) continue;
             auto scope = scope_of(gh, g, oh, obj->second);
-            for (auto attr : scope) relevant[obj->second.owners.at(attr)][oh].insert(attr);
+            for (auto attr : scope) relevant[obj->second.ownership.owners.at(attr)][oh].insert(attr);
             if (!scope.empty()) now[oh] = std::move(scope);
         }
-        if (!g.attribute_scope) continue;
+        if (!g.declarations.attribute_scope) continue;
         // No out-of-scope notice for an object removed or forgotten meanwhile.
         const auto& known = g.known;  // C++17 lambdas cannot capture structured bindings (clang refuses)
         send_difference<wire::AttributesOutOfScope>(outbox_, gh, g.ddm.in_scope, now,
@@ -228,15 +228,15 @@ void Federation::refresh_scope() {
     }
     if (!relevance_wanted) return;
     for (auto& [ph, p] : federates_) {
-        if (!p.attribute_relevance) continue;
+        if (!p.declarations.attribute_relevance) continue;
         Scopes& now = relevant[ph];
         // turnUpdatesOff only for attributes the federate still owns.
         const FederateHandle owner_handle = ph;
         auto owned = [&](ObjectHandle oh, fom::Handle attr) {
             auto obj = objects_.find(oh);
             if (obj == objects_.end()) return false;
-            auto owner = obj->second.owners.find(attr);
-            return owner != obj->second.owners.end() && owner->second == owner_handle;
+            auto owner = obj->second.ownership.owners.find(attr);
+            return owner != obj->second.ownership.owners.end() && owner->second == owner_handle;
         };
         send_difference<wire::TurnUpdatesOff>(outbox_, ph, p.ddm.relevant, now, owned);
         send_difference<wire::TurnUpdatesOn>(outbox_, ph, now, p.ddm.relevant,
@@ -248,9 +248,9 @@ void Federation::refresh_scope() {
 void Federation::count_scope_watchers() {
     scope_watchers_ = 0;
     for (auto& [h, f] : federates_) {
-        if (!f.attribute_scope) f.ddm.in_scope.clear();
-        if (!f.attribute_relevance) f.ddm.relevant.clear();
-        if (f.attribute_scope || f.attribute_relevance) ++scope_watchers_;
+        if (!f.declarations.attribute_scope) f.ddm.in_scope.clear();
+        if (!f.declarations.attribute_relevance) f.ddm.relevant.clear();
+        if (f.declarations.attribute_scope || f.declarations.attribute_relevance) ++scope_watchers_;
     }
 }
 

@@ -354,17 +354,17 @@ std::string Federation::encode_snapshot() const {
         FederateRecord r;
         r.handle = h;
         r.name = f.name;
-        r.published = records_of<wire::ClassAttributes>(f.published);
-        r.subscribed = records_of<wire::ClassAttributes>(f.subscribed);
-        r.published_interactions = handles(f.published_interactions);
-        r.subscribed_interactions = handles(f.subscribed_interactions);
+        r.published = records_of<wire::ClassAttributes>(f.declarations.published);
+        r.subscribed = records_of<wire::ClassAttributes>(f.declarations.subscribed);
+        r.published_interactions = handles(f.declarations.published_interactions);
+        r.subscribed_interactions = handles(f.declarations.subscribed_interactions);
         r.known = handles(f.known);
-        r.registration_started = handles(f.registration_started);
-        r.interactions_turned_on = handles(f.interactions_turned_on);
-        r.class_relevance = f.class_relevance;
-        r.interaction_relevance = f.interaction_relevance;
-        r.attribute_relevance = f.attribute_relevance;
-        r.attribute_scope = f.attribute_scope;
+        r.registration_started = handles(f.declarations.registration_started);
+        r.interactions_turned_on = handles(f.declarations.interactions_turned_on);
+        r.class_relevance = f.declarations.class_relevance;
+        r.interaction_relevance = f.declarations.interaction_relevance;
+        r.attribute_relevance = f.declarations.attribute_relevance;
+        r.attribute_scope = f.declarations.attribute_scope;
         r.interaction_order = pairs(f.interaction_order);
         r.interaction_transport = pairs(f.interaction_transport);
         r.time_management = time_.save_state(h);
@@ -381,9 +381,9 @@ std::string Federation::encode_snapshot() const {
         r.handle = oh;
         r.object_class = obj.object_class;
         r.name = obj.name;
-        r.privilege_attribute = obj.privilege_attribute;
-        r.privilege_holder = obj.privilege_holder;
-        r.owners = pairs(obj.owners);
+        r.privilege_attribute = obj.ownership.privilege_attribute;
+        r.privilege_holder = obj.ownership.privilege_holder;
+        r.owners = pairs(obj.ownership.owners);
         r.order = pairs(obj.order);
         r.transport = pairs(obj.transport);
         objects.push_back(std::move(r));
@@ -556,17 +556,17 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
     for (auto& r : snap.federates) {
         FederateState& f = federates_[r.handle];
         f.name = r.name;
-        for (const auto& [cls, attrs] : r.published) f.published[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
-        for (const auto& [cls, attrs] : r.subscribed) f.subscribed[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
-        f.published_interactions.insert(r.published_interactions.begin(), r.published_interactions.end());
-        f.subscribed_interactions.insert(r.subscribed_interactions.begin(), r.subscribed_interactions.end());
+        for (const auto& [cls, attrs] : r.published) f.declarations.published[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        for (const auto& [cls, attrs] : r.subscribed) f.declarations.subscribed[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        f.declarations.published_interactions.insert(r.published_interactions.begin(), r.published_interactions.end());
+        f.declarations.subscribed_interactions.insert(r.subscribed_interactions.begin(), r.subscribed_interactions.end());
         f.known.insert(r.known.begin(), r.known.end());
-        f.registration_started.insert(r.registration_started.begin(), r.registration_started.end());
-        f.interactions_turned_on.insert(r.interactions_turned_on.begin(), r.interactions_turned_on.end());
-        f.class_relevance = r.class_relevance;
-        f.interaction_relevance = r.interaction_relevance;
-        f.attribute_relevance = r.attribute_relevance;
-        f.attribute_scope = r.attribute_scope;
+        f.declarations.registration_started.insert(r.registration_started.begin(), r.registration_started.end());
+        f.declarations.interactions_turned_on.insert(r.interactions_turned_on.begin(), r.interactions_turned_on.end());
+        f.declarations.class_relevance = r.class_relevance;
+        f.declarations.interaction_relevance = r.interaction_relevance;
+        f.declarations.attribute_relevance = r.attribute_relevance;
+        f.declarations.attribute_scope = r.attribute_scope;
         for (const auto& [ic, v] : r.interaction_order) f.interaction_order[ic] = static_cast<fom::Order>(v);
         for (const auto& [ic, v] : r.interaction_transport) f.interaction_transport[ic] = static_cast<fom::Transport>(v);
         for (const auto& m : r.time_management.tso) last_serial[m.sender] = std::max(last_serial[m.sender], m.serial);
@@ -586,9 +586,9 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         ObjectInstance& obj = objects_[r.handle];
         obj.object_class = r.object_class;
         obj.name = r.name;
-        obj.privilege_attribute = r.privilege_attribute;
-        obj.privilege_holder = federates_.count(r.privilege_holder) ? r.privilege_holder : 0;
-        for (const auto& [attr, owner] : r.owners) obj.owners[attr] = owner;
+        obj.ownership.privilege_attribute = r.privilege_attribute;
+        obj.ownership.privilege_holder = federates_.count(r.privilege_holder) ? r.privilege_holder : 0;
+        for (const auto& [attr, owner] : r.owners) obj.ownership.owners[attr] = owner;
         for (const auto& [attr, v] : r.order) obj.order[attr] = static_cast<fom::Order>(v);
         for (const auto& [attr, v] : r.transport) obj.transport[attr] = static_cast<fom::Transport>(v);
         object_names_[r.name] = r.handle;
@@ -607,21 +607,21 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         wire::RestoredState& state = m.state.edit();
         state.time_state = time_.save_state(h).time;
         state.next_serial = last_serial[h];
-        state.published = records_of<wire::ClassAttributes>(f.published);
-        state.subscribed = records_of<wire::ClassAttributes>(f.subscribed);
-        state.published_interactions = handles(f.published_interactions);
-        state.subscribed_interactions = handles(f.subscribed_interactions);
+        state.published = records_of<wire::ClassAttributes>(f.declarations.published);
+        state.subscribed = records_of<wire::ClassAttributes>(f.declarations.subscribed);
+        state.published_interactions = handles(f.declarations.published_interactions);
+        state.subscribed_interactions = handles(f.declarations.subscribed_interactions);
         for (ObjectHandle oh : f.known) {
             const ObjectInstance& obj = objects_.at(oh);
             fom::Handle as = obj.object_class;
-            if (!f.published.count(as)) {
+            if (!f.declarations.published.count(as)) {
                 const fom::Handle subscribed_as = known_class(f, as);
                 if (subscribed_as) as = subscribed_as;
             }
             wire::Handles owned;
-            for (const auto& [attr, owner] : obj.owners)
+            for (const auto& [attr, owner] : obj.ownership.owners)
                 if (owner == h) owned.push_back(attr);
-            state.objects.push_back({oh, as, obj.name, std::move(owned), deleter(obj) == h});
+            state.objects.push_back({oh, as, obj.name, std::move(owned), obj.ownership.deleter() == h});
         }
         put_ddm(f.ddm, state);
         outbox_.send(h, m);
@@ -695,7 +695,7 @@ void Federation::write_save_status(std::string& out) const {
         json_string(out, cls ? cls->qualified_name : std::to_string(obj.object_class));
         out += ",\"owners\":{";
         bool first_owner = true;
-        for (const auto& [attr, owner] : obj.owners) {
+        for (const auto& [attr, owner] : obj.ownership.owners) {
             if (!first_owner) out += ',';
             first_owner = false;
             const auto* a = cls ? cls->attribute(attr) : nullptr;

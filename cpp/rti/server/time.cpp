@@ -11,11 +11,10 @@ using wire::WireError;
 
 // HLA 1.3 §8.1.1: receivers were granted on the regulating sender's bound, so a timestamp below it could
 // land in their past. Clients check this first (InvalidFederationTime); here it is a protocol violation.
-void Federation::check_timestamp(FederateHandle from, const wire::OptionalTime& time, const char* what) const {
-    if (!time) return;
-    if (!std::isfinite(*time)) throw WireError(std::string(what) + " at a timestamp that is not finite");
-    if (time_.may_send(from, *time)) return;
-    throw WireError(std::string(what) + " at timestamp " + time_text(*time) +
+void Federation::check_timestamp(FederateHandle from, double time, const char* what) const {
+    if (!std::isfinite(time)) throw WireError(std::string(what) + " at a timestamp that is not finite");
+    if (time_.may_send(from, time)) return;
+    throw WireError(std::string(what) + " at timestamp " + time_text(time) +
                     " is below the sender's output bound " + time_text(time_.promise(from)) +
                     " (lowest timestamp it may still send)");
 }

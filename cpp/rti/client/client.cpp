@@ -821,15 +821,15 @@ void Client::resign(std::uint8_t action) {
     callbacks_ = CallbackQueue{};  // what the federation sent before the resign: no callback after it
     fom_.reset();
     federate_ = 0;
-    published_.clear();
-    subscribed_.clear();
-    published_interactions_.clear();
-    subscribed_interactions_.clear();
+    declarations_.published.clear();
+    declarations_.subscribed.clear();
+    declarations_.published_interactions.clear();
+    declarations_.subscribed_interactions.clear();
     objects_.clear();
     announced_.clear();
     time_ = TimeState{};
-    save_phase_ = SavePhase::None;
-    restore_phase_ = RestorePhase::None;
+    save_restore_.save = SavePhase::None;
+    save_restore_.restore = RestorePhase::None;
     ddm_ = DdmState{};
 }
 

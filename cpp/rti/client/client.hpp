@@ -243,6 +243,23 @@ public:
 private:
     // The proof of options.federation_secret for `action` on `federation`; empty when there is nothing to prove.
     std::string federation_proof(const char* action, const std::string& federation) const;
+    // What this federate publishes and subscribes to without regions (client/declarations.cpp).
+    struct DeclarationState {
+        std::map<fom::Handle, std::set<fom::Handle>> published;   // object class -> attributes
+        std::map<fom::Handle, std::set<fom::Handle>> subscribed;  // object class -> attributes
+        std::set<fom::Handle> published_interactions;
+        std::set<fom::Handle> subscribed_interactions;
+    };
+    // Where this federate is in a federation save or restore (client/save_restore.cpp).
+    struct SaveRestoreState {
+        enum class SavePhase : std::uint8_t { None, Initiated, Begun, Answered };
+        enum class RestorePhase : std::uint8_t { None, Begun, Initiated, Answered };
+        SavePhase save = SavePhase::None;
+        RestorePhase restore = RestorePhase::None;
+        std::string label;  // of the save under way
+    };
+    using SavePhase = SaveRestoreState::SavePhase;
+    using RestorePhase = SaveRestoreState::RestorePhase;
     struct TimeState {
         Time time = 0;
         Time lookahead = 0;
@@ -417,8 +434,6 @@ private:
     void require_idle(const char* service) const;  // require_joined, then check_not_saving_or_restoring
     void require_no_advance() const;                // TimeAdvanceAlreadyInProgress (client/time.cpp)
     void apply_save_callback(const wire::Message& m);
-    enum class SavePhase : std::uint8_t { None, Initiated, Begun, Answered };
-    enum class RestorePhase : std::uint8_t { None, Begun, Initiated, Answered };
     // The lowest timestamp this federate may send now, and the checks of the sending rule (callers hold mu_).
     Time lowest_sendable() const;
     void check_send_time(const wire::OptionalTime& time) const;
@@ -506,18 +521,14 @@ private:
     // Federate state, under mu_.
     std::unique_ptr<fom::Fom> fom_;
     std::uint32_t federate_ = 0;
-    std::map<fom::Handle, std::set<fom::Handle>> published_;
-    std::map<fom::Handle, std::set<fom::Handle>> subscribed_;
-    std::set<fom::Handle> published_interactions_;
-    std::set<fom::Handle> subscribed_interactions_;
-    std::unordered_map<std::uint32_t, LocalObject> objects_;
-    std::set<std::string> announced_;
-    std::uint64_t serial_ = 0;
+    // One piece of state per service group, each changed in client/<group>.cpp.
+    std::set<std::string> announced_;  // sync_points: the labels announced and not yet synchronized
+    DeclarationState declarations_;
+    std::unordered_map<std::uint32_t, LocalObject> objects_;  // objects, with their ownership
+    std::uint64_t serial_ = 0;                                // objects: the last message serial
     TimeState time_;
-    SavePhase save_phase_ = SavePhase::None;
-    RestorePhase restore_phase_ = RestorePhase::None;
-    std::string save_label_;
-    DdmState ddm_;
+    SaveRestoreState save_restore_;
+    DdmState ddm_;  // regions
 };
 
 }  // namespace hlacore

@@ -29,7 +29,7 @@ void Client::publish_object_class(fom::Handle cls, const std::vector<fom::Handle
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_attributes(defined_object_class(cls), attributes);
-        declare(published_, cls, attributes);
+        declare(declarations_.published, cls, attributes);
         divested = divest_unpublished(cls);
     }
     for (const auto& m : divested) send(m);
@@ -41,7 +41,7 @@ void Client::unpublish_object_class(fom::Handle cls) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         const auto& c = defined_object_class(cls);
-        if (!published_.count(cls))
+        if (!declarations_.published.count(cls))
             raise(ErrorCode::ObjectClassNotPublished, "object class '" + c.qualified_name + "' is not published");
         // HLA 1.3 §5.3: not while this federate waits to acquire attributes of an instance of the class.
         for (const auto& [h, obj] : objects_) {
@@ -50,7 +50,7 @@ void Client::unpublish_object_class(fom::Handle cls) {
                       "an ownership acquisition is pending for object '" + obj.name + "' of class '" +
                           c.qualified_name + "'");
         }
-        published_.erase(cls);
+        declarations_.published.erase(cls);
         divested = divest_unpublished(cls);
     }
     for (const auto& m : divested) send(m);
@@ -60,32 +60,32 @@ void Client::unpublish_object_class(fom::Handle cls) {
 void Client::check(const wire::SubscribeObjectClass& m) {
     // Passive subscriptions (m.active false) only change advisories, which follow any subscription here.
     check_attributes(defined_object_class(m.object_class), m.attributes);
-    declare(subscribed_, m.object_class, m.attributes);
+    declare(declarations_.subscribed, m.object_class, m.attributes);
 }
 
 void Client::check(const wire::UnsubscribeObjectClass& m) {
-    undeclare(subscribed_, defined_object_class(m.object_class), "object class", ErrorCode::ObjectClassNotSubscribed,
+    undeclare(declarations_.subscribed, defined_object_class(m.object_class), "object class", ErrorCode::ObjectClassNotSubscribed,
               "subscribed");
 }
 
 void Client::check(const wire::PublishInteractionClass& m) {
     defined_interaction_class(m.interaction_class);
-    published_interactions_.insert(m.interaction_class);
+    declarations_.published_interactions.insert(m.interaction_class);
 }
 
 void Client::check(const wire::UnpublishInteractionClass& m) {
-    undeclare(published_interactions_, defined_interaction_class(m.interaction_class), "interaction class",
+    undeclare(declarations_.published_interactions, defined_interaction_class(m.interaction_class), "interaction class",
               ErrorCode::InteractionClassNotPublished, "published");
     interaction_transport_.erase(m.interaction_class);  // the gateway forgets the class's transport change too
 }
 
 void Client::check(const wire::SubscribeInteractionClass& m) {
     defined_interaction_class(m.interaction_class);
-    subscribed_interactions_.insert(m.interaction_class);
+    declarations_.subscribed_interactions.insert(m.interaction_class);
 }
 
 void Client::check(const wire::UnsubscribeInteractionClass& m) {
-    undeclare(subscribed_interactions_, defined_interaction_class(m.interaction_class), "interaction class",
+    undeclare(declarations_.subscribed_interactions, defined_interaction_class(m.interaction_class), "interaction class",
               ErrorCode::InteractionClassNotSubscribed, "subscribed");
 }
 

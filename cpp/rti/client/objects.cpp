@@ -9,8 +9,8 @@ std::uint32_t Client::register_object(fom::Handle cls, const std::string& name) 
         std::lock_guard<std::mutex> lock(mu_);
         const auto& c = defined_object_class(cls);
         check_not_saving_or_restoring("registerObjectInstance");
-        auto it = published_.find(cls);
-        if (it == published_.end())
+        auto it = declarations_.published.find(cls);
+        if (it == declarations_.published.end())
             raise(ErrorCode::ObjectClassNotPublished, "object class '" + c.qualified_name + "' is not published");
         owned = it->second;
     }
@@ -61,7 +61,7 @@ std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues
 
 const fom::InteractionClass& Client::check_sendable(fom::Handle cls, const wire::HandleValues& values) const {
     const auto& c = defined_interaction_class(cls);
-    if (!published_interactions_.count(cls))
+    if (!declarations_.published_interactions.count(cls))
         raise(ErrorCode::InteractionClassNotPublished, "interaction class '" + c.qualified_name + "' is not published");
     for (const auto& [param, value] : values) {
         if (!c.parameter(param))
@@ -204,7 +204,7 @@ void Client::change_interaction_delivery(fom::Handle cls, std::uint8_t order, st
     {
         std::lock_guard<std::mutex> lock(mu_);
         const auto& c = defined_interaction_class(cls);
-        if (!published_interactions_.count(cls))
+        if (!declarations_.published_interactions.count(cls))
             raise(ErrorCode::InteractionClassNotPublished,
                   "interaction class '" + c.qualified_name + "' is not published");
         if (transport) interaction_transport_[cls] = static_cast<fom::Transport>(transport);

@@ -77,8 +77,8 @@ void Client::negotiated_divestiture(std::uint32_t object, const std::vector<fom:
 }
 
 bool Client::publishes(const LocalObject& obj, fom::Handle attribute) const {
-    auto pub = published_.find(obj.object_class);
-    return pub != published_.end() && (pub->second.count(attribute) || attribute == obj.privilege_attribute);
+    auto pub = declarations_.published.find(obj.object_class);
+    return pub != declarations_.published.end() && (pub->second.count(attribute) || attribute == obj.privilege_attribute);
 }
 
 std::vector<wire::UnconditionalDivestiture> Client::divest_unpublished(fom::Handle cls) {
@@ -121,7 +121,7 @@ void Client::ownership_acquisition(std::uint32_t object, const std::vector<fom::
     {
         std::lock_guard<std::mutex> lock(mu_);
         LocalObject& obj = ownership_object(object, attributes);
-        check_acquirable(*fom_, published_.count(obj.object_class) > 0,
+        check_acquirable(*fom_, declarations_.published.count(obj.object_class) > 0,
                          [&](fom::Handle a) { return publishes(obj, a); }, obj, attributes);
         obj.acquiring.insert(attributes.begin(), attributes.end());
     }
@@ -133,7 +133,7 @@ void Client::ownership_acquisition_if_available(std::uint32_t object, const std:
     {
         std::lock_guard<std::mutex> lock(mu_);
         LocalObject& obj = ownership_object(object, attributes);
-        check_acquirable(*fom_, published_.count(obj.object_class) > 0,
+        check_acquirable(*fom_, declarations_.published.count(obj.object_class) > 0,
                          [&](fom::Handle a) { return publishes(obj, a); }, obj, attributes);
         for (auto a : attributes)
             if (obj.acquiring.count(a) || obj.acquiring_if_available.count(a))

@@ -103,7 +103,7 @@ bool Client::region_in_use(std::uint32_t region) const {
 // and the restore replaces this federate's regions: a region change made meanwhile would leave the two
 // tables apart (and a later use of the region would get the federate dropped), so it is refused.
 void Client::refuse_region_change_while_restoring(const char* service) const {
-    if (restore_phase_ != RestorePhase::None)
+    if (save_restore_.restore != RestorePhase::None)
         raise(ErrorCode::RestoreInProgress, std::string(service) + " refused: a federation restore is in progress "
                                                                    "(until federationRestored or federationNotRestored)");
 }
@@ -195,8 +195,8 @@ std::uint32_t Client::register_object_with_region(fom::Handle cls,
         std::lock_guard<std::mutex> lock(mu_);
         check_not_saving_or_restoring("registerObjectInstanceWithRegion");
         const auto& c = defined_object_class(cls);
-        auto published = published_.find(cls);
-        if (published == published_.end())
+        auto published = declarations_.published.find(cls);
+        if (published == declarations_.published.end())
             raise(ErrorCode::ObjectClassNotPublished, "object class '" + c.qualified_name + "' is not published");
         for (const auto& [attr, region] : regions) {
             check_attributes(c, {attr});

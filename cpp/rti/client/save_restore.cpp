@@ -27,10 +27,10 @@ void Client::require_idle(const char* service) const {
 }
 
 void Client::check_not_saving_or_restoring(const char* service) const {
-    if (save_phase_ != SavePhase::None)
-        raise(ErrorCode::SaveInProgress, std::string(service) + " refused: the federation save '" + save_label_ +
+    if (save_restore_.save != SavePhase::None)
+        raise(ErrorCode::SaveInProgress, std::string(service) + " refused: the federation save '" + save_restore_.label +
                                              "' is in progress (until federationSaved or federationNotSaved)");
-    if (restore_phase_ != RestorePhase::None)
+    if (save_restore_.restore != RestorePhase::None)
         raise(ErrorCode::RestoreInProgress,
               std::string(service) +
                   " refused: a federation restore is in progress (until federationRestored or federationNotRestored)");
@@ -52,11 +52,11 @@ void Client::request_federation_save(const std::string& label, const wire::Optio
 void Client::federate_save_begun() {
     std::lock_guard<std::mutex> lock(mu_);
     require_joined();
-    if (save_phase_ != SavePhase::Initiated)
-        raise(ErrorCode::SaveNotInitiated, save_phase_ == SavePhase::None
+    if (save_restore_.save != SavePhase::Initiated)
+        raise(ErrorCode::SaveNotInitiated, save_restore_.save == SavePhase::None
                                                ? "no initiateFederateSave was delivered to this federate"
                                                : "federateSaveBegun was already called for this save");
-    save_phase_ = SavePhase::Begun;
+    save_restore_.save = SavePhase::Begun;
 }
 
 // §4.14-4.15.
@@ -64,7 +64,7 @@ void Client::federate_save_complete(bool success) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
-        report_once(save_phase_, save_phase_ == SavePhase::Initiated || save_phase_ == SavePhase::Begun,
+        report_once(save_restore_.save, save_restore_.save == SavePhase::Initiated || save_restore_.save == SavePhase::Begun,
                     ErrorCode::SaveNotInitiated, "no initiateFederateSave was delivered to this federate",
                     "this federate already reported its save");
     }
@@ -86,7 +86,7 @@ void Client::federate_restore_complete(bool success) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
-        report_once(restore_phase_, restore_phase_ == RestorePhase::Initiated, ErrorCode::RestoreNotRequested,
+        report_once(save_restore_.restore, save_restore_.restore == RestorePhase::Initiated, ErrorCode::RestoreNotRequested,
                     "no initiateFederateRestore was delivered to this federate",
                     "this federate already reported its restore");
     }
@@ -95,27 +95,27 @@ void Client::federate_restore_complete(bool success) {
 
 void Client::apply_save_callback(const wire::Message& message) {
     if (const auto* m = std::get_if<wire::InitiateFederateSave>(&message)) {
-        save_phase_ = SavePhase::Initiated;
-        save_label_ = m->label;
+        save_restore_.save = SavePhase::Initiated;
+        save_restore_.label = m->label;
     } else if (std::holds_alternative<wire::FederationSaved>(message)) {
-        save_phase_ = SavePhase::None;
+        save_restore_.save = SavePhase::None;
     } else if (std::holds_alternative<wire::FederationRestoreBegun>(message)) {
-        restore_phase_ = RestorePhase::Begun;
-        save_phase_ = SavePhase::None;
+        save_restore_.restore = RestorePhase::Begun;
+        save_restore_.save = SavePhase::None;
     } else if (std::holds_alternative<wire::FederationRestored>(message)) {
-        restore_phase_ = RestorePhase::None;
+        save_restore_.restore = RestorePhase::None;
     } else if (const auto* m = std::get_if<wire::InitiateFederateRestore>(&message)) {
-        restore_phase_ = RestorePhase::Initiated;
+        save_restore_.restore = RestorePhase::Initiated;
         // The federation as it was saved: this federate's handle, declarations, objects and time state.
         const wire::RestoredState& saved = *m->state;
         federate_ = m->federate;
-        published_.clear();
-        for (const auto& [cls, attrs] : saved.published) published_[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
-        subscribed_.clear();
-        for (const auto& [cls, attrs] : saved.subscribed) subscribed_[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
-        published_interactions_ =
+        declarations_.published.clear();
+        for (const auto& [cls, attrs] : saved.published) declarations_.published[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        declarations_.subscribed.clear();
+        for (const auto& [cls, attrs] : saved.subscribed) declarations_.subscribed[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+        declarations_.published_interactions =
             std::set<fom::Handle>(saved.published_interactions.begin(), saved.published_interactions.end());
-        subscribed_interactions_ =
+        declarations_.subscribed_interactions =
             std::set<fom::Handle>(saved.subscribed_interactions.begin(), saved.subscribed_interactions.end());
         objects_.clear();
         for (const auto& known : saved.objects) {

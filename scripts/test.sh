@@ -18,7 +18,7 @@ mkdir -p build
 .venv/bin/cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHLACORE_SANITIZE=ON -DHLACORE_PYTHON=OFF -DHLACORE_BENCH=ON \
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/asan-configure.log 2>&1 \
     || { cat build/asan-configure.log; exit 1; }
-cmake_build build/asan "the ASan+UBSan rtig the tests run against" rtig tcp_floor
+cmake_build build/asan "the ASan+UBSan rtig the tests run against" rtig tcp_floor state_types_test
 if ./scripts/fuzz.sh --build-only; then
     export HLACORE_TEST_FUZZERS="$PWD/build/fuzz"
 elif [ "${CI:-}" = true ]; then
@@ -26,5 +26,6 @@ elif [ "${CI:-}" = true ]; then
 else
     echo "test.sh: the fuzz targets could not be built; tests/test_fuzz.py will skip" >&2
 fi
-export HLACORE_TEST_RTIG="$PWD/build/asan/rtig" HLACORE_TEST_TCP_FLOOR="$PWD/build/asan/tcp_floor"
+export HLACORE_TEST_RTIG="$PWD/build/asan/rtig" HLACORE_TEST_TCP_FLOOR="$PWD/build/asan/tcp_floor" \
+    HLACORE_TEST_STATE_TYPES="$PWD/build/asan/state_types_test"
 exec .venv/bin/python -m pytest "$@"

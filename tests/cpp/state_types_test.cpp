@@ -1,0 +1,172 @@
+// Unit tests of the gateway's service-group state types (cpp/rti/server/<group>.hpp) on their own, without
+// a federation: regions and their overlap, a federate's DDM state, attribute ownership, save/restore.
+// Built by ./scripts/test.sh (target state_types_test, with the sanitizers) and run by
+// tests/test_state_types.py; prints "ok <case>" per case, exits non-zero at the first failure.
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+
+#include "rti/exceptions.hpp"
+#include "rti/server/ownership.hpp"
+#include "rti/server/regions.hpp"
+#include "rti/server/save_restore.hpp"
+
+using namespace hlacore;
+
+namespace {
+
+int failures = 0;
+
+void check(bool condition, const char* what, int line) {
+    if (condition) return;
+    std::printf("FAILED line %d: %s\n", line, what);
+    ++failures;
+}
+#define CHECK(condition) check((condition), #condition, __LINE__)
+
+// True when `f` throws E whose message contains `text`.
+template <class E>
+bool throws(const std::function<void()>& f, const std::string& text = "") {
+    try {
+        f();
+    } catch (const E& e) {
+        return std::string(e.what()).find(text) != std::string::npos;
+    } catch (...) {
+        return false;
+    }
+    return false;
+}
+
+const char* kFed = R"((FED (Federation T) (FEDversion v1.3)
+ (spaces (space Geo (dimension X) (dimension Y)) (space Point))
+ (objects (class ObjectRoot (attribute privilegeToDelete reliable timestamp) (class RTIprivate)))
+ (interactions (class InteractionRoot reliable receive (class RTIprivate reliable receive)))))";
+
+Region box(const fom::Fom& fom, std::uint32_t x0, std::uint32_t x1, std::uint32_t y0, std::uint32_t y1) {
+    return Region::from_bounds(fom, fom.find_space("Geo")->handle, {x0, x1, y0, y1});
+}
+
+void regions_from_bounds(const fom::Fom& fom) {
+    const fom::Handle geo = fom.find_space("Geo")->handle;
+    const Region r = Region::from_bounds(fom, geo, {0, 5, 10, 20, 7, 9, 1, 1});
+    CHECK(r.space == geo && r.extents.size() == 2 && r.extents[1][1] == Region::Range(1, 1));
+    CHECK(throws<wire::WireError>([&] { Region::from_bounds(fom, 999, {}); }, "not defined in the FOM"));
+    CHECK(throws<wire::WireError>([&] { Region::from_bounds(fom, geo, {0, 5, 1}); }, "do not match the dimensions"));
+    CHECK(throws<wire::WireError>([&] { Region::from_bounds(fom, geo, {}); }, "do not match the dimensions"));
+    CHECK(throws<wire::WireError>([&] { Region::from_bounds(fom, geo, {6, 5, 0, 0}); }, "lower bound above upper"));
+    // A space without dimensions has one extent covering it, and refuses bounds.
+    const fom::Handle point = fom.find_space("Point")->handle;
+    CHECK(Region::from_bounds(fom, point, {}).extents.size() == 1);
+    CHECK(throws<wire::WireError>([&] { Region::from_bounds(fom, point, {0, 1}); }, "has no dimensions"));
+}
+
+void regions_overlap(const fom::Fom& fom) {
+    CHECK(box(fom, 0, 5, 0, 5).overlaps(box(fom, 5, 9, 5, 9)));   // closed ranges: touching overlaps
+    CHECK(!box(fom, 0, 5, 0, 5).overlaps(box(fom, 6, 9, 0, 5)));  // apart in X
+    CHECK(!box(fom, 0, 5, 0, 5).overlaps(box(fom, 0, 5, 6, 9)));  // apart in Y only
+    const fom::Handle geo = fom.find_space("Geo")->handle;
+    const Region two = Region::from_bounds(fom, geo, {0, 1, 0, 1, 8, 9, 8, 9});  // some extent of each is enough
+    CHECK(two.overlaps(box(fom, 9, 9, 9, 9)) && box(fom, 9, 9, 9, 9).overlaps(two));
+    CHECK(!two.overlaps(box(fom, 4, 5, 4, 5)));
+}
+
+void federate_regions(const fom::Fom& fom) {
+    FederateRegions ddm;
+    CHECK(throws<wire::WireError>([&] { ddm.create(0, box(fom, 0, 1, 0, 1)); }, "is 0 or already in use"));
+    ddm.create(7, box(fom, 0, 5, 0, 5));
+    ddm.create(3, box(fom, 6, 9, 6, 9));
+    CHECK(ddm.last_region == 7);
+    CHECK(throws<wire::WireError>([&] { ddm.create(3, box(fom, 0, 1, 0, 1)); }, "already in use"));
+    CHECK(throws<wire::WireError>([&] { ddm.at(4); }, "region 4 is not known"));
+
+    const fom::Handle cls = 10, attr = 20, other_attr = 21, ic = 30;
+    const ObjectHandle object = 40;
+    ddm.object_subscriptions[cls][7] = {attr};
+    ddm.interaction_subscriptions[ic] = {3};
+    ddm.update_regions[object][attr] = 3;
+    CHECK(ddm.update_region(object, attr) == &ddm.at(3));
+    CHECK(ddm.update_region(object, other_attr) == nullptr);  // the default region
+    // Subscribed through region 7: an update in the default region or an overlapping one reaches it.
+    const Region near = box(fom, 5, 6, 5, 6), far = box(fom, 8, 9, 8, 9);
+    CHECK(ddm.subscribed(cls, attr, nullptr) && ddm.subscribed(cls, attr, &near));
+    CHECK(!ddm.subscribed(cls, attr, &far) && !ddm.subscribed(cls, other_attr, nullptr));
+    const Region corner = box(fom, 0, 1, 0, 1);
+    CHECK(ddm.subscribed_interaction(ic, &far) && !ddm.subscribed_interaction(ic, &corner));
+    CHECK(ddm.subscribed_interaction(ic, nullptr) && !ddm.subscribed_interaction(ic + 1, nullptr));
+
+    CHECK(!ddm.unsubscribe(ddm.object_subscriptions, cls, 3));  // nothing through region 3
+    CHECK(throws<wire::WireError>([&] { ddm.unsubscribe(ddm.object_subscriptions, cls, 99); }, "not known"));
+    CHECK(ddm.unsubscribe(ddm.object_subscriptions, cls, 7) && ddm.object_subscriptions.empty());
+
+    // Deleting a region takes what refers to it along.
+    ddm.object_subscriptions[cls][3] = {attr};
+    ddm.erase(3);
+    CHECK(!ddm.regions.count(3) && ddm.object_subscriptions.empty() && ddm.interaction_subscriptions.empty());
+    CHECK(ddm.update_regions[object].empty() && ddm.update_region(object, attr) == nullptr);
+    CHECK(ddm.last_region == 7);  // kept: a restored client never reuses a number
+}
+
+void attribute_ownership() {
+    AttributeOwnership o;
+    CHECK(o.owner(5) == 0 && o.deleter() == 0);
+    o.privilege_holder = 2;  // no privilegeToDelete attribute in the FOM: the registrant may delete
+    CHECK(o.deleter() == 2);
+    o.privilege_attribute = 1;  // with one: its owner may, nobody while it is unowned
+    CHECK(o.deleter() == 0);
+    o.owners[1] = 3;
+    o.owners[5] = 4;
+    CHECK(o.deleter() == 3 && o.owner(5) == 4 && o.owner(6) == 0);
+}
+
+void save_restore_runs() {
+    SaveRestore sr;
+    sr.check_idle("joinFederationExecution");
+    CHECK(!sr.restoring(1) && !sr.time_frozen(2));
+    sr.save.active = true;
+    sr.save.label = "s1";
+    CHECK(throws<RtiError>([&] { sr.check_idle("resignFederationExecution"); }, "save 's1' is in progress"));
+    sr.save.told = {1};
+    CHECK(!sr.time_frozen(2));  // one of two federates still runs
+    sr.save.told.insert(2);
+    CHECK(sr.time_frozen(2));
+    sr.save = SaveRestore::SaveRun{};
+    sr.restore.active = true;
+    sr.restore.label = "s1";
+    sr.restore.answered[1] = true;
+    CHECK(throws<RtiError>([&] { sr.check_idle("requestFederationSave"); }, "restore 's1' is in progress"));
+    CHECK(!sr.restoring(1) && sr.restoring(2) && sr.time_frozen(5));
+    sr.restore.departed(1);
+    CHECK(sr.restore.failed && !sr.restore.answered.count(1));
+}
+
+void save_restore_files() {
+    SaveRestore sr;
+    CHECK(sr.keep("fed", "s", "bytes") && sr.saves.at("s") == "bytes");  // no directory: memory only
+    sr.dir = "/saves";
+    // No label reaches outside the directory; "--" separates the federation from the label.
+    CHECK(sr.file("my fed", "../x") == "/saves/my%20fed--%2E.%2Fx.hlasave");
+    sr.dir = "/proc/hlacore-no-such-dir";  // cannot be created
+    CHECK(!sr.keep("fed", "t", "bytes") && !sr.saves.count("t"));
+    CHECK(sr.error.find("cannot write /proc/hlacore-no-such-dir/fed--t.hlasave") == 0);
+}
+
+}  // namespace
+
+int main() {
+    const fom::Fom fom = fom::parse_fed(kFed, "state_types_test.fed");
+    const std::pair<const char*, std::function<void()>> cases[] = {
+        {"regions_from_bounds", [&] { regions_from_bounds(fom); }},
+        {"regions_overlap", [&] { regions_overlap(fom); }},
+        {"federate_regions", [&] { federate_regions(fom); }},
+        {"attribute_ownership", attribute_ownership},
+        {"save_restore_runs", save_restore_runs},
+        {"save_restore_files", save_restore_files},
+    };
+    for (const auto& [name, run] : cases) {
+        const int before = failures;
+        run();
+        std::printf("%s %s\n", failures == before ? "ok" : "not ok", name);
+    }
+    return failures == 0 ? 0 : 1;
+}

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "gateway_fixture.hpp"
-#include "rti/wire/codec.hpp"
+#include "rti/wire/messages.hpp"
 
 using namespace hlacore;
 using fuzz_fixture::die;

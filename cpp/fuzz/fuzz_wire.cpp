@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "rti/wire/codec.hpp"
+#include "rti/wire/messages.hpp"
 
 using namespace hlacore::wire;
 

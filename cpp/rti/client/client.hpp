@@ -27,7 +27,7 @@
 #include "rti/exceptions.hpp"
 #include "rti/server/time_manager.hpp"
 #include "rti/tls.hpp"
-#include "rti/wire/codec.hpp"
+#include "rti/wire/messages.hpp"
 #include "rti/wire/datagram.hpp"
 
 namespace hlacore {

@@ -20,7 +20,7 @@
 #include "rti/server/save_restore.hpp"
 #include "rti/server/sync_points.hpp"
 #include "rti/server/time_manager.hpp"
-#include "rti/wire/codec.hpp"
+#include "rti/wire/messages.hpp"
 
 namespace hlacore {
 

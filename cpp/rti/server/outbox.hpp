@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rti/wire/codec.hpp"
+#include "rti/wire/messages.hpp"
 
 namespace hlacore {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "rti/wire/codec.hpp"
+#include "rti/wire/messages.hpp"
 
 namespace hlacore::wire {
 

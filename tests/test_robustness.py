@@ -12,6 +12,7 @@ import re
 import signal
 import socket
 import struct
+import threading
 import time
 from dataclasses import dataclass, field
 from typing import Any, Iterator, Optional
@@ -106,12 +107,19 @@ class Cursor:
         return value
 
 
+# The gateway's answers to requests (HLACORE_ANSWERS): a Reply (a request without a result, or any refusal) or
+# the result of the request; FederationJoined and ObjectRegistered carry a handle after the request id.
+ANSWERS = ("Reply", "FederationJoined", "ObjectRegistered", "AttributesReleased", "StatusReport", "TimeQueried")
+WITH_HANDLE = ("FederationJoined", "ObjectRegistered")
+
+
 @dataclass
-class Reply:
+class Answer:
+    kind: str  # its message's name
     request: int
-    error: int
-    message: str
-    handle: int
+    error: int = 0
+    message: str = ""
+    handle: int = 0
 
 
 class RawClient:
@@ -127,7 +135,7 @@ class RawClient:
         self.local = "%s:%d" % self.sock.getsockname()
         self.buffer = b""
         self.request = 0
-        self.skipped: list[tuple[int, bytes]] = []  # frames call() read past while waiting for its Reply
+        self.skipped: list[tuple[int, bytes]] = []  # frames call() read past while waiting for its answer
 
     def close(self) -> None:
         self.sock.close()
@@ -171,20 +179,25 @@ class RawClient:
         assert c.pos == len(payload) and challenge == b""
         return version, server, max_frame
 
-    def call(self, message: str, payload_after_request: bytes) -> Reply:
-        """Send a request-carrying message and read frames until its Reply."""
+    def call(self, message: str, payload_after_request: bytes) -> Answer:
+        """Send a request-carrying message and read frames until its answer."""
         self.request += 1
         request = self.request
         self.send(frame(message, u32(request) + payload_after_request))
         while True:
             code, payload = self.recv_frame()
-            if code != T["Reply"]:
+            kind = MESSAGE_TYPES[code - 1]
+            if kind not in ANSWERS:
                 self.skipped.append((code, payload))
                 continue
             c = Cursor(payload)
-            reply = Reply(c.take("<I"), c.take("<H"), c.string().decode(), c.take("<I"))
-            if reply.request == request:
-                return reply
+            answer = Answer(kind, c.take("<I"))
+            if kind == "Reply":
+                answer.error, answer.message = c.take("<H"), c.string().decode()
+            elif kind in WITH_HANDLE:
+                answer.handle = c.take("<I")
+            if answer.request == request:
+                return answer
 
     def join(self, federate: str, federation: str = "TestFed") -> int:
         self.handshake()
@@ -584,14 +597,15 @@ def test_undefined_handles_drop_and_resign_the_federate(
 @pytest.mark.parametrize(
     "message, payload, why",
     [
-        ("Reply", u32(1) + u16(0) + string("") + u32(0) + string("") + string("") + struct.pack("<d", 0.0), "Reply is not a federation service message"),
+        ("Reply", u32(1) + u16(0) + string(""), "Reply is not a federation service message"),
+        ("ObjectRegistered", u32(1) + u32(7) + string("o"), "ObjectRegistered is not a federation service message"),
         ("Hello", u32(MAGIC) + u16(VERSION), "Hello is not a federation service message"),
         ("InitiateFederateSave", string("s"), "InitiateFederateSave is not a federation service message"),
         ("SetAdvisorySwitch", u8(77) + boolean(True), "unknown advisory switch 77"),
         ("SubscribeInteractionClass", u32(1) + u8(2), "bad boolean in SubscribeInteractionClass message"),
         ("SubscribeObjectClass", u32(1) + u32(0x40000000) + boolean(True), "element count exceeds frame in SubscribeObjectClass"),
     ],
-    ids=["reply", "second-hello", "initiate-save", "advisory-77", "bad-bool", "huge-count"],
+    ids=["reply", "typed-answer", "second-hello", "initiate-save", "advisory-77", "bad-bool", "huge-count"],
 )
 def test_joined_federate_sending_nonsense_is_dropped(
     rtig: RtigProcess, legit: Legit, message: str, payload: bytes, why: str
@@ -896,3 +910,36 @@ def test_pending_regulation_enable_over_the_wire(rtig: RtigProcess, legit: Legit
             }[then]
             assert f"(federate {handle} of 'TestFed'): protocol error: {why}" in line, line
     legit.check_working()
+
+
+# ---- 11. a gateway answering a request with the wrong message ----
+
+
+def test_an_answer_of_the_wrong_type_is_a_protocol_error() -> None:
+    """A gateway answering a join with a bare Reply instead of FederationJoined breaks the protocol: the client
+    closes the connection and the call says why."""
+    with socket.create_server(("127.0.0.1", 0)) as listener:
+
+        def gateway() -> None:
+            conn, _ = listener.accept()
+            with conn, conn.makefile("rb") as incoming:
+                def read() -> tuple[int, bytes]:
+                    length, code = struct.unpack("<IH", incoming.read(6))
+                    return code, incoming.read(length - 2)
+
+                assert read()[0] == T["Hello"]
+                conn.sendall(frame("Welcome", u16(VERSION) + string("fake") + u32(MAX_FRAME) + string("") + u64(0)
+                                   + u32(0) + string("")))
+                code, join = read()
+                assert code == T["JoinFederation"]
+                conn.sendall(frame("Reply", join[:4] + u16(0) + string("")))
+                incoming.read()  # until the client closes
+
+        thread = threading.Thread(target=gateway, daemon=True)
+        thread.start()
+        amb = rti.RTIAmbassador("127.0.0.1:%d" % listener.getsockname()[1])
+        with pytest.raises(rti.RTIinternalError,
+                           match=r"protocol error from the gateway: Reply answered request \d+ \(FederationJoined expected\)"):
+            amb.joinFederationExecution("wrong", "TestFed", rti.FederateAmbassador())
+        thread.join(5)
+        assert not thread.is_alive(), "the client did not close the connection"

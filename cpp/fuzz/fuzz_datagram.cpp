@@ -63,9 +63,11 @@ bool read_until(int fd, std::string& in, Done done) {
     }
 }
 
-bool is_reply(const wire::Message& m, std::uint32_t request) {
-    const auto* reply = std::get_if<wire::Reply>(&m);
-    return reply && reply->request == request;
+// Whether m is an Answer (a typed result, or a Reply) to `request`.
+template <class Answer>
+bool answers(const wire::Message& m, std::uint32_t request) {
+    const auto* answer = std::get_if<Answer>(&m);
+    return answer && answer->request == request;
 }
 }  // namespace
 
@@ -94,10 +96,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     });
     if (!welcomed || token == 0) die("no Welcome with a datagram token");
     out.clear();
-    wire::encode(out, wire::CreateFederation{1, "F", "gateway.fed", fixture.fed_text});
-    wire::encode(out, wire::JoinFederation{2, "d" + std::to_string(counter++), "F"});
+    wire::encode(out, wire::CreateFederation{1, "F", "gateway.fed", fixture.fed_text, ""});
+    wire::encode(out, wire::JoinFederation{2, "d" + std::to_string(counter++), "F", ""});
     send_all(stream, out);
-    if (!read_until(stream, in, [](const wire::Message& m) { return is_reply(m, 2); })) die("the join was refused");
+    bool joined = false;
+    read_until(stream, in, [&](const wire::Message& m) {
+        joined = answers<wire::FederationJoined>(m, 2);
+        return joined || answers<wire::Reply>(m, 2);  // a Reply is a refusal
+    });
+    if (!joined) die("the join was refused");
 
     std::string hello;
     wire::put_datagram_header(hello, token, 0);
@@ -140,7 +147,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     wire::encode(out, wire::QueryStatus{3});
     // The federate may have been dropped for a protocol error in a datagram: then the stream just closes.
     if (::send(stream, out.data(), out.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(out.size()))
-        read_until(stream, in, [](const wire::Message& m) { return is_reply(m, 3); });
+        read_until(stream, in, [](const wire::Message& m) { return answers<wire::StatusReport>(m, 3); });
     ::close(datagrams);
     ::close(stream);
     return 0;

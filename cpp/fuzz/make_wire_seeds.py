@@ -74,8 +74,8 @@ MESSAGES = {
     "RequestObjectUpdate": u32(7) + hs([1]),
     "RequestClassUpdate": u32(1) + hs([1, 2]),
     "SetAdvisorySwitch": u8(1) + b(True),
-    "Reply": u32(3) + u16(0) + s("") + u32(2) + s(FED) + s("robot.fed") + f64(0.0),
-    "Reply-error": u32(3) + u16(34) + s("FederationExecutionDoesNotExist") + u32(0) + s("") + s("") + f64(0.0),
+    "Reply": u32(4) + u16(0) + s(""),
+    "Reply-error": u32(3) + u16(34) + s("FederationExecutionDoesNotExist"),
     "SyncPointRegistrationSucceeded": s("start"),
     "SyncPointRegistrationFailed": s("start"),
     "AnnounceSyncPoint": s("start") + s("tag"),
@@ -120,11 +120,16 @@ MESSAGES = {
     + u32(1) + u32(3) + u32(1) + hs([10, 20, 0, 100]) + u32(1) + u32(2) + u32(3) + hs([1])
     + u32(1) + u32(4) + u32(3) + u32(1) + u32(7) + u32(1) + u32(3) + u32(3),
     "FederationRestored": b(True),
+    "FederationJoined": u32(3) + u32(2) + s(FED) + s("robot.fed"),
+    "ObjectRegistered": u32(5) + u32(7) + s("robot-1"),
+    "AttributesReleased": u32(6) + hs([1, 2]),
+    "StatusReport": u32(1) + s('{"server":"hlacore rtig","federations":[]}'),
+    "TimeQueried": u32(8) + f64(4.5),
 }
 STREAMS = {
     "stream-join-publish-update": ["Hello", "JoinFederation", "PublishObjectClass", "RegisterObject", "UpdateAttributes"],
     "stream-time": ["EnableTimeRegulation", "EnableTimeConstrained", "SendInteraction", "TimeAdvance", "Retract"],
-    "stream-gateway": ["Welcome", "Reply", "DiscoverObject", "ReflectAttributes", "TimeAdvanceGrant"],
+    "stream-gateway": ["Welcome", "FederationJoined", "DiscoverObject", "ReflectAttributes", "TimeAdvanceGrant"],
     "stream-save": ["RequestFederationSave", "FederateSaveComplete", "RequestFederationRestore", "FederateRestoreComplete"],
 }
 

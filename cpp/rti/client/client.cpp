@@ -35,6 +35,15 @@ bool looks_like_tls(const std::string& bytes) {
     return bytes.size() >= 2 && (bytes[0] == 0x16 || bytes[0] == 0x15) && bytes[1] == 0x03;
 }
 
+// The request id an answer of the gateway echoes (HLACORE_ANSWERS); null for any other message.
+const std::uint32_t* answered_request(const wire::Message& m) {
+#define HLACORE_X(name) \
+    if (const auto* answer = std::get_if<wire::name>(&m)) return &answer->request;
+    HLACORE_ANSWERS(HLACORE_X)
+#undef HLACORE_X
+    return nullptr;
+}
+
 }  // namespace
 
 Client::Client(const std::string& host, std::uint16_t port, ClientOptions options)
@@ -450,32 +459,49 @@ std::uint32_t Client::next_request() {
     return ++last_request_;
 }
 
-wire::Reply Client::call(wire::Message request, std::uint32_t id) {
+template <class Result>
+Result Client::call(wire::Message request, std::uint32_t id) {
     std::visit(
         [this](const auto& m) {
             if constexpr (!std::is_same_v<std::decay_t<decltype(m)>, std::monostate>) send(m);
         },
         request);
-    return await_reply(id);
+    return await_reply<Result>(id);
+}
+#define HLACORE_X(name) template wire::name Client::call(wire::Message, std::uint32_t);
+HLACORE_ANSWERS(HLACORE_X)
+#undef HLACORE_X
+
+template <class Result>
+Result Client::await_reply(std::uint32_t id) {
+    wire::Message answer = take_answer(id);
+    if (auto* result = std::get_if<Result>(&answer)) return std::move(*result);
+    const auto got = static_cast<wire::MessageType>(answer.index());  // the variant's index is the wire code
+    close_connection(ErrorCode::RTIinternalError, std::string("protocol error from the gateway: ") +
+                                                      wire::message_name(got) + " answered request " +
+                                                      std::to_string(id) + " (" + wire::message_name(Result::kType) +
+                                                      " expected)");
+    connection_lost();
 }
 
-wire::Reply Client::await_reply(std::uint32_t id) {
+wire::Message Client::take_answer(std::uint32_t id) {
     for (;;) {
         auto status = pump(Clock::time_point::max(), [&] { return replies_.count(id) > 0; });
         if (status == WaitStatus::Interrupted) on_interrupt("the gateway's reply");
         std::unique_lock<std::mutex> lock(mu_);
         auto it = replies_.find(id);
         if (it != replies_.end()) {
-            wire::Reply reply = std::move(it->second);
+            wire::Message answer = std::move(it->second);
             replies_.erase(it);
             lock.unlock();
-            if (reply.error != 0) {
-                const auto code = reply.error < static_cast<std::uint16_t>(ErrorCode::Count)
-                                      ? static_cast<ErrorCode>(reply.error)
+            const auto* refusal = std::get_if<wire::Reply>(&answer);
+            if (refusal && refusal->error != 0) {
+                const auto code = refusal->error < static_cast<std::uint16_t>(ErrorCode::Count)
+                                      ? static_cast<ErrorCode>(refusal->error)
                                       : ErrorCode::RTIinternalError;
-                throw RtiError(code, reply.message);
+                throw RtiError(code, refusal->message);
             }
-            return reply;
+            return answer;
         }
         if (closed_) connection_lost();
     }
@@ -627,8 +653,8 @@ void Client::check_liveness() {
 // Keeps the federate's view current as messages arrive, then queues the callbacks.
 void Client::file(Arrivals& got) {
     for (auto& m : got.stream) {
-        if (auto* r = std::get_if<wire::Reply>(&m)) {
-            replies_[r->request] = std::move(*r);
+        if (const std::uint32_t* request = answered_request(m)) {
+            replies_[*request] = std::move(m);
             continue;
         }
         if (auto* w = std::get_if<wire::Welcome>(&m)) {
@@ -674,7 +700,7 @@ void Client::file(Arrivals& got) {
 
 std::string Client::query_status() {
     const auto id = next_request();
-    return call(wire::QueryStatus{id}, id).text;
+    return call<wire::StatusReport>(wire::QueryStatus{id}, id).json;
 }
 
 void Client::poll_now() { pump(Clock::now(), [] { return false; }); }
@@ -772,16 +798,17 @@ std::uint32_t Client::join(const std::string& federate, const std::string& feder
         if (fom_) raise(ErrorCode::FederateAlreadyExecutionMember, "this ambassador is already joined");
     }
     const auto id = next_request();
-    wire::Reply reply = call(wire::JoinFederation{id, federate, federation, federation_proof("join", federation)}, id);
-    auto parsed = std::make_unique<fom::Fom>(fom::parse_fed(reply.text, reply.text2));
+    auto joined = call<wire::FederationJoined>(
+        wire::JoinFederation{id, federate, federation, federation_proof("join", federation)}, id);
+    auto parsed = std::make_unique<fom::Fom>(fom::parse_fed(joined.fed_text, joined.fed_name));
     {
         auto sending = lock_send();
         member_ = true;
     }
     std::lock_guard<std::mutex> lock(mu_);
     fom_ = std::move(parsed);
-    federate_ = reply.handle;
-    return reply.handle;
+    federate_ = joined.federate;
+    return joined.federate;
 }
 
 void Client::resign(std::uint8_t action) {

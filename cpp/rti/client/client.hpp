@@ -346,8 +346,13 @@ private:
     void write_send_buffer();  // under send_mu_
     void wait_writable(std::size_t sent);  // under send_mu_: the gateway is not reading (yet)
     void read_beside_send();
-    wire::Reply call(wire::Message request, std::uint32_t request_id);
-    wire::Reply await_reply(std::uint32_t request_id);  // the reply's error code raised as its exception
+    // Sends a request and waits for its answer, a Result (HLACORE_ANSWERS; client.cpp instantiates them). A
+    // refusal raises its exception; an answer of another type closes the connection as a protocol error.
+    template <class Result = wire::Reply>
+    Result call(wire::Message request, std::uint32_t request_id);
+    template <class Result = wire::Reply>
+    Result await_reply(std::uint32_t request_id);
+    wire::Message take_answer(std::uint32_t request_id);  // waits for it; raises a refusal
     std::uint32_t next_request();
     // Reads the socket until pred() holds (checked under mu_), the deadline passes or a signal arrives.
     template <class Pred>
@@ -515,7 +520,7 @@ private:
         std::size_t next_ = 0;
     };
     CallbackQueue callbacks_;
-    std::map<std::uint32_t, wire::Reply> replies_;
+    std::map<std::uint32_t, wire::Message> replies_;  // the answers (HLACORE_ANSWERS) by request id
     std::uint32_t last_request_ = 0;
 
     // Federate state, under mu_.

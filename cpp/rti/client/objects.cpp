@@ -15,10 +15,10 @@ std::uint32_t Client::register_object(fom::Handle cls, const std::string& name) 
         owned = it->second;
     }
     const auto id = next_request();
-    wire::Reply reply = call(wire::RegisterObject{id, cls, name}, id);
+    auto registered = call<wire::ObjectRegistered>(wire::RegisterObject{id, cls, name}, id);
     std::lock_guard<std::mutex> lock(mu_);
-    add_registered(reply.handle, cls, reply.text, std::move(owned));
-    return reply.handle;
+    add_registered(registered.object, cls, registered.name, std::move(owned));
+    return registered.object;
 }
 
 void Client::add_registered(std::uint32_t object, fom::Handle cls, const std::string& name, std::set<fom::Handle> owned) {

@@ -2,7 +2,6 @@
 // against the federate's view of each object; the gateway decides the transfers. What this federate owns
 // changes when a notification callback is popped (as time state does in client/time.cpp), or at once
 // when a call gives attributes up (unconditional divestiture, release response).
-#include <sstream>
 
 #include "rti/client/client.hpp"
 
@@ -155,10 +154,8 @@ std::vector<fom::Handle> Client::release_response(std::uint32_t object, const st
         });
     }
     const auto id = next_request();
-    wire::Reply reply = call(wire::ReleaseResponse{id, object, attributes}, id);
-    std::vector<fom::Handle> released;
-    std::istringstream in(reply.text);
-    for (fom::Handle a; in >> a;) released.push_back(a);
+    std::vector<fom::Handle> released =
+        call<wire::AttributesReleased>(wire::ReleaseResponse{id, object, attributes}, id).attributes;
     std::lock_guard<std::mutex> lock(mu_);
     auto it = objects_.find(object);
     if (it != objects_.end()) {

@@ -210,11 +210,13 @@ std::uint32_t Client::register_object_with_region(fom::Handle cls,
         owned = published->second;
     }
     const auto id = next_request();
-    wire::Reply reply = call(wire::RegisterObjectWithRegion{id, cls, name, attributes, region_handles}, id);
+    auto registered =
+        call<wire::ObjectRegistered>(wire::RegisterObjectWithRegion{id, cls, name, attributes, region_handles}, id);
     std::lock_guard<std::mutex> lock(mu_);
-    add_registered(reply.handle, cls, reply.text, std::move(owned));
-    for (std::size_t i = 0; i < attributes.size(); ++i) ddm_.update_regions[reply.handle][attributes[i]] = region_handles[i];
-    return reply.handle;
+    add_registered(registered.object, cls, registered.name, std::move(owned));
+    for (std::size_t i = 0; i < attributes.size(); ++i)
+        ddm_.update_regions[registered.object][attributes[i]] = region_handles[i];
+    return registered.object;
 }
 
 void Client::check(const wire::AssociateRegion& m) {

@@ -228,7 +228,8 @@ Time Client::query_lbts() {
         require_joined();
     }
     const auto id = next_request();
-    return call(wire::QueryTime{id, static_cast<std::uint8_t>(wire::TimeQuery::Lbts)}, id).value;
+    const auto which = static_cast<std::uint8_t>(wire::TimeQuery::Lbts);
+    return call<wire::TimeQueried>(wire::QueryTime{id, which}, id).time;
 }
 
 Time Client::query_min_next_event_time() {
@@ -237,7 +238,8 @@ Time Client::query_min_next_event_time() {
         require_joined();
     }
     const auto id = next_request();
-    return call(wire::QueryTime{id, static_cast<std::uint8_t>(wire::TimeQuery::MinNextEventTime)}, id).value;
+    const auto which = static_cast<std::uint8_t>(wire::TimeQuery::MinNextEventTime);
+    return call<wire::TimeQueried>(wire::QueryTime{id, which}, id).time;
 }
 
 void Client::set_asynchronous_delivery(bool on) {

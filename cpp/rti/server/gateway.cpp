@@ -528,16 +528,16 @@ void Gateway::on_request(Connection& c, const wire::Message& message) {
 
 template <class F>
 void Gateway::answer(Connection& c, std::uint32_t request, F&& serve_request) {
-    wire::Reply r;
     try {
-        r = serve_request();
+        if constexpr (std::is_void_v<decltype(serve_request())>) {
+            serve_request();
+            wire::encode(output(c), wire::Reply{request, 0, ""});
+        } else {
+            wire::encode(output(c), serve_request());
+        }
     } catch (const RtiError& e) {
-        r = wire::Reply{};
-        r.error = static_cast<std::uint16_t>(e.code());
-        r.message = e.what();
+        wire::encode(output(c), wire::Reply{request, static_cast<std::uint16_t>(e.code()), e.what()});
     }
-    r.request = request;
-    wire::encode(output(c), r);
     mark_dirty(c);
 }
 
@@ -605,7 +605,6 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
             std::make_unique<FederationEntry>(*this, m.federation, std::move(fom), m.fed_name, std::move(text));
         entry->federation.set_save_dir(options_.save_dir);
         if (options_.verbose) log("created federation '" + m.federation + "' from " + source);
-        return wire::Reply{};
     });
 }
 
@@ -620,7 +619,6 @@ void Gateway::serve(Connection& c, const wire::DestroyFederation& m) {
                                                                     " federate(s) still joined to '" + m.federation + "'");
         federations_.erase(it);
         if (options_.verbose) log("destroyed federation '" + m.federation + "'");
-        return wire::Reply{};
     });
 }
 
@@ -640,7 +638,7 @@ void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
         c.federation = entered = &entry;
         c.federate = h;
         entry.outbox.peers_[h] = &c;
-        return wire::Reply{0, 0, "", h, entry.federation.fed_text(), entry.federation.fed_name(), 0};
+        return wire::FederationJoined{m.request, h, entry.federation.fed_text(), entry.federation.fed_name()};
     });
     if (!entered) return;
     entered->federation.announce_pending(c.federate);  // after the reply: the client is joined by then
@@ -657,30 +655,26 @@ void Gateway::serve(Connection& c, const wire::ResignFederation& m) {
         c.federation->outbox.peers_.erase(c.federate);
         c.federation = nullptr;
         c.federate = 0;
-        return wire::Reply{};
     });
 }
 
 void Gateway::serve(Connection& c, const wire::RegisterObject& m) {
     answer(c, m.request, [&] {
         auto [handle, name] = joined(c).register_object(c.federate, m.object_class, m.name);
-        return wire::Reply{0, 0, "", handle, std::move(name), "", 0};
+        return wire::ObjectRegistered{m.request, handle, std::move(name)};
     });
 }
 
 void Gateway::serve(Connection& c, const wire::RegisterObjectWithRegion& m) {
     answer(c, m.request, [&] {
         auto [handle, name] = joined(c).register_object_with_region(c.federate, m);
-        return wire::Reply{0, 0, "", handle, std::move(name), "", 0};
+        return wire::ObjectRegistered{m.request, handle, std::move(name)};
     });
 }
 
 // Save/restore requests (HLA 1.3 §4.11, §4.17): the outcome comes as callbacks, refusals in the Reply.
 void Gateway::serve(Connection& c, const wire::RequestFederationSave& m) {
-    answer(c, m.request, [&] {
-        joined(c).request_save(c.federate, m.label, m.time);
-        return wire::Reply{};
-    });
+    answer(c, m.request, [&] { joined(c).request_save(c.federate, m.label, m.time); });
 }
 
 void Gateway::serve(Connection& c, const wire::RequestFederationRestore& m) {
@@ -688,18 +682,12 @@ void Gateway::serve(Connection& c, const wire::RequestFederationRestore& m) {
         Federation& federation = joined(c);
         federation.request_restore(c.federate, m.label);
         if (options_.verbose) log("federation '" + federation.name() + "' restore '" + m.label + "' requested");
-        return wire::Reply{0, 0, "", c.federate, "", "", 0};
     });
 }
 
 void Gateway::serve(Connection& c, const wire::ReleaseResponse& m) {
     answer(c, m.request, [&] {
-        std::string released;
-        for (auto attr : joined(c).release_response(c.federate, m)) {
-            if (!released.empty()) released += ' ';
-            released += std::to_string(attr);
-        }
-        return wire::Reply{0, 0, "", 0, std::move(released), "", 0};
+        return wire::AttributesReleased{m.request, joined(c).release_response(c.federate, m)};
     });
 }
 
@@ -717,7 +705,7 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
         json += "],\"datagrams\":";
         write_datagram_status(json);
         json += '}';
-        return wire::Reply{0, 0, "", 0, std::move(json), "", 0};
+        return wire::StatusReport{m.request, std::move(json)};
     });
 }
 
@@ -740,8 +728,7 @@ void Gateway::serve(Connection& c, const wire::Ping& m) {
 
 void Gateway::serve(Connection& c, const wire::QueryTime& m) {
     answer(c, m.request, [&] {
-        const double value = joined(c).query_time(c.federate, static_cast<wire::TimeQuery>(m.which));
-        return wire::Reply{0, 0, "", 0, "", "", value};
+        return wire::TimeQueried{m.request, joined(c).query_time(c.federate, static_cast<wire::TimeQuery>(m.which))};
     });
 }
 

@@ -115,7 +115,8 @@ private:
 #undef HLACORE_X
     template <class M>
     void serve(Connection& c, const M& m);  // any other message: the joined federate's federation handles it
-    // Sends the Reply serve_request() returns, or the RtiError it throws as an error Reply.
+    // Answers `request` with the result serve_request() returns (a Reply when it returns nothing), or with
+    // the RtiError it throws as an error Reply.
     template <class F>
     void answer(Connection& c, std::uint32_t request, F&& serve_request);
     Federation& joined(const Connection& c) const;  // throws FederateNotExecutionMember

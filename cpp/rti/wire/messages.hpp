@@ -30,8 +30,9 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // 2: initiateFederateRestore's nested records; 3: its SavedTime; 4: Welcome's frame limit, Ping and Pong;
 // 5: Welcome's challenge, Authenticate and Authenticated; 6: ClockProbe and ClockEcho; 7: Welcome's datagram
 // token and size limit, DatagramHello and DatagramPath; 8: Welcome's nonce, the federation proofs of
-// CreateFederation, DestroyFederation and JoinFederation
-constexpr std::uint16_t kProtocolVersion = 8;
+// CreateFederation, DestroyFederation and JoinFederation; 9: a typed answer per request with a result
+// (FederationJoined ... TimeQueried), Reply only for the others and for refusals
+constexpr std::uint16_t kProtocolVersion = 9;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -160,15 +161,26 @@ using OptionalTime = std::optional<double>;
     X(ClockEcho)                     \
     /* best effort over UDP (wire/datagram.hpp): a datagram each way, then federate -> gateway */ \
     X(DatagramHello)                 \
-    X(DatagramPath)
+    X(DatagramPath)                  \
+    /* the results of requests: gateway -> federate (a refusal is a Reply) */ \
+    X(FederationJoined)              \
+    X(ObjectRegistered)              \
+    X(AttributesReleased)            \
+    X(StatusReport)                  \
+    X(TimeQueried)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
-// answered with a Reply. Each has a `Gateway::serve(Connection&, const M&)` in cpp/rti/server/gateway.cpp,
-// declared from this list.
+// answered with a Reply or a result. Each has a `Gateway::serve(Connection&, const M&)` in
+// cpp/rti/server/gateway.cpp, declared from this list.
 #define HLACORE_GATEWAY_SERVICES(X)                                                                    \
     X(CreateFederation) X(DestroyFederation) X(JoinFederation) X(ResignFederation) X(RegisterObject)   \
     X(RegisterObjectWithRegion) X(RequestFederationSave) X(RequestFederationRestore) X(ReleaseResponse) \
     X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate) X(ClockProbe) X(DatagramPath)
+
+// The gateway's answers to requests, each echoing the request's id in `request`: a Reply, or the result of a
+// request that has one. The client files them apart from callbacks, for the caller waiting on that id.
+#define HLACORE_ANSWERS(X) \
+    X(Reply) X(FederationJoined) X(ObjectRegistered) X(AttributesReleased) X(StatusReport) X(TimeQueried)
 
 // The requests of a joined federate that its Federation serves, by service group: each has a handler
 // `Federation::on(FederateHandle, const M&)` in cpp/rti/server/<group>.cpp, declared from this list.
@@ -317,7 +329,7 @@ struct Pong {
     HLACORE_FIELDS(sequence)
 };
 
-// ---- federate -> gateway; `request` ids are echoed in the Reply ----
+// ---- federate -> gateway; `request` ids are echoed in the answer (HLACORE_ANSWERS) ----
 struct CreateFederation {
     HLACORE_TYPE(CreateFederation)
     std::uint32_t request = 0;
@@ -510,8 +522,7 @@ struct QueryTime {
     HLACORE_FIELDS(request, which)
 };
 
-// Answered with a Reply whose text is the gateway's state as JSON (see docs/time-management.md);
-// allowed before joining, so that `rtig --status` can ask.
+// Answered with a StatusReport; allowed before joining, so that `rtig --status` can ask.
 struct QueryStatus {
     HLACORE_TYPE(QueryStatus)
     std::uint32_t request = 0;
@@ -519,16 +530,47 @@ struct QueryStatus {
 };
 
 // ---- gateway -> federate ----
+// The answer to a request without a result, and the refusal (error != 0) of any request.
 struct Reply {
     HLACORE_TYPE(Reply)
     std::uint32_t request = 0;
     std::uint16_t error = 0;  // ErrorCode, 0 = success
     std::string message;      // the exception's reason when error != 0
-    std::uint32_t handle = 0;  // join: federate handle; register: object handle
-    std::string text;          // join: FED text; register: object name
-    std::string text2;         // join: FED file name
-    double value = 0;          // time queries
-    HLACORE_FIELDS(request, error, message, handle, text, text2, value)
+    HLACORE_FIELDS(request, error, message)
+};
+// The results of requests, one message each.
+struct FederationJoined {  // JoinFederation
+    HLACORE_TYPE(FederationJoined)
+    std::uint32_t request = 0;
+    std::uint32_t federate = 0;  // the joined federate's handle
+    std::string fed_text;        // the federation's FED file, which the client parses
+    std::string fed_name;        // its name, as given at creation
+    HLACORE_FIELDS(request, federate, fed_text, fed_name)
+};
+struct ObjectRegistered {  // RegisterObject, RegisterObjectWithRegion
+    HLACORE_TYPE(ObjectRegistered)
+    std::uint32_t request = 0;
+    std::uint32_t object = 0;
+    std::string name;  // as asked, or the one the gateway picked
+    HLACORE_FIELDS(request, object, name)
+};
+struct AttributesReleased {  // ReleaseResponse: the attributes actually released
+    HLACORE_TYPE(AttributesReleased)
+    std::uint32_t request = 0;
+    Handles attributes;
+    HLACORE_FIELDS(request, attributes)
+};
+struct StatusReport {  // QueryStatus: the gateway's state as JSON (what `rtig --status` prints, hlacore/status.py)
+    HLACORE_TYPE(StatusReport)
+    std::uint32_t request = 0;
+    std::string json;
+    HLACORE_FIELDS(request, json)
+};
+struct TimeQueried {  // QueryTime
+    HLACORE_TYPE(TimeQueried)
+    std::uint32_t request = 0;
+    double time = 0;
+    HLACORE_FIELDS(request, time)
 };
 struct SyncPointRegistrationSucceeded {
     HLACORE_TYPE(SyncPointRegistrationSucceeded)
@@ -684,8 +726,7 @@ struct CancelOwnershipAcquisition {
     Handles attributes;
     HLACORE_FIELDS(object, attributes)
 };
-// Answered with a Reply whose text lists the attributes actually released, as decimal handles
-// separated by spaces.
+// Answered with AttributesReleased.
 struct ReleaseResponse {
     HLACORE_TYPE(ReleaseResponse)
     std::uint32_t request = 0;
@@ -948,7 +989,7 @@ struct DeleteRegion {
     std::uint32_t region = 0;
     HLACORE_FIELDS(region)
 };
-// Answered like RegisterObject; attributes[i] is associated with regions[i] for this federate's updates
+// Answered like RegisterObject (ObjectRegistered); attributes[i] is associated with regions[i] for this federate's updates
 // before the instance is discovered by anyone.
 struct RegisterObjectWithRegion {
     HLACORE_TYPE(RegisterObjectWithRegion)
@@ -1053,6 +1094,9 @@ struct TurnUpdatesOff {
 using Message = std::variant<std::monostate HLACORE_MESSAGES(HLACORE_X)>;
 #undef HLACORE_X
 
+// Each queued callback and filed answer takes this much: a large message keeps its fields on the heap
+// (Boxed) rather than growing every one (144 bytes with libstdc++ on 64 bits, CreateFederation's).
+static_assert(sizeof(Message) <= 144, "wire::Message grew: box the large message's fields");
 
 // ---- the codec ----
 //

@@ -105,7 +105,7 @@ template <class M>
 void Federation::handle(FederateHandle from, const M& message) {
     if (!std::is_same_v<M, wire::FederateRestoreComplete> && save_restore_.restoring(from)) return;
     on(from, message);
-    refresh_scope();
+    if (scope_watchers_ != 0) refresh_scope();  // an attribute scope or relevance advisory switch is on
 }
 template void Federation::handle(FederateHandle, const std::monostate&);
 #define HLACORE_X(name) template void Federation::handle(FederateHandle, const wire::name&);

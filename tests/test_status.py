@@ -37,7 +37,7 @@ def test_status_reports_each_federates_time_state(inprocess_gateway: hlacore.Gat
     a.sendInteraction(command, {value: b"x"}, "", 7.0)
     a.timeAdvanceRequest(3.0)  # waits: beta's bound is 2
     report = inprocess_gateway.status()
-    assert report["server"] == "hlacore rtig"
+    assert report["server"] == "hlacore rtig" and report["tls"] is False
     (federation,) = report["federations"]
     assert federation["name"] == "TestFed" and federation["fed"] == ROBOT_FED
     alpha, beta = federation["federates"]

@@ -291,7 +291,9 @@ def test_the_status_over_tls(tls_rtig: RtigProcess, certs: Certificates, monkeyp
     table = subprocess.run([sys.executable, "-m", "hlacore.status", "--tls-ca", str(certs.cert), tls_rtig.address],
                            capture_output=True, text=True, timeout=30)
     assert table.returncode == 0 and f"federation {FEDERATION}" in table.stdout, table.stderr
-    assert [f["name"] for f in status(tls_rtig.address, tls=certs.cert)["federations"]] == [FEDERATION]
+    assert f"at {tls_rtig.address} (TLS): " in table.stdout
+    report = status(tls_rtig.address, tls=certs.cert)
+    assert report["tls"] is True and [f["name"] for f in report["federations"]] == [FEDERATION]
     monkeypatch.setenv("HLACORE_TLS", str(certs.cert))
     assert status(tls_rtig.address)["datagrams"]["port"] is None
 

@@ -25,16 +25,16 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
            tls: Optional[bool | str | os.PathLike[str]] = None) -> dict[str, Any]:
     """The gateway's report as a dict; ``address`` as for :class:`hlacore.rti.RTIAmbassador`.
 
-    ``{"server", "address", "connections", "federations": [{"name", "fed", "objects", "sync_points",
+    ``{"server", "address", "tls", "connections", "federations": [{"name", "fed", "objects", "sync_points",
     "federates": [{"handle", "name", "time", "lookahead", "regulating", "enabling_regulation", "constrained",
     "asynchronous_delivery", "pending": None | {"request": "TAR"|"TARA"|"NER"|"NERA"|"FQR", "time"},
     "queued_tso", "queued_ro", "regions", "lbts", "output_bound"}]}], "datagrams": {"port" (None: no
     datagrams), "max_datagram", "stray", "federates": [{"federation", "federate", "path", "counts": {"sent",
     "send_failed", "oversize", "received", "lost", "reordered", "duplicates", "held_back", "early"}}]}}``
-    ("regions": how many the federate has, docs/ddm.md; "datagrams": best effort over UDP,
-    docs/networking.md, sent/failed/oversize towards each federate and received/lost/reordered from it).
-    On the wire infinite times are null; here
-    they are ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A gateway with a
+    ("tls": whether every connection is encrypted, docs/networking.md; "regions": how many the federate has,
+    docs/ddm.md; "datagrams": best effort over UDP, docs/networking.md, sent/failed/oversize towards each
+    federate and received/lost/reordered from it). On the wire infinite times are null; here they are
+    ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A gateway with a
     secret asks for it here too: ``secret_file``, else ``$HLACORE_SECRET_FILE``; a gateway with TLS needs
     ``tls`` (else ``$HLACORE_TLS``) as :class:`hlacore.rti.RTIAmbassador` takes it.
     """
@@ -60,7 +60,8 @@ def format_table(report: dict[str, Any], width: int = 80) -> str:
     (R/C: regulating, constrained; TSO/RO: messages queued for it in timestamp and receive order)."""
     names = [f["name"] for fed in report["federations"] for f in fed["federates"]]
     name_width = max(8, min(max(map(len, names), default=8), width - _FIXED_COLUMNS))
-    lines = [f"{report['server']} at {report['address']}: {report['connections']} connection(s), "
+    encrypted = " (TLS)" if report.get("tls") else ""
+    lines = [f"{report['server']} at {report['address']}{encrypted}: {report['connections']} connection(s), "
              f"{len(report['federations'])} federation(s)"]
     for fed in report["federations"]:
         points = ", ".join(fed["sync_points"]) or "none"

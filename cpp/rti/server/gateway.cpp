@@ -695,6 +695,7 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
     answer(c, m.request, [&] {
         std::string json = "{\"server\":\"hlacore rtig\",\"address\":";
         json_string(json, options_.host + ":" + std::to_string(port_));
+        json += tls_ ? ",\"tls\":true" : ",\"tls\":false";
         json += ",\"connections\":" + std::to_string(connections_.size()) + ",\"federations\":[";
         bool first = true;
         for (auto& [name, entry] : federations_) {

@@ -137,6 +137,10 @@ PYBIND11_MODULE(_core, m) {
 
     bind_fed(m);
 
+    // The bounds of the gateway's options, which hlacore.Gateway checks (server/gateway.hpp).
+    m.attr("MIN_CLIENT_BUDGET") = hlacore::kMinClientBudget;
+    m.attr("MAX_FRAME_RANGE") = py::make_tuple(hlacore::kMinMaxFrame, hlacore::kMaxMaxFrame);
+    m.attr("MAX_DATAGRAM_RANGE") = py::make_tuple(hlacore::kMinMaxDatagram, hlacore::wire::kMaxDatagramLimit);
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
                       std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t,

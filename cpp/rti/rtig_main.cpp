@@ -145,12 +145,12 @@ int main(int argc, char** argv) {
         } else if (arg == "--frame-timeout") {
             options.partial_frame_timeout_s = number("--frame-timeout", 0, false);
         } else if (arg == "--client-budget") {
-            options.client_budget = static_cast<std::size_t>(number("--client-budget", 65536, true));
+            options.client_budget = static_cast<std::size_t>(number("--client-budget", hlacore::kMinClientBudget, true));
         } else if (arg == "--stall-timeout") {
             options.stall_timeout_s = number("--stall-timeout", 0, true);
         } else if (arg == "--max-frame") {
-            const double v = number("--max-frame", 65536, true);
-            if (v > (1u << 30)) {
+            const double v = number("--max-frame", hlacore::kMinMaxFrame, true);
+            if (v > hlacore::kMaxMaxFrame) {
                 std::fprintf(stderr, "rtig: invalid --max-frame '%s'\n", argv[i]);
                 return usage(2);
             }

@@ -43,12 +43,12 @@ class Gateway:
     """
 
     #: The smallest ``client_budget`` in bytes (a smaller one raises :class:`ValueError`).
-    MIN_CLIENT_BUDGET = 65536
+    MIN_CLIENT_BUDGET: int = _core.MIN_CLIENT_BUDGET
     #: The bounds of ``max_frame`` in bytes, both included.
-    MAX_FRAME_RANGE = (65536, 1 << 30)
+    MAX_FRAME_RANGE: tuple[int, int] = _core.MAX_FRAME_RANGE
     #: The bounds of ``max_datagram`` in bytes, both included, when it is not 0 (65507: the largest UDP payload
     #: over IPv4).
-    MAX_DATAGRAM_RANGE = (256, 65507)
+    MAX_DATAGRAM_RANGE: tuple[int, int] = _core.MAX_DATAGRAM_RANGE
 
     def __init__(
         self,

@@ -72,7 +72,11 @@ struct GatewayOptions {
     std::string tls_cert;
     std::string tls_key;
 };
-// The smallest max_datagram (or 0) a gateway takes: room for a header and a small message.
+// The bounds of the options (rtig's arguments and hlacore.Gateway check them; both included). The smallest
+// max_datagram (or 0) leaves room for a header and a small message.
+constexpr std::size_t kMinClientBudget = 65536;
+constexpr std::uint32_t kMinMaxFrame = 65536;
+constexpr std::uint32_t kMaxMaxFrame = 1u << 30;
 constexpr std::uint32_t kMinMaxDatagram = 256;
 
 class Gateway {

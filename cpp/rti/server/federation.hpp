@@ -1,6 +1,6 @@
-// One federation execution as the gateway sees it: joined federates, their declarations, object
-// instances and their owners, synchronization points. Pure state, no I/O: messages for federates are
-// encoded into buffers handed out by an Outbox.
+// One federation execution as the gateway sees it: the coordinator of the joined federates and of one
+// state type per service group (server/<group>.hpp), whose handlers (server/<group>.cpp) route each request
+// between them. Pure state, no I/O: messages for federates are encoded into buffers handed out by an Outbox.
 #pragma once
 
 #include <map>

@@ -122,6 +122,7 @@ void attribute_ownership() {
 void save_restore_runs() {
     SaveRestore sr;
     sr.check_idle("joinFederationExecution");
+    sr.check_not_restoring();
     CHECK(!sr.restoring(1) && !sr.time_frozen(2));
     sr.save.active = true;
     sr.save.label = "s1";
@@ -135,6 +136,7 @@ void save_restore_runs() {
     sr.restore.label = "s1";
     sr.restore.answered[1] = true;
     CHECK(throws<RtiError>([&] { sr.check_idle("requestFederationSave"); }, "restore 's1' is in progress"));
+    CHECK(throws<RtiError>([&] { sr.check_not_restoring(); }, "the federation restore 's1' is in progress"));
     CHECK(!sr.restoring(1) && sr.restoring(2) && sr.time_frozen(5));
     sr.restore.departed(1);
     CHECK(sr.restore.failed && !sr.restore.answered.count(1));

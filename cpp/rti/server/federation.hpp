@@ -216,7 +216,6 @@ private:
     // Delivers frames held during a save or restore: receive-order ones as deliver_receive_order would.
     void deliver_held(FederateHandle to, std::vector<std::string>& frames);
     void save_restore_departed(FederateHandle federate);
-    void check_not_restoring(FederateHandle federate) const;
     void write_save_status(std::string& json) const;
 
     std::string name_;

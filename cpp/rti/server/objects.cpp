@@ -13,7 +13,7 @@ std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle 
                                                                  const std::string& requested_name) {
     const auto& cls = object_class(cls_handle);
     auto& f = federate(h);
-    check_not_restoring(h);
+    save_restore_.check_not_restoring();
     auto pub = f.declarations.published.find(cls_handle);
     if (pub == f.declarations.published.end())
         throw RtiError(ErrorCode::ObjectClassNotPublished, "object class '" + cls.qualified_name + "' is not published");

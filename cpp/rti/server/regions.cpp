@@ -132,6 +132,8 @@ const Region* Federation::update_region(FederateHandle owner, ObjectHandle objec
 
 bool Federation::region_wanted(const FederateState& g, fom::Handle known, FederateHandle owner, ObjectHandle object,
                                fom::Handle attribute) const {
+    // Without region subscriptions (no DDM in use) this is one test, and the owner is not looked up.
+    if (g.ddm.object_subscriptions.empty()) return false;
     return g.ddm.subscribed(known, attribute, update_region(owner, object, attribute));
 }
 

@@ -197,6 +197,11 @@ void SaveRestore::check_idle(const char* service) const {
                        std::string(service) + " refused: the federation restore '" + restore.label + "' is in progress");
 }
 
+void SaveRestore::check_not_restoring() const {
+    if (restore.active)
+        throw RtiError(ErrorCode::RestoreInProgress, "the federation restore '" + restore.label + "' is in progress");
+}
+
 std::string SaveRestore::file(const std::string& federation, const std::string& label) const {
     return dir + "/" + file_component(federation) + "--" + file_component(label) + ".hlasave";
 }
@@ -223,12 +228,6 @@ bool SaveRestore::keep(const std::string& federation, const std::string& label, 
 // ---- requests ----
 
 void Federation::check_membership_change(const char* service) const { save_restore_.check_idle(service); }
-
-void Federation::check_not_restoring(FederateHandle) const {
-    if (save_restore_.restore.active)
-        throw RtiError(ErrorCode::RestoreInProgress,
-                       "the federation restore '" + save_restore_.restore.label + "' is in progress");
-}
 
 // HLA 1.3 §4.11.
 void Federation::request_save(FederateHandle from, const std::string& label, const wire::OptionalTime& time) {

@@ -42,6 +42,8 @@ public:
 
     // SaveInProgress or RestoreInProgress, naming `service`, while a save or a restore runs.
     void check_idle(const char* service) const;
+    // RestoreInProgress while a restore runs (registering an object: the restore replaces the objects).
+    void check_not_restoring() const;
     // While a restore runs, what a federate sends before its federateRestoreComplete is dropped.
     bool restoring(FederateHandle from) const { return restore.active && !restore.answered.count(from); }
     // Grants and deliveries wait while every one of the `joined` federates saves or restores.

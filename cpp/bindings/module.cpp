@@ -24,7 +24,7 @@ public:
                       const std::string& save_dir, std::string trace_path, std::size_t client_budget,
                       double stall_timeout, std::uint32_t max_frame, const std::string& secret_file,
                       std::uint32_t max_datagram, const std::map<std::string, std::string>& federation_secret_files,
-                      const std::string& tls_cert, const std::string& tls_key) {
+                      const std::string& tls_cert, const std::string& tls_key, std::string record_path) {
         GatewayOptions options;
         options.tls_cert = tls_cert;  // loaded by the Gateway: RuntimeError saying why, ValueError for one alone
         options.tls_key = tls_key;
@@ -41,6 +41,7 @@ public:
         options.fom_path = std::move(fom_path);
         options.verbose = verbose;
         options.trace_path = std::move(trace_path);
+        options.record_path = std::move(record_path);
         gateway_ = std::make_unique<Gateway>(options);
         thread_ = std::thread([this] { gateway_->run(); });
     }
@@ -144,14 +145,15 @@ PYBIND11_MODULE(_core, m) {
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
                       std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t,
-                      const std::map<std::string, std::string>&, const std::string&, const std::string&>(),
+                      const std::map<std::string, std::string>&, const std::string&, const std::string&,
+                      std::string>(),
              py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
              py::arg("trace_path") = "", py::arg("client_budget") = hlacore::GatewayOptions{}.client_budget,
              py::arg("stall_timeout") = hlacore::GatewayOptions{}.stall_timeout_s,
              py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes, py::arg("secret_file") = "",
              py::arg("max_datagram") = hlacore::GatewayOptions{}.max_datagram,
              py::arg("federation_secret_files") = std::map<std::string, std::string>{}, py::arg("tls_cert") = "",
-             py::arg("tls_key") = "", py::call_guard<py::gil_scoped_release>())
+             py::arg("tls_key") = "", py::arg("record_path") = "", py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)
         .def_property_readonly("port", &BackgroundGateway::port)

@@ -23,7 +23,7 @@ int usage(int status) {
                  "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--client-budget B]\n"
                  "            [--stall-timeout S] [--max-frame B] [--max-datagram B] [--secret-file FILE | --no-secret]\n"
                  "            [--federation-secret NAME=FILE]... [--tls-cert FILE --tls-key FILE] [--save-dir DIR]\n"
-                 "            [--trace FILE] [--verbose]\n"
+                 "            [--trace FILE] [--record FILE] [--verbose]\n"
                  "       rtig [--secret-file FILE] [--tls | --tls-ca FILE] --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
@@ -59,6 +59,9 @@ int usage(int status) {
                  "                     there, also after a restart; without it saves live in memory only\n"
                  "  --trace FILE       write when each update/interaction arrived and each reflection of it left,\n"
                  "                     on the host's monotonic clock, as CSV (docs/robot.md, delay decomposition)\n"
+                 "  --record FILE      record every federation into FILE (MCAP): the FOM, joins, registrations,\n"
+                 "                     updates, interactions, requests and callbacks with their times, for\n"
+                 "                     python -m hlacore.replay and Foxglove (docs/record-replay.md)\n"
                  "  --verbose          log connections, joins and federations to stderr\n"
                  "  --status           print the state of a running rtig (default 127.0.0.1:60400) as JSON:\n"
                  "                     per federation each federate's time, lookahead, regulating/constrained,\n"
@@ -203,6 +206,12 @@ int main(int argc, char** argv) {
             }
         } else if (arg == "--trace") {
             options.trace_path = value("--trace");
+        } else if (arg == "--record") {
+            options.record_path = value("--record");
+            if (options.record_path.empty()) {
+                std::fprintf(stderr, "rtig: --record needs a file\n");
+                return usage(2);
+            }
         } else if (arg == "--verbose" || arg == "-v") {
             options.verbose = true;
         } else if (arg == "--status") {

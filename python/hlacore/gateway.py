@@ -24,6 +24,9 @@ class Gateway:
     by a later gateway; without it saves are kept in memory only (docs/save-restore.md).
     ``trace`` names a CSV file for the message trace (``rtig --trace``): when each update and interaction
     arrived and each reflection of it left, on the host's monotonic clock (read by ``hlacore.trace``).
+    ``record`` names an MCAP file to record every federation of the gateway into (``rtig --record``), read by
+    :mod:`hlacore.recording`, replayed by ``python -m hlacore.replay`` (docs/record-replay.md); it is complete
+    once the gateway stops.
     ``client_budget`` and ``stall_timeout`` are ``rtig --client-budget`` and ``--stall-timeout``, the flow
     control of docs/robustness.md: the bytes the gateway holds for one client (its output queue and the
     messages time management keeps for it) above which the clients sending to it are no longer read until
@@ -66,6 +69,7 @@ class Gateway:
         federation_secrets: Optional[Mapping[str, str | os.PathLike[str]]] = None,
         tls_cert: Optional[str | os.PathLike[str]] = None,
         tls_key: Optional[str | os.PathLike[str]] = None,
+        record: Optional[str | os.PathLike[str]] = None,
     ) -> None:
         if client_budget < self.MIN_CLIENT_BUDGET:
             raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
@@ -89,7 +93,8 @@ class Gateway:
                                                 max_datagram,
                                                 {name: os.fspath(path) for name, path in (federation_secrets or {}).items()},
                                                 self._tls_cert or "",
-                                                os.fspath(tls_key) if tls_key is not None else "")
+                                                os.fspath(tls_key) if tls_key is not None else "",
+                                                os.fspath(record) if record is not None else "")
 
     @property
     def host(self) -> str:

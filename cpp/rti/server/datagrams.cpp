@@ -6,7 +6,7 @@
 #include "rti/server/connection.hpp"
 #include "rti/server/gateway.hpp"
 #include "rti/auth.hpp"
-#include "rti/server/status.hpp"
+#include "rti/wire/json.hpp"
 
 #include <cerrno>
 #include <cstring>

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace hlacore {
@@ -21,6 +22,21 @@ Federation::Federation(std::string name, fom::Fom fom, std::string fed_name, std
       fed_name_(std::move(fed_name)),
       fed_text_(std::move(fed_text)),
       outbox_(outbox) {}
+
+const std::string& Federation::federate_name(FederateHandle federate) const {
+    static const std::string none;
+    auto it = federates_.find(federate);
+    return it == federates_.end() ? none : it->second.name;
+}
+
+const ObjectInstance* Federation::object(ObjectHandle object) const {
+    auto it = objects_.find(object);
+    return it == objects_.end() ? nullptr : &it->second;
+}
+
+double Federation::federate_time(FederateHandle federate) const {
+    return federates_.count(federate) ? time_.federate_time(federate) : std::numeric_limits<double>::quiet_NaN();
+}
 
 FederateHandle Federation::join(const std::string& federate_name) {
     for (const auto& [h, f] : federates_) {

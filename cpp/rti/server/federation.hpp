@@ -55,6 +55,11 @@ public:
     // some federate is waiting to acquire.
     wire::Handles release_response(FederateHandle federate, const wire::ReleaseResponse& m);
 
+    // What the recording (server/recorder.cpp) names things by: "" and null for handles that name nothing.
+    const std::string& federate_name(FederateHandle federate) const;
+    const ObjectInstance* object(ObjectHandle object) const;
+    double federate_time(FederateHandle federate) const;
+
     // LBTS or the minimum next event time of a federate (HLA 1.3 §8.16, §8.18).
     double query_time(FederateHandle federate, wire::TimeQuery which);
     // Appends this federation's state as a JSON object (federates, time state, objects, sync points).

@@ -1,7 +1,7 @@
 #include "rti/server/gateway.hpp"
 #include "rti/auth.hpp"
 #include "rti/server/connection.hpp"
-#include "rti/server/status.hpp"
+#include "rti/wire/json.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -96,6 +96,7 @@ struct Gateway::FederationEntry {
         : outbox(gw), federation(std::move(name), std::move(fom), std::move(fed_name), std::move(fed_text), outbox) {}
     ConnectionOutbox outbox;
     Federation federation;
+    std::unique_ptr<FederationRecording> recording;  // when the gateway records: what its outbox sends
 };
 
 namespace {
@@ -212,9 +213,18 @@ Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
     // Datagrams are neither encrypted nor signed: under TLS best effort goes over the encrypted stream.
     if (options_.max_datagram && !tls_) open_datagrams(bound, len);
     if (!options_.trace_path.empty()) trace_ = std::make_unique<MessageTrace>(options_.trace_path);
+    if (!options_.record_path.empty()) recorder_ = std::make_unique<Recorder>(options_.record_path);
 }
 
 Gateway::~Gateway() {
+    if (recorder_) {
+        try {
+            recorder_->close();
+        } catch (const std::exception& e) {
+            log(std::string("the recording is incomplete: ") + e.what());
+        }
+        recorder_failed();
+    }
     for (auto& [fd, c] : connections_) ::close(fd);
     if (listen_fd_ >= 0) ::close(listen_fd_);
     if (datagram_fd_ >= 0) ::close(datagram_fd_);
@@ -235,7 +245,9 @@ void Gateway::run() {
             partial_pending |= c->in.size() > c->in_offset || !c->greeted;
             writes_pending |= c->write_armed;
         }
-        const auto& events = loop_.wait(partial_pending || writes_pending || !paused_.empty() ? 250 : -1);
+        const bool recording_pending = recorder_ && recorder_->pending();  // written out within half a second
+        const auto& events =
+            loop_.wait(partial_pending || writes_pending || !paused_.empty() || recording_pending ? 250 : -1);
         for (const epoll_event& ev : events) {
             const int fd = ev.data.fd;
             if (fd == wake_fd_) {
@@ -266,6 +278,20 @@ void Gateway::run() {
         if (partial_pending) drop_stale_partials();
         if (writes_pending) drop_stalled_readers();
         if (trace_) trace_->flush();
+        if (recorder_) {
+            recorder_->tick();
+            recorder_failed();
+        }
+    }
+}
+
+void Gateway::recorder_failed() {
+    if (recorder_->failure().empty()) return;
+    log("recording stopped: " + recorder_->failure());
+    recorder_.reset();
+    for (auto& [name, entry] : federations_) {
+        entry->outbox.recorder = nullptr;
+        entry->recording.reset();
     }
 }
 
@@ -523,6 +549,7 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
 // The one dispatcher of the gateway process: each message goes to the overload of serve() for its type.
 // Requests with a result are served here; everything else a joined federate sends goes to its federation.
 void Gateway::on_request(Connection& c, const wire::Message& message) {
+    if (recorder_ && c.federation) recorder_->request(c.federation->federation, c.federate, message);
     std::visit([&](const auto& m) { serve(c, m); }, message);
 }
 
@@ -533,10 +560,16 @@ void Gateway::answer(Connection& c, std::uint32_t request, F&& serve_request) {
             serve_request();
             wire::encode(output(c), wire::Reply{request, 0, ""});
         } else {
-            wire::encode(output(c), serve_request());
+            const auto result = serve_request();
+            if constexpr (std::is_same_v<std::decay_t<decltype(result)>, wire::ObjectRegistered>) {
+                if (recorder_ && c.federation) recorder_->answered(c.federation->federation, c.federate, result);
+            }
+            wire::encode(output(c), result);
         }
     } catch (const RtiError& e) {
-        wire::encode(output(c), wire::Reply{request, static_cast<std::uint16_t>(e.code()), e.what()});
+        const wire::Reply refusal{request, static_cast<std::uint16_t>(e.code()), e.what()};
+        if (recorder_ && c.federation) recorder_->answered(c.federation->federation, c.federate, refusal);
+        wire::encode(output(c), refusal);
     }
     mark_dirty(c);
 }
@@ -604,6 +637,11 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
         auto& entry = federations_[m.federation] =
             std::make_unique<FederationEntry>(*this, m.federation, std::move(fom), m.fed_name, std::move(text));
         entry->federation.set_save_dir(options_.save_dir);
+        if (recorder_) {
+            entry->recording = std::make_unique<FederationRecording>(*recorder_, entry->federation);
+            entry->outbox.recorder = entry->recording.get();
+            recorder_->created(entry->federation);
+        }
         if (options_.verbose) log("created federation '" + m.federation + "' from " + source);
     });
 }
@@ -641,6 +679,7 @@ void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
         return wire::FederationJoined{m.request, h, entry.federation.fed_text(), entry.federation.fed_name()};
     });
     if (!entered) return;
+    if (recorder_) recorder_->joined(entered->federation, c.federate);
     entered->federation.announce_pending(c.federate);  // after the reply: the client is joined by then
     if (trace_) trace_->joined(m.federation, c.federate, m.federate, c.read_ns);
     if (options_.verbose)
@@ -996,6 +1035,7 @@ void Gateway::close(int fd, const std::string& why) {
         FederationEntry& entry = *c->federation;
         who += " (federate " + std::to_string(c->federate) + " of '" + entry.federation.name() + "')";
         entry.outbox.peers_.erase(c->federate);
+        if (recorder_) recorder_->dropped(entry.federation, c->federate, why);
         try {
             // A federate that vanishes resigns with the default action: its objects go, the rest is released.
             entry.federation.resign(c->federate, wire::ResignAction::DeleteObjectsAndReleaseAttributes);

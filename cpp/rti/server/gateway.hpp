@@ -17,6 +17,7 @@
 
 #include "rti/server/federation.hpp"
 #include "rti/tls.hpp"
+#include "rti/server/recorder.hpp"
 #include "rti/trace.hpp"
 #include "rti/wire/datagram.hpp"
 
@@ -63,6 +64,7 @@ struct GatewayOptions {
     // (auth::federation_proof), whatever the connection's secret.
     std::map<std::string, std::string> federation_secrets;
     std::string trace_path;  // non-empty: write the message trace there (trace.hpp)
+    std::string record_path;  // non-empty: record every federation there (server/recorder.hpp)
     // Best effort over UDP, on the same port (server/datagrams.cpp, docs/networking.md): the largest datagram
     // either side sends; larger best-effort messages go over TCP. 0: no datagrams, everything over TCP.
     std::uint32_t max_datagram = wire::kDefaultMaxDatagram;
@@ -175,6 +177,8 @@ private:
     std::vector<int> paused_;
     int over_budget_ = -1;  // a client found over its budget while the current frame was served
     std::unique_ptr<MessageTrace> trace_;
+    std::unique_ptr<Recorder> recorder_;
+    void recorder_failed();  // logs why the recording stopped, once
     int datagram_fd_ = -1;
     std::unordered_map<std::uint64_t, int> datagram_tokens_;  // token -> connection descriptor
     std::uint64_t stray_datagrams_ = 0;  // not hlacore datagrams, unknown tokens, from the wrong address

@@ -100,6 +100,7 @@ void Federation::deliver_receive_order(FederateHandle to, const M& message) {
         outbox_.send(to, message);
         return;
     }
+    outbox_.record(to, message);
     time_.enqueue_receive_order(to, held_frame(message));
     outbox_.held(to);
 }
@@ -107,6 +108,7 @@ void Federation::deliver_receive_order(FederateHandle to, const M& message) {
 template <class M>
 void Federation::deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender,
                                          std::uint64_t serial, double time) {
+    outbox_.record(to, message);
     TsoMessage queued{time, sender, serial, held_frame(message)};
     time_.enqueue_tso(to, std::move(queued));
     outbox_.held(to);

@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "rti/wire/messages.hpp"
@@ -18,6 +19,19 @@ using ObjectHandle = std::uint32_t;
 // Shortest text that reads back as the same double, for error messages.
 std::string time_text(double t);
 
+// Whoever records the callbacks a federation sends (server/recorder.hpp).
+class CallbackRecorder {
+public:
+    virtual ~CallbackRecorder() = default;
+    virtual void callback(FederateHandle to, const wire::Message& message) = 0;
+};
+
+// The callbacks a recording keeps: all but reflections and received interactions, whose content it has
+// from their sender's request.
+template <class M>
+constexpr bool kRecordedCallback =
+    !std::is_same_v<M, wire::ReflectAttributes> && !std::is_same_v<M, wire::ReceiveInteraction>;
+
 // Where a federation writes the frames it sends: the output buffer of a federate's connection.
 class Outbox {
 public:
@@ -29,10 +43,17 @@ public:
         if (holding) {  // a save or restore is under way: see server/save_restore.cpp
             auto held = holding->find(federate);
             if (held != holding->end()) {
+                record(federate, message);
                 wire::encode(held->second.emplace_back(), message);
                 return;
             }
         }
+        send_unheld(federate, message);
+    }
+    // What is never held back by a save or restore: time management's releases, the save's own callbacks.
+    template <class M>
+    void send_unheld(FederateHandle federate, const M& message) {
+        record(federate, message);
         wire::encode(buffer(federate), message);
     }
     void send_frame(FederateHandle federate, const std::string& frame) { buffer(federate).append(frame); }
@@ -62,6 +83,16 @@ public:
     // While set, what send() would write for a federate with an entry here is kept there instead (the
     // federate is saving or restoring); buffer() and send_frame() are not held.
     std::map<FederateHandle, std::vector<std::string>>* holding = nullptr;
+    // Set while the gateway records its federations (rtig --record).
+    CallbackRecorder* recorder = nullptr;
+    // Hands a callback to the recorder, if any: send() does; time management calls it for the callbacks it
+    // queues (recorded when queued, not when released).
+    template <class M>
+    void record(FederateHandle federate, const M& message) {
+        if constexpr (kRecordedCallback<M>) {
+            if (recorder) recorder->callback(federate, message);
+        }
+    }
 };
 
 }  // namespace hlacore

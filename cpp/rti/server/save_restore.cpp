@@ -14,7 +14,7 @@
 // being replaced.
 #include "rti/server/save_restore.hpp"
 #include "rti/server/federation.hpp"
-#include "rti/server/status.hpp"
+#include "rti/wire/json.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -264,7 +264,7 @@ void Federation::tell_savers() {
             (time_.advancing(h) || time_.federate_time(h) < *save_restore_.save.time))
             continue;
         save_restore_.save.told.insert(h);
-        wire::encode(outbox_.buffer(h), wire::InitiateFederateSave{save_restore_.save.label});
+        outbox_.send_unheld(h, wire::InitiateFederateSave{save_restore_.save.label});
         save_restore_.save.held[h];  // from now on, what is sent to h waits
     }
 }

@@ -4,36 +4,9 @@
 #include <cstdio>
 
 #include "rti/server/federation.hpp"
-#include "rti/server/status.hpp"
+#include "rti/wire/json.hpp"
 
 namespace hlacore {
-
-void json_string(std::string& out, const std::string& s) {
-    out += '"';
-    for (unsigned char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += static_cast<char>(c);
-        } else if (c < 0x20) {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-            out += escaped;
-        } else {
-            out += static_cast<char>(c);
-        }
-    }
-    out += '"';
-}
-
-void json_number(std::string& out, double v) {
-    if (!std::isfinite(v)) {
-        out += "null";
-        return;
-    }
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    out += text;
-}
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Synchronization points (HLA 1.3 §4.6-4.10).
 #include "rti/server/sync_points.hpp"
 
-#include "rti/server/status.hpp"
+#include "rti/wire/json.hpp"
 
 namespace hlacore {
 

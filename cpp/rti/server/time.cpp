@@ -32,14 +32,14 @@ void Federation::release_time() {
     // In the order of TimeManager::Release: messages below a new time precede the callback announcing it.
     for (auto& r : time_.release()) {
         if (!federates_.count(r.federate)) continue;
-        if (r.constrained_enabled) wire::encode(outbox_.buffer(r.federate), wire::TimeConstrainedEnabled{*r.constrained_enabled});
+        if (r.constrained_enabled) outbox_.send_unheld(r.federate, wire::TimeConstrainedEnabled{*r.constrained_enabled});
         outbox_.send_frames(r.federate, r.frames);
         if (r.regulation_enabled) {
-            wire::encode(outbox_.buffer(r.federate), wire::TimeRegulationEnabled{*r.regulation_enabled});
+            outbox_.send_unheld(r.federate, wire::TimeRegulationEnabled{*r.regulation_enabled});
             forget_retractable(r.federate, *r.regulation_enabled);
         }
         if (r.grant) {
-            wire::encode(outbox_.buffer(r.federate), wire::TimeAdvanceGrant{*r.grant});
+            outbox_.send_unheld(r.federate, wire::TimeAdvanceGrant{*r.grant});
             forget_retractable(r.federate, *r.grant);
         }
     }

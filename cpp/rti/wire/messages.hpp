@@ -234,15 +234,18 @@ enum class MessageType : std::uint16_t { HLACORE_LIST_CODES(Invalid, HLACORE_MES
 const char* message_name(MessageType type);
 
 // Declares the fields in wire order, for the codec to visit (const and mutable).
+// Their names, comma-separated, are for the recording's JSON (rti/wire/json.hpp).
 #define HLACORE_FIELDS(...)                                  \
+    static constexpr const char* kFieldNames = #__VA_ARGS__; \
     template <class F>                                       \
     void fields(F&& f) { f(__VA_ARGS__); }                   \
     template <class F>                                       \
     void fields(F&& f) const { f(__VA_ARGS__); }
-#define HLACORE_NO_FIELDS()              \
-    template <class F>                   \
-    void fields(F&&) {}                  \
-    template <class F>                   \
+#define HLACORE_NO_FIELDS()                        \
+    static constexpr const char* kFieldNames = ""; \
+    template <class F>                             \
+    void fields(F&&) {}                            \
+    template <class F>                             \
     void fields(F&&) const {}
 #define HLACORE_TYPE(name) static constexpr MessageType kType = MessageType::name;
 

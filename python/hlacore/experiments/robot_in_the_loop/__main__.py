@@ -51,11 +51,20 @@ def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
                              "(a link emulator's address: docs/networking.md)")
     parser.add_argument("--robot-netns", metavar="NAME", default=None,
                         help="run the Robot Federate in this network namespace (ip netns exec NAME)")
+    parser.add_argument("--record", metavar="FILE", type=pathlib.Path, default=None,
+                        help="record the run into FILE (MCAP; with --rtig, give rtig --record instead): "
+                             "docs/record-replay.md")
+    parser.add_argument("--replay-robot", metavar="FILE", type=pathlib.Path, default=None,
+                        help="replay the Robot Federate from the recording FILE instead of running it")
     parser.add_argument("--out", type=pathlib.Path, default=None,
                         help="output folder (default ./robot-experiment-<UTC time>)")
     args = parser.parse_args(argv)
     if args.gateway_trace is not None and args.rtig is None:
         parser.error("--gateway-trace goes with --rtig (the in-process gateway writes its own trace)")
+    if args.record is not None and args.rtig is not None:
+        parser.error("--record goes with the in-process gateway: start rtig with --record FILE instead")
+    if args.replay_robot is not None and (args.miscalibrated or args.best_effort):
+        parser.error("--replay-robot replays the recorded robot: its calibration and mode are the recording's")
     if args.cycles < 1:
         parser.error("--cycles must be at least 1")
     out = args.out or pathlib.Path(f"robot-experiment-{datetime.datetime.now(datetime.timezone.utc):%Y%m%d-%H%M%S}")
@@ -63,7 +72,8 @@ def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
                              miscalibrated=args.miscalibrated, best_effort=args.best_effort, cycles=args.cycles,
                              time_scale=args.time_scale, precision=args.precision, federation=args.federation,
                              gateway_trace=args.gateway_trace, robot_rtig=args.robot_rtig,
-                             robot_prefix=("ip", "netns", "exec", args.robot_netns) if args.robot_netns else ())
+                             robot_prefix=("ip", "netns", "exec", args.robot_netns) if args.robot_netns else (),
+                             record=args.record, replay_robot=args.replay_robot)
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:

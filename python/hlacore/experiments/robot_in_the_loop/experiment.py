@@ -57,6 +57,10 @@ class ExperimentOptions:
     # link emulator's, say) and what its command runs through (["ip", "netns", "exec", NAME]).
     robot_rtig: Optional[str] = None
     robot_prefix: tuple[str, ...] = ()
+    # Record the run (MCAP, docs/record-replay.md) with the in-process gateway; with rtig, use its --record.
+    record: Optional[pathlib.Path] = None
+    # Replay the Robot Federate from this recording instead of running it (no robot process, no device).
+    replay_robot: Optional[pathlib.Path] = None
 
 
 @dataclass
@@ -70,17 +74,23 @@ class Experiment:
 
 
 @contextlib.contextmanager
-def _gateway(address: Optional[str], trace: pathlib.Path) -> Iterator[str]:
+def _gateway(address: Optional[str], trace: pathlib.Path, record: Optional[pathlib.Path]) -> Iterator[str]:
     if address is not None:
+        if record is not None:
+            raise ValueError("record a run through rtig with its --record option")
         yield address
         return
     from hlacore.gateway import Gateway
 
-    with Gateway(port=0, trace=trace) as gateway:
+    with Gateway(port=0, trace=trace, record=record) as gateway:
         yield str(gateway.address)
 
 
 def _robot_command(options: ExperimentOptions, address: str, scenario_path: pathlib.Path) -> list[str]:
+    if options.replay_robot is not None:
+        return [*options.robot_prefix, sys.executable, "-m", "hlacore.replay", str(options.replay_robot),
+                "--as", "robot", "--rtig", options.robot_rtig or address, "--federation", options.federation,
+                "--timeout", repr(options.timeout)]
     command = [
         *options.robot_prefix, sys.executable, "-m", "hlacore.federates.robot_driver",
         "--rtig", options.robot_rtig or address,
@@ -109,9 +119,12 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
     # Best effort: the model keeps the pace of a straight cell (2 simulated seconds per cycle).
     pace = max(2.0 * options.time_scale, 0.01) if options.best_effort else None
     trace = out / "gateway-trace.csv" if options.rtig is None else options.gateway_trace
-    with _gateway(options.rtig, out / "gateway-trace.csv") as address:
+    if options.replay_robot is not None:
+        calibration = f"replayed from {options.replay_robot}"
+    with _gateway(options.rtig, out / "gateway-trace.csv", options.record) as address:
         write(f"gateway {address} ({'in-process' if options.rtig is None else 'rtig'}); "
-              f"{calibration} robot, {mode} mode, {options.cycles} cycles; output in {out}")
+              f"{calibration} robot, {mode} mode, {options.cycles} cycles; output in {out}"
+              + (f"; recording {options.record}" if options.record else ""))
         director = HlaDirector.join("testbench", options.federation, fom, address=address, mode="TAR",
                                     step=1.0, lookahead=options.latency, grant_timeout=options.timeout)
         testbench = Testbench(director, Scenario.load(stimulus), options.cycles, options.latency,

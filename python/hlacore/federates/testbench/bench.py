@@ -42,6 +42,8 @@ class ArrivalClock(rti.FederateAmbassador):
         self.inner = inner
         self.reflected_at: dict[int, float] = {}
         self.discovered: list[str] = []
+        #: Every reflection, in order: its timestamp (None in receive order) and values by attribute handle.
+        self.reflections: list[tuple[Optional[float], tuple[tuple[int, bytes], ...]]] = []
 
     def __getattr__(self, name: str) -> Any:
         inner = self.__dict__.get("inner")
@@ -56,8 +58,11 @@ class ArrivalClock(rti.FederateAmbassador):
             self.inner.discoverObjectInstance(obj, cls, name)
 
     def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], tag: str, *rest: Any) -> None:
-        """Note when a report came in (the first reflection of its cycle)."""
+        """Note when a report came in (the first reflection of its cycle), and what came."""
         now = time.monotonic()
+        stamp = rest[2] if len(rest) > 2 else None  # order, transport, time
+        self.reflections.append((None if stamp is None else float(stamp),
+                                 tuple(sorted((int(h), bytes(v)) for h, v in attributes.items()))))
         for data in attributes.values():
             try:
                 cycle = decode_report(data).cycle
@@ -78,6 +83,8 @@ class TestbenchResult:
     reflected_at: dict[int, float] = field(default_factory=dict)
     #: The testbench's clock offset to the gateway's, (offset, uncertainty) in seconds.
     bench_clock: tuple[float, float] = SAME_CLOCK
+    #: Every reflection received, in order: (timestamp or None, values by attribute handle).
+    reflections: list[tuple[Optional[float], tuple[tuple[int, bytes], ...]]] = field(default_factory=list)
 
     @property
     def value_errors(self) -> list[Verdict]:
@@ -174,4 +181,4 @@ class Testbench:
         verdicts = sorted(self.checker.verdicts, key=lambda v: v.cycle)
         reflected = dict(self.clock.reflected_at)
         return TestbenchResult(verdicts, self.precision, delay_table(verdicts, reflected, bench_clock=self.bench_clock),
-                               reflected, self.bench_clock)
+                               reflected, self.bench_clock, list(self.clock.reflections))

@@ -1,0 +1,260 @@
+#include "rti/record/mcap.hpp"
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace hlacore::mcap {
+
+namespace {
+
+constexpr std::string_view kMagic{"\x89MCAP0\r\n", 8};
+constexpr std::size_t kChunkBytes = 1u << 20;  // a chunk is written out once it holds this much
+
+enum Opcode : std::uint8_t {
+    kHeader = 0x01, kFooter = 0x02, kSchema = 0x03, kChannel = 0x04, kMessage = 0x05, kChunk = 0x06,
+    kMessageIndex = 0x07, kChunkIndex = 0x08, kStatistics = 0x0B, kSummaryOffset = 0x0E, kDataEnd = 0x0F,
+};
+
+template <class T>
+void put(std::string& out, T value) {  // little-endian (the host's; messages.hpp checks it)
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    out.append(bytes, sizeof(T));
+}
+void put_string(std::string& out, std::string_view s) {
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(s.size()));
+    out.append(s);
+}
+void put_u16_u64_map(std::string& out, const std::map<std::uint16_t, std::uint64_t>& map) {
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(map.size() * 10));
+    for (auto [key, value] : map) {
+        put(out, key);
+        put(out, value);
+    }
+}
+// A record: opcode, u64 length of the content, the content.
+void put_record(std::string& out, Opcode op, std::string_view content) {
+    put<std::uint8_t>(out, op);
+    put<std::uint64_t>(out, content.size());
+    out.append(content);
+}
+
+}  // namespace
+
+std::uint32_t crc32(std::string_view bytes, std::uint32_t crc) {
+    static const auto table = [] {
+        std::array<std::uint32_t, 256> t{};
+        for (std::uint32_t i = 0; i < 256; ++i) {
+            std::uint32_t c = i;
+            for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+            t[i] = c;
+        }
+        return t;
+    }();
+    crc = ~crc;
+    for (unsigned char b : bytes) crc = table[(crc ^ b) & 0xFF] ^ (crc >> 8);
+    return ~crc;
+}
+
+Writer::Writer(const std::string& path, std::string_view profile, std::string_view library) : path_(path) {
+    file_ = std::fopen(path.c_str(), "wb");
+    if (!file_) throw std::runtime_error("cannot create the recording '" + path + "': " + std::strerror(errno));
+    std::string header;
+    put_string(header, profile);
+    put_string(header, library);
+    std::string out(kMagic);
+    put_record(out, kHeader, header);
+    write(out);
+}
+
+Writer::~Writer() {
+    try {
+        close();
+    } catch (const std::exception&) {
+        // Destruction cannot report; close() explicitly to see the error.
+    }
+}
+
+void Writer::write(std::string_view bytes) {
+    if (!file_) throw std::runtime_error("the recording '" + path_ + "' is closed");
+    if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
+        throw std::runtime_error("cannot write the recording '" + path_ + "': " + std::strerror(errno));
+    offset_ += bytes.size();
+}
+
+std::uint16_t Writer::channel(const std::string& topic, const std::string& schema_name, std::string_view schema) {
+    auto known = channel_ids_.find(topic);
+    if (known != channel_ids_.end()) return known->second;
+    auto [schema_it, new_schema] = schema_ids_.try_emplace(schema_name, static_cast<std::uint16_t>(schemas_.size() + 1));
+    if (new_schema) {
+        schemas_.push_back({schema_it->second, schema_name, std::string(schema)});
+        std::string content;
+        put(content, schema_it->second);
+        put_string(content, schema_name);
+        put_string(content, "jsonschema");
+        put_string(content, schema);
+        put_record(chunk_, kSchema, content);
+    }
+    const auto id = static_cast<std::uint16_t>(channels_.size() + 1);
+    if (id == 0) throw std::runtime_error("the recording '" + path_ + "' has 65535 channels, MCAP's limit");
+    channels_.push_back({id, schema_it->second, topic});
+    channel_ids_.emplace(topic, id);
+    std::string content;
+    put(content, id);
+    put(content, schema_it->second);
+    put_string(content, topic);
+    put_string(content, "json");
+    put<std::uint32_t>(content, 0);  // no metadata
+    put_record(chunk_, kChannel, content);
+    return id;
+}
+
+void Writer::message(std::uint16_t channel, std::uint32_t sequence, std::uint64_t log_ns, std::string_view data) {
+    if (chunk_messages_.empty()) {
+        chunk_start_ns_ = chunk_end_ns_ = log_ns;
+    } else {
+        chunk_start_ns_ = std::min(chunk_start_ns_, log_ns);
+        chunk_end_ns_ = std::max(chunk_end_ns_, log_ns);
+    }
+    chunk_messages_[channel].emplace_back(log_ns, chunk_.size());
+    put<std::uint8_t>(chunk_, kMessage);
+    put<std::uint64_t>(chunk_, 2 + 4 + 8 + 8 + data.size());
+    put(chunk_, channel);
+    put(chunk_, sequence);
+    put(chunk_, log_ns);
+    put(chunk_, log_ns);  // publish time: the same mark
+    chunk_.append(data);
+    if (message_count_ == 0) start_ns_ = end_ns_ = log_ns;
+    start_ns_ = std::min(start_ns_, log_ns);
+    end_ns_ = std::max(end_ns_, log_ns);
+    ++message_count_;
+    ++channel_counts_[channel];
+    if (chunk_.size() >= kChunkBytes) write_chunk();
+}
+
+void Writer::write_chunk() {
+    if (chunk_.empty()) return;
+    std::string out;
+    put(out, chunk_start_ns_);
+    put(out, chunk_end_ns_);
+    put<std::uint64_t>(out, chunk_.size());
+    put(out, crc32(chunk_));
+    put_string(out, "");  // uncompressed
+    put<std::uint64_t>(out, chunk_.size());
+    out.append(chunk_);
+    std::string record;
+    put_record(record, kChunk, out);
+    ChunkIndex index{chunk_start_ns_, chunk_end_ns_, offset_, record.size(), {}, 0, chunk_.size()};
+    for (const auto& [channel, entries] : chunk_messages_) {
+        std::string content;
+        put(content, channel);
+        put<std::uint32_t>(content, static_cast<std::uint32_t>(entries.size() * 16));
+        for (auto [log_ns, at] : entries) {
+            put(content, log_ns);
+            put(content, at);
+        }
+        index.index_offsets[channel] = offset_ + record.size();
+        put_record(record, kMessageIndex, content);
+    }
+    index.index_length = offset_ + record.size() - index.offset - index.length;
+    write(record);
+    std::fflush(file_);
+    chunk_indexes_.push_back(std::move(index));
+    chunk_.clear();
+    chunk_messages_.clear();
+}
+
+void Writer::flush() {
+    if (!file_) return;
+    write_chunk();
+    std::fflush(file_);
+}
+
+void Writer::close() {
+    if (!file_) return;
+    write_chunk();
+    std::string out;
+    put_record(out, kDataEnd, std::string(4, '\0'));  // no data section CRC (the chunks have theirs)
+    write(out);
+
+    // The summary: each group of records, then the offsets of the groups.
+    const std::uint64_t summary_start = offset_;
+    std::string summary, offsets;
+    auto group = [&](Opcode op, auto&& each) {
+        const std::uint64_t start = summary_start + summary.size();
+        each();
+        if (summary_start + summary.size() == start) return;
+        std::string content;
+        put<std::uint8_t>(content, op);
+        put(content, start);
+        put<std::uint64_t>(content, summary_start + summary.size() - start);
+        put_record(offsets, kSummaryOffset, content);
+    };
+    group(kSchema, [&] {
+        for (const auto& s : schemas_) {
+            std::string content;
+            put(content, s.id);
+            put_string(content, s.name);
+            put_string(content, "jsonschema");
+            put_string(content, s.data);
+            put_record(summary, kSchema, content);
+        }
+    });
+    group(kChannel, [&] {
+        for (const auto& c : channels_) {
+            std::string content;
+            put(content, c.id);
+            put(content, c.schema);
+            put_string(content, c.topic);
+            put_string(content, "json");
+            put<std::uint32_t>(content, 0);
+            put_record(summary, kChannel, content);
+        }
+    });
+    group(kStatistics, [&] {
+        std::string content;
+        put(content, message_count_);
+        put<std::uint16_t>(content, static_cast<std::uint16_t>(schemas_.size()));
+        put<std::uint32_t>(content, static_cast<std::uint32_t>(channels_.size()));
+        put<std::uint32_t>(content, 0);  // attachments
+        put<std::uint32_t>(content, 0);  // metadata
+        put<std::uint32_t>(content, static_cast<std::uint32_t>(chunk_indexes_.size()));
+        put(content, start_ns_);
+        put(content, end_ns_);
+        put_u16_u64_map(content, channel_counts_);
+        put_record(summary, kStatistics, content);
+    });
+    group(kChunkIndex, [&] {
+        for (const auto& c : chunk_indexes_) {
+            std::string content;
+            put(content, c.start_ns);
+            put(content, c.end_ns);
+            put(content, c.offset);
+            put(content, c.length);
+            put_u16_u64_map(content, c.index_offsets);
+            put(content, c.index_length);
+            put_string(content, "");
+            put(content, c.size);
+            put(content, c.size);
+            put_record(summary, kChunkIndex, content);
+        }
+    });
+    const std::uint64_t offsets_start = summary_start + summary.size();
+    summary += offsets;
+    std::string footer;
+    put<std::uint8_t>(footer, kFooter);
+    put<std::uint64_t>(footer, 8 + 8 + 4);
+    put(footer, summary_start);
+    put(footer, offsets_start);
+    const std::uint32_t crc = crc32(footer, crc32(summary));
+    put(footer, crc);
+    write(summary + footer + std::string(kMagic));
+    std::FILE* file = file_;
+    file_ = nullptr;
+    if (std::fclose(file) != 0)
+        throw std::runtime_error("cannot write the recording '" + path_ + "': " + std::strerror(errno));
+}
+
+}  // namespace hlacore::mcap

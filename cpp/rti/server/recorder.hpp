@@ -1,0 +1,90 @@
+// The recording of a gateway's federations (`rtig --record FILE`, `hlacore.Gateway(record=FILE)`;
+// docs/record-replay.md): an MCAP file (rti/record/mcap.hpp) of JSON messages, one per event, in the order
+// the gateway saw them (the MCAP sequence number), each stamped with the wall clock (CLOCK_REALTIME, to
+// align recordings made on several hosts). Topics, for a federation F:
+//
+//   /F/federation               created (the FED file's name and text), joined, dropped (why)
+//   /F/objects/CLASS            register, update, delete of instances of object class CLASS (qualified name)
+//   /F/interactions/CLASS       the interactions of class CLASS
+//   /F/hlacore/requests         every other request a federate made, as its wire message's fields
+//   /F/hlacore/refusals         the requests refused with an exception, and why
+//   /F/hlacore/grants           timeAdvanceGrant, per federate
+//   /F/hlacore/callbacks        every other callback except reflections and received interactions (their
+//                               content is their sender's update or interaction)
+//
+// Requests are recorded before the gateway serves them, so what they cause (a grant, a discovery) comes
+// after them. Attribute and parameter values are base64 of their bytes, decodable with hlacore.omt.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "rti/record/mcap.hpp"
+#include "rti/server/outbox.hpp"
+#include "rti/wire/messages.hpp"
+
+namespace hlacore {
+
+class Federation;
+
+class Recorder {
+public:
+    // Creates (truncates) `path`; throws std::runtime_error when it cannot.
+    explicit Recorder(const std::string& path);
+    ~Recorder();
+
+    void created(const Federation& federation);
+    void joined(const Federation& federation, FederateHandle federate);
+    // The federate's connection ended without a resign (`why`); its resign request is recorded otherwise.
+    void dropped(const Federation& federation, FederateHandle federate, const std::string& why);
+    // A request of a joined federate, before it is served.
+    void request(const Federation& federation, FederateHandle from, const wire::Message& message);
+    // The gateway's answer to a request: a registration's object, or a refusal.
+    void answered(const Federation& federation, FederateHandle to, const wire::Message& answer);
+    // A callback sent to a federate (Outbox::send: every kind but reflections and received interactions).
+    void callback(const Federation& federation, FederateHandle to, const wire::Message& message);
+
+    // Once per turn of the gateway's loop: writes out what waited longer than the flush interval, so that a
+    // recording cut short (a killed gateway) still holds all but its last half second.
+    void tick();
+    bool pending() const { return unflushed_since_ns_ >= 0; }
+    // Writes the summary and closes the file (the destructor does it too).
+    void close();
+    // Empty, or why recording stopped (a write error: the gateway goes on without it).
+    const std::string& failure() const { return failure_; }
+
+private:
+    // Writes `json` (an object without its closing brace) on `topic`, whose schema is made by `schema`.
+    template <class Schema>
+    void write(const std::string& topic, const std::string& schema_name, Schema&& schema, std::string& json);
+    void begin(std::string& json, const Federation& federation, FederateHandle federate) const;
+    void record_update(const Federation& federation, FederateHandle from, const wire::UpdateAttributes& m);
+    void record_interaction(const Federation& federation, FederateHandle from, std::uint32_t cls,
+                            const wire::HandleValues& values, const std::string& tag, const wire::OptionalTime& time,
+                            const std::uint32_t* region);
+    void record_delete(const Federation& federation, FederateHandle from, const wire::DeleteObject& m);
+    void record_generic(const Federation& federation, FederateHandle federate, const char* topic_leaf,
+                        const char* key, const char* name, const wire::Message& message);
+
+    std::unique_ptr<mcap::Writer> writer_;
+    std::uint32_t sequence_ = 0;
+    std::int64_t unflushed_since_ns_ = -1;
+    std::string failure_;
+    std::string json_;  // reused for each message
+};
+
+// What a federation's outbox hands the recorder: the callbacks it sends (see Recorder::callback).
+class FederationRecording : public CallbackRecorder {
+public:
+    FederationRecording(Recorder& recorder, const Federation& federation) : recorder_(recorder), federation_(federation) {}
+    void callback(FederateHandle to, const wire::Message& message) override {
+        recorder_.callback(federation_, to, message);
+    }
+
+private:
+    Recorder& recorder_;
+    const Federation& federation_;
+};
+
+}  // namespace hlacore

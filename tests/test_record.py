@@ -15,6 +15,7 @@ import json
 import pathlib
 import subprocess
 import sys
+from importlib import resources
 from typing import Any, Iterator
 
 import mcap.reader
@@ -23,6 +24,7 @@ import pytest
 import hlacore
 from hlacore import rti
 from hlacore.experiments.robot_in_the_loop.experiment import Experiment, ExperimentOptions, run_experiment
+from hlacore.processes import Child
 from hlacore.federates.robot_driver.report import decode_report
 from hlacore.recording import RecordingError, read
 from hlacore.replay.diff import compare
@@ -224,3 +226,36 @@ def test_damaged_recordings_are_refused_with_the_offset(live_run: tuple[Experime
         run = subprocess.run([sys.executable, "-m", "hlacore.replay", str(bad), "--as", "robot"],
                              capture_output=True, text=True, timeout=60)
         assert run.returncode == 2 and "byte offset" in run.stderr and "Traceback" not in run.stderr
+
+
+def test_recorder_federate_records_what_rtig_records(tmp_path: pathlib.Path) -> None:
+    by_gateway, by_recorder = tmp_path / "rtig.mcap", tmp_path / "recorder.mcap"
+    fom = str(resources.files("hlacore") / "foms" / "robot.fed")
+    with running_rtig(tmp_path, "--record", str(by_gateway)) as server:
+        creator = rti.RTIAmbassador(server.address)
+        creator.createFederationExecution("TestFed", fom)
+        with Child([sys.executable, "-m", "hlacore.record", server.address, "TestFed", str(by_recorder),
+                    "--until-alone"]) as recorder:
+            assert recorder.read_line(timeout=30).startswith("recording TestFed into")
+            experiment = run_experiment(ExperimentOptions(out=tmp_path / "run", cycles=CYCLES, rtig=server.address),
+                                        lambda _: None)
+            assert experiment.result.passed
+            assert recorder.wait(timeout=30) == 0, recorder.stderr()
+            assert recorder.read_line(timeout=5).startswith("recorded ")
+        creator.destroyFederationExecution("TestFed")
+
+    gateway_events, recorder_events = list(read(by_gateway)), list(read(by_recorder))
+
+    def content(events: list[Any]) -> list[tuple[str, str, str, int]]:
+        return [(e.federation, e.topic, json.dumps(e.data, sort_keys=True), e.wall_ns) for e in events]
+
+    joined = next(i for i, e in enumerate(gateway_events) if e.kind == "joined" and e.federate == "hlacore-recorder")
+    resigned = next(i for i, e in enumerate(gateway_events)
+                    if e.federate == "hlacore-recorder" and e.message == "ResignFederation")
+    # The recorder's file starts with the FOM and the federates joined when it began (itself), then has every
+    # event the gateway's file has until the recorder stopped.
+    assert [e.kind for e in recorder_events[:2]] == ["created", "joined"]
+    assert recorder_events[0].data == gateway_events[0].data
+    assert content(recorder_events[2:]) == content(gateway_events[joined + 1:resigned])
+    assert sum(1 for e in recorder_events if e.kind == "update") == CYCLES
+    assert compare(by_gateway, by_recorder).same

@@ -1,4 +1,5 @@
-// Federation management (HLA 1.3 §4.2-4.5): create, destroy, join and resign; rti.py wraps the underscored ones.
+// Federation management (HLA 1.3 §4.2-4.5): create, destroy, join and resign, and the recorder federate's
+// recording; rti.py wraps the underscored ones.
 #include "bindings/convert.hpp"
 
 namespace hlacore::bindings {
@@ -29,7 +30,9 @@ void bind_federation(Ambassador& rtia) {
             if (action < 0 || action > 255) throw RtiError(ErrorCode::InvalidResignAction, "invalid resign action");
             py::gil_scoped_release release;
             c.resign(static_cast<std::uint8_t>(action));
-        });
+        })
+        .def("_start_recording", &Client::start_recording, py::call_guard<py::gil_scoped_release>())
+        .def("_stop_recording", &Client::stop_recording, py::call_guard<py::gil_scoped_release>());
 }
 
 }  // namespace hlacore::bindings

@@ -125,6 +125,10 @@ MESSAGES = {
     "AttributesReleased": u32(6) + hs([1, 2]),
     "StatusReport": u32(1) + s('{"server":"hlacore rtig","federations":[]}'),
     "TimeQueried": u32(8) + f64(4.5),
+    "StartRecording": u32(9),
+    "RecordedTopic": s("/TestFed/hlacore/grants") + s("hlacore.Grant") + s('{"type":"object"}'),
+    "Recorded": s("/TestFed/hlacore/grants") + u32(3) + u64(1_700_000_000_000_000_000)
+                + s('{"federate":"robot","handle":1,"federate_time":0,"time":1}'),
 }
 STREAMS = {
     "stream-join-publish-update": ["Hello", "JoinFederation", "PublishObjectClass", "RegisterObject", "UpdateAttributes"],

@@ -606,6 +606,23 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         self._deliver_until(enabled, timeout, "time management not enabled")
         return float(self.queryFederateTime())
 
+    # ---- recording (beyond PyHLA: the recorder federate, python -m hlacore.record) ----
+
+    def start_recording(self, path: str | os.PathLike[str]) -> None:
+        """Record this federate's federation into the MCAP file ``path``, from now until
+        :meth:`stop_recording`: the gateway sends the joined federate every record of the federation, the
+        same as ``rtig --record`` writes (docs/record-replay.md), beginning with the FOM and the federates
+        joined so far, and they are written as they come while the federate ticks or calls services. Raises
+        RuntimeError when the file cannot be created, RTIinternalError when this federate records already.
+        """
+        self._start_recording(os.fspath(path))
+
+    def stop_recording(self) -> int:
+        """Close the recording started by :meth:`start_recording` (its summary written, readable by every MCAP
+        tool); returns the number of records. Raises RuntimeError with the write error (a full disk, say)
+        that stopped the recording, if one did."""
+        return int(self._stop_recording())
+
     # ---- blocking time advance (beyond PyHLA; asyncio forms in hlacore.aio) ----
 
     def advance_to(self, time: float, timeout: Optional[float] = None) -> float:

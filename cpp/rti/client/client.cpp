@@ -675,6 +675,10 @@ void Client::file(Arrivals& got) {
             continue;
         }
         if (std::holds_alternative<wire::Pong>(m)) continue;  // what it says is that bytes came: last_heard_
+        if (std::holds_alternative<wire::RecordedTopic>(m) || std::holds_alternative<wire::Recorded>(m)) {
+            write_recorded(m);
+            continue;
+        }
         if (auto* d = std::get_if<wire::DiscoverObject>(&m)) {
             objects_[d->object] = make_local_object(d->object_class, d->name);
         } else if (auto* rm = std::get_if<wire::RemoveObject>(&m)) {
@@ -701,6 +705,54 @@ void Client::file(Arrivals& got) {
 std::string Client::query_status() {
     const auto id = next_request();
     return call<wire::StatusReport>(wire::QueryStatus{id}, id).json;
+}
+
+void Client::start_recording(const std::string& path) {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        if (recording_) throw RtiError(ErrorCode::RTIinternalError, "this federate records already");
+        recording_ = std::make_unique<mcap::Writer>(path, "hlacore", "hlacore recorder federate");
+        recording_failure_.clear();
+    }
+    const auto id = next_request();
+    try {
+        call<wire::Reply>(wire::StartRecording{id}, id);
+    } catch (...) {
+        std::lock_guard<std::mutex> lock(mu_);
+        recording_.reset();
+        throw;
+    }
+}
+
+std::uint64_t Client::stop_recording() {
+    std::unique_ptr<mcap::Writer> writer;
+    std::string failure;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        writer = std::move(recording_);
+        failure = std::move(recording_failure_);
+    }
+    if (!failure.empty()) throw std::runtime_error(failure);
+    if (!writer) return 0;
+    writer->close();
+    return writer->messages();
+}
+
+// Under mu_: a topic or a record of the recording this federate asked for (start_recording).
+void Client::write_recorded(const wire::Message& m) {
+    if (!recording_) return;  // stopped: the gateway's last records before it heard of it
+    try {
+        if (const auto* topic = std::get_if<wire::RecordedTopic>(&m)) {
+            recording_->channel(topic->topic, topic->schema_name, topic->schema);
+        } else if (const auto* r = std::get_if<wire::Recorded>(&m)) {
+            if (!recording_->has_channel(r->topic))
+                throw std::runtime_error("the gateway sent a record on '" + r->topic + "' before announcing the topic");
+            recording_->message(recording_->channel_id(r->topic), r->sequence, r->log_ns, r->data);
+        }
+    } catch (const std::exception& e) {
+        recording_failure_ = e.what();
+        recording_.reset();
+    }
 }
 
 void Client::poll_now() { pump(Clock::now(), [] { return false; }); }

@@ -25,6 +25,7 @@
 
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
+#include "rti/record/mcap.hpp"
 #include "rti/server/time_manager.hpp"
 #include "rti/tls.hpp"
 #include "rti/wire/messages.hpp"
@@ -232,6 +233,15 @@ public:
     // The gateway's state as JSON (needs no join).
     std::string query_status();
 
+    // ---- the recorder federate (python -m hlacore.record, docs/record-replay.md) ----
+    // Asks the gateway for the recording of this federate's federation and writes it into `path` (MCAP, the
+    // same records as rtig --record) as it comes, until stop_recording(). Throws std::runtime_error when the
+    // file cannot be created, RtiError when the gateway refuses.
+    void start_recording(const std::string& path);
+    // Closes the file, its summary written; returns the number of records. Throws std::runtime_error with the
+    // write error that stopped the recording, if one did.
+    std::uint64_t stop_recording();
+
     // ---- evoking callbacks ----
     // Reads what the socket has without blocking.
     void poll_now();
@@ -364,6 +374,7 @@ private:
     };
     WaitStatus read_socket(Clock::time_point deadline, Arrivals& got);
     void file(Arrivals& got);  // under mu_
+    void write_recorded(const wire::Message& m);  // under mu_
     // Best effort over UDP (client/datagrams.cpp): proving the path at connect (falling back to TCP with one
     // log line), reading what came, and whether an update or interaction may go as a datagram (mu_ held).
     void open_datagram_path(Clock::time_point deadline);
@@ -528,6 +539,8 @@ private:
     std::uint32_t federate_ = 0;
     // One piece of state per service group, each changed in client/<group>.cpp.
     std::set<std::string> announced_;  // sync_points: the labels announced and not yet synchronized
+    std::unique_ptr<mcap::Writer> recording_;  // written as Recorded messages come, under mu_
+    std::string recording_failure_;
     DeclarationState declarations_;
     std::unordered_map<std::uint32_t, LocalObject> objects_;  // objects, with their ownership
     std::uint64_t serial_ = 0;                                // objects: the last message serial

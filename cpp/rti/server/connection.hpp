@@ -40,6 +40,7 @@ struct Gateway::Connection {
     bool write_armed = false;
     bool dirty = false;
     FederationEntry* federation = nullptr;
+    std::unique_ptr<RecordTap> tap;  // a recorder federate's: its federation's records (server/recorder.hpp)
     FederateHandle federate = 0;
     Clock::time_point partial_since{};
     Clock::time_point accepted_at = Clock::now();

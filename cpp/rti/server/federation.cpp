@@ -29,6 +29,12 @@ const std::string& Federation::federate_name(FederateHandle federate) const {
     return it == federates_.end() ? none : it->second.name;
 }
 
+std::vector<FederateHandle> Federation::federates() const {
+    std::vector<FederateHandle> handles;
+    for (const auto& [handle, state] : federates_) handles.push_back(handle);
+    return handles;
+}
+
 const ObjectInstance* Federation::object(ObjectHandle object) const {
     auto it = objects_.find(object);
     return it == objects_.end() ? nullptr : &it->second;

@@ -57,6 +57,7 @@ public:
 
     // What the recording (server/recorder.cpp) names things by: "" and null for handles that name nothing.
     const std::string& federate_name(FederateHandle federate) const;
+    std::vector<FederateHandle> federates() const;  // the joined ones, in the order they joined
     const ObjectInstance* object(ObjectHandle object) const;
     double federate_time(FederateHandle federate) const;
 

@@ -91,6 +91,23 @@ private:
     std::string discard_;
 };
 
+// A recorder federate's connection as a tap of the recording: each record becomes a Recorded message.
+class Gateway::ConnectionTap : public RecordTap {
+public:
+    ConnectionTap(Gateway& gateway, Connection& c) : gateway_(gateway), c_(c) {}
+    void recorded(const std::string& topic, const std::string& schema_name, const std::string& schema,
+                  std::uint32_t sequence, std::uint64_t log_ns, const std::string& json) override {
+        std::string& out = gateway_.output(c_);
+        if (!schema.empty()) wire::encode(out, wire::RecordedTopic{topic, schema_name, schema});
+        wire::encode(out, wire::Recorded{topic, sequence, log_ns, json});
+        gateway_.mark_dirty(c_);
+    }
+
+private:
+    Gateway& gateway_;
+    Connection& c_;
+};
+
 struct Gateway::FederationEntry {
     FederationEntry(Gateway& gw, std::string name, fom::Fom fom, std::string fed_name, std::string fed_text)
         : outbox(gw), federation(std::move(name), std::move(fom), std::move(fed_name), std::move(fed_text), outbox) {}
@@ -286,13 +303,15 @@ void Gateway::run() {
 }
 
 void Gateway::recorder_failed() {
-    if (recorder_->failure().empty()) return;
-    log("recording stopped: " + recorder_->failure());
-    recorder_.reset();
-    for (auto& [name, entry] : federations_) {
-        entry->outbox.recorder = nullptr;
-        entry->recording.reset();
-    }
+    const std::string failure = recorder_->take_failure();
+    if (!failure.empty()) log("recording into " + options_.record_path + " stopped: " + failure);
+}
+
+void Gateway::record_federation(FederationEntry& entry) {
+    if (!recorder_) recorder_ = std::make_unique<Recorder>();
+    if (entry.recording) return;
+    entry.recording = std::make_unique<FederationRecording>(*recorder_, entry.federation);
+    entry.outbox.recorder = entry.recording.get();
 }
 
 void Gateway::accept_all() {
@@ -638,8 +657,7 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
             std::make_unique<FederationEntry>(*this, m.federation, std::move(fom), m.fed_name, std::move(text));
         entry->federation.set_save_dir(options_.save_dir);
         if (recorder_) {
-            entry->recording = std::make_unique<FederationRecording>(*recorder_, entry->federation);
-            entry->outbox.recorder = entry->recording.get();
+            record_federation(*entry);
             recorder_->created(entry->federation);
         }
         if (options_.verbose) log("created federation '" + m.federation + "' from " + source);
@@ -691,6 +709,8 @@ void Gateway::serve(Connection& c, const wire::ResignFederation& m) {
         Federation& federation = joined(c);
         federation.check_membership_change("resignFederationExecution");
         federation.resign(c.federate, static_cast<wire::ResignAction>(m.action));
+        if (c.tap) recorder_->detach(*c.tap);
+        c.tap.reset();
         c.federation->outbox.peers_.erase(c.federate);
         c.federation = nullptr;
         c.federate = 0;
@@ -746,6 +766,17 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
         write_datagram_status(json);
         json += '}';
         return wire::StatusReport{m.request, std::move(json)};
+    });
+}
+
+void Gateway::serve(Connection& c, const wire::StartRecording& m) {
+    answer(c, m.request, [&] {
+        Federation& federation = joined(c);
+        if (c.tap) throw RtiError(ErrorCode::RTIinternalError, "this federate records already");
+        record_federation(*c.federation);
+        c.tap = std::make_unique<ConnectionTap>(*this, c);
+        recorder_->attach(federation, *c.tap);
+        if (options_.verbose) log("'" + federation.federate_name(c.federate) + "' records '" + federation.name() + "'");
     });
 }
 
@@ -1035,6 +1066,7 @@ void Gateway::close(int fd, const std::string& why) {
         FederationEntry& entry = *c->federation;
         who += " (federate " + std::to_string(c->federate) + " of '" + entry.federation.name() + "')";
         entry.outbox.peers_.erase(c->federate);
+        if (c->tap) recorder_->detach(*c->tap);
         if (recorder_) recorder_->dropped(entry.federation, c->federate, why);
         try {
             // A federate that vanishes resigns with the default action: its objects go, the rest is released.

@@ -101,6 +101,7 @@ private:
     struct Connection;
     struct FederationEntry;
     class ConnectionOutbox;
+    class ConnectionTap;
 
     void accept_all();
     void on_readable(Connection& c);
@@ -178,7 +179,9 @@ private:
     int over_budget_ = -1;  // a client found over its budget while the current frame was served
     std::unique_ptr<MessageTrace> trace_;
     std::unique_ptr<Recorder> recorder_;
-    void recorder_failed();  // logs why the recording stopped, once
+    void recorder_failed();  // logs why recording into the file stopped, once
+    // Has the federation's outbox hand its callbacks to the recorder (made now if there is none).
+    void record_federation(FederationEntry& entry);
     int datagram_fd_ = -1;
     std::unordered_map<std::uint64_t, int> datagram_tokens_;  // token -> connection descriptor
     std::uint64_t stray_datagrams_ = 0;  // not hlacore datagrams, unknown tokens, from the wrong address

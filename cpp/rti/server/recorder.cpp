@@ -1,5 +1,6 @@
 #include "rti/server/recorder.hpp"
 
+#include <algorithm>
 #include <ctime>
 
 #include "rti/server/federation.hpp"
@@ -91,15 +92,40 @@ void Recorder::tick() {
     unflushed_since_ns_ = -1;
 }
 
+void Recorder::attach(const Federation& federation, RecordTap& tap) {
+    taps_[&federation].push_back(&tap);
+    write_created(federation, &tap);
+    for (FederateHandle federate : federation.federates()) write_joined(federation, federate, &tap);
+}
+
+void Recorder::detach(RecordTap& tap) {
+    for (auto it = taps_.begin(); it != taps_.end();) {
+        auto& taps = it->second;
+        taps.erase(std::remove(taps.begin(), taps.end(), &tap), taps.end());
+        it = taps.empty() ? taps_.erase(it) : std::next(it);
+    }
+}
+
 template <class Schema>
-void Recorder::write(const std::string& topic, const std::string& schema_name, Schema&& make_schema, std::string& json) {
-    if (!writer_) return;
+void Recorder::write(const Federation& federation, const std::string& topic, const std::string& schema_name,
+                     Schema&& make_schema, std::string& json, RecordTap* only) {
     json += '}';
+    const std::uint32_t sequence = ++sequence_;
+    const std::int64_t now = wall_ns();
+    auto to_tap = [&](RecordTap& tap) {
+        const bool first = tap.topics.insert(topic).second;
+        tap.recorded(topic, schema_name, first ? make_schema() : std::string(), sequence,
+                     static_cast<std::uint64_t>(now), json);
+    };
+    if (only) return to_tap(*only);
+    if (auto taps = taps_.find(&federation); taps != taps_.end()) {
+        for (RecordTap* tap : taps->second) to_tap(*tap);
+    }
+    if (!writer_) return;
     try {
         const std::uint16_t channel =
             writer_->has_channel(topic) ? writer_->channel_id(topic) : writer_->channel(topic, schema_name, make_schema());
-        const std::int64_t now = wall_ns();
-        writer_->message(channel, ++sequence_, static_cast<std::uint64_t>(now), json);
+        writer_->message(channel, sequence, static_cast<std::uint64_t>(now), json);
         if (unflushed_since_ns_ < 0) unflushed_since_ns_ = now;
     } catch (const std::exception& e) {
         failure_ = e.what();  // the gateway logs it; serving goes on without the recording
@@ -115,31 +141,40 @@ void Recorder::begin(std::string& json, const Federation& federation, FederateHa
 }
 
 void Recorder::created(const Federation& federation) {
+    if (records(federation)) write_created(federation, nullptr);
+}
+
+void Recorder::write_created(const Federation& federation, RecordTap* only) {
     json_ = "{\"event\":\"created\",\"fed_name\":";
     json_string(json_, federation.fed_name());
     json_ += ",\"fed_text\":";
     json_string(json_, federation.fed_text());
-    write("/" + federation.name() + "/federation", "hlacore.FederationEvent",
-          [] { return schema("a federation's membership", kFederationSchema); }, json_);
+    write(federation, "/" + federation.name() + "/federation", "hlacore.FederationEvent",
+          [] { return schema("a federation's membership", kFederationSchema); }, json_, only);
 }
 
 void Recorder::joined(const Federation& federation, FederateHandle federate) {
+    if (records(federation)) write_joined(federation, federate, nullptr);
+}
+
+void Recorder::write_joined(const Federation& federation, FederateHandle federate, RecordTap* only) {
     begin(json_, federation, federate);
     json_ += ",\"event\":\"joined\"";
-    write("/" + federation.name() + "/federation", "hlacore.FederationEvent",
-          [] { return schema("a federation's membership", kFederationSchema); }, json_);
+    write(federation, "/" + federation.name() + "/federation", "hlacore.FederationEvent",
+          [] { return schema("a federation's membership", kFederationSchema); }, json_, only);
 }
 
 void Recorder::dropped(const Federation& federation, FederateHandle federate, const std::string& why) {
+    if (!records(federation)) return;
     begin(json_, federation, federate);
     json_ += ",\"event\":\"dropped\",\"reason\":";
     json_string(json_, why);
-    write("/" + federation.name() + "/federation", "hlacore.FederationEvent",
+    write(federation, "/" + federation.name() + "/federation", "hlacore.FederationEvent",
           [] { return schema("a federation's membership", kFederationSchema); }, json_);
 }
 
 void Recorder::request(const Federation& federation, FederateHandle from, const wire::Message& message) {
-    if (!writer_) return;
+    if (!records(federation)) return;
     std::visit(
         [&](const auto& m) {
             using M = std::decay_t<decltype(m)>;
@@ -156,7 +191,7 @@ void Recorder::request(const Federation& federation, FederateHandle from, const 
                 // Recorded with its outcome (answered): the object's handle and name.
             } else if constexpr (std::is_same_v<M, wire::QueryStatus> || std::is_same_v<M, wire::Ping> ||
                                  std::is_same_v<M, wire::ClockProbe> || std::is_same_v<M, wire::QueryTime> ||
-                                 std::is_same_v<M, wire::DatagramPath>) {
+                                 std::is_same_v<M, wire::DatagramPath> || std::is_same_v<M, wire::StartRecording>) {
                 // Questions that change nothing in the federation.
             } else {
                 record_generic(federation, from, "requests", "request", name_of(m), message);
@@ -166,7 +201,7 @@ void Recorder::request(const Federation& federation, FederateHandle from, const 
 }
 
 void Recorder::answered(const Federation& federation, FederateHandle to, const wire::Message& answer) {
-    if (!writer_) return;
+    if (!records(federation)) return;
     if (const auto* registered = std::get_if<wire::ObjectRegistered>(&answer)) {
         const ObjectInstance* object = federation.object(registered->object);
         const fom::ObjectClass* cls = object ? federation.fom().object_class(object->object_class) : nullptr;
@@ -175,7 +210,7 @@ void Recorder::answered(const Federation& federation, FederateHandle to, const w
         json_ += ",\"kind\":\"register\",\"object\":";
         json_string(json_, registered->name);
         json_ += ",\"object_handle\":" + std::to_string(registered->object);
-        write("/" + federation.name() + "/objects/" + cls->qualified_name, "hlacore.Object." + cls->qualified_name,
+        write(federation, "/" + federation.name() + "/objects/" + cls->qualified_name, "hlacore.Object." + cls->qualified_name,
               [&] { return schema(cls->qualified_name.c_str(), values_schema(R"("register","update","delete")", "attributes", cls->attributes)); },
               json_);
     } else if (const auto* reply = std::get_if<wire::Reply>(&answer); reply && reply->error != 0) {
@@ -184,12 +219,12 @@ void Recorder::answered(const Federation& federation, FederateHandle to, const w
 }
 
 void Recorder::callback(const Federation& federation, FederateHandle to, const wire::Message& message) {
-    if (!writer_) return;
+    if (!records(federation)) return;
     if (const auto* grant = std::get_if<wire::TimeAdvanceGrant>(&message)) {
         begin(json_, federation, to);
         json_ += ",\"time\":";
         json_number(json_, grant->time);
-        write("/" + federation.name() + "/hlacore/grants", "hlacore.Grant",
+        write(federation, "/" + federation.name() + "/hlacore/grants", "hlacore.Grant",
               [] { return schema("timeAdvanceGrant", R"("time":{"type":"number"})"); }, json_);
         return;
     }
@@ -219,7 +254,7 @@ void Recorder::record_update(const Federation& federation, FederateHandle from, 
         json_base64(json_, value);
     }
     json_ += '}';
-    write("/" + federation.name() + "/objects/" + cls->qualified_name, "hlacore.Object." + cls->qualified_name,
+    write(federation, "/" + federation.name() + "/objects/" + cls->qualified_name, "hlacore.Object." + cls->qualified_name,
           [&] { return schema(cls->qualified_name.c_str(), values_schema(R"("register","update","delete")", "attributes", cls->attributes)); },
           json_);
 }
@@ -246,7 +281,7 @@ void Recorder::record_interaction(const Federation& federation, FederateHandle f
         json_base64(json_, value);
     }
     json_ += '}';
-    write("/" + federation.name() + "/interactions/" + cls->qualified_name,
+    write(federation, "/" + federation.name() + "/interactions/" + cls->qualified_name,
           "hlacore.Interaction." + cls->qualified_name,
           [&] { return schema(cls->qualified_name.c_str(), values_schema(R"("interaction")", "parameters", cls->parameters)); },
           json_);
@@ -263,7 +298,7 @@ void Recorder::record_delete(const Federation& federation, FederateHandle from, 
     wire::JsonWriter::put(json_, m.time);
     json_ += ",\"serial\":" + std::to_string(m.serial) + ",\"tag\":";
     json_text(json_, m.tag);
-    write("/" + federation.name() + "/objects/" + cls->qualified_name, "hlacore.Object." + cls->qualified_name,
+    write(federation, "/" + federation.name() + "/objects/" + cls->qualified_name, "hlacore.Object." + cls->qualified_name,
           [&] { return schema(cls->qualified_name.c_str(), values_schema(R"("register","update","delete")", "attributes", cls->attributes)); },
           json_);
 }
@@ -282,7 +317,7 @@ void Recorder::record_generic(const Federation& federation, FederateHandle feder
             else wire::to_json(json_, m);
         },
         message);
-    write("/" + federation.name() + "/hlacore/" + topic_leaf, std::string("hlacore.") + key,
+    write(federation, "/" + federation.name() + "/hlacore/" + topic_leaf, std::string("hlacore.") + key,
           [&] { return schema(key, message_schema(key)); }, json_);
 }
 

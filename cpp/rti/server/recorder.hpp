@@ -14,11 +14,19 @@
 //
 // Requests are recorded before the gateway serves them, so what they cause (a grant, a discovery) comes
 // after them. Attribute and parameter values are base64 of their bytes, decodable with hlacore.omt.
+//
+// Besides the file (or without one), a federation's records go to its taps: the connections of recorder
+// federates (python -m hlacore.record, wire::StartRecording), which write the same records into their own
+// file.
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "rti/record/mcap.hpp"
 #include "rti/server/outbox.hpp"
@@ -28,11 +36,29 @@ namespace hlacore {
 
 class Federation;
 
+// Where a recorder federate's connection takes its federation's records.
+class RecordTap {
+public:
+    virtual ~RecordTap() = default;
+    // One record; `schema` is the topic's JSON schema the first time this tap gets the topic, "" after.
+    virtual void recorded(const std::string& topic, const std::string& schema_name, const std::string& schema,
+                          std::uint32_t sequence, std::uint64_t log_ns, const std::string& json) = 0;
+    std::set<std::string> topics;  // those it got the schema of
+};
+
 class Recorder {
 public:
-    // Creates (truncates) `path`; throws std::runtime_error when it cannot.
+    Recorder() = default;  // records for taps only
+    // Records into `path` too: creates (truncates) it; throws std::runtime_error when it cannot.
     explicit Recorder(const std::string& path);
     ~Recorder();
+
+    // From now on `tap` gets the records of `federation`, beginning with its creation (the FOM) and the
+    // federates joined so far.
+    void attach(const Federation& federation, RecordTap& tap);
+    void detach(RecordTap& tap);
+    // Whether anything records `federation`'s events (the file, or a tap of it).
+    bool records(const Federation& federation) const { return writer_ || taps_.count(&federation); }
 
     void created(const Federation& federation);
     void joined(const Federation& federation, FederateHandle federate);
@@ -51,13 +77,17 @@ public:
     bool pending() const { return unflushed_since_ns_ >= 0; }
     // Writes the summary and closes the file (the destructor does it too).
     void close();
-    // Empty, or why recording stopped (a write error: the gateway goes on without it).
-    const std::string& failure() const { return failure_; }
+    // Empty, or why recording into the file stopped (a write error: the gateway goes on without it); once.
+    std::string take_failure() { return std::exchange(failure_, std::string()); }
 
 private:
-    // Writes `json` (an object without its closing brace) on `topic`, whose schema is made by `schema`.
+    // Writes `json` (an object without its closing brace) on `topic`, whose schema is made by `schema`, to the
+    // file and `federation`'s taps, or to `only` that tap.
     template <class Schema>
-    void write(const std::string& topic, const std::string& schema_name, Schema&& schema, std::string& json);
+    void write(const Federation& federation, const std::string& topic, const std::string& schema_name,
+               Schema&& schema, std::string& json, RecordTap* only = nullptr);
+    void write_created(const Federation& federation, RecordTap* only);
+    void write_joined(const Federation& federation, FederateHandle federate, RecordTap* only);
     void begin(std::string& json, const Federation& federation, FederateHandle federate) const;
     void record_update(const Federation& federation, FederateHandle from, const wire::UpdateAttributes& m);
     void record_interaction(const Federation& federation, FederateHandle from, std::uint32_t cls,
@@ -68,6 +98,7 @@ private:
                         const char* key, const char* name, const wire::Message& message);
 
     std::unique_ptr<mcap::Writer> writer_;
+    std::map<const Federation*, std::vector<RecordTap*>> taps_;
     std::uint32_t sequence_ = 0;
     std::int64_t unflushed_since_ns_ = -1;
     std::string failure_;

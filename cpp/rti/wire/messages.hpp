@@ -31,8 +31,9 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // 5: Welcome's challenge, Authenticate and Authenticated; 6: ClockProbe and ClockEcho; 7: Welcome's datagram
 // token and size limit, DatagramHello and DatagramPath; 8: Welcome's nonce, the federation proofs of
 // CreateFederation, DestroyFederation and JoinFederation; 9: a typed answer per request with a result
-// (FederationJoined ... TimeQueried), Reply only for the others and for refusals
-constexpr std::uint16_t kProtocolVersion = 9;
+// (FederationJoined ... TimeQueried), Reply only for the others and for refusals; 10: StartRecording,
+// RecordedTopic and Recorded
+constexpr std::uint16_t kProtocolVersion = 10;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -167,7 +168,11 @@ using OptionalTime = std::optional<double>;
     X(ObjectRegistered)              \
     X(AttributesReleased)            \
     X(StatusReport)                  \
-    X(TimeQueried)
+    X(TimeQueried)                   \
+    /* the recorder federate (python -m hlacore.record): federate -> gateway, then the records */ \
+    X(StartRecording)                \
+    X(RecordedTopic)                 \
+    X(Recorded)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply or a result. Each has a `Gateway::serve(Connection&, const M&)` in
@@ -175,7 +180,7 @@ using OptionalTime = std::optional<double>;
 #define HLACORE_GATEWAY_SERVICES(X)                                                                    \
     X(CreateFederation) X(DestroyFederation) X(JoinFederation) X(ResignFederation) X(RegisterObject)   \
     X(RegisterObjectWithRegion) X(RequestFederationSave) X(RequestFederationRestore) X(ReleaseResponse) \
-    X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate) X(ClockProbe) X(DatagramPath)
+    X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate) X(ClockProbe) X(DatagramPath) X(StartRecording)
 
 // The gateway's answers to requests, each echoing the request's id in `request`: a Reply, or the result of a
 // request that has one. The client files them apart from callbacks, for the caller waiting on that id.
@@ -574,6 +579,30 @@ struct TimeQueried {  // QueryTime
     std::uint32_t request = 0;
     double time = 0;
     HLACORE_FIELDS(request, time)
+};
+// The recorder federate (python -m hlacore.record): StartRecording (answered with a Reply) makes the
+// gateway send the joined federate every record of its federation's recording (server/recorder.hpp) as
+// Recorded (each topic announced first by a RecordedTopic), beginning with the FOM and the federates joined
+// so far; the client writes them into an MCAP file.
+struct StartRecording {
+    HLACORE_TYPE(StartRecording)
+    std::uint32_t request = 0;
+    HLACORE_FIELDS(request)
+};
+struct RecordedTopic {
+    HLACORE_TYPE(RecordedTopic)
+    std::string topic;
+    std::string schema_name;
+    std::string schema;  // the topic's JSON schema
+    HLACORE_FIELDS(topic, schema_name, schema)
+};
+struct Recorded {
+    HLACORE_TYPE(Recorded)
+    std::string topic;
+    std::uint32_t sequence = 0;
+    std::uint64_t log_ns = 0;
+    std::string data;  // the JSON message
+    HLACORE_FIELDS(topic, sequence, log_ns, data)
 };
 struct SyncPointRegistrationSucceeded {
     HLACORE_TYPE(SyncPointRegistrationSucceeded)

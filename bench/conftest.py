@@ -45,17 +45,18 @@ def tcp_floor() -> str:
 
 @pytest.fixture
 def measure(benchmark: Any, report: Report) -> Measure:
-    """measure(key, fn, rounds, group=None, per_round=None): run fn `rounds` times (after rounds // 10
-    unrecorded warm-up calls) timed one call each, and record the seconds per call under `key`, or
-    per_round / seconds (a rate) when per_round is given."""
+    """measure(key, fn, rounds, group=None, per_round=None, extend=False): run fn `rounds` times (after
+    rounds // 10 unrecorded warm-up calls) timed one call each, and record the seconds per call under `key`, or
+    per_round / seconds (a rate) when per_round is given; `extend` adds them to what the key has already
+    (alternating A/B rounds)."""
 
     def run(key: str, fn: Callable[[], None], rounds: int, group: Optional[str] = None,
-            per_round: Optional[int] = None) -> list[float]:
+            per_round: Optional[int] = None, extend: bool = False) -> list[float]:
         if group:
             benchmark.group = group
         benchmark.pedantic(fn, rounds=rounds, warmup_rounds=rounds // 10, iterations=1)
         seconds = list(benchmark.stats.stats.data)
-        report.add(key, [per_round / s for s in seconds] if per_round else seconds)
+        report.add(key, [per_round / s for s in seconds] if per_round else seconds, extend=extend)
         return seconds
 
     return run

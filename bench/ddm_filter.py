@@ -49,7 +49,7 @@ def round_trip(rtia: rti.RTIAmbassador) -> None:
 def run(rtig: Optional[str], updates: int, subscribers: int, regions_each: int, in_scope: bool) -> str:
     """regions_each = 0: plain subscriptions. Else subscriber i subscribes through `regions_each` disjoint
     regions; the object's update region overlaps the last region of subscriber 0 (or none)."""
-    with bench_rtig(rtig) as server:
+    with bench_rtig(executable=rtig) as server:
         pub = rti.RTIAmbassador(server.address)
         pub.createFederationExecution("DdmFed", FED)
         pub.joinFederationExecution("pub", "DdmFed", rti.FederateAmbassador())

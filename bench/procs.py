@@ -25,6 +25,7 @@ def close_all(children: list[Child]) -> None:
         child.close()
 
 
-def bench_rtig(executable: Optional[str] = None) -> Rtig:
-    return Rtig(*shlex.split(os.environ.get("HLACORE_BENCH_RTIG_ARGS", "")),
+def bench_rtig(*args: str, executable: Optional[str] = None) -> Rtig:
+    """The rtig under test ($HLACORE_BENCH_RTIG, else beside Python) with `args` and $HLACORE_BENCH_RTIG_ARGS."""
+    return Rtig(*shlex.split(os.environ.get("HLACORE_BENCH_RTIG_ARGS", "")), *args,
                 executable=executable or os.environ.get("HLACORE_BENCH_RTIG"))

@@ -16,6 +16,8 @@ messages per second (rates), keyed as the bench tests record them:
     besteffort.udp.loss1 / .tcp.loss1       send-to-receive latency of a 200 Hz best-effort stream with 1 % of
                                             the gateway port's packets lost each way, over datagrams / TCP
                                             (and .delivered: the share that arrived)
+    record.grant.2.off / .on                grant.rtig.2 through an rtig without / with --record, alternating
+    record.throughput.1.off / .on           throughput.1 the same way
 """
 
 from __future__ import annotations
@@ -56,8 +58,8 @@ class Report:
     def __init__(self) -> None:
         self.samples: dict[str, list[float]] = {}
 
-    def add(self, key: str, values: list[float]) -> None:
-        self.samples[key] = list(values)
+    def add(self, key: str, values: list[float], extend: bool = False) -> None:
+        self.samples[key] = (self.samples.get(key, []) if extend else []) + list(values)
 
     def median(self, key: str) -> Optional[float]:
         values = self.samples.get(key)
@@ -127,7 +129,22 @@ class Report:
         lossy = [self._loss_row(path) for path in ("udp", "tcp")]
         sections.append(("Best-effort stream, 200 Hz, 1 % of the gateway port's packets lost each way (loopback "
                          "in a namespace, nftables)", _present(lossy)))
+        recording = [self._record_row("lockstep of 2 federates with updates", "record.grant.2", "grant.floor"),
+                     self._record_row("throughput 1 → 1, 8 B updates", "record.throughput.1", "throughput.floor")]
+        sections.append(("Recording: rtig --record against the same rtig without, alternating rounds (target: the "
+                         "recorded run within 10 % of the other)", _present(recording)))
         return sections
+
+    def _record_row(self, figure: str, key: str, floor: str) -> Optional[Row]:
+        off, on = self.median(f"{key}.off"), self.median(f"{key}.on")
+        if off is None or on is None:
+            return None
+        rate = key.startswith("record.throughput")
+        cost = off / on if rate else on / off  # > 1: the recorded run is slower
+        show = _rate if rate else _us
+        return Row(f"{figure}: without / with --record", f"{show(off)} / {show(on)}", "",
+                   self._ratio(f"{key}.on", f"{floor}.py"), self._ratio(f"{key}.on", f"{floor}.cpp"),
+                   f"{cost:.2f}× the time of the run without: {'met' if cost <= 1.10 else 'missed'}")
 
     def _loss_row(self, path: str) -> Optional[Row]:
         """No floor: the figure is the comparison of the two paths under the same loss."""
@@ -226,6 +243,7 @@ def expected_keys() -> list[str]:
     keys += [f"update.{kind}.{s}" for s in PAYLOADS for kind in ("floor.py", "floor.cpp", "ro", "tso")]
     keys += [f"throughput.{n}" for n in SUBSCRIBERS]
     keys += [f"besteffort.{path}.loss1{part}" for path in ("udp", "tcp") for part in ("", ".delivered")]
+    keys += [f"record.{figure}.{side}" for figure in ("grant.2", "throughput.1") for side in ("off", "on")]
     return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
 
 

@@ -3,6 +3,8 @@ round trip; and the in-process gateway against the standalone rtig for the 2-fed
 
 from __future__ import annotations
 
+from typing import Optional
+
 import pytest
 
 import hlacore
@@ -30,12 +32,13 @@ def test_floor_cpp_rtt(report: Report, tcp_floor: str) -> None:
     report.add("grant.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS)])
 
 
-def run_lockstep(measure, address: str, federates: int, key: str, updates: bool = True) -> None:
-    rounds = ROUNDS[federates]
+def run_lockstep(measure, address: str, federates: int, key: str, updates: bool = True, extend: bool = False,
+                 rounds: Optional[int] = None) -> None:
+    rounds = rounds or ROUNDS[federates]
     federation = Lockstep(address, federates, max_steps=rounds + rounds // 10 + 10,  # warm-up, stop, margin
                           updates=updates)
     try:
-        measure(key, federation.step, rounds)
+        measure(key, federation.step, rounds, extend=extend)
         federation.finish()
     finally:
         federation.close()

@@ -41,6 +41,12 @@ def rtig_executable() -> str:
     return os.environ.get("HLACORE_TEST_RTIG") or rtig_beside_python()
 
 
+def status_client() -> str:
+    """The rtig that asks a gateway for its status (``rtig --status``): the installed one, since the sanitizer
+    build of scripts/test.sh is the gateway alone (cmake -DHLACORE_RTIG_STATUS=OFF)."""
+    return rtig_beside_python()
+
+
 class RtigProcess(Rtig):
     """The rtig under test on port 0, its log in the test's tmp_path."""
 

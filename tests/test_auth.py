@@ -21,7 +21,7 @@ import hlacore.rti as rti
 from hlacore.link import Link
 from hlacore.status import status
 
-from conftest import ROBOT_FED, RtigProcess, rtig_executable, running_rtig, wait_for_log
+from conftest import ROBOT_FED, RtigProcess, rtig_executable, running_rtig, status_client, wait_for_log
 from nethosts import NetHosts, nethosts  # noqa: F401 (the fixture)
 from test_robustness import T, frame, hello, raw_client, string, u32
 
@@ -114,10 +114,10 @@ def test_rtig_beyond_loopback_needs_a_secret() -> None:
 
 
 def test_rtig_status_proves_the_secret_too(guarded: RtigProcess, secret: pathlib.Path) -> None:
-    refused = subprocess.run([rtig_executable(), "--status", guarded.address], capture_output=True, text=True,
+    refused = subprocess.run([status_client(), "--status", guarded.address], capture_output=True, text=True,
                              timeout=30, env={k: v for k, v in os.environ.items() if k != "HLACORE_SECRET_FILE"})
     assert refused.returncode != 0 and "asks for a secret" in refused.stderr
-    shown = subprocess.run([rtig_executable(), "--secret-file", str(secret), "--status", guarded.address],
+    shown = subprocess.run([status_client(), "--secret-file", str(secret), "--status", guarded.address],
                            capture_output=True, text=True, timeout=30)
     assert shown.returncode == 0, shown.stderr
     assert '"federations"' in shown.stdout

@@ -98,7 +98,8 @@ def test_recording_holds_what_the_federates_did(kind: str, tmp_path: pathlib.Pat
     assert [o["kind"] for o in objects] == ["register", "update", "update", "delete"]
     assert objects[0]["object"] == "r1" and objects[0]["federate"] == "alpha"
     assert [(base64.b64decode(o["attributes"]["location"]), o["time"]) for o in objects[1:3]] == updates
-    assert all(o["tag"] == "tag" for o in objects[1:3])
+    assert all(o["tag"] == "tag" and o["order"] == "timestamp" for o in objects[1:3])
+    assert objects[3]["order"] == "receive" and objects[3]["time"] is None
     (interaction,) = by_topic["/TestFed/interactions/command"]
     assert interaction["time"] == 2.0 and interaction["tag"] == {"base64": base64.b64encode(b"\xfe").decode()}
     assert {k: base64.b64decode(v) for k, v in interaction["parameters"].items()} == {"name": b"go", "value": b"\x01\x02"}

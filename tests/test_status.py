@@ -13,7 +13,7 @@ import hlacore.status
 import hlacore.rti as rti
 from hlacore.status import status
 
-from conftest import ROBOT_FED, Recorder, RtigProcess, rtig_executable
+from conftest import ROBOT_FED, Recorder, RtigProcess, status_client
 
 
 def join_timed(address: str, name: str, lookahead: float) -> tuple[rti.RTIAmbassador, Recorder]:
@@ -66,7 +66,7 @@ def test_infinite_bounds_are_null_on_the_wire_and_inf_in_python(rtig: RtigProces
     creator = rti.RTIAmbassador(rtig.address)
     creator.createFederationExecution("TestFed", ROBOT_FED)
     lone, _ = join_timed(rtig.address, "lone", 1.0)
-    raw = subprocess.run([rtig_executable(), "--status", rtig.address], capture_output=True, text=True, timeout=10)
+    raw = subprocess.run([status_client(), "--status", rtig.address], capture_output=True, text=True, timeout=10)
     assert raw.returncode == 0, raw.stderr
     (federate,) = json.loads(raw.stdout)["federations"][0]["federates"]
     assert federate["name"] == "lone" and federate["lbts"] is None and federate["output_bound"] == 1.0
@@ -87,7 +87,7 @@ def test_status_of_nothing_listening_is_a_clear_error() -> None:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
-    out = subprocess.run([rtig_executable(), "--status", f"127.0.0.1:{port}"], capture_output=True, text=True,
+    out = subprocess.run([status_client(), "--status", f"127.0.0.1:{port}"], capture_output=True, text=True,
                          timeout=10)
     assert out.returncode == 1 and "cannot connect to rtig at 127.0.0.1:" in out.stderr
     out = subprocess.run([sys.executable, "-m", "hlacore.status", f"127.0.0.1:{port}"], capture_output=True,

@@ -22,7 +22,7 @@ import hlacore.rti as rti
 from hlacore.link import Link
 from hlacore.status import status
 
-from conftest import (ROBOT_FED, Federate, RtigProcess, joined_federation, rtig_executable, running_rtig,
+from conftest import (ROBOT_FED, Federate, RtigProcess, joined_federation, rtig_executable, running_rtig, status_client,
                       share_robot_location, tick_until, wait_for_log)
 from test_robustness import closed_and_dropped, raw_client
 
@@ -278,7 +278,7 @@ def test_the_options(tmp_path: pathlib.Path, certs: Certificates) -> None:
 
 def test_the_status_over_tls(tls_rtig: RtigProcess, certs: Certificates, monkeypatch: pytest.MonkeyPatch) -> None:
     rti.RTIAmbassador(tls_rtig.address, tls=certs.cert).createFederationExecution(FEDERATION, ROBOT_FED)
-    rtig = rtig_executable()
+    rtig = status_client()
     shown = subprocess.run([rtig, "--tls-ca", str(certs.cert), "--status", tls_rtig.address], capture_output=True,
                            text=True, timeout=30)
     assert shown.returncode == 0, shown.stderr

@@ -7,7 +7,9 @@
 #include <string>
 
 #include "rti/auth.hpp"
+#if HLACORE_RTIG_STATUS
 #include "rti/client/client.hpp"
+#endif
 #include "rti/server/gateway.hpp"
 
 namespace {
@@ -84,6 +86,7 @@ int print_status(const std::string& address, const std::string& secret, bool tls
         std::fprintf(stderr, "rtig: invalid address '%s' (HOST:PORT expected)\n", address.c_str());
         return 2;
     }
+#if HLACORE_RTIG_STATUS
     try {
         hlacore::ClientOptions client_options;
         client_options.secret = secret;
@@ -97,6 +100,12 @@ int print_status(const std::string& address, const std::string& secret, bool tls
         std::fprintf(stderr, "rtig: %s\n", e.what());
         return 1;
     }
+#else
+    (void)host, (void)secret, (void)tls, (void)tls_ca;
+    std::fprintf(stderr, "rtig: --status is not in this build (cmake -DHLACORE_RTIG_STATUS=OFF: a gateway-only build, "
+                         "such as the tests' sanitized one); ask with the installed rtig or python -m hlacore.status\n");
+    return 2;
+#endif
 }
 
 }  // namespace

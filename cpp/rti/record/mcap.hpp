@@ -61,6 +61,8 @@ private:
         std::uint64_t size;
     };
 
+    static void put_schema(std::string& out, const Schema& schema);
+    static void put_channel(std::string& out, const Channel& channel);
     void write(std::string_view bytes);
     void write_chunk();
     std::string path_;

@@ -60,6 +60,7 @@ public:
     std::vector<FederateHandle> federates() const;  // the joined ones, in the order they joined
     const ObjectInstance* object(ObjectHandle object) const;
     double federate_time(FederateHandle federate) const;
+    bool regulating(FederateHandle federate) const { return federates_.count(federate) && time_.regulating(federate); }
 
     // LBTS or the minimum next event time of a federate (HLA 1.3 §8.16, §8.18).
     double query_time(FederateHandle federate, wire::TimeQuery which);

@@ -673,6 +673,7 @@ void Gateway::serve(Connection& c, const wire::DestroyFederation& m) {
         if (it->second->federation.has_federates())
             throw RtiError(ErrorCode::FederatesCurrentlyJoined, std::to_string(it->second->federation.federate_count()) +
                                                                     " federate(s) still joined to '" + m.federation + "'");
+        if (recorder_) recorder_->forget(it->second->federation);
         federations_.erase(it);
         if (options_.verbose) log("destroyed federation '" + m.federation + "'");
     });

@@ -1,6 +1,7 @@
 #include "rti/server/recorder.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <ctime>
 
 #include "rti/server/federation.hpp"
@@ -34,7 +35,8 @@ std::string schema(const char* title, const std::string& properties) {
 template <class Members>
 std::string values_schema(const char* kind_enum, const char* values_key, const Members& members) {
     std::string props = std::string(R"("kind":{"enum":[)") + kind_enum + R"(]},)" +
-                        R"("time":{"type":["number","null"],"description":"the timestamp; null: receive order"},)" +
+                        R"("time":{"type":["number","null"],"description":"the timestamp, if any"},)" +
+                        R"("order":{"enum":["timestamp","receive"],"description":"as the sender sent it"},)" +
                         R"("serial":{"type":"integer"},"tag":)" + kTextOrBytes + ",\"" + values_key +
                         R"(":{"type":"object","properties":{)";
     bool first = true;
@@ -63,6 +65,37 @@ const char* name_of(const M&) {
     } else {
         return wire::message_name(M::kType);
     }
+}
+
+// `values` as a JSON object of base64 strings by the names `named(handle)` gives ("#handle" for none).
+template <class Named>
+void put_values(std::string& json, const char* key, const wire::HandleValues& values, Named&& named) {
+    json += ",\"";
+    json += key;
+    json += "\":{";
+    bool first = true;
+    for (const auto& [handle, value] : values) {
+        if (!first) json += ',';
+        first = false;
+        const auto* member = named(handle);
+        json_string(json, member ? member->name : "#" + std::to_string(handle));
+        json += ':';
+        json_base64(json, value);
+    }
+    json += '}';
+}
+
+void put_uint(std::string& json, std::uint64_t v) {
+    char text[24];
+    json.append(text, std::to_chars(text, text + sizeof text, v).ptr);
+}
+
+// The timestamp, and the order the sender asked for: timestamp order needs one and a regulating sender (each
+// receiver gets it so if it is constrained and the FOM or the sender's changeAttributeOrderType says so).
+void put_time(std::string& json, const Federation& federation, FederateHandle from, const wire::OptionalTime& time) {
+    json += ",\"time\":";
+    wire::JsonWriter::put(json, time);
+    json += time && federation.regulating(from) ? ",\"order\":\"timestamp\"" : ",\"order\":\"receive\"";
 }
 
 }  // namespace
@@ -106,16 +139,61 @@ void Recorder::detach(RecordTap& tap) {
     }
 }
 
-template <class Schema>
-void Recorder::write(const Federation& federation, const std::string& topic, const std::string& schema_name,
-                     Schema&& make_schema, std::string& json, RecordTap* only) {
+void Recorder::forget(const Federation& federation) {
+    taps_.erase(&federation);
+    for (auto it = topics_.begin(); it != topics_.end();)
+        it = std::get<0>(it->first) == &federation ? topics_.erase(it) : std::next(it);
+}
+
+Recorder::Topic& Recorder::topic(const Federation& federation, TopicKind kind, std::uint32_t cls) {
+    auto [it, added] = topics_.try_emplace({&federation, kind, cls});
+    Topic& t = it->second;
+    if (!added) return t;
+    const std::string prefix = "/" + federation.name();
+    auto message_topic = [&](const char* leaf, const char* key) {
+        t.name = prefix + "/hlacore/" + leaf;
+        t.schema_name = std::string("hlacore.") + key;
+        t.schema = schema(key, message_schema(key));
+    };
+    switch (kind) {
+        case TopicKind::Federation:
+            t.name = prefix + "/federation";
+            t.schema_name = "hlacore.FederationEvent";
+            t.schema = schema("a federation's membership", kFederationSchema);
+            break;
+        case TopicKind::Object: {
+            const fom::ObjectClass& c = *federation.fom().object_class(cls);
+            t.name = prefix + "/objects/" + c.qualified_name;
+            t.schema_name = "hlacore.Object." + c.qualified_name;
+            t.schema = schema(c.qualified_name.c_str(), values_schema(R"("register","update","delete")", "attributes", c.attributes));
+            break;
+        }
+        case TopicKind::Interaction: {
+            const fom::InteractionClass& c = *federation.fom().interaction_class(cls);
+            t.name = prefix + "/interactions/" + c.qualified_name;
+            t.schema_name = "hlacore.Interaction." + c.qualified_name;
+            t.schema = schema(c.qualified_name.c_str(), values_schema(R"("interaction")", "parameters", c.parameters));
+            break;
+        }
+        case TopicKind::Grants:
+            t.name = prefix + "/hlacore/grants";
+            t.schema_name = "hlacore.Grant";
+            t.schema = schema("timeAdvanceGrant", R"("time":{"type":"number"})");
+            break;
+        case TopicKind::Requests: message_topic("requests", "request"); break;
+        case TopicKind::Refusals: message_topic("refusals", "answer"); break;
+        case TopicKind::Callbacks: message_topic("callbacks", "callback"); break;
+    }
+    return t;
+}
+
+void Recorder::write(const Federation& federation, Topic& topic, std::string& json, RecordTap* only) {
     json += '}';
     const std::uint32_t sequence = ++sequence_;
-    const std::int64_t now = wall_ns();
+    const auto now = static_cast<std::uint64_t>(wall_ns());
     auto to_tap = [&](RecordTap& tap) {
-        const bool first = tap.topics.insert(topic).second;
-        tap.recorded(topic, schema_name, first ? make_schema() : std::string(), sequence,
-                     static_cast<std::uint64_t>(now), json);
+        const bool first = tap.topics.insert(topic.name).second;
+        tap.recorded(topic.name, topic.schema_name, first ? topic.schema : std::string(), sequence, now, json);
     };
     if (only) return to_tap(*only);
     if (auto taps = taps_.find(&federation); taps != taps_.end()) {
@@ -123,10 +201,9 @@ void Recorder::write(const Federation& federation, const std::string& topic, con
     }
     if (!writer_) return;
     try {
-        const std::uint16_t channel =
-            writer_->has_channel(topic) ? writer_->channel_id(topic) : writer_->channel(topic, schema_name, make_schema());
-        writer_->message(channel, sequence, static_cast<std::uint64_t>(now), json);
-        if (unflushed_since_ns_ < 0) unflushed_since_ns_ = now;
+        if (topic.channel == 0) topic.channel = writer_->channel(topic.name, topic.schema_name, topic.schema);
+        writer_->message(topic.channel, sequence, now, json);
+        if (unflushed_since_ns_ < 0) unflushed_since_ns_ = static_cast<std::int64_t>(now);
     } catch (const std::exception& e) {
         failure_ = e.what();  // the gateway logs it; serving goes on without the recording
         writer_.reset();
@@ -136,7 +213,9 @@ void Recorder::write(const Federation& federation, const std::string& topic, con
 void Recorder::begin(std::string& json, const Federation& federation, FederateHandle federate) const {
     json = "{\"federate\":";
     json_string(json, federation.federate_name(federate));
-    json += ",\"handle\":" + std::to_string(federate) + ",\"federate_time\":";
+    json += ",\"handle\":";
+    put_uint(json, federate);
+    json += ",\"federate_time\":";
     json_number(json, federation.federate_time(federate));
 }
 
@@ -149,8 +228,7 @@ void Recorder::write_created(const Federation& federation, RecordTap* only) {
     json_string(json_, federation.fed_name());
     json_ += ",\"fed_text\":";
     json_string(json_, federation.fed_text());
-    write(federation, "/" + federation.name() + "/federation", "hlacore.FederationEvent",
-          [] { return schema("a federation's membership", kFederationSchema); }, json_, only);
+    write(federation, topic(federation, TopicKind::Federation), json_, only);
 }
 
 void Recorder::joined(const Federation& federation, FederateHandle federate) {
@@ -160,8 +238,7 @@ void Recorder::joined(const Federation& federation, FederateHandle federate) {
 void Recorder::write_joined(const Federation& federation, FederateHandle federate, RecordTap* only) {
     begin(json_, federation, federate);
     json_ += ",\"event\":\"joined\"";
-    write(federation, "/" + federation.name() + "/federation", "hlacore.FederationEvent",
-          [] { return schema("a federation's membership", kFederationSchema); }, json_, only);
+    write(federation, topic(federation, TopicKind::Federation), json_, only);
 }
 
 void Recorder::dropped(const Federation& federation, FederateHandle federate, const std::string& why) {
@@ -169,8 +246,7 @@ void Recorder::dropped(const Federation& federation, FederateHandle federate, co
     begin(json_, federation, federate);
     json_ += ",\"event\":\"dropped\",\"reason\":";
     json_string(json_, why);
-    write(federation, "/" + federation.name() + "/federation", "hlacore.FederationEvent",
-          [] { return schema("a federation's membership", kFederationSchema); }, json_);
+    write(federation, topic(federation, TopicKind::Federation), json_);
 }
 
 void Recorder::request(const Federation& federation, FederateHandle from, const wire::Message& message) {
@@ -178,14 +254,12 @@ void Recorder::request(const Federation& federation, FederateHandle from, const 
     std::visit(
         [&](const auto& m) {
             using M = std::decay_t<decltype(m)>;
-            if constexpr (std::is_same_v<M, wire::UpdateAttributes>) {
-                record_update(federation, from, m);
+            if constexpr (std::is_same_v<M, wire::UpdateAttributes> || std::is_same_v<M, wire::DeleteObject>) {
+                record_object_event(federation, from, m, message);
             } else if constexpr (std::is_same_v<M, wire::SendInteraction>) {
                 record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, nullptr);
             } else if constexpr (std::is_same_v<M, wire::SendInteractionWithRegion>) {
                 record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, &m.region);
-            } else if constexpr (std::is_same_v<M, wire::DeleteObject>) {
-                record_delete(federation, from, m);
             } else if constexpr (std::is_same_v<M, wire::RegisterObject> ||
                                  std::is_same_v<M, wire::RegisterObjectWithRegion>) {
                 // Recorded with its outcome (answered): the object's handle and name.
@@ -194,7 +268,7 @@ void Recorder::request(const Federation& federation, FederateHandle from, const 
                                  std::is_same_v<M, wire::DatagramPath> || std::is_same_v<M, wire::StartRecording>) {
                 // Questions that change nothing in the federation.
             } else {
-                record_generic(federation, from, "requests", "request", name_of(m), message);
+                record_message(federation, from, TopicKind::Requests, "request", name_of(m), message);
             }
         },
         message);
@@ -204,17 +278,15 @@ void Recorder::answered(const Federation& federation, FederateHandle to, const w
     if (!records(federation)) return;
     if (const auto* registered = std::get_if<wire::ObjectRegistered>(&answer)) {
         const ObjectInstance* object = federation.object(registered->object);
-        const fom::ObjectClass* cls = object ? federation.fom().object_class(object->object_class) : nullptr;
-        if (!cls) return;
+        if (!object) return;
         begin(json_, federation, to);
         json_ += ",\"kind\":\"register\",\"object\":";
         json_string(json_, registered->name);
-        json_ += ",\"object_handle\":" + std::to_string(registered->object);
-        write(federation, "/" + federation.name() + "/objects/" + cls->qualified_name, "hlacore.Object." + cls->qualified_name,
-              [&] { return schema(cls->qualified_name.c_str(), values_schema(R"("register","update","delete")", "attributes", cls->attributes)); },
-              json_);
+        json_ += ",\"object_handle\":";
+        put_uint(json_, registered->object);
+        write(federation, topic(federation, TopicKind::Object, object->object_class), json_);
     } else if (const auto* reply = std::get_if<wire::Reply>(&answer); reply && reply->error != 0) {
-        record_generic(federation, to, "refusals", "answer", "Reply", answer);
+        record_message(federation, to, TopicKind::Refusals, "answer", "Reply", answer);
     }
 }
 
@@ -224,39 +296,34 @@ void Recorder::callback(const Federation& federation, FederateHandle to, const w
         begin(json_, federation, to);
         json_ += ",\"time\":";
         json_number(json_, grant->time);
-        write(federation, "/" + federation.name() + "/hlacore/grants", "hlacore.Grant",
-              [] { return schema("timeAdvanceGrant", R"("time":{"type":"number"})"); }, json_);
+        write(federation, topic(federation, TopicKind::Grants), json_);
         return;
     }
-    std::visit([&](const auto& m) { record_generic(federation, to, "callbacks", "callback", name_of(m), message); },
+    std::visit([&](const auto& m) { record_message(federation, to, TopicKind::Callbacks, "callback", name_of(m), message); },
                message);
 }
 
-void Recorder::record_update(const Federation& federation, FederateHandle from, const wire::UpdateAttributes& m) {
+template <class M>
+void Recorder::record_object_event(const Federation& federation, FederateHandle from, const M& m,
+                                   const wire::Message& message) {
     const ObjectInstance* object = federation.object(m.object);
-    const fom::ObjectClass* cls = object ? federation.fom().object_class(object->object_class) : nullptr;
-    if (!cls) return record_generic(federation, from, "requests", "request", "UpdateAttributes", m);
+    if (!object)  // refused as it is served, or an object deleted meanwhile: kept as the request it is
+        return record_message(federation, from, TopicKind::Requests, "request", wire::message_name(M::kType), message);
     begin(json_, federation, from);
-    json_ += ",\"kind\":\"update\",\"object\":";
+    json_ += std::is_same_v<M, wire::UpdateAttributes> ? ",\"kind\":\"update\",\"object\":" : ",\"kind\":\"delete\",\"object\":";
     json_string(json_, object->name);
-    json_ += ",\"object_handle\":" + std::to_string(m.object) + ",\"time\":";
-    wire::JsonWriter::put(json_, m.time);
-    json_ += ",\"serial\":" + std::to_string(m.serial) + ",\"tag\":";
+    json_ += ",\"object_handle\":";
+    put_uint(json_, m.object);
+    put_time(json_, federation, from, m.time);
+    json_ += ",\"serial\":";
+    put_uint(json_, m.serial);
+    json_ += ",\"tag\":";
     json_text(json_, m.tag);
-    json_ += ",\"attributes\":{";
-    bool first = true;
-    for (const auto& [handle, value] : m.values) {
-        const fom::Attribute* attribute = cls->attribute(handle);
-        if (!first) json_ += ',';
-        first = false;
-        json_string(json_, attribute ? attribute->name : "#" + std::to_string(handle));
-        json_ += ':';
-        json_base64(json_, value);
+    if constexpr (std::is_same_v<M, wire::UpdateAttributes>) {
+        const fom::ObjectClass& cls = *federation.fom().object_class(object->object_class);
+        put_values(json_, "attributes", m.values, [&](std::uint32_t h) { return cls.attribute(h); });
     }
-    json_ += '}';
-    write(federation, "/" + federation.name() + "/objects/" + cls->qualified_name, "hlacore.Object." + cls->qualified_name,
-          [&] { return schema(cls->qualified_name.c_str(), values_schema(R"("register","update","delete")", "attributes", cls->attributes)); },
-          json_);
+    write(federation, topic(federation, TopicKind::Object, object->object_class), json_);
 }
 
 void Recorder::record_interaction(const Federation& federation, FederateHandle from, std::uint32_t class_handle,
@@ -265,46 +332,20 @@ void Recorder::record_interaction(const Federation& federation, FederateHandle f
     const fom::InteractionClass* cls = federation.fom().interaction_class(class_handle);
     if (!cls) return;  // refused as it is served; the drop is recorded
     begin(json_, federation, from);
-    json_ += ",\"kind\":\"interaction\",\"time\":";
-    wire::JsonWriter::put(json_, time);
+    json_ += ",\"kind\":\"interaction\"";
+    put_time(json_, federation, from, time);
     json_ += ",\"tag\":";
     json_text(json_, tag);
-    if (region) json_ += ",\"region\":" + std::to_string(*region);
-    json_ += ",\"parameters\":{";
-    bool first = true;
-    for (const auto& [handle, value] : values) {
-        const fom::Parameter* parameter = cls->parameter(handle);
-        if (!first) json_ += ',';
-        first = false;
-        json_string(json_, parameter ? parameter->name : "#" + std::to_string(handle));
-        json_ += ':';
-        json_base64(json_, value);
+    if (region) {
+        json_ += ",\"region\":";
+        put_uint(json_, *region);
     }
-    json_ += '}';
-    write(federation, "/" + federation.name() + "/interactions/" + cls->qualified_name,
-          "hlacore.Interaction." + cls->qualified_name,
-          [&] { return schema(cls->qualified_name.c_str(), values_schema(R"("interaction")", "parameters", cls->parameters)); },
-          json_);
+    put_values(json_, "parameters", values, [&](std::uint32_t h) { return cls->parameter(h); });
+    write(federation, topic(federation, TopicKind::Interaction, class_handle), json_);
 }
 
-void Recorder::record_delete(const Federation& federation, FederateHandle from, const wire::DeleteObject& m) {
-    const ObjectInstance* object = federation.object(m.object);
-    const fom::ObjectClass* cls = object ? federation.fom().object_class(object->object_class) : nullptr;
-    if (!cls) return record_generic(federation, from, "requests", "request", "DeleteObject", m);
-    begin(json_, federation, from);
-    json_ += ",\"kind\":\"delete\",\"object\":";
-    json_string(json_, object->name);
-    json_ += ",\"object_handle\":" + std::to_string(m.object) + ",\"time\":";
-    wire::JsonWriter::put(json_, m.time);
-    json_ += ",\"serial\":" + std::to_string(m.serial) + ",\"tag\":";
-    json_text(json_, m.tag);
-    write(federation, "/" + federation.name() + "/objects/" + cls->qualified_name, "hlacore.Object." + cls->qualified_name,
-          [&] { return schema(cls->qualified_name.c_str(), values_schema(R"("register","update","delete")", "attributes", cls->attributes)); },
-          json_);
-}
-
-void Recorder::record_generic(const Federation& federation, FederateHandle federate, const char* topic_leaf,
-                              const char* key, const char* name, const wire::Message& message) {
+void Recorder::record_message(const Federation& federation, FederateHandle federate, TopicKind kind, const char* key,
+                              const char* name, const wire::Message& message) {
     begin(json_, federation, federate);
     json_ += ",\"";
     json_ += key;
@@ -317,8 +358,7 @@ void Recorder::record_generic(const Federation& federation, FederateHandle feder
             else wire::to_json(json_, m);
         },
         message);
-    write(federation, "/" + federation.name() + "/hlacore/" + topic_leaf, std::string("hlacore.") + key,
-          [&] { return schema(key, message_schema(key)); }, json_);
+    write(federation, topic(federation, kind), json_);
 }
 
 }  // namespace hlacore

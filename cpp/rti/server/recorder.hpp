@@ -25,6 +25,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -57,6 +58,8 @@ public:
     // federates joined so far.
     void attach(const Federation& federation, RecordTap& tap);
     void detach(RecordTap& tap);
+    // The federation is being destroyed: forgets what it knew of it.
+    void forget(const Federation& federation);
     // Whether anything records `federation`'s events (the file, or a tap of it).
     bool records(const Federation& federation) const { return writer_ || taps_.count(&federation); }
 
@@ -81,24 +84,34 @@ public:
     std::string take_failure() { return std::exchange(failure_, std::string()); }
 
 private:
-    // Writes `json` (an object without its closing brace) on `topic`, whose schema is made by `schema`, to the
-    // file and `federation`'s taps, or to `only` that tap.
-    template <class Schema>
-    void write(const Federation& federation, const std::string& topic, const std::string& schema_name,
-               Schema&& schema, std::string& json, RecordTap* only = nullptr);
+    // Where a record goes: its topic, the topic's schema, and its channel in the file (0: not written yet).
+    enum class TopicKind : std::uint8_t { Federation, Object, Interaction, Requests, Refusals, Callbacks, Grants };
+    struct Topic {
+        std::string name;
+        std::string schema_name;
+        std::string schema;
+        std::uint16_t channel = 0;
+    };
+    Topic& topic(const Federation& federation, TopicKind kind, std::uint32_t cls = 0);
+    // Writes `json` (an object without its closing brace) on `topic` to the file and `federation`'s taps, or
+    // to `only` that tap.
+    void write(const Federation& federation, Topic& topic, std::string& json, RecordTap* only = nullptr);
     void write_created(const Federation& federation, RecordTap* only);
     void write_joined(const Federation& federation, FederateHandle federate, RecordTap* only);
     void begin(std::string& json, const Federation& federation, FederateHandle federate) const;
-    void record_update(const Federation& federation, FederateHandle from, const wire::UpdateAttributes& m);
+    template <class M>  // UpdateAttributes or DeleteObject
+    void record_object_event(const Federation& federation, FederateHandle from, const M& m,
+                             const wire::Message& message);
     void record_interaction(const Federation& federation, FederateHandle from, std::uint32_t cls,
                             const wire::HandleValues& values, const std::string& tag, const wire::OptionalTime& time,
                             const std::uint32_t* region);
-    void record_delete(const Federation& federation, FederateHandle from, const wire::DeleteObject& m);
-    void record_generic(const Federation& federation, FederateHandle federate, const char* topic_leaf,
-                        const char* key, const char* name, const wire::Message& message);
+    // A request, refusal or callback: `key` names the wire message `name`, "fields" holds its fields.
+    void record_message(const Federation& federation, FederateHandle federate, TopicKind kind, const char* key,
+                        const char* name, const wire::Message& message);
 
     std::unique_ptr<mcap::Writer> writer_;
     std::map<const Federation*, std::vector<RecordTap*>> taps_;
+    std::map<std::tuple<const Federation*, TopicKind, std::uint32_t>, Topic> topics_;
     std::uint32_t sequence_ = 0;
     std::int64_t unflushed_since_ns_ = -1;
     std::string failure_;

@@ -1,5 +1,6 @@
 #include "rti/wire/json.hpp"
 
+#include <charconv>
 #include <cstdio>
 
 namespace hlacore {
@@ -26,9 +27,8 @@ void json_number(std::string& out, double v) {
         out += "null";
         return;
     }
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    out += text;
+    char text[32];  // the shortest text that reads back as v
+    out.append(text, std::to_chars(text, text + sizeof text, v).ptr);
 }
 
 void json_base64(std::string& out, std::string_view bytes) {

@@ -1,7 +1,7 @@
 // JSON writing: the gateway's status report (server/status.cpp) and the recording (server/recorder.cpp),
 // which writes a wire message as a JSON object, its field names from HLACORE_FIELDS.
-// Encodings: integers and bools as JSON numbers and booleans, a double as a number that reads back as the
-// same double (infinities and NaN as null), an absent time as null,
+// Encodings: integers and bools as JSON numbers and booleans, a double as the shortest number that reads
+// back as the same double (infinities and NaN as null), an absent time as null,
 // handle lists as arrays, a text that is valid UTF-8 as a JSON string and any other byte string as
 // {"base64": "..."}, handle-value pairs as [handle, "base64 of the value"], nested records as objects.
 #pragma once

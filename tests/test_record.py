@@ -26,7 +26,8 @@ from hlacore import rti
 from hlacore.experiments.robot_in_the_loop.experiment import Experiment, ExperimentOptions, run_experiment
 from hlacore.processes import Child
 from hlacore.federates.robot_driver.report import decode_report
-from hlacore.recording import RecordingError, read
+from hlacore.recording import Event, RecordingError, read
+from hlacore.replay import ReplayError, script
 from hlacore.replay.diff import compare
 
 from conftest import ROBOT_FED, Federate, running_rtig, tick_until
@@ -260,3 +261,25 @@ def test_recorder_federate_records_what_rtig_records(tmp_path: pathlib.Path) -> 
     assert content(recorder_events[2:]) == content(gateway_events[joined + 1:resigned])
     assert sum(1 for e in recorder_events if e.kind == "update") == CYCLES
     assert compare(by_gateway, by_recorder).same
+
+
+def test_replay_script_skips_refused_requests_and_refuses_what_it_cannot_replay() -> None:
+    def event(sequence: int, topic: str, **data: Any) -> Event:
+        return Event(sequence, sequence, "F", topic, data, 0)
+
+    recorded = [
+        event(1, "federation", event="created", fed_name="robot.fed", fed_text="(FED)"),
+        event(2, "federation", event="joined", federate="robot", handle=1),
+        event(3, "hlacore/requests", federate="robot", request="ResignFederation", fields={"request": 5, "action": 4}),
+        event(4, "hlacore/refusals", federate="robot", answer="Reply", fields={"request": 5, "error": 1, "message": "no"}),
+        event(5, "hlacore/grants", federate="robot", time=1.0),
+        event(6, "hlacore/requests", federate="robot", request="ResignFederation", fields={"request": 6, "action": 3}),
+    ]
+    steps = script(recorded, "robot").steps
+    assert [(s.event.sequence, s.waits) for s in steps] == [(6, {"TimeAdvanceGrant": 1})]
+    unsupported = recorded[:2] + [event(3, "hlacore/requests", federate="robot", request="UnconditionalDivestiture",
+                                        fields={"object": 1, "attributes": [1]})]
+    with pytest.raises(ReplayError, match="UnconditionalDivestiture request .* replay does not support yet"):
+        script(unsupported, "robot")
+    with pytest.raises(ReplayError, match="no federate named 'nobody'.*'robot'"):
+        script(recorded, "nobody")

@@ -112,10 +112,14 @@ def script(events: Iterable[Event], federate: str, federation: Optional[str] = N
     if chosen not in created:
         raise ReplayError(f"the recording does not hold the creation of federation {chosen!r} (its FOM): it "
                           f"was started after the federation was created")
+    # Requests the gateway refused (an exception at the call): not made again.
+    refused = {int(e.data["fields"]["request"]) for e in by_federation[chosen] if e.kind == "refusal"}
     counts: collections.Counter[str] = collections.Counter()
     steps: list[Step] = []
     resigned = False
     for event in by_federation[chosen]:
+        if event.kind == "request" and int(event.data["fields"].get("request", 0)) in refused:
+            continue
         kind = event.kind
         if kind == "callback" or kind == "grant":
             name = "TimeAdvanceGrant" if kind == "grant" else str(event.message)

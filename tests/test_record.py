@@ -30,7 +30,7 @@ from hlacore.recording import Event, RecordingError, read
 from hlacore.replay import ReplayError, script
 from hlacore.replay.diff import compare
 
-from conftest import ROBOT_FED, Federate, running_rtig, tick_until
+from conftest import ROBOT_FED, Federate, running_rtig, share_robot_location, tick_until, wait_for_log
 
 CYCLES = 6
 WALL_CLOCK_MEMBERS = ("t_action", "t_send", "t_cycle", "clock_offset", "clock_uncertainty")
@@ -283,3 +283,25 @@ def test_replay_script_skips_refused_requests_and_refuses_what_it_cannot_replay(
         script(unsupported, "robot")
     with pytest.raises(ReplayError, match="no federate named 'nobody'.*'robot'"):
         script(recorded, "nobody")
+
+
+def test_a_full_disk_stops_the_recording_not_the_gateway(tmp_path: pathlib.Path) -> None:
+    with running_rtig(tmp_path, "--record", "/dev/full") as server:
+        creator = rti.RTIAmbassador(server.address)
+        creator.createFederationExecution("TestFed", ROBOT_FED)
+        a, b = Federate(server.address, "alpha"), Federate(server.address, "beta")
+        robot, location = share_robot_location(a, b)
+        obj = a.rtia.registerObjectInstance(robot, "r1")
+        for i in range(3):
+            a.rtia.updateAttributeValues(obj, {location: b"before %d" % i}, "")
+        # The recorder writes out within half a second, and /dev/full refuses.
+        wait_for_log(server, r"recording into /dev/full stopped: cannot write the recording '/dev/full': "
+                             r"No space left on device")
+        for i in range(3):
+            a.rtia.updateAttributeValues(obj, {location: b"after %d" % i}, "")
+        tick_until(lambda: len(b.amb.named("reflectAttributeValues")) == 6, a.rtia, b.rtia)
+        assert [args[1][location] for args in b.amb.named("reflectAttributeValues")][3:] == [b"after 0", b"after 1",
+                                                                                               b"after 2"]
+        for f in (a, b):
+            f.rtia.resignFederationExecution(rti.ResignAction.DeleteObjects)
+        creator.destroyFederationExecution("TestFed")

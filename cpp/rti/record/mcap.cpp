@@ -188,7 +188,7 @@ void Writer::write_chunk() {
     write(head);
     write(chunk_);
     write(indexes);
-    std::fflush(file_);
+    flush_file();
     chunk_indexes_.push_back(std::move(index));
     chunk_.clear();
     chunk_messages_.clear();
@@ -197,7 +197,13 @@ void Writer::write_chunk() {
 void Writer::flush() {
     if (!file_) return;
     write_chunk();
-    std::fflush(file_);
+    flush_file();
+}
+
+// stdio keeps small writes in its buffer: a full disk shows only here.
+void Writer::flush_file() {
+    if (std::fflush(file_) != 0)
+        throw std::runtime_error("cannot write the recording '" + path_ + "': " + std::strerror(errno));
 }
 
 void Writer::close() {

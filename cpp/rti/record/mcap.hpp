@@ -64,6 +64,7 @@ private:
     static void put_schema(std::string& out, const Schema& schema);
     static void put_channel(std::string& out, const Channel& channel);
     void write(std::string_view bytes);
+    void flush_file();
     void write_chunk();
     std::string path_;
     std::FILE* file_ = nullptr;

@@ -7,6 +7,8 @@ import pathlib
 
 import pytest
 
+from hlacore.processes import Rtig
+
 from .procs import bench_rtig
 from .test_grant import ROUNDS as LOCKSTEP_ROUNDS
 from .test_grant import run_lockstep
@@ -19,7 +21,7 @@ PAIRS = 6
 ALTERNATION = [f"{side}-{i}" for i in range(1, PAIRS + 1) for side in ("off", "on")]
 
 
-def recording_rtig(side: str, tmp_path: pathlib.Path):  # type: ignore[no-untyped-def]
+def recording_rtig(side: str, tmp_path: pathlib.Path) -> Rtig:
     return bench_rtig("--record", str(tmp_path / "run.mcap")) if side.startswith("on") else bench_rtig()
 
 

@@ -15,6 +15,7 @@ import json
 import pathlib
 import subprocess
 import sys
+import time
 from importlib import resources
 from typing import Any, Iterator
 
@@ -304,4 +305,50 @@ def test_a_full_disk_stops_the_recording_not_the_gateway(tmp_path: pathlib.Path)
                                                                                                b"after 2"]
         for f in (a, b):
             f.rtia.resignFederationExecution(rti.ResignAction.DeleteObjects)
+        creator.destroyFederationExecution("TestFed")
+
+
+def test_several_federates_replayed_at_the_recorded_pace(tmp_path: pathlib.Path) -> None:
+    """--as twice (one thread each) and --speed: an untimed publisher's updates, 0.3 s apart when recorded,
+    reach a live subscriber in the same order with the same values, about 0.15 s apart at speed 2."""
+    recording = tmp_path / "untimed.mcap"
+    sent = [b"first", b"second", b"third"]
+    with recording_gateway("in-process", tmp_path, recording) as address:
+        creator = rti.RTIAmbassador(address)
+        creator.createFederationExecution("TestFed", ROBOT_FED)
+        pub, sub = Federate(address, "pub"), Federate(address, "sub")
+        robot, location = share_robot_location(pub, sub)
+        tick_until(lambda: bool(pub.amb.named("startRegistrationForObjectClass")), pub.rtia, sub.rtia)
+        obj = pub.rtia.registerObjectInstance(robot, "r1")
+        for value in sent:
+            pub.rtia.updateAttributeValues(obj, {location: value}, "")
+            time.sleep(0.3)
+        tick_until(lambda: len(sub.amb.named("reflectAttributeValues")) == 3, pub.rtia, sub.rtia)
+        for f in (sub, pub):
+            f.rtia.resignFederationExecution(rti.ResignAction.DeleteObjects)
+        creator.destroyFederationExecution("TestFed")
+
+    with hlacore.Gateway(port=0) as gateway:
+        creator = rti.RTIAmbassador(gateway.address)
+        creator.createFederationExecution("TestFed", ROBOT_FED)
+        watcher = Federate(gateway.address, "watcher")
+        robot = watcher.rtia.getObjectClassHandle("robot")
+        location = watcher.rtia.getAttributeHandle("location", robot)
+        watcher.rtia.subscribeObjectClassAttributes(robot, [location])
+        arrivals: list[tuple[float, bytes]] = []
+        with Child([sys.executable, "-m", "hlacore.replay", str(recording), "--as", "pub", "--as", "sub",
+                    "--rtig", gateway.address, "--speed", "2"]) as replay:
+            deadline = time.monotonic() + 30
+            while len(arrivals) < 3 and time.monotonic() < deadline:
+                watcher.rtia.tick(0.01, 0.05)
+                for args in watcher.amb.named("reflectAttributeValues")[len(arrivals):]:
+                    arrivals.append((time.monotonic(), args[1][location]))
+            assert replay.wait(timeout=30) == 0, replay.stderr()
+            # pub: publish, register, three updates, resign; sub: subscribe, resign.
+            assert sorted(replay.read_line(5) for _ in range(2)) == ["replay: 'pub': 6 steps replayed",
+                                                                     "replay: 'sub': 2 steps replayed"]
+        assert [value for _, value in arrivals] == sent
+        gaps = [later - earlier for (earlier, _), (later, _) in zip(arrivals, arrivals[1:])]
+        assert all(gap > 0.1 for gap in gaps), gaps  # 0.3 s recorded / 2; without --speed: milliseconds
+        watcher.rtia.resignFederationExecution(rti.ResignAction.NoAction)
         creator.destroyFederationExecution("TestFed")

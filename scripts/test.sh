@@ -12,6 +12,8 @@ command -v nft >/dev/null 2>&1 \
     || debian_install "nft drops packets in the namespace of the best-effort loss bench (bench/lossy_stream.py)" nftables
 command -v openssl >/dev/null 2>&1 \
     || debian_install "the openssl command makes the test certificates of tests/test_tls.py" openssl
+command -v pkg-config >/dev/null 2>&1 \
+    || debian_install "pkg-config reads the installed hlacore.pc in tests/test_cpp_api.py (the HLA 1.3 C++ API)" pkgconf
 install_hlacore test
 [ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build
@@ -21,6 +23,12 @@ mkdir -p build
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/asan-configure.log 2>&1 \
     || { cat build/asan-configure.log; exit 1; }
 cmake_build build/asan "the ASan+UBSan rtig the tests run against" rtig tcp_floor state_types_test
+# The C++ test federates of the HLA 1.3 API (tests/cpp/hla13), against the installed package's CMake config.
+hla13_dir=$(.venv/bin/python -m hlacore.config --cmake-dir) || exit 1
+.venv/bin/cmake -S tests/cpp/hla13 -B build/hla13-tests -G Ninja -Dhlacore_DIR="$hla13_dir" \
+    -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/hla13-tests-configure.log 2>&1 \
+    || { cat build/hla13-tests-configure.log; exit 1; }
+cmake_build build/hla13-tests "the C++ test federates of the HLA 1.3 API" all
 if ./scripts/fuzz.sh --build-only; then
     export HLACORE_TEST_FUZZERS="$PWD/build/fuzz"
 elif [ "${CI:-}" = true ]; then
@@ -29,5 +37,5 @@ else
     echo "test.sh: the fuzz targets could not be built; tests/test_fuzz.py will skip" >&2
 fi
 export HLACORE_TEST_RTIG="$PWD/build/asan/rtig" HLACORE_TEST_TCP_FLOOR="$PWD/build/asan/tcp_floor" \
-    HLACORE_TEST_STATE_TYPES="$PWD/build/asan/state_types_test"
+    HLACORE_TEST_STATE_TYPES="$PWD/build/asan/state_types_test" HLACORE_TEST_HLA13="$PWD/build/hla13-tests"
 exec .venv/bin/python -m pytest "$@"

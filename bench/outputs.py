@@ -14,6 +14,9 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 BUILD = ROOT / "build" / "bench"
 DOC = ROOT / "docs" / "performance.md"
 BEGIN, END = "<!-- bench results: begin (written by ./scripts/bench.sh) -->", "<!-- bench results: end -->"
+# The three-RTI table, written whenever a run measured all of it (./scripts/bench.sh -k three_rtis does).
+RTIS_BEGIN = "<!-- three RTIs: begin (written by ./scripts/bench.sh -k three_rtis) -->"
+RTIS_END = "<!-- three RTIs: end -->"
 
 
 def results_markdown(report: Report, machine: dict[str, str], command: str) -> str:
@@ -35,19 +38,25 @@ def write(report: Report, machine: dict[str, str], command: str) -> list[pathlib
     png = BUILD / "grant-latency.png"
     if grant_latency_png(report, png):
         written.append(png)
+    if report.three_rtis_complete():
+        load = machine["load average (1 min) at start / end"]
+        lines = [f"Measured {machine['date']} by `{command}` on {machine['cores']} cores of {machine['cpu']} "
+                 f"(load average at start / end {load}).", "", report.three_rtis_markdown()]
+        if _replace_section(DOC, "\n".join(lines), RTIS_BEGIN, RTIS_END) and DOC not in written:
+            written.append(DOC)
     if report.complete():
         shutil.copyfile(png, ROOT / "docs" / "grant-latency.png")
         written.append(ROOT / "docs" / "grant-latency.png")
-        if _replace_section(DOC, text):
+        if _replace_section(DOC, text) and DOC not in written:
             written.append(DOC)
     return written
 
 
-def _replace_section(path: pathlib.Path, text: str) -> bool:
+def _replace_section(path: pathlib.Path, text: str, begin: str = BEGIN, end: str = END) -> bool:
     doc = path.read_text() if path.exists() else ""
-    if BEGIN not in doc or END not in doc:
+    if begin not in doc or end not in doc:
         return False
-    head, rest = doc.split(BEGIN, 1)
-    _, tail = rest.split(END, 1)
-    path.write_text(f"{head}{BEGIN}\n{text}\n{END}{tail}")
+    head, rest = doc.split(begin, 1)
+    _, tail = rest.split(end, 1)
+    path.write_text(f"{head}{begin}\n{text}\n{end}{tail}")
     return True

@@ -18,6 +18,9 @@ messages per second (rates), keyed as the bench tests record them:
                                             (and .delivered: the share that arrived)
     record.grant.2.off / .on                grant.rtig.2 through an rtig without / with --record, alternating
     record.throughput.1.off / .on           throughput.1 the same way
+    rtis.floor.cpp, rtis.floor.stream.cpp   the three-RTI run's floors: C++ TCP round trip 8 B, stream rate
+    rtis.R.lockstep.K, rtis.R.pingpong,     the three-RTI benchmark, R = hlacore, openrti, certi (the C++
+    rtis.R.throughput                       program of bench/rtis) or python (hlacore's Python federates)
 """
 
 from __future__ import annotations
@@ -28,6 +31,9 @@ from dataclasses import dataclass
 from typing import Callable, Optional
 
 FEDERATES = (2, 4, 8, 16, 32)
+RTI_LOCKSTEP = (2, 4, 8)  # the three-RTI benchmark's lockstep sizes (bench/test_three_rtis.py)
+RTI_COLUMNS = (("hlacore", "hlacore, C++"), ("python", "hlacore, Python"), ("openrti", "OpenRTI, C++"),
+               ("certi", "CERTI 3.5.1, C++"))
 PAYLOADS = (8, 1024, 65536)
 SUBSCRIBERS = (1, 8)
 FOMS = ("fom.flat", "fom.tree", "fom.tree.python", "fom.10mb", "fom.10mb.rtig")
@@ -221,6 +227,9 @@ class Report:
 
     def markdown(self) -> str:
         out = []
+        if any(k.startswith("rtis.") for k in self.samples):
+            out += ["### Three RTIs: the same C++ HLA 1.3 program against each, and hlacore's Python federates",
+                    "", self.three_rtis_markdown(), ""]
         for title, rows in self.rows():
             if not rows:
                 continue
@@ -230,6 +239,54 @@ class Report:
             out += [f"| {r.figure} | {r.median} | {r.p99} | {r.vs_py} | {r.vs_cpp} | {r.target} |" for r in rows]
             out.append("")
         return "\n".join(out)
+
+    def three_rtis_complete(self) -> bool:
+        """True when every figure of the three-RTI table is here."""
+        return all(k in self.samples for k in three_rtis_keys())
+
+    def three_rtis_markdown(self) -> str:
+        """The three-RTI table: each cell the median and its ratio to this run's C++ floor (the round trip
+        for latencies; for rates, the fraction of the stream floor), then the issue's targets."""
+        rows = []
+        for k in RTI_LOCKSTEP:
+            rows.append((f"lockstep K = {k}, µs per step", f"lockstep.{k}", self._three_rti_lockstep_target(k)))
+        rows.append(("update ping-pong round trip, 8 B, µs", "pingpong", self._speedup_target("pingpong", 2.0)))
+        rows.append(("throughput 1 → 1, 8 B updates per s", "throughput", self._speedup_target("throughput", 3.0)))
+        out = ["| figure | " + " | ".join(name for _, name in RTI_COLUMNS) + " | targets |",
+               "|---|" + "---|" * len(RTI_COLUMNS) + "---|"]
+        for figure, key, target in rows:
+            cells = [self._three_rti_cell(f"rtis.{rti}.{key}") for rti, _ in RTI_COLUMNS]
+            out.append(f"| {figure} | " + " | ".join(cells) + f" | {target} |")
+        floor, stream = self.median("rtis.floor.cpp"), self.median("rtis.floor.stream.cpp")
+        out += ["", f"Floors of the same run: C++ TCP round trip 8 B {_us(floor) if floor else '–'}, "
+                    f"C++ stream of 48 B messages {_rate(stream)}."]
+        return "\n".join(out)
+
+    def _three_rti_cell(self, key: str) -> str:
+        m = self.median(key)
+        if m is None:
+            return "–"
+        if key.endswith("throughput"):
+            floor = self.median("rtis.floor.stream.cpp")
+            return f"{_rate(m)} = {m / floor:.2f} of the floor" if floor else _rate(m)
+        floor = self.median("rtis.floor.cpp")
+        return f"{m * 1e6:.0f} = {m / floor:.1f}×" if floor else f"{m * 1e6:.0f}"
+
+    def _speedup_target(self, key: str, factor: float) -> str:
+        """hlacore's C++ figure against OpenRTI's: `factor` times faster (latency) or more (rate)."""
+        ours, theirs = self.median(f"rtis.hlacore.{key}"), self.median(f"rtis.openrti.{key}")
+        if ours is None or theirs is None:
+            return ""
+        ratio = ours / theirs if key == "throughput" else theirs / ours
+        return f"C++ ≥ {factor:g}× OpenRTI: {'met' if ratio >= factor else 'missed'} ({ratio:.2f}×)"
+
+    def _three_rti_lockstep_target(self, k: int) -> str:
+        speedup = self._speedup_target(f"lockstep.{k}", 2.0)
+        python, openrti = self.median(f"rtis.python.lockstep.{k}"), self.median(f"rtis.openrti.lockstep.{k}")
+        if python is None or openrti is None:
+            return speedup
+        faster = "met" if python < openrti else "missed"
+        return f"{speedup}; Python faster than OpenRTI C++: {faster} ({openrti / python:.2f}×)"
 
     def summary(self) -> dict[str, dict[str, float]]:
         """Per key: median, p99 and the number of samples (for results.json)."""
@@ -245,6 +302,13 @@ def expected_keys() -> list[str]:
     keys += [f"besteffort.{path}.loss1{part}" for path in ("udp", "tcp") for part in ("", ".delivered")]
     keys += [f"record.{figure}.{side}" for figure in ("grant.2", "throughput.1") for side in ("off", "on")]
     return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
+
+
+def three_rtis_keys() -> list[str]:
+    keys = ["rtis.floor.cpp", "rtis.floor.stream.cpp"]
+    for rti, _ in RTI_COLUMNS:
+        keys += [f"rtis.{rti}.lockstep.{k}" for k in RTI_LOCKSTEP] + [f"rtis.{rti}.pingpong", f"rtis.{rti}.throughput"]
+    return keys
 
 
 def _grant_target(k: int, median: Optional[float], g2: Optional[float], cpp_rtt: Optional[float]) -> str:

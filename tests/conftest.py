@@ -47,6 +47,15 @@ def status_client() -> str:
     return rtig_beside_python()
 
 
+def cpp_federate(name: str) -> str:
+    """A C++ test federate of tests/cpp/hla13, built by ./scripts/test.sh against the installed package's
+    HLA 1.3 API ($HLACORE_TEST_HLA13, else build/hla13-tests)."""
+    default = pathlib.Path(__file__).parent.parent / "build" / "hla13-tests"
+    binary = pathlib.Path(os.environ.get("HLACORE_TEST_HLA13", default)) / name
+    assert binary.exists(), f"{binary} is missing: ./scripts/test.sh builds it"
+    return str(binary)
+
+
 class RtigProcess(Rtig):
     """The rtig under test on port 0, its log in the test's tmp_path."""
 

@@ -14,10 +14,11 @@ from bench.lockstep import Lockstep
 from bench.lossy_stream import stream_through_loss
 from bench.outputs import results_markdown
 from bench.pingpong import PingPong
-from bench.report import Report, expected_keys
+from bench.report import Report, expected_keys, three_rtis_keys
+from bench.three_rtis import Server, run
 from bench.save_restore import SaveRestore
 from bench.throughput import Fanout
-from conftest import rtig_executable
+from conftest import cpp_federate, rtig_executable
 from hlacore import _core
 
 
@@ -125,6 +126,37 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     assert "| receive order one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× C++ one-way: met (1.00×) |" in text
     assert "200.0 k/s (1600.0 k/s in all)" in text
     assert "≥ 200 000/s: met" in text and text.count("< 20 ms: met") == 2
+
+
+@pytest.mark.parametrize("workload, federates, n, m", [("lockstep", 3, 20, 2), ("pingpong", 2, 20, 2),
+                                                      ("throughput", 2, 500, 2)])
+def test_three_rti_program_on_hlacore(workload: str, federates: int, n: int, m: int) -> None:
+    """bench/rtis/hla13_bench.cpp (built by ./scripts/test.sh against the installed hlacore) on each workload;
+    its federates check what they receive and exit 0."""
+    server = Server("hlacore")
+    try:
+        result = run(server, workload, federates, n, m, timeout=60.0, binary=cpp_federate("hla13_bench"))
+    finally:
+        server.close()
+    if workload == "throughput":
+        assert len(result["rates"]) == m and all(rate > 0 for rate in result["rates"])
+    else:
+        assert len(result["samples_ns"]) == n and all(ns > 0 for ns in result["samples_ns"])
+
+
+def test_report_renders_the_three_rti_table() -> None:
+    report = Report()
+    for key in three_rtis_keys():
+        rate = key.endswith("throughput") or key == "rtis.floor.stream.cpp"
+        report.add(key, [4e5 if rate else 5e-5])
+    report.add("rtis.openrti.lockstep.2", [1.5e-4], extend=False)
+    report.add("rtis.openrti.throughput", [1e5])
+    assert report.three_rtis_complete()
+    text = report.three_rtis_markdown()
+    assert "| lockstep K = 2, µs per step | 50 = 1.0× | 50 = 1.0× | 150 = 3.0× | 50 = 1.0× |" in text
+    assert "C++ ≥ 2× OpenRTI: met (3.00×); Python faster than OpenRTI C++: met (3.00×)" in text
+    assert "C++ ≥ 2× OpenRTI: missed (1.00×)" in text  # K = 4
+    assert "400.0 k/s = 1.00 of the floor" in text and "C++ ≥ 3× OpenRTI: met (4.00×)" in text
 
 
 @pytest.mark.parametrize("datagrams", [True, False], ids=["udp", "tcp"])

@@ -17,19 +17,11 @@ import pytest
 from hlacore import _core, config
 from hlacore.processes import Child
 
-from conftest import DATA, RtigProcess, tick_until
+from conftest import DATA, RtigProcess, cpp_federate, tick_until
 
 HERE = pathlib.Path(__file__).parent
 BILLIARD = HERE / "cpp" / "hla13" / "certi_style" / "billiard.cc"
 BILLIARD_FED = DATA / "fed" / "good" / "billard_certi.fed"
-
-
-def cpp_federate(name: str) -> str:
-    """A C++ test federate of tests/cpp/hla13, built by ./scripts/test.sh against the installed package."""
-    default = HERE.parent / "build" / "hla13-tests"
-    binary = pathlib.Path(os.environ.get("HLACORE_TEST_HLA13", default)) / name
-    assert binary.exists(), f"{binary} is missing: ./scripts/test.sh builds it"
-    return str(binary)
 
 
 def gateway_env(address: str) -> dict[str, str]:

@@ -35,10 +35,10 @@ class Child:
     """
 
     def __init__(self, argv: Sequence[str], env: Optional[dict[str, str]] = None,
-                 stderr_path: Optional[pathlib.Path] = None) -> None:
+                 stderr_path: Optional[pathlib.Path] = None, cwd: Optional[str] = None) -> None:
         self._stderr: IO[bytes] = open(stderr_path, "w+b") if stderr_path else tempfile.TemporaryFile()
         self.proc = subprocess.Popen(list(argv), stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                     stderr=self._stderr, bufsize=0, env=env)
+                                     stderr=self._stderr, bufsize=0, env=env, cwd=cwd)
         self._pending = b""
 
     @property

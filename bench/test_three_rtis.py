@@ -1,29 +1,30 @@
 """The three-RTI benchmark (issue 19): one C++ HLA 1.3 program (bench/rtis/hla13_bench.cpp) compiled
 unchanged against hlacore, OpenRTI and CERTI 3.5.1, on the same workloads as hlacore's Python federates, in
 one run beside the raw TCP floor: lockstep of K = 2, 4, 8 federates with a TSO update per federate per step,
-the receive-order update ping-pong (8 B), and throughput 1 → 1 (8 B updates). Each C++ figure is three runs
-per RTI, the RTIs alternating; ./scripts/bench.sh builds the other two RTIs first (bench/rtis/build.sh)."""
+the receive-order update ping-pong (8 B), and throughput 1 → 1 (8 B updates). Each figure is REPETITIONS runs
+per RTI, the RTIs and the Python federates alternating, each on a fresh server (the machine's noise then
+falls on all alike); the samples time themselves (the C++ program with steady_clock, the Python federates
+with perf_counter), and the C++ floors are measured in each round too. ./scripts/bench.sh builds the other two RTIs first (bench/rtis/build.sh)."""
 
 from __future__ import annotations
 
 import contextlib
-from typing import Iterator
+import time
+from typing import Callable, Iterator
 
 import pytest
 
 from .floor import cpp_rtt_ns, cpp_stream_rate
+from .lockstep import Lockstep
 from .pingpong import PingPong
 from .report import RTI_LOCKSTEP, Report
-from .test_grant import run_lockstep
 from .three_rtis import RTIS, Server, run
 from .throughput import Fanout
 
 STEPS = {2: 3000, 4: 1500, 8: 600}  # lockstep steps per run: a few seconds on the slowest RTI
 ROUNDS = 3000                       # ping-pong round trips per run
 BURST, BURSTS = 20_000, 5           # throughput: updates per burst, bursts per run
-REPETITIONS = 3
-
-pytestmark = pytest.mark.benchmark(group="three RTIs")
+REPETITIONS = 5
 
 
 @contextlib.contextmanager
@@ -35,55 +36,74 @@ def server(rti: str) -> Iterator[Server]:
         s.close()
 
 
-def test_floor(report: Report, tcp_floor: str) -> None:
-    """The raw C++ TCP round trip (8 B) and stream rate, the floors of this run's ratios."""
-    report.add("rtis.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, 5000)])
-    report.add("rtis.floor.stream.cpp", [cpp_stream_rate(tcp_floor, 200_000) for _ in range(3)])
+def timed(call: Callable[[], object], count: int, warmup: int) -> list[float]:
+    """Seconds per call of `call`, `count` times after `warmup` untimed calls."""
+    for _ in range(warmup):
+        call()
+    samples = []
+    for _ in range(count):
+        start = time.perf_counter()
+        call()
+        samples.append(time.perf_counter() - start)
+    return samples
 
 
-@pytest.mark.parametrize("k", RTI_LOCKSTEP)
-def test_lockstep_cpp(report: Report, k: int) -> None:
-    for _ in range(REPETITIONS):
-        for rti in RTIS:
-            with server(rti) as s:
-                result = run(s, "lockstep", k, STEPS[k], STEPS[k] // 10)
-            report.add(f"rtis.{rti}.lockstep.{k}", [ns / 1e9 for ns in result["samples_ns"]], extend=True)
-
-
-def test_pingpong_cpp(report: Report) -> None:
-    for _ in range(REPETITIONS):
-        for rti in RTIS:
-            with server(rti) as s:
-                result = run(s, "pingpong", 2, ROUNDS, ROUNDS // 10)
-            report.add(f"rtis.{rti}.pingpong", [ns / 1e9 for ns in result["samples_ns"]], extend=True)
-
-
-def test_throughput_cpp(report: Report) -> None:
-    for _ in range(REPETITIONS):
-        for rti in RTIS:
-            with server(rti) as s:
-                result = run(s, "throughput", 2, BURST, BURSTS)
-            report.add(f"rtis.{rti}.throughput", result["rates"], extend=True)
-
-
-@pytest.mark.parametrize("k", RTI_LOCKSTEP)
-def test_lockstep_python(measure, rtig, k: int) -> None:
-    run_lockstep(measure, rtig.address, k, f"rtis.python.lockstep.{k}", rounds=STEPS[k])
-
-
-def test_pingpong_python(measure, rtig) -> None:
-    pingpong = PingPong(rtig.address, "ro", 8)
+def python_lockstep(address: str, k: int) -> list[float]:
+    federation = Lockstep(address, k, max_steps=STEPS[k] + STEPS[k] // 10 + 10)
     try:
-        measure("rtis.python.pingpong", pingpong.round_trip, ROUNDS)
+        samples = timed(federation.step, STEPS[k], STEPS[k] // 10)
+        federation.finish()  # every federate got every update of every step
+    finally:
+        federation.close()
+    return samples
+
+
+def python_pingpong(address: str) -> list[float]:
+    pingpong = PingPong(address, "ro", 8)
+    try:
+        samples = timed(pingpong.round_trip, ROUNDS, ROUNDS // 10)
         pingpong.finish()
     finally:
         pingpong.close()
+    return samples
 
 
-def test_throughput_python(measure, rtig) -> None:
-    fanout = Fanout(rtig.address, 1, BURST)
+def python_throughput(address: str) -> list[float]:
+    fanout = Fanout(address, 1, BURST)
     try:
-        measure("rtis.python.throughput", fanout.burst, BURSTS * REPETITIONS, per_round=BURST)
+        rates = [BURST / s for s in timed(fanout.burst, BURSTS, 0)]
         fanout.finish()
     finally:
         fanout.close()
+    return rates
+
+
+def alternate(report: Report, tcp_floor: str, key: str, cpp: Callable[[Server], list[float]],
+              python: Callable[[str], list[float]]) -> None:
+    """REPETITIONS rounds, each measuring the C++ floors (rtis.floor.cpp: TCP round trips of 8 B;
+    rtis.floor.stream.cpp: the stream rate), then running the C++ program on every RTI and hlacore's Python
+    federates, each on a fresh server; the samples go under rtis.<rti>.<key>."""
+    for _ in range(REPETITIONS):
+        report.add("rtis.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, 1000)], extend=True)
+        report.add("rtis.floor.stream.cpp", [cpp_stream_rate(tcp_floor, 200_000)], extend=True)
+        for rti in (*RTIS, "python"):
+            with server("hlacore" if rti == "python" else rti) as s:
+                samples = python(s.address) if rti == "python" else cpp(s)
+            report.add(f"rtis.{rti}.{key}", samples, extend=True)
+
+
+@pytest.mark.parametrize("k", RTI_LOCKSTEP)
+def test_lockstep(report: Report, tcp_floor: str, k: int) -> None:
+    alternate(report, tcp_floor, f"lockstep.{k}",
+              lambda s: [ns / 1e9 for ns in run(s, "lockstep", k, STEPS[k], STEPS[k] // 10)["samples_ns"]],
+              lambda address: python_lockstep(address, k))
+
+
+def test_pingpong(report: Report, tcp_floor: str) -> None:
+    alternate(report, tcp_floor, "pingpong", lambda s: [ns / 1e9 for ns in run(s, "pingpong", 2, ROUNDS, ROUNDS // 10)["samples_ns"]],
+              python_pingpong)
+
+
+def test_throughput(report: Report, tcp_floor: str) -> None:
+    alternate(report, tcp_floor, "throughput", lambda s: list(run(s, "throughput", 2, BURST, BURSTS)["rates"]),
+              python_throughput)

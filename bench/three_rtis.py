@@ -62,13 +62,15 @@ class Server:
         assert rti in RTIS, rti
         self.rti = rti
         self.env = dict(os.environ)
+        self.address = ""  # hlacore's gateway, for its Python federates
         self._rtig: Optional[Rtig] = None
         self._child: Optional[Child] = None
         self._dir = tempfile.TemporaryDirectory(prefix=f"rti-{rti}-")
         if rti == "hlacore":
             self._rtig = bench_rtig()
             self.federation = "Bench"
-            self.env["HLACORE_RTIG"] = self._rtig.address
+            self.address = self._rtig.address
+            self.env["HLACORE_RTIG"] = self.address
             return
         port = _free_port()
         install = rtis_dir() / rti

@@ -246,16 +246,16 @@ int main(int argc, char** argv) {
         f.creator = std::strcmp(argv[4], "create") == 0;
         const int federates = std::atoi(argv[6]);
         const long n = std::atol(argv[7]), m = std::atol(argv[8]);
+        if (workload != "lockstep" && workload != "pingpong" && workload != "throughput")
+            fail("unknown workload " + workload);
         if (federates < 2 || (workload != "lockstep" && federates != 2)) fail("wrong number of federates");
         f.join(argv[3], argv[5], federates - 1);
         if (workload == "lockstep") {
             lockstep(f, federates, static_cast<int>(n), static_cast<int>(m));
         } else if (workload == "pingpong") {
             pingpong(f, static_cast<int>(n), static_cast<int>(m));
-        } else if (workload == "throughput") {
-            throughput(f, n, static_cast<int>(m));
         } else {
-            fail("unknown workload " + workload);
+            throughput(f, n, static_cast<int>(m));
         }
     } catch (RTI::Exception& e) {
         fail(std::string(e._name ? e._name : "RTI::Exception") + ": " + (e._reason ? e._reason : ""));

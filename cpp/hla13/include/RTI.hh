@@ -489,7 +489,6 @@ public:
     // ---- the callbacks (HLA 1.3 §4-8), delivered by RTIambassador::tick ----
     class RTI_EXPORT FederateAmbassador {
     public:
-        typedef FederateAmbassador* FederateAmbassadorPtr;
         virtual ~FederateAmbassador() {}
 
         // Federation management

@@ -60,6 +60,11 @@ void bind_time(Ambassador& rtia) {
         .def("_time_advance_pending", &Client::time_advance_pending)
         .def("_lowest_sendable_time", &Client::lowest_sendable_time)
         .def("_status", &Client::query_status, py::call_guard<py::gil_scoped_release>())
+        .def("_send_counts",
+             [](const Client& c) {
+                 const Client::SendCounts n = c.send_counts();
+                 return std::make_pair(n.messages, n.writes);
+             })
         .def("clock_offset",
              [](Client& c, double max_age) {
                  const ClockEstimate e = c.clock_offset(max_age);

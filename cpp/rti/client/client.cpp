@@ -16,6 +16,8 @@
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -290,6 +292,14 @@ ClockEstimate Client::clock_offset(double max_age_s) {
 }
 
 Client::~Client() {
+    if (writer_.joinable()) {  // it writes what is pending first (bounded by the timeout)
+        {
+            std::lock_guard<std::mutex> lock(send_mu_);
+            writer_stop_ = true;
+        }
+        writer_work_.notify_all();
+        writer_.join();
+    }
     if (ssl_) {  // close_notify, if the socket takes it: the gateway sees a clean end
         std::lock_guard<std::mutex> lock(ssl_mu_);
         SSL_shutdown(ssl_.get());
@@ -335,7 +345,7 @@ void Client::send(const M& message) {
                                                   std::to_string(length) + " bytes is over the gateway's frame limit of " +
                                                   std::to_string(max_frame_bytes_) + " bytes");
     }
-    write_send_buffer();
+    send_encoded(lock);
 }
 #define HLACORE_X(name) template void Client::send(const wire::name&);
 HLACORE_MESSAGES(HLACORE_X)
@@ -348,34 +358,109 @@ void Client::require_member(wire::MessageType type) const {
               std::string(wire::message_name(type)) + ": the federate is not joined (it has resigned)");
 }
 
-void Client::write_send_buffer() {
+// The one message in send_buffer_: written now by the caller, or queued behind what the writer thread has
+// (the stream's order) or as part of a long run of sends.
+void Client::send_encoded(std::unique_lock<std::mutex>& lock) {
+    ++messages_sent_;
+    if (writer_busy_ || !pending_.empty() || ++sends_since_wait_ > kDirectSends) {
+        queue_send(lock);
+        return;
+    }
+    write_send_buffer();
+}
+
+void Client::write_send_buffer() { write_bytes(send_buffer_.data(), send_buffer_.size(), options_.wait_host); }
+
+void Client::write_bytes(const char* data, std::size_t size, WaitHost* host) {
     std::size_t done = 0;
-    while (done < send_buffer_.size()) {
+    while (done < size) {
         if (ssl_) {
             std::string error;
-            const long n = tls_write(send_buffer_.data() + done, send_buffer_.size() - done, error);
+            const long n = tls_write(data + done, size - done, error);
             if (n > 0) {
+                ++write_calls_;
                 done += static_cast<std::size_t>(n);
             } else if (n == 0) {
                 // The session may hold part of the message in a record it could not finish: the message is
                 // owed from the first WANT_WRITE on (an abandoned wait closes the connection).
-                wait_writable(std::max<std::size_t>(done, 1));
+                wait_writable(std::max<std::size_t>(done, 1), host);
             } else {
                 close_connection(ErrorCode::RTIinternalError, error);
                 connection_lost();
             }
             continue;
         }
-        ssize_t n = ::send(fd_, send_buffer_.data() + done, send_buffer_.size() - done, MSG_NOSIGNAL | MSG_DONTWAIT);
+        ssize_t n = ::send(fd_, data + done, size - done, MSG_NOSIGNAL | MSG_DONTWAIT);
         if (n > 0) {
+            ++write_calls_;
             done += static_cast<std::size_t>(n);
         } else if (n < 0 && errno == EINTR) {
             continue;
         } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-            wait_writable(done);
+            wait_writable(done, host);
         } else {
             close_connection(ErrorCode::RTIinternalError, std::strerror(errno));  // keeps an earlier reason
             connection_lost();
+        }
+    }
+}
+
+// A message of a longer run of sends: to the writer thread (started on the first), behind what it has. The
+// caller waits while kMaxPending bytes are pending, as a blocked send waits (the writer declares the gateway
+// not responding after the timeout); a signal meanwhile goes to the host (Ctrl-C), the message staying queued.
+void Client::queue_send(std::unique_lock<std::mutex>& lock) {
+    {
+        std::lock_guard<std::mutex> state(mu_);
+        if (closed_) connection_lost();
+    }
+    if (!writer_.joinable()) writer_ = std::thread([this] { writer_loop(); });
+    pending_ += send_buffer_;
+    writer_work_.notify_one();
+    while (pending_.size() > kMaxPending) {
+        {
+            Waiting waiting(options_.wait_host);
+            writer_room_.wait_for(lock, std::chrono::milliseconds(50));
+        }
+        {
+            std::lock_guard<std::mutex> state(mu_);
+            if (closed_) connection_lost();
+        }
+        if (options_.wait_host) {
+            lock.unlock();
+            options_.wait_host->interrupted();  // a pending Ctrl-C is raised here
+            lock.lock();
+        }
+    }
+}
+
+// The writer thread: takes all that is pending and writes it in one go, again while more came meanwhile.
+// Signals go to the other threads. A failed write closes the connection (the callers' next send raises).
+void Client::writer_loop() {
+    sigset_t all;
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, nullptr);
+    std::string writing;
+    std::unique_lock<std::mutex> lock(send_mu_);
+    for (;;) {
+        writer_work_.wait(lock, [this] { return writer_stop_ || !pending_.empty(); });
+        if (pending_.empty()) return;  // stopped, and everything written
+        writing.swap(pending_);
+        pending_.clear();
+        writer_busy_ = true;
+        lock.unlock();
+        try {
+            write_bytes(writing.data(), writing.size(), nullptr);
+        } catch (const RtiError&) {  // the connection is closed, saying why
+        } catch (const std::exception& e) {
+            close_connection(ErrorCode::RTIinternalError, std::string("writing to the gateway: ") + e.what());
+        }
+        lock.lock();
+        writer_busy_ = false;
+        writing.clear();
+        writer_room_.notify_all();
+        {
+            std::lock_guard<std::mutex> state(mu_);
+            if (closed_) pending_.clear();  // nobody will read it
         }
     }
 }
@@ -384,20 +469,20 @@ void Client::write_send_buffer() {
 // Waits with the GIL released (WaitHost), reading what the gateway sends meanwhile (it may be waiting for
 // this federate to take its own messages, and sends a Pong now and then while it holds it back): it is
 // declared not responding after the timeout without a byte either way.
-void Client::wait_writable(std::size_t sent) {
+void Client::wait_writable(std::size_t sent, WaitHost* host) {
     auto deadline = Clock::now() + timeout_;
     std::uint64_t heard = heard_bytes_;
     for (;;) {
         pollfd p{fd_, POLLOUT | POLLIN, 0};
         int n;
         {
-            Waiting waiting(options_.wait_host);
+            Waiting waiting(host);
             n = ::poll(&p, 1, ms_until(deadline));
             if (n > 0 && !(p.revents & POLLOUT)) read_beside_send();
         }
         if (n > 0 && (p.revents & POLLOUT)) return;
         if (n < 0 && errno == EINTR) {
-            on_interrupt(sent > 0 ? "the rest of a message already partly sent" : nullptr);
+            if (host) on_interrupt(sent > 0 ? "the rest of a message already partly sent" : nullptr);
             continue;
         }
         {
@@ -509,6 +594,7 @@ wire::Message Client::take_answer(std::uint32_t id) {
 
 template <class Pred>
 Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
+    sends_since_wait_.store(0, std::memory_order_relaxed);  // the next message is a lone one: written at once
     std::unique_lock<std::mutex> lock(mu_);
     bool read_once = false;  // even with a deadline already past, look at the socket once (poll_now)
     for (;;) {
@@ -641,7 +727,7 @@ void Client::check_liveness() {
         if (!sending) return;
         send_buffer_.clear();
         wire::encode(send_buffer_, wire::Ping{++pings_});
-        write_send_buffer();
+        send_encoded(sending);
         ping_sent_ = now;
         return;
     }
@@ -880,7 +966,7 @@ void Client::resign(std::uint8_t action) {
         member_ = false;
         send_buffer_.clear();
         wire::encode(send_buffer_, wire::ResignFederation{id, action});
-        write_send_buffer();
+        send_encoded(sending);
     }
     try {
         await_reply(id);

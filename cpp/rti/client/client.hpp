@@ -20,6 +20,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -230,6 +231,14 @@ public:
     fom::Handle interaction_routing_space(fom::Handle cls) const;
     std::uint32_t federate_handle() const;
 
+    // Messages sent and write system calls made so far (tests/test_coalescing.py): a long run of sends
+    // takes fewer writes than messages.
+    struct SendCounts {
+        std::uint64_t messages = 0;
+        std::uint64_t writes = 0;
+    };
+    SendCounts send_counts() const { return {messages_sent_.load(), write_calls_.load()}; }
+
     // The gateway's state as JSON (needs no join).
     std::string query_status();
 
@@ -352,9 +361,20 @@ private:
     template <class M>
     void send_best_effort(const M& message);
     std::unique_lock<std::mutex> lock_send();
+    // Coalescing (client.cpp): a message sent within kDirectSends of the caller's last wait (a lone one, or
+    // an update and its time advance request) is written by the caller at once; the rest of a longer run of
+    // sends is appended to pending_ and written by the writer thread, many per system call while its
+    // previous write is in flight (send_mu_ held for both).
+    static constexpr int kDirectSends = 4;
+    static constexpr std::size_t kMaxPending = std::size_t{1} << 20;  // the caller then waits for room
+    void send_encoded(std::unique_lock<std::mutex>& lock);  // send_buffer_'s message, in the stream's order
+    void queue_send(std::unique_lock<std::mutex>& lock);
+    void writer_loop();
+    void write_bytes(const char* data, std::size_t size, WaitHost* host);
     void require_member(wire::MessageType type) const;  // under send_mu_: FederateNotExecutionMember after a resign  // send_mu_, waiting for another thread's send with the host released
     void write_send_buffer();  // under send_mu_
-    void wait_writable(std::size_t sent);  // under send_mu_: the gateway is not reading (yet)
+    // The gateway is not reading (yet): waits with `host` (none on the writer thread) until it does.
+    void wait_writable(std::size_t sent, WaitHost* host);
     void read_beside_send();
     // Sends a request and waits for its answer, a Result (HLACORE_ANSWERS; client.cpp instantiates them). A
     // refusal raises its exception; an answer of another type closes the connection as a protocol error.
@@ -468,6 +488,17 @@ private:
 
     std::mutex send_mu_;
     std::string send_buffer_;
+    // The writer thread's state, under send_mu_: what it has yet to write, whether it is writing (then every
+    // send queues behind it, keeping the stream's order), its wake-up and the callers' wait for room.
+    std::string pending_;
+    bool writer_busy_ = false;
+    bool writer_stop_ = false;
+    std::condition_variable writer_work_;
+    std::condition_variable writer_room_;
+    std::thread writer_;
+    std::atomic<int> sends_since_wait_{0};  // reset by every read of the socket (pump)
+    std::atomic<std::uint64_t> messages_sent_{0};
+    std::atomic<std::uint64_t> write_calls_{0};
     bool member_ = false;  // under send_mu_: joined, and no resign sent since (kFederationService messages go)
 
     mutable std::mutex mu_;

@@ -1,0 +1,64 @@
+"""Coalescing of the federate's writes (cpp/rti/client/client.cpp): a message sent soon after a wait (a lone
+update, or an update and its time advance request) is written by the caller at once; a longer run of sends
+goes to the writer thread, many messages per system call, in the order sent. Both gateways."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import hlacore.rti as rti
+
+from conftest import barrier, share_robot_location, tick_until
+
+RUN = 5000  # messages sent without a wait in between
+
+
+def counts(fed: Any) -> tuple[int, int]:
+    """(messages sent, write system calls) of a federate's connection so far."""
+    messages, writes = fed.rtia._send_counts()
+    return int(messages), int(writes)
+
+
+def test_a_message_after_a_wait_is_written_by_the_caller_at_once(federation: Any) -> None:
+    pub, sub = federation("pub"), federation("sub")
+    robot, location = share_robot_location(pub, sub)
+    obj = pub.rtia.registerObjectInstance(robot, "r")
+    for n in range(3):
+        pub.rtia.tick()  # a wait: the next sends are lone ones
+        before = counts(pub)
+        pub.rtia.updateAttributeValues(obj, {location: b"lone %d" % n}, "")
+        # Written before the call returned, in a system call of its own.
+        assert counts(pub) == (before[0] + 1, before[1] + 1)
+    tick_until(lambda: len(sub.amb.named("reflectAttributeValues")) == 3, sub.rtia)
+
+
+def test_a_long_run_of_sends_is_coalesced_and_keeps_its_order(federation: Any) -> None:
+    pub, sub = federation("pub"), federation("sub")
+    robot, location = share_robot_location(pub, sub)
+    obj = pub.rtia.registerObjectInstance(robot, "r")
+    barrier(sub.rtia)
+    pub.rtia.tick()
+    before = counts(pub)
+    for i in range(RUN):
+        pub.rtia.updateAttributeValues(obj, {location: i.to_bytes(4, "big")}, "")
+    barrier(pub.rtia)  # a request behind the run: answered once all of it was written and served
+    messages, writes = counts(pub)
+    assert messages - before[0] == RUN + 1
+    assert writes - before[1] < RUN // 4, (messages, writes)  # many messages per write
+    tick_until(lambda: len(sub.amb.named("reflectAttributeValues")) == RUN, sub.rtia, timeout=30)
+    values = [int.from_bytes(args[1][location], "big") for args in sub.amb.named("reflectAttributeValues")]
+    assert values == list(range(RUN))
+
+
+def test_a_run_then_a_resign_loses_nothing(federation: Any) -> None:
+    """The resign goes behind the queued updates: the subscriber reflects all of them before the removal."""
+    pub, sub = federation("pub"), federation("sub")
+    robot, location = share_robot_location(pub, sub)
+    obj = pub.rtia.registerObjectInstance(robot, "r")
+    barrier(sub.rtia)
+    for i in range(RUN):
+        pub.rtia.updateAttributeValues(obj, {location: i.to_bytes(4, "big")}, "")
+    pub.rtia.resignFederationExecution(rti.ResignAction.DeleteObjects)
+    tick_until(lambda: bool(sub.amb.named("removeObjectInstance")), sub.rtia, timeout=30)
+    names = [name for name, _ in sub.amb.calls if name in ("reflectAttributeValues", "removeObjectInstance")]
+    assert names == ["reflectAttributeValues"] * RUN + ["removeObjectInstance"]

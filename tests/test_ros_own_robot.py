@@ -51,8 +51,10 @@ def test_the_walkthrough_drives_a_ros_robot_from_an_hla_federate(ros_env: dict[s
         found = re.fullmatch(r"drive: myrobot stopped ([0-9.]+) m from the obstacle, at x=([0-9.]+) m", line)
         assert found, line
         # 20 Hz sensing at 0.3 m/s: each reading is at most ~2 cm old, plus the bridge's and the federate's
-        # ticks; the stop is taken at or below 0.5 m, and the robot rolled on for at most a few cycles.
-        assert 0.35 <= float(found[1]) <= 0.5 and 1.5 <= float(found[2]) <= 1.65
+        # ticks; the stop is taken at or below 0.5 m, and the robot rolled on for at most a few cycles. The x
+        # printed is the latest odometry, which may be one reading (1.5 cm) older than the range that
+        # stopped it: 1.48 m at 0.50 m (seen once in CI).
+        assert 0.35 <= float(found[1]) <= 0.5 and 1.48 <= float(found[2]) <= 1.65
         family = descendants(robot.pid) + descendants(bridge.pid)
         for child in (robot, bridge):
             child.send_signal(signal.SIGINT)

@@ -38,33 +38,44 @@ auto guarded(F&& service) -> decltype(service()) {
 }
 
 // ---- the sets ----
+
+// The handles of a handle set, each once, in the order added.
+struct HandleList {
+    wire::Handles handles;
+
+    RTI::ULong at(RTI::ULong index) const;  // ArrayIndexOutOfBounds
+    void add(RTI::ULong handle);
+    bool erase(RTI::ULong handle);  // false when absent
+    bool contains(RTI::ULong handle) const;
+};
+
 class AttributeHandles final : public RTI::AttributeHandleSet {
 public:
-    explicit AttributeHandles(wire::Handles handles = {}) : handles_(std::move(handles)) {}
-    RTI::ULong size() const override { return handles_.size(); }
-    RTI::AttributeHandle getHandle(RTI::ULong index) const override;
-    void add(RTI::AttributeHandle handle) override;
-    void remove(RTI::AttributeHandle handle) override;
-    void empty() override { handles_.clear(); }
-    RTI::Boolean isEmpty() const override { return boolean(handles_.empty()); }
-    RTI::Boolean isMember(RTI::AttributeHandle handle) const override;
-    const wire::Handles& handles() const { return handles_; }
+    explicit AttributeHandles(wire::Handles handles = {}) : list_{std::move(handles)} {}
+    RTI::ULong size() const override { return list_.handles.size(); }
+    RTI::AttributeHandle getHandle(RTI::ULong index) const override { return list_.at(index); }
+    void add(RTI::AttributeHandle handle) override { list_.add(handle); }
+    void remove(RTI::AttributeHandle handle) override;  // AttributeNotDefined when absent
+    void empty() override { list_.handles.clear(); }
+    RTI::Boolean isEmpty() const override { return boolean(list_.handles.empty()); }
+    RTI::Boolean isMember(RTI::AttributeHandle handle) const override { return boolean(list_.contains(handle)); }
+    const wire::Handles& handles() const { return list_.handles; }
 
 private:
-    wire::Handles handles_;
+    HandleList list_;
 };
 
 class FederateHandles final : public RTI::FederateHandleSet {
 public:
-    RTI::ULong size() const override { return handles_.size(); }
-    RTI::FederateHandle getHandle(RTI::ULong index) const override;
-    void add(RTI::FederateHandle handle) override;
-    void remove(RTI::FederateHandle handle) override;
-    void empty() override { handles_.clear(); }
-    RTI::Boolean isMember(RTI::FederateHandle handle) const override;
+    RTI::ULong size() const override { return list_.handles.size(); }
+    RTI::FederateHandle getHandle(RTI::ULong index) const override { return list_.at(index); }
+    void add(RTI::FederateHandle handle) override { list_.add(handle); }
+    void remove(RTI::FederateHandle handle) override;  // ArrayIndexOutOfBounds when absent
+    void empty() override { list_.handles.clear(); }
+    RTI::Boolean isMember(RTI::FederateHandle handle) const override { return boolean(list_.contains(handle)); }
 
 private:
-    wire::Handles handles_;
+    HandleList list_;
 };
 
 // The pairs of an attribute or parameter set, with how they came when received (a callback's argument).
@@ -80,53 +91,65 @@ struct Pairs {
     void require_received() const;  // InvalidHandleValuePairSetContext
 };
 
-class AttributeValues final : public RTI::AttributeHandleValuePairSet {
+// What the attribute and parameter pair sets share (Base is either interface).
+template <class Base>
+class PairSet : public Base {
 public:
-    explicit AttributeValues(Pairs pairs = {}) : pairs_(std::move(pairs)) {}
+    explicit PairSet(Pairs pairs) : pairs_(std::move(pairs)) {}
     RTI::ULong size() const override { return pairs_.values.size(); }
     RTI::Handle getHandle(RTI::ULong index) const override { return pairs_.at(index).first; }
     RTI::ULong getValueLength(RTI::ULong index) const override { return pairs_.at(index).second.size(); }
-    void getValue(RTI::ULong index, char* buffer, RTI::ULong& length) const override;
-    char* getValuePointer(RTI::ULong index, RTI::ULong& length) const override;
+    void getValue(RTI::ULong index, char* buffer, RTI::ULong& length) const override {
+        const std::string& value = pairs_.at(index).second;
+        value.copy(buffer, value.size());
+        length = value.size();
+    }
+    char* getValuePointer(RTI::ULong index, RTI::ULong& length) const override {
+        const std::string& value = pairs_.at(index).second;
+        length = value.size();
+        return const_cast<char*>(value.data());  // HLA 1.3's signature; the federate reads it
+    }
+    void add(RTI::Handle handle, const char* value, RTI::ULong length) override { pairs_.add(handle, value, length); }
+    void remove(RTI::Handle handle) override { pairs_.remove(handle); }
+    void moveFrom(const Base& other, RTI::ULong& index) override {
+        RTI::ULong length = 0;
+        const char* value = other.getValuePointer(index, length);
+        add(other.getHandle(index), value, length);
+        ++index;
+    }
+    void empty() override { pairs_.values.clear(); }
+    RTI::ULong start() const override { return 0; }
+    RTI::ULong valid(RTI::ULong index) const override { return index < size(); }
+    RTI::ULong next(RTI::ULong index) const override { return index + 1; }
+    const wire::HandleValues& values() const { return pairs_.values; }
+
+protected:
+    Pairs pairs_;
+};
+
+class AttributeValues final : public PairSet<RTI::AttributeHandleValuePairSet> {
+public:
+    explicit AttributeValues(Pairs pairs = {}) : PairSet(std::move(pairs)) {}
     RTI::TransportType getTransportType(RTI::ULong index) const override;
     RTI::OrderType getOrderType(RTI::ULong index) const override;
     RTI::Region* getRegion(RTI::ULong index) const override;
-    void add(RTI::Handle handle, const char* value, RTI::ULong length) override { pairs_.add(handle, value, length); }
-    void remove(RTI::Handle handle) override { pairs_.remove(handle); }
-    void moveFrom(const RTI::AttributeHandleValuePairSet& other, RTI::ULong& index) override;
-    void empty() override { pairs_.values.clear(); }
-    RTI::ULong start() const override { return 0; }
-    RTI::ULong valid(RTI::ULong index) const override { return index < size(); }
-    RTI::ULong next(RTI::ULong index) const override { return index + 1; }
-    const wire::HandleValues& values() const { return pairs_.values; }
-
-private:
-    Pairs pairs_;
 };
 
-class ParameterValues final : public RTI::ParameterHandleValuePairSet {
+class ParameterValues final : public PairSet<RTI::ParameterHandleValuePairSet> {
 public:
-    explicit ParameterValues(Pairs pairs = {}) : pairs_(std::move(pairs)) {}
-    RTI::ULong size() const override { return pairs_.values.size(); }
-    RTI::Handle getHandle(RTI::ULong index) const override { return pairs_.at(index).first; }
-    RTI::ULong getValueLength(RTI::ULong index) const override { return pairs_.at(index).second.size(); }
-    void getValue(RTI::ULong index, char* buffer, RTI::ULong& length) const override;
-    char* getValuePointer(RTI::ULong index, RTI::ULong& length) const override;
+    explicit ParameterValues(Pairs pairs = {}) : PairSet(std::move(pairs)) {}
     RTI::TransportType getTransportType() const override;
     RTI::OrderType getOrderType() const override;
     RTI::Region* getRegion() const override;
-    void add(RTI::Handle handle, const char* value, RTI::ULong length) override { pairs_.add(handle, value, length); }
-    void remove(RTI::Handle handle) override { pairs_.remove(handle); }
-    void moveFrom(const RTI::ParameterHandleValuePairSet& other, RTI::ULong& index) override;
-    void empty() override { pairs_.values.clear(); }
-    RTI::ULong start() const override { return 0; }
-    RTI::ULong valid(RTI::ULong index) const override { return index < size(); }
-    RTI::ULong next(RTI::ULong index) const override { return index + 1; }
-    const wire::HandleValues& values() const { return pairs_.values; }
-
-private:
-    Pairs pairs_;
 };
+
+// The retraction handle of a timestamped message.
+inline RTI::EventRetractionHandle retraction(std::uint32_t sender, std::uint64_t serial) {
+    RTI::EventRetractionHandle h;
+    h.theSerialNumber = static_cast<RTI::UniqueID>(serial);
+    h.sendingFederate = sender;
+    return h;
+}
 
 // The handles and pairs of any implementation of the sets (this library's are read directly).
 wire::Handles handles_of(const RTI::AttributeHandleSet& set);

@@ -10,15 +10,9 @@ using hlacore::hla13::AttributeHandles;
 using hlacore::hla13::AttributeValues;
 using hlacore::hla13::Pairs;
 using hlacore::hla13::ParameterValues;
+using hlacore::hla13::retraction;
 
 namespace {
-
-RTI::EventRetractionHandle retraction(std::uint32_t sender, std::uint64_t serial) {
-    RTI::EventRetractionHandle h;
-    h.theSerialNumber = static_cast<RTI::UniqueID>(serial);
-    h.sendingFederate = sender;
-    return h;
-}
 
 // Received values, with how they came.
 template <class M>

@@ -10,10 +10,7 @@ using hlacore::hla13::text;
 namespace {
 // The retraction handle of a timestamped message this federate sent.
 RTI::EventRetractionHandle retraction(const Client& c, std::uint64_t serial) {
-    RTI::EventRetractionHandle h;
-    h.theSerialNumber = static_cast<RTI::UniqueID>(serial);
-    h.sendingFederate = c.federate_handle();
-    return h;
+    return hla13::retraction(c.federate_handle(), serial);
 }
 }  // namespace
 

@@ -117,12 +117,10 @@ RTI::EventRetractionHandle RTI::RTIambassador::sendInteractionWithRegion(Interac
                                                                          const Region& theRegion) {
     return guarded([&] {
         Client& c = privateRefs->client;
-        EventRetractionHandle h;
-        h.theSerialNumber = static_cast<UniqueID>(c.send_interaction_with_region(
+        const std::uint64_t serial = c.send_interaction_with_region(
             h32(theInteraction), hla13::values_of(theParameters), privateRefs->known(theRegion).handle(), text(theTag),
-            hla13::time_of(theTime)));
-        h.sendingFederate = c.federate_handle();
-        return h;
+            hla13::time_of(theTime));
+        return hla13::retraction(c.federate_handle(), serial);
     });
 }
 

@@ -93,44 +93,34 @@ namespace {
 }
 }  // namespace
 
-RTI::AttributeHandle AttributeHandles::getHandle(RTI::ULong index) const {
-    if (index >= handles_.size()) out_of_bounds(index, handles_.size());
-    return handles_[index];
+RTI::ULong HandleList::at(RTI::ULong index) const {
+    if (index >= handles.size()) out_of_bounds(index, handles.size());
+    return handles[index];
 }
 
-void AttributeHandles::add(RTI::AttributeHandle handle) {
-    if (!isMember(handle)) handles_.push_back(h32(handle));
+void HandleList::add(RTI::ULong handle) {
+    if (!contains(handle)) handles.push_back(h32(handle));
+}
+
+bool HandleList::erase(RTI::ULong handle) {
+    const auto it = std::find(handles.begin(), handles.end(), h32(handle));
+    if (it == handles.end()) return false;
+    handles.erase(it);
+    return true;
+}
+
+bool HandleList::contains(RTI::ULong handle) const {
+    return std::find(handles.begin(), handles.end(), h32(handle)) != handles.end();
 }
 
 void AttributeHandles::remove(RTI::AttributeHandle handle) {
-    const auto it = std::find(handles_.begin(), handles_.end(), h32(handle));
-    if (it == handles_.end())
+    if (!list_.erase(handle))
         throw RTI::AttributeNotDefined(("attribute " + std::to_string(handle) + " is not in the set").c_str());
-    handles_.erase(it);
-}
-
-RTI::Boolean AttributeHandles::isMember(RTI::AttributeHandle handle) const {
-    return boolean(std::find(handles_.begin(), handles_.end(), h32(handle)) != handles_.end());
-}
-
-RTI::FederateHandle FederateHandles::getHandle(RTI::ULong index) const {
-    if (index >= handles_.size()) out_of_bounds(index, handles_.size());
-    return handles_[index];
-}
-
-void FederateHandles::add(RTI::FederateHandle handle) {
-    if (!isMember(handle)) handles_.push_back(h32(handle));
 }
 
 void FederateHandles::remove(RTI::FederateHandle handle) {
-    const auto it = std::find(handles_.begin(), handles_.end(), h32(handle));
-    if (it == handles_.end())
+    if (!list_.erase(handle))
         throw RTI::ArrayIndexOutOfBounds(("federate " + std::to_string(handle) + " is not in the set").c_str());
-    handles_.erase(it);
-}
-
-RTI::Boolean FederateHandles::isMember(RTI::FederateHandle handle) const {
-    return boolean(std::find(handles_.begin(), handles_.end(), h32(handle)) != handles_.end());
 }
 
 const std::pair<std::uint32_t, std::string>& Pairs::at(RTI::ULong index) const {
@@ -159,22 +149,6 @@ void Pairs::require_received() const {
     if (!received) throw RTI::InvalidHandleValuePairSetContext("only a set given to a callback knows how it came");
 }
 
-namespace {
-// Copies the value at index into buffer (getValue of both pair sets).
-void copy_value(const Pairs& pairs, RTI::ULong index, char* buffer, RTI::ULong& length) {
-    const std::string& value = pairs.at(index).second;
-    if (!value.empty()) std::memcpy(buffer, value.data(), value.size());
-    length = value.size();
-}
-char* value_pointer(const Pairs& pairs, RTI::ULong index, RTI::ULong& length) {
-    const std::string& value = pairs.at(index).second;
-    length = value.size();
-    return const_cast<char*>(value.data());  // HLA 1.3's signature; the federate reads it
-}
-}  // namespace
-
-void AttributeValues::getValue(RTI::ULong index, char* buffer, RTI::ULong& length) const { copy_value(pairs_, index, buffer, length); }
-char* AttributeValues::getValuePointer(RTI::ULong index, RTI::ULong& length) const { return value_pointer(pairs_, index, length); }
 RTI::TransportType AttributeValues::getTransportType(RTI::ULong index) const {
     pairs_.require_received();
     pairs_.at(index);
@@ -190,15 +164,6 @@ RTI::Region* AttributeValues::getRegion(RTI::ULong index) const {
     pairs_.at(index);
     return nullptr;  // the gateway does not say through which region an update came
 }
-void AttributeValues::moveFrom(const RTI::AttributeHandleValuePairSet& other, RTI::ULong& index) {
-    RTI::ULong length = 0;
-    const char* value = other.getValuePointer(index, length);
-    add(other.getHandle(index), value, length);
-    ++index;
-}
-
-void ParameterValues::getValue(RTI::ULong index, char* buffer, RTI::ULong& length) const { copy_value(pairs_, index, buffer, length); }
-char* ParameterValues::getValuePointer(RTI::ULong index, RTI::ULong& length) const { return value_pointer(pairs_, index, length); }
 RTI::TransportType ParameterValues::getTransportType() const {
     pairs_.require_received();
     return pairs_.transport;
@@ -210,12 +175,6 @@ RTI::OrderType ParameterValues::getOrderType() const {
 RTI::Region* ParameterValues::getRegion() const {
     pairs_.require_received();
     return nullptr;
-}
-void ParameterValues::moveFrom(const RTI::ParameterHandleValuePairSet& other, RTI::ULong& index) {
-    RTI::ULong length = 0;
-    const char* value = other.getValuePointer(index, length);
-    add(other.getHandle(index), value, length);
-    ++index;
 }
 
 wire::Handles handles_of(const RTI::AttributeHandleSet& set) {

@@ -8,7 +8,8 @@
 //   before C++17) or nothing (OpenRTI's under C++17);
 // - RTI_USES_STD_FSTREAM may be defined or not: the standard streams are used either way;
 // - ULong is unsigned long and Long long, as in CERTI and the DMSO headers;
-// - Exception has both the fields everyone has and CERTI's cloneSelf/throwSelf/displayMe.
+// - Exception has both the fields everyone has and CERTI's cloneSelf/throwSelf/displayMe;
+// - OpenRTI's RTI_UNIQUE_PTR, RTI_NOEXCEPT and RTI_THROW are defined.
 #ifndef HLACORE_RTI_HH
 #define HLACORE_RTI_HH
 
@@ -19,9 +20,10 @@
 #define RTI_EXPORT __attribute__((visibility("default")))
 #define FEDTIME_EXPORT __attribute__((visibility("default")))
 #define RTI_STD std
-// For code that spells exception specifications through the other RTIs' macros.
+// For code written with OpenRTI's macros: exception specifications, and the owning pointer of its examples.
 #define RTI_NOEXCEPT noexcept
 #define RTI_THROW(list)
+#define RTI_UNIQUE_PTR std::unique_ptr
 
 class RTIambPrivateRefs;
 struct RTIambPrivateData;

@@ -216,9 +216,9 @@ inline void round_trip(RTI::RTIambassador& rtia) {
     }
 }
 
-// An attribute set of the given handles (deleted by the unique_ptr).
-inline std::unique_ptr<RTI::AttributeHandleSet> attribute_set(std::initializer_list<RTI::AttributeHandle> handles) {
-    std::unique_ptr<RTI::AttributeHandleSet> set(RTI::AttributeHandleSetFactory::create(handles.size()));
+// An attribute set of the given handles, held as OpenRTI's examples hold it (RTI_UNIQUE_PTR).
+inline RTI_UNIQUE_PTR<RTI::AttributeHandleSet> attribute_set(std::initializer_list<RTI::AttributeHandle> handles) {
+    RTI_UNIQUE_PTR<RTI::AttributeHandleSet> set(RTI::AttributeHandleSetFactory::create(handles.size()));
     for (auto h : handles) set->add(h);
     return set;
 }

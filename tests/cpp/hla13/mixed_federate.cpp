@@ -1,9 +1,9 @@
 // The C++ half of a mixed federation (tests/test_cpp_api.py runs the Python half): joins FEDERATION
 // (made from tests/data/robot.fed) as NAME, exchanges a receive-order update and interaction with the
-// Python federate, then runs STEPS steps of a TSO lockstep with it (regulating and constrained, lookahead
-// 1: an update of robot.location at t, then timeAdvanceRequest(t)), from synchronization point "timed". Prints {"ready": true} once set up,
-// and at the end one JSON line: the steps, the updates reflected, and the grants not preceded by the
-// peer's update at their time.
+// Python federate, then, from synchronization point "timed", runs STEPS steps of a TSO lockstep with it
+// (regulating and constrained, lookahead 1: an update of robot.location at t, then timeAdvanceRequest(t)).
+// Prints {"ready": true} once set up, and at the end one JSON line: the steps, the updates reflected, and
+// the grants not preceded by the peer's update at their time.
 #include <iostream>
 #include <memory>
 #include <string>

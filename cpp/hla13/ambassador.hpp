@@ -96,6 +96,8 @@ template <class Base>
 class PairSet : public Base {
 public:
     explicit PairSet(Pairs pairs) : pairs_(std::move(pairs)) {}
+    using Base::getValue;  // the unsigned int overloads too
+    using Base::getValuePointer;
     RTI::ULong size() const override { return pairs_.values.size(); }
     RTI::Handle getHandle(RTI::ULong index) const override { return pairs_.at(index).first; }
     RTI::ULong getValueLength(RTI::ULong index) const override { return pairs_.at(index).second.size(); }

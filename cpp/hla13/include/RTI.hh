@@ -7,7 +7,8 @@
 // - no exception specifications, so that overriding callbacks may declare `throw (...)` (CERTI's style,
 //   before C++17) or nothing (OpenRTI's under C++17);
 // - RTI_USES_STD_FSTREAM may be defined or not: the standard streams are used either way;
-// - ULong is unsigned long and Long long, as in CERTI and the DMSO headers;
+// - ULong is unsigned long and Long long, as in CERTI and the DMSO headers; a value's length may also be
+//   taken into an unsigned int, OpenRTI's ULong;
 // - Exception has both the fields everyone has and CERTI's cloneSelf/throwSelf/displayMe;
 // - OpenRTI's RTI_UNIQUE_PTR, RTI_NOEXCEPT and RTI_THROW are defined.
 #ifndef HLACORE_RTI_HH
@@ -184,6 +185,18 @@ public:
         virtual void getValue(ULong index, char* buffer, ULong& length) const = 0;
         // The value in place, valid as long as the set is; sets length.
         virtual char* getValuePointer(ULong index, ULong& length) const = 0;
+        // The same with an unsigned int length, as code written for OpenRTI's headers (ULong = unsigned int) has it.
+        void getValue(ULong index, char* buffer, unsigned int& length) const {
+            ULong n = 0;
+            getValue(index, buffer, n);
+            length = static_cast<unsigned int>(n);
+        }
+        char* getValuePointer(ULong index, unsigned int& length) const {
+            ULong n = 0;
+            char* value = getValuePointer(index, n);
+            length = static_cast<unsigned int>(n);
+            return value;
+        }
         // In reflectAttributeValues: how the value came (InvalidHandleValuePairSetContext elsewhere).
         virtual TransportType getTransportType(ULong index) const = 0;
         virtual OrderType getOrderType(ULong index) const = 0;
@@ -242,6 +255,17 @@ public:
         virtual ULong getValueLength(ULong index) const = 0;
         virtual void getValue(ULong index, char* buffer, ULong& length) const = 0;
         virtual char* getValuePointer(ULong index, ULong& length) const = 0;
+        void getValue(ULong index, char* buffer, unsigned int& length) const {  // OpenRTI's ULong, as above
+            ULong n = 0;
+            getValue(index, buffer, n);
+            length = static_cast<unsigned int>(n);
+        }
+        char* getValuePointer(ULong index, unsigned int& length) const {
+            ULong n = 0;
+            char* value = getValuePointer(index, n);
+            length = static_cast<unsigned int>(n);
+            return value;
+        }
         virtual TransportType getTransportType() const = 0;
         virtual OrderType getOrderType() const = 0;
         virtual Region* getRegion() const = 0;

@@ -45,7 +45,7 @@ template <class Set>
 std::map<RTI::ULong, std::string> values_in(const Set& set) {
     std::map<RTI::ULong, std::string> out;
     for (RTI::ULong i = set.start(); set.valid(i); i = set.next(i)) {
-        RTI::ULong length = 0;
+        unsigned int length = 0;  // OpenRTI's ULong: the header takes both
         const char* value = set.getValuePointer(i, length);
         out[set.getHandle(i)] = std::string(value, length);
     }

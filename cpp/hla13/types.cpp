@@ -79,9 +79,7 @@ void rethrow_as_hla() {
 }
 
 double time_of(const RTI::FedTime& time) {
-    const auto* t = dynamic_cast<const RTIfedTime*>(&time);
-    if (!t) throw RTI::InvalidFederationTime("not an RTIfedTime: hlacore's logical time is RTIfedTime (fedtime.hh)");
-    return t->getTime();
+    return RTIfedTime(time).getTime();  // libFedTime's check: InvalidFederationTime for another type
 }
 
 // ---- sets ----

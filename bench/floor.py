@@ -58,13 +58,14 @@ class PySink(_SocketPeer):
     """Bursts of RECORD-byte messages, one send() each (as the hlacore client sends one frame per update),
     to a Python process that counts them and reports each complete burst."""
 
-    def __init__(self, burst: int) -> None:
-        super().__init__("sink", RECORD, burst)
+    def __init__(self, burst: int, record: int = RECORD) -> None:
+        super().__init__("sink", record, burst)
         self.burst_size = burst
+        self.record = record
         self.sent = 0
 
     def burst(self) -> None:
-        send, record = self.sock.sendall, bytes(RECORD)
+        send, record = self.sock.sendall, bytes(self.record)
         for _ in range(self.burst_size):
             send(record)
         self.sent += self.burst_size
@@ -80,9 +81,9 @@ def cpp_rtt_ns(binary: str, size: int, count: int) -> list[int]:
     return samples
 
 
-def cpp_stream_rate(binary: str, count: int) -> float:
-    """Messages per second of `count` RECORD-byte sends, timed by the C++ program until all were read."""
-    out = subprocess.run([binary, "stream", str(RECORD), str(count)], check=True, capture_output=True,
+def cpp_stream_rate(binary: str, count: int, record: int = RECORD) -> float:
+    """Messages per second of `count` sends of `record` bytes, timed by the C++ program until all were read."""
+    out = subprocess.run([binary, "stream", str(record), str(count)], check=True, capture_output=True,
                          text=True, timeout=120).stdout
     result = json.loads(out)
     return float(result["count"] / result["seconds"])

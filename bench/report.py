@@ -9,6 +9,10 @@ messages per second (rates), keyed as the bench tests record them:
     update.ro.S, update.tso.S               update ping-pong round trips with an S-byte payload
     throughput.floor.py / .cpp              raw TCP messages per second (one send per message)
     throughput.N                            updates per second delivered to each of N subscribers
+    large.S, large.floor.py.S / .cpp.S      bytes per second of S-byte updates 1 → 1 (S = 1 MiB, 16 MiB); of a raw
+                                            TCP stream of S-byte records, one send each
+    cpu.32.rtig, cpu.32.federate            CPU seconds per step of the 32-federate lockstep (grant.rtig.32): the
+                                            rtig's, and each peer federate process's
     fom.flat, fom.tree, fom.tree.python     parse times of the generated 1000-class FOM
     fom.10mb, fom.10mb.rtig                 a generated 10 MB FOM: parse time; createFederationExecution +
                                             destroyFederationExecution with it against rtig
@@ -18,6 +22,7 @@ messages per second (rates), keyed as the bench tests record them:
                                             (and .delivered: the share that arrived)
     record.grant.2.off / .on                grant.rtig.2 through an rtig without / with --record, alternating
     record.throughput.1.off / .on           throughput.1 the same way
+    monitor.grant.2.off / .on               grant.rtig.2 through an rtig without / with hlacore.monitor watching
     rtis.floor.cpp, rtis.floor.stream.cpp   the three-RTI run's floors: C++ TCP round trip 8 B, stream rate
     rtis.R.lockstep.K, rtis.R.pingpong,     the three-RTI benchmark, R = hlacore, openrti, certi (the C++
     rtis.R.throughput                       program of bench/rtis) or python (hlacore's Python federates)
@@ -36,6 +41,7 @@ RTI_COLUMNS = (("hlacore", "hlacore, C++"), ("python", "hlacore, Python"), ("ope
                ("certi", "CERTI 3.5.1, C++"))
 PAYLOADS = (8, 1024, 65536)
 SUBSCRIBERS = (1, 8)
+LARGE_SIZES = (1 << 20, 16 << 20)
 FOMS = ("fom.flat", "fom.tree", "fom.tree.python", "fom.10mb", "fom.10mb.rtig")
 WORLD_ROBOTS = (4, 50)
 
@@ -122,6 +128,13 @@ class Report:
             throughput.append(self._rate_row(f"8 B updates, 1 → {n} (per subscriber, all delivered)",
                                              f"throughput.{n}", target, n))
         sections.append(("Throughput: small updates through one rtig, none lost", _present(throughput)))
+        large: list[Optional[Row]] = []
+        for size in LARGE_SIZES:
+            large += [self._bandwidth_row(size, None), self._bandwidth_row(size, f"large.{size}")]
+        sections.append(("Large updates 1 → 1, every one delivered: bandwidth against a raw TCP stream of the same "
+                         "sizes", _present(large)))
+        sections.append(("CPU per step of the 32-federate lockstep with updates (/proc: user + system)",
+                         _present([self._cpu_row()])))
         fom = [self._fom_row(label, key, target) for label, key, target in (
             ("1000 classes × 10 attributes, flat: `_core.parse_fed`", "fom.flat", 0.020),
             ("same, 3-level tree (inherited attributes): `_core.parse_fed`", "fom.tree", 0.020),
@@ -135,20 +148,28 @@ class Report:
         lossy = [self._loss_row(path) for path in ("udp", "tcp")]
         sections.append(("Best-effort stream, 200 Hz, 1 % of the gateway port's packets lost each way (loopback "
                          "in a namespace, nftables)", _present(lossy)))
-        recording = [self._record_row("lockstep of 2 federates with updates", "record.grant.2", "grant.floor"),
-                     self._record_row("throughput 1 → 1, 8 B updates", "record.throughput.1", "throughput.floor")]
+        recording = [self._cost_row("lockstep of 2 federates with updates", "record.grant.2", "grant.floor",
+                                    "--record"),
+                     self._cost_row("throughput 1 → 1, 8 B updates", "record.throughput.1", "throughput.floor",
+                                    "--record")]
         sections.append(("Recording: rtig --record against the same rtig without, alternating rounds (target: the "
                          "recorded run within 10 % of the other)", _present(recording)))
+        watched = [self._cost_row("lockstep of 2 federates with updates", "monitor.grant.2", "grant.floor",
+                                  "hlacore.monitor")]
+        sections.append(("Monitor: the same rtig without and with `python -m hlacore.monitor` watching it (a status "
+                         "query every 0.5 s, one page connected), alternating rounds (target: within 10 %)",
+                         _present(watched)))
         return sections
 
-    def _record_row(self, figure: str, key: str, floor: str) -> Optional[Row]:
+    def _cost_row(self, figure: str, key: str, floor: str, what: str) -> Optional[Row]:
+        """`key`.off against `key`.on: the cost of `what` (recording, monitoring) on a figure."""
         off, on = self.median(f"{key}.off"), self.median(f"{key}.on")
         if off is None or on is None:
             return None
-        rate = key.startswith("record.throughput")
-        cost = off / on if rate else on / off  # > 1: the recorded run is slower
+        rate = ".throughput" in key
+        cost = off / on if rate else on / off  # > 1: the run with `what` is slower
         show = _rate if rate else _us
-        return Row(f"{figure}: without / with --record", f"{show(off)} / {show(on)}", "",
+        return Row(f"{figure}: without / with {what}", f"{show(off)} / {show(on)}", "",
                    self._ratio(f"{key}.on", f"{floor}.py"), self._ratio(f"{key}.on", f"{floor}.cpp"),
                    f"{cost:.2f}× the time of the run without: {'met' if cost <= 1.10 else 'missed'}")
 
@@ -205,6 +226,31 @@ class Report:
         total = f" ({_rate(rate * subscribers)} in all)" if subscribers > 1 else ""
         return Row(figure, _rate(rate) + total, f"slowest round {_rate(min(self.samples[key]))}",
                    self._ratio(key, "throughput.floor.py"), self._ratio(key, "throughput.floor.cpp"), target)
+
+    def _bandwidth_row(self, size: int, key: Optional[str]) -> Optional[Row]:
+        """The floors of `size` (key None) or the updates' bandwidth, in MB/s; target ≥ 50 % of the C++ floor."""
+        py, cpp = self.median(f"large.floor.py.{size}"), self.median(f"large.floor.cpp.{size}")
+        if key is None:
+            if py is None and cpp is None:
+                return None
+            return Row(f"raw TCP stream of {size >> 20} MiB records (Python / C++)", f"{_mbps(py)} / {_mbps(cpp)}",
+                       "", "", _python_vs_cpp(self._ratio(f"large.floor.py.{size}", f"large.floor.cpp.{size}")), "")
+        rate = self.median(key)
+        if rate is None:
+            return None
+        target = f"≥ 50 % of the C++ floor: {'met' if cpp and rate >= cpp / 2 else 'missed'}" if cpp else ""
+        return Row(f"{size >> 20} MiB updates", _mbps(rate), f"slowest round {_mbps(min(self.samples[key]))}",
+                   self._ratio(key, f"large.floor.py.{size}"), self._ratio(key, f"large.floor.cpp.{size}"), target)
+
+    def _cpu_row(self) -> Optional[Row]:
+        rtig, federate = self.median("cpu.32.rtig"), self.median("cpu.32.federate")
+        step = self.median("grant.rtig.32")
+        if rtig is None or federate is None:
+            return None
+        whole = rtig + 32 * federate
+        share = f" ({whole / step:.2f} cores busy)" if step else ""
+        return Row("rtig / each Python federate", f"{_us(rtig)} / {_us(federate)}", "", "", "",
+                   f"{_us(whole / 32)} per federate-step in all{share}")
 
     def _world_row(self, robots: int) -> Optional[Row]:
         """No floor: the world runs in one process without the RTI."""
@@ -301,6 +347,9 @@ def expected_keys() -> list[str]:
     keys += [f"throughput.{n}" for n in SUBSCRIBERS]
     keys += [f"besteffort.{path}.loss1{part}" for path in ("udp", "tcp") for part in ("", ".delivered")]
     keys += [f"record.{figure}.{side}" for figure in ("grant.2", "throughput.1") for side in ("off", "on")]
+    keys += [f"monitor.grant.2.{side}" for side in ("off", "on")]
+    keys += [f"large.{kind}{size}" for size in LARGE_SIZES for kind in ("", "floor.py.", "floor.cpp.")]
+    keys += ["cpu.32.rtig", "cpu.32.federate"]
     return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
 
 
@@ -351,6 +400,10 @@ def _present(rows: list[Optional[Row]]) -> list[Row]:
 
 def _us(seconds: float) -> str:
     return f"{seconds * 1e6:.1f} µs" if seconds < 1e-3 else f"{seconds * 1e6:.0f} µs"
+
+
+def _mbps(rate: Optional[float]) -> str:
+    return "–" if rate is None else f"{rate / 1e6:.0f} MB/s"
 
 
 def _rate(rate: Optional[float]) -> str:

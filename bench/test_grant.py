@@ -3,6 +3,8 @@ round trip; and the in-process gateway against the standalone rtig for the 2-fed
 
 from __future__ import annotations
 
+import os
+import pathlib
 from typing import Optional
 
 import pytest
@@ -32,21 +34,37 @@ def test_floor_cpp_rtt(report: Report, tcp_floor: str) -> None:
     report.add("grant.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS)])
 
 
+def cpu_seconds(pid: int) -> float:
+    """The CPU time (user + system) process `pid` has used, from /proc/PID/stat."""
+    fields = pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime, stime: fields 14 and 15
+
+
 def run_lockstep(measure, address: str, federates: int, key: str, updates: bool = True, extend: bool = False,
-                 rounds: Optional[int] = None) -> None:
+                 rounds: Optional[int] = None, cpu: Optional[tuple[Report, int]] = None) -> None:
+    """`cpu` = (report, the rtig's pid): also record the CPU time per step of the rtig and of each peer
+    federate process (cpu.K.rtig, cpu.K.federate: their mean)."""
     rounds = rounds or ROUNDS[federates]
     federation = Lockstep(address, federates, max_steps=rounds + rounds // 10 + 10,  # warm-up, stop, margin
                           updates=updates)
     try:
+        pids = [peer.pid for peer in federation.peers]
+        before = ([cpu_seconds(cpu[1])], [cpu_seconds(pid) for pid in pids], federation.time) if cpu else None
         measure(key, federation.step, rounds, extend=extend)
+        if cpu and before:
+            steps = federation.time - before[2]
+            cpu[0].add(f"cpu.{federates}.rtig", [(cpu_seconds(cpu[1]) - before[0][0]) / steps])
+            cpu[0].add(f"cpu.{federates}.federate", [(cpu_seconds(pid) - was) / steps
+                                                     for pid, was in zip(pids, before[1])])
         federation.finish()
     finally:
         federation.close()
 
 
 @pytest.mark.parametrize("federates", FEDERATES)
-def test_lockstep_rtig(measure, rtig, federates: int) -> None:
-    run_lockstep(measure, rtig.address, federates, f"grant.rtig.{federates}")
+def test_lockstep_rtig(measure, report: Report, rtig, federates: int) -> None:
+    run_lockstep(measure, rtig.address, federates, f"grant.rtig.{federates}",
+                 cpu=(report, rtig.proc.pid) if federates == max(FEDERATES) else None)
 
 
 @pytest.mark.parametrize("federates", FEDERATES)

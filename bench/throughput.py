@@ -14,8 +14,12 @@ PAYLOAD = b"\x00\x01\x02\x03\x04\x05\x06\x07"  # 8 bytes: a small update
 
 
 class Fanout:
-    def __init__(self, address: str, subscribers: int, burst: int) -> None:
+    """One sender (this process) and `subscribers` count_peer.py processes; each burst sends `burst` updates of
+    `payload`."""
+
+    def __init__(self, address: str, subscribers: int, burst: int, payload: bytes = PAYLOAD) -> None:
         self.burst_size = burst
+        self.payload = payload
         self.sent = 0
         self.federation = create(address)
         self.fed, self.amb = join(address, self.federation, "sender", subscribe=False)
@@ -32,7 +36,7 @@ class Fanout:
 
     def burst(self) -> None:
         """Send `burst` updates, then wait until every subscriber has reflected all of them."""
-        update, obj, values = self.fed.rtia.updateAttributeValues, self.fed.obj, {self.fed.location: PAYLOAD}
+        update, obj, values = self.fed.rtia.updateAttributeValues, self.fed.obj, {self.fed.location: self.payload}
         for _ in range(self.burst_size):
             update(obj, values, "")
         self.sent += self.burst_size

@@ -12,6 +12,8 @@ command -v nft >/dev/null 2>&1 \
     || debian_install "nft drops packets in the namespace of the best-effort loss bench (bench/lossy_stream.py)" nftables
 command -v openssl >/dev/null 2>&1 \
     || debian_install "the openssl command makes the test certificates of tests/test_tls.py" openssl
+{ command -v chromium && command -v chromedriver; } >/dev/null 2>&1 \
+    || debian_install "tests/test_monitor.py opens the monitor's page in headless chromium, driven by Selenium through chromedriver" chromium chromium-driver
 command -v pkg-config >/dev/null 2>&1 \
     || debian_install "pkg-config reads the installed hlacore.pc in tests/test_cpp_api.py (the HLA 1.3 C++ API)" pkgconf
 install_hlacore test

@@ -12,6 +12,8 @@ from bench.floor import PyEcho, PySink, cpp_rtt_ns, cpp_stream_rate
 from bench.fomgen import generate_fed
 from bench.lockstep import Lockstep
 from bench.lossy_stream import stream_through_loss
+from bench.test_grant import cpu_seconds
+from bench.test_monitor_cost import watching
 from bench.outputs import results_markdown
 from bench.pingpong import PingPong
 from bench.report import Report, expected_keys, three_rtis_keys
@@ -20,6 +22,7 @@ from bench.save_restore import SaveRestore
 from bench.throughput import Fanout
 from conftest import cpp_federate, rtig_executable
 from hlacore import _core
+from hlacore.status import status
 
 
 def test_python_floors_echo_and_count() -> None:
@@ -103,6 +106,22 @@ def test_fanout_counts_every_update_at_every_subscriber(rtig) -> None:
         fanout.close()
 
 
+def test_large_updates_arrive_whole_and_counted(rtig) -> None:
+    """bench/test_large.py's body at two 1 MiB updates per burst."""
+    fanout = Fanout(rtig.address, 1, 2, payload=bytes(1 << 20))
+    try:
+        fanout.burst()
+        fanout.finish()
+    finally:
+        fanout.close()
+
+
+def test_cpu_seconds_reads_a_process_from_proc() -> None:
+    """bench/test_grant.py's CPU figure: this process's CPU time, as /proc and os.times() both count it."""
+    spent = os.times()
+    assert abs(cpu_seconds(os.getpid()) - (spent.user + spent.system)) < 0.1
+
+
 @pytest.mark.parametrize("levels", [1, 3])
 def test_generated_fom_parses_with_every_class_and_attribute(levels: int) -> None:
     fom = _core.parse_fed(generate_fed(40, 3, levels, fanout=4), "gen.fed")
@@ -126,6 +145,15 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     assert "| receive order one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× C++ one-way: met (1.00×) |" in text
     assert "200.0 k/s (1600.0 k/s in all)" in text
     assert "≥ 200 000/s: met" in text and text.count("< 20 ms: met") == 2
+    assert "| lockstep of 2 federates with updates: without / with hlacore.monitor | 200.0 µs / 200.0 µs |" in text
+    assert "| 16 MiB updates | 0 MB/s | slowest round 0 MB/s | 1.00× | 1.00× | ≥ 50 % of the C++ floor: met |" in text
+    assert "| rtig / each Python federate | 200.0 µs / 200.0 µs |" in text
+
+
+def test_the_monitor_cost_bench_watches_with_a_connected_page(rtig) -> None:
+    """bench/test_monitor_cost.py's watcher: the monitor process answers and a page client reads its views."""
+    with watching(rtig.address):
+        assert status(rtig.address)["connections"] >= 2  # the monitor's and this query's
 
 
 @pytest.mark.parametrize("workload, federates, n, m", [("lockstep", 3, 20, 2), ("pingpong", 2, 20, 2),

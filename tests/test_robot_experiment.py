@@ -85,10 +85,11 @@ def test_best_effort_robot_has_time_errors_and_the_run_completes(tmp_path):
     assert "experiment finished: CHECKER FOUND ERRORS" in done.stdout
 
 
-def test_the_6x6_scenario_runs_calibrated(tmp_path):
-    done, rows = run_demo(tmp_path, "--grid", "6x6", "--cycles", "12", "--time-scale", "0")
+def test_the_6x6_scenario_runs_calibrated_with_the_monitor_watching(tmp_path):
+    done, rows = run_demo(tmp_path, "--grid", "6x6", "--cycles", "12", "--time-scale", "0", "--monitor", "127.0.0.1:0")
     assert done.returncode == 0, done.stdout + done.stderr
     assert len(rows) == 12 and robot_cells(rows)[-1] == (5, 4)
+    assert re.search(r"^monitor: http://127\.0\.0\.1:[1-9]\d*/$", done.stdout, re.M), done.stdout  # port 0: a free one
 
 
 def test_testbench_and_robot_as_two_commands_over_the_real_rtig(rtig, tmp_path):

@@ -7,13 +7,14 @@ import math
 import os
 import subprocess
 import sys
+import time
 
 import hlacore
 import hlacore.status
 import hlacore.rti as rti
 from hlacore.status import status
 
-from conftest import ROBOT_FED, Recorder, RtigProcess, status_client
+from conftest import ROBOT_FED, Recorder, RtigProcess, python_subprocess, status_client
 
 
 def join_timed(address: str, name: str, lookahead: float) -> tuple[rti.RTIAmbassador, Recorder]:
@@ -41,11 +42,14 @@ def test_status_reports_each_federates_time_state(inprocess_gateway: hlacore.Gat
     (federation,) = report["federations"]
     assert federation["name"] == "TestFed" and federation["fed"] == ROBOT_FED
     alpha, beta = federation["federates"]
+    waited = alpha["pending"].pop("waiting")  # seconds since the request
+    assert 0 <= waited < 5
     assert alpha == {
         "handle": 1, "name": "alpha", "time": 0.0, "lookahead": 1.0, "regulating": True,
         "enabling_regulation": False, "constrained": True,
         "asynchronous_delivery": False, "pending": {"request": "TAR", "time": 3.0}, "queued_tso": 0,
         "queued_ro": 0, "regions": 0, "lbts": 2.0, "output_bound": 4.0,
+        "updates_sent": 0, "interactions_sent": 1, "grants": 0,
     }
     assert beta["pending"] is None and beta["queued_tso"] == 1 and beta["lbts"] == 4.0
     assert beta["output_bound"] == 2.0
@@ -55,6 +59,7 @@ def test_status_reports_each_federates_time_state(inprocess_gateway: hlacore.Gat
     report = status(address)
     alpha, beta = report["federations"][0]["federates"]
     assert (alpha["time"], alpha["pending"], beta["time"], beta["queued_tso"]) == (3.0, None, 3.0, 1)
+    assert (alpha["grants"], beta["grants"]) == (1, 1)
     for rtia in (a, b):
         rtia.resignFederationExecution(rti.ResignAction.NoAction)
     assert status(address)["federations"][0]["federates"] == []
@@ -130,3 +135,38 @@ def test_watch_redraws_in_place_on_a_terminal(inprocess_gateway: hlacore.Gateway
         assert "more line(s)" in lines[-1]  # six federates do not fit in eight rows
     for rtia in members:
         rtia.resignFederationExecution(rti.ResignAction.NoAction)
+
+
+def test_status_keeps_a_log_of_joins_resigns_and_drops_with_the_reason(rtig: RtigProcess) -> None:
+    """What hlacore.monitor shows: the events numbered after the last one seen, and the gateway's process."""
+    creator = rti.RTIAmbassador(rtig.address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    stayer, _ = join_timed(rtig.address, "stayer", 1.0)
+    victim = python_subprocess("victim_federate.py", rtig.address)
+    try:
+        assert victim.read_line(30).startswith("ready ")
+        host, port = rtig.address.rsplit(":", 1)
+        client = hlacore._core.RTIAmbassadorBase(host, int(port))
+        report = json.loads(client._status())
+        assert [(e["kind"], e["federation"], e["name"]) for e in report["events"]] == [
+            ("created", "TestFed", ROBOT_FED), ("joined", "TestFed", "stayer"), ("joined", "TestFed", "victim")]
+        assert [e["sequence"] for e in report["events"]] == [1, 2, 3] and report["last_event"] == 3
+        assert report["events"][1]["federate"] == 1 and report["events"][1]["time"] > 1.7e9
+        process = report["process"]
+        assert process["pid"] == rtig.proc.pid and process["rss_bytes"] > 1 << 20 and process["cpu_seconds"] > 0
+        assert "instances" in report["federations"][0]
+        assert "instances" not in json.loads(client._status(instances=False))["federations"][0]
+        victim.kill()
+        deadline = time.monotonic() + 10
+        while not (later := json.loads(client._status(3)))["events"]:
+            assert time.monotonic() < deadline, "the drop was not logged"
+            time.sleep(0.05)
+        (dropped,) = later["events"]
+        assert (dropped["kind"], dropped["name"], dropped["federate"]) == ("dropped", "victim", 2)
+        assert dropped["reason"].lower().endswith("by peer")  # "connection closed by peer", or reset with data unread
+        stayer.resignFederationExecution(rti.ResignAction.NoAction)
+        creator.destroyFederationExecution("TestFed")
+        assert [(e["kind"], e["name"]) for e in json.loads(client._status(4))["events"]] == [
+            ("resigned", "stayer"), ("destroyed", "")]
+    finally:
+        victim.close()

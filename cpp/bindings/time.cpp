@@ -59,7 +59,8 @@ void bind_time(Ambassador& rtia) {
              [](Client& c, const EventRetractionHandle& h) { c.retract(h.sender, h.serial); }, py::arg("theHandle"))
         .def("_time_advance_pending", &Client::time_advance_pending)
         .def("_lowest_sendable_time", &Client::lowest_sendable_time)
-        .def("_status", &Client::query_status, py::call_guard<py::gil_scoped_release>())
+        .def("_status", &Client::query_status, py::arg("events_after") = 0, py::arg("instances") = true,
+             py::call_guard<py::gil_scoped_release>())
         .def("_send_counts",
              [](const Client& c) {
                  const Client::SendCounts n = c.send_counts();

@@ -103,7 +103,7 @@ MESSAGES = {
     "TimeConstrainedEnabled": f64(0.0),
     "TimeAdvanceGrant": f64(10.0),
     "RequestRetraction": u32(1) + u64(9),
-    "QueryStatus": u32(1),
+    "QueryStatus": u32(1) + u64(0) + u8(1),
     "RequestFederationSave": u32(9) + s("snap") + t(5.0),
     "FederateSaveComplete": b(True),
     "RequestFederationRestore": u32(10) + s("snap"),

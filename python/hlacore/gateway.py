@@ -5,9 +5,12 @@ from __future__ import annotations
 import math
 import os
 from types import TracebackType
-from typing import Any, Iterable, Mapping, Optional
+from typing import TYPE_CHECKING, Any, Iterable, Mapping, Optional
 
 from . import _core
+
+if TYPE_CHECKING:
+    from .monitor import Monitor
 
 
 class Gateway:
@@ -122,6 +125,14 @@ class Gateway:
         from .status import status
 
         return status(self.address, self._secret_file, tls=self._tls_cert if self._tls_cert else False)
+
+    def monitor(self, port: int = 0, host: str = "127.0.0.1", interval: float = 0.5) -> "Monitor":
+        """The live web view of this gateway (:class:`hlacore.monitor.Monitor`), started: open its ``url`` in a
+        browser; ``close()`` it, or use it in a ``with`` block. ``port`` 0 picks a free port."""
+        from .monitor import Monitor
+
+        return Monitor(self.address, host=host, port=port, interval=interval, secret_file=self._secret_file,
+                       tls=self._tls_cert if self._tls_cert else False).start()
 
     def stop(self) -> None:
         """Stop serving and close every connection; idempotent."""

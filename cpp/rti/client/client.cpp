@@ -788,9 +788,9 @@ void Client::file(Arrivals& got) {
     }
 }
 
-std::string Client::query_status() {
+std::string Client::query_status(std::uint64_t events_after, bool instances) {
     const auto id = next_request();
-    return call<wire::StatusReport>(wire::QueryStatus{id}, id).json;
+    return call<wire::StatusReport>(wire::QueryStatus{id, events_after, instances}, id).json;
 }
 
 void Client::start_recording(const std::string& path) {

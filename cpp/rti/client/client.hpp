@@ -239,8 +239,9 @@ public:
     };
     SendCounts send_counts() const { return {messages_sent_.load(), write_calls_.load()}; }
 
-    // The gateway's state as JSON (needs no join).
-    std::string query_status();
+    // The gateway's state as JSON (needs no join), with the events of its log numbered above `events_after`,
+    // and every object instance unless `instances` is false.
+    std::string query_status(std::uint64_t events_after = 0, bool instances = true);
 
     // ---- the recorder federate (python -m hlacore.record, docs/record-replay.md) ----
     // Asks the gateway for the recording of this federate's federation and writes it into `path` (MCAP, the

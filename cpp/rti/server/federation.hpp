@@ -3,6 +3,8 @@
 // between them. Pure state, no I/O: messages for federates are encoded into buffers handed out by an Outbox.
 #pragma once
 
+#include <chrono>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -64,8 +66,9 @@ public:
 
     // LBTS or the minimum next event time of a federate (HLA 1.3 §8.16, §8.18).
     double query_time(FederateHandle federate, wire::TimeQuery which);
-    // Appends this federation's state as a JSON object (federates, time state, objects, sync points).
-    void write_status(std::string& json);
+    // Appends this federation's state as a JSON object (federates, time state, objects, sync points), with
+    // every object instance and its owners if `instances`.
+    void write_status(std::string& json, bool instances);
     // What waits in the federation for `federate` until its own time state moves (flow control counts it).
     std::size_t held_bytes(FederateHandle federate) const { return time_.held_bytes(federate); }
 
@@ -133,6 +136,9 @@ private:
         std::map<fom::Handle, fom::Order> interaction_order;
         std::map<fom::Handle, fom::Transport> interaction_transport;
         FederateRegions ddm;  // data distribution management (HLA 1.3 §9, server/regions.hpp)
+        // For the status report, whose readers (hlacore.monitor) turn them into rates and waits.
+        std::uint64_t updates_sent = 0, interactions_sent = 0, grants = 0;
+        std::chrono::steady_clock::time_point requested_at{};  // its last time advance request
     };
     // Ownership callbacks gathered while handling one request, one message per federate and kind; the
     // requests for assumption and release carry the request's tag.
@@ -224,6 +230,7 @@ private:
     void deliver_held(FederateHandle to, std::vector<std::string>& frames);
     void save_restore_departed(FederateHandle federate);
     void write_save_status(std::string& json) const;
+    void write_instances(std::string& json) const;
 
     std::string name_;
     fom::Fom fom_;

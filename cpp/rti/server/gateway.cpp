@@ -19,6 +19,7 @@
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/eventfd.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -660,6 +661,7 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
             record_federation(*entry);
             recorder_->created(entry->federation);
         }
+        events_.add("created", m.federation, 0, m.fed_name);
         if (options_.verbose) log("created federation '" + m.federation + "' from " + source);
     });
 }
@@ -675,6 +677,7 @@ void Gateway::serve(Connection& c, const wire::DestroyFederation& m) {
                                                                     " federate(s) still joined to '" + m.federation + "'");
         if (recorder_) recorder_->forget(it->second->federation);
         federations_.erase(it);
+        events_.add("destroyed", m.federation, 0, "");
         if (options_.verbose) log("destroyed federation '" + m.federation + "'");
     });
 }
@@ -699,6 +702,7 @@ void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
     });
     if (!entered) return;
     if (recorder_) recorder_->joined(entered->federation, c.federate);
+    events_.add("joined", m.federation, c.federate, m.federate);
     entered->federation.announce_pending(c.federate);  // after the reply: the client is joined by then
     if (trace_) trace_->joined(m.federation, c.federate, m.federate, c.read_ns);
     if (options_.verbose)
@@ -709,7 +713,9 @@ void Gateway::serve(Connection& c, const wire::ResignFederation& m) {
     answer(c, m.request, [&] {
         Federation& federation = joined(c);
         federation.check_membership_change("resignFederationExecution");
+        const std::string name = federation.federate_name(c.federate);
         federation.resign(c.federate, static_cast<wire::ResignAction>(m.action));
+        events_.add("resigned", federation.name(), c.federate, name);
         if (c.tap) recorder_->detach(*c.tap);
         c.tap.reset();
         c.federation->outbox.peers_.erase(c.federate);
@@ -751,6 +757,27 @@ void Gateway::serve(Connection& c, const wire::ReleaseResponse& m) {
     });
 }
 
+namespace {
+
+// ,"process":{...}: the gateway's process (for an in-process gateway, the federate's program that runs it).
+void write_process_status(std::string& json) {
+    rusage usage{};
+    ::getrusage(RUSAGE_SELF, &usage);
+    const double cpu = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                       static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
+    long long resident_pages = 0;  // now, not the peak that ru_maxrss gives
+    if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(statm, "%*lld %lld", &resident_pages) != 1) resident_pages = 0;
+        std::fclose(statm);
+    }
+    json += ",\"process\":{\"pid\":" + std::to_string(::getpid()) + ",\"rss_bytes\":" +
+            std::to_string(resident_pages * ::sysconf(_SC_PAGESIZE)) + ",\"cpu_seconds\":";
+    json_number(json, cpu);
+    json += '}';
+}
+
+}  // namespace
+
 void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
     answer(c, m.request, [&] {
         std::string json = "{\"server\":\"hlacore rtig\",\"address\":";
@@ -761,10 +788,12 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
         for (auto& [name, entry] : federations_) {
             if (!first) json += ',';
             first = false;
-            entry->federation.write_status(json);
+            entry->federation.write_status(json, m.instances);
         }
         json += "],\"datagrams\":";
         write_datagram_status(json);
+        write_process_status(json);
+        events_.write_after(m.events_after, json);
         json += '}';
         return wire::StatusReport{m.request, std::move(json)};
     });
@@ -1069,6 +1098,7 @@ void Gateway::close(int fd, const std::string& why) {
         entry.outbox.peers_.erase(c->federate);
         if (c->tap) recorder_->detach(*c->tap);
         if (recorder_) recorder_->dropped(entry.federation, c->federate, why);
+        events_.add("dropped", entry.federation.name(), c->federate, entry.federation.federate_name(c->federate), why);
         try {
             // A federate that vanishes resigns with the default action: its objects go, the rest is released.
             entry.federation.resign(c->federate, wire::ResignAction::DeleteObjectsAndReleaseAttributes);

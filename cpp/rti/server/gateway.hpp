@@ -15,6 +15,7 @@
 #include <sys/epoll.h>
 #include <sys/socket.h>
 
+#include "rti/server/event_log.hpp"
 #include "rti/server/federation.hpp"
 #include "rti/tls.hpp"
 #include "rti/server/recorder.hpp"
@@ -179,6 +180,7 @@ private:
     int over_budget_ = -1;  // a client found over its budget while the current frame was served
     std::unique_ptr<MessageTrace> trace_;
     std::unique_ptr<Recorder> recorder_;
+    EventLog events_;  // joins, resigns and drops, for the status report
     void recorder_failed();  // logs why recording into the file stopped, once
     // Has the federation's outbox hand its callbacks to the recorder (made now if there is none).
     void record_federation(FederationEntry& entry);

@@ -137,7 +137,7 @@ fom::Handle Federation::receiving_interaction_class(const FederateState& f, fom:
 
 
 void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
-    federate(from);
+    ++federate(from).updates_sent;
     if (m.time) check_timestamp(from, *m.time, "attribute update");
     auto it = objects_.find(m.object);
     if (it == objects_.end()) return;  // deleted meanwhile
@@ -212,7 +212,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
 }
 
 void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
-    federate(from);
+    ++federate(from).interactions_sent;
     route_interaction(from, m, nullptr);
 }
 

@@ -377,7 +377,9 @@ void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClass
 
 // §9.12: reaches the plain subscribers and those whose subscription region overlaps `region`.
 void Federation::on(FederateHandle from, const wire::SendInteractionWithRegion& m) {
-    const Region& region = interaction_region(federate(from), m.region, m.interaction_class);
+    FederateState& f = federate(from);
+    ++f.interactions_sent;
+    const Region& region = interaction_region(f, m.region, m.interaction_class);
     route_interaction(from, wire::SendInteraction{m.interaction_class, m.values, m.tag, m.time, m.serial}, &region);
 }
 

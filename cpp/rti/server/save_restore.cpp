@@ -684,7 +684,11 @@ void Federation::write_save_status(std::string& out) const {
     json_string(out, save_restore_.dir);
     out += ",\"save_error\":";
     json_string(out, save_restore_.error);
-    out += "},\"instances\":";
+    out += '}';
+}
+
+void Federation::write_instances(std::string& out) const {
+    out += ",\"instances\":";
     json_array(out, objects_, [&](const auto& object) {
         const auto& [oh, obj] = object;
         const auto* cls = fom_.object_class(obj.object_class);

@@ -1,5 +1,6 @@
 // Introspection: the state of a federation as JSON, for `rtig --status` and hlacore.Gateway.status().
 // Infinite times (no bound, nothing queued) are written as null, so the output stays plain JSON.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -24,7 +25,7 @@ const char* request_name(AdvanceKind kind) {
 
 }  // namespace
 
-void Federation::write_status(std::string& out) {
+void Federation::write_status(std::string& out, bool instances) {
     out += "{\"name\":";
     json_string(out, name_);
     out += ",\"fed\":";
@@ -33,6 +34,7 @@ void Federation::write_status(std::string& out) {
     out += ",\"sync_points\":";
     sync_points_.write_status(out);
     out += ",\"federates\":";
+    const auto now = std::chrono::steady_clock::now();
     json_array(out, time_.status(), [&](const TimeFederateStatus& t) {
         const auto& f = federates_.at(t.federate);
         out += "{\"handle\":" + std::to_string(t.federate) + ",\"name\":";
@@ -49,6 +51,8 @@ void Federation::write_status(std::string& out) {
         if (const char* kind = request_name(t.pending)) {
             out += "{\"request\":\"" + std::string(kind) + "\",\"time\":";
             json_number(out, t.pending_time);
+            out += ",\"waiting\":";  // seconds since the request
+            json_number(out, std::chrono::duration<double>(now - f.requested_at).count());
             out += '}';
         } else {
             out += "null";
@@ -60,9 +64,13 @@ void Federation::write_status(std::string& out) {
         json_number(out, t.lbts);
         out += ",\"output_bound\":";
         json_number(out, t.output_bound);
+        out += ",\"updates_sent\":" + std::to_string(f.updates_sent);
+        out += ",\"interactions_sent\":" + std::to_string(f.interactions_sent);
+        out += ",\"grants\":" + std::to_string(f.grants);
         out += '}';
     });
     write_save_status(out);
+    if (instances) write_instances(out);
     out += '}';
 }
 

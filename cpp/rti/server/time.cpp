@@ -31,7 +31,8 @@ void Federation::release_time() {
     };
     // In the order of TimeManager::Release: messages below a new time precede the callback announcing it.
     for (auto& r : time_.release()) {
-        if (!federates_.count(r.federate)) continue;
+        auto f = federates_.find(r.federate);
+        if (f == federates_.end()) continue;
         if (r.constrained_enabled) outbox_.send_unheld(r.federate, wire::TimeConstrainedEnabled{*r.constrained_enabled});
         outbox_.send_frames(r.federate, r.frames);
         if (r.regulation_enabled) {
@@ -39,6 +40,7 @@ void Federation::release_time() {
             forget_retractable(r.federate, *r.regulation_enabled);
         }
         if (r.grant) {
+            ++f->second.grants;
             outbox_.send_unheld(r.federate, wire::TimeAdvanceGrant{*r.grant});
             forget_retractable(r.federate, *r.grant);
         }
@@ -92,6 +94,7 @@ void Federation::on(FederateHandle from, const wire::TimeAdvance& m) {
     if (time_.enabling_regulation(from))
         throw WireError("time advance request while a regulation enable is pending");
     time_.request(from, static_cast<AdvanceKind>(m.kind), m.time);
+    federate(from).requested_at = std::chrono::steady_clock::now();
     release_time();
 }
 

@@ -32,8 +32,8 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // token and size limit, DatagramHello and DatagramPath; 8: Welcome's nonce, the federation proofs of
 // CreateFederation, DestroyFederation and JoinFederation; 9: a typed answer per request with a result
 // (FederationJoined ... TimeQueried), Reply only for the others and for refusals; 10: StartRecording,
-// RecordedTopic and Recorded
-constexpr std::uint16_t kProtocolVersion = 10;
+// RecordedTopic and Recorded; 11: QueryStatus's events_after and instances
+constexpr std::uint16_t kProtocolVersion = 11;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -534,7 +534,9 @@ struct QueryTime {
 struct QueryStatus {
     HLACORE_TYPE(QueryStatus)
     std::uint32_t request = 0;
-    HLACORE_FIELDS(request)
+    std::uint64_t events_after = 0;  // the report's event log holds only those numbered above this
+    bool instances = true;           // list every object instance with its owners (hlacore.monitor does not)
+    HLACORE_FIELDS(request, events_after, instances)
 };
 
 // ---- gateway -> federate ----

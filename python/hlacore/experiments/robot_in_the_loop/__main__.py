@@ -18,6 +18,7 @@ from typing import Optional, Sequence
 
 from hlacore.federates.testbench.delays import format_table
 
+from ...monitor.__main__ import listen_address
 from ..cli import run_command
 from .experiment import ExperimentOptions, run_experiment
 
@@ -56,6 +57,9 @@ def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
                              "docs/record-replay.md")
     parser.add_argument("--replay-robot", metavar="FILE", type=pathlib.Path, default=None,
                         help="replay the Robot Federate from the recording FILE instead of running it")
+    parser.add_argument("--monitor", metavar="HOST:PORT", type=listen_address, nargs="?", const=("127.0.0.1", 8470),
+                        default=None, help="serve the live web view of the gateway during the run "
+                                           "(hlacore.monitor; default 127.0.0.1:8470)")
     parser.add_argument("--out", type=pathlib.Path, default=None,
                         help="output folder (default ./robot-experiment-<UTC time>)")
     args = parser.parse_args(argv)
@@ -73,7 +77,7 @@ def parse_args(argv: Optional[Sequence[str]] = None) -> ExperimentOptions:
                              time_scale=args.time_scale, precision=args.precision, federation=args.federation,
                              gateway_trace=args.gateway_trace, robot_rtig=args.robot_rtig,
                              robot_prefix=("ip", "netns", "exec", args.robot_netns) if args.robot_netns else (),
-                             record=args.record, replay_robot=args.replay_robot)
+                             record=args.record, replay_robot=args.replay_robot, monitor=args.monitor)
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:

@@ -61,6 +61,8 @@ class ExperimentOptions:
     record: Optional[pathlib.Path] = None
     # Replay the Robot Federate from this recording instead of running it (no robot process, no device).
     replay_robot: Optional[pathlib.Path] = None
+    # Serve the live web view of the gateway (hlacore.monitor) on this (host, port) during the run.
+    monitor: Optional[tuple[str, int]] = None
 
 
 @dataclass
@@ -121,10 +123,17 @@ def run_experiment(options: ExperimentOptions, write: Callable[[str], None] = pr
     trace = out / "gateway-trace.csv" if options.rtig is None else options.gateway_trace
     if options.replay_robot is not None:
         calibration = f"replayed from {options.replay_robot}"
-    with _gateway(options.rtig, out / "gateway-trace.csv", options.record) as address:
+    with _gateway(options.rtig, out / "gateway-trace.csv", options.record) as address, \
+            contextlib.ExitStack() as monitoring:
         write(f"gateway {address} ({'in-process' if options.rtig is None else 'rtig'}); "
               f"{calibration} robot, {mode} mode, {options.cycles} cycles; output in {out}"
               + (f"; recording {options.record}" if options.record else ""))
+        if options.monitor is not None:
+            from hlacore.monitor import Monitor
+
+            host, port = options.monitor
+            monitor = monitoring.enter_context(Monitor(address, host=host, port=port))
+            write(f"monitor: {monitor.url}")
         director = HlaDirector.join("testbench", options.federation, fom, address=address, mode="TAR",
                                     step=1.0, lookahead=options.latency, grant_timeout=options.timeout)
         testbench = Testbench(director, Scenario.load(stimulus), options.cycles, options.latency,

@@ -1,0 +1,36 @@
+#include "rti/server/event_log.hpp"
+
+#include <chrono>
+
+#include "rti/wire/json.hpp"
+
+namespace hlacore {
+
+void EventLog::add(const char* kind, const std::string& federation, std::uint32_t federate, const std::string& name,
+                   const std::string& reason) {
+    const double now = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+    events_.push_back(Event{++last_, now, kind, federation, name, reason, federate});
+    if (events_.size() > kKept) events_.pop_front();
+}
+
+void EventLog::write_after(std::uint64_t after, std::string& out) const {
+    out += ",\"events\":[";
+    bool first = true;
+    for (const Event& e : events_) {
+        if (e.sequence <= after) continue;
+        if (!first) out += ',';
+        first = false;
+        out += "{\"sequence\":" + std::to_string(e.sequence) + ",\"time\":";
+        json_number(out, e.wall_time);
+        out += ",\"kind\":\"" + std::string(e.kind) + "\",\"federation\":";
+        json_text(out, e.federation);
+        out += ",\"federate\":" + std::to_string(e.federate) + ",\"name\":";
+        json_text(out, e.name);
+        out += ",\"reason\":";
+        json_text(out, e.reason);
+        out += '}';
+    }
+    out += "],\"last_event\":" + std::to_string(last_);
+}
+
+}  // namespace hlacore

@@ -5,10 +5,14 @@ federates measures TLS, docs/networking.md)."""
 
 from __future__ import annotations
 
+import contextlib
+import json
 import os
 import pathlib
 import shlex
-from typing import Optional
+import sys
+import urllib.request
+from typing import Iterator, Optional
 
 from hlacore.processes import Child, Rtig, python_peer
 
@@ -29,3 +33,42 @@ def bench_rtig(*args: str, executable: Optional[str] = None) -> Rtig:
     """The rtig under test ($HLACORE_BENCH_RTIG, else beside Python) with `args` and $HLACORE_BENCH_RTIG_ARGS."""
     return Rtig(*shlex.split(os.environ.get("HLACORE_BENCH_RTIG_ARGS", "")), *args,
                 executable=executable or os.environ.get("HLACORE_BENCH_RTIG"))
+
+
+def cpu_seconds(pid: int) -> float:
+    """The CPU time (user + system) process `pid` has used, from /proc/PID/stat."""
+    fields = pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime, stime: fields 14 and 15
+
+
+@contextlib.contextmanager
+def watching(address: str) -> Iterator[None]:
+    """`python -m hlacore.monitor` on `address`, serving on a free port, with a WebSocket client reading every
+    view as a page would; both stopped on exit."""
+    monitor = Child([sys.executable, "-m", "hlacore.monitor", address, "--listen", "127.0.0.1:0"])
+    try:
+        line = monitor.read_line(30.0)
+        url = line.split()[1]
+        with urllib.request.urlopen(url + "view.json", timeout=10) as response:
+            json.loads(response.read())
+        page = Child([sys.executable, "-c", _PAGE, url.replace("http://", "ws://") + "ws"])
+        try:
+            assert page.read_line(30.0).strip() == "connected"
+            yield
+        finally:
+            page.close()
+    finally:
+        monitor.close()
+
+
+# A page's share of the work: reads every view the monitor pushes (aiohttp's client, a dependency already).
+_PAGE = """
+import asyncio, sys, aiohttp
+async def main():
+    async with aiohttp.ClientSession() as session:
+        async with session.ws_connect(sys.argv[1]) as ws:
+            print("connected", flush=True)
+            async for _ in ws:
+                pass
+asyncio.run(main())
+"""

@@ -3,8 +3,6 @@ round trip; and the in-process gateway against the standalone rtig for the 2-fed
 
 from __future__ import annotations
 
-import os
-import pathlib
 from typing import Optional
 
 import pytest
@@ -13,6 +11,7 @@ import hlacore
 
 from .floor import PyEcho, cpp_rtt_ns
 from .lockstep import Lockstep
+from .procs import cpu_seconds
 from .report import FEDERATES, Report
 
 # Rounds per federate count: more for the fast loops, so that each takes a few seconds at most.
@@ -32,12 +31,6 @@ def test_floor_python_rtt(measure) -> None:
 
 def test_floor_cpp_rtt(report: Report, tcp_floor: str) -> None:
     report.add("grant.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS)])
-
-
-def cpu_seconds(pid: int) -> float:
-    """The CPU time (user + system) process `pid` has used, from /proc/PID/stat."""
-    fields = pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime, stime: fields 14 and 15
 
 
 def run_lockstep(measure, address: str, federates: int, key: str, updates: bool = True, extend: bool = False,

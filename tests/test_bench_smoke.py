@@ -12,8 +12,7 @@ from bench.floor import PyEcho, PySink, cpp_rtt_ns, cpp_stream_rate
 from bench.fomgen import generate_fed
 from bench.lockstep import Lockstep
 from bench.lossy_stream import stream_through_loss
-from bench.test_grant import cpu_seconds
-from bench.test_monitor_cost import watching
+from bench.procs import cpu_seconds, watching
 from bench.outputs import results_markdown
 from bench.pingpong import PingPong
 from bench.report import Report, expected_keys, three_rtis_keys

@@ -23,7 +23,7 @@ from hlacore.status import status
 
 from conftest import ROBOT_FED, RtigProcess, rtig_executable, running_rtig, status_client, wait_for_log
 from nethosts import NetHosts, nethosts  # noqa: F401 (the fixture)
-from test_robustness import T, frame, hello, raw_client, string, u32
+from test_robustness import T, boolean, frame, hello, raw_client, string, u32, u64
 
 SECRET = "correct horse battery staple"
 
@@ -86,7 +86,7 @@ def test_a_client_that_skips_the_proof_gets_nothing(guarded: RtigProcess, secret
         sneaky.send(hello())
         code, welcome = sneaky.recv_frame()
         assert code == T["Welcome"] and len(welcome) > 32  # the challenge
-        sneaky.send(frame("QueryStatus", u32(1)), tolerate_drop=True)
+        sneaky.send(frame("QueryStatus", u32(1) + u64(0) + boolean(True)), tolerate_drop=True)
         sneaky.send(frame("DestroyFederation", u32(2) + string("TestFed") + string("")), tolerate_drop=True)
         sneaky.wait_eof()
         assert sneaky.buffer == b""

@@ -93,6 +93,7 @@ def test_killed_during_a_time_advance_request(rtig: RtigProcess, crowd_procs: li
                                if f["handle"] in doomed))  # fmt: skip
         assert conductor.advance_to(2.0, timeout=10) == 2.0  # their bound is 6: no wait
         pending = {f["handle"]: f["pending"] for f in federates_of(rtig.address) if f["handle"] in doomed}
+        assert all(pending[h].pop("waiting") >= 0 for h in doomed)  # seconds since the request
         assert pending == {h: {"request": "TAR", "time": 5.0} for h in doomed}, pending
 
         kill(crowd)

@@ -170,3 +170,15 @@ def test_status_keeps_a_log_of_joins_resigns_and_drops_with_the_reason(rtig: Rti
             ("resigned", "stayer"), ("destroyed", "")]
     finally:
         victim.close()
+
+
+def test_the_event_log_keeps_long_names_cut_and_valid(inprocess_gateway: hlacore.Gateway) -> None:
+    """Names come from clients and may be as long as a frame: the log keeps 256 bytes of them, cut between
+    characters, so that it stays bounded and its JSON valid."""
+    long_name = "é" * 5000  # 10 000 bytes of two-byte characters
+    creator = rti.RTIAmbassador(inprocess_gateway.address)
+    creator.createFederationExecution(long_name, ROBOT_FED)
+    creator.destroyFederationExecution(long_name)
+    created, destroyed = [e for e in inprocess_gateway.status()["events"] if e["kind"] in ("created", "destroyed")]
+    for event in (created, destroyed):
+        assert event["federation"] == "é" * 128 + "\u2026"

@@ -28,13 +28,20 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
     ``{"server", "address", "tls", "connections", "federations": [{"name", "fed", "objects", "sync_points",
     "federates": [{"handle", "name", "time", "lookahead", "regulating", "enabling_regulation", "constrained",
     "asynchronous_delivery", "pending": None | {"request": "TAR"|"TARA"|"NER"|"NERA"|"FQR", "time"},
-    "queued_tso", "queued_ro", "regions", "lbts", "output_bound"}]}], "datagrams": {"port" (None: no
-    datagrams), "max_datagram", "stray", "federates": [{"federation", "federate", "path", "counts": {"sent",
-    "send_failed", "oversize", "received", "lost", "reordered", "duplicates", "held_back", "early"}}]}}``
+    "queued_tso", "queued_ro", "regions", "lbts", "output_bound", "updates_sent", "interactions_sent",
+    "grants"}], "save_restore", "instances"}], "datagrams": {"port" (None: no datagrams), "max_datagram",
+    "stray", "federates": [{"federation", "federate", "path", "counts": {"sent", "send_failed", "oversize",
+    "received", "lost", "reordered", "duplicates", "held_back", "early"}}]}, "process": {"pid", "rss_bytes",
+    "cpu_seconds"}, "events": [{"sequence", "time", "kind", "federation", "federate", "name", "reason"}],
+    "last_event"}``
     ("tls": whether every connection is encrypted, docs/networking.md; "regions": how many the federate has,
     docs/ddm.md; "datagrams": best effort over UDP, docs/networking.md, sent/failed/oversize towards each
     federate and received/lost/reordered from it). On the wire infinite times are null; here they are
-    ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A gateway with a
+    ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A pending request also has
+    ``"waiting"``, the seconds since it came. "process" is the gateway's process (an in-process gateway's is
+    the program that runs it); "events" is the gateway's log of its last 256 federations "created" and
+    "destroyed" and federates "joined", "resigned" and "dropped" (with the reason), numbered up to
+    "last_event", with their Unix "time". A gateway with a
     secret asks for it here too: ``secret_file``, else ``$HLACORE_SECRET_FILE``; a gateway with TLS needs
     ``tls`` (else ``$HLACORE_TLS``) as :class:`hlacore.rti.RTIAmbassador` takes it.
     """

@@ -6,10 +6,25 @@
 
 namespace hlacore {
 
+namespace {
+
+// Names come from clients and may be as long as a frame: an event keeps their first kMaxText bytes, cut
+// before a UTF-8 continuation byte so that the text stays valid, and marked as cut.
+constexpr std::size_t kMaxText = 256;
+
+std::string clipped(const std::string& text) {
+    if (text.size() <= kMaxText) return text;
+    std::size_t end = kMaxText;
+    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+    return text.substr(0, end) + "\u2026";  // an ellipsis
+}
+
+}  // namespace
+
 void EventLog::add(const char* kind, const std::string& federation, std::uint32_t federate, const std::string& name,
                    const std::string& reason) {
     const double now = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
-    events_.push_back(Event{++last_, now, kind, federation, name, reason, federate});
+    events_.push_back(Event{++last_, now, kind, clipped(federation), clipped(name), clipped(reason), federate});
     if (events_.size() > kKept) events_.pop_front();
 }
 

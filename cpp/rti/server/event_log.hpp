@@ -1,6 +1,7 @@
 // The gateway's recent membership history for the status report: federations created and destroyed,
-// federates joined, resigned and dropped (with the reason). Bounded: the last kKept events; a reader asks for
-// those after the last sequence number it saw, so a monitor polling every half second costs a few bytes.
+// federates joined, resigned and dropped (with the reason). Bounded: the last kKept events, each name and
+// reason cut to 256 bytes; a reader asks for those after the last sequence number it saw, so a monitor
+// polling every half second costs a few bytes.
 #pragma once
 
 #include <cstdint>

@@ -4,11 +4,16 @@ goes to the writer thread, many messages per system call, in the order sent. Bot
 
 from __future__ import annotations
 
+import os
+import pathlib
+import signal
+import time
 from typing import Any
 
 import hlacore.rti as rti
+from hlacore.status import status
 
-from conftest import barrier, share_robot_location, tick_until
+from conftest import ROBOT_FED, RtigProcess, barrier, python_subprocess, share_robot_location, tick_until
 
 RUN = 5000  # messages sent without a wait in between
 DIRECT = 4  # the first messages after a wait, written by the caller (kDirectSends)
@@ -70,3 +75,43 @@ def test_a_run_then_a_resign_loses_nothing(federation: Any) -> None:
     tick_until(lambda: bool(sub.amb.named("removeObjectInstance")), sub.rtia, timeout=30)
     names = [name for name, _ in sub.amb.calls if name in ("reflectAttributeValues", "removeObjectInstance")]
     assert names == ["reflectAttributeValues"] * RUN + ["removeObjectInstance"]
+
+
+def test_ctrl_c_ends_a_wait_for_room_in_the_pending_buffer(rtig: RtigProcess, tmp_path: pathlib.Path) -> None:
+    """A federate floods a gateway that stopped reading (SIGSTOP): the kernel's buffers fill, then the writer
+    thread's 1 MiB, and the caller waits for room; SIGINT ends that wait with KeyboardInterrupt at the call."""
+    rti.RTIAmbassador(rtig.address).createFederationExecution("TestFed", ROBOT_FED)
+    go = tmp_path / "go"
+    with python_subprocess("flood_peer.py", rtig.address, str(go)) as flood:
+        assert flood.read_json(30) == {"ready": True}
+        os.kill(rtig.proc.pid, signal.SIGSTOP)
+        try:
+            go.touch()
+            time.sleep(1.0)  # long enough to fill a few MiB of buffers, short of the 5 s liveness timeout
+            os.kill(flood.pid, signal.SIGINT)
+            report = flood.read_json(10)
+        finally:
+            os.kill(rtig.proc.pid, signal.SIGCONT)
+        assert report["interrupted"] is True and report["sent"] > 1024, report  # more than 1 MiB was queued
+        assert flood.wait(10) == 0, flood.stderr()
+    assert status(rtig.address)["connections"] >= 1  # the gateway serves on
+
+
+def test_a_gateway_that_dies_during_a_run_makes_the_next_call_raise(tmp_path: pathlib.Path) -> None:
+    """The writer thread's write fails: it closes the connection, and the sender's next call raises instead of
+    queueing into a connection nobody writes any more."""
+    server = RtigProcess(tmp_path)
+    try:
+        rti.RTIAmbassador(server.address).createFederationExecution("TestFed", ROBOT_FED)
+        go = tmp_path / "go"
+        with python_subprocess("flood_peer.py", server.address, str(go)) as flood:
+            assert flood.read_json(30) == {"ready": True}
+            go.touch()
+            time.sleep(0.5)  # the run is under way
+            os.kill(server.proc.pid, signal.SIGKILL)
+            report = flood.read_json(15)
+            assert report["raised"] in ("RTIinternalError", "GatewayNotResponding"), report
+            assert report["sent"] > 1024, report
+            assert flood.wait(10) == 0, flood.stderr()
+    finally:
+        server.stop()  # killed: its status is the signal's

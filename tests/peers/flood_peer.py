@@ -14,17 +14,12 @@ import sys
 import time
 
 import hlacore.rti as rti
-from peerlib import say
+from peerlib import join_publisher, say
 
 
 def main() -> None:
     address, go = sys.argv[1], sys.argv[2]
-    rtia = rti.RTIAmbassador(address)
-    rtia.joinFederationExecution("flood", "TestFed", rti.FederateAmbassador())
-    robot = rtia.getObjectClassHandle("robot")
-    location = rtia.getAttributeHandle("location", robot)
-    rtia.publishObjectClass(robot, [location])
-    obj = rtia.registerObjectInstance(robot, "flood")
+    rtia, location, obj = join_publisher(address, "flood")
     say(ready=True)
     deadline = time.monotonic() + 30
     while not os.path.exists(go):

@@ -8,17 +8,12 @@ import sys
 import time
 
 import hlacore.rti as rti
-from peerlib import say
+from peerlib import join_publisher, say
 
 
 def main() -> None:
     address, count, mib = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
-    rtia = rti.RTIAmbassador(address)
-    rtia.joinFederationExecution("camera", "TestFed", rti.FederateAmbassador())
-    robot = rtia.getObjectClassHandle("robot")
-    location = rtia.getAttributeHandle("location", robot)
-    rtia.publishObjectClass(robot, [location])
-    obj = rtia.registerObjectInstance(robot, "camera")
+    rtia, location, obj = join_publisher(address, "camera")
     started = time.monotonic()
     slowest = 0.0
     for k in range(count):

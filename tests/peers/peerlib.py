@@ -8,8 +8,8 @@ from __future__ import annotations
 import hlacore.rti as rti
 from hlacore.processes import SyncAmbassador, linger, round_trip, say, serve, synchronize, tick_until
 
-__all__ = ["PeerAmbassador", "SavingAmbassador", "enable_time", "join_lockstep", "linger", "round_trip", "say",
-           "serve", "synchronize", "tick_until"]
+__all__ = ["PeerAmbassador", "SavingAmbassador", "enable_time", "join_lockstep", "join_publisher", "linger",
+           "round_trip", "say", "serve", "synchronize", "tick_until"]
 
 
 class PeerAmbassador(SyncAmbassador):
@@ -52,6 +52,17 @@ class SavingAmbassador(rti.FederateAmbassador):
 def enable_time(rtia: rti.RTIAmbassador, amb: PeerAmbassador, lookahead: float = 1.0) -> None:
     """Regulating (from time 0, `lookahead`) and constrained, waiting for both callbacks."""
     rtia.enable_time_management(lookahead, timeout=30.0)
+
+
+def join_publisher(address: str, name: str):
+    """Join TestFed as `name`, publish robot.location and register a robot named `name` (no time management).
+    Returns (rtia, location attribute, object)."""
+    rtia = rti.RTIAmbassador(address)
+    rtia.joinFederationExecution(name, "TestFed", rti.FederateAmbassador())
+    robot = rtia.getObjectClassHandle("robot")
+    location = rtia.getAttributeHandle("location", robot)
+    rtia.publishObjectClass(robot, [location])
+    return rtia, location, rtia.registerObjectInstance(robot, name)
 
 
 def join_lockstep(address: str, name: str, amb: PeerAmbassador, timeout: float = 60.0):

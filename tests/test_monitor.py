@@ -24,6 +24,7 @@ from hlacore.monitor import Monitor
 from hlacore.monitor.state import MonitorState, holding_back
 
 from conftest import ROBOT_FED, RtigProcess, python_subprocess
+from test_auth import secret_file
 
 
 def federate(handle: int, time_: float, *, lookahead: float = 1.0, pending: Optional[dict[str, float | str]] = None,
@@ -157,6 +158,21 @@ def test_a_gateway_that_is_not_there_is_shown_as_unreachable() -> None:
     with Monitor(f"127.0.0.1:{port}", port=0, interval=0.1) as monitor:
         view = wait_for(lambda: fetch_json(monitor.url + "view.json"), 10, "a view")
         assert view["connected"] is False and "cannot connect" in view["error"]
+
+
+def test_a_gateway_with_a_secret_is_watched_only_with_the_secret(tmp_path: pathlib.Path) -> None:
+    """The monitor is a client like any other: without the gateway's secret it shows the refusal, with it
+    (Gateway.monitor() passes the gateway's own) the federation."""
+    secret = secret_file(tmp_path, "correct horse battery staple")
+    with hlacore.Gateway(port=0, secret_file=secret) as gateway:
+        rti.RTIAmbassador(gateway.address, secret_file=secret).createFederationExecution("TestFed", ROBOT_FED)
+        with Monitor(gateway.address, port=0, interval=0.1, secret_file="") as outsider:
+            view = wait_for(lambda: fetch_json(outsider.url + "view.json"), 10, "a view")
+            assert view["connected"] is False and "secret" in view["error"].lower(), view
+        with gateway.monitor(interval=0.1) as insider:
+            view = wait_for(lambda: fetch_json(insider.url + "view.json").get("federations"), 10, "a view")
+            assert [f["name"] for f in view] == ["TestFed"]
+        rti.RTIAmbassador(gateway.address, secret_file=secret).destroyFederationExecution("TestFed")
 
 
 # ---- the page in headless chromium ----

@@ -41,14 +41,14 @@ def run_lockstep(measure, address: str, federates: int, key: str, updates: bool 
     federation = Lockstep(address, federates, max_steps=rounds + rounds // 10 + 10,  # warm-up, stop, margin
                           updates=updates)
     try:
-        pids = [peer.pid for peer in federation.peers]
-        before = ([cpu_seconds(cpu[1])], [cpu_seconds(pid) for pid in pids], federation.time) if cpu else None
+        pids = [cpu[1], *(peer.pid for peer in federation.peers)] if cpu else []  # the rtig's first
+        spent, steps = [cpu_seconds(pid) for pid in pids], federation.time
         measure(key, federation.step, rounds, extend=extend)
-        if cpu and before:
-            steps = federation.time - before[2]
-            cpu[0].add(f"cpu.{federates}.rtig", [(cpu_seconds(cpu[1]) - before[0][0]) / steps])
-            cpu[0].add(f"cpu.{federates}.federate", [(cpu_seconds(pid) - was) / steps
-                                                     for pid, was in zip(pids, before[1])])
+        if cpu:
+            steps = federation.time - steps
+            per_step = [(cpu_seconds(pid) - before) / steps for pid, before in zip(pids, spent)]
+            cpu[0].add(f"cpu.{federates}.rtig", per_step[:1])
+            cpu[0].add(f"cpu.{federates}.federate", per_step[1:])
         federation.finish()
     finally:
         federation.close()

@@ -87,14 +87,14 @@ void Federation::on(FederateHandle from, const wire::DisableTimeConstrained&) {
 }
 
 void Federation::on(FederateHandle from, const wire::TimeAdvance& m) {
-    federate(from);
+    FederateState& f = federate(from);
     if (m.kind < 1 || m.kind > 5 || !std::isfinite(m.time)) throw WireError("invalid time advance request (kind 1-5, a finite time)");
     if (m.time < time_.federate_time(from)) throw WireError("time advance request into the past");
     // HLA 1.3 §8.2: refused by the client too (EnableTimeRegulationPending).
     if (time_.enabling_regulation(from))
         throw WireError("time advance request while a regulation enable is pending");
     time_.request(from, static_cast<AdvanceKind>(m.kind), m.time);
-    federate(from).requested_at = std::chrono::steady_clock::now();
+    f.requested_at = std::chrono::steady_clock::now();
     release_time();
 }
 

@@ -81,9 +81,10 @@ def cpp_rtt_ns(binary: str, size: int, count: int) -> list[int]:
     return samples
 
 
-def cpp_stream_rate(binary: str, count: int, record: int = RECORD) -> float:
-    """Messages per second of `count` sends of `record` bytes, timed by the C++ program until all were read."""
-    out = subprocess.run([binary, "stream", str(record), str(count)], check=True, capture_output=True,
+def cpp_stream_rate(binary: str, count: int, record: int = RECORD, mode: str = "stream") -> float:
+    """Messages per second of `count` sends of `record` bytes, timed by the C++ program until all were read;
+    mode "relay": through a third process that forwards them (tcp_floor.cpp)."""
+    out = subprocess.run([binary, mode, str(record), str(count)], check=True, capture_output=True,
                          text=True, timeout=120).stdout
     result = json.loads(out)
     return float(result["count"] / result["seconds"])

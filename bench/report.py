@@ -11,6 +11,7 @@ messages per second (rates), keyed as the bench tests record them:
     throughput.N                            updates per second delivered to each of N subscribers
     large.S, large.floor.py.S / .cpp.S      bytes per second of S-byte updates 1 → 1 (S = 1 MiB, 16 MiB); of a raw
                                             TCP stream of S-byte records, one send each
+    large.floor.relay.S                     of the C++ stream through a process that forwards it
     cpu.32.rtig, cpu.32.federate            CPU seconds per step of the 32-federate lockstep (grant.rtig.32): the
                                             rtig's, and each peer federate process's
     fom.flat, fom.tree, fom.tree.python     parse times of the generated 1000-class FOM
@@ -233,12 +234,17 @@ class Report:
         if key is None:
             if py is None and cpp is None:
                 return None
-            return Row(f"raw TCP stream of {size >> 20} MiB records (Python / C++)", f"{_mbps(py)} / {_mbps(cpp)}",
-                       "", "", _python_vs_cpp(self._ratio(f"large.floor.py.{size}", f"large.floor.cpp.{size}")), "")
+            relay = self.median(f"large.floor.relay.{size}")
+            return Row(f"raw TCP stream of {size >> 20} MiB records (Python / C++; C++ through a relay)",
+                       f"{_mbps(py)} / {_mbps(cpp)}; {_mbps(relay)}", "", "",
+                       _python_vs_cpp(self._ratio(f"large.floor.py.{size}", f"large.floor.cpp.{size}")), "")
         rate = self.median(key)
         if rate is None:
             return None
         target = f"≥ 50 % of the C++ floor: {'met' if cpp and rate >= cpp / 2 else 'missed'}" if cpp else ""
+        relay_ratio = self._ratio(key, f"large.floor.relay.{size}")
+        if relay_ratio != "–":
+            target += f" ({relay_ratio} of the relay)"
         return Row(f"{size >> 20} MiB updates", _mbps(rate), f"slowest round {_mbps(min(self.samples[key]))}",
                    self._ratio(key, f"large.floor.py.{size}"), self._ratio(key, f"large.floor.cpp.{size}"), target)
 
@@ -348,7 +354,7 @@ def expected_keys() -> list[str]:
     keys += [f"besteffort.{path}.loss1{part}" for path in ("udp", "tcp") for part in ("", ".delivered")]
     keys += [f"record.{figure}.{side}" for figure in ("grant.2", "throughput.1") for side in ("off", "on")]
     keys += [f"monitor.grant.2.{side}" for side in ("off", "on")]
-    keys += [f"large.{kind}{size}" for size in LARGE_SIZES for kind in ("", "floor.py.", "floor.cpp.")]
+    keys += [f"large.{kind}{size}" for size in LARGE_SIZES for kind in ("", "floor.py.", "floor.cpp.", "floor.relay.")]
     keys += ["cpu.32.rtig", "cpu.32.federate"]
     return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
 

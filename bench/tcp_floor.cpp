@@ -5,6 +5,9 @@
 //                                  {"rtt_ns": [each round trip in ns, in order]}
 //   tcp_floor stream RECORD COUNT  COUNT records of RECORD bytes, one send() each, until the child has
 //                                  counted them all and answered one byte: {"seconds": s, "count": COUNT}
+//   tcp_floor relay RECORD COUNT   the same through a third process that forwards every byte as it comes
+//                                  (recv into one buffer, send it on): the floor of any design that routes
+//                                  through a server, three processes and four copies in the kernel
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
@@ -12,6 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -60,12 +64,58 @@ void write_all(int fd, const char* p, std::size_t n) {
     }
 }
 
-// The child: accept one connection, then echo SIZE-byte messages or count RECORD-byte records.
-void child(int listener, bool stream, std::size_t size, long count) {
+int listen_loopback(sockaddr_in& addr) {
+    int listener = socket(AF_INET, SOCK_STREAM, 0);
+    addr = sockaddr_in{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t len = sizeof addr;
+    if (bind(listener, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 || listen(listener, 1) != 0 ||
+        getsockname(listener, reinterpret_cast<sockaddr*>(&addr), &len) != 0)
+        die("listen");
+    return listener;
+}
+
+int connect_to(const sockaddr_in& addr) {
+    int fd = socket(AF_INET, SOCK_STREAM, 0);
+    if (connect(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) die("connect");
+    nodelay(fd);
+    return fd;
+}
+
+int accept_one(int listener) {
     int fd = accept(listener, nullptr, nullptr);
     if (fd < 0) die("accept");
     close(listener);
     nodelay(fd);
+    return fd;
+}
+
+// The relay: forwards `total` bytes from the parent to the sink, then the sink's answer back, then waits for
+// the parent's EOF.
+[[noreturn]] void relay(int listener, const sockaddr_in& sink, std::size_t total) {
+    int from = accept_one(listener);
+    int to = connect_to(sink);
+    std::vector<char> buf(1 << 20);
+    for (std::size_t moved = 0; moved < total;) {
+        ssize_t r = recv(from, buf.data(), std::min(buf.size(), total - moved), 0);
+        if (r < 0 && errno == EINTR) continue;
+        if (r <= 0) die("relay recv");
+        write_all(to, buf.data(), static_cast<std::size_t>(r));
+        moved += static_cast<std::size_t>(r);
+    }
+    char ack;
+    if (!read_exact(to, &ack, 1)) die("relay: sink closed");
+    write_all(from, &ack, 1);
+    read_exact(from, &ack, 1);  // EOF from the parent
+    close(to);
+    close(from);
+    std::exit(0);
+}
+
+// The child: accept one connection, then echo SIZE-byte messages or count RECORD-byte records.
+[[noreturn]] void child(int listener, bool stream, std::size_t size, long count) {
+    int fd = accept_one(listener);
     std::vector<char> buf(stream ? 1 << 20 : size);
     if (!stream) {
         while (read_exact(fd, buf.data(), size)) write_all(fd, buf.data(), size);
@@ -87,31 +137,35 @@ void child(int listener, bool stream, std::size_t size, long count) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::fprintf(stderr, "usage: tcp_floor rtt SIZE COUNT | tcp_floor stream RECORD COUNT\n");
+    const std::string mode = argc == 4 ? argv[1] : "";
+    if (mode != "rtt" && mode != "stream" && mode != "relay") {
+        std::fprintf(stderr, "usage: tcp_floor rtt SIZE COUNT | tcp_floor stream|relay RECORD COUNT\n");
         return 2;
     }
-    const bool stream = std::string(argv[1]) == "stream";
+    const bool stream = mode != "rtt";
     const std::size_t size = std::strtoul(argv[2], nullptr, 10);
     const long count = std::strtol(argv[3], nullptr, 10);
     if (size == 0 || count <= 0) return 2;
 
-    int listener = socket(AF_INET, SOCK_STREAM, 0);
     sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t len = sizeof addr;
-    if (bind(listener, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 || listen(listener, 1) != 0 ||
-        getsockname(listener, reinterpret_cast<sockaddr*>(&addr), &len) != 0)
-        die("listen");
+    int listener = listen_loopback(addr);
+    std::vector<pid_t> children;
     pid_t pid = fork();
     if (pid < 0) die("fork");
     if (pid == 0) child(listener, stream, size, count);
     close(listener);
+    children.push_back(pid);
+    if (mode == "relay") {
+        const sockaddr_in sink = addr;
+        listener = listen_loopback(addr);
+        pid = fork();
+        if (pid < 0) die("fork");
+        if (pid == 0) relay(listener, sink, size * static_cast<std::size_t>(count));
+        close(listener);
+        children.push_back(pid);
+    }
 
-    int fd = socket(AF_INET, SOCK_STREAM, 0);
-    if (connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) die("connect");
-    nodelay(fd);
+    int fd = connect_to(addr);
     std::vector<char> buf(size, 'x');
     std::string out;
     if (!stream) {
@@ -136,10 +190,12 @@ int main(int argc, char** argv) {
         out = "{\"seconds\": " + std::to_string(seconds) + ", \"count\": " + std::to_string(count) + "}";
     }
     close(fd);
-    int status = 0;
-    if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        std::fprintf(stderr, "tcp_floor: child failed\n");
-        return 1;
+    for (pid_t child_pid : children) {
+        int status = 0;
+        if (waitpid(child_pid, &status, 0) != child_pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+            std::fprintf(stderr, "tcp_floor: child failed\n");
+            return 1;
+        }
     }
     std::puts(out.c_str());
     return 0;

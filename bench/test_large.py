@@ -1,6 +1,7 @@
 """Large updates (issue 20): camera-frame and point-cloud sizes, 1 MiB and 16 MiB, sent 1 → 1 through one
 rtig as fast as the receiver takes them, every one counted; against a raw TCP stream of the same sizes (C++
-and Python, one send() per record). Figures in bytes per second."""
+and Python, one send() per record), and the same C++ stream through a relay process (what any design that
+routes through a server cannot beat). Figures in bytes per second."""
 
 from __future__ import annotations
 
@@ -28,6 +29,12 @@ def test_floor_python_stream(measure, size: int) -> None:
 @pytest.mark.parametrize("size", LARGE_SIZES)
 def test_floor_cpp_stream(report: Report, tcp_floor: str, size: int) -> None:
     report.add(f"large.floor.cpp.{size}", [cpp_stream_rate(tcp_floor, BURST[size], size) * size for _ in range(ROUNDS)])
+
+
+@pytest.mark.parametrize("size", LARGE_SIZES)
+def test_floor_cpp_relay(report: Report, tcp_floor: str, size: int) -> None:
+    report.add(f"large.floor.relay.{size}",
+               [cpp_stream_rate(tcp_floor, BURST[size], size, mode="relay") * size for _ in range(ROUNDS)])
 
 
 @pytest.mark.parametrize("size", LARGE_SIZES)

@@ -49,6 +49,7 @@ def test_cpp_floor_program() -> None:
     samples = cpp_rtt_ns(binary, 64, 5)
     assert len(samples) == 5 and all(ns > 0 for ns in samples)
     assert cpp_stream_rate(binary, 100) > 0
+    assert cpp_stream_rate(binary, 100, 4096, mode="relay") > 0
 
 
 @pytest.mark.parametrize("federates", [2, 3])
@@ -145,7 +146,7 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     assert "200.0 k/s (1600.0 k/s in all)" in text
     assert "≥ 200 000/s: met" in text and text.count("< 20 ms: met") == 2
     assert "| lockstep of 2 federates with updates: without / with hlacore.monitor | 200.0 µs / 200.0 µs |" in text
-    assert "| 16 MiB updates | 0 MB/s | slowest round 0 MB/s | 1.00× | 1.00× | ≥ 50 % of the C++ floor: met |" in text
+    assert "| 16 MiB updates | 0 MB/s | slowest round 0 MB/s | 1.00× | 1.00× | ≥ 50 % of the C++ floor: met (1.00× of the relay) |" in text
     assert "| rtig / each Python federate | 200.0 µs / 200.0 µs |" in text
 
 

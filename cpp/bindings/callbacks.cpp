@@ -145,11 +145,13 @@ int dispatch(Client& c, const py::object& ambassador, bool stop_after_grant, dou
         if (!m) break;
         ++delivered;
         py::tuple callback = to_callback(*m);
+        const bool granted = std::holds_alternative<wire::TimeAdvanceGrant>(*m);
+        c.recycle(std::move(*m));  // its values are Python's copies now
         if (!ambassador.is_none()) {
             py::object method = py::getattr(ambassador, callback[0], py::none());
             if (!method.is_none()) method(*callback[1]);
         }
-        if (stop_after_grant && std::holds_alternative<wire::TimeAdvanceGrant>(*m)) break;
+        if (stop_after_grant && granted) break;
         if (max_seconds >= 0 && Client::Clock::now() >= deadline) break;
     }
     return delivered;

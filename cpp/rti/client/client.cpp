@@ -33,7 +33,7 @@ std::string seconds(std::chrono::steady_clock::duration d) {
 
 // Whether the first bytes from a gateway are a TLS record (a handshake or an alert): what a gateway with TLS
 // answers a client without it. No hlacore frame starts so before the Welcome.
-bool looks_like_tls(const std::string& bytes) {
+bool looks_like_tls(std::string_view bytes) {
     return bytes.size() >= 2 && (bytes[0] == 0x16 || bytes[0] == 0x15) && bytes[1] == 0x03;
 }
 
@@ -657,7 +657,6 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
     if (n == 0) return WaitStatus::Timeout;
     if (datagram_path_ && p[1].revents) read_datagrams(got.datagrams);
     if (!p[0].revents) return WaitStatus::Ready;
-    char chunk[65536];
     std::string reason;
     ErrorCode code = ErrorCode::RTIinternalError;
     const bool first_bytes = heard_bytes_ == 0;
@@ -666,20 +665,22 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
             // SSL_read while the session holds bytes (SSL_has_pending), until it wants more from the socket:
             // what it may keep then is the start of a record whose rest is still to come, which poll() (and
             // hlacore.aio's add_reader on fileno()) will see.
-            const long r = tls_read(chunk, sizeof chunk, reason);
+            const std::size_t want = in_.wanted(max_frame_bytes_);
+            const long r = tls_read(in_.room(want), want, reason);
             if (r <= 0) break;
             last_heard_ = Clock::now();
             heard_bytes_ += static_cast<std::uint64_t>(r);
-            in_.append(chunk, static_cast<std::size_t>(r));
-            if (static_cast<std::size_t>(r) < sizeof chunk && !tls_pending()) break;
+            in_.commit(static_cast<std::size_t>(r));
+            if (static_cast<std::size_t>(r) < want && !tls_pending()) break;
             continue;
         }
-        ssize_t r = ::recv(fd_, chunk, sizeof chunk, MSG_DONTWAIT);
+        const std::size_t want = in_.wanted(max_frame_bytes_);
+        ssize_t r = ::recv(fd_, in_.room(want), want, MSG_DONTWAIT);
         if (r > 0) {
             last_heard_ = Clock::now();
             heard_bytes_ += static_cast<std::uint64_t>(r);
-            in_.append(chunk, static_cast<std::size_t>(r));
-            if (static_cast<std::size_t>(r) < sizeof chunk) break;
+            in_.commit(static_cast<std::size_t>(r));
+            if (static_cast<std::size_t>(r) < want) break;
             continue;
         }
         if (r < 0 && errno == EINTR) continue;
@@ -688,7 +689,7 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
         break;
     }
     if (!ssl_ && first_bytes) {  // a client without TLS at a gateway with it
-        if (looks_like_tls(in_)) {
+        if (looks_like_tls(in_.unread())) {
             reason = "it answered with TLS: give RTIAmbassador(tls=...) or $HLACORE_TLS for a gateway with TLS "
                      "(rtig --tls-cert; docs/networking.md)";
             code = ErrorCode::AuthenticationFailed;
@@ -698,17 +699,15 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
                       "RTIAmbassador(tls=...) or $HLACORE_TLS for a gateway with TLS (rtig --tls-cert; docs/networking.md)";
         }
     }
-    std::size_t offset = 0;
     try {
         wire::Frame frame;
-        while (std::size_t used = wire::next_frame(std::string_view(in_).substr(offset), frame, max_frame_bytes_)) {
-            got.stream.push_back(wire::decode(frame));
-            offset += used;
+        while (std::size_t used = wire::next_frame(in_.unread(), frame, max_frame_bytes_)) {
+            got.stream.push_back(wire::decode(frame, &spare_values_));
+            in_.consume(used);
         }
     } catch (const wire::WireError& e) {
         reason = std::string("protocol error from the gateway: ") + e.what();
     }
-    in_.erase(0, offset);
     if (!reason.empty()) close_connection(code, reason);
     return WaitStatus::Ready;
 }

@@ -11,6 +11,7 @@
 
 #include "rti/server/gateway.hpp"
 #include "rti/wire/datagram.hpp"
+#include "rti/wire/read_buffer.hpp"
 
 namespace hlacore {
 
@@ -25,8 +26,7 @@ struct Gateway::Connection {
     tls::Session ssl;
     bool read_wants_write = false;
     bool write_wants_read = false;
-    std::string in;
-    std::size_t in_offset = 0;
+    wire::ReadBuffer in;
     std::string out;
     std::size_t out_offset = 0;
     // Released held messages waiting to enter `out` as the client takes what is there (at most kPacedBytes

@@ -34,8 +34,9 @@ namespace hlacore {
 
 using Clock = std::chrono::steady_clock;
 
-// Connection buffers above this capacity are released once empty.
+// Connection buffers above this capacity are released once empty (but see keeping_large_buffers()).
 constexpr std::size_t kKeptBufferBytes = 1u << 20;
+constexpr std::chrono::seconds kLargeFrameGrace{1};
 // Released frames beyond this go through a connection's backlog rather than straight into its buffer.
 constexpr std::size_t kPacedBytes = 256u << 10;
 
@@ -260,12 +261,13 @@ void Gateway::run() {
         bool partial_pending = false;  // or a connection that has not said Hello yet
         bool writes_pending = false;   // a client whose socket takes no more for now
         for (const auto& [fd, c] : connections_) {
-            partial_pending |= c->in.size() > c->in_offset || !c->greeted;
+            partial_pending |= !c->in.empty() || !c->greeted;
             writes_pending |= c->write_armed;
         }
         const bool recording_pending = recorder_ && recorder_->pending();  // written out within half a second
         const auto& events =
-            loop_.wait(partial_pending || writes_pending || !paused_.empty() || recording_pending ? 250 : -1);
+            loop_.wait(partial_pending || writes_pending || !paused_.empty() || recording_pending || large_buffers_kept_
+                           ? 250 : -1);
         for (const epoll_event& ev : events) {
             const int fd = ev.data.fd;
             if (fd == wake_fd_) {
@@ -295,6 +297,7 @@ void Gateway::run() {
         if (!paused_.empty()) service_paused();
         if (partial_pending) drop_stale_partials();
         if (writes_pending) drop_stalled_readers();
+        if (large_buffers_kept_ && !keeping_large_buffers()) release_large_buffers();
         if (trace_) trace_->flush();
         if (recorder_) {
             recorder_->tick();
@@ -363,9 +366,8 @@ void Gateway::accept_all() {
 }
 
 namespace {
-constexpr std::size_t kReadChunk = 65536;
 // Bounded per turn so that one busy peer cannot starve the others.
-constexpr std::size_t kReadBudget = 16 * kReadChunk;
+constexpr std::size_t kReadBudget = 16 * wire::ReadBuffer::kChunk;
 
 // Whether `bytes` begin like a TLS record (a handshake or an alert, TLS 1.x): what a TLS client sends first.
 // No hlacore Hello starts so: its length field is small.
@@ -375,14 +377,14 @@ bool looks_like_tls(std::string_view bytes) {
 }  // namespace
 
 std::string Gateway::read_plain(Connection& c, std::size_t budget, bool& peer_closed) {
-    char chunk[kReadChunk];
     for (std::size_t got = 0; got < budget;) {
-        const ssize_t n = ::recv(c.fd, chunk, sizeof chunk, 0);
+        const std::size_t want = c.in.wanted(options_.max_frame_bytes);
+        const ssize_t n = ::recv(c.fd, c.in.room(want), want, 0);
         if (n > 0) {
-            if (c.in.size() == c.in_offset) c.partial_since = Clock::now();
-            c.in.append(chunk, static_cast<std::size_t>(n));
+            if (c.in.empty()) c.partial_since = Clock::now();
+            c.in.commit(static_cast<std::size_t>(n));
             got += static_cast<std::size_t>(n);
-            if (static_cast<std::size_t>(n) < sizeof chunk) break;
+            if (static_cast<std::size_t>(n) < want) break;
             continue;
         }
         if (n == 0) {
@@ -393,7 +395,7 @@ std::string Gateway::read_plain(Connection& c, std::size_t budget, bool& peer_cl
         if (errno == EAGAIN || errno == EWOULDBLOCK) break;
         return std::string("read failed: ") + std::strerror(errno);
     }
-    if (!c.greeted && looks_like_tls(std::string_view(c.in).substr(c.in_offset)))
+    if (!c.greeted && looks_like_tls(c.in.unread()))
         return "it began a TLS handshake and this gateway has no TLS (rtig --tls-cert FILE --tls-key FILE)";
     return "";
 }
@@ -403,18 +405,18 @@ std::string Gateway::read_plain(Connection& c, std::size_t budget, bool& peer_cl
 // start of a record whose rest is still to come, which epoll will report.
 std::string Gateway::read_tls(Connection& c, std::size_t budget, bool& peer_closed) {
     SSL* ssl = c.ssl.get();
-    char chunk[kReadChunk];
     const bool waited_for_write = c.read_wants_write, write_waited = c.write_wants_read;
     c.read_wants_write = false;
     for (std::size_t got = 0; got < budget || SSL_has_pending(ssl);) {
         ERR_clear_error();
         errno = 0;
-        const int n = SSL_read(ssl, chunk, static_cast<int>(sizeof chunk));
+        const std::size_t want = std::min<std::size_t>(c.in.wanted(options_.max_frame_bytes), INT_MAX);
+        const int n = SSL_read(ssl, c.in.room(want), static_cast<int>(want));
         if (n > 0) {
-            if (c.in.size() == c.in_offset) c.partial_since = Clock::now();
-            c.in.append(chunk, static_cast<std::size_t>(n));
+            if (c.in.empty()) c.partial_since = Clock::now();
+            c.in.commit(static_cast<std::size_t>(n));
             got += static_cast<std::size_t>(n);
-            if (!SSL_has_pending(ssl) && static_cast<std::size_t>(n) < sizeof chunk) break;
+            if (!SSL_has_pending(ssl) && static_cast<std::size_t>(n) < want) break;
             continue;
         }
         const bool handshaking = !SSL_is_init_finished(ssl);
@@ -436,6 +438,7 @@ std::string Gateway::read_tls(Connection& c, std::size_t budget, bool& peer_clos
                 // What the client sent besides is read and dropped, so that closing sends a FIN rather than a
                 // reset that could overtake an alert: a client without TLS sees the connection closed (or
                 // reads the alert, when OpenSSL sent one) and says what to do.
+                char chunk[4096];
                 for (int i = 0; i < 4 && ::recv(c.fd, chunk, sizeof chunk, MSG_DONTWAIT) > 0; ++i) {
                 }
                 // An alert from the client (OpenSSL's reasons from SSL_AD_REASON_OFFSET on): it refused the
@@ -467,7 +470,7 @@ void Gateway::on_readable(Connection& c) {
     serve_frames(c);
     if (!connections_.count(fd)) return;
     if (peer_closed) {
-        const std::size_t left = c.in.size() - c.in_offset;
+        const std::size_t left = c.in.unread().size();
         close(fd, left ? "connection closed in the middle of a frame (" + std::to_string(left) + " bytes pending)"
                        : "connection closed by peer");
     }
@@ -478,13 +481,18 @@ void Gateway::serve_frames(Connection& c) {
     try {
         wire::Frame frame;
         while (!c.paused) {
-            const std::size_t used = wire::next_frame(std::string_view(c.in).substr(c.in_offset), frame, options_.max_frame_bytes);
+            const std::size_t used = wire::next_frame(c.in.unread(), frame, options_.max_frame_bytes);
             if (!used) break;
-            c.in_offset += used;
+            // The frame stays where it is until the next read: consumed now, served from there.
+            c.in.consume(used);
+            if (used > kKeptBufferBytes) {
+                large_frame_at_ = Clock::now();
+                large_buffers_kept_ = true;
+            }
             over_budget_ = -1;
             on_frame(c, frame);
             if (!connections_.count(fd)) return;
-            if (c.in_offset < c.in.size()) c.partial_since = Clock::now();
+            if (!c.in.empty()) c.partial_since = Clock::now();
             pause_if_over_budget(c);
             if (!connections_.count(fd)) return;
         }
@@ -492,15 +500,29 @@ void Gateway::serve_frames(Connection& c) {
         close(fd, std::string("protocol error: ") + e.what());
         return;
     }
-    const std::size_t left = c.in.size() - c.in_offset;
-    if (left == 0) {
-        if (c.in.capacity() > kKeptBufferBytes) std::string().swap(c.in);  // after a large frame
-        c.in.clear();
-        c.in_offset = 0;
-    } else if (c.in_offset > c.in.size() / 2) {
-        c.in.erase(0, c.in_offset);
-        c.in_offset = 0;
+    if (!keeping_large_buffers()) c.in.release_above(kKeptBufferBytes);
+}
+
+bool Gateway::keeping_large_buffers() const {
+    return large_buffers_kept_ && Clock::now() - large_frame_at_ < kLargeFrameGrace;
+}
+
+void Gateway::release_large_buffers() {
+    bool in_use = false;  // a large buffer not empty yet: tried again on the next turn of the loop
+    for (auto& [fd, c] : connections_) {
+        c->in.release_above(kKeptBufferBytes);
+        if (c->out_offset == c->out.size() && c->out.capacity() > kKeptBufferBytes) {
+            std::string().swap(c->out);
+            c->out_offset = 0;
+        }
+        in_use |= c->in.capacity() > kKeptBufferBytes || c->out.capacity() > kKeptBufferBytes;
     }
+    large_buffers_kept_ = in_use;
+#if defined(__GLIBC__)
+    // Once per burst of large frames, when all is given back: the decoded values were freed below the top of
+    // the heap, where glibc keeps up to twice the largest for reuse (tests/test_large_values.py measures it).
+    if (!in_use) malloc_trim(0);
+#endif
 }
 
 void Gateway::pause_if_over_budget(Connection& producer) {
@@ -767,7 +789,7 @@ void write_process_status(std::string& json) {
                        static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
     long long resident_pages = 0;  // now, not the peak that ru_maxrss gives
     if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
-        if (std::fscanf(statm, "%*lld %lld", &resident_pages) != 1) resident_pages = 0;
+        if (std::fscanf(statm, "%*s %lld", &resident_pages) != 1) resident_pages = 0;
         std::fclose(statm);
     }
     json += ",\"process\":{\"pid\":" + std::to_string(::getpid()) + ",\"rss_bytes\":" +
@@ -983,7 +1005,7 @@ void Gateway::flush(Connection& c) {
     const std::size_t queued = c.out.size() - c.out_offset;
     if (queued == 0) {
         // A queue that once grew large gives its buffer back rather than keeping it for the connection's life.
-        if (c.out.capacity() > kKeptBufferBytes) std::string().swap(c.out);
+        if (c.out.capacity() > kKeptBufferBytes && !keeping_large_buffers()) std::string().swap(c.out);
         c.out.clear();
         c.out_offset = 0;
         c.traced = 0;
@@ -1073,7 +1095,7 @@ void Gateway::drop_stale_partials() {
     std::vector<std::pair<int, const char*>> stale;
     for (const auto& [fd, c] : connections_) {
         // A paused connection's unread frames wait for the gateway, not for the client.
-        if (!c->paused && c->in.size() > c->in_offset && now - c->partial_since > limit)
+        if (!c->paused && !c->in.empty() && now - c->partial_since > limit)
             stale.emplace_back(fd, "incomplete frame for too long");
         else if (!c->greeted && now - c->accepted_at > limit)  // connected, and silent since
             stale.emplace_back(fd, c->ssl && !SSL_is_init_finished(c->ssl.get())

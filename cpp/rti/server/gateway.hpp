@@ -140,6 +140,11 @@ private:
     void move_backlog(Connection& c);
     void flush_dirty();
     void drop_stale_partials();
+    // Connection buffers that grew past kKeptBufferBytes are given back once empty, unless frames that large
+    // went through within kLargeFrameGrace: the next camera frame then reuses them (fresh pages cost more
+    // than the copy). Once the large frames stop, the next turn of the loop gives them all back.
+    bool keeping_large_buffers() const;
+    void release_large_buffers();
     void mark_dirty(Connection& c);
     // Flow control: what the gateway holds for c, c stops being read while `consumer` is over its budget,
     // and each turn of the loop resumes, keeps alive or drops what waits.
@@ -178,6 +183,8 @@ private:
     std::vector<int> dirty_;
     std::vector<int> paused_;
     int over_budget_ = -1;  // a client found over its budget while the current frame was served
+    std::chrono::steady_clock::time_point large_frame_at_{};  // when the last frame above kKeptBufferBytes came
+    bool large_buffers_kept_ = false;  // since then, buffers above it may be kept for the next one
     std::unique_ptr<MessageTrace> trace_;
     std::unique_ptr<Recorder> recorder_;
     EventLog events_;  // joins, resigns and drops, for the status report

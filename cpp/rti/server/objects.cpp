@@ -82,17 +82,17 @@ namespace {
 // that it holds what flow control counts and the heap is not left with the holes of a growing string.
 template <class M>
 std::string held_frame(const M& message) {
-    thread_local std::string scratch;  // in-process gateways may run on several threads
-    scratch.clear();
-    wire::encode(scratch, message);
-    return scratch;
+    std::string frame;
+    frame.reserve(4 + wire::frame_length(message));
+    wire::encode(frame, message);
+    return frame;
 }
 }  // namespace
 
 template <class M>
 void Federation::deliver_receive_order(FederateHandle to, const M& message) {
     if (!time_.holds_receive_order(to)) {
-        if constexpr (std::is_same_v<M, wire::ReflectAttributes> || std::is_same_v<M, wire::ReceiveInteraction>) {
+        if constexpr (M::kType == wire::MessageType::ReflectAttributes || M::kType == wire::MessageType::ReceiveInteraction) {
             if (message.transport == static_cast<std::uint8_t>(fom::Transport::BestEffort) &&
                 outbox_.send_best_effort(to, message))
                 return;
@@ -159,7 +159,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
         return it != obj.transport.end() ? it->second : cls.attribute(attr)->transport;
     };
     // out[tso][transport - 1]: one reflection per order and transport actually used.
-    wire::ReflectAttributes out[2][2];
+    wire::ForwardedReflection out[2][2];
     for (int tso = 0; tso < 2; ++tso) {
         for (int tr = 0; tr < 2; ++tr) {
             auto& r = out[tso][tr];
@@ -193,7 +193,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
                 continue;
             const bool timed = tso && order_of(pair.first) == fom::Order::Timestamp;
             const int tr = transport_of(pair.first) == fom::Transport::BestEffort ? 1 : 0;
-            out[timed][tr].values.push_back(pair);
+            out[timed][tr].values.push_back(&pair);
         }
         if (!g.known.count(m.object)) {
             // Discovered when an attribute comes into scope; a plain subscriber as before DDM.
@@ -226,7 +226,7 @@ void Federation::route_interaction(FederateHandle from, const wire::SendInteract
             throw WireError("parameter handle " + std::to_string(param) + " is not defined for interaction '" +
                             sent_class.qualified_name + "'");
     }
-    wire::ReceiveInteraction receive;
+    wire::ForwardedInteraction receive;
     receive.tag = m.tag;
     receive.sender = from;
     receive.serial = m.serial;
@@ -248,7 +248,7 @@ void Federation::route_interaction(FederateHandle from, const wire::SendInteract
         receive.interaction_class = as;
         receive.values.clear();
         for (const auto& pair : m.values)
-            if (received_class->parameter(pair.first)) receive.values.push_back(pair);
+            if (received_class->parameter(pair.first)) receive.values.push_back(&pair);
         if (timestamped && time_.is_tso(from, gh)) {
             receive.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
             receive.time = m.time;

@@ -30,7 +30,7 @@ public:
 // from their sender's request.
 template <class M>
 constexpr bool kRecordedCallback =
-    !std::is_same_v<M, wire::ReflectAttributes> && !std::is_same_v<M, wire::ReceiveInteraction>;
+    M::kType != wire::MessageType::ReflectAttributes && M::kType != wire::MessageType::ReceiveInteraction;
 
 // Where a federation writes the frames it sends: the output buffer of a federate's connection.
 class Outbox {

@@ -39,23 +39,31 @@ std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_
 
 namespace {
 template <class M>
-Message decode_as(const Frame& frame) {
+Message decode_as(const Frame& frame, SpareStrings* spare) {
     M m;
-    Reader r(frame.payload, frame.type);
+    Reader r(frame.payload, frame.type, spare);
     m.fields(r);
     if (r.remaining() != 0) r.fail("trailing bytes");
     return m;
 }
 }  // namespace
 
-Message decode(const Frame& frame) {
+Message decode(const Frame& frame, SpareStrings* spare) {
     switch (frame.type) {
 #define HLACORE_X(name) \
-    case MessageType::name: return decode_as<name>(frame);
+    case MessageType::name: return decode_as<name>(frame, spare);
         HLACORE_MESSAGES(HLACORE_X)
 #undef HLACORE_X
         default: throw WireError("unknown message type " + std::to_string(static_cast<unsigned>(frame.type)));
     }
+}
+
+void recycle(Message&& message, SpareStrings& spare) {
+    HandleValues* values = nullptr;
+    if (auto* r = std::get_if<ReflectAttributes>(&message)) values = &r->values;
+    if (auto* i = std::get_if<ReceiveInteraction>(&message)) values = &i->values;
+    if (values)
+        for (auto& [handle, value] : *values) spare.give(std::move(value));
 }
 
 }  // namespace hlacore::wire

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -39,7 +40,11 @@ constexpr std::uint16_t kProtocolVersion = 11;
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
 
 using Handles = std::vector<std::uint32_t>;
-using HandleValues = std::vector<std::pair<std::uint32_t, std::string>>;
+using HandleValue = std::pair<std::uint32_t, std::string>;
+using HandleValues = std::vector<HandleValue>;
+// The values of an update or interaction as the gateway forwards them to each receiver: the sender's own,
+// pointed to rather than copied per receiver (a camera frame is megabytes); HandleValues on the wire.
+using HandleValueRefs = std::vector<const HandleValue*>;
 using OptionalTime = std::optional<double>;
 
 // The list that fixes each message's wire code (its position, from 1). Append only.
@@ -657,10 +662,12 @@ struct DiscoverObject {
 // What the gateway adds to an update or interaction it forwards (ReflectAttributes, ReceiveInteraction:
 // order, transport, sender): a sender keeps its frame this much under the limit so that they always fit.
 constexpr std::size_t kForwardedGrowth = 1 + 1 + 4;
-struct ReflectAttributes {
+// Values: HandleValues, or HandleValueRefs for the gateway's forwarding (ForwardedReflection): the same frame.
+template <class Values>
+struct BasicReflectAttributes {
     HLACORE_TYPE(ReflectAttributes)
     std::uint32_t object = 0;
-    HandleValues values;
+    Values values;
     std::string tag;
     std::uint8_t order = 1;      // fom::Order
     std::uint8_t transport = 1;  // fom::Transport
@@ -669,10 +676,13 @@ struct ReflectAttributes {
     std::uint64_t serial = 0;
     HLACORE_FIELDS(object, values, tag, order, transport, time, sender, serial)
 };
-struct ReceiveInteraction {
+using ReflectAttributes = BasicReflectAttributes<HandleValues>;
+using ForwardedReflection = BasicReflectAttributes<HandleValueRefs>;
+template <class Values>
+struct BasicReceiveInteraction {
     HLACORE_TYPE(ReceiveInteraction)
     std::uint32_t interaction_class = 0;
-    HandleValues values;
+    Values values;
     std::string tag;
     std::uint8_t order = 1;
     std::uint8_t transport = 1;
@@ -681,6 +691,8 @@ struct ReceiveInteraction {
     std::uint64_t serial = 0;
     HLACORE_FIELDS(interaction_class, values, tag, order, transport, time, sender, serial)
 };
+using ReceiveInteraction = BasicReceiveInteraction<HandleValues>;
+using ForwardedInteraction = BasicReceiveInteraction<HandleValueRefs>;
 struct RemoveObject {
     HLACORE_TYPE(RemoveObject)
     std::uint32_t object = 0;
@@ -1180,6 +1192,10 @@ public:
         put(p.first);
         put(p.second);
     }
+    template <class T>
+    void put(const T* pointed) {  // HandleValueRefs
+        put(*pointed);
+    }
     template <class T, class = decltype(std::declval<const T&>().fields(std::declval<BasicWriter&>()))>
     void put(const T& record) {
         record.fields(*this);
@@ -1202,9 +1218,42 @@ struct ByteCount {
 
 using Writer = BasicWriter<std::string>;
 
+// Large strings given back once used (the values of delivered callbacks), for decoding the next large values
+// into: a federate sent camera frames reuses the same few blocks instead of having fresh pages mapped (and
+// zeroed by the kernel) for each frame, which cost more than copying it. Thread-safe: the reader takes, the
+// thread that delivers callbacks gives.
+class SpareStrings {
+public:
+    static constexpr std::size_t kLarge = 1u << 20;  // smaller strings are left to the allocator
+    static constexpr std::size_t kKept = 2;          // at most this many held: two frames' worth of memory
+
+    void give(std::string&& s) {
+        if (s.capacity() < kLarge) return;
+        std::lock_guard<std::mutex> lock(mu_);
+        if (spare_.size() < kKept) spare_.push_back(std::move(s));
+    }
+    // One with room for `n` bytes into `s`, if held.
+    void take(std::size_t n, std::string& s) {
+        std::lock_guard<std::mutex> lock(mu_);
+        for (auto& spare : spare_) {
+            if (spare.capacity() >= n) {
+                s = std::move(spare);
+                spare = std::move(spare_.back());
+                spare_.pop_back();
+                return;
+            }
+        }
+    }
+
+private:
+    std::mutex mu_;
+    std::vector<std::string> spare_;
+};
+
 class Reader {
 public:
-    Reader(std::string_view data, MessageType type) : p_(data.data()), end_(data.data() + data.size()), type_(type) {}
+    Reader(std::string_view data, MessageType type, SpareStrings* spare = nullptr)
+        : p_(data.data()), end_(data.data() + data.size()), type_(type), spare_(spare) {}
 
     template <class... T>
     void operator()(T&... values) { (get(values), ...); }
@@ -1224,6 +1273,7 @@ public:
         std::uint32_t n = 0;
         get(n);
         need(n);
+        if (spare_ && n >= SpareStrings::kLarge) spare_->take(n, s);
         s.assign(p_, n);
         p_ += n;
     }
@@ -1277,6 +1327,7 @@ private:
     const char* p_;
     const char* end_;
     MessageType type_;
+    SpareStrings* spare_;
 };
 
 // Appends one complete frame holding `m` to `out`.
@@ -1311,7 +1362,10 @@ struct Frame {
 // are needed. Throws WireError when the header is impossible (length too short or above max_bytes).
 std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_bytes = kMaxFrameBytes);
 
-// Decodes a frame's payload. Throws WireError on an unknown type, a truncated field or trailing bytes.
-Message decode(const Frame& frame);
+// Decodes a frame's payload, its large strings into `spare` ones when given. Throws WireError on an unknown
+// type, a truncated field or trailing bytes.
+Message decode(const Frame& frame, SpareStrings* spare = nullptr);
+// Gives the large values of a delivered reflection or interaction to `spare`.
+void recycle(Message&& message, SpareStrings& spare);
 
 }  // namespace hlacore::wire

@@ -1,0 +1,77 @@
+// What one end of a connection has read and not used yet: one block that the socket is read into directly,
+// and that a large frame reserves whole as soon as its header is in (one allocation, no copy as it grows:
+// growing a string by doubling copied a 16 MiB camera frame four times and mapped fresh pages for each).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <string_view>
+
+#include "rti/wire/messages.hpp"
+
+namespace hlacore::wire {
+
+class ReadBuffer {
+public:
+    // Read size when no frame says more: one socket read of small frames.
+    static constexpr std::size_t kChunk = 65536;
+
+    std::string_view unread() const { return {data_.get() + begin_, end_ - begin_}; }
+    bool empty() const { return begin_ == end_; }
+    std::size_t capacity() const { return capacity_; }
+
+    // How many bytes the next read should ask for: the rest of the frame under way when it is larger than a
+    // chunk and within `max_frame_bytes` (a bigger length is refused when the frame is decoded), else a chunk.
+    std::size_t wanted(std::uint32_t max_frame_bytes) const {
+        const std::size_t pending = end_ - begin_;
+        if (pending < 4) return kChunk;
+        std::uint32_t length = 0;
+        std::memcpy(&length, data_.get() + begin_, 4);
+        if (length > max_frame_bytes) return kChunk;
+        const std::size_t frame = 4 + static_cast<std::size_t>(length);
+        return frame > pending ? std::max(kChunk, frame - pending) : kChunk;
+    }
+    // Room for `n` more bytes at the end; read into it, then commit() what was read.
+    char* room(std::size_t n) {
+        const std::size_t pending = end_ - begin_;
+        if (capacity_ - end_ >= n) return data_.get() + end_;
+        if (capacity_ >= pending + n) {  // what was used makes the room
+            std::memmove(data_.get(), data_.get() + begin_, pending);
+        } else {
+            // Exactly what is asked for a frame larger than a chunk (it reserves its whole length once);
+            // doubled for small frames, so that reads of them stay amortized.
+            const std::size_t size = n > kChunk ? pending + n : std::max(pending + n, 2 * capacity_);
+            std::unique_ptr<char[]> block(new char[size]);
+            if (pending) std::memcpy(block.get(), data_.get() + begin_, pending);
+            data_ = std::move(block);
+            capacity_ = size;
+        }
+        begin_ = 0;
+        end_ = pending;
+        return data_.get() + end_;
+    }
+    void commit(std::size_t n) { end_ += n; }
+    // The first `n` unread bytes were used (whole frames).
+    void consume(std::size_t n) {
+        begin_ += n;
+        if (begin_ == end_) begin_ = end_ = 0;
+    }
+    // Gives the block back when nothing is unread and it is larger than `keep`.
+    void release_above(std::size_t keep) {
+        if (begin_ == end_ && capacity_ > keep) {
+            data_.reset();
+            capacity_ = begin_ = end_ = 0;
+        }
+    }
+    void clear() { begin_ = end_ = 0; }
+
+private:
+    std::unique_ptr<char[]> data_;
+    std::size_t capacity_ = 0;
+    std::size_t begin_ = 0;
+    std::size_t end_ = 0;
+};
+
+}  // namespace hlacore::wire

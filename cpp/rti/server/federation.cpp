@@ -133,6 +133,8 @@ template void Federation::handle(FederateHandle, const std::monostate&);
 #define HLACORE_X(name) template void Federation::handle(FederateHandle, const wire::name&);
 HLACORE_MESSAGES(HLACORE_X)
 #undef HLACORE_X
+template void Federation::handle(FederateHandle, const wire::UpdateAttributesView&);
+template void Federation::handle(FederateHandle, const wire::SendInteractionView&);
 
 template <class M>
 void Federation::on(FederateHandle, const M&) {

@@ -121,7 +121,7 @@ private:
     // After a scope or relevance switch changed or a federate left: how many federates watch scope.
     void count_scope_watchers();
     void forget_update_regions(ObjectHandle object);
-    void route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region);
+    void route_interaction(FederateHandle from, const wire::SendInteractionView& m, const Region* region);
     // requestClassAttributeValueUpdate, plain (region null) or with a region (objects.cpp).
     void request_class_update(FederateHandle from, fom::Handle cls, const wire::Handles& attributes,
                               const Region* region);
@@ -205,6 +205,10 @@ private:
 #define HLACORE_X(name) void on(FederateHandle from, const wire::name& m);
     HLACORE_FEDERATION_SERVICES(HLACORE_X)
 #undef HLACORE_X
+    // Updates and interactions as the gateway serves them, their values views into the frame (the handlers
+    // above of the owned messages, from datagrams, view them and come here).
+    void on(FederateHandle from, const wire::UpdateAttributesView& m);
+    void on(FederateHandle from, const wire::SendInteractionView& m);
     template <class M>
     void on(FederateHandle from, const M& m);
 

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <deque>
 #include <fstream>
+#include <new>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -461,7 +462,13 @@ std::string Gateway::read_tls(Connection& c, std::size_t budget, bool& peer_clos
 void Gateway::on_readable(Connection& c) {
     const int fd = c.fd;
     bool peer_closed = false;
-    const std::string error = c.ssl ? read_tls(c, kReadBudget, peer_closed) : read_plain(c, kReadBudget, peer_closed);
+    std::string error;
+    try {
+        error = c.ssl ? read_tls(c, kReadBudget, peer_closed) : read_plain(c, kReadBudget, peer_closed);
+    } catch (const std::bad_alloc&) {  // the block a large frame reserves once its header is in
+        error = "no memory for a frame of " + std::to_string(c.in.unread().size() + c.in.wanted(options_.max_frame_bytes)) +
+                " bytes";
+    }
     if (!error.empty()) {
         close(fd, error);
         return;
@@ -536,7 +543,37 @@ void Gateway::pause_if_over_budget(Connection& producer) {
         pause(producer, *consumer->second);
 }
 
+namespace {
+// Clients refuse these at the call (ValueLengthExceeded): forwarded, they would not fit.
+void check_forwardable(const wire::Frame& frame, std::uint32_t max_frame_bytes) {
+    switch (frame.type) {
+        case wire::MessageType::UpdateAttributes:
+        case wire::MessageType::SendInteraction:
+        case wire::MessageType::SendInteractionWithRegion:
+            if (2 + frame.payload.size() + wire::kForwardedGrowth > max_frame_bytes)
+                throw wire::WireError(std::string(wire::message_name(frame.type)) + " of " +
+                                      std::to_string(2 + frame.payload.size()) +
+                                      " bytes would be forwarded over the frame limit of " +
+                                      std::to_string(max_frame_bytes) + " bytes");
+            break;
+        default: break;
+    }
+}
+}  // namespace
+
 void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
+    // Updates and interactions, when nothing needs them whole (the trace, the recorder): served with their
+    // values viewed in the frame rather than copied out of it, a camera frame's megabytes included.
+    if (c.greeted && c.challenge.empty() && !trace_ && !recorder_) {
+        if (frame.type == wire::MessageType::UpdateAttributes) {
+            check_forwardable(frame, options_.max_frame_bytes);
+            return serve(c, wire::decode_as<wire::UpdateAttributesView>(frame));
+        }
+        if (frame.type == wire::MessageType::SendInteraction) {
+            check_forwardable(frame, options_.max_frame_bytes);
+            return serve(c, wire::decode_as<wire::SendInteractionView>(frame));
+        }
+    }
     wire::Message message = wire::decode(frame);
     if (!c.greeted) {
         const auto* hello = std::get_if<wire::Hello>(&message);
@@ -571,19 +608,7 @@ void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
         mark_dirty(c);
         return;
     }
-    switch (frame.type) {
-        case wire::MessageType::UpdateAttributes:
-        case wire::MessageType::SendInteraction:
-        case wire::MessageType::SendInteractionWithRegion:
-            // Clients refuse these at the call (ValueLengthExceeded): forwarded, they would not fit.
-            if (2 + frame.payload.size() + wire::kForwardedGrowth > options_.max_frame_bytes)
-                throw wire::WireError(std::string(wire::message_name(frame.type)) + " of " +
-                                      std::to_string(2 + frame.payload.size()) +
-                                      " bytes would be forwarded over the frame limit of " +
-                                      std::to_string(options_.max_frame_bytes) + " bytes");
-            break;
-        default: break;
-    }
+    check_forwardable(frame, options_.max_frame_bytes);
     if (trace_ && c.federation) trace_->received(c.federation->federation.name(), c.federate, message, c.read_ns);
     on_request(c, message);
 }

@@ -137,6 +137,10 @@ fom::Handle Federation::receiving_interaction_class(const FederateState& f, fom:
 
 
 void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
+    on(from, wire::UpdateAttributesView{m.object, wire::views_of(m.values), m.tag, m.time, m.serial});
+}
+
+void Federation::on(FederateHandle from, const wire::UpdateAttributesView& m) {
     ++federate(from).updates_sent;
     if (m.time) check_timestamp(from, *m.time, "attribute update");
     auto it = objects_.find(m.object);
@@ -212,13 +216,17 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributes& m) {
 }
 
 void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
+    on(from, wire::SendInteractionView{m.interaction_class, wire::views_of(m.values), m.tag, m.time, m.serial});
+}
+
+void Federation::on(FederateHandle from, const wire::SendInteractionView& m) {
     ++federate(from).interactions_sent;
     route_interaction(from, m, nullptr);
 }
 
 // `region`: the region the interaction was sent with (sendInteractionWithRegion), null for the default
 // region, which reaches every subscriber of the class.
-void Federation::route_interaction(FederateHandle from, const wire::SendInteraction& m, const Region* region) {
+void Federation::route_interaction(FederateHandle from, const wire::SendInteractionView& m, const Region* region) {
     if (m.time) check_timestamp(from, *m.time, "interaction");
     const auto& sent_class = interaction_class(m.interaction_class);
     for (const auto& [param, value] : m.values) {

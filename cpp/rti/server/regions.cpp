@@ -380,7 +380,8 @@ void Federation::on(FederateHandle from, const wire::SendInteractionWithRegion& 
     FederateState& f = federate(from);
     ++f.interactions_sent;
     const Region& region = interaction_region(f, m.region, m.interaction_class);
-    route_interaction(from, wire::SendInteraction{m.interaction_class, m.values, m.tag, m.time, m.serial}, &region);
+    route_interaction(from, wire::SendInteractionView{m.interaction_class, wire::views_of(m.values), m.tag, m.time, m.serial},
+                      &region);
 }
 
 // §9.13: the owners of attributes whose update region overlaps `region` are asked to provide them.

@@ -37,21 +37,10 @@ std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_
     return 4 + static_cast<std::size_t>(length);
 }
 
-namespace {
-template <class M>
-Message decode_as(const Frame& frame, SpareStrings* spare) {
-    M m;
-    Reader r(frame.payload, frame.type, spare);
-    m.fields(r);
-    if (r.remaining() != 0) r.fail("trailing bytes");
-    return m;
-}
-}  // namespace
-
 Message decode(const Frame& frame, SpareStrings* spare) {
     switch (frame.type) {
 #define HLACORE_X(name) \
-    case MessageType::name: return decode_as<name>(frame, spare);
+    case MessageType::name: return Message(decode_as<name>(frame, spare));
         HLACORE_MESSAGES(HLACORE_X)
 #undef HLACORE_X
         default: throw WireError("unknown message type " + std::to_string(static_cast<unsigned>(frame.type)));

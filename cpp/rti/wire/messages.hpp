@@ -42,9 +42,15 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
 using Handles = std::vector<std::uint32_t>;
 using HandleValue = std::pair<std::uint32_t, std::string>;
 using HandleValues = std::vector<HandleValue>;
-// The values of an update or interaction as the gateway forwards them to each receiver: the sender's own,
-// pointed to rather than copied per receiver (a camera frame is megabytes); HandleValues on the wire.
-using HandleValueRefs = std::vector<const HandleValue*>;
+// The values of an update or interaction as the gateway serves them: views into the frame being served, not
+// copies (a camera frame is megabytes); HandleValues on the wire.
+using HandleValueView = std::pair<std::uint32_t, std::string_view>;
+using HandleValueViews = std::vector<HandleValueView>;
+// ... and as it forwards them to each receiver: pointers to those, not copies per receiver.
+using HandleValueRefs = std::vector<const HandleValueView*>;
+inline HandleValueViews views_of(const HandleValues& values) {
+    return HandleValueViews(values.begin(), values.end());
+}
 using OptionalTime = std::optional<double>;
 
 // The list that fixes each message's wire code (its position, from 1). Append only.
@@ -437,24 +443,31 @@ struct RegisterObject {
     std::string name;  // empty: the gateway picks a unique one
     HLACORE_FIELDS(request, object_class, name)
 };
-struct UpdateAttributes {
+// Values: HandleValues, or HandleValueViews for the gateway (UpdateAttributesView): the same frame.
+template <class Values>
+struct BasicUpdateAttributes {
     HLACORE_TYPE(UpdateAttributes)
     std::uint32_t object = 0;
-    HandleValues values;
+    Values values;
     std::string tag;
     OptionalTime time;
     std::uint64_t serial = 0;  // with the sender's handle, the event retraction handle
     HLACORE_FIELDS(object, values, tag, time, serial)
 };
-struct SendInteraction {
+using UpdateAttributes = BasicUpdateAttributes<HandleValues>;
+using UpdateAttributesView = BasicUpdateAttributes<HandleValueViews>;
+template <class Values>
+struct BasicSendInteraction {
     HLACORE_TYPE(SendInteraction)
     std::uint32_t interaction_class = 0;
-    HandleValues values;
+    Values values;
     std::string tag;
     OptionalTime time;
     std::uint64_t serial = 0;
     HLACORE_FIELDS(interaction_class, values, tag, time, serial)
 };
+using SendInteraction = BasicSendInteraction<HandleValues>;
+using SendInteractionView = BasicSendInteraction<HandleValueViews>;
 struct DeleteObject {
     HLACORE_TYPE(DeleteObject)
     std::uint32_t object = 0;
@@ -1178,6 +1191,10 @@ public:
         put(static_cast<std::uint32_t>(s.size()));
         out_.append(s);
     }
+    void put(std::string_view s) {
+        put(static_cast<std::uint32_t>(s.size()));
+        out_.append(s.data(), s.size());
+    }
     void put(const OptionalTime& t) {
         put(t.has_value());
         if (t) put(*t);
@@ -1277,6 +1294,13 @@ public:
         s.assign(p_, n);
         p_ += n;
     }
+    void get(std::string_view& s) {  // a view into the frame, valid while it is
+        std::uint32_t n = 0;
+        get(n);
+        need(n);
+        s = std::string_view(p_, n);
+        p_ += n;
+    }
     void get(OptionalTime& t) {
         bool present = false;
         get(present);
@@ -1365,6 +1389,15 @@ std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_
 // Decodes a frame's payload, its large strings into `spare` ones when given. Throws WireError on an unknown
 // type, a truncated field or trailing bytes.
 Message decode(const Frame& frame, SpareStrings* spare = nullptr);
+// Decodes a frame of M's type as M (a view type such as UpdateAttributesView included).
+template <class M>
+M decode_as(const Frame& frame, SpareStrings* spare = nullptr) {
+    M m;
+    Reader r(frame.payload, frame.type, spare);
+    m.fields(r);
+    if (r.remaining() != 0) r.fail("trailing bytes");
+    return m;
+}
 // Gives the large values of a delivered reflection or interaction to `spare`.
 void recycle(Message&& message, SpareStrings& spare);
 

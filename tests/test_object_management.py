@@ -127,6 +127,23 @@ def test_reflect_only_subscribed_attributes_with_exact_bytes(pair):
     assert sub.rtia.getTransportationName(transport) == "HLAreliable"
 
 
+def test_values_of_every_accepted_type_arrive_as_the_bytes_they_held_at_the_call(registered):
+    """bytes (sent from where they are), str (UTF-8, surrogateescape), bytearray and memoryview (copied at the
+    call: changing them afterwards changes nothing sent) each arrive as the bytes they held; anything else
+    is a TypeError at the call."""
+    pub, sub, h, obj = registered
+    mutable = bytearray(b"before")
+    values = [b"\x00bytes\xff", "caf\u00e9 \udcff", mutable, memoryview(b"viewed")]
+    for value in values:
+        pub.rtia.updateAttributeValues(obj, {h["location"]: value}, "")
+    mutable[:] = b"after!"
+    with pytest.raises(TypeError, match="bytes or str"):
+        pub.rtia.updateAttributeValues(obj, {h["location"]: 42}, "")
+    tick_until(lambda: len(sub.amb.named("reflectAttributeValues")) == len(values), sub.rtia)
+    got = [args[1][h["location"]] for args in sub.amb.named("reflectAttributeValues")]
+    assert got == [b"\x00bytes\xff", "caf\u00e9 \udcff".encode("utf-8", "surrogateescape"), b"before", b"viewed"]
+
+
 def test_subclass_instance_discovered_as_subscribed_superclass(pair):
     """A turtlebot is discovered as robot by a robot subscriber, and its subclass attribute is not reflected."""
     pub, sub, robot, turtle, h = pair

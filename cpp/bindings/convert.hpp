@@ -6,10 +6,12 @@
 
 #include <cstdint>
 #include <cstring>
+#include <deque>
 #include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -131,18 +133,47 @@ inline py::str to_str(const std::string& s) {
     return py::reinterpret_steal<py::str>(PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "surrogateescape"));
 }
 
+// A mapping's values viewed for one call that encodes them (updateAttributeValues, sendInteraction): bytes
+// where they are, kept alive by `keep` (the call may release the GIL while it waits for the gateway); str
+// encoded once; other buffers copied, as they may change meanwhile.
+struct ValueViews {
+    wire::HandleValueViews views;
+    std::vector<py::object> keep;
+    std::deque<std::string> copies;
+};
+
 template <class H>
-wire::HandleValues to_handle_values(const py::handle& mapping, const char* key_name) {
+ValueViews to_value_views(const py::handle& mapping, const char* key_name) {
     if (!PyDict_Check(mapping.ptr()) && !PyMapping_Check(mapping.ptr()))
         throw py::type_error(std::string("a mapping {") + key_name + ": bytes} is required");
     py::dict d = py::reinterpret_borrow<py::object>(mapping).cast<py::dict>();
-    wire::HandleValues values;
-    values.reserve(d.size());
+    ValueViews values;
+    values.views.reserve(d.size());
+    values.keep.reserve(d.size());
     for (auto item : d) {
         if (!py::isinstance<H>(item.first)) throw py::type_error(std::string(key_name) + " object required as key");
-        values.emplace_back(item.first.cast<const H&>().value, to_bytes(item.second, "a value"));
+        const std::uint32_t handle = item.first.cast<const H&>().value;
+        py::object value = py::reinterpret_borrow<py::object>(item.second);
+        if (PyUnicode_Check(value.ptr())) {
+            value = py::reinterpret_steal<py::object>(PyUnicode_AsEncodedString(value.ptr(), "utf-8", "surrogateescape"));
+            if (!value) throw py::error_already_set();
+        }
+        if (PyBytes_Check(value.ptr())) {
+            values.views.emplace_back(handle, std::string_view(PyBytes_AS_STRING(value.ptr()),
+                                                               static_cast<std::size_t>(PyBytes_GET_SIZE(value.ptr()))));
+            values.keep.push_back(std::move(value));
+        } else {
+            values.views.emplace_back(handle, values.copies.emplace_back(to_bytes(value, "a value")));
+        }
     }
     return values;
+}
+
+// The same, copied: for a request that keeps them.
+template <class H>
+wire::HandleValues to_handle_values(const py::handle& mapping, const char* key_name) {
+    const ValueViews values = to_value_views<H>(mapping, key_name);
+    return wire::HandleValues(values.views.begin(), values.views.end());
 }
 
 template <class H>

@@ -27,7 +27,8 @@ RTI::EventRetractionHandle RTI::RTIambassador::updateAttributeValues(ObjectHandl
                                                                      const FedTime& theTime, const char* theTag) {
     return guarded([&] {
         Client& c = privateRefs->client;
-        return retraction(c, c.update_attributes(h32(theObject), hla13::values_of(theAttributes), text(theTag),
+        const wire::HandleValues values = hla13::values_of(theAttributes);
+        return retraction(c, c.update_attributes(h32(theObject), wire::views_of(values), text(theTag),
                                                  hla13::time_of(theTime)));
     });
 }
@@ -35,7 +36,8 @@ RTI::EventRetractionHandle RTI::RTIambassador::updateAttributeValues(ObjectHandl
 void RTI::RTIambassador::updateAttributeValues(ObjectHandle theObject, const AttributeHandleValuePairSet& theAttributes,
                                                const char* theTag) {
     guarded([&] {
-        privateRefs->client.update_attributes(h32(theObject), hla13::values_of(theAttributes), text(theTag), std::nullopt);
+        const wire::HandleValues values = hla13::values_of(theAttributes);
+        privateRefs->client.update_attributes(h32(theObject), wire::views_of(values), text(theTag), std::nullopt);
     });
 }
 
@@ -44,7 +46,8 @@ RTI::EventRetractionHandle RTI::RTIambassador::sendInteraction(InteractionClassH
                                                                const FedTime& theTime, const char* theTag) {
     return guarded([&] {
         Client& c = privateRefs->client;
-        return retraction(c, c.send_interaction(h32(theInteraction), hla13::values_of(theParameters), text(theTag),
+        const wire::HandleValues values = hla13::values_of(theParameters);
+        return retraction(c, c.send_interaction(h32(theInteraction), wire::views_of(values), text(theTag),
                                                 hla13::time_of(theTime)));
     });
 }
@@ -52,8 +55,8 @@ RTI::EventRetractionHandle RTI::RTIambassador::sendInteraction(InteractionClassH
 void RTI::RTIambassador::sendInteraction(InteractionClassHandle theInteraction,
                                          const ParameterHandleValuePairSet& theParameters, const char* theTag) {
     guarded([&] {
-        privateRefs->client.send_interaction(h32(theInteraction), hla13::values_of(theParameters), text(theTag),
-                                             std::nullopt);
+        const wire::HandleValues values = hla13::values_of(theParameters);
+        privateRefs->client.send_interaction(h32(theInteraction), wire::views_of(values), text(theTag), std::nullopt);
     });
 }
 

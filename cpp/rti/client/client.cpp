@@ -350,6 +350,8 @@ void Client::send(const M& message) {
 #define HLACORE_X(name) template void Client::send(const wire::name&);
 HLACORE_MESSAGES(HLACORE_X)
 #undef HLACORE_X
+template void Client::send(const wire::UpdateAttributesView&);
+template void Client::send(const wire::SendInteractionView&);
 
 void Client::require_member(wire::MessageType type) const {
     // Checked when sending, in the order of the socket: another thread's resign may have gone out just before.

@@ -125,9 +125,10 @@ public:
 
     // ---- object management; the update calls return the serial of the event retraction handle ----
     std::uint32_t register_object(fom::Handle cls, const std::string& name);
-    std::uint64_t update_attributes(std::uint32_t object, wire::HandleValues values, const std::string& tag,
+    // The values are views: what they view must outlive the call (it is encoded before the call returns).
+    std::uint64_t update_attributes(std::uint32_t object, wire::HandleValueViews values, const std::string& tag,
                                     wire::OptionalTime time);
-    std::uint64_t send_interaction(fom::Handle cls, wire::HandleValues values, const std::string& tag,
+    std::uint64_t send_interaction(fom::Handle cls, wire::HandleValueViews values, const std::string& tag,
                                    wire::OptionalTime time);
     std::uint64_t delete_object(std::uint32_t object, const std::string& tag, wire::OptionalTime time);
 
@@ -404,7 +405,7 @@ private:
     void open_datagram_path(Clock::time_point deadline);
     void give_up_datagrams(const std::string& reason);
     void read_datagrams(std::vector<wire::Message>& got);
-    bool best_effort(const LocalObject& obj, const wire::HandleValues& values) const;
+    bool best_effort(const LocalObject& obj, const wire::HandleValueViews& values) const;
     bool best_effort(fom::Handle interaction_class) const;
     // The reading thread's liveness step: when to look again, a Ping when the gateway has been silent for
     // half the timeout, GatewayNotResponding (the connection closed) after the whole timeout.
@@ -445,7 +446,19 @@ private:
     // AttributeNotDefined for a handle the class does not have.
     static void check_attributes(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes);
     // What sendInteraction checks before the time: the class is defined and published, the parameters defined.
-    const fom::InteractionClass& check_sendable(fom::Handle cls, const wire::HandleValues& values) const;
+    template <class Values>  // HandleValues or HandleValueViews
+    const fom::InteractionClass& check_sendable(fom::Handle cls, const Values& values) const {
+        const auto& c = defined_interaction_class(cls);
+        if (!declarations_.published_interactions.count(cls))
+            raise(ErrorCode::InteractionClassNotPublished, "interaction class '" + c.qualified_name + "' is not published");
+        for (const auto& [param, value] : values) {
+            if (!c.parameter(param))
+                raise(ErrorCode::InteractionParameterNotDefined, "parameter handle " + std::to_string(param) +
+                                                                     " is not defined for interaction '" +
+                                                                     c.qualified_name + "'");
+        }
+        return c;
+    }
     const fom::InteractionClass& defined_interaction_class(fom::Handle cls) const;
     const LocalObject& known_object(std::uint32_t object) const;
     LocalObject& known_object(std::uint32_t object) {

@@ -109,10 +109,10 @@ void Client::send_best_effort(const M& message) {
     }
     send(message);
 }
-template void Client::send_best_effort(const wire::UpdateAttributes&);
-template void Client::send_best_effort(const wire::SendInteraction&);
+template void Client::send_best_effort(const wire::UpdateAttributesView&);
+template void Client::send_best_effort(const wire::SendInteractionView&);
 
-bool Client::best_effort(const LocalObject& obj, const wire::HandleValues& values) const {
+bool Client::best_effort(const LocalObject& obj, const wire::HandleValueViews& values) const {
     if (!datagram_path_ || values.empty()) return false;
     const auto& cls = *fom_->object_class(obj.object_class);
     for (const auto& [attr, value] : values) {

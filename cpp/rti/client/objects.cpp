@@ -30,9 +30,9 @@ void Client::add_registered(std::uint32_t object, fom::Handle cls, const std::st
     objects_[object] = std::move(obj);
 }
 
-std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues values, const std::string& tag,
+std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValueViews values, const std::string& tag,
                                         wire::OptionalTime time) {
-    wire::UpdateAttributes update{object, std::move(values), tag, time, 0};
+    wire::UpdateAttributesView update{object, std::move(values), tag, time, 0};
     bool datagram = false;
     {
         std::lock_guard<std::mutex> lock(mu_);
@@ -59,22 +59,9 @@ std::uint64_t Client::update_attributes(std::uint32_t object, wire::HandleValues
     return update.serial;
 }
 
-const fom::InteractionClass& Client::check_sendable(fom::Handle cls, const wire::HandleValues& values) const {
-    const auto& c = defined_interaction_class(cls);
-    if (!declarations_.published_interactions.count(cls))
-        raise(ErrorCode::InteractionClassNotPublished, "interaction class '" + c.qualified_name + "' is not published");
-    for (const auto& [param, value] : values) {
-        if (!c.parameter(param))
-            raise(ErrorCode::InteractionParameterNotDefined, "parameter handle " + std::to_string(param) +
-                                                                 " is not defined for interaction '" +
-                                                                 c.qualified_name + "'");
-    }
-    return c;
-}
-
-std::uint64_t Client::send_interaction(fom::Handle cls, wire::HandleValues values, const std::string& tag,
+std::uint64_t Client::send_interaction(fom::Handle cls, wire::HandleValueViews values, const std::string& tag,
                                        wire::OptionalTime time) {
-    wire::SendInteraction interaction{cls, std::move(values), tag, time, 0};
+    wire::SendInteractionView interaction{cls, std::move(values), tag, time, 0};
     bool datagram = false;
     {
         std::lock_guard<std::mutex> lock(mu_);

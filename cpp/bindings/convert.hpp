@@ -6,7 +6,6 @@
 
 #include <cstdint>
 #include <cstring>
-#include <deque>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -135,11 +134,12 @@ inline py::str to_str(const std::string& s) {
 
 // A mapping's values viewed for one call that encodes them (updateAttributeValues, sendInteraction): bytes
 // where they are, kept alive by `keep` (the call may release the GIL while it waits for the gateway); str
-// encoded once; other buffers copied, as they may change meanwhile.
+// encoded once; other buffers copied, as they may change meanwhile (into `copies`, reserved for all at the
+// first so that the views stay valid).
 struct ValueViews {
     wire::HandleValueViews views;
     std::vector<py::object> keep;
-    std::deque<std::string> copies;
+    std::vector<std::string> copies;
 };
 
 template <class H>
@@ -163,6 +163,7 @@ ValueViews to_value_views(const py::handle& mapping, const char* key_name) {
                                                                static_cast<std::size_t>(PyBytes_GET_SIZE(value.ptr()))));
             values.keep.push_back(std::move(value));
         } else {
+            if (values.copies.empty()) values.copies.reserve(d.size());
             values.views.emplace_back(handle, values.copies.emplace_back(to_bytes(value, "a value")));
         }
     }

@@ -1,8 +1,10 @@
 // Unit tests of the gateway's service-group state types (cpp/rti/server/<group>.hpp) on their own, without
-// a federation: regions and their overlap, a federate's DDM state, attribute ownership, save/restore.
+// a federation: regions and their overlap, a federate's DDM state, attribute ownership, save/restore; and
+// the connection's read buffer and spare strings (cpp/rti/wire/).
 // Built by ./scripts/test.sh (target state_types_test, with the sanitizers) and run by
 // tests/test_state_types.py; prints "ok <case>" per case, exits non-zero at the first failure.
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <functional>
 #include <string>
@@ -11,6 +13,7 @@
 #include "rti/server/ownership.hpp"
 #include "rti/server/regions.hpp"
 #include "rti/server/save_restore.hpp"
+#include "rti/wire/read_buffer.hpp"
 
 using namespace hlacore;
 
@@ -153,6 +156,82 @@ void save_restore_files() {
     CHECK(sr.error.find("cannot write /proc/hlacore-no-such-dir/fed--t.hlasave") == 0);
 }
 
+// Appends `bytes` to `in` as a socket read of them would.
+void receive(wire::ReadBuffer& in, const std::string& bytes) {
+    std::memcpy(in.room(bytes.size()), bytes.data(), bytes.size());
+    in.commit(bytes.size());
+}
+
+std::string frame_header(std::uint32_t length) {
+    return std::string(reinterpret_cast<const char*>(&length), 4);
+}
+
+void read_buffer() {
+    wire::ReadBuffer in;
+    CHECK(in.empty() && in.wanted(1u << 30) == wire::ReadBuffer::kChunk);
+    // A small frame and the start of the next: the rest of the first is used, the partial one stays.
+    receive(in, frame_header(2) + "ab" + frame_header(10) + "xy");
+    CHECK(in.unread().size() == 12);
+    in.consume(6);
+    CHECK(in.unread() == frame_header(10) + "xy");
+    // Its header is in and it is small: a chunk is asked for. Reading more moves the partial frame down
+    // into the room the used one left, then into a larger block.
+    CHECK(in.wanted(1u << 30) == wire::ReadBuffer::kChunk);
+    receive(in, "cdef");
+    CHECK(in.capacity() == 12 && in.unread() == frame_header(10) + "xycdef");
+    receive(in, "ghij");
+    CHECK(in.capacity() == 24 && in.unread() == frame_header(10) + "xycdefghij");
+    in.consume(14);
+    CHECK(in.empty());
+    // A large frame asks for its whole rest at once, and the block is that size exactly.
+    const std::size_t large = 3 * wire::ReadBuffer::kChunk;
+    receive(in, frame_header(static_cast<std::uint32_t>(large)) + "12");
+    CHECK(in.wanted(1u << 30) == large - 2);
+    in.room(in.wanted(1u << 30));
+    CHECK(in.capacity() == 4 + large);
+    receive(in, std::string(large - 2, 'z'));
+    CHECK(in.unread().size() == 4 + large && in.unread().substr(4, 3) == "12z");
+    // A length over the limit asks for a chunk only: the frame is refused when decoded, nothing reserved.
+    CHECK(in.wanted(16) == wire::ReadBuffer::kChunk);
+    in.consume(4 + large);
+    in.release_above(wire::ReadBuffer::kChunk);
+    CHECK(in.capacity() == 0 && in.empty());
+}
+
+void spare_strings() {
+    wire::SpareStrings spare;
+    std::string small(100, 's');
+    spare.give(std::move(small));  // below kLarge: left to the allocator
+    std::string got;
+    spare.take(10, got);
+    CHECK(got.empty() && got.capacity() < wire::SpareStrings::kLarge);
+    for (int i = 0; i < 3; ++i) spare.give(std::string(wire::SpareStrings::kLarge + static_cast<std::size_t>(i), 'x'));
+    spare.take(wire::SpareStrings::kLarge + 1, got);  // one of the two kept (the third was not)
+    CHECK(got.capacity() >= wire::SpareStrings::kLarge + 1);
+    std::string next;
+    spare.take(wire::SpareStrings::kLarge + 1, next);
+    CHECK(next.capacity() < wire::SpareStrings::kLarge);  // the other one is too small for it
+    spare.take(wire::SpareStrings::kLarge, next);
+    CHECK(next.capacity() >= wire::SpareStrings::kLarge);
+    std::string none;
+    spare.take(1, none);
+    CHECK(none.capacity() < wire::SpareStrings::kLarge);  // both taken
+    // Decoding a large value takes a spare one: its block is reused.
+    spare.give(std::move(got));
+    wire::ReflectAttributes r;
+    r.values.emplace_back(1, std::string(wire::SpareStrings::kLarge, 'v'));
+    std::string frame;
+    wire::encode(frame, r);
+    wire::Frame f;
+    CHECK(wire::next_frame(frame, f) == frame.size());
+    wire::Message m = wire::decode(f, &spare);
+    const std::string& value = std::get<wire::ReflectAttributes>(m).values.at(0).second;
+    CHECK(value == std::string(wire::SpareStrings::kLarge, 'v') && value.capacity() >= wire::SpareStrings::kLarge + 1);
+    wire::recycle(std::move(m), spare);
+    spare.take(wire::SpareStrings::kLarge, none);
+    CHECK(none.size() == wire::SpareStrings::kLarge);  // given back by recycle(), contents as they were
+}
+
 }  // namespace
 
 int main() {
@@ -164,6 +243,8 @@ int main() {
         {"attribute_ownership", attribute_ownership},
         {"save_restore_runs", save_restore_runs},
         {"save_restore_files", save_restore_files},
+        {"read_buffer", read_buffer},
+        {"spare_strings", spare_strings},
     };
     for (const auto& [name, run] : cases) {
         const int before = failures;

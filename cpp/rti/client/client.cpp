@@ -314,12 +314,17 @@ Client::~Client() {
 
 namespace {
 // The messages the gateway serves only for a joined federate: from a connection that is not (one that has
-// sent its resign) they are a protocol error that drops it.
-template <class M>
-constexpr bool kFederationService = false;
-#define HLACORE_X(name) template <> constexpr bool kFederationService<wire::name> = true;
-HLACORE_FEDERATION_SERVICES(HLACORE_X)
+// sent its resign) they are a protocol error that drops it. By type code, so that the view types
+// (UpdateAttributesView, SendInteractionView) count as the messages they encode.
+constexpr bool federation_service(wire::MessageType type) {
+    switch (type) {
+#define HLACORE_X(name) case wire::MessageType::name:
+        HLACORE_FEDERATION_SERVICES(HLACORE_X)
 #undef HLACORE_X
+        return true;
+        default: return false;
+    }
+}
 }  // namespace
 
 std::unique_lock<std::mutex> Client::lock_send() {
@@ -335,7 +340,7 @@ std::unique_lock<std::mutex> Client::lock_send() {
 template <class M>
 void Client::send(const M& message) {
     auto lock = lock_send();
-    if constexpr (kFederationService<M>) require_member(M::kType);
+    if constexpr (federation_service(M::kType)) require_member(M::kType);
     send_buffer_.clear();
     wire::encode(send_buffer_, message);
     if (send_buffer_.size() - 4 > max_frame_bytes_) {  // a name, tag or FED beyond reason: refused, not sent

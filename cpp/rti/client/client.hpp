@@ -516,7 +516,7 @@ private:
     std::atomic<int> sends_since_wait_{0};  // reset by every read of the socket (pump)
     std::atomic<std::uint64_t> messages_sent_{0};
     std::atomic<std::uint64_t> write_calls_{0};
-    bool member_ = false;  // under send_mu_: joined, and no resign sent since (kFederationService messages go)
+    bool member_ = false;  // under send_mu_: joined, and no resign sent since (federation_service() messages go)
 
     mutable std::mutex mu_;
     std::condition_variable cv_;

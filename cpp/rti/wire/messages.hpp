@@ -1252,11 +1252,10 @@ public:
     // One with room for `n` bytes into `s`, if held.
     void take(std::size_t n, std::string& s) {
         std::lock_guard<std::mutex> lock(mu_);
-        for (auto& spare : spare_) {
-            if (spare.capacity() >= n) {
-                s = std::move(spare);
-                spare = std::move(spare_.back());
-                spare_.pop_back();
+        for (auto it = spare_.begin(); it != spare_.end(); ++it) {
+            if (it->capacity() >= n) {
+                s = std::move(*it);
+                spare_.erase(it);
                 return;
             }
         }

@@ -469,11 +469,14 @@ void Gateway::on_readable(Connection& c) {
         error = "no memory for a frame of " + std::to_string(c.in.unread().size() + c.in.wanted(options_.max_frame_bytes)) +
                 " bytes";
     }
+    if (trace_) c.read_ns = MessageTrace::now_ns();
     if (!error.empty()) {
-        close(fd, error);
+        // What a greeted client sent before the error is served first: a federate killed with messages
+        // unread resets its connection, and the frames read just before the reset were its last words.
+        if (c.greeted) serve_frames(c);
+        if (connections_.count(fd)) close(fd, error);
         return;
     }
-    if (trace_) c.read_ns = MessageTrace::now_ns();
     serve_frames(c);
     if (!connections_.count(fd)) return;
     if (peer_closed) {

@@ -21,8 +21,8 @@ import pytest
 from conftest import Federate
 from conftest import RtigProcess
 from nethosts import NetHosts, nethosts  # noqa: F401 (the fixture)
-from test_ros_bridge import (WORLD, f32, ros, roscore, running, running_roscore, start_bridge,  # noqa: F401
-                             start_teleop)
+from test_ros_bridge import (PEERS, WORLD, f32, ros, roscore, running, running_roscore,  # noqa: F401
+                             start_bridge, start_teleop)
 
 import hlacore.rti as rti
 from hlacore import omt
@@ -213,6 +213,25 @@ def test_cmd_vel_interaction_drives_stage_node_and_odometry_comes_back(
     final = reflections[-1][1]["odometry"]
     assert final[0] > 0.5 and final[1] > 0.0 and final[3] == 0.0  # it drove, turned left, and was stopped
     assert any(v["odometry"][3] == 0.5 for _, v in reflections)
+
+
+def test_bridge_reticks_until_the_nodes_first_state(roscore: dict[str, str], gateway_address: str) -> None:
+    """A rospy subscriber counts its connection before the node's publisher has added it, so a node's first
+    state can be lost even after ``--wait-connections`` (1 run in 15 of the paper-1 chain). The bridge then
+    re-publishes the first /clock until every state topic has spoken: a node deaf to its first two ticks
+    costs no late state, and its state stamped 0 still comes before the grants."""
+    node = subprocess.Popen([sys.executable, str(PEERS / "ros_deaf_start.py"), "/rover", "2"],
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True,
+                            env=roscore)
+    with running(node) as deaf:
+        deaf.out.wait_for("deaf_start ready", 60)
+        with running(start_bridge(roscore, gateway_address, "--robot-node", "rover", "--sensor", "none", "--clock",
+                                  "--await-state", "5", "--wait-connections", "30", "--until", "0.3")) as bridge:
+            stopped = bridge.out.wait_for("ros_bridge stopped", 60)
+    assert bridge.status == 0 and "0 late states, 0 late acks" in stopped, bridge.lines
+    seen = json.loads(deaf.lines[-1])
+    assert seen["ignored"] == 2
+    assert seen["published"] == pytest.approx([0.0, 0.1, 0.2, 0.3], abs=1e-9)
 
 
 def test_stage_node_on_its_own_clock(roscore: dict[str, str], tmp_path: pathlib.Path) -> None:

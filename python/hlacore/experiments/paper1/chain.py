@@ -65,11 +65,12 @@ class ChainResult(Result):
     late_states: int = 0
     late_acks: int = 0
     bridge: str = ""  #: the bridge's last line
+    late: list[str] = field(default_factory=list)  #: the bridge's lines about late states or acknowledgements
 
     def summary(self) -> dict[str, Any]:
         out = super().summary()
         out.update(controller="de", de_grants=self.de_grants, late_states=self.late_states,
-                   late_acks=self.late_acks,
+                   late_acks=self.late_acks, late=self.late,
                    avatar_commands=len(self.control))
         return out
 
@@ -116,6 +117,7 @@ def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, 
             de.wait_for("paper1_de ready", timeout)
             cycles = math.ceil(duration / period)
             result.bridge = bridge.wait_for("ros_bridge stopped", timeout + cycles * state_timeout)
+            result.late = [line for line in bridge.seen if line.startswith("ros_bridge: late")]
             for child in (bridge, de):
                 if child.wait(timeout) != 0:
                     raise RuntimeError(child.report(f"exited with status {child.proc.returncode}"))

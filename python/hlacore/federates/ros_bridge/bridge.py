@@ -44,6 +44,7 @@ from __future__ import annotations
 
 import math
 import queue
+import sys
 import threading
 import time as _time
 import warnings
@@ -281,6 +282,9 @@ class _Ambassador(rti.FederateAmbassador):
         self.bridge._commanded(robot, linear, angular)
 
 
+RETICK = 0.2  #: s between re-published ``/clock`` ticks while the bridge waits for the nodes' first state
+
+
 class RosBridge:
     """The bridge (see the module docstring). Build it, :meth:`start` it (init the ROS node, join the
     federation), :meth:`spin` on the thread that owns it until :meth:`stop`, then :meth:`close`."""
@@ -427,8 +431,10 @@ class RosBridge:
         wall0, fed0 = _time.monotonic(), self.time
         k = round(self.time / self.period)
         if self._objects:  # the node's initial state, as the world federate publishes its own at 0 + L
+            # Re-ticked until every state topic has spoken: a rospy subscriber counts its connection before
+            # the node's publisher has added it, so the node's first messages can be lost.
             self._tick_clock()
-            self._sync_state()
+            self._sync_state(retick=True)
         while not self._stop.is_set() and not rospy.is_shutdown():
             if until is not None and self.time >= until - 1e-9:
                 break
@@ -563,9 +569,11 @@ class RosBridge:
                 self._stamps[m.topic] = msg.header.stamp.to_sec()
             self._state_lock.notify_all()
 
-    def _sync_state(self) -> None:
+    def _sync_state(self, retick: bool = False) -> None:
         """Timed, on the bridge's thread at time ``G``: with ``await_state``, wait until every stamped state
-        topic has a message stamped ``G`` or later; then send each robot's new values stamped ``G + L``."""
+        topic has a message stamped ``G`` or later; then send each robot's new values stamped ``G + L``.
+        ``retick``: publish ``/clock`` again every :data:`RETICK` s while waiting (the first state, see
+        :meth:`spin`)."""
         if self.await_state is not None:
             stamped = [m.topic for m in self.mappings if isinstance(m, (OdometryIn, ScanIn, RangeIn))]
             fresh = self.time - 2e-9 - 1e-9 * abs(self.time)  # ROS stamps are truncated to nanoseconds
@@ -573,9 +581,20 @@ class RosBridge:
             def arrived() -> bool:
                 return self._stop.is_set() or all(self._stamps.get(t, -math.inf) >= fresh for t in stamped)
 
-            with self._state_lock:
-                if not self._state_lock.wait_for(arrived, self.await_state):
-                    self.late_states += 1
+            deadline = _time.monotonic() + self.await_state
+            while True:
+                left = deadline - _time.monotonic()
+                with self._state_lock:
+                    if self._state_lock.wait_for(arrived, max(0.0, min(left, RETICK) if retick else left)):
+                        break
+                    if _time.monotonic() >= deadline:
+                        self.late_states += 1
+                        stale = {t: self._stamps.get(t) for t in stamped
+                                 if self._stamps.get(t, -math.inf) < fresh}
+                        print(f"ros_bridge: late state at {self.time!r}: nothing stamped {self.time!r} within "
+                              f"{self.await_state} s on {stale}", file=sys.stderr, flush=True)
+                        break
+                self._tick_clock()  # a tick at the node's own time only re-publishes its state
         with self._state_lock:
             pending, self._state = self._state, {}
         rtia = self._rtia()
@@ -625,6 +644,9 @@ class RosBridge:
         with self._state_lock:
             if not self._state_lock.wait_for(caught_up, self.await_state or 5.0):
                 self.late_acks += 1
+                behind = {a: (self._acks[a], n) for a, n in self._acked.items() if self._acks[a] < n}
+                print(f"ros_bridge: late acknowledgement before {self.time!r}: (taken, published) {behind}",
+                      file=sys.stderr, flush=True)
 
     def _tick_clock(self) -> None:
         if self._clock_pub is not None:

@@ -228,6 +228,7 @@ def test_bridge_reticks_until_the_nodes_first_state(roscore: dict[str, str], gat
         with running(start_bridge(roscore, gateway_address, "--robot-node", "rover", "--sensor", "none", "--clock",
                                   "--await-state", "5", "--wait-connections", "30", "--until", "0.3")) as bridge:
             stopped = bridge.out.wait_for("ros_bridge stopped", 60)
+            bridge.proc.wait(60)  # it resigns after that line
     assert bridge.status == 0 and "0 late states, 0 late acks" in stopped, bridge.lines
     seen = json.loads(deaf.lines[-1])
     assert seen["ignored"] == 2

@@ -199,10 +199,24 @@ def browser() -> Iterator[Any]:
         driver.quit()
 
 
+def federate_rows(driver: Any) -> list[dict[str, Any]]:
+    """The federates' rows as the page shows them (name, time, state, holding), read by one script: the page
+    redraws at each view, so an element found by one WebDriver call may be gone at the next."""
+    return list(driver.execute_script(
+        "return Array.from(document.querySelectorAll('tr.federate')).map(r => ({name: r.dataset.name, "
+        "time: r.querySelector('td.time').innerText, state: r.querySelector('td.state').innerText, "
+        "holding: r.classList.contains('holding')}));"))
+
+
+def page_texts(driver: Any, selector: str) -> list[str]:
+    """The text of each element matching `selector`, read by one script (see federate_rows)."""
+    return list(driver.execute_script("return Array.from(document.querySelectorAll(arguments[0])).map(e => e.innerText);",
+                                      selector))
+
+
 def row_times(driver: Any) -> dict[str, float]:
     """Each federate's logical time as the page shows it."""
-    return {row.get_attribute("data-name"): float(row.find_element("css selector", "td.time").text)
-            for row in driver.find_elements("css selector", "tr.federate")}
+    return {row["name"]: float(row["time"]) for row in federate_rows(driver)}
 
 
 def test_the_page_shows_a_lockstep_live_a_paused_federate_holding_it_back_and_a_killed_one_gone(
@@ -222,10 +236,10 @@ def test_the_page_shows_a_lockstep_live_a_paused_federate_holding_it_back_and_a_
             wait_for(lambda: all(row_times(browser)[n] > first[n] + 2 for n in names), 20, "the times advancing")
             # A paused federate (SIGSTOP, as a debugger's breakpoint) holds the others back.
             os.kill(peers["bravo"].pid, signal.SIGSTOP)
-            holding = wait_for(lambda: browser.find_elements("css selector", 'tr.federate.holding'), 20,
+            holding = wait_for(lambda: [row for row in federate_rows(browser) if row["holding"]], 20,
                                "bravo shown as holding the others back")
-            assert [row.get_attribute("data-name") for row in holding] == ["bravo"]
-            state = holding[0].find_element("css selector", "td.state").text
+            assert [row["name"] for row in holding] == ["bravo"]
+            state = holding[0]["state"]
             assert state.startswith("holding back ") and "alpha" in state and "charlie" in state
             frozen = row_times(browser)
             time.sleep(1.0)
@@ -234,14 +248,14 @@ def test_the_page_shows_a_lockstep_live_a_paused_federate_holding_it_back_and_a_
             # Killed, it disappears; the log says why; the others go on.
             os.kill(peers["bravo"].pid, signal.SIGKILL)
             wait_for(lambda: set(row_times(browser)) == {"alpha", "charlie"}, 20, "bravo gone from the page")
-            entry = wait_for(lambda: [li.text for li in browser.find_elements("css selector", "#log li.dropped")
-                                      if "'bravo'" in li.text], 20, "bravo's drop in the log")
+            entry = wait_for(lambda: [text for text in page_texts(browser, "#log li.dropped") if "'bravo'" in text],
+                             20, "bravo's drop in the log")
             assert "dropped: " in entry[0] and entry[0].lower().endswith("by peer"), entry  # closed, or reset
             after = row_times(browser)
             wait_for(lambda: all(row_times(browser)[n] > after[n] + 2 for n in ("alpha", "charlie")), 20,
                      "the others advancing again")
-            assert not browser.find_elements("css selector", "tr.federate.holding")
-            assert "gateway " + rtig.address in browser.find_element("id", "gateway").text
+            assert not [row for row in federate_rows(browser) if row["holding"]]
+            assert "gateway " + rtig.address in page_texts(browser, "#gateway")[0]
     finally:
         for peer in peers.values():
             peer.close()
@@ -261,12 +275,11 @@ def test_the_page_keeps_up_with_two_hundred_federates(browser: Any) -> None:
                 members.append(member)
             with gateway.monitor(interval=0.25) as monitor:
                 browser.get(monitor.url)
-                wait_for(lambda: len(browser.find_elements("css selector", "tr.federate")) == 200, 30,
-                         "200 rows")
+                wait_for(lambda: len(federate_rows(browser)) == 200, 30, "200 rows")
                 views = browser.execute_script("return window.hlacoreViews")
                 wait_for(lambda: browser.execute_script("return window.hlacoreViews") >= views + 8, 30,
                          "eight more views")
-                names = {row.get_attribute("data-name") for row in browser.find_elements("css selector", "tr.federate")}
+                names = {row["name"] for row in federate_rows(browser)}
                 assert names == {f"federate{i:03d}" for i in range(200)}
         finally:
             for member in members:

@@ -14,15 +14,23 @@ namespace {
 
 using C = wire::Callback;
 
-// (name, args), the name an interned str made once: the ambassador's method is looked up by it per callback.
-py::object named(C callback, py::tuple args) {
+// A callback to deliver: which one, and its arguments in PyHLA's order.
+struct Named {
+    C callback;
+    py::tuple args;
+};
+
+Named named(C callback, py::tuple args) { return {callback, std::move(args)}; }
+
+// The ambassador's method name of each callback, an interned str made once: it is looked up per callback.
+const py::object& method_name(C callback) {
     static const auto* names = [] {
         auto* interned = new std::array<py::object, static_cast<std::size_t>(C::Count)>();
         for (std::size_t i = 0; i < interned->size(); ++i)
             (*interned)[i] = py::reinterpret_steal<py::object>(PyUnicode_InternFromString(wire::kCallbackNames[i]));
         return interned;
     }();
-    return py::make_tuple((*names)[static_cast<std::size_t>(callback)], std::move(args));
+    return (*names)[static_cast<std::size_t>(callback)];
 }
 
 // The arguments of a callback that may carry a time: with one, the time and the EventRetractionHandle follow.
@@ -38,10 +46,10 @@ py::tuple object_attributes(const M& m, Extra&&... extra) {
     return py::make_tuple(ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes), std::forward<Extra>(extra)...);
 }
 
-// A queued message as (callback name, arguments), with PyHLA's argument order.
-py::object to_callback(const wire::Message& message) {
+// A queued message as the callback it is, with PyHLA's argument order.
+Named to_callback(const wire::Message& message) {
     return std::visit(
-        [](const auto& m) -> py::object {
+        [](const auto& m) -> Named {
             using M = std::decay_t<decltype(m)>;
             if constexpr (std::is_same_v<M, wire::SyncPointRegistrationSucceeded>) {
                 return named(C::synchronizationPointRegistrationSucceeded, py::make_tuple(to_str(m.label)));
@@ -144,12 +152,14 @@ int dispatch(Client& c, const py::object& ambassador, bool stop_after_grant, dou
         auto m = c.pop_callback();
         if (!m) break;
         ++delivered;
-        py::tuple callback = to_callback(*m);
+        const Named callback = to_callback(*m);
         const bool granted = std::holds_alternative<wire::TimeAdvanceGrant>(*m);
         c.recycle(std::move(*m));  // its values are Python's copies now
         if (!ambassador.is_none()) {
-            py::object method = py::getattr(ambassador, callback[0], py::none());
-            if (!method.is_none()) method(*callback[1]);
+            py::object method = py::getattr(ambassador, method_name(callback.callback), py::none());
+            // Called with the tuple as it is: method(*args) would build another one.
+            if (!method.is_none() && !py::reinterpret_steal<py::object>(PyObject_Call(method.ptr(), callback.args.ptr(), nullptr)))
+                throw py::error_already_set();
         }
         if (stop_after_grant && granted) break;
         if (max_seconds >= 0 && Client::Clock::now() >= deadline) break;

@@ -421,7 +421,10 @@ void Client::queue_send(std::unique_lock<std::mutex>& lock) {
         if (closed_) connection_lost();
     }
     if (!writer_.joinable()) writer_ = std::thread([this] { writer_loop(); });
-    pending_ += send_buffer_;
+    if (pending_.empty())
+        pending_.swap(send_buffer_);  // not copied: a large update would cost a copy of its values
+    else
+        pending_ += send_buffer_;
     writer_work_.notify_one();
     while (pending_.size() > kMaxPending) {
         {

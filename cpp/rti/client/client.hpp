@@ -563,7 +563,7 @@ private:
     class CallbackQueue {
     public:
         bool empty() const { return next_ == items_.size(); }
-        void push(wire::Message m) { items_.push_back(std::move(m)); }
+        void push(wire::Message&& m) { items_.push_back(std::move(m)); }
         wire::Message pop() {
             wire::Message m = std::move(items_[next_++]);
             if (next_ == items_.size()) {

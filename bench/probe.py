@@ -1,0 +1,126 @@
+"""CPU probes for A/Bs and profiles (docs/performance.md): one workload of the bench against its rtig, with
+each process's CPU read from /proc over the measured rounds. Prints one JSON line.
+
+    python -m bench.probe fanout [SUBSCRIBERS] [BURST] [ROUNDS]   8 B updates 1 → S: each subscriber's rate,
+                                                                   CPU per delivery (subscriber, rtig)
+    python -m bench.probe large [MIB] [BURST] [ROUNDS]            updates of MIB MiB 1 → 1: MB/s, CPU per update
+                                                                   of the sender, the rtig and the receiver
+    python -m bench.probe lockstep [FEDERATES] [STEPS]            TSO update, TAR, grant: wall and CPU per step
+                                                                   of the rtig and of each federate
+
+The rtig is bench_rtig()'s ($HLACORE_BENCH_RTIG overrides). For an A/B, run each side with its own package on
+PYTHONPATH, its own rtig and its own bench code, alternating; `perf record -p PID` on the pids printed with
+--pids profiles them while they run."""
+
+from __future__ import annotations
+
+import json
+import os
+import statistics
+import sys
+import time
+from typing import Any, Callable
+
+from .lockstep import Lockstep
+from .procs import bench_rtig, cpu_seconds
+from .throughput import Fanout
+
+
+def spent(pids: dict[str, int], run: Callable[[], None]) -> dict[str, float]:
+    """CPU seconds each process spent while `run` ran."""
+    before = {name: cpu_seconds(pid) for name, pid in pids.items()}
+    run()
+    return {name: cpu_seconds(pid) - before[name] for name, pid in pids.items()}
+
+
+def bursts(fanout: Fanout, rounds: int) -> list[float]:
+    """Seconds per burst, `rounds` times."""
+    times = []
+    for _ in range(rounds):
+        start = time.perf_counter()
+        fanout.burst()
+        times.append(time.perf_counter() - start)
+    return times
+
+
+def run_steps(federation: Lockstep, steps: int) -> None:
+    for _ in range(steps):
+        federation.step()
+
+
+def fanout(subscribers: int = 8, burst: int = 25_000, rounds: int = 6, show_pids: bool = False) -> dict[str, Any]:
+    with bench_rtig() as rtig:
+        f = Fanout(rtig.address, subscribers, burst)
+        try:
+            f.burst()  # warm-up
+            pids = {"rtig": rtig.child.pid, "sender": os.getpid()}
+            pids.update({f"subscriber{i}": peer.pid for i, peer in enumerate(f.peers)})
+            if show_pids:
+                print(json.dumps({"pids": pids}), flush=True)
+            times: list[float] = []
+            cpu = spent(pids, lambda: times.extend(bursts(f, rounds)))
+            f.finish()
+        finally:
+            f.close()
+    n = rounds * burst
+    per_subscriber = [cpu[name] / n * 1e6 for name in pids if name.startswith("subscriber")]
+    return {"rate_per_subscriber": burst / statistics.median(times),
+            "subscriber_us_per_delivery": statistics.mean(per_subscriber),
+            "rtig_us_per_delivery": cpu["rtig"] / (n * subscribers) * 1e6, "sender_us_per_update": cpu["sender"] / n * 1e6}
+
+
+def large(mib: float = 16, burst: int = 4, rounds: int = 6, show_pids: bool = False) -> dict[str, Any]:
+    size = int(mib * (1 << 20))
+    with bench_rtig() as rtig:
+        f = Fanout(rtig.address, 1, burst, payload=bytes(size))
+        try:
+            f.burst()
+            pids = {"sender": os.getpid(), "rtig": rtig.child.pid, "receiver": f.peers[0].pid}
+            if show_pids:
+                print(json.dumps({"pids": pids}), flush=True)
+            times: list[float] = []
+            cpu = spent(pids, lambda: times.extend(bursts(f, rounds)))
+            f.finish()
+        finally:
+            f.close()
+    n = rounds * burst
+    return {"mb_per_s": burst * size / statistics.median(times) / 1e6,
+            **{f"{name}_ms_per_update": cpu[name] / n * 1e3 for name in pids}}
+
+
+def lockstep(federates: int = 32, steps: int = 400, show_pids: bool = False) -> dict[str, Any]:
+    with bench_rtig() as rtig:
+        f = Lockstep(rtig.address, federates, max_steps=steps + 60)
+        try:
+            for _ in range(50):  # warm-up
+                f.step()
+            pids = {"rtig": rtig.child.pid, **{f"federate{i}": peer.pid for i, peer in enumerate(f.peers)}}
+            if show_pids:
+                print(json.dumps({"pids": pids}), flush=True)
+            start = time.perf_counter()
+            cpu = spent(pids, lambda: run_steps(f, steps))
+            wall = time.perf_counter() - start
+            f.finish()
+        finally:
+            f.close()
+    each = statistics.mean(cpu[name] for name in pids if name != "rtig") / steps * 1e6
+    return {"wall_us_per_step": wall / steps * 1e6, "rtig_us_per_step": cpu["rtig"] / steps * 1e6,
+            "federate_us_per_step": each, "us_per_federate_step": cpu["rtig"] / steps * 1e6 / federates + each}
+
+
+PROBES: dict[str, Callable[..., dict[str, Any]]] = {"fanout": fanout, "large": large, "lockstep": lockstep}
+
+
+def main(argv: list[str]) -> int:
+    show_pids = "--pids" in argv
+    args = [a for a in argv if a != "--pids"]
+    if not args or args[0] not in PROBES:
+        print(__doc__, file=sys.stderr)
+        return 2
+    numbers = [float(a) if "." in a else int(a) for a in args[1:]]
+    print(json.dumps(PROBES[args[0]](*numbers, show_pids=show_pids)), flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main(sys.argv[1:]))

@@ -7,6 +7,8 @@ each process's CPU read from /proc over the measured rounds. Prints one JSON lin
                                                                    of the sender, the rtig and the receiver
     python -m bench.probe lockstep [FEDERATES] [STEPS]            TSO update, TAR, grant: wall and CPU per step
                                                                    of the rtig and of each federate
+    python -m bench.probe lockstep-cpp [FEDERATES] [STEPS]        the same with bench/rtis's C++ program (built by
+                                                                   ./scripts/bench.sh) as the federates
 
 The rtig is bench_rtig()'s ($HLACORE_BENCH_RTIG overrides). For an A/B, run each side with its own package on
 PYTHONPATH, its own rtig and its own bench code, alternating; `perf record -p PID` on the pids printed with
@@ -16,13 +18,15 @@ from __future__ import annotations
 
 import json
 import os
+import resource
 import statistics
 import sys
 import time
-from typing import Any, Callable
+from typing import Any, Callable, Optional
 
 from .lockstep import Lockstep
 from .procs import bench_rtig, cpu_seconds
+from .three_rtis import Server, run
 from .throughput import Fanout
 
 
@@ -108,7 +112,28 @@ def lockstep(federates: int = 32, steps: int = 400, show_pids: bool = False) -> 
             "federate_us_per_step": each, "us_per_federate_step": cpu["rtig"] / steps * 1e6 / federates + each}
 
 
-PROBES: dict[str, Callable[..., dict[str, Any]]] = {"fanout": fanout, "large": large, "lockstep": lockstep}
+def lockstep_cpp(federates: int = 32, steps: int = 2000, show_pids: bool = False,
+                 binary: Optional[str] = None) -> dict[str, Any]:
+    """The federates' CPU from RUSAGE_CHILDREN (they are this process's children, waited for): their joins,
+    synchronizations and a tenth as many warm-up steps included, so slightly more than the loop's."""
+    server = Server("hlacore")
+    try:
+        if show_pids:
+            print(json.dumps({"pids": {"rtig": server.pid}}), flush=True)
+        rtig_before, children = cpu_seconds(server.pid), resource.getrusage(resource.RUSAGE_CHILDREN)
+        samples = run(server, "lockstep", federates, steps, steps // 10, binary=binary)["samples_ns"]
+        rtig = cpu_seconds(server.pid) - rtig_before
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    finally:
+        server.close()
+    total_steps = steps + steps // 10
+    each = ((after.ru_utime + after.ru_stime) - (children.ru_utime + children.ru_stime)) / federates / total_steps * 1e6
+    return {"wall_us_per_step": statistics.median(samples) / 1e3, "rtig_us_per_step": rtig / total_steps * 1e6,
+            "federate_us_per_step": each, "us_per_federate_step": rtig / total_steps * 1e6 / federates + each}
+
+
+PROBES: dict[str, Callable[..., dict[str, Any]]] = {"fanout": fanout, "large": large, "lockstep": lockstep,
+                                                    "lockstep-cpp": lockstep_cpp}
 
 
 def main(argv: list[str]) -> int:

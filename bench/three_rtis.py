@@ -93,6 +93,14 @@ class Server:
             self.close()
             raise
 
+    @property
+    def pid(self) -> int:
+        """The server process's pid (hlacore's rtig, OpenRTI's rtinode, CERTI's rtig)."""
+        if self._rtig is not None:
+            return self._rtig.child.pid
+        assert self._child is not None
+        return self._child.pid
+
     def close(self) -> None:
         if self._rtig is not None:
             self._rtig.stop()

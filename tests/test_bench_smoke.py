@@ -15,7 +15,7 @@ from bench.lossy_stream import stream_through_loss
 from bench.procs import cpu_seconds, watching
 from bench.outputs import results_markdown
 from bench.pingpong import PingPong
-from bench.probe import PROBES
+from bench.probe import PROBES, lockstep_cpp
 from bench.report import Report, expected_keys, three_rtis_keys
 from bench.three_rtis import Server, run
 from bench.save_restore import SaveRestore
@@ -135,6 +135,12 @@ def test_probe_runs_its_workload_and_reads_the_cpu(probe: str, args: tuple, figu
     assert set(result) == figures and all(v >= 0 for v in result.values())
     assert result.get("rate_per_subscriber", 1) > 0 and result.get("mb_per_s", 1) > 0
     assert result.get("wall_us_per_step", 1) > 0
+
+
+def test_probe_of_the_cpp_lockstep_reads_its_federates_cpu() -> None:
+    result = lockstep_cpp(3, 30, binary=cpp_federate("hla13_bench"))
+    assert result["wall_us_per_step"] > 0 and result["federate_us_per_step"] > 0  # RUSAGE_CHILDREN: µs, not ticks
+    assert result["us_per_federate_step"] >= result["federate_us_per_step"]
 
 
 @pytest.mark.parametrize("levels", [1, 3])

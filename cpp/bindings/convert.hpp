@@ -115,7 +115,10 @@ struct HandleSlots {
     }
 
     static PyObject* compare(PyObject* self, PyObject* other, int op) {
-        if (op != Py_EQ && op != Py_NE) return ordering(self, other, op);
+        if (op != Py_EQ && op != Py_NE) {
+            if (!ordering) Py_RETURN_NOTIMPLEMENTED;
+            return ordering(self, other, op);
+        }
         py::detail::make_caster<H> a, b;
         if (!a.load(self, false) || !b.load(other, false)) Py_RETURN_NOTIMPLEMENTED;
         const bool equal = py::detail::cast_op<const H&>(a).value == py::detail::cast_op<const H&>(b).value;

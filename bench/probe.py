@@ -52,6 +52,21 @@ def run_steps(federation: Lockstep, steps: int) -> None:
         federation.step()
 
 
+def announce(pids: dict[str, int], show_pids: bool) -> None:
+    if show_pids:
+        print(json.dumps({"pids": pids}), flush=True)
+
+
+def measured_bursts(f: Fanout, pids: dict[str, int], rounds: int, show_pids: bool) -> tuple[list[float], dict[str, float]]:
+    """Seconds per burst over `rounds` bursts and the CPU seconds each of `pids` spent meanwhile; then the
+    fan-out's final check of every count."""
+    announce(pids, show_pids)
+    times: list[float] = []
+    cpu = spent(pids, lambda: times.extend(bursts(f, rounds)))
+    f.finish()
+    return times, cpu
+
+
 def fanout(subscribers: int = 8, burst: int = 25_000, rounds: int = 6, show_pids: bool = False) -> dict[str, Any]:
     with bench_rtig() as rtig:
         f = Fanout(rtig.address, subscribers, burst)
@@ -59,11 +74,7 @@ def fanout(subscribers: int = 8, burst: int = 25_000, rounds: int = 6, show_pids
             f.burst()  # warm-up
             pids = {"rtig": rtig.child.pid, "sender": os.getpid()}
             pids.update({f"subscriber{i}": peer.pid for i, peer in enumerate(f.peers)})
-            if show_pids:
-                print(json.dumps({"pids": pids}), flush=True)
-            times: list[float] = []
-            cpu = spent(pids, lambda: times.extend(bursts(f, rounds)))
-            f.finish()
+            times, cpu = measured_bursts(f, pids, rounds, show_pids)
         finally:
             f.close()
     n = rounds * burst
@@ -80,11 +91,7 @@ def large(mib: float = 16, burst: int = 4, rounds: int = 6, show_pids: bool = Fa
         try:
             f.burst()
             pids = {"sender": os.getpid(), "rtig": rtig.child.pid, "receiver": f.peers[0].pid}
-            if show_pids:
-                print(json.dumps({"pids": pids}), flush=True)
-            times: list[float] = []
-            cpu = spent(pids, lambda: times.extend(bursts(f, rounds)))
-            f.finish()
+            times, cpu = measured_bursts(f, pids, rounds, show_pids)
         finally:
             f.close()
     n = rounds * burst
@@ -99,8 +106,7 @@ def lockstep(federates: int = 32, steps: int = 400, show_pids: bool = False) -> 
             for _ in range(50):  # warm-up
                 f.step()
             pids = {"rtig": rtig.child.pid, **{f"federate{i}": peer.pid for i, peer in enumerate(f.peers)}}
-            if show_pids:
-                print(json.dumps({"pids": pids}), flush=True)
+            announce(pids, show_pids)
             start = time.perf_counter()
             cpu = spent(pids, lambda: run_steps(f, steps))
             wall = time.perf_counter() - start
@@ -118,8 +124,7 @@ def lockstep_cpp(federates: int = 32, steps: int = 2000, show_pids: bool = False
     synchronizations and a tenth as many warm-up steps included, so slightly more than the loop's."""
     server = Server("hlacore")
     try:
-        if show_pids:
-            print(json.dumps({"pids": {"rtig": server.pid}}), flush=True)
+        announce({"rtig": server.pid}, show_pids)
         rtig_before, children = cpu_seconds(server.pid), resource.getrusage(resource.RUSAGE_CHILDREN)
         samples = run(server, "lockstep", federates, steps, steps // 10, binary=binary)["samples_ns"]
         rtig = cpu_seconds(server.pid) - rtig_before

@@ -2,12 +2,16 @@
 // the gateway's reactor (gateway.cpp) and its datagrams (datagrams.cpp).
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <string>
+#include <string_view>
 
 #include <sys/socket.h>
+#include <sys/uio.h>
 
 #include "rti/server/gateway.hpp"
 #include "rti/wire/datagram.hpp"
@@ -29,6 +33,15 @@ struct Gateway::Connection {
     wire::ReadBuffer in;
     std::string out;
     std::size_t out_offset = 0;
+    // Large values of forwarded updates and interactions, written from the sender's read block (kept alive
+    // here) rather than copied into `out`: each goes into the stream at offset `at` of `out`, in order.
+    struct Splice {
+        std::size_t at;
+        std::shared_ptr<const char[]> block;
+        std::string_view bytes;  // what is left to write
+    };
+    std::deque<Splice> splices;
+    std::size_t splice_bytes = 0;
     // Released held messages waiting to enter `out` as the client takes what is there (at most kPacedBytes
     // at a time), then `tail`: what was written for the client meanwhile, kept behind them.
     std::deque<std::string> backlog;
@@ -65,6 +78,59 @@ struct Gateway::Connection {
     std::uint64_t datagram_sequence = 0;
     wire::SequenceWindow datagram_window;
     wire::DatagramStats datagrams;
+
+    // What is written for the client and not taken yet: `out` from out_offset on, and the splices.
+    std::size_t unsent() const { return out.size() - out_offset + splice_bytes; }
+    // `n` more bytes were taken, in stream order.
+    void sent(std::size_t n) {
+        while (n > 0) {
+            const std::size_t before = (splices.empty() ? out.size() : splices.front().at) - out_offset;
+            if (before > 0) {
+                const std::size_t k = std::min(n, before);
+                out_offset += k;
+                n -= k;
+                continue;
+            }
+            if (splices.empty()) return;
+            Splice& s = splices.front();
+            const std::size_t k = std::min(n, s.bytes.size());
+            s.bytes.remove_prefix(k);
+            splice_bytes -= k;
+            n -= k;
+            if (s.bytes.empty()) splices.pop_front();
+        }
+    }
+    // One sendmsg (MSG_NOSIGNAL) of what is queued, in stream order: `out` around the splices and their values.
+    ssize_t send_spliced() const {
+        constexpr int kMaxPieces = 32;
+        iovec pieces[kMaxPieces];
+        int n = 0;
+        auto piece = [&](const char* p, std::size_t size) {
+            if (size > 0) pieces[n++] = iovec{const_cast<char*>(p), size};
+        };
+        std::size_t at = out_offset;
+        bool all = true;
+        for (const Splice& s : splices) {
+            if (n + 2 > kMaxPieces) {
+                all = false;
+                break;
+            }
+            piece(out.data() + at, s.at - at);
+            piece(s.bytes.data(), s.bytes.size());
+            at = s.at;
+        }
+        if (all) piece(out.data() + at, out.size() - at);
+        msghdr message{};
+        message.msg_iov = pieces;
+        message.msg_iovlen = static_cast<std::size_t>(n);
+        return ::sendmsg(fd, &message, MSG_NOSIGNAL);
+    }
+    // Drops out[0, out_offset), which was taken.
+    void drop_sent() {
+        out.erase(0, out_offset);
+        for (Splice& s : splices) s.at -= out_offset;
+        out_offset = 0;
+    }
 };
 
 }  // namespace hlacore

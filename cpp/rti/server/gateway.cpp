@@ -74,6 +74,8 @@ public:
         auto it = peers_.find(federate);
         return it != peers_.end() && gateway_.send_datagram(*it->second, frame);
     }
+    bool send_spliced(FederateHandle federate, const wire::ForwardedReflection& m) override { return spliced(federate, m); }
+    bool send_spliced(FederateHandle federate, const wire::ForwardedInteraction& m) override { return spliced(federate, m); }
     void held(FederateHandle federate) override {
         auto it = peers_.find(federate);
         if (it != peers_.end()) gateway_.mark_dirty(*it->second);
@@ -90,6 +92,35 @@ public:
     std::unordered_map<FederateHandle, Connection*> peers_;
 
 private:
+    // Appends to a connection's output, except the large values that lie in the frame being served: those
+    // are spliced in, referenced rather than copied.
+    struct SplicingOutput {
+        Connection& c;
+        const SpliceSource& source;
+        void append(const char* p, std::size_t n) {
+            const std::less_equal<const char*> le;
+            if (n >= kSplicedValueBytes && le(source.frame.data(), p) && le(p + n, source.frame.data() + source.frame.size())) {
+                c.splices.push_back({c.out.size(), source.block, std::string_view(p, n)});
+                c.splice_bytes += n;
+                return;
+            }
+            c.out.append(p, n);
+        }
+        void append(const std::string& s) { c.out.append(s); }
+    };
+    template <class M>
+    bool spliced(FederateHandle federate, const M& m) {
+        auto it = peers_.find(federate);
+        if (!gateway_.splice_source_.block || it == peers_.end()) return false;
+        Connection& c = *it->second;
+        // TLS encrypts from one buffer, the trace reads the frames in `out`, and output() is `tail` while
+        // there is a backlog.
+        if (c.ssl || gateway_.trace_ || !c.backlog.empty()) return false;
+        gateway_.mark_dirty(c);
+        SplicingOutput output{c, gateway_.splice_source_};
+        wire::encode_to(output, m);
+        return true;
+    }
     Gateway& gateway_;
     std::string discard_;
 };
@@ -521,7 +552,7 @@ void Gateway::release_large_buffers() {
     bool in_use = false;  // a large buffer not empty yet: tried again on the next turn of the loop
     for (auto& [fd, c] : connections_) {
         c->in.release_above(kKeptBufferBytes);
-        if (c->out_offset == c->out.size() && c->out.capacity() > kKeptBufferBytes) {
+        if (c->unsent() == 0 && c->out.capacity() > kKeptBufferBytes) {
             std::string().swap(c->out);
             c->out_offset = 0;
         }
@@ -564,18 +595,25 @@ void check_forwardable(const wire::Frame& frame, std::uint32_t max_frame_bytes) 
 }
 }  // namespace
 
+template <class View>
+void Gateway::serve_view(Connection& c, const wire::Frame& frame) {
+    check_forwardable(frame, options_.max_frame_bytes);
+    const View view = wire::decode_as<View>(frame);
+    if (frame.payload.size() < kSplicedValueBytes) return serve(c, view);
+    struct Scope {  // the block is let go once served, whatever happens
+        SpliceSource& source;
+        ~Scope() { source = {}; }
+    } scope{splice_source_};
+    splice_source_ = {c.in.share(), frame.payload};
+    serve(c, view);
+}
+
 void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
     // Updates and interactions, when nothing needs them whole (the trace, the recorder): served with their
     // values viewed in the frame rather than copied out of it, a camera frame's megabytes included.
     if (c.greeted && c.challenge.empty() && !trace_ && !recorder_) {
-        if (frame.type == wire::MessageType::UpdateAttributes) {
-            check_forwardable(frame, options_.max_frame_bytes);
-            return serve(c, wire::decode_as<wire::UpdateAttributesView>(frame));
-        }
-        if (frame.type == wire::MessageType::SendInteraction) {
-            check_forwardable(frame, options_.max_frame_bytes);
-            return serve(c, wire::decode_as<wire::SendInteractionView>(frame));
-        }
+        if (frame.type == wire::MessageType::UpdateAttributes) return serve_view<wire::UpdateAttributesView>(c, frame);
+        if (frame.type == wire::MessageType::SendInteraction) return serve_view<wire::SendInteractionView>(c, frame);
     }
     wire::Message message = wire::decode(frame);
     if (!c.greeted) {
@@ -913,14 +951,14 @@ void Gateway::mark_dirty(Connection& c) {
 std::string& Gateway::output(Connection& c) { return c.backlog.empty() ? c.out : c.tail; }
 
 std::size_t Gateway::held_for(const Connection& c) const {
-    const std::size_t queued = c.out.size() - c.out_offset + c.backlog_bytes + c.tail.size();
+    const std::size_t queued = c.unsent() + c.backlog_bytes + c.tail.size();
     return c.federation ? queued + c.federation->federation.held_bytes(c.federate) : queued;
 }
 
 void Gateway::pause(Connection& producer, const Connection& consumer) {
     // A client over its budget with messages only its own requests release (a time advance) is not held
     // back from sending them; one whose output queue alone is over it is (it asks more than it reads).
-    if (&producer == &consumer && producer.out.size() - producer.out_offset <= options_.client_budget) return;
+    if (&producer == &consumer && producer.unsent() <= options_.client_budget) return;
     // Two clients holding each other back (each over its budget with the other's messages) would wait for
     // ever: the one that closes the circle is not paused and its consumer goes over budget instead.
     for (int fd = consumer.fd, steps = 0; steps <= static_cast<int>(paused_.size()); ++steps) {
@@ -990,7 +1028,7 @@ void Gateway::drop_stalled_readers() {
     for (const auto& [fd, c] : connections_) {
         const double idle = std::chrono::duration<double>(now - c->progress_at).count();
         if (c->write_armed && idle > options_.stall_timeout_s && held_for(*c) > options_.client_budget / 2)
-            stalled.emplace_back(fd, "not reading: " + std::to_string(c->out.size() - c->out_offset) +
+            stalled.emplace_back(fd, "not reading: " + std::to_string(c->unsent()) +
                                          " bytes queued, none taken for " + std::to_string(static_cast<int>(idle)) +
                                          " s (budget " + std::to_string(options_.client_budget) + ")");
     }
@@ -1017,21 +1055,20 @@ void Gateway::flush(Connection& c) {
         c.idle = false;
         c.progress_at = Clock::now();
     }
-    while (c.out_offset < c.out.size()) {
+    while (c.unsent() > 0) {
         std::string error;
         const long n = write_some(c, error);
         if (n > 0) {
-            c.out_offset += static_cast<std::size_t>(n);
+            c.sent(static_cast<std::size_t>(n));
             c.progress_at = Clock::now();
-            if (c.out.size() - c.out_offset < kPacedBytes) refill(c);
+            if (c.unsent() < kPacedBytes) refill(c);
             continue;
         }
         if (n == 0) break;
         close(c.fd, error);
         return;
     }
-    const std::size_t queued = c.out.size() - c.out_offset;
-    if (queued == 0) {
+    if (c.unsent() == 0) {
         // A queue that once grew large gives its buffer back rather than keeping it for the connection's life.
         if (c.out.capacity() > kKeptBufferBytes && !keeping_large_buffers()) std::string().swap(c.out);
         c.out.clear();
@@ -1045,9 +1082,8 @@ void Gateway::flush(Connection& c) {
         return;
     }
     if (c.out_offset > (1u << 20) && c.out_offset > c.out.size() / 2) {
-        c.out.erase(0, c.out_offset);
         c.traced = c.traced > c.out_offset ? c.traced - c.out_offset : 0;
-        c.out_offset = 0;
+        c.drop_sent();
     }
     if (!c.write_armed) {
         c.write_armed = true;
@@ -1059,7 +1095,8 @@ long Gateway::write_some(Connection& c, std::string& error) {
     const std::size_t left = c.out.size() - c.out_offset;
     if (!c.ssl) {
         for (;;) {
-            const ssize_t n = ::send(c.fd, c.out.data() + c.out_offset, left, MSG_NOSIGNAL);
+            const ssize_t n = c.splices.empty() ? ::send(c.fd, c.out.data() + c.out_offset, left, MSG_NOSIGNAL)
+                                                : c.send_spliced();
             if (n > 0) return static_cast<long>(n);
             if (n < 0 && errno == EINTR) continue;
             if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return 0;
@@ -1093,11 +1130,10 @@ long Gateway::write_some(Connection& c, std::string& error) {
 void Gateway::move_backlog(Connection& c) {
     if (c.backlog.empty()) return;
     if (c.out_offset == c.out.size()) {
-        c.out.clear();
-        c.out_offset = 0;
+        c.drop_sent();
         c.traced = 0;
     }
-    while (!c.backlog.empty() && c.out.size() - c.out_offset < kPacedBytes) {
+    while (!c.backlog.empty() && c.unsent() < kPacedBytes) {
         c.out.append(c.backlog.front());
         c.backlog_bytes -= c.backlog.front().size();
         c.backlog.pop_front();

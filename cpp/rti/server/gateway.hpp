@@ -187,6 +187,15 @@ private:
     bool large_buffers_kept_ = false;  // since then, buffers above it may be kept for the next one
     std::unique_ptr<MessageTrace> trace_;
     std::unique_ptr<Recorder> recorder_;
+    // While an update or interaction of at least kSplicedValueBytes is served from its frame: the frame and
+    // the read block it lies in, which its large values are written to the receivers from (server/outbox.hpp).
+    struct SpliceSource {
+        std::shared_ptr<const char[]> block;
+        std::string_view frame;
+    };
+    SpliceSource splice_source_;
+    template <class View>
+    void serve_view(Connection& c, const wire::Frame& frame);
     EventLog events_;  // joins, resigns and drops, for the status report
     void recorder_failed();  // logs why recording into the file stopped, once
     // Has the federation's outbox hand its callbacks to the recorder (made now if there is none).

@@ -32,6 +32,20 @@ template <class M>
 constexpr bool kRecordedCallback =
     M::kType != wire::MessageType::ReflectAttributes && M::kType != wire::MessageType::ReceiveInteraction;
 
+// A forwarded value from this size on may be written to its receivers from the frame it came in, rather
+// than copied into each one's output (Outbox::send_spliced).
+constexpr std::size_t kSplicedValueBytes = 256u << 10;
+
+template <class M>
+constexpr bool kForwarded = std::is_same_v<M, wire::ForwardedReflection> || std::is_same_v<M, wire::ForwardedInteraction>;
+
+template <class M>
+bool has_spliced_value(const M& forwarded) {
+    for (const auto* value : forwarded.values)
+        if (value->second.size() >= kSplicedValueBytes) return true;
+    return false;
+}
+
 // Where a federation writes the frames it sends: the output buffer of a federate's connection.
 class Outbox {
 public:
@@ -54,7 +68,20 @@ public:
     template <class M>
     void send_unheld(FederateHandle federate, const M& message) {
         record(federate, message);
+        if constexpr (kForwarded<M>) {
+            if (has_spliced_value(message) && send_spliced(federate, message)) return;
+        }
         wire::encode(buffer(federate), message);
+    }
+    // A forwarded update or interaction with a large value, written with its large values referenced where
+    // they were read (the gateway's splices, server/connection.hpp); false: the caller copies it.
+    virtual bool send_spliced(FederateHandle federate, const wire::ForwardedReflection& message) {
+        (void)federate, (void)message;
+        return false;
+    }
+    virtual bool send_spliced(FederateHandle federate, const wire::ForwardedInteraction& message) {
+        (void)federate, (void)message;
+        return false;
     }
     void send_frame(FederateHandle federate, const std::string& frame) { buffer(federate).append(frame); }
     // Frames released at once (held messages): the gateway writes them as the federate takes them, freeing

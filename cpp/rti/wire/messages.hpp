@@ -1376,6 +1376,18 @@ std::size_t frame_length(const M& m) {
     return 2 + count.bytes;
 }
 
+// Appends one complete frame holding `m` to `out`, which only appends (like ByteCount): its header is
+// written first, from frame_length(). The gateway's splicing output (server/outbox.hpp) is one.
+template <class Out, class M>
+void encode_to(Out& out, const M& m) {
+    const auto length = static_cast<std::uint32_t>(frame_length(m));
+    const auto type = static_cast<std::uint16_t>(M::kType);
+    out.append(reinterpret_cast<const char*>(&length), 4);
+    out.append(reinterpret_cast<const char*>(&type), 2);
+    BasicWriter<Out> w(out);
+    m.fields(w);
+}
+
 struct Frame {
     MessageType type = MessageType::Invalid;
     std::string_view payload;

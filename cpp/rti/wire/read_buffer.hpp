@@ -1,6 +1,9 @@
 // What one end of a connection has read and not used yet: one block that the socket is read into directly,
 // and that a large frame reserves whole as soon as its header is in (one allocation, no copy as it grows:
 // growing a string by doubling copied a 16 MiB camera frame four times and mapped fresh pages for each).
+// The gateway may share the block (share()) to write a large value on from where it was read; a shared
+// block is not written again: the next read goes to the spare block (the one shared before, once nobody
+// else holds it), so that a stream of camera frames alternates between two blocks.
 #pragma once
 
 #include <algorithm>
@@ -36,15 +39,26 @@ public:
     // Room for `n` more bytes at the end; read into it, then commit() what was read.
     char* room(std::size_t n) {
         const std::size_t pending = end_ - begin_;
-        if (capacity_ - end_ >= n) return data_.get() + end_;
-        if (capacity_ >= pending + n) {  // what was used makes the room
+        const bool shared = data_.use_count() > 1;  // its bytes are still being written elsewhere
+        if (!shared && capacity_ - end_ >= n) return data_.get() + end_;
+        if (!shared && capacity_ >= pending + n) {  // what was used makes the room
             std::memmove(data_.get(), data_.get() + begin_, pending);
         } else {
             // Exactly what is asked for a frame larger than a chunk (it reserves its whole length once);
             // doubled for small frames, so that reads of them stay amortized.
-            const std::size_t size = n > kChunk ? pending + n : std::max(pending + n, 2 * capacity_);
-            std::unique_ptr<char[]> block(new char[size]);
+            std::size_t size = n > kChunk ? pending + n : std::max(pending + n, shared ? kChunk : 2 * capacity_);
+            std::shared_ptr<char[]> block;
+            if (spare_.use_count() == 1 && spare_capacity_ >= size) {
+                block.swap(spare_);
+                size = spare_capacity_;
+            } else {
+                block.reset(new char[size]);
+            }
             if (pending) std::memcpy(block.get(), data_.get() + begin_, pending);
+            if (shared) {
+                spare_ = std::move(data_);
+                spare_capacity_ = capacity_;
+            }
             data_ = std::move(block);
             capacity_ = size;
         }
@@ -60,15 +74,23 @@ public:
     }
     // Gives the block back when nothing is unread and it is larger than `keep`.
     void release_above(std::size_t keep) {
+        if (spare_capacity_ > keep) {
+            spare_.reset();
+            spare_capacity_ = 0;
+        }
         if (begin_ == end_ && capacity_ > keep) {
             data_.reset();
             capacity_ = begin_ = end_ = 0;
         }
     }
     void clear() { begin_ = end_ = 0; }
+    // The block, for bytes viewed in it to outlive their use here (see room()).
+    std::shared_ptr<const char[]> share() const { return data_; }
 
 private:
-    std::unique_ptr<char[]> data_;
+    std::shared_ptr<char[]> data_;
+    std::shared_ptr<char[]> spare_;
+    std::size_t spare_capacity_ = 0;
     std::size_t capacity_ = 0;
     std::size_t begin_ = 0;
     std::size_t end_ = 0;

@@ -19,7 +19,7 @@ from conftest import ROBOT_FED, RtigProcess, running_rtig
 
 PEER = pathlib.Path(__file__).parent / "peers" / "frozen_gateway.py"
 CALLS = ["RTIAmbassador", "createFederationExecution", "joinFederationExecution", "registerObjectInstance",
-         "queryLBTS", "resignFederationExecution", "tick", "updateAttributeValues", "sendInteraction"]
+         "queryLBTS", "resignFederationExecution", "tick", "advance_to", "updateAttributeValues", "sendInteraction"]
 
 
 @pytest.fixture

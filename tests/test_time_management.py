@@ -345,7 +345,7 @@ def test_await_grant_times_out_with_the_request_still_pending(federation: Join) 
     a, b = federation("a"), federation("b")
     a.enable_time()
     b.enable_time()
-    with pytest.raises(TimeoutError):
+    with pytest.raises(TimeoutError, match=r"^no time advance grant within 0\.2 s$"):
         a.rtia.advance_to(5.0, timeout=0.2)  # b has not moved: LBTS(a) = 1
     with pytest.raises(rti.TimeAdvanceAlreadyInProgress):
         a.rtia.timeAdvanceRequest(6.0)

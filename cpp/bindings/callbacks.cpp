@@ -141,6 +141,18 @@ Named to_callback(const wire::Message& message) {
         message);
 }
 
+// The ambassador's method `name`, or null when it has none, without the AttributeError that getattr would
+// build and clear for each callback an ambassador leaves out (timeAdvanceGrant, often once per step).
+py::object optional_method(const py::object& ambassador, const py::object& name) {
+    PyObject* method = nullptr;
+#if PY_VERSION_HEX >= 0x030D0000
+    if (PyObject_GetOptionalAttr(ambassador.ptr(), name.ptr(), &method) < 0) throw py::error_already_set();
+#else
+    if (_PyObject_LookupAttr(ambassador.ptr(), name.ptr(), &method) < 0) throw py::error_already_set();
+#endif
+    return py::reinterpret_steal<py::object>(method);
+}
+
 // Delivers queued callbacks to the ambassador's methods of the same name (absent ones are skipped), for
 // at most max_seconds (< 0: no limit), stopping after a time advance grant if asked. Returns how many were
 // delivered. The loop is here rather than in Python because it runs once per reflection.
@@ -156,9 +168,9 @@ int dispatch(Client& c, const py::object& ambassador, bool stop_after_grant, dou
         const bool granted = std::holds_alternative<wire::TimeAdvanceGrant>(*m);
         c.recycle(std::move(*m));  // its values are Python's copies now
         if (!ambassador.is_none()) {
-            py::object method = py::getattr(ambassador, method_name(callback.callback), py::none());
+            const py::object method = optional_method(ambassador, method_name(callback.callback));
             // Called with the tuple as it is: method(*args) would build another one.
-            if (!method.is_none() && !py::reinterpret_steal<py::object>(PyObject_Call(method.ptr(), callback.args.ptr(), nullptr)))
+            if (method && !py::reinterpret_steal<py::object>(PyObject_Call(method.ptr(), callback.args.ptr(), nullptr)))
                 throw py::error_already_set();
         }
         if (stop_after_grant && granted) break;
@@ -180,6 +192,31 @@ bool wait_for_callback(Client& c, double timeout_s) {
         }
         if (status != Client::WaitStatus::Interrupted) return status == Client::WaitStatus::Ready;
         if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+}
+
+// rti.py's await_grant: delivers what is ready up to the grant, waiting for the socket in between (the GIL
+// released, Ctrl-C interrupts), until the pending time advance is granted; TimeoutError after timeout_s.
+// Here rather than in Python: it runs once per step of every time-managed federate.
+double await_grant(Client& c, std::optional<double> timeout_s) {
+    if (!c.time_advance_pending()) throw RtiError(ErrorCode::TimeAdvanceWasNotInProgress, "no time advance is pending");
+    const py::object self = py::cast(&c, py::return_value_policy::reference);
+    const py::object ambassador = py::getattr(self, "_federate_ambassador", py::none());
+    const auto start = Client::Clock::now();
+    for (;;) {
+        while (c.time_advance_pending() && dispatch(c, ambassador, true, -1.0) > 0) {
+        }
+        if (!c.time_advance_pending()) return c.query_federate_time();
+        double remaining = -1.0;
+        if (timeout_s) {
+            remaining = *timeout_s - std::chrono::duration<double>(Client::Clock::now() - start).count();
+            if (remaining <= 0) {
+                const std::string seconds = py::str(py::float_(*timeout_s));
+                PyErr_SetString(PyExc_TimeoutError, ("no time advance grant within " + seconds + " s").c_str());
+                throw py::error_already_set();
+            }
+        }
+        wait_for_callback(c, remaining);
     }
 }
 
@@ -225,6 +262,7 @@ void bind_callbacks(Ambassador& rtia) {
         .def("_poll", &Client::poll_now, py::call_guard<py::gil_scoped_release>())
         .def("_wait", &wait_for_callback, py::arg("timeout"))
         .def("_has_callbacks", &Client::has_callbacks)
+        .def("_await_grant", &await_grant, py::arg("timeout"))
         .def("_dispatch", &dispatch, py::arg("ambassador"), py::arg("stop_after_grant"), py::arg("max_seconds"));
 }
 

@@ -647,11 +647,7 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         For a request made with any of the five PyHLA calls. Raises :class:`TimeAdvanceWasNotInProgress`
         when no request is pending and :class:`TimeoutError` when ``timeout`` seconds pass first.
         """
-        if not self._time_advance_pending():
-            raise _core.TimeAdvanceWasNotInProgress("no time advance is pending")
-        # _wait reads the socket: deliver_until_granted need not.
-        self._deliver_until(lambda: self.deliver_until_granted(read=False), timeout, "no time advance grant")
-        return float(self.queryFederateTime())
+        return self._await_grant(timeout)
 
     def _deliver_until(self, delivered: Callable[[], bool], timeout: Optional[float], what: str) -> None:
         """Call `delivered` (it delivers what is ready) until it returns True, waiting for the socket in

@@ -59,6 +59,8 @@ def blocking_calls(address: str, timeout: float) -> dict[str, Callable[[], objec
     lbts = joined(address, "lbts", timeout)
     resigner = joined(address, "resigner", timeout)
     ticker = joined(address, "ticker", timeout)
+    advancer = joined(address, "advancer", timeout)
+    advancer.enable_time_management(1.0, timeout=30.0)
     return {
         "RTIAmbassador": lambda: rti.RTIAmbassador(address, timeout=timeout),
         "createFederationExecution": lambda: creator.createFederationExecution("Other", "robot.fed"),
@@ -67,6 +69,7 @@ def blocking_calls(address: str, timeout: float) -> dict[str, Callable[[], objec
         "queryLBTS": lbts.queryLBTS,
         "resignFederationExecution": lambda: resigner.resignFederationExecution(rti.ResignAction.NoAction),
         "tick": lambda: ticker.tick(10 * timeout, 10 * timeout),
+        "advance_to": lambda: advancer.advance_to(5.0, timeout=10 * timeout),
         "updateAttributeValues": publisher(address, "publisher", timeout),
         "sendInteraction": interaction_sender(address, "sender", timeout),
     }

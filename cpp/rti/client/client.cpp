@@ -341,16 +341,86 @@ template <class M>
 void Client::send(const M& message) {
     auto lock = lock_send();
     if constexpr (federation_service(M::kType)) require_member(M::kType);
+    if constexpr (std::is_same_v<M, wire::UpdateAttributesView> || std::is_same_v<M, wire::SendInteractionView>) {
+        if (!ssl_ && !writer_busy_ && pending_.empty() && wire::has_spliced_value(message.values)) return send_spliced(message);
+    }
     send_buffer_.clear();
     wire::encode(send_buffer_, message);
-    if (send_buffer_.size() - 4 > max_frame_bytes_) {  // a name, tag or FED beyond reason: refused, not sent
-        const std::size_t length = send_buffer_.size() - 4;
-        send_buffer_.clear();
-        raise(ErrorCode::ValueLengthExceeded, std::string(wire::message_name(M::kType)) + " of " +
-                                                  std::to_string(length) + " bytes is over the gateway's frame limit of " +
-                                                  std::to_string(max_frame_bytes_) + " bytes");
-    }
+    check_frame_length(M::kType, send_buffer_.size() - 4);
     send_encoded(lock);
+}
+
+void Client::check_frame_length(wire::MessageType type, std::size_t length) {
+    if (length <= max_frame_bytes_) return;
+    send_buffer_.clear();  // a name, tag or FED beyond reason: refused, not sent
+    raise(ErrorCode::ValueLengthExceeded, std::string(wire::message_name(type)) + " of " + std::to_string(length) +
+                                              " bytes is over the gateway's frame limit of " +
+                                              std::to_string(max_frame_bytes_) + " bytes");
+}
+
+namespace {
+// Appends to a send buffer, except the values of wire::kSplicedValueBytes or more: their place is noted.
+struct SplicingBuffer {
+    std::string& out;
+    std::vector<std::pair<std::size_t, std::string_view>>& splices;
+    void append(const char* p, std::size_t n) {
+        if (n >= wire::kSplicedValueBytes) {
+            splices.emplace_back(out.size(), std::string_view(p, n));
+            return;
+        }
+        out.append(p, n);
+    }
+    void append(const std::string& s) { out.append(s); }
+};
+}  // namespace
+
+template <class M>
+void Client::send_spliced(const M& message) {
+    check_frame_length(M::kType, wire::frame_length(message));
+    send_buffer_.clear();
+    std::vector<std::pair<std::size_t, std::string_view>> splices;
+    SplicingBuffer out{send_buffer_, splices};
+    wire::encode_to(out, message);
+    std::vector<iovec> pieces;
+    std::size_t at = 0;
+    for (const auto& [position, value] : splices) {
+        if (position > at) pieces.push_back({send_buffer_.data() + at, position - at});
+        pieces.push_back({const_cast<char*>(value.data()), value.size()});
+        at = position;
+    }
+    if (at < send_buffer_.size()) pieces.push_back({send_buffer_.data() + at, send_buffer_.size() - at});
+    ++messages_sent_;
+    write_pieces(pieces, options_.wait_host);
+}
+
+// Writes the pieces in order, as write_bytes() writes one.
+void Client::write_pieces(std::vector<iovec>& pieces, WaitHost* host) {
+    std::size_t first = 0, done = 0;
+    while (first < pieces.size()) {
+        msghdr m{};
+        m.msg_iov = pieces.data() + first;
+        m.msg_iovlen = std::min<std::size_t>(pieces.size() - first, IOV_MAX);
+        const ssize_t n = ::sendmsg(fd_, &m, MSG_NOSIGNAL | MSG_DONTWAIT);
+        if (n > 0) {
+            ++write_calls_;
+            done += static_cast<std::size_t>(n);
+            for (std::size_t left = static_cast<std::size_t>(n); left > 0;) {
+                iovec& piece = pieces[first];
+                const std::size_t k = std::min(left, piece.iov_len);
+                piece.iov_base = static_cast<char*>(piece.iov_base) + k;
+                piece.iov_len -= k;
+                left -= k;
+                if (piece.iov_len == 0) ++first;
+            }
+        } else if (n < 0 && errno == EINTR) {
+            continue;
+        } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            wait_writable(done, host);
+        } else {
+            close_connection(ErrorCode::RTIinternalError, std::strerror(errno));  // keeps an earlier reason
+            connection_lost();
+        }
+    }
 }
 #define HLACORE_X(name) template void Client::send(const wire::name&);
 HLACORE_MESSAGES(HLACORE_X)

@@ -24,6 +24,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <sys/uio.h>
+
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
 #include "rti/record/mcap.hpp"
@@ -376,6 +378,13 @@ private:
     void queue_send(std::unique_lock<std::mutex>& lock);
     void writer_loop();
     void write_bytes(const char* data, std::size_t size, WaitHost* host);
+    // An update or interaction with a value of wire::kSplicedValueBytes or more, while nothing is queued:
+    // written by the caller with sendmsg from the values where they are, around the rest encoded in
+    // send_buffer_, rather than copied into it (a camera frame costs the kernel's copy only).
+    template <class M>
+    void send_spliced(const M& message);
+    void write_pieces(std::vector<iovec>& pieces, WaitHost* host);
+    void check_frame_length(wire::MessageType type, std::size_t length);
     void require_member(wire::MessageType type) const;  // under send_mu_: FederateNotExecutionMember after a resign  // send_mu_, waiting for another thread's send with the host released
     void write_send_buffer();  // under send_mu_
     // The gateway is not reading (yet): waits with `host` (none on the writer thread) until it does.

@@ -99,7 +99,7 @@ private:
         const SpliceSource& source;
         void append(const char* p, std::size_t n) {
             const std::less_equal<const char*> le;
-            if (n >= kSplicedValueBytes && le(source.frame.data(), p) && le(p + n, source.frame.data() + source.frame.size())) {
+            if (n >= wire::kSplicedValueBytes && le(source.frame.data(), p) && le(p + n, source.frame.data() + source.frame.size())) {
                 c.splices.push_back({c.out.size(), source.block, std::string_view(p, n)});
                 c.splice_bytes += n;
                 return;
@@ -599,7 +599,7 @@ template <class View>
 void Gateway::serve_view(Connection& c, const wire::Frame& frame) {
     check_forwardable(frame, options_.max_frame_bytes);
     const View view = wire::decode_as<View>(frame);
-    if (frame.payload.size() < kSplicedValueBytes) return serve(c, view);
+    if (frame.payload.size() < wire::kSplicedValueBytes) return serve(c, view);
     struct Scope {  // the block is let go once served, whatever happens
         SpliceSource& source;
         ~Scope() { source = {}; }

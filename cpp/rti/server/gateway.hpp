@@ -187,7 +187,7 @@ private:
     bool large_buffers_kept_ = false;  // since then, buffers above it may be kept for the next one
     std::unique_ptr<MessageTrace> trace_;
     std::unique_ptr<Recorder> recorder_;
-    // While an update or interaction of at least kSplicedValueBytes is served from its frame: the frame and
+    // While an update or interaction of at least wire::kSplicedValueBytes is served from its frame: the frame and
     // the read block it lies in, which its large values are written to the receivers from (server/outbox.hpp).
     struct SpliceSource {
         std::shared_ptr<const char[]> block;

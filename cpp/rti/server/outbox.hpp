@@ -32,19 +32,8 @@ template <class M>
 constexpr bool kRecordedCallback =
     M::kType != wire::MessageType::ReflectAttributes && M::kType != wire::MessageType::ReceiveInteraction;
 
-// A forwarded value from this size on may be written to its receivers from the frame it came in, rather
-// than copied into each one's output (Outbox::send_spliced).
-constexpr std::size_t kSplicedValueBytes = 256u << 10;
-
 template <class M>
 constexpr bool kForwarded = std::is_same_v<M, wire::ForwardedReflection> || std::is_same_v<M, wire::ForwardedInteraction>;
-
-template <class M>
-bool has_spliced_value(const M& forwarded) {
-    for (const auto* value : forwarded.values)
-        if (value->second.size() >= kSplicedValueBytes) return true;
-    return false;
-}
 
 // Where a federation writes the frames it sends: the output buffer of a federate's connection.
 class Outbox {
@@ -69,7 +58,7 @@ public:
     void send_unheld(FederateHandle federate, const M& message) {
         record(federate, message);
         if constexpr (kForwarded<M>) {
-            if (has_spliced_value(message) && send_spliced(federate, message)) return;
+            if (wire::has_spliced_value(message.values) && send_spliced(federate, message)) return;
         }
         wire::encode(buffer(federate), message);
     }

@@ -1376,6 +1376,19 @@ std::size_t frame_length(const M& m) {
     return 2 + count.bytes;
 }
 
+// Values from this size on are written from where they are rather than copied into an output buffer: by a
+// federate that sends them (client.cpp) and by the gateway to each receiver (server/outbox.hpp).
+constexpr std::size_t kSplicedValueBytes = 256u << 10;
+inline const HandleValueView& value_of(const HandleValueView& value) { return value; }
+inline const HandleValueView& value_of(const HandleValueView* value) { return *value; }
+// Whether an update's or interaction's values (views, or the gateway's pointers to them) hold such a value.
+template <class Values>
+bool has_spliced_value(const Values& values) {
+    for (const auto& value : values)
+        if (value_of(value).second.size() >= kSplicedValueBytes) return true;
+    return false;
+}
+
 // Appends one complete frame holding `m` to `out`, which only appends (like ByteCount): its header is
 // written first, from frame_length(). The gateway's splicing output (server/outbox.hpp) is one.
 template <class Out, class M>

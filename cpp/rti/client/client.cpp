@@ -390,17 +390,21 @@ void Client::send_spliced(const M& message) {
     }
     if (at < send_buffer_.size()) pieces.push_back({send_buffer_.data() + at, send_buffer_.size() - at});
     ++messages_sent_;
-    write_pieces(pieces, options_.wait_host);
+    write_pieces(pieces.data(), pieces.size(), options_.wait_host);
 }
 
-// Writes the pieces in order, as write_bytes() writes one.
-void Client::write_pieces(std::vector<iovec>& pieces, WaitHost* host) {
+// Writes the pieces in order (without TLS), waiting for the socket with the host released.
+void Client::write_pieces(iovec* pieces, std::size_t count, WaitHost* host) {
     std::size_t first = 0, done = 0;
-    while (first < pieces.size()) {
+    for (;;) {
+        while (first < count && pieces[first].iov_len == 0) ++first;
+        if (first == count) return;
         msghdr m{};
-        m.msg_iov = pieces.data() + first;
-        m.msg_iovlen = std::min<std::size_t>(pieces.size() - first, IOV_MAX);
-        const ssize_t n = ::sendmsg(fd_, &m, MSG_NOSIGNAL | MSG_DONTWAIT);
+        m.msg_iov = pieces + first;
+        m.msg_iovlen = std::min<std::size_t>(count - first, IOV_MAX);
+        constexpr int kFlags = MSG_NOSIGNAL | MSG_DONTWAIT;
+        const ssize_t n = m.msg_iovlen == 1 ? ::send(fd_, m.msg_iov->iov_base, m.msg_iov->iov_len, kFlags)
+                                            : ::sendmsg(fd_, &m, kFlags);
         if (n > 0) {
             ++write_calls_;
             done += static_cast<std::size_t>(n);
@@ -449,34 +453,23 @@ void Client::send_encoded(std::unique_lock<std::mutex>& lock) {
 void Client::write_send_buffer() { write_bytes(send_buffer_.data(), send_buffer_.size(), options_.wait_host); }
 
 void Client::write_bytes(const char* data, std::size_t size, WaitHost* host) {
+    if (!ssl_) {
+        iovec piece{const_cast<char*>(data), size};
+        return write_pieces(&piece, 1, host);
+    }
     std::size_t done = 0;
     while (done < size) {
-        if (ssl_) {
-            std::string error;
-            const long n = tls_write(data + done, size - done, error);
-            if (n > 0) {
-                ++write_calls_;
-                done += static_cast<std::size_t>(n);
-            } else if (n == 0) {
-                // The session may hold part of the message in a record it could not finish: the message is
-                // owed from the first WANT_WRITE on (an abandoned wait closes the connection).
-                wait_writable(std::max<std::size_t>(done, 1), host);
-            } else {
-                close_connection(ErrorCode::RTIinternalError, error);
-                connection_lost();
-            }
-            continue;
-        }
-        ssize_t n = ::send(fd_, data + done, size - done, MSG_NOSIGNAL | MSG_DONTWAIT);
+        std::string error;
+        const long n = tls_write(data + done, size - done, error);
         if (n > 0) {
             ++write_calls_;
             done += static_cast<std::size_t>(n);
-        } else if (n < 0 && errno == EINTR) {
-            continue;
-        } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-            wait_writable(done, host);
+        } else if (n == 0) {
+            // The session may hold part of the message in a record it could not finish: the message is
+            // owed from the first WANT_WRITE on (an abandoned wait closes the connection).
+            wait_writable(std::max<std::size_t>(done, 1), host);
         } else {
-            close_connection(ErrorCode::RTIinternalError, std::strerror(errno));  // keeps an earlier reason
+            close_connection(ErrorCode::RTIinternalError, error);
             connection_lost();
         }
     }

@@ -383,7 +383,7 @@ private:
     // send_buffer_, rather than copied into it (a camera frame costs the kernel's copy only).
     template <class M>
     void send_spliced(const M& message);
-    void write_pieces(std::vector<iovec>& pieces, WaitHost* host);
+    void write_pieces(iovec* pieces, std::size_t count, WaitHost* host);
     void check_frame_length(wire::MessageType type, std::size_t length);
     void require_member(wire::MessageType type) const;  // under send_mu_: FederateNotExecutionMember after a resign  // send_mu_, waiting for another thread's send with the host released
     void write_send_buffer();  // under send_mu_

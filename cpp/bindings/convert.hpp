@@ -81,14 +81,24 @@ struct EventRetractionHandle {
     std::uint64_t serial;
 };
 
-// Equality with anything but a handle of the same kind is NotImplemented (so `handle == 4` is False), never
-// the wrong-handle TypeError that a handle argument raises; ordering another type is that TypeError.
-template <class H, class Compare>
-auto handle_equality(Compare compare) {
-    return [compare](const H& a, py::handle b) -> py::object {
-        py::detail::make_caster<H> other;
-        if (!other.load(b, false)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
-        return py::bool_(compare(a.value, py::detail::cast_op<const H&>(other).value));
+// Whether a and b are equal handles of kind H; nullopt when either is not one. Equality with anything but a
+// handle of the same kind is NotImplemented (so `handle == 4` is False), never the wrong-handle TypeError that
+// a handle argument raises; ordering another type is that TypeError.
+template <class H>
+std::optional<bool> equal_handles(py::handle a, py::handle b) {
+    py::detail::make_caster<H> x, y;
+    if (!x.load(a, false) || !y.load(b, false)) return std::nullopt;
+    return py::detail::cast_op<const H&>(x).value == py::detail::cast_op<const H&>(y).value;
+}
+
+// __eq__ (equal) and __ne__ as methods, for direct calls such as h.__eq__(x); operators go through the
+// type's slot (HandleSlots::compare).
+template <class H>
+auto handle_equality(bool equal) {
+    return [equal](py::handle self, py::handle other) -> py::object {
+        const auto same = equal_handles<H>(self, other);
+        if (!same) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+        return py::bool_(*same == equal);
     };
 }
 
@@ -119,10 +129,9 @@ struct HandleSlots {
             if (!ordering) Py_RETURN_NOTIMPLEMENTED;
             return ordering(self, other, op);
         }
-        py::detail::make_caster<H> a, b;
-        if (!a.load(self, false) || !b.load(other, false)) Py_RETURN_NOTIMPLEMENTED;
-        const bool equal = py::detail::cast_op<const H&>(a).value == py::detail::cast_op<const H&>(b).value;
-        return PyBool_FromLong(equal == (op == Py_EQ));
+        const auto same = equal_handles<H>(self, other);
+        if (!same) Py_RETURN_NOTIMPLEMENTED;
+        return PyBool_FromLong(*same == (op == Py_EQ));
     }
 };
 
@@ -131,8 +140,8 @@ void bind_handle(py::module_& m, const char* name) {
     const std::string repr_prefix = std::string("<rti.") + name + "=";
     py::class_<H> type(m, name, (std::string("An HLA ") + name + "; obtained from the RTI, never constructed.").c_str());
     type
-        .def("__eq__", handle_equality<H>(std::equal_to<>()), py::is_operator())
-        .def("__ne__", handle_equality<H>(std::not_equal_to<>()), py::is_operator())
+        .def("__eq__", handle_equality<H>(true), py::is_operator())
+        .def("__ne__", handle_equality<H>(false), py::is_operator())
         .def("__lt__", [](const H& a, const H& b) { return a.value < b.value; }, py::is_operator())
         .def("__le__", [](const H& a, const H& b) { return a.value <= b.value; }, py::is_operator())
         .def("__gt__", [](const H& a, const H& b) { return a.value > b.value; }, py::is_operator())

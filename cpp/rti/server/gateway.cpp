@@ -556,7 +556,8 @@ void Gateway::release_large_buffers() {
             std::string().swap(c->out);
             c->out_offset = 0;
         }
-        in_use |= c->in.capacity() > kKeptBufferBytes || c->out.capacity() > kKeptBufferBytes;
+        // A splice still to write pins a sender's read block, perhaps of a connection closed since.
+        in_use |= c->in.capacity() > kKeptBufferBytes || c->out.capacity() > kKeptBufferBytes || !c->splices.empty();
     }
     large_buffers_kept_ = in_use;
 #if defined(__GLIBC__)

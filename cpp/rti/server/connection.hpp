@@ -101,7 +101,7 @@ struct Gateway::Connection {
         }
     }
     // One sendmsg (MSG_NOSIGNAL) of what is queued, in stream order: `out` around the splices and their values.
-    ssize_t send_spliced() const {
+    ssize_t write_queued() const {
         constexpr int kMaxPieces = 32;
         iovec pieces[kMaxPieces];
         int n = 0;

@@ -1097,7 +1097,7 @@ long Gateway::write_some(Connection& c, std::string& error) {
     if (!c.ssl) {
         for (;;) {
             const ssize_t n = c.splices.empty() ? ::send(c.fd, c.out.data() + c.out_offset, left, MSG_NOSIGNAL)
-                                                : c.send_spliced();
+                                                : c.write_queued();
             if (n > 0) return static_cast<long>(n);
             if (n < 0 && errno == EINTR) continue;
             if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return 0;

@@ -23,8 +23,8 @@ import hlacore.rti as rti
 from hlacore.processes import Child
 from hlacore.status import status
 
-from conftest import (ROBOT_FED, Federate, Recorder, RtigProcess, python_subprocess, running_rtig, tick_until,
-                      wait_for_log)
+from conftest import (ROBOT_FED, Federate, Recorder, RtigProcess, python_subprocess, running_rtig,
+                      share_robot_location, tick_until, wait_for_log)
 
 
 def read_ready(proc: Child, timeout: float = 60.0) -> list[int]:
@@ -196,10 +196,7 @@ def test_frames_read_with_the_reset_of_a_killed_sender_are_served(rtig: RtigProc
     creator = rti.RTIAmbassador(rtig.address)
     creator.createFederationExecution("TestFed", ROBOT_FED)
     watcher = Federate(rtig.address, "watcher")
-    robot = watcher.rtia.getObjectClassHandle("robot")
-    location = watcher.rtia.getAttributeHandle("location", robot)
-    watcher.rtia.subscribeObjectClassAttributes(robot, [location])
-    watcher.rtia.publishObjectClass(robot, [location])
+    robot, location = share_robot_location(watcher, watcher)
     own = watcher.rtia.registerObjectInstance(robot, "watcher")
 
     def reflected(tag: str) -> list[bytes]:

@@ -166,7 +166,7 @@ int dispatch(Client& c, const py::object& ambassador, bool stop_after_grant, dou
         ++delivered;
         const Named callback = to_callback(*m);
         const bool granted = std::holds_alternative<wire::TimeAdvanceGrant>(*m);
-        c.recycle(std::move(*m));  // its values are Python's copies now
+        m.reset();  // its values are Python's copies now: the blocks they were read into go back to the reader
         if (!ambassador.is_none()) {
             const py::object method = optional_method(ambassador, method_name(callback.callback));
             // Called with the tuple as it is: method(*args) would build another one.

@@ -248,7 +248,7 @@ py::object handle_of(std::uint32_t value) {
 template <class H>
 py::dict to_dict(const wire::HandleValues& values) {
     py::dict d;
-    for (const auto& [h, v] : values) d[handle_of<H>(h)] = py::bytes(v);
+    for (const auto& [h, v] : values) d[handle_of<H>(h)] = py::bytes(v.data(), v.size());
     return d;
 }
 

@@ -28,6 +28,7 @@ struct Sampler {
     void set(std::uint64_t& v) { v = 3; }
     void set(double& v) { v = 1.5; }
     void set(std::string& s) { s = "sample"; }
+    void set(Value& v) { v = "sample"; }
     void set(OptionalTime& t) { t = 2.5; }
     template <class T>
     void set(std::vector<T>& items) {

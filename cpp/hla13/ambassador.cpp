@@ -351,7 +351,6 @@ namespace {
 void deliver_queued(RTIambPrivateRefs& refs, Client::Clock::time_point deadline) {
     while (auto m = refs.client.pop_callback()) {
         refs.deliver(*m);
-        refs.client.recycle(std::move(*m));
         if (deadline != Client::Clock::time_point::max() && Client::Clock::now() >= deadline) break;
     }
 }

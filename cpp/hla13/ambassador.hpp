@@ -85,7 +85,7 @@ struct Pairs {
     std::uint8_t order = 1;
     std::uint8_t transport = 1;
 
-    const std::pair<std::uint32_t, std::string>& at(RTI::ULong index) const;  // ArrayIndexOutOfBounds
+    const wire::HandleValue& at(RTI::ULong index) const;  // ArrayIndexOutOfBounds
     void add(RTI::Handle handle, const char* value, RTI::ULong length);
     void remove(RTI::Handle handle);
     void require_received() const;  // InvalidHandleValuePairSetContext
@@ -102,12 +102,12 @@ public:
     RTI::Handle getHandle(RTI::ULong index) const override { return pairs_.at(index).first; }
     RTI::ULong getValueLength(RTI::ULong index) const override { return pairs_.at(index).second.size(); }
     void getValue(RTI::ULong index, char* buffer, RTI::ULong& length) const override {
-        const std::string& value = pairs_.at(index).second;
-        value.copy(buffer, value.size());
+        const wire::Value& value = pairs_.at(index).second;
+        value.view().copy(buffer, value.size());
         length = value.size();
     }
     char* getValuePointer(RTI::ULong index, RTI::ULong& length) const override {
-        const std::string& value = pairs_.at(index).second;
+        const wire::Value& value = pairs_.at(index).second;
         length = value.size();
         return const_cast<char*>(value.data());  // HLA 1.3's signature; the federate reads it
     }

@@ -121,7 +121,7 @@ void FederateHandles::remove(RTI::FederateHandle handle) {
         throw RTI::ArrayIndexOutOfBounds(("federate " + std::to_string(handle) + " is not in the set").c_str());
 }
 
-const std::pair<std::uint32_t, std::string>& Pairs::at(RTI::ULong index) const {
+const wire::HandleValue& Pairs::at(RTI::ULong index) const {
     if (index >= values.size()) out_of_bounds(index, values.size());
     return values[index];
 }

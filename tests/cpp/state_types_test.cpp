@@ -1,12 +1,13 @@
 // Unit tests of the gateway's service-group state types (cpp/rti/server/<group>.hpp) on their own, without
 // a federation: regions and their overlap, a federate's DDM state, attribute ownership, save/restore; and
-// the connection's read buffer and spare strings (cpp/rti/wire/).
+// the connection's read buffer and the values a federate decodes as views into it (cpp/rti/wire/).
 // Built by ./scripts/test.sh (target state_types_test, with the sanitizers) and run by
 // tests/test_state_types.py; prints "ok <case>" per case, exits non-zero at the first failure.
 #include <cstdio>
 #include <cstring>
 #include <cstdlib>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "rti/exceptions.hpp"
@@ -198,38 +199,46 @@ void read_buffer() {
     CHECK(in.capacity() == 0 && in.empty());
 }
 
-void spare_strings() {
-    wire::SpareStrings spare;
-    std::string small(100, 's');
-    spare.give(std::move(small));  // below kLarge: left to the allocator
-    std::string got;
-    spare.take(10, got);
-    CHECK(got.empty() && got.capacity() < wire::SpareStrings::kLarge);
-    for (int i = 0; i < 3; ++i) spare.give(std::string(wire::SpareStrings::kLarge + static_cast<std::size_t>(i), 'x'));
-    spare.take(wire::SpareStrings::kLarge + 1, got);  // one of the two kept (the third was not)
-    CHECK(got.capacity() >= wire::SpareStrings::kLarge + 1);
-    std::string next;
-    spare.take(wire::SpareStrings::kLarge + 1, next);
-    CHECK(next.capacity() < wire::SpareStrings::kLarge);  // the other one is too small for it
-    spare.take(wire::SpareStrings::kLarge, next);
-    CHECK(next.capacity() >= wire::SpareStrings::kLarge);
-    std::string none;
-    spare.take(1, none);
-    CHECK(none.capacity() < wire::SpareStrings::kLarge);  // both taken
-    // Decoding a large value takes a spare one: its block is reused.
-    spare.give(std::move(got));
+// A federate decodes large values as views into the block it read them into (wire::Value); the block is not
+// written again while one of them lives, and is read into again once they are gone.
+void viewed_values() {
     wire::ReflectAttributes r;
-    r.values.emplace_back(1, std::string(wire::SpareStrings::kLarge, 'v'));
+    const std::string large(wire::kSplicedValueBytes, 'v');
+    r.values.emplace_back(1, large);
+    r.values.emplace_back(2, std::string("small"));
     std::string frame;
     wire::encode(frame, r);
-    wire::Frame f;
-    CHECK(wire::next_frame(frame, f) == frame.size());
-    wire::Message m = wire::decode(f, &spare);
-    const std::string& value = std::get<wire::ReflectAttributes>(m).values.at(0).second;
-    CHECK(value == std::string(wire::SpareStrings::kLarge, 'v') && value.capacity() >= wire::SpareStrings::kLarge + 1);
-    wire::recycle(std::move(m), spare);
-    spare.take(wire::SpareStrings::kLarge, none);
-    CHECK(none.size() == wire::SpareStrings::kLarge);  // given back by recycle(), contents as they were
+    wire::ReadBuffer in;
+    // Decodes the frame at the start of `in` as the client does, with the block it lies in.
+    const auto decode_next = [&in, &frame] {
+        const std::shared_ptr<const char[]> block = in.share();
+        wire::Frame f;
+        CHECK(wire::next_frame(in.unread(), f) == frame.size());
+        f.block = &block;
+        wire::Message m = wire::decode(f);
+        in.consume(frame.size());
+        return m;
+    };
+    receive(in, frame);  // a large frame gets a block of its size
+    const char* first = in.share().get();
+    auto m1 = std::make_unique<wire::Message>(decode_next());
+    const auto& values = std::get<wire::ReflectAttributes>(*m1).values;
+    CHECK(values.at(0).second.in_block() && values.at(0).second == large);
+    CHECK(values.at(0).second.data() > first && values.at(0).second.data() < first + frame.size());
+    CHECK(!values.at(1).second.in_block() && values.at(1).second == "small");
+    // Without a block (datagrams, the gateway's own decoding), every value is its own string.
+    wire::Frame plain;
+    CHECK(wire::next_frame(frame, plain) == frame.size());
+    CHECK(!std::get<wire::ReflectAttributes>(wire::decode(plain)).values.at(0).second.in_block());
+    // The next frame goes to another block while the value lives, which still reads as it was.
+    receive(in, frame);
+    CHECK(in.share().get() != first && values.at(0).second == large);
+    const wire::Message m2 = decode_next();
+    // Once the first value is gone, the frame after (the second block held by m2's value) reuses the first.
+    m1.reset();
+    receive(in, frame);
+    CHECK(in.share().get() == first);
+    CHECK(std::get<wire::ReflectAttributes>(m2).values.at(0).second == large);
 }
 
 }  // namespace
@@ -244,7 +253,7 @@ int main() {
         {"save_restore_runs", save_restore_runs},
         {"save_restore_files", save_restore_files},
         {"read_buffer", read_buffer},
-        {"spare_strings", spare_strings},
+        {"viewed_values", viewed_values},
     };
     for (const auto& [name, run] : cases) {
         const int before = failures;

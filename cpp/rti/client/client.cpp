@@ -773,9 +773,12 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
         }
     }
     try {
+        // Large values are decoded as views into the block (wire::Value): the callback's caller copies them once.
+        const std::shared_ptr<const char[]> block = in_.share();
         wire::Frame frame;
         while (std::size_t used = wire::next_frame(in_.unread(), frame, max_frame_bytes_)) {
-            got.stream.push_back(wire::decode(frame, &spare_values_));
+            frame.block = &block;
+            got.stream.push_back(wire::decode(frame));
             in_.consume(used);
         }
     } catch (const wire::WireError& e) {

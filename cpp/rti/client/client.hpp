@@ -262,8 +262,6 @@ public:
     // Waits until a callback is queued or the deadline passes; Interrupted when a signal arrived.
     WaitStatus wait_for_callback(Clock::time_point deadline);
     std::optional<wire::Message> pop_callback();
-    // Hands a delivered callback's large values back, for the next ones to be decoded into.
-    void recycle(wire::Message&& delivered) { wire::recycle(std::move(delivered), spare_values_); }
     bool has_callbacks() const;
 
 private:
@@ -558,10 +556,10 @@ private:
     mutable std::mutex datagram_mu_;
     wire::DatagramStats datagram_stats_;
     std::map<fom::Handle, fom::Transport> interaction_transport_;  // this federate's changes (HLA 1.3 §6.20), under mu_
-    // Touched only by the thread that is reading. Its block is kept for the connection's life (at most a frame
-    // limit): a federate that was sent one camera frame is most often sent the next.
+    // Touched only by the thread that is reading. Its blocks are kept for the connection's life (at most two
+    // frame limits): a federate that was sent one camera frame is most often sent the next. The large values
+    // of callbacks not delivered yet keep the blocks they lie in (wire::Value).
     wire::ReadBuffer in_;
-    wire::SpareStrings spare_values_;  // given back by recycle(), taken when decoding
     Clock::time_point last_heard_;  // when the gateway last sent a byte
     Clock::time_point ping_sent_;   // when the unanswered Ping left (last_heard_ is later once answered)
     std::uint32_t pings_ = 0;

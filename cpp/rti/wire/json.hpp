@@ -60,7 +60,7 @@ public:
         if (t) json_number(out, *t);
         else out += "null";
     }
-    static void put(std::string& out, const std::pair<std::uint32_t, std::string>& hv) {
+    static void put(std::string& out, const HandleValue& hv) {
         out += '[';
         put(out, hv.first);
         out += ',';

@@ -37,22 +37,14 @@ std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_
     return 4 + static_cast<std::size_t>(length);
 }
 
-Message decode(const Frame& frame, SpareStrings* spare) {
+Message decode(const Frame& frame) {
     switch (frame.type) {
 #define HLACORE_X(name) \
-    case MessageType::name: return Message(decode_as<name>(frame, spare));
+    case MessageType::name: return Message(decode_as<name>(frame));
         HLACORE_MESSAGES(HLACORE_X)
 #undef HLACORE_X
         default: throw WireError("unknown message type " + std::to_string(static_cast<unsigned>(frame.type)));
     }
-}
-
-void recycle(Message&& message, SpareStrings& spare) {
-    HandleValues* values = nullptr;
-    if (auto* r = std::get_if<ReflectAttributes>(&message)) values = &r->values;
-    if (auto* i = std::get_if<ReceiveInteraction>(&message)) values = &i->values;
-    if (values)
-        for (auto& [handle, value] : *values) spare.give(std::move(value));
 }
 
 }  // namespace hlacore::wire

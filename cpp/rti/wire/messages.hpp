@@ -10,7 +10,6 @@
 #include <cstring>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -20,6 +19,7 @@
 #include <vector>
 
 #include "rti/list_codes.hpp"
+#include "rti/wire/value.hpp"
 
 #if !defined(__BYTE_ORDER__) || __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
 #error "the codec assumes a little-endian host"
@@ -40,7 +40,7 @@ constexpr std::uint16_t kProtocolVersion = 11;
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
 
 using Handles = std::vector<std::uint32_t>;
-using HandleValue = std::pair<std::uint32_t, std::string>;
+using HandleValue = std::pair<std::uint32_t, Value>;
 using HandleValues = std::vector<HandleValue>;
 // The values of an update or interaction as the gateway serves them: views into the frame being served, not
 // copies (a camera frame is megabytes); HandleValues on the wire.
@@ -1195,6 +1195,7 @@ public:
         put(static_cast<std::uint32_t>(s.size()));
         out_.append(s.data(), s.size());
     }
+    void put(const Value& v) { put(v.view()); }
     void put(const OptionalTime& t) {
         put(t.has_value());
         if (t) put(*t);
@@ -1235,41 +1236,16 @@ struct ByteCount {
 
 using Writer = BasicWriter<std::string>;
 
-// Large strings given back once used (the values of delivered callbacks), for decoding the next large values
-// into: a federate sent camera frames reuses the same few blocks instead of having fresh pages mapped (and
-// zeroed by the kernel) for each frame, which cost more than copying it. Thread-safe: the reader takes, the
-// thread that delivers callbacks gives.
-class SpareStrings {
-public:
-    static constexpr std::size_t kLarge = 1u << 20;  // smaller strings are left to the allocator
-    static constexpr std::size_t kKept = 2;          // at most this many held: two frames' worth of memory
-
-    void give(std::string&& s) {
-        if (s.capacity() < kLarge) return;
-        std::lock_guard<std::mutex> lock(mu_);
-        if (spare_.size() < kKept) spare_.push_back(std::move(s));
-    }
-    // One with room for `n` bytes into `s`, if held.
-    void take(std::size_t n, std::string& s) {
-        std::lock_guard<std::mutex> lock(mu_);
-        for (auto it = spare_.begin(); it != spare_.end(); ++it) {
-            if (it->capacity() >= n) {
-                s = std::move(*it);
-                spare_.erase(it);
-                return;
-            }
-        }
-    }
-
-private:
-    std::mutex mu_;
-    std::vector<std::string> spare_;
-};
+// Values from this size on are written from where they are rather than copied into an output buffer: by a
+// federate that sends them (client.cpp) and by the gateway to each receiver (server/outbox.hpp); and a
+// federate decodes them as views into the block it read them into (Frame::block).
+constexpr std::size_t kSplicedValueBytes = 256u << 10;
 
 class Reader {
 public:
-    Reader(std::string_view data, MessageType type, SpareStrings* spare = nullptr)
-        : p_(data.data()), end_(data.data() + data.size()), type_(type), spare_(spare) {}
+    // With `block`, the one `data` lies in, large values are decoded as views into it (see Value).
+    Reader(std::string_view data, MessageType type, const std::shared_ptr<const char[]>* block = nullptr)
+        : p_(data.data()), end_(data.data() + data.size()), type_(type), block_(block) {}
 
     template <class... T>
     void operator()(T&... values) { (get(values), ...); }
@@ -1289,9 +1265,16 @@ public:
         std::uint32_t n = 0;
         get(n);
         need(n);
-        if (spare_ && n >= SpareStrings::kLarge) spare_->take(n, s);
         s.assign(p_, n);
         p_ += n;
+    }
+    void get(Value& v) {
+        std::string_view bytes;
+        get(bytes);
+        if (block_ && bytes.size() >= kSplicedValueBytes)
+            v = Value(*block_, bytes);
+        else
+            v = Value(std::string(bytes));
     }
     void get(std::string_view& s) {  // a view into the frame, valid while it is
         std::uint32_t n = 0;
@@ -1350,7 +1333,7 @@ private:
     const char* p_;
     const char* end_;
     MessageType type_;
-    SpareStrings* spare_;
+    const std::shared_ptr<const char[]>* block_;
 };
 
 // Appends one complete frame holding `m` to `out`.
@@ -1376,9 +1359,6 @@ std::size_t frame_length(const M& m) {
     return 2 + count.bytes;
 }
 
-// Values from this size on are written from where they are rather than copied into an output buffer: by a
-// federate that sends them (client.cpp) and by the gateway to each receiver (server/outbox.hpp).
-constexpr std::size_t kSplicedValueBytes = 256u << 10;
 inline const HandleValueView& value_of(const HandleValueView& value) { return value; }
 inline const HandleValueView& value_of(const HandleValueView* value) { return *value; }
 // Whether an update's or interaction's values (views, or the gateway's pointers to them) hold such a value.
@@ -1404,25 +1384,24 @@ void encode_to(Out& out, const M& m) {
 struct Frame {
     MessageType type = MessageType::Invalid;
     std::string_view payload;
+    // The block the payload lies in, when large values may be decoded as views into it (a Value keeps it).
+    const std::shared_ptr<const char[]>* block = nullptr;
 };
 
 // Looks for one complete frame at the start of `buffer`. Returns the bytes it spans, or 0 if more bytes
 // are needed. Throws WireError when the header is impossible (length too short or above max_bytes).
 std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_bytes = kMaxFrameBytes);
 
-// Decodes a frame's payload, its large strings into `spare` ones when given. Throws WireError on an unknown
-// type, a truncated field or trailing bytes.
-Message decode(const Frame& frame, SpareStrings* spare = nullptr);
+// Decodes a frame's payload. Throws WireError on an unknown type, a truncated field or trailing bytes.
+Message decode(const Frame& frame);
 // Decodes a frame of M's type as M (a view type such as UpdateAttributesView included).
 template <class M>
-M decode_as(const Frame& frame, SpareStrings* spare = nullptr) {
+M decode_as(const Frame& frame) {
     M m;
-    Reader r(frame.payload, frame.type, spare);
+    Reader r(frame.payload, frame.type, frame.block);
     m.fields(r);
     if (r.remaining() != 0) r.fail("trailing bytes");
     return m;
 }
-// Gives the large values of a delivered reflection or interaction to `spare`.
-void recycle(Message&& message, SpareStrings& spare);
 
 }  // namespace hlacore::wire

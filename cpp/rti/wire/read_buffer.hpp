@@ -3,10 +3,12 @@
 // growing a string by doubling copied a 16 MiB camera frame four times and mapped fresh pages for each).
 // The gateway may share the block (share()) to write a large value on from where it was read; a shared
 // block is not written again: the next read goes to the spare block (the one shared before, once nobody
-// else holds it), so that a stream of camera frames alternates between two blocks.
+// else holds it), so that a stream of camera frames alternates between two blocks. A federate shares it the
+// same way with the large values it decodes (wire::Value), until they are delivered.
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -39,7 +41,9 @@ public:
     // Room for `n` more bytes at the end; read into it, then commit() what was read.
     char* room(std::size_t n) {
         const std::size_t pending = end_ - begin_;
-        const bool shared = data_.use_count() > 1;  // its bytes are still being written elsewhere
+        const bool shared = data_.use_count() > 1;  // its bytes are still being written or read elsewhere
+        // A block that another thread let go of (a delivered value) is written only after that thread's reads.
+        std::atomic_thread_fence(std::memory_order_acquire);
         if (!shared && capacity_ - end_ >= n) return data_.get() + end_;
         if (!shared && capacity_ >= pending + n) {  // what was used makes the room
             std::memmove(data_.get(), data_.get() + begin_, pending);

@@ -73,10 +73,11 @@ class PySink(_SocketPeer):
         assert got == {"received": self.sent}, (got, self.sent)
 
 
-def cpp_rtt_ns(binary: str, size: int, count: int) -> list[int]:
-    """`count` round trips of `size` bytes timed by the C++ program, in nanoseconds."""
-    out = subprocess.run([binary, "rtt", str(size), str(count)], check=True, capture_output=True, text=True,
-                         timeout=120).stdout
+def cpp_rtt_ns(binary: str, size: int, count: int, relay: bool = False) -> list[int]:
+    """`count` round trips of `size` bytes timed by the C++ program, in nanoseconds; with `relay`, through a
+    third process that passes each message on (four hops, as through a gateway)."""
+    out = subprocess.run([binary, "rtt-relay" if relay else "rtt", str(size), str(count)], check=True,
+                         capture_output=True, text=True, timeout=120).stdout
     samples: list[int] = json.loads(out)["rtt_ns"]
     return samples
 

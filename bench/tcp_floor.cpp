@@ -3,6 +3,8 @@
 //
 //   tcp_floor rtt SIZE COUNT       COUNT round trips of SIZE bytes (after 200 unmeasured):
 //                                  {"rtt_ns": [each round trip in ns, in order]}
+//   tcp_floor rtt-relay SIZE COUNT the same through a third process that passes each message on, both ways:
+//                                  four hops, as an update and its echo through a gateway take
 //   tcp_floor stream RECORD COUNT  COUNT records of RECORD bytes, one send() each, until the child has
 //                                  counted them all and answered one byte: {"seconds": s, "count": COUNT}
 //   tcp_floor relay RECORD COUNT   the same through a third process that forwards every byte as it comes
@@ -113,6 +115,22 @@ int accept_one(int listener) {
     std::exit(0);
 }
 
+// The round-trip relay: passes each SIZE-byte message from the parent to the echo and its echo back, until
+// the parent's EOF.
+[[noreturn]] void rtt_relay(int listener, const sockaddr_in& echo, std::size_t size) {
+    int from = accept_one(listener);
+    int to = connect_to(echo);
+    std::vector<char> buf(size);
+    while (read_exact(from, buf.data(), size)) {
+        write_all(to, buf.data(), size);
+        if (!read_exact(to, buf.data(), size)) die("relay: echo closed");
+        write_all(from, buf.data(), size);
+    }
+    close(to);
+    close(from);
+    std::exit(0);
+}
+
 // The child: accept one connection, then echo SIZE-byte messages or count RECORD-byte records.
 [[noreturn]] void child(int listener, bool stream, std::size_t size, long count) {
     int fd = accept_one(listener);
@@ -138,11 +156,11 @@ int accept_one(int listener) {
 
 int main(int argc, char** argv) {
     const std::string mode = argc == 4 ? argv[1] : "";
-    if (mode != "rtt" && mode != "stream" && mode != "relay") {
-        std::fprintf(stderr, "usage: tcp_floor rtt SIZE COUNT | tcp_floor stream|relay RECORD COUNT\n");
+    if (mode != "rtt" && mode != "rtt-relay" && mode != "stream" && mode != "relay") {
+        std::fprintf(stderr, "usage: tcp_floor rtt|rtt-relay SIZE COUNT | tcp_floor stream|relay RECORD COUNT\n");
         return 2;
     }
-    const bool stream = mode != "rtt";
+    const bool stream = mode == "stream" || mode == "relay";
     const std::size_t size = std::strtoul(argv[2], nullptr, 10);
     const long count = std::strtol(argv[3], nullptr, 10);
     if (size == 0 || count <= 0) return 2;
@@ -155,12 +173,13 @@ int main(int argc, char** argv) {
     if (pid == 0) child(listener, stream, size, count);
     close(listener);
     children.push_back(pid);
-    if (mode == "relay") {
+    if (mode == "relay" || mode == "rtt-relay") {
         const sockaddr_in sink = addr;
         listener = listen_loopback(addr);
         pid = fork();
         if (pid < 0) die("fork");
-        if (pid == 0) relay(listener, sink, size * static_cast<std::size_t>(count));
+        if (pid == 0 && stream) relay(listener, sink, size * static_cast<std::size_t>(count));
+        if (pid == 0) rtt_relay(listener, sink, size);
         close(listener);
         children.push_back(pid);
     }

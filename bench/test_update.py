@@ -1,5 +1,6 @@
 """Update latency: an update ping-pong between two processes, receive order and TSO, for 8 B, 1 KiB and
-64 KiB payloads, against raw TCP round trips of the same size (one-way = round trip / 2 for both)."""
+64 KiB payloads, against raw TCP round trips of the same size (one-way = round trip / 2 for both), and the
+C++ round trip through a relay process (four hops, as through a gateway: what no routed design can beat)."""
 
 from __future__ import annotations
 
@@ -24,6 +25,11 @@ def test_floor_python_rtt(measure, size: int) -> None:
 @pytest.mark.parametrize("size", PAYLOADS)
 def test_floor_cpp_rtt(report: Report, tcp_floor: str, size: int) -> None:
     report.add(f"update.floor.cpp.{size}", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, size, ROUNDS[size])])
+
+
+@pytest.mark.parametrize("size", PAYLOADS)
+def test_floor_cpp_relay_rtt(report: Report, tcp_floor: str, size: int) -> None:
+    report.add(f"update.floor.relay.{size}", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, size, ROUNDS[size], relay=True)])
 
 
 @pytest.mark.parametrize("order", ["ro", "tso"])

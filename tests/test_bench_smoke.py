@@ -49,6 +49,8 @@ def test_cpp_floor_program() -> None:
         pytest.skip(why)
     samples = cpp_rtt_ns(binary, 64, 5)
     assert len(samples) == 5 and all(ns > 0 for ns in samples)
+    relayed = cpp_rtt_ns(binary, 64, 5, relay=True)
+    assert len(relayed) == 5 and all(ns > 0 for ns in relayed)
     assert cpp_stream_rate(binary, 100) > 0
     assert cpp_stream_rate(binary, 100, 4096, mode="relay") > 0
 
@@ -163,9 +165,11 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     assert "| 2 federates, rtig | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 2.0× C++ RTT: met (1.00×) |" in text
     assert "| 32 federates, rtig | 2000 µs | 3000 µs | 10.00× | 10.00× | ≤ 4× 2-federate figure: missed (10.00×) |" in text
     assert "OpenRTI 151 µs, CERTI 398 µs (C++ federates)" in text
-    assert "| receive order one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× C++ one-way: met (1.00×) |" in text
+    assert ("| receive order one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× C++ one-way: met (1.00×); "
+            "1.00× of the relay |") in text
+    assert "| raw TCP one-way 8 B (Python / C++; C++ through a relay) | 100.0 µs / 100.0 µs; 100.0 µs |" in text
     assert "200.0 k/s (1600.0 k/s in all)" in text
-    assert "| TSO one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 3.5× C++ one-way: met (1.00×) |" in text
+    assert "| TSO one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 3.5× C++ one-way: met (1.00×); 1.00× of the relay |" in text
     assert "≥ 200 000/s to each: met" in text and "≥ 3× the C++ floor: missed" in text  # 1 → 8, 1 → 1
     assert text.count("< 20 ms: met") == 2
     assert "| lockstep of 2 federates with updates: without / with hlacore.monitor | 200.0 µs / 200.0 µs |" in text

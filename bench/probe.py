@@ -9,8 +9,13 @@ each process's CPU read from /proc over the measured rounds. Prints one JSON lin
                                                                    of the rtig and of each federate
     python -m bench.probe lockstep-cpp [FEDERATES] [STEPS]        the same with bench/rtis's C++ program (built by
                                                                    ./scripts/bench.sh) as the federates
+    python -m bench.probe pingpong [SIZE] [ROUNDS]                 median round trips (µs) of SIZE bytes: raw TCP in
+                                                                   C++, through a C++ relay, in Python, and hlacore's
+                                                                   update ping-pong, receive order and TSO; run under
+                                                                   `taskset -c 0` to see them all on one core
 
-The rtig is bench_rtig()'s ($HLACORE_BENCH_RTIG overrides). For an A/B, run each side with its own package on
+The rtig is bench_rtig()'s ($HLACORE_BENCH_RTIG overrides), the C++ floor program $HLACORE_TCP_FLOOR (default
+build/bench/tcp_floor, built by ./scripts/bench.sh). For an A/B, run each side with its own package on
 PYTHONPATH, its own rtig and its own bench code, alternating; `perf record -p PID` on the pids printed with
 --pids profiles them while they run."""
 
@@ -24,7 +29,9 @@ import sys
 import time
 from typing import Any, Callable, Optional
 
+from .floor import PyEcho, cpp_rtt_ns
 from .lockstep import Lockstep
+from .pingpong import PingPong
 from .procs import bench_rtig, cpu_seconds
 from .three_rtis import Server, run
 from .throughput import Fanout
@@ -137,8 +144,40 @@ def lockstep_cpp(federates: int = 32, steps: int = 2000, show_pids: bool = False
             "federate_us_per_step": each, "us_per_federate_step": rtig / total_steps * 1e6 / federates + each}
 
 
+def timed_median_us(round_trip: Callable[[], None], rounds: int) -> float:
+    samples = []
+    for _ in range(rounds):
+        start = time.perf_counter()
+        round_trip()
+        samples.append(time.perf_counter() - start)
+    return statistics.median(samples) * 1e6
+
+
+def pingpong(size: int = 8, rounds: int = 3000, show_pids: bool = False) -> dict[str, Any]:
+    binary = os.environ.get("HLACORE_TCP_FLOOR", "build/bench/tcp_floor")
+    result = {"cpp_us": statistics.median(cpp_rtt_ns(binary, size, rounds)) / 1e3,
+              "cpp_relay_us": statistics.median(cpp_rtt_ns(binary, size, rounds, relay=True)) / 1e3}
+    echo = PyEcho(size)
+    try:
+        timed_median_us(echo.round_trip, 200)  # warm-up
+        result["python_us"] = timed_median_us(echo.round_trip, rounds)
+    finally:
+        echo.close()
+    with bench_rtig() as rtig:
+        for order in ("ro", "tso"):
+            p = PingPong(rtig.address, order, size)
+            try:
+                announce({"rtig": rtig.child.pid, "pong": p.peer.pid}, show_pids)
+                timed_median_us(p.round_trip, 200)
+                result[f"hlacore_{order}_us"] = timed_median_us(p.round_trip, rounds)
+                p.finish()
+            finally:
+                p.close()
+    return result
+
+
 PROBES: dict[str, Callable[..., dict[str, Any]]] = {"fanout": fanout, "large": large, "lockstep": lockstep,
-                                                    "lockstep-cpp": lockstep_cpp}
+                                                    "lockstep-cpp": lockstep_cpp, "pingpong": pingpong}
 
 
 def main(argv: list[str]) -> int:

@@ -9,12 +9,14 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "rti/exceptions.hpp"
 #include "rti/server/ownership.hpp"
 #include "rti/server/regions.hpp"
 #include "rti/server/save_restore.hpp"
 #include "rti/wire/read_buffer.hpp"
+#include "rti/wire/splices.hpp"
 
 using namespace hlacore;
 
@@ -241,6 +243,41 @@ void viewed_values() {
     CHECK(std::get<wire::ReflectAttributes>(m2).values.at(0).second == large);
 }
 
+// The pieces of a stream with splices: in order, and never more than there is room for.
+void splices_gather() {
+    const std::string buffer = "headAtailBend";  // splices go in at 4 ("one") and 9 ("two")
+    const std::vector<wire::Splice> splices = {{4, "one"}, {9, "two"}};
+    const auto stream = [&](const iovec* pieces, std::size_t n) {
+        std::string s;
+        for (std::size_t i = 0; i < n; ++i) s.append(static_cast<const char*>(pieces[i].iov_base), pieces[i].iov_len);
+        return s;
+    };
+    iovec pieces[5];
+    CHECK(stream(pieces, wire::gather(buffer, 0, splices, pieces, 5)) == "headoneAtailtwoBend");
+    CHECK(stream(pieces, wire::gather(buffer, 2, splices, pieces, 5)) == "adoneAtailtwoBend");  // from an offset
+    // Room for 4: the second splice would leave no room for what follows it, so the pieces end before it.
+    CHECK(wire::gather(buffer, 0, splices, pieces, 4) == 3 && stream(pieces, 3) == "headoneAtail");
+    CHECK(wire::gather(buffer, 0, splices, pieces, 1) == 1 && stream(pieces, 1) == "head");
+    // A splice at the buffer's end, and one at the start: no empty pieces.
+    const std::vector<wire::Splice> edges = {{0, "first"}, {buffer.size(), "last"}};
+    const std::size_t n = wire::gather(buffer, 0, edges, pieces, 5);
+    CHECK(n == 3 && stream(pieces, n) == "first" + buffer + "last");
+    // Encoding through a SplicingOutput leaves the large value out of the buffer and says where it goes.
+    wire::ReflectAttributes r;
+    r.values.emplace_back(1, std::string(wire::kSplicedValueBytes, 'v'));
+    std::string frame, rest;
+    wire::encode(frame, r);
+    std::vector<wire::Splice> noted;
+    wire::SplicingOutput out{rest, [&noted](std::size_t at, std::string_view bytes) {
+                                 noted.push_back({at, bytes});
+                                 return true;
+                             }};
+    wire::encode_to(out, r);
+    CHECK(noted.size() == 1 && rest.size() + wire::kSplicedValueBytes == frame.size());
+    std::vector<iovec> all(2 * noted.size() + 1);
+    CHECK(stream(all.data(), wire::gather(rest, 0, noted, all.data(), all.size())) == frame);
+}
+
 }  // namespace
 
 int main() {
@@ -254,6 +291,7 @@ int main() {
         {"save_restore_files", save_restore_files},
         {"read_buffer", read_buffer},
         {"viewed_values", viewed_values},
+        {"splices_gather", splices_gather},
     };
     for (const auto& [name, run] : cases) {
         const int before = failures;

@@ -2,6 +2,7 @@
 
 #include "rti/auth.hpp"
 #include "rti/client/waiting.hpp"
+#include "rti/wire/splices.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -358,39 +359,20 @@ void Client::check_frame_length(wire::MessageType type, std::size_t length) {
                                               std::to_string(max_frame_bytes_) + " bytes");
 }
 
-namespace {
-// Appends to a send buffer, except the values of wire::kSplicedValueBytes or more: their place is noted.
-struct SplicingBuffer {
-    std::string& out;
-    std::vector<std::pair<std::size_t, std::string_view>>& splices;
-    void append(const char* p, std::size_t n) {
-        if (n >= wire::kSplicedValueBytes) {
-            splices.emplace_back(out.size(), std::string_view(p, n));
-            return;
-        }
-        out.append(p, n);
-    }
-    void append(const std::string& s) { out.append(s); }
-};
-}  // namespace
-
 template <class M>
 void Client::send_spliced(const M& message) {
     check_frame_length(M::kType, wire::frame_length(message));
     send_buffer_.clear();
-    std::vector<std::pair<std::size_t, std::string_view>> splices;
-    SplicingBuffer out{send_buffer_, splices};
+    std::vector<wire::Splice> splices;
+    wire::SplicingOutput out{send_buffer_, [&splices](std::size_t at, std::string_view bytes) {
+                                 splices.push_back({at, bytes});
+                                 return true;
+                             }};
     wire::encode_to(out, message);
-    std::vector<iovec> pieces;
-    std::size_t at = 0;
-    for (const auto& [position, value] : splices) {
-        if (position > at) pieces.push_back({send_buffer_.data() + at, position - at});
-        pieces.push_back({const_cast<char*>(value.data()), value.size()});
-        at = position;
-    }
-    if (at < send_buffer_.size()) pieces.push_back({send_buffer_.data() + at, send_buffer_.size() - at});
+    std::vector<iovec> pieces(2 * splices.size() + 1);
+    const std::size_t count = wire::gather(send_buffer_, 0, splices, pieces.data(), pieces.size());
     ++messages_sent_;
-    write_pieces(pieces.data(), pieces.size(), options_.wait_host);
+    write_pieces(pieces.data(), count, options_.wait_host);
 }
 
 // Writes the pieces in order (without TLS), waiting for the socket with the host released.

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -16,6 +17,7 @@
 #include "rti/server/gateway.hpp"
 #include "rti/wire/datagram.hpp"
 #include "rti/wire/read_buffer.hpp"
+#include "rti/wire/splices.hpp"
 
 namespace hlacore {
 
@@ -34,11 +36,10 @@ struct Gateway::Connection {
     std::string out;
     std::size_t out_offset = 0;
     // Large values of forwarded updates and interactions, written from the sender's read block (kept alive
-    // here) rather than copied into `out`: each goes into the stream at offset `at` of `out`, in order.
-    struct Splice {
-        std::size_t at;
+    // here) rather than copied into `out`: each goes into the stream at offset `at` of `out`, in order, and
+    // `bytes` is what is left to write of it.
+    struct Splice : wire::Splice {
         std::shared_ptr<const char[]> block;
-        std::string_view bytes;  // what is left to write
     };
     std::deque<Splice> splices;
     std::size_t splice_bytes = 0;
@@ -102,27 +103,10 @@ struct Gateway::Connection {
     }
     // One sendmsg (MSG_NOSIGNAL) of what is queued, in stream order: `out` around the splices and their values.
     ssize_t write_queued() const {
-        constexpr int kMaxPieces = 32;
-        iovec pieces[kMaxPieces];
-        int n = 0;
-        auto piece = [&](const char* p, std::size_t size) {
-            if (size > 0) pieces[n++] = iovec{const_cast<char*>(p), size};
-        };
-        std::size_t at = out_offset;
-        bool all = true;
-        for (const Splice& s : splices) {
-            if (n + 2 > kMaxPieces) {
-                all = false;
-                break;
-            }
-            piece(out.data() + at, s.at - at);
-            piece(s.bytes.data(), s.bytes.size());
-            at = s.at;
-        }
-        if (all) piece(out.data() + at, out.size() - at);
+        iovec pieces[32];
         msghdr message{};
         message.msg_iov = pieces;
-        message.msg_iovlen = static_cast<std::size_t>(n);
+        message.msg_iovlen = wire::gather(out, out_offset, splices, pieces, std::size(pieces));
         return ::sendmsg(fd, &message, MSG_NOSIGNAL);
     }
     // Drops out[0, out_offset), which was taken.

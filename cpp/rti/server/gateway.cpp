@@ -92,22 +92,6 @@ public:
     std::unordered_map<FederateHandle, Connection*> peers_;
 
 private:
-    // Appends to a connection's output, except the large values that lie in the frame being served: those
-    // are spliced in, referenced rather than copied.
-    struct SplicingOutput {
-        Connection& c;
-        const SpliceSource& source;
-        void append(const char* p, std::size_t n) {
-            const std::less_equal<const char*> le;
-            if (n >= wire::kSplicedValueBytes && le(source.frame.data(), p) && le(p + n, source.frame.data() + source.frame.size())) {
-                c.splices.push_back({c.out.size(), source.block, std::string_view(p, n)});
-                c.splice_bytes += n;
-                return;
-            }
-            c.out.append(p, n);
-        }
-        void append(const std::string& s) { c.out.append(s); }
-    };
     template <class M>
     bool spliced(FederateHandle federate, const M& m) {
         auto it = peers_.find(federate);
@@ -117,7 +101,17 @@ private:
         // there is a backlog.
         if (c.ssl || gateway_.trace_ || !c.backlog.empty()) return false;
         gateway_.mark_dirty(c);
-        SplicingOutput output{c, gateway_.splice_source_};
+        // The large values that lie in the frame being served are spliced in, referenced rather than copied.
+        const SpliceSource& source = gateway_.splice_source_;
+        wire::SplicingOutput output{c.out, [&c, &source](std::size_t at, std::string_view bytes) {
+                                        const std::less_equal<const char*> le;
+                                        if (!le(source.frame.data(), bytes.data()) ||
+                                            !le(bytes.data() + bytes.size(), source.frame.data() + source.frame.size()))
+                                            return false;
+                                        c.splices.push_back({{at, bytes}, source.block});
+                                        c.splice_bytes += bytes.size();
+                                        return true;
+                                    }};
         wire::encode_to(output, m);
         return true;
     }

@@ -1237,7 +1237,7 @@ struct ByteCount {
 using Writer = BasicWriter<std::string>;
 
 // Values from this size on are written from where they are rather than copied into an output buffer: by a
-// federate that sends them (client.cpp) and by the gateway to each receiver (server/outbox.hpp); and a
+// federate that sends them and by the gateway to each receiver (splices.hpp); and a
 // federate decodes them as views into the block it read them into (Frame::block).
 constexpr std::size_t kSplicedValueBytes = 256u << 10;
 
@@ -1370,7 +1370,7 @@ bool has_spliced_value(const Values& values) {
 }
 
 // Appends one complete frame holding `m` to `out`, which only appends (like ByteCount): its header is
-// written first, from frame_length(). The gateway's splicing output (server/outbox.hpp) is one.
+// written first, from frame_length(). wire::SplicingOutput (splices.hpp) is one.
 template <class Out, class M>
 void encode_to(Out& out, const M& m) {
     const auto length = static_cast<std::uint32_t>(frame_length(m));

@@ -52,8 +52,8 @@ def received(fed: Any, value: bytes) -> bool:
 
 
 def test_cpp_and_python_federates_in_one_federation(gateway_address: str, federation: Any) -> None:
-    """Updates and interactions both ways in receive order, then a TSO lockstep of 1000 steps in which
-    every grant, on both sides, comes after the other federate's update at its time."""
+    """Updates and interactions both ways in receive order, a 1 MiB update each way, then a TSO lockstep of
+    1000 steps in which every grant, on both sides, comes after the other federate's update at its time."""
     steps = 1000
     py = federation("python")
     robot = py.rtia.getObjectClassHandle("robot")
@@ -79,6 +79,9 @@ def test_cpp_and_python_federates_in_one_federation(gateway_address: str, federa
         py.rtia.updateAttributeValues(obj, {location: b"hello from python"}, "ro")
         py.rtia.sendInteraction(command, {value: b"hello from python"}, "ro")
         tick_until(lambda: reflected(py, b"hello from cpp") and received(py, b"hello from cpp"), py.rtia, timeout=30)
+        camera = bytes(i % 251 for i in range(1 << 20))  # the same bytes as the C++ federate's
+        py.rtia.updateAttributeValues(obj, {location: camera}, "camera")
+        tick_until(lambda: reflected(py, camera), py.rtia, timeout=30)
         py.enable_time(1.0)
         synchronize("timed", 2)
         for step in range(1, steps + 1):

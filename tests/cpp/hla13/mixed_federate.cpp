@@ -1,6 +1,7 @@
 // The C++ half of a mixed federation (tests/test_cpp_api.py runs the Python half): joins FEDERATION
 // (made from tests/data/robot.fed) as NAME, exchanges a receive-order update and interaction with the
-// Python federate, then, from synchronization point "timed", runs STEPS steps of a TSO lockstep with it
+// Python federate, and a camera-size update (1 MiB) each way, then, from synchronization point "timed", runs
+// STEPS steps of a TSO lockstep with it
 // (regulating and constrained, lookahead 1: an update of robot.location at t, then timeAdvanceRequest(t)).
 // Prints {"ready": true} once set up, and at the end one JSON line: the steps, the updates reflected, and
 // the grants not preceded by the peer's update at their time.
@@ -58,6 +59,15 @@ int main(int argc, char** argv) {
             for (const auto* e : amb.saw("receiveInteraction")) received |= e->values.count(value) && e->values.at(value) == "hello from python";
             return reflected && received;
         }, "the Python federate's update and interaction");
+        // A camera frame each way: sent from where it is, received in the block it was read into.
+        std::string camera(1 << 20, '\0');
+        for (std::size_t i = 0; i < camera.size(); ++i) camera[i] = static_cast<char>(i % 251);
+        rtia.updateAttributeValues(object, *location_value(location, camera), "camera");
+        until([&] {
+            for (const auto* e : amb.saw("reflectAttributeValues"))
+                if (e->values.count(location) && e->values.at(location) == camera) return true;
+            return false;
+        }, "the Python federate's camera frame");
 
         rtia.enableTimeRegulation(RTIfedTime(0.0), RTIfedTime(1.0));
         rtia.enableTimeConstrained();

@@ -113,8 +113,8 @@ def test_the_in_process_gateway_takes_the_frame_limit() -> None:
 
 
 def test_camera_size_updates_reach_a_subscriber_that_ticks_slowly(tmp_path: pathlib.Path) -> None:
-    """Eight updates of about 20 MiB (camera frames) from a publisher process to a subscriber that ticks every 0.3 s:
-    flow control holds the publisher back while the subscriber takes them; nobody is dropped and every
+    """Eight updates of about 20 MiB (camera frames) from a publisher process to a subscriber that ticks every
+    0.3 s: flow control holds the publisher back while the subscriber takes them; nobody is dropped and every
     frame arrives intact, in order. Against the optimized rtig with its defaults (64 MiB budget and frame
     limit); its memory is measured. The buffers it keeps for the next frame while frames come (reused rather
     than mapped afresh: docs/performance.md) are given back once they stop, the subscriber still joined. Each

@@ -756,10 +756,12 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
     }
     try {
         // Large values are decoded as views into the block (wire::Value): the callback's caller copies them once.
-        const std::shared_ptr<const char[]> block = in_.share();
+        // Fewer bytes than one such value hold none, and small reads do not touch the block's count.
+        std::shared_ptr<const char[]> block;
+        if (in_.unread().size() >= wire::kSplicedValueBytes) block = in_.share();
         wire::Frame frame;
         while (std::size_t used = wire::next_frame(in_.unread(), frame, max_frame_bytes_)) {
-            frame.block = &block;
+            frame.block = block ? &block : nullptr;
             got.stream.push_back(wire::decode(frame));
             in_.consume(used);
         }

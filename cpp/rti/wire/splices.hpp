@@ -44,11 +44,8 @@ std::size_t gather(std::string_view buffer, std::size_t from, const Splices& spl
         if (size > 0) pieces[n++] = iovec{const_cast<char*>(p), size};
     };
     for (const auto& s : splices) {
-        if (n + 3 > max) {  // the splice, and what comes before and after it
-            piece(buffer.data() + from, s.at - from);
-            return n;
-        }
         piece(buffer.data() + from, s.at - from);
+        if (n + 2 > max) return n;  // no room for the splice and what comes after it
         piece(s.bytes.data(), s.bytes.size());
         from = s.at;
     }

@@ -192,8 +192,17 @@ void read_buffer() {
     CHECK(in.wanted(1u << 30) == large - 2);
     in.room(in.wanted(1u << 30));
     CHECK(in.capacity() == 4 + large);
-    receive(in, std::string(large - 2, 'z'));
-    CHECK(in.unread().size() == 4 + large && in.unread().substr(4, 3) == "12z");
+    CHECK(!in.holds_large_frame());
+    // Its last bytes, fewer than a chunk, are asked for exactly: a chunk would not fit and would move it all.
+    receive(in, std::string(large - 12, 'z'));
+    CHECK(in.wanted(1u << 30) == 10);
+    receive(in, std::string(10, 'z'));
+    CHECK(in.unread().size() == 4 + large && in.unread().substr(4, 3) == "12z" && in.capacity() == 4 + large);
+    // Whole, it is decoded before anything more is read; small frames, however many, never hold reading back.
+    CHECK(in.holds_large_frame());
+    wire::ReadBuffer smalls;
+    receive(smalls, frame_header(2) + "ab" + std::string(2 * wire::ReadBuffer::kChunk, 's'));
+    CHECK(!smalls.holds_large_frame());
     // A length over the limit asks for a chunk only: the frame is refused when decoded, nothing reserved.
     CHECK(in.wanted(16) == wire::ReadBuffer::kChunk);
     in.consume(4 + large);

@@ -729,6 +729,7 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
             if (static_cast<std::size_t>(r) < want && !tls_pending()) break;
             continue;
         }
+        if (in_.holds_large_frame()) break;
         const std::size_t want = in_.wanted(max_frame_bytes_);
         ssize_t r = ::recv(fd_, in_.room(want), want, MSG_DONTWAIT);
         if (r > 0) {

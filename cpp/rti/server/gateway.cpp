@@ -403,7 +403,7 @@ bool looks_like_tls(std::string_view bytes) {
 }  // namespace
 
 std::string Gateway::read_plain(Connection& c, std::size_t budget, bool& peer_closed) {
-    for (std::size_t got = 0; got < budget;) {
+    for (std::size_t got = 0; got < budget && !c.in.holds_large_frame();) {
         const std::size_t want = c.in.wanted(options_.max_frame_bytes);
         const ssize_t n = ::recv(c.fd, c.in.room(want), want, 0);
         if (n > 0) {

@@ -29,6 +29,8 @@ public:
 
     // How many bytes the next read should ask for: the rest of the frame under way when it is larger than a
     // chunk and within `max_frame_bytes` (a bigger length is refused when the frame is decoded), else a chunk.
+    // Exactly the rest, even when that is less than a chunk: the frame's block was reserved to its size, and
+    // a chunk more than fits would move all of it to a bigger one.
     std::size_t wanted(std::uint32_t max_frame_bytes) const {
         const std::size_t pending = end_ - begin_;
         if (pending < 4) return kChunk;
@@ -36,7 +38,18 @@ public:
         std::memcpy(&length, data_.get() + begin_, 4);
         if (length > max_frame_bytes) return kChunk;
         const std::size_t frame = 4 + static_cast<std::size_t>(length);
-        return frame > pending ? std::max(kChunk, frame - pending) : kChunk;
+        return frame > pending && frame > kChunk ? frame - pending : kChunk;
+    }
+    // Whether the first unread frame is whole and larger than a chunk. Its block was reserved for it, so reading
+    // on would move all of it to make room: a plain socket's reader decodes it first. (A TLS reader reads on
+    // while its session holds decrypted bytes, which poll() would not report.)
+    bool holds_large_frame() const {
+        const std::size_t pending = end_ - begin_;
+        if (pending <= kChunk) return false;
+        std::uint32_t length = 0;
+        std::memcpy(&length, data_.get() + begin_, 4);
+        const std::size_t frame = 4 + static_cast<std::size_t>(length);
+        return frame > kChunk && frame <= pending;
     }
     // Room for `n` more bytes at the end; read into it, then commit() what was read.
     char* room(std::size_t n) {

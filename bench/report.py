@@ -25,6 +25,8 @@ messages per second (rates), keyed as the bench tests record them:
     record.grant.2.off / .on                grant.rtig.2 through an rtig without / with --record, alternating
     record.throughput.1.off / .on           throughput.1 the same way
     monitor.grant.2.off / .on               grant.rtig.2 through an rtig without / with hlacore.monitor watching
+    busy.KEY                                KEY (grant.pure.2, grant.rtig.2, update.ro.8, update.tso.8) with
+                                            every process busy polling (rtig --busy-poll, $HLACORE_BUSY_POLL_US)
     rtis.floor.cpp, rtis.floor.stream.cpp   the three-RTI run's floors: C++ TCP round trip 8 B, stream rate
     rtis.R.lockstep.K, rtis.R.pingpong,     the three-RTI benchmark, R = hlacore, openrti, certi (the C++
     rtis.R.throughput                       program of bench/rtis) or python (hlacore's Python federates)
@@ -124,6 +126,12 @@ class Report:
                                           relay=True))
             update += [self._update_row(order, size) for order in ("ro", "tso")]
         sections.append(("Update latency: one-way = ping-pong round trip / 2", _present(update)))
+        busy = [self._busy_row("pure grant, 2 federates", "grant.pure.2", "grant.floor", 1.5),
+                self._busy_row("lockstep with updates, 2 federates", "grant.rtig.2", "grant.floor", 2.5),
+                self._busy_row("receive order one-way 8 B", "update.ro.8", "update.floor", 2.5, size=8),
+                self._busy_row("TSO one-way 8 B", "update.tso.8", "update.floor", 3.5, size=8)]
+        sections.append(("Busy polling (opt-in): every process polls 50 µs before it sleeps (rtig --busy-poll 50, "
+                         "$HLACORE_BUSY_POLL_US=50)", _present(busy)))
         throughput = [self._rate_row("raw TCP 48 B messages, one send each", "throughput.floor", "")]
         stream = self.median("throughput.floor.cpp")
         for n in SUBSCRIBERS:
@@ -232,6 +240,22 @@ class Report:
         return Row(f"{'receive order' if order == 'ro' else 'TSO'} one-way {size_name(size)}",
                    _us(statistics.median(values) / 2), _us(p99(values) / 2),
                    self._ratio(key, f"update.floor.py.{size}"), self._ratio(key, f"update.floor.cpp.{size}"), target)
+
+    def _busy_row(self, figure: str, key: str, floor: str, limit: float, size: Optional[int] = None) -> Optional[Row]:
+        """`key` with busy polling (busy.KEY), with issue 20's target for it and its ratio to the same loop
+        without; with `size`, a one-way figure: half the round trip, the floor's too."""
+        values = self.samples.get(f"busy.{key}")
+        if not values:
+            return None
+        suffix, half = (f".{size}", 0.5) if size is not None else ("", 1.0)
+        cpp = self.median(f"{floor}.cpp{suffix}")
+        median = statistics.median(values)
+        target = _meets(median / cpp if cpp else None, limit, f"≤ {limit}× C++ {'one-way' if size else 'round trip'}")
+        without = self._ratio(f"busy.{key}", key)
+        if target and without != "–":
+            target += f"; {without} the time without"
+        return Row(figure, _us(median * half), _us(p99(values) * half), self._ratio(f"busy.{key}", f"{floor}.py{suffix}"),
+                   self._ratio(f"busy.{key}", f"{floor}.cpp{suffix}"), target)
 
     def _rate_row(self, figure: str, key: str, target: str, subscribers: int = 1) -> Optional[Row]:
         """A rate row: the median rate, and the slowest round in the p99 column."""
@@ -376,6 +400,7 @@ def expected_keys() -> list[str]:
     keys += [f"monitor.grant.2.{side}" for side in ("off", "on")]
     keys += [f"large.{kind}{size}" for size in LARGE_SIZES for kind in ("", "floor.py.", "floor.cpp.", "floor.relay.")]
     keys += ["cpu.32.rtig", "cpu.32.federate"]
+    keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
     return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
 
 

@@ -188,6 +188,9 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     assert "| lockstep of 2 federates with updates: without / with hlacore.monitor | 200.0 µs / 200.0 µs |" in text
     assert "| 16 MiB updates | 0 MB/s | slowest round 0 MB/s | 1.00× | 1.00× | ≥ 50 % of the C++ floor: met (1.00× of the relay) |" in text
     assert "| rtig / each Python federate | 200.0 µs / 200.0 µs |" in text
+    assert ("| pure grant, 2 federates | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 1.5× C++ round trip: met (1.00×); "
+            "1.00× the time without |") in text
+    assert "| TSO one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 3.5× C++ one-way: met (1.00×); 1.00× the time without |" in text
 
 
 def test_the_monitor_cost_bench_watches_with_a_connected_page(rtig) -> None:

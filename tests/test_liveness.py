@@ -33,17 +33,24 @@ def stoppable_rtig(tmp_path: pathlib.Path) -> Iterator[RtigProcess]:
             server.proc.send_signal(signal.SIGCONT)
 
 
-def frozen_peer(server: RtigProcess, mode: str, timeout: float) -> Child:
+# The peer's federate as it is by default, and busy polling its longest (test_busy_poll.py): a spin takes a
+# signal without interrupting a poll, and the sleep after it is cut in slices for Ctrl-C to be seen.
+BUSY_POLL = pytest.mark.parametrize("busy_poll_us", ["0", "100000"])
+
+
+def frozen_peer(server: RtigProcess, mode: str, timeout: float, busy_poll_us: str = "0") -> Child:
     """The peer, set up while the gateway runs; returns once the gateway is stopped."""
-    peer = python_peer(PEER, server.address, server.proc.pid, mode, timeout)
+    peer = python_peer(PEER, server.address, server.proc.pid, mode, timeout, env={"HLACORE_BUSY_POLL_US": busy_poll_us})
     assert peer.read_json(60) == {"ready": True}
     server.proc.send_signal(signal.SIGSTOP)
     return peer
 
 
-def test_every_blocking_call_raises_gateway_not_responding_within_its_timeout(stoppable_rtig: RtigProcess) -> None:
+@BUSY_POLL
+def test_every_blocking_call_raises_gateway_not_responding_within_its_timeout(stoppable_rtig: RtigProcess,
+                                                                             busy_poll_us: str) -> None:
     timeout = 1.0
-    with frozen_peer(stoppable_rtig, "timeout", timeout) as peer:
+    with frozen_peer(stoppable_rtig, "timeout", timeout, busy_poll_us) as peer:
         reports = [peer.read_json(60) for _ in CALLS]
         assert peer.read_json(10) == {"done": True}
     print("\ncall                        raised                 after (s)")
@@ -55,13 +62,15 @@ def test_every_blocking_call_raises_gateway_not_responding_within_its_timeout(st
         assert r["after"] <= timeout + 1.0, r
 
 
-def test_ctrl_c_interrupts_every_blocking_call(stoppable_rtig: RtigProcess) -> None:
-    """SIGINT 0.3 s into each call (the timeout is 30 s): KeyboardInterrupt within half a second."""
-    with frozen_peer(stoppable_rtig, "interrupt", 30.0) as peer:
+@BUSY_POLL
+def test_ctrl_c_interrupts_every_blocking_call(stoppable_rtig: RtigProcess, busy_poll_us: str) -> None:
+    """SIGINT 0.3 s into each call (the timeout is 30 s; busy polling, 0.05 s: within the wait's first spin):
+    KeyboardInterrupt within half a second."""
+    with frozen_peer(stoppable_rtig, "interrupt", 30.0, busy_poll_us) as peer:
         print("\ncall                        interrupted after (s)")
         for name in CALLS:
             assert peer.read_json(60) == {"calling": name}
-            time.sleep(0.3)
+            time.sleep(0.3 if busy_poll_us == "0" else 0.05)
             sent = time.monotonic()
             peer.send_signal(signal.SIGINT)
             report = peer.read_json(10)

@@ -99,7 +99,8 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith("usage: rtig")
     for option in ("--host", "--port", "--fom-path", "--frame-timeout", "--client-budget", "--stall-timeout",
-                   "--max-frame", "--max-datagram", "--save-dir", "--verbose", "--tls-cert", "--tls-key", "--tls-ca"):
+                   "--max-frame", "--max-datagram", "--save-dir", "--verbose", "--tls-cert", "--tls-key", "--tls-ca",
+                   "--busy-poll"):
         assert option in result.stdout
     assert "rtig listening" not in result.stdout
 
@@ -112,6 +113,7 @@ REFUSED_VALUES = [
     ("--stall-timeout", "--stall-timeout", ["-1"]),
     ("--max-frame", "--max-frame", ["1000", "2000000000"]),
     ("--max-datagram", "--max-datagram", ["100", "70000", "1400.5"]),
+    ("--busy-poll", "--busy-poll", ["-1", "100001", "2.5", "fast"]),
 ]
 NEEDING_A_VALUE = ["--port", "--host", "--fom-path", "--frame-timeout", "--save-dir", "--tls-cert"]
 

@@ -7,6 +7,7 @@
 
 #include "bindings/convert.hpp"
 #include "rti/auth.hpp"
+#include "rti/busy_poll.hpp"
 #include "rti/server/gateway.hpp"
 #include "rti/server/time_manager.hpp"
 #include "rti/wire/callbacks.hpp"
@@ -24,8 +25,10 @@ public:
                       const std::string& save_dir, std::string trace_path, std::size_t client_budget,
                       double stall_timeout, std::uint32_t max_frame, const std::string& secret_file,
                       std::uint32_t max_datagram, const std::map<std::string, std::string>& federation_secret_files,
-                      const std::string& tls_cert, const std::string& tls_key, std::string record_path) {
+                      const std::string& tls_cert, const std::string& tls_key, std::string record_path,
+                      std::uint32_t busy_poll_us) {
         GatewayOptions options;
+        options.busy_poll_us = busy_poll_us;  // ValueError from the Gateway beyond kMaxBusyPollUs
         options.tls_cert = tls_cert;  // loaded by the Gateway: RuntimeError saying why, ValueError for one alone
         options.tls_key = tls_key;
         options.max_datagram = max_datagram;
@@ -87,7 +90,8 @@ std::string client_secret(const std::string& path) {
 
 std::unique_ptr<Client> connect_client(const std::string& host, std::uint16_t port, double timeout,
                                        const std::string& secret_file, bool datagrams,
-                                       const std::string& federation_secret_file, bool tls, const std::string& tls_ca) {
+                                       const std::string& federation_secret_file, bool tls, const std::string& tls_ca,
+                                       std::uint32_t busy_poll_us) {
     static PythonWaitHost wait_host;
     ClientOptions options;
     options.timeout_s = timeout;
@@ -97,6 +101,7 @@ std::unique_ptr<Client> connect_client(const std::string& host, std::uint16_t po
     options.federation_secret = client_secret(federation_secret_file);
     options.tls = tls;
     options.tls_ca = tls_ca;
+    options.busy_poll_us = busy_poll_us;
     py::gil_scoped_release release;
     return std::make_unique<Client>(host, port, options);
 }
@@ -140,20 +145,22 @@ PYBIND11_MODULE(_core, m) {
 
     // The bounds of the gateway's options, which hlacore.Gateway checks (server/gateway.hpp).
     m.attr("MIN_CLIENT_BUDGET") = hlacore::kMinClientBudget;
+    m.attr("MAX_BUSY_POLL_US") = hlacore::kMaxBusyPollUs;
     m.attr("MAX_FRAME_RANGE") = py::make_tuple(hlacore::kMinMaxFrame, hlacore::kMaxMaxFrame);
     m.attr("MAX_DATAGRAM_RANGE") = py::make_tuple(hlacore::kMinMaxDatagram, hlacore::wire::kMaxDatagramLimit);
     py::class_<BackgroundGateway>(m, "BackgroundGateway")
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
                       std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t,
                       const std::map<std::string, std::string>&, const std::string&, const std::string&,
-                      std::string>(),
+                      std::string, std::uint32_t>(),
              py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
              py::arg("trace_path") = "", py::arg("client_budget") = hlacore::GatewayOptions{}.client_budget,
              py::arg("stall_timeout") = hlacore::GatewayOptions{}.stall_timeout_s,
              py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes, py::arg("secret_file") = "",
              py::arg("max_datagram") = hlacore::GatewayOptions{}.max_datagram,
              py::arg("federation_secret_files") = std::map<std::string, std::string>{}, py::arg("tls_cert") = "",
-             py::arg("tls_key") = "", py::arg("record_path") = "", py::call_guard<py::gil_scoped_release>())
+             py::arg("tls_key") = "", py::arg("record_path") = "", py::arg("busy_poll_us") = 0,
+             py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)
         .def_property_readonly("port", &BackgroundGateway::port)
@@ -163,7 +170,7 @@ PYBIND11_MODULE(_core, m) {
     rtia
         .def(py::init(&connect_client), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s,
              py::arg("secret_file") = "", py::arg("datagrams") = true, py::arg("federation_secret_file") = "",
-             py::arg("tls") = false, py::arg("tls_ca") = "")
+             py::arg("tls") = false, py::arg("tls_ca") = "", py::arg("busy_poll_us") = 0)
         .def_property_readonly("address", &Client::address, "The gateway's \"host:port\" this ambassador is connected to.")
         .def("fileno", &Client::fileno,
              "The connection's socket, for select() or an event loop's add_reader (hlacore.aio): readable when the "

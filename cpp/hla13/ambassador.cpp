@@ -1,6 +1,7 @@
 // RTIambassador: connecting, federation management (§4: create, join, resign, synchronization points,
 // save and restore), declaration management (§5), the support services (§10) and tick. The other groups
 // are in objects.cpp, time.cpp and regions.cpp; the callbacks in callbacks.cpp.
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include "ambassador.hpp"
 #include "fed_parser/fom.hpp"
 #include "rti/auth.hpp"
+#include "rti/busy_poll.hpp"
 
 using namespace hlacore;
 using hlacore::hla13::guarded;
@@ -25,7 +27,8 @@ const char* env(const char* name) {
 
 // The gateway's address and the client's options from the environment, as hlacore.rti.RTIAmbassador reads
 // them: $HLACORE_RTIG (else CERTI's $CERTI_HOST and $CERTI_TCP_PORT, else 127.0.0.1:60400),
-// $HLACORE_TIMEOUT, $HLACORE_SECRET_FILE, $HLACORE_FEDERATION_SECRET_FILE, $HLACORE_DATAGRAMS, $HLACORE_TLS.
+// $HLACORE_TIMEOUT, $HLACORE_SECRET_FILE, $HLACORE_FEDERATION_SECRET_FILE, $HLACORE_DATAGRAMS, $HLACORE_TLS,
+// $HLACORE_BUSY_POLL_US.
 struct Connection {
     std::string host = "127.0.0.1";
     std::uint16_t port = 60400;
@@ -67,6 +70,14 @@ Connection connection_from_environment() {
         if (std::strcmp(datagrams, "0") != 0 && std::strcmp(datagrams, "1") != 0)
             throw RTI::RTIinternalError((std::string("HLACORE_DATAGRAMS=") + datagrams + " must be 0 or 1").c_str());
         c.options.datagrams = std::strcmp(datagrams, "1") == 0;
+    }
+    if (const char* spin = env("HLACORE_BUSY_POLL_US")) {
+        char* end = nullptr;
+        const unsigned long us = std::strtoul(spin, &end, 10);
+        if (*end != '\0' || !std::isdigit(static_cast<unsigned char>(*spin)) || us > kMaxBusyPollUs)
+            throw RTI::RTIinternalError((std::string("HLACORE_BUSY_POLL_US=") + spin + " is not a whole number of µs between 0 and " +
+                                         std::to_string(kMaxBusyPollUs)).c_str());
+        c.options.busy_poll_us = static_cast<std::uint32_t>(us);
     }
     if (const char* tls = env("HLACORE_TLS"); tls && std::strcmp(tls, "0") != 0) {
         c.options.tls = true;

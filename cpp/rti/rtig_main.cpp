@@ -7,6 +7,7 @@
 #include <string>
 
 #include "rti/auth.hpp"
+#include "rti/busy_poll.hpp"
 #if HLACORE_RTIG_STATUS
 #include "rti/client/client.hpp"
 #endif
@@ -25,7 +26,7 @@ int usage(int status) {
                  "usage: rtig [--host HOST] [--port PORT] [--fom-path DIR]... [--frame-timeout S] [--client-budget B]\n"
                  "            [--stall-timeout S] [--max-frame B] [--max-datagram B] [--secret-file FILE | --no-secret]\n"
                  "            [--federation-secret NAME=FILE]... [--tls-cert FILE --tls-key FILE] [--save-dir DIR]\n"
-                 "            [--trace FILE] [--record FILE] [--verbose]\n"
+                 "            [--trace FILE] [--record FILE] [--busy-poll US] [--verbose]\n"
                  "       rtig [--secret-file FILE] [--tls | --tls-ca FILE] --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
@@ -64,6 +65,9 @@ int usage(int status) {
                  "  --record FILE      record every federation into FILE (MCAP): the FOM, joins, registrations,\n"
                  "                     updates, interactions, requests and callbacks with their times, for\n"
                  "                     python -m hlacore.replay and Foxglove (docs/record-replay.md)\n"
+                 "  --busy-poll US     before each wait for clients sleeps, poll for up to US µs without sleeping\n"
+                 "                     (0 to 100000; default 0: off): a message that comes meanwhile costs no\n"
+                 "                     wake-up, at the price of a busy core (docs/performance.md, busy polling)\n"
                  "  --verbose          log connections, joins and federations to stderr\n"
                  "  --status           print the state of a running rtig (default 127.0.0.1:60400) as JSON:\n"
                  "                     per federation each federate's time, lookahead, regulating/constrained,\n"
@@ -167,6 +171,14 @@ int main(int argc, char** argv) {
                 return usage(2);
             }
             options.max_frame_bytes = static_cast<std::uint32_t>(v);
+        } else if (arg == "--busy-poll") {
+            const double v = number("--busy-poll", 0, true);
+            if (v > hlacore::kMaxBusyPollUs || v != static_cast<std::uint32_t>(v)) {
+                std::fprintf(stderr, "rtig: invalid --busy-poll '%s' (whole µs, 0 to %u)\n", argv[i],
+                             static_cast<unsigned>(hlacore::kMaxBusyPollUs));
+                return usage(2);
+            }
+            options.busy_poll_us = static_cast<std::uint32_t>(v);
         } else if (arg == "--max-datagram") {
             const double v = number("--max-datagram", 0, true);
             if ((v != 0 && v < hlacore::kMinMaxDatagram) || v > hlacore::wire::kMaxDatagramLimit || v != static_cast<std::uint32_t>(v)) {

@@ -46,6 +46,8 @@ class Gateway:
     certificate (chain) and its private key (readable by its owner only); every connection is then TLS and
     clients connect with ``RTIAmbassador(tls=...)``; no datagrams are offered (best effort goes over the
     encrypted stream). :meth:`status` then trusts ``tls_cert`` itself.
+    ``busy_poll_us`` is ``rtig --busy-poll``: each wait for the clients polls without sleeping for up to that
+    many µs before it sleeps (0, the default: off; at most :attr:`MAX_BUSY_POLL_US`; docs/performance.md).
     """
 
     #: The smallest ``client_budget`` in bytes (a smaller one raises :class:`ValueError`).
@@ -55,6 +57,8 @@ class Gateway:
     #: The bounds of ``max_datagram`` in bytes, both included, when it is not 0 (65507: the largest UDP payload
     #: over IPv4).
     MAX_DATAGRAM_RANGE: tuple[int, int] = _core.MAX_DATAGRAM_RANGE
+    #: The longest ``busy_poll_us``.
+    MAX_BUSY_POLL_US: int = _core.MAX_BUSY_POLL_US
 
     def __init__(
         self,
@@ -73,6 +77,7 @@ class Gateway:
         tls_cert: Optional[str | os.PathLike[str]] = None,
         tls_key: Optional[str | os.PathLike[str]] = None,
         record: Optional[str | os.PathLike[str]] = None,
+        busy_poll_us: int = 0,
     ) -> None:
         if client_budget < self.MIN_CLIENT_BUDGET:
             raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
@@ -88,6 +93,8 @@ class Gateway:
         low, high = self.MAX_DATAGRAM_RANGE
         if max_datagram != 0 and not low <= max_datagram <= high:
             raise ValueError(f"max_datagram must be 0 or between {low} and {high} bytes, not {max_datagram}")
+        if isinstance(busy_poll_us, bool) or not isinstance(busy_poll_us, int) or not 0 <= busy_poll_us <= self.MAX_BUSY_POLL_US:
+            raise ValueError(f"busy_poll_us must be a whole number of µs between 0 and {self.MAX_BUSY_POLL_US}, not {busy_poll_us!r}")
         self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose,
                                                 os.fspath(save_dir) if save_dir is not None else "",
                                                 os.fspath(trace) if trace is not None else "",
@@ -97,7 +104,7 @@ class Gateway:
                                                 {name: os.fspath(path) for name, path in (federation_secrets or {}).items()},
                                                 self._tls_cert or "",
                                                 os.fspath(tls_key) if tls_key is not None else "",
-                                                os.fspath(record) if record is not None else "")
+                                                os.fspath(record) if record is not None else "", busy_poll_us)
 
     @property
     def host(self) -> str:

@@ -395,6 +395,19 @@ def _resolve_datagrams(datagrams: Optional[bool]) -> bool:
     return text == "1"
 
 
+def _resolve_busy_poll(busy_poll_us: Optional[int]) -> int:
+    """How long a wait polls before it sleeps, in µs: `busy_poll_us`, else $HLACORE_BUSY_POLL_US, else 0 (off)."""
+    if busy_poll_us is None:
+        text = os.environ.get("HLACORE_BUSY_POLL_US", "0") or "0"
+        if not text.isdigit():
+            raise _core.RTIinternalError(f"HLACORE_BUSY_POLL_US={text!r} is not a whole number of µs")
+        busy_poll_us = int(text)
+    if isinstance(busy_poll_us, bool) or not isinstance(busy_poll_us, int) or not 0 <= busy_poll_us <= _core.MAX_BUSY_POLL_US:
+        raise _core.RTIinternalError(
+            f"busy polling must be a whole number of µs between 0 and {_core.MAX_BUSY_POLL_US}, not {busy_poll_us!r}")
+    return busy_poll_us
+
+
 def _resolve_tls(tls: Optional[bool | str | os.PathLike[str]]) -> tuple[bool, str]:
     """Whether to speak TLS and the CA file to trust ("" for the system's CA store): `tls`, else $HLACORE_TLS.
 
@@ -445,18 +458,25 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     connected to. The handshake is bounded by ``timeout``; an untrusted certificate, a name that does not
     match, or a gateway without TLS raises :class:`AuthenticationFailed` saying which. Under TLS the gateway
     offers no datagrams: best-effort messages go over the encrypted stream (docs/networking.md).
+
+    ``busy_poll_us`` (else ``$HLACORE_BUSY_POLL_US``; default 0, off; at most 100000): each wait for the
+    gateway (a tick, a grant, a reply) polls the socket without sleeping for up to that many µs before it
+    sleeps. A message that comes meanwhile is read without a wake-up, which on a machine with idle cores
+    costs tens of µs; the price is a busy core while waiting. Worth it for federates that step in lockstep
+    with fewer processes than cores, with ``rtig --busy-poll`` on the gateway (docs/performance.md, busy
+    polling). Ctrl-C still interrupts a wait, within 0.1 s.
     """
 
     def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None,
                  secret_file: Optional[str | os.PathLike[str]] = None, datagrams: Optional[bool] = None,
                  federation_secret_file: Optional[str | os.PathLike[str]] = None,
-                 tls: Optional[bool | str | os.PathLike[str]] = None) -> None:
+                 tls: Optional[bool | str | os.PathLike[str]] = None, busy_poll_us: Optional[int] = None) -> None:
         host, port = _resolve_address(address)
         use_tls, tls_ca = _resolve_tls(tls)
         super().__init__(host, port, _resolve_timeout(timeout), _resolve_secret_file(secret_file),
                          _resolve_datagrams(datagrams),
                          _resolve_secret_file(federation_secret_file, "HLACORE_FEDERATION_SECRET_FILE"),
-                         use_tls, tls_ca)
+                         use_tls, tls_ca, _resolve_busy_poll(busy_poll_us))
         self._federate_ambassador: Any = None
 
     # ---- federation management ----

@@ -1,6 +1,7 @@
 #include "rti/client/client.hpp"
 
 #include "rti/auth.hpp"
+#include "rti/busy_poll.hpp"
 #include "rti/client/waiting.hpp"
 #include "rti/wire/splices.hpp"
 
@@ -56,6 +57,8 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
     if (!(options.timeout_s > 0) || options.timeout_s > 1e6)
         raise(ErrorCode::RTIinternalError, "the client's timeout must be between 0 and 1e6 seconds, not " +
                                                std::to_string(options.timeout_s));
+    if (const std::string error = busy_poll_error(options.busy_poll_us); !error.empty())
+        raise(ErrorCode::RTIinternalError, error);
     addrinfo hints{};
     hints.ai_family = AF_UNSPEC;
     hints.ai_socktype = SOCK_STREAM;
@@ -671,7 +674,7 @@ Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
         WaitStatus status = WaitStatus::Ready;
         try {
             status = read_socket(std::min(deadline, liveness_deadline()), got);
-            if (status != WaitStatus::Interrupted) check_liveness();
+            check_liveness();
         } catch (...) {
             lock.lock();
             reading_ = false;
@@ -684,6 +687,27 @@ Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
         cv_.notify_all();
         if (status == WaitStatus::Interrupted) return status;
     }
+}
+
+// ppoll() on the connection's sockets; when busy polling (ClientOptions::busy_poll_us) and the wait may sleep,
+// a spin first. A signal that comes while spinning is handled without interrupting a poll, so with a wait host
+// the sleep after a spin is cut to a slice that ends as if interrupted (`sliced`), for the host to look for
+// one. A spin and a sleep that found nothing make an idle connection, which sleeps at once until something
+// arrives.
+int Client::wait_readable(pollfd* p, nfds_t count, const timespec* timeout, bool& sliced) {
+    static constexpr timespec kNow{}, kSlice{0, 100'000'000};
+    const bool may_sleep = !timeout || timeout->tv_sec || timeout->tv_nsec;
+    if (!options_.busy_poll_us || !may_sleep || idle_after_spin_) {
+        const int n = ::ppoll(p, count, timeout, nullptr);
+        if (n > 0) idle_after_spin_ = false;
+        return n;
+    }
+    int n = busy_poll(std::chrono::microseconds(options_.busy_poll_us), [&] { return ::ppoll(p, count, &kNow, nullptr); });
+    if (n != 0) return n;
+    sliced = options_.wait_host && (!timeout || timeout->tv_sec || timeout->tv_nsec > kSlice.tv_nsec);
+    n = ::ppoll(p, count, sliced ? &kSlice : timeout, nullptr);
+    idle_after_spin_ = n == 0;
+    return n;
 }
 
 // Waits for readable data (up to the deadline), then reads everything available and decodes whole frames.
@@ -703,7 +727,9 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
     const bool buffered = ssl_ && tls_readable();
     const timespec now{};
     if (buffered) timeout = &now;
-    int n = ::ppoll(p, datagram_path_ ? 2 : 1, timeout, nullptr);
+    bool sliced = false;
+    int n = wait_readable(p, datagram_path_ ? 2 : 1, timeout, sliced);
+    if (n == 0 && sliced) return WaitStatus::Interrupted;
     if (buffered && n >= 0) {
         p[0].revents |= POLLIN;
         n = std::max(n, 1);

@@ -24,6 +24,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include <poll.h>
 #include <sys/uio.h>
 
 #include "fed_parser/fom.hpp"
@@ -66,6 +67,11 @@ struct ClientOptions {
     // connected to. Failures raise AuthenticationFailed.
     bool tls = false;
     std::string tls_ca;
+    // Busy polling (rti/busy_poll.hpp; 0, the default: off): a wait polls the socket without sleeping for up
+    // to this many µs before it sleeps, so that a message arriving meanwhile costs no wake-up. At most
+    // kMaxBusyPollUs. With a wait_host, a wait that spun sleeps in slices of 100 ms after it, each ended as if
+    // interrupted, so that the host looks at signals the spin may have taken without a poll seeing them.
+    std::uint32_t busy_poll_us = 0;
 };
 
 // The client's datagram path: whether best-effort messages travel as datagrams, and the counts both ways.
@@ -405,6 +411,7 @@ private:
         std::vector<wire::Message> datagrams;
     };
     WaitStatus read_socket(Clock::time_point deadline, Arrivals& got);
+    int wait_readable(pollfd* fds, nfds_t count, const timespec* timeout, bool& sliced);
     void file(Arrivals& got);  // under mu_
     void write_recorded(const wire::Message& m);  // under mu_
     // Best effort over UDP (client/datagrams.cpp): proving the path at connect (falling back to TCP with one
@@ -560,6 +567,7 @@ private:
     // frame limits): a federate that was sent one camera frame is most often sent the next. The large values
     // of callbacks not delivered yet keep the blocks they lie in (wire::Value).
     wire::ReadBuffer in_;
+    bool idle_after_spin_ = false;  // wait_readable(): a spin and the sleep after it found nothing
     Clock::time_point last_heard_;  // when the gateway last sent a byte
     Clock::time_point ping_sent_;   // when the unanswered Ping left (last_heard_ is later once answered)
     std::uint32_t pings_ = 0;

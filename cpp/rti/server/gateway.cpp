@@ -1,5 +1,6 @@
 #include "rti/server/gateway.hpp"
 #include "rti/auth.hpp"
+#include "rti/busy_poll.hpp"
 #include "rti/server/connection.hpp"
 #include "rti/wire/json.hpp"
 
@@ -206,9 +207,12 @@ void EventLoop::modify(int fd, std::uint32_t events) {
 
 void EventLoop::remove(int fd) { epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, fd, nullptr); }
 
-const std::vector<epoll_event>& EventLoop::wait(int timeout_ms) {
+const std::vector<epoll_event>& EventLoop::wait(int timeout_ms, std::chrono::microseconds spin) {
     ready_.resize(256);
-    int n = epoll_wait(epoll_fd_, ready_.data(), static_cast<int>(ready_.size()), timeout_ms);
+    const int size = static_cast<int>(ready_.size());
+    int n = 0;
+    if (spin.count() > 0 && timeout_ms != 0) n = busy_poll(spin, [&] { return epoll_wait(epoll_fd_, ready_.data(), size, 0); });
+    if (n == 0) n = epoll_wait(epoll_fd_, ready_.data(), size, timeout_ms);
     if (n < 0) {
         if (errno != EINTR) fail("epoll_wait");
         n = 0;
@@ -222,6 +226,7 @@ Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
         throw std::invalid_argument("max_datagram must be 0 or between " + std::to_string(kMinMaxDatagram) + " and " +
                                     std::to_string(wire::kMaxDatagramLimit) + " bytes, not " +
                                     std::to_string(options_.max_datagram));
+    if (const std::string error = busy_poll_error(options_.busy_poll_us); !error.empty()) throw std::invalid_argument(error);
     if (options_.tls_cert.empty() != options_.tls_key.empty())
         throw std::invalid_argument("TLS needs both a certificate and its key (rtig --tls-cert FILE --tls-key FILE)");
     if (!options_.tls_cert.empty()) tls_ = tls::server_context(options_.tls_cert, options_.tls_key);
@@ -293,7 +298,8 @@ void Gateway::run() {
         const bool recording_pending = recorder_ && recorder_->pending();  // written out within half a second
         const auto& events =
             loop_.wait(partial_pending || writes_pending || !paused_.empty() || recording_pending || large_buffers_kept_
-                           ? 250 : -1);
+                           ? 250 : -1,
+                       std::chrono::microseconds(options_.busy_poll_us));
         for (const epoll_event& ev : events) {
             const int fd = ev.data.fd;
             if (fd == wake_fd_) {

@@ -36,8 +36,9 @@ public:
     void modify(int fd, std::uint32_t events);
     void remove(int fd);
 
-    // Waits up to timeout_ms (-1: forever) and returns the ready events; EINTR yields an empty list.
-    const std::vector<epoll_event>& wait(int timeout_ms);
+    // Waits up to timeout_ms (-1: forever) and returns the ready events; EINTR yields an empty list. With
+    // `spin`, polls without sleeping for up to that long first (rti/busy_poll.hpp).
+    const std::vector<epoll_event>& wait(int timeout_ms, std::chrono::microseconds spin = {});
 
 private:
     int epoll_fd_;
@@ -74,6 +75,9 @@ struct GatewayOptions {
     // over the encrypted stream). Both empty: plain TCP.
     std::string tls_cert;
     std::string tls_key;
+    // Busy polling (rti/busy_poll.hpp; 0, the default: off): each wait for the clients polls without sleeping
+    // for up to this many µs before it sleeps. At most kMaxBusyPollUs.
+    std::uint32_t busy_poll_us = 0;
 };
 // The bounds of the options (rtig's arguments and hlacore.Gateway check them; both included). The smallest
 // max_datagram (or 0) leaves room for a header and a small message.

@@ -464,7 +464,7 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     sleeps. A message that comes meanwhile is read without a wake-up, which on a machine with idle cores
     costs tens of µs; the price is a busy core while waiting. Worth it for federates that step in lockstep
     with fewer processes than cores, with ``rtig --busy-poll`` on the gateway (docs/performance.md, busy
-    polling). Ctrl-C still interrupts a wait, within 0.1 s.
+    polling). Ctrl-C still interrupts a wait, within the spin and 0.1 s more.
     """
 
     def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None,

@@ -61,7 +61,7 @@ def test_an_idle_federate_spins_once_then_sleeps(inprocess_gateway: hlacore.Gate
 def test_a_bad_busy_poll_is_refused_at_the_call(inprocess_gateway: hlacore.Gateway, value: object) -> None:
     with pytest.raises(rti.RTIinternalError, match="busy polling must be a whole number of µs between 0 and 100000"):
         rti.RTIAmbassador(inprocess_gateway.address, busy_poll_us=value)  # type: ignore[arg-type]
-    with pytest.raises(ValueError, match="busy_poll_us must be a whole number of µs between 0 and 100000"):
+    with pytest.raises(ValueError, match="busy polling must be a whole number of µs between 0 and 100000"):
         hlacore.Gateway(port=0, busy_poll_us=value)  # type: ignore[arg-type]
 
 

@@ -28,11 +28,22 @@ def gateway_env(address: str) -> dict[str, str]:
     return {**os.environ, "HLACORE_RTIG": address}
 
 
-def test_every_service_from_cpp(rtig: RtigProcess) -> None:
-    run = subprocess.run([cpp_federate("hla13_services"), str(DATA / "ddm.fed")], env=gateway_env(rtig.address),
+@pytest.mark.parametrize("busy_poll_us", ["0", "50"])
+def test_every_service_from_cpp(rtig: RtigProcess, busy_poll_us: str) -> None:
+    """Every service from C++, as it is by default and busy polling ($HLACORE_BUSY_POLL_US)."""
+    run = subprocess.run([cpp_federate("hla13_services"), str(DATA / "ddm.fed")],
+                         env={**gateway_env(rtig.address), "HLACORE_BUSY_POLL_US": busy_poll_us},
                          capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stdout + run.stderr
     assert run.stdout == "called 102 services\n"
+
+
+def test_a_bad_busy_poll_variable_is_an_rti_internal_error(rtig: RtigProcess) -> None:
+    run = subprocess.run([cpp_federate("hla13_services"), str(DATA / "ddm.fed")],
+                         env={**gateway_env(rtig.address), "HLACORE_BUSY_POLL_US": "100001"},
+                         capture_output=True, text=True, timeout=60)
+    assert run.returncode == 1
+    assert "unexpected RTIinternalError: HLACORE_BUSY_POLL_US=100001 is not a whole number of µs" in run.stderr
 
 
 def test_no_gateway_is_an_rti_internal_error() -> None:

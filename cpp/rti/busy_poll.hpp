@@ -19,7 +19,8 @@ constexpr std::uint32_t kMaxBusyPollUs = 100000;
 // Why `us` is not an acceptable spin ("" when it is).
 inline std::string busy_poll_error(long long us) {
     if (us >= 0 && us <= kMaxBusyPollUs) return "";
-    return "busy polling must be between 0 and " + std::to_string(kMaxBusyPollUs) + " µs, not " + std::to_string(us);
+    return "busy polling must be a whole number of µs between 0 and " + std::to_string(kMaxBusyPollUs) + ", not " +
+           std::to_string(us);
 }
 
 // Calls `poll` (non-blocking: > 0 ready, 0 nothing yet, < 0 an error) until it reports something or `spin`

@@ -8,6 +8,7 @@ from types import TracebackType
 from typing import TYPE_CHECKING, Any, Iterable, Mapping, Optional
 
 from . import _core
+from .rti import _busy_poll_error
 
 if TYPE_CHECKING:
     from .monitor import Monitor
@@ -93,8 +94,8 @@ class Gateway:
         low, high = self.MAX_DATAGRAM_RANGE
         if max_datagram != 0 and not low <= max_datagram <= high:
             raise ValueError(f"max_datagram must be 0 or between {low} and {high} bytes, not {max_datagram}")
-        if isinstance(busy_poll_us, bool) or not isinstance(busy_poll_us, int) or not 0 <= busy_poll_us <= self.MAX_BUSY_POLL_US:
-            raise ValueError(f"busy_poll_us must be a whole number of µs between 0 and {self.MAX_BUSY_POLL_US}, not {busy_poll_us!r}")
+        if error := _busy_poll_error(busy_poll_us):
+            raise ValueError(error)
         self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose,
                                                 os.fspath(save_dir) if save_dir is not None else "",
                                                 os.fspath(trace) if trace is not None else "",

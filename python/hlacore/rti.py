@@ -395,6 +395,14 @@ def _resolve_datagrams(datagrams: Optional[bool]) -> bool:
     return text == "1"
 
 
+def _busy_poll_error(value: object) -> str:
+    """Why `value` is not a busy-polling time ("" when it is): a whole number of µs from 0 to
+    ``MAX_BUSY_POLL_US`` (what ``RTIAmbassador``, ``hlacore.Gateway`` and ``rtig --busy-poll`` take)."""
+    if isinstance(value, int) and not isinstance(value, bool) and 0 <= value <= _core.MAX_BUSY_POLL_US:
+        return ""
+    return f"busy polling must be a whole number of µs between 0 and {_core.MAX_BUSY_POLL_US}, not {value!r}"
+
+
 def _resolve_busy_poll(busy_poll_us: Optional[int]) -> int:
     """How long a wait polls before it sleeps, in µs: `busy_poll_us`, else $HLACORE_BUSY_POLL_US, else 0 (off)."""
     if busy_poll_us is None:
@@ -402,9 +410,8 @@ def _resolve_busy_poll(busy_poll_us: Optional[int]) -> int:
         if not text.isdigit():
             raise _core.RTIinternalError(f"HLACORE_BUSY_POLL_US={text!r} is not a whole number of µs")
         busy_poll_us = int(text)
-    if isinstance(busy_poll_us, bool) or not isinstance(busy_poll_us, int) or not 0 <= busy_poll_us <= _core.MAX_BUSY_POLL_US:
-        raise _core.RTIinternalError(
-            f"busy polling must be a whole number of µs between 0 and {_core.MAX_BUSY_POLL_US}, not {busy_poll_us!r}")
+    if error := _busy_poll_error(busy_poll_us):
+        raise _core.RTIinternalError(error)
     return busy_poll_us
 
 

@@ -473,7 +473,8 @@ void Client::queue_send(std::unique_lock<std::mutex>& lock) {
         pending_.swap(send_buffer_);  // not copied: a large update would cost a copy of its values
     else
         pending_ += send_buffer_;
-    writer_work_.notify_one();
+    queued_.fetch_add(1, std::memory_order_release);
+    if (writer_asleep_) writer_work_.notify_one();
     while (pending_.size() > kMaxPending) {
         {
             Waiting waiting(options_.wait_host);
@@ -498,9 +499,20 @@ void Client::writer_loop() {
     sigfillset(&all);
     pthread_sigmask(SIG_BLOCK, &all, nullptr);
     std::string writing;
+    std::size_t written = 0;  // by the last write
     std::unique_lock<std::mutex> lock(send_mu_);
     for (;;) {
+        // Linger after a batch of small messages: more may come before a sleep would be over. (A large
+        // message takes longer to make than a wake-up costs.)
+        if (pending_.empty() && !writer_stop_ && written > 0 && written < kWriterLingerBelow) {
+            const std::uint64_t seen = queued_.load(std::memory_order_acquire);
+            lock.unlock();
+            busy_poll(kWriterLinger, [&] { return queued_.load(std::memory_order_acquire) != seen ? 1 : 0; });
+            lock.lock();
+        }
+        writer_asleep_ = true;
         writer_work_.wait(lock, [this] { return writer_stop_ || !pending_.empty(); });
+        writer_asleep_ = false;
         if (pending_.empty()) return;  // stopped, and everything written
         writing.swap(pending_);
         pending_.clear();
@@ -514,6 +526,7 @@ void Client::writer_loop() {
         }
         lock.lock();
         writer_busy_ = false;
+        written = writing.size();
         writing.clear();
         writer_room_.notify_all();
         {

@@ -375,8 +375,13 @@ private:
     // Coalescing (client.cpp): a message sent within kDirectSends of the caller's last wait (a lone one, or
     // an update and its time advance request) is written by the caller at once; the rest of a longer run of
     // sends is appended to pending_ and written by the writer thread, many per system call while its
-    // previous write is in flight (send_mu_ held for both).
+    // previous write is in flight (send_mu_ held for both). A write of less than kWriterLingerBelow bytes that
+    // leaves nothing pending is followed by kWriterLinger of watching for more before the writer sleeps: in a
+    // run of small sends the next batch then costs the caller no wake-up of the writer (docs/performance.md,
+    // the lingering writer).
     static constexpr int kDirectSends = 4;
+    static constexpr std::chrono::microseconds kWriterLinger{20};
+    static constexpr std::size_t kWriterLingerBelow = 65536;
     static constexpr std::size_t kMaxPending = std::size_t{1} << 20;  // the caller then waits for room
     void send_encoded(std::unique_lock<std::mutex>& lock);  // send_buffer_'s message, in the stream's order
     void queue_send(std::unique_lock<std::mutex>& lock);
@@ -520,10 +525,13 @@ private:
     std::mutex send_mu_;
     std::string send_buffer_;
     // The writer thread's state, under send_mu_: what it has yet to write, whether it is writing (then every
-    // send queues behind it, keeping the stream's order), its wake-up and the callers' wait for room.
+    // send queues behind it, keeping the stream's order) or asleep (then a send wakes it), its wake-up and the
+    // callers' wait for room; and the count of messages queued, which the lingering writer watches unlocked.
     std::string pending_;
     bool writer_busy_ = false;
     bool writer_stop_ = false;
+    bool writer_asleep_ = false;
+    std::atomic<std::uint64_t> queued_{0};
     std::condition_variable writer_work_;
     std::condition_variable writer_room_;
     std::thread writer_;

@@ -5,8 +5,8 @@ usage: crowd.py ADDRESS PREFIX COUNT [--payload BYTES] [--updates K] [--tar TIME
 Joins COUNT federates PREFIX0..PREFIX{COUNT-1} to TestFed, one connection each. Each publishes and subscribes
 robot.location and the command interaction, registers a robot named after itself, becomes regulating
 (lookahead 1) and constrained, then sends K receive-order updates of BYTES bytes, K timestamped updates (times
-1..K) and K timestamped interactions, and waits for an answer of the gateway to each. With --sync, federate 0 registers LABEL and every federate sees it
-announced (none achieves it). With --tar, every federate requests a time advance to TIME. Then it prints
+1..K) and K timestamped interactions, then waits for each federate's queryLBTS (the gateway then has all it
+sent). With --sync, federate 0 registers LABEL and every federate sees it announced (none achieves it). With --tar, every federate requests a time advance to TIME. Then it prints
 `ready H0 H1 ...` (the federate handles) and stops ticking: messages for it pile up in the gateway until the
 process is killed. It exits by itself after 120 s as a safety net.
 """

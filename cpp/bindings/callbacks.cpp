@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bitset>
 #include <chrono>
 
 #include "rti/wire/callbacks.hpp"
@@ -143,7 +144,7 @@ Named to_callback(const wire::Message& message) {
 
 // The ambassador's method `name`, or null when it has none, without the AttributeError that getattr would
 // build and clear for each callback an ambassador leaves out (timeAdvanceGrant, often once per step).
-py::object optional_method(const py::object& ambassador, const py::object& name) {
+py::object optional_method(const py::handle& ambassador, const py::object& name) {
     PyObject* method = nullptr;
 #if PY_VERSION_HEX >= 0x030D0000
     if (PyObject_GetOptionalAttr(ambassador.ptr(), name.ptr(), &method) < 0) throw py::error_already_set();
@@ -153,12 +154,54 @@ py::object optional_method(const py::object& ambassador, const py::object& name)
     return py::reinterpret_steal<py::object>(method);
 }
 
+// The ambassador's methods, each looked up at its first callback of a dispatch: a lookup and a bound method
+// per callback were 9 % of a subscriber's CPU. A method the ambassador gains or replaces during a dispatch
+// (inside a callback) is called from the next dispatch on.
+class Methods {
+public:
+    explicit Methods(py::handle ambassador) : ambassador_(ambassador) {}
+
+    // Borrowed; null when the ambassador has no such method.
+    PyObject* of(C callback) {
+        const auto i = static_cast<std::size_t>(callback);
+        if (!looked_up_[i]) {
+            methods_[i] = optional_method(ambassador_, method_name(callback));
+            looked_up_[i] = true;
+        }
+        return methods_[i].ptr();
+    }
+
+private:
+    static constexpr std::size_t kCount = static_cast<std::size_t>(C::Count);
+    py::handle ambassador_;
+    std::array<py::object, kCount> methods_;
+    std::bitset<kCount> looked_up_;
+};
+
+// method(*args) without building another tuple: the arguments as a vector with a free slot in front, where a
+// bound method puts its self (PY_VECTORCALL_ARGUMENTS_OFFSET).
+void call(PyObject* method, const py::tuple& args) {
+    constexpr Py_ssize_t kMost = 8;  // a timed reflection has 7
+    const Py_ssize_t n = PyTuple_GET_SIZE(args.ptr());
+    PyObject* result;
+    if (n <= kMost) {
+        PyObject* vector[kMost + 1];
+        for (Py_ssize_t i = 0; i < n; ++i) vector[i + 1] = PyTuple_GET_ITEM(args.ptr(), i);
+        result = PyObject_Vectorcall(method, vector + 1, static_cast<std::size_t>(n) | PY_VECTORCALL_ARGUMENTS_OFFSET, nullptr);
+    } else {
+        result = PyObject_Call(method, args.ptr(), nullptr);
+    }
+    if (!result) throw py::error_already_set();
+    Py_DECREF(result);
+}
+
 // Delivers queued callbacks to the ambassador's methods of the same name (absent ones are skipped), for
 // at most max_seconds (< 0: no limit), stopping after a time advance grant if asked. Returns how many were
 // delivered. The loop is here rather than in Python because it runs once per reflection.
 int dispatch(Client& c, const py::object& ambassador, bool stop_after_grant, double max_seconds) {
     const auto deadline = Client::Clock::now() + std::chrono::duration_cast<Client::Clock::duration>(
                                                       std::chrono::duration<double>(max_seconds < 0 ? 0 : max_seconds));
+    Methods methods(ambassador);
     int delivered = 0;
     for (;;) {
         auto m = c.pop_callback();
@@ -168,10 +211,7 @@ int dispatch(Client& c, const py::object& ambassador, bool stop_after_grant, dou
         const bool granted = std::holds_alternative<wire::TimeAdvanceGrant>(*m);
         m.reset();  // its values are Python's copies now: the blocks they were read into go back to the reader
         if (!ambassador.is_none()) {
-            const py::object method = optional_method(ambassador, method_name(callback.callback));
-            // Called with the tuple as it is: method(*args) would build another one.
-            if (method && !py::reinterpret_steal<py::object>(PyObject_Call(method.ptr(), callback.args.ptr(), nullptr)))
-                throw py::error_already_set();
+            if (PyObject* method = methods.of(callback.callback)) call(method, callback.args);
         }
         if (stop_after_grant && granted) break;
         if (max_seconds >= 0 && Client::Clock::now() >= deadline) break;

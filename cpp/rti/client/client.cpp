@@ -582,11 +582,10 @@ void Client::read_beside_send() {
     }
     reading_ = true;
     lock.unlock();
-    Arrivals got;
-    read_socket(Clock::now(), got);
+    read_socket(Clock::now(), arrivals_);
     lock.lock();
     reading_ = false;
-    file(got);
+    file(arrivals_);
     cv_.notify_all();
 }
 
@@ -683,20 +682,20 @@ Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
         reading_ = true;
         read_once = true;
         lock.unlock();
-        Arrivals got;
         WaitStatus status = WaitStatus::Ready;
         try {
-            status = read_socket(std::min(deadline, liveness_deadline()), got);
+            status = read_socket(std::min(deadline, liveness_deadline()), arrivals_);
             check_liveness();
         } catch (...) {
             lock.lock();
             reading_ = false;
+            arrivals_.clear();
             cv_.notify_all();
             throw;
         }
         lock.lock();
         reading_ = false;
-        file(got);
+        file(arrivals_);
         cv_.notify_all();
         if (status == WaitStatus::Interrupted) return status;
     }
@@ -885,6 +884,17 @@ void Client::file(Arrivals& got) {
         }
         callbacks_.push(std::move(m));
     }
+    got.clear();
+}
+
+void Client::Arrivals::clear() {
+    for (auto* messages : {&stream, &datagrams}) {
+        if (messages->capacity() > kKept) {
+            *messages = {};
+        } else {
+            messages->clear();
+        }
+    }
 }
 
 std::string Client::query_status(std::uint64_t events_after, bool instances) {
@@ -952,10 +962,10 @@ std::optional<wire::Message> Client::pop_callback() {
         if (closed_) connection_lost();
         return std::nullopt;
     }
-    wire::Message m = callbacks_.pop();
-    apply_time_callback(m);
-    apply_ownership_callback(m);
-    apply_save_callback(m);
+    std::optional<wire::Message> m = callbacks_.pop();
+    apply_time_callback(*m);
+    apply_ownership_callback(*m);
+    apply_save_callback(*m);
     return m;
 }
 

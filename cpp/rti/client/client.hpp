@@ -414,10 +414,14 @@ private:
     struct Arrivals {
         std::vector<wire::Message> stream;
         std::vector<wire::Message> datagrams;
+        // Emptied for the next read, keeping the vectors' room (up to kKept messages): growing them again
+        // moved each message once more on every read.
+        void clear();
+        static constexpr std::size_t kKept = 4096;
     };
     WaitStatus read_socket(Clock::time_point deadline, Arrivals& got);
     int wait_readable(pollfd* fds, nfds_t count, const timespec* timeout, bool& sliced);
-    void file(Arrivals& got);  // under mu_
+    void file(Arrivals& got);  // under mu_; clears got
     void write_recorded(const wire::Message& m);  // under mu_
     // Best effort over UDP (client/datagrams.cpp): proving the path at connect (falling back to TCP with one
     // log line), reading what came, and whether an update or interaction may go as a datagram (mu_ held).
@@ -543,6 +547,7 @@ private:
     mutable std::mutex mu_;
     std::condition_variable cv_;
     bool reading_ = false;
+    Arrivals arrivals_;  // the reading thread's (reading_), outside mu_ while it reads
     bool welcomed_ = false;
     bool closed_ = false;
     ErrorCode closed_code_ = ErrorCode::RTIinternalError;
@@ -587,8 +592,8 @@ private:
     public:
         bool empty() const { return next_ == items_.size(); }
         void push(wire::Message&& m) { items_.push_back(std::move(m)); }
-        wire::Message pop() {
-            wire::Message m = std::move(items_[next_++]);
+        std::optional<wire::Message> pop() {
+            std::optional<wire::Message> m(std::in_place, std::move(items_[next_++]));
             if (next_ == items_.size()) {
                 items_.clear();
                 next_ = 0;

@@ -46,6 +46,7 @@ using SpaceHandle = Handle<9>;
 using DimensionHandle = Handle<10>;
 using RegionHandle = Handle<11>;  // data distribution management: a region of the federate that created it
 
+
 // Where a federate gets each kind of handle: the hint of the TypeError for a wrong argument.
 constexpr const char* kHandleSources[] = {
     "",
@@ -75,14 +76,9 @@ inline Client::Extent to_extent(const PyExtent& ranges) {
     return extent;
 }
 
-// The handle of kind H that a Python object holds, or null when it holds none. An object of the handle's own
-// type is read without pybind11's type lookup, which was most of the cost of hashing a handle (a subclass
-// goes through the lookup).
+// The handle of kind H that a Python object holds, or null when it holds none.
 template <class H>
 const H* handle_in(PyObject* object) {
-    static PyTypeObject* const type = reinterpret_cast<PyTypeObject*>(py::type::of<H>().ptr());
-    if (Py_TYPE(object) == type)
-        return static_cast<const H*>(reinterpret_cast<py::detail::instance*>(object)->get_value_and_holder().value_ptr());
     py::detail::make_caster<H> caster;
     if (!caster.load(object, false)) return nullptr;
     return &py::detail::cast_op<const H&>(caster);
@@ -212,8 +208,9 @@ ValueViews to_value_views(const py::handle& mapping, const char* key_name) {
     values.views.reserve(d.size());
     values.keep.reserve(d.size());
     for (auto item : d) {
-        if (!py::isinstance<H>(item.first)) throw py::type_error(std::string(key_name) + " object required as key");
-        const std::uint32_t handle = item.first.cast<const H&>().value;
+        const H* key = handle_in<H>(item.first.ptr());
+        if (!key) throw py::type_error(std::string(key_name) + " object required as key");
+        const std::uint32_t handle = key->value;
         py::object value = py::reinterpret_borrow<py::object>(item.second);
         if (PyUnicode_Check(value.ptr())) {
             value = py::reinterpret_steal<py::object>(PyUnicode_AsEncodedString(value.ptr(), "utf-8", "surrogateescape"));
@@ -373,14 +370,66 @@ void bind_callbacks(Ambassador& rtia);  // tick's machinery: waiting, popping an
 
 }  // namespace hlacore::bindings
 
-// Handle arguments: pybind11's own loading, and the typed error above instead of "incompatible function
-// arguments". No binding overloads a name, so no later overload is hidden by the throw.
 namespace pybind11::detail {
+
+// Loads an argument of a bound class (a handle, the ambassador itself) from an instance of that class or of
+// a Python subclass directly where pybind11 keeps its value. pybind11's own caster looks the class up by
+// std::type_index, which hashes the type's name, as it is constructed: for the ambassador and a handle, with a
+// handle's hash, that was a fifth of a sender's CPU per update. Anything else (None, another type, an
+// instance of two bound classes) goes through pybind11's caster; C++ values to Python always do.
+template <class T>
+class held_value_caster {
+public:
+    static constexpr auto name = const_name<T>();
+    template <class U>
+    using cast_op_type = detail::cast_op_type<U>;
+
+    bool load(handle src, bool convert) {
+        if ((value_ = held_value(src.ptr()))) return true;
+        type_caster_base<T> caster;
+        if (!caster.load(src, convert)) return false;
+        value_ = static_cast<T*>(caster);
+        return true;
+    }
+
+    template <class Source>
+    static handle cast(Source&& src, return_value_policy policy, handle parent) {
+        return type_caster_base<T>::cast(std::forward<Source>(src), policy, parent);
+    }
+
+    operator T*() { return value_; }  // NOLINT: the interface pybind11 expects of a caster
+    operator T&() {                   // NOLINT
+        if (!value_) throw reference_cast_error();
+        return *value_;
+    }
+
+private:
+    static T* held_value(PyObject* object) {
+        static PyTypeObject* bound = nullptr;  // set under the GIL, once the class is registered
+        if (!bound) {
+            const type_info* info = get_type_info(typeid(T));
+            if (!info) return nullptr;
+            bound = info->type;
+        }
+        if (!object || (Py_TYPE(object) != bound && !PyType_IsSubtype(Py_TYPE(object), bound))) return nullptr;
+        auto* held = reinterpret_cast<instance*>(object);
+        if (!held->simple_layout || !held->simple_holder_constructed) return nullptr;
+        return static_cast<T*>(held->simple_value_holder[0]);
+    }
+
+    T* value_ = nullptr;
+};
+
+template <>
+class type_caster<hlacore::Client> : public held_value_caster<hlacore::Client> {};
+
+// Handle arguments: loaded as above, and the typed error above instead of "incompatible function arguments".
+// No binding overloads a name, so no later overload is hidden by the throw.
 template <int Kind>
-class type_caster<hlacore::bindings::Handle<Kind>> : public type_caster_base<hlacore::bindings::Handle<Kind>> {
+class type_caster<hlacore::bindings::Handle<Kind>> : public held_value_caster<hlacore::bindings::Handle<Kind>> {
 public:
     bool load(handle source, bool convert) {
-        if (type_caster_base<hlacore::bindings::Handle<Kind>>::load(source, convert)) return true;
+        if (held_value_caster<hlacore::bindings::Handle<Kind>>::load(source, convert)) return true;
         if (!convert) return false;
         const auto* registered = get_type_info(typeid(hlacore::bindings::Handle<Kind>));
         hlacore::bindings::throw_wrong_handle(registered ? registered->type->tp_name : "handle", Kind, source);

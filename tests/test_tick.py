@@ -92,6 +92,21 @@ def test_callbacks_may_call_the_rti(robot_pair):
     assert pub.amb.named("provideAttributeValueUpdate") == [(obj, (location,))]
 
 
+def test_a_method_replaced_between_ticks_is_the_one_called(robot_pair):
+    """The ambassador's methods are looked up once per tick (cpp/bindings/callbacks.cpp), not kept beyond it."""
+    pub, sub, obj, location = robot_pair
+    tick_until(lambda: sub.amb.named("discoverObjectInstance"), sub.rtia)
+    first: list[bytes] = []
+    second: list[bytes] = []
+    sub.amb.reflectAttributeValues = lambda o, attributes, *rest: first.append(attributes[location])
+    pub.rtia.updateAttributeValues(obj, {location: b"1"}, "")
+    tick_until(lambda: first, sub.rtia)
+    sub.amb.reflectAttributeValues = lambda o, attributes, *rest: second.append(attributes[location])
+    pub.rtia.updateAttributeValues(obj, {location: b"2"}, "")
+    tick_until(lambda: second, sub.rtia)
+    assert (first, second) == ([b"1"], [b"2"])
+
+
 def test_missing_callbacks_are_ignored(federation):
     """A FederateAmbassador without a callback method simply does not get that callback."""
     registrar = federation("registrar")

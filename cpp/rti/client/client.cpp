@@ -464,9 +464,9 @@ void Client::write_bytes(const char* data, std::size_t size, WaitHost* host) {
 // caller waits while kMaxPending bytes are pending, as a blocked send waits (the writer declares the gateway
 // not responding after the timeout); a signal meanwhile goes to the host (Ctrl-C), the message staying queued.
 void Client::queue_send(std::unique_lock<std::mutex>& lock) {
-    {
+    if (closed_) {
         std::lock_guard<std::mutex> state(mu_);
-        if (closed_) connection_lost();
+        connection_lost();
     }
     if (!writer_.joinable()) writer_ = std::thread([this] { writer_loop(); });
     if (pending_.empty())

@@ -535,8 +535,9 @@ private:
     bool writer_busy_ = false;
     bool writer_stop_ = false;
     bool writer_asleep_ = false;
-    std::atomic<std::uint64_t> queued_{0};
-    std::condition_variable writer_work_;
+    // On a cache line of its own: the lingering writer reads it in a loop while a caller holds send_mu_.
+    alignas(64) std::atomic<std::uint64_t> queued_{0};
+    alignas(64) std::condition_variable writer_work_;
     std::condition_variable writer_room_;
     std::thread writer_;
     std::atomic<int> sends_since_wait_{0};  // reset by every read of the socket (pump)
@@ -549,7 +550,7 @@ private:
     bool reading_ = false;
     Arrivals arrivals_;  // the reading thread's (reading_), outside mu_ while it reads
     bool welcomed_ = false;
-    bool closed_ = false;
+    std::atomic<bool> closed_{false};  // set under mu_ with its code and reason; read unlocked by a send
     ErrorCode closed_code_ = ErrorCode::RTIinternalError;
     std::string closed_reason_;
     std::string challenge_;                           // from the Welcome

@@ -4,6 +4,7 @@
 // and its docstrings live in python/hlacore/rti.py, which subclasses RTIAmbassadorBase.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -172,6 +173,11 @@ void bind_handle(py::module_& m, const char* name) {
 inline std::string to_bytes(const py::handle& value, const char* what) {
     if (PyBytes_Check(value.ptr())) return std::string(PyBytes_AS_STRING(value.ptr()), PyBytes_GET_SIZE(value.ptr()));
     if (PyUnicode_Check(value.ptr())) {
+        Py_ssize_t size = 0;
+        // UTF-8 kept in the str (made once, often already there): no bytes object per call. A lone surrogate
+        // has none, and takes the encoding with surrogateescape below.
+        if (const char* utf8 = PyUnicode_AsUTF8AndSize(value.ptr(), &size)) return std::string(utf8, static_cast<std::size_t>(size));
+        PyErr_Clear();
         py::object encoded = py::reinterpret_steal<py::object>(
             PyUnicode_AsEncodedString(value.ptr(), "utf-8", "surrogateescape"));
         if (!encoded) throw py::error_already_set();
@@ -195,7 +201,22 @@ inline py::str to_str(const std::string& s) {
 // first so that the views stay valid).
 struct ValueViews {
     wire::HandleValueViews views;
-    std::vector<py::object> keep;
+    // The values' objects, the first few without a heap block of their own (an update often has one value).
+    class Kept {
+    public:
+        void push_back(py::object value) {
+            if (first_count_ < first_.size()) {
+                first_[first_count_++] = std::move(value);
+            } else {
+                more_.push_back(std::move(value));
+            }
+        }
+
+    private:
+        std::array<py::object, 4> first_;
+        std::size_t first_count_ = 0;
+        std::vector<py::object> more_;
+    } keep;
     std::vector<std::string> copies;
 };
 
@@ -206,7 +227,6 @@ ValueViews to_value_views(const py::handle& mapping, const char* key_name) {
     py::dict d = py::reinterpret_borrow<py::object>(mapping).cast<py::dict>();
     ValueViews values;
     values.views.reserve(d.size());
-    values.keep.reserve(d.size());
     for (auto item : d) {
         const H* key = handle_in<H>(item.first.ptr());
         if (!key) throw py::type_error(std::string(key_name) + " object required as key");

@@ -35,13 +35,13 @@ void bind_objects(Ambassador& rtia) {
              }, py::arg("objectClass"), py::arg("objectName") = py::none())
         .def("updateAttributeValues",
              [](Client& c, ObjectHandle obj, py::handle values, py::handle tag, std::optional<double> time) {
-                 const ValueViews attributes = to_value_views<AttributeHandle>(values, "AttributeHandle");
-                 return serial_result(c.update_attributes(obj.value, attributes.views, raw(tag), time), time, c);
+                 ValueViews attributes = to_value_views<AttributeHandle>(values, "AttributeHandle");
+                 return serial_result(c.update_attributes(obj.value, std::move(attributes.views), raw(tag), time), time, c);
              }, py::arg("object"), py::arg("attributes"), py::arg("tag"), py::arg("time") = py::none())
         .def("sendInteraction",
              [](Client& c, InteractionClassHandle ic, py::handle values, py::handle tag, std::optional<double> time) {
-                 const ValueViews parameters = to_value_views<ParameterHandle>(values, "ParameterHandle");
-                 return serial_result(c.send_interaction(ic.value, parameters.views, raw(tag), time), time, c);
+                 ValueViews parameters = to_value_views<ParameterHandle>(values, "ParameterHandle");
+                 return serial_result(c.send_interaction(ic.value, std::move(parameters.views), raw(tag), time), time, c);
              }, py::arg("interactionClass"), py::arg("parameters"), py::arg("tag"), py::arg("time") = py::none())
         .def("deleteObjectInstance", [](Client& c, ObjectHandle obj, py::handle tag, std::optional<double> time) {
                  return serial_result(c.delete_object(obj.value, raw(tag), time), time, c);

@@ -834,8 +834,10 @@ void Client::check_liveness() {
                          seconds(now - ping_sent_) + ": it is not responding (stopped, frozen or unreachable)");
 }
 
-// Keeps the federate's view current as messages arrive, then queues the callbacks.
+// Keeps the federate's view current as messages arrive, then queues the callbacks: those of the stream
+// gathered at the front of got.stream in their order, and queued together.
 void Client::file(Arrivals& got) {
+    std::size_t callbacks = 0;
     for (auto& m : got.stream) {
         if (const std::uint32_t* request = answered_request(m)) {
             replies_[*request] = std::move(m);
@@ -872,8 +874,11 @@ void Client::file(Arrivals& got) {
         } else if (auto* s = std::get_if<wire::FederationSynchronized>(&m)) {
             announced_.erase(s->label);
         }
-        callbacks_.push(std::move(m));
+        if (&m != &got.stream[callbacks]) got.stream[callbacks] = std::move(m);
+        ++callbacks;
     }
+    got.stream.erase(got.stream.begin() + static_cast<std::ptrdiff_t>(callbacks), got.stream.end());
+    callbacks_.push_all(got.stream);
     for (auto& m : got.datagrams) {
         // A datagram may overtake the discovery of its object in the stream: HLA has no callback for that.
         const auto* r = std::get_if<wire::ReflectAttributes>(&m);

@@ -593,6 +593,17 @@ private:
     public:
         bool empty() const { return next_ == items_.size(); }
         void push(wire::Message&& m) { items_.push_back(std::move(m)); }
+        // Takes all of `more`, leaving it empty; when the queue is empty, by swapping the vectors.
+        void push_all(std::vector<wire::Message>& more) {
+            if (empty()) {
+                items_.clear();
+                next_ = 0;
+                items_.swap(more);
+                return;
+            }
+            for (auto& m : more) items_.push_back(std::move(m));
+            more.clear();
+        }
         std::optional<wire::Message> pop() {
             std::optional<wire::Message> m(std::in_place, std::move(items_[next_++]));
             if (next_ == items_.size()) {

@@ -92,6 +92,27 @@ def test_callbacks_may_call_the_rti(robot_pair):
     assert pub.amb.named("provideAttributeValueUpdate") == [(obj, (location,))]
 
 
+def test_tick_stops_delivering_after_maximum(robot_pair):
+    """tick(minimum, maximum) delivers for at most maximum seconds; what is left stays queued."""
+    pub, sub, obj, location = robot_pair
+    tick_until(lambda: sub.amb.named("discoverObjectInstance"), sub.rtia)
+    seen: list[bytes] = []
+
+    def slow_reflection(o, attributes, *rest):
+        seen.append(attributes[location])
+        time.sleep(0.02)
+
+    sub.amb.reflectAttributeValues = slow_reflection
+    for i in range(20):
+        pub.rtia.updateAttributeValues(obj, {location: b"%d" % i}, "")
+    barrier(pub.rtia)  # the gateway has forwarded them ...
+    barrier(sub.rtia)  # ... and the subscriber has queued them, reading up to its answer
+    assert sub.rtia.tick(0.05, 0.1) is True  # 20 callbacks of 20 ms do not fit in 0.1 s
+    assert 1 <= len(seen) <= 8
+    tick_until(lambda: len(seen) == 20, sub.rtia)
+    assert seen == [b"%d" % i for i in range(20)]
+
+
 def test_a_method_replaced_between_ticks_is_the_one_called(robot_pair):
     """The ambassador's methods are looked up once per tick (cpp/bindings/callbacks.cpp), not kept beyond it."""
     pub, sub, obj, location = robot_pair

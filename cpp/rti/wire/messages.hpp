@@ -1274,7 +1274,7 @@ public:
         if (block_ && bytes.size() >= kSplicedValueBytes)
             v = Value(*block_, bytes);
         else
-            v = Value(std::string(bytes));
+            v.assign(bytes);
     }
     void get(std::string_view& s) {  // a view into the frame, valid while it is
         std::uint32_t n = 0;

@@ -21,6 +21,13 @@ public:
     // `bytes` inside `block`, kept alive as long as this value (or a copy of it) is.
     Value(std::shared_ptr<const char[]> block, std::string_view bytes) : block_(std::move(block)), view_(bytes) {}
 
+    // Its own copy of `bytes` (no block).
+    void assign(std::string_view bytes) {
+        owned_.assign(bytes.data(), bytes.size());
+        block_.reset();
+        view_ = {};
+    }
+
     std::string_view view() const { return block_ ? view_ : std::string_view(owned_); }
     operator std::string_view() const { return view(); }  // NOLINT: a value reads as its bytes
     const char* data() const { return view().data(); }

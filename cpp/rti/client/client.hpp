@@ -535,9 +535,8 @@ private:
     bool writer_busy_ = false;
     bool writer_stop_ = false;
     bool writer_asleep_ = false;
-    // On a cache line of its own: the lingering writer reads it in a loop while a caller holds send_mu_.
-    alignas(64) std::atomic<std::uint64_t> queued_{0};
-    alignas(64) std::condition_variable writer_work_;
+    std::atomic<std::uint64_t> queued_{0};
+    std::condition_variable writer_work_;
     std::condition_variable writer_room_;
     std::thread writer_;
     std::atomic<int> sends_since_wait_{0};  // reset by every read of the socket (pump)

@@ -281,6 +281,22 @@ def test_retraction_removes_queued_messages_and_asks_receivers(federation: Join)
     assert [t for n, t in timeline(b) if n == "receiveInteraction"] == [5.0]
 
 
+def test_retraction_reaches_every_receiver_of_the_message(federation: Join) -> None:
+    """The gateway keeps one routing record per timestamped message with all its receivers."""
+    a, b, command, value = regulating_sender_constrained_receiver(federation)
+    c = federation("c")
+    c.rtia.subscribeInteractionClass(command)
+    c.enable_time(lookahead=None)
+    barrier(c.rtia)
+    at5 = a.rtia.sendInteraction(command, {value: b"5"}, "", 5.0)
+    assert a.rtia.advance_to(4.5, timeout=5.0) == 4.5
+    for receiver in (b, c):
+        assert receiver.rtia.next_event(10.0, timeout=5.0) == 5.0
+    a.rtia.retract(at5)  # both have it: both are asked to retract it
+    tick_until(lambda: bool(b.amb.named("requestRetraction") and c.amb.named("requestRetraction")), b.rtia, c.rtia)
+    assert b.amb.named("requestRetraction") == c.amb.named("requestRetraction") == [(at5,)]
+
+
 def test_receive_order_is_held_from_a_constrained_federate_until_it_advances(federation: Join) -> None:
     a, b = federation("a"), federation("b")
     reply = a.rtia.getInteractionClassHandle("reply")

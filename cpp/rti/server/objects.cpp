@@ -62,10 +62,11 @@ void Federation::remove_object(ObjectHandle oh, FederateHandle by, const std::st
                                const wire::OptionalTime& time, std::uint64_t serial) {
     auto it = objects_.find(oh);
     if (it == objects_.end()) return;
+    Routed* routed = nullptr;
     for (auto& [gh, g] : federates_) {
         if (!g.known.erase(oh) || gh == by) continue;
         if (time && time_.is_tso(by, gh)) {
-            deliver_timestamp_order(gh, wire::RemoveObject{oh, tag, time, by, serial}, by, serial, *time);
+            deliver_timestamp_order(gh, wire::RemoveObject{oh, tag, time, by, serial}, by, serial, *time, routed);
         } else {
             deliver_receive_order(gh, wire::RemoveObject{oh, tag, std::nullopt, by, serial});
         }
@@ -107,14 +108,16 @@ void Federation::deliver_receive_order(FederateHandle to, const M& message) {
 
 template <class M>
 void Federation::deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender,
-                                         std::uint64_t serial, double time) {
+                                         std::uint64_t serial, double time, Routed*& routed) {
     outbox_.record(to, message);
     TsoMessage queued{time, sender, serial, held_frame(message)};
     time_.enqueue_tso(to, std::move(queued));
     outbox_.held(to);
-    Routed& routed = routed_[sender][serial];
-    routed.time = time;
-    routed.receivers.push_back(to);
+    if (!routed) {
+        routed = &routed_[sender][serial];
+        routed->time = time;
+    }
+    routed->receivers.push_back(to);
 }
 
 // ---- object management (HLA 1.3 §6) ----
@@ -176,6 +179,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributesView& m) {
             if (tso) r.time = m.time;
         }
     }
+    Routed* routed = nullptr;
     for (auto& [gh, g] : federates_) {
         if (gh == from) continue;
         const fom::Handle known = known_class(g, obj.object_class);
@@ -208,7 +212,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributesView& m) {
             discover(gh, g, m.object, obj);
         }
         for (auto& r : out[1])
-            if (!r.values.empty()) deliver_timestamp_order(gh, r, from, m.serial, *m.time);
+            if (!r.values.empty()) deliver_timestamp_order(gh, r, from, m.serial, *m.time, routed);
         for (auto& r : out[0])
             if (!r.values.empty()) deliver_receive_order(gh, r);
     }
@@ -247,6 +251,7 @@ void Federation::route_interaction(FederateHandle from, const wire::SendInteract
     const fom::Order order = changed_order != sender.interaction_order.end() ? changed_order->second : sent_class.order;
     receive.transport = static_cast<std::uint8_t>(transport);
     const bool timestamped = m.time && order == fom::Order::Timestamp;
+    Routed* routed = nullptr;
     for (auto& [gh, g] : federates_) {
         if (gh == from) continue;
         const fom::Handle as = interaction_receiver(g, m.interaction_class, region);
@@ -260,7 +265,7 @@ void Federation::route_interaction(FederateHandle from, const wire::SendInteract
         if (timestamped && time_.is_tso(from, gh)) {
             receive.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
             receive.time = m.time;
-            deliver_timestamp_order(gh, receive, from, m.serial, *m.time);
+            deliver_timestamp_order(gh, receive, from, m.serial, *m.time, routed);
         } else {
             receive.order = static_cast<std::uint8_t>(fom::Order::Receive);
             receive.time.reset();

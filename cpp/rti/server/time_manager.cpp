@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace hlacore {
 
@@ -25,23 +26,34 @@ Time TimeManager::bound_after(Time t, Time lookahead, AdvanceKind kind) {
     return is_available(kind) ? t : std::nextafter(t, kInfinity);
 }
 
-TimeManager::State& TimeManager::state(std::uint32_t f) {
+const TimeManager::State* TimeManager::find(std::uint32_t f) const {
+    if (f < kIndexedHandles) return f < by_handle_.size() ? by_handle_[f] : nullptr;
     auto it = federates_.find(f);
-    if (it == federates_.end()) throw std::logic_error("time manager: unknown federate " + std::to_string(f));
-    return it->second;
+    return it == federates_.end() ? nullptr : &it->second;
+}
+
+void TimeManager::index(std::uint32_t f, State* s) {
+    if (f >= kIndexedHandles) return;
+    if (f >= by_handle_.size()) by_handle_.resize(f + 1);
+    by_handle_[f] = s;
+}
+
+TimeManager::State& TimeManager::state(std::uint32_t f) {
+    return const_cast<State&>(std::as_const(*this).state(f));
 }
 
 const TimeManager::State& TimeManager::state(std::uint32_t f) const {
-    auto it = federates_.find(f);
-    if (it == federates_.end()) throw std::logic_error("time manager: unknown federate " + std::to_string(f));
-    return it->second;
+    const State* s = find(f);
+    if (!s) throw std::logic_error("time manager: unknown federate " + std::to_string(f));
+    return *s;
 }
 
-void TimeManager::add_federate(std::uint32_t f) { federates_[f]; }
+void TimeManager::add_federate(std::uint32_t f) { index(f, &federates_[f]); }
 
 void TimeManager::remove_federate(std::uint32_t f) {
     changed_ = true;
     federates_.erase(f);
+    index(f, nullptr);
     regulating_.clear();  // it may point at the erased state until the next compute_bounds()
 }
 
@@ -177,9 +189,9 @@ std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint6
 }
 
 std::size_t TimeManager::held_bytes(std::uint32_t f) const {
-    auto it = federates_.find(f);
-    if (it == federates_.end()) return 0;
-    const State& s = it->second;
+    const State* held = find(f);
+    if (!held) return 0;
+    const State& s = *held;
     return s.ro_bytes + (s.pending == AdvanceKind::None ? s.tso_bytes : 0);
 }
 
@@ -430,6 +442,7 @@ void TimeManager::restore_state(std::uint32_t f, SavedState saved) {
     changed_ = true;
     regulating_.clear();  // recomputed by the next compute_bounds()
     State& s = federates_[f];
+    index(f, &s);
     s = State{};
     static_cast<wire::SavedTime&>(s) = saved.time;
     if (!s.regulating) s.promise = -kInfinity;

@@ -181,6 +181,12 @@ private:
     bool try_complete_regulation(std::uint32_t f, State& s, Release& out);
 
     std::map<std::uint32_t, State> federates_;
+    // federates_ by handle, for the lookups of every routed message (walking the map was 7 % of the rtig's
+    // CPU in a 32-federate lockstep); handles from kIndexedHandles on are looked up in the map.
+    static constexpr std::uint32_t kIndexedHandles = 1u << 16;
+    std::vector<State*> by_handle_;
+    const State* find(std::uint32_t f) const;
+    void index(std::uint32_t f, State* s);
     // Valid after compute_bounds(): the regulating federates, the lowest bound and whose it is, the next.
     std::vector<std::pair<std::uint32_t, State*>> regulating_;
     Time lowest_ = kInfinity;

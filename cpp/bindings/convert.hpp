@@ -47,7 +47,6 @@ using SpaceHandle = Handle<9>;
 using DimensionHandle = Handle<10>;
 using RegionHandle = Handle<11>;  // data distribution management: a region of the federate that created it
 
-
 // Where a federate gets each kind of handle: the hint of the TypeError for a wrong argument.
 constexpr const char* kHandleSources[] = {
     "",

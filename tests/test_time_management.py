@@ -297,6 +297,30 @@ def test_retraction_reaches_every_receiver_of_the_message(federation: Join) -> N
     assert b.amb.named("requestRetraction") == c.amb.named("requestRetraction") == [(at5,)]
 
 
+def test_a_timestamped_update_reaches_each_receiver_with_its_own_attributes(federation: Join) -> None:
+    """Receivers of one timestamped update that subscribe different attributes get exactly theirs (the gateway
+    encodes the reflection once for the receivers that get the same attributes)."""
+    a = federation("a")
+    robot, location = robot_location(a)
+    compass = a.rtia.getAttributeHandle("compass", robot)
+    a.rtia.publishObjectClass(robot, [location, compass])
+    a.enable_time(lookahead=1.0, constrained=False)
+    subscriptions = {"b": [location], "c": [location, compass], "d": [location]}
+    receivers = {name: federation(name) for name in subscriptions}
+    for name, receiver in receivers.items():
+        receiver.rtia.subscribeObjectClassAttributes(robot, subscriptions[name])
+        receiver.enable_time(lookahead=None)
+        barrier(receiver.rtia)
+    obj = a.rtia.registerObjectInstance(robot)
+    a.rtia.updateAttributeValues(obj, {location: b"L", compass: b"C"}, "", 5.0)
+    assert a.rtia.advance_to(4.5, timeout=5.0) == 4.5
+    for name, receiver in receivers.items():
+        assert receiver.rtia.next_event(10.0, timeout=5.0) == 5.0
+        reflected = receiver.amb.named("reflectAttributeValues")
+        assert [(args[1], args[5]) for args in reflected] == [
+            ({h: {location: b"L", compass: b"C"}[h] for h in subscriptions[name]}, 5.0)]
+
+
 def test_receive_order_is_held_from_a_constrained_federate_until_it_advances(federation: Join) -> None:
     a, b = federation("a"), federation("b")
     reply = a.rtia.getInteractionClassHandle("reply")

@@ -195,12 +195,13 @@ private:
     // Receive-order delivery, held back from a constrained federate that is not advancing.
     template <class M>
     void deliver_receive_order(FederateHandle to, const M& message);
-    // Timestamp-ordered delivery: queued until the receiver's grant allows it. `routed`: the message's routing
-    // record (for a retraction), found at its first receiver and kept by the caller for the others.
+    // Timestamp-ordered delivery: `frame` (the message encoded) queued until the receiver's grant allows it.
+    // `routed`: the message's routing record (for a retraction), found at its first receiver and kept by the
+    // caller for the others.
     struct Routed;
     template <class M>
     void deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender, std::uint64_t serial,
-                                 double time, Routed*& routed);
+                                 double time, Routed*& routed, std::string frame);
 
     // The handlers, one per message of HLACORE_FEDERATION_SERVICES (wire/messages.hpp), each defined in
     // the server file of its group; anything else is a protocol violation.

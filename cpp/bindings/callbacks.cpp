@@ -200,7 +200,7 @@ void call(PyObject* method, const py::tuple& args) {
 // last timer tick, read from memory) answers while the deadline is more than a tick away, where the exact
 // clock cost 5 % of a delivery; near it, the exact clock does. Both are CLOCK_MONOTONIC (steady_clock).
 bool passed(Client::Clock::time_point deadline) {
-    static const Client::Clock::duration tick = [] {
+    static const Client::Clock::duration timer_tick = [] {
         timespec resolution{};
         clock_getres(CLOCK_MONOTONIC_COARSE, &resolution);
         return std::chrono::duration_cast<Client::Clock::duration>(std::chrono::seconds(resolution.tv_sec) +
@@ -210,7 +210,7 @@ bool passed(Client::Clock::time_point deadline) {
     clock_gettime(CLOCK_MONOTONIC_COARSE, &coarse);
     const Client::Clock::time_point at_last_tick(std::chrono::duration_cast<Client::Clock::duration>(
         std::chrono::seconds(coarse.tv_sec) + std::chrono::nanoseconds(coarse.tv_nsec)));
-    return at_last_tick + tick >= deadline && Client::Clock::now() >= deadline;
+    return at_last_tick + timer_tick >= deadline && Client::Clock::now() >= deadline;
 }
 
 // Delivers queued callbacks to the ambassador's methods of the same name (absent ones are skipped), for

@@ -1,7 +1,12 @@
 """tick(): evoking callbacks, waiting with the GIL released, Ctrl-C, exceptions raised by callbacks."""
 
+import array
+import fcntl
+import os
 import select
 import signal
+import socket
+import termios
 import threading
 import time
 import traceback
@@ -111,6 +116,34 @@ def test_tick_stops_delivering_after_maximum(robot_pair):
     assert 1 <= len(seen) <= 8
     tick_until(lambda: len(seen) == 20, sub.rtia)
     assert seen == [b"%d" % i for i in range(20)]
+
+
+def test_tick_returns_true_while_the_socket_holds_frames_not_yet_read(robot_pair):
+    """A read takes small frames a batch at a time (client.hpp, kReadBatchBytes): tick() counts the frames the
+    read left in the socket as pending, so `while tick()` delivers everything that had arrived."""
+    pub, sub, obj, location = robot_pair
+    tick_until(lambda: sub.amb.named("discoverObjectInstance"), sub.rtia)
+    seen: list[bytes] = []
+    sub.amb.reflectAttributeValues = lambda o, attributes, *rest: seen.append(attributes[location])
+    with socket.socket(fileno=os.dup(sub.rtia.fileno())) as conn:
+        conn.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4 << 20)  # room for several batches
+        count = 8000  # about 40 bytes each on the wire: 320 kB, more than two batches
+        for i in range(count):
+            pub.rtia.updateAttributeValues(obj, {location: b"%d" % i}, "")
+        barrier(pub.rtia)  # the gateway has taken them
+        waiting = array.array("i", [0])
+        deadline = time.monotonic() + 10
+        while time.monotonic() < deadline:
+            fcntl.ioctl(conn.fileno(), termios.FIONREAD, waiting)
+            if waiting[0] >= count * 38:
+                break
+            time.sleep(0.01)
+        assert waiting[0] >= count * 38, f"only {waiting[0]} bytes reached the subscriber's socket"
+    ticks = 0
+    while sub.rtia.tick() and ticks < 1000:
+        ticks += 1
+    assert seen == [b"%d" % i for i in range(count)]
+    assert ticks >= 2  # each tick() delivered a batch and said more was waiting
 
 
 def test_a_method_replaced_between_ticks_is_the_one_called(robot_pair):

@@ -753,6 +753,8 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
     std::string reason;
     ErrorCode code = ErrorCode::RTIinternalError;
     const bool first_bytes = heard_bytes_ == 0;
+    std::size_t read_now = 0;
+    got.more_in_socket = false;
     for (;;) {
         if (ssl_) {
             // SSL_read while the session holds bytes (SSL_has_pending), until it wants more from the socket:
@@ -774,7 +776,14 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
             last_heard_ = Clock::now();
             heard_bytes_ += static_cast<std::uint64_t>(r);
             in_.commit(static_cast<std::size_t>(r));
+            read_now += static_cast<std::size_t>(r);
             if (static_cast<std::size_t>(r) < want) break;
+            // Small frames are read a batch at a time: the rest waits in the socket (poll() sees it), and the
+            // batch's messages and value lists are delivered and reused before more are decoded.
+            if (want == wire::ReadBuffer::kChunk && read_now >= kReadBatchBytes) {
+                got.more_in_socket = true;
+                break;
+            }
             continue;
         }
         if (r < 0 && errno == EINTR) continue;
@@ -801,7 +810,13 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
         wire::Frame frame;
         while (std::size_t used = wire::next_frame(in_.unread(), frame, max_frame_bytes_)) {
             frame.block = block ? &block : nullptr;
-            got.stream.push_back(wire::decode(frame));
+            wire::Message& m = got.stream.emplace_back();
+            try {
+                wire::decode(frame, m);
+            } catch (const wire::WireError&) {
+                got.stream.pop_back();
+                throw;
+            }
             in_.consume(used);
         }
     } catch (const wire::WireError& e) {
@@ -879,6 +894,7 @@ void Client::file(Arrivals& got) {
     }
     got.stream.erase(got.stream.begin() + static_cast<std::ptrdiff_t>(callbacks), got.stream.end());
     callbacks_.push_all(got.stream);
+    if (got.more_in_socket) more_in_socket_ = *got.more_in_socket;
     for (auto& m : got.datagrams) {
         // A datagram may overtake the discovery of its object in the stream: HLA has no callback for that.
         const auto* r = std::get_if<wire::ReflectAttributes>(&m);
@@ -893,6 +909,7 @@ void Client::file(Arrivals& got) {
 }
 
 void Client::Arrivals::clear() {
+    more_in_socket.reset();
     for (auto* messages : {&stream, &datagrams}) {
         if (messages->capacity() > kKept) {
             *messages = {};
@@ -976,7 +993,7 @@ std::optional<wire::Message> Client::pop_callback() {
 
 bool Client::has_callbacks() const {
     std::lock_guard<std::mutex> lock(mu_);
-    return !callbacks_.empty();
+    return !callbacks_.empty() || more_in_socket_;
 }
 
 void Client::connection_lost() const {

@@ -268,6 +268,7 @@ public:
     // Waits until a callback is queued or the deadline passes; Interrupted when a signal arrived.
     WaitStatus wait_for_callback(Clock::time_point deadline);
     std::optional<wire::Message> pop_callback();
+    // Whether callbacks are queued, or the last read left frames in the socket (it reads a batch at a time).
     bool has_callbacks() const;
 
 private:
@@ -414,11 +415,14 @@ private:
     struct Arrivals {
         std::vector<wire::Message> stream;
         std::vector<wire::Message> datagrams;
+        std::optional<bool> more_in_socket;  // when the stream was read: whether the read stopped at a batch's end
         // Emptied for the next read, keeping the vectors' room (up to kKept messages): growing them again
         // moved each message once more on every read.
         void clear();
         static constexpr std::size_t kKept = 4096;
     };
+    // What one read takes from the socket in small frames: about 3000 reflections of a small value, within kKept.
+    static constexpr std::size_t kReadBatchBytes = 128u << 10;
     WaitStatus read_socket(Clock::time_point deadline, Arrivals& got);
     int wait_readable(pollfd* fds, nfds_t count, const timespec* timeout, bool& sliced);
     void file(Arrivals& got);  // under mu_; clears got
@@ -620,6 +624,7 @@ private:
         std::size_t next_ = 0;
     };
     CallbackQueue callbacks_;
+    bool more_in_socket_ = false;  // the last read of the stream left frames in the socket (kReadBatchBytes)
     std::map<std::uint32_t, wire::Message> replies_;  // the answers (HLACORE_ANSWERS) by request id
     std::uint32_t last_request_ = 0;
 

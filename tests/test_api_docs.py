@@ -68,7 +68,9 @@ def _attribute_docs(module: ModuleType) -> dict[tuple[str, str], str]:
 
 
 def _is_variable(value: Any) -> bool:
-    return not (inspect.isclass(value) or inspect.isroutine(value) or isinstance(value, property))
+    """Not a class, function or data descriptor (a property, or a C type's field), which carry their own docs."""
+    return not (inspect.isclass(value) or inspect.isroutine(value) or isinstance(value, property)
+                or inspect.isgetsetdescriptor(value))
 
 
 def _doc_of(value: Any, name: str, comments: dict[tuple[str, str], str], owner: str) -> str:

@@ -281,6 +281,27 @@ def test_retraction_removes_queued_messages_and_asks_receivers(federation: Join)
     assert [t for n, t in timeline(b) if n == "receiveInteraction"] == [5.0]
 
 
+def test_a_retraction_handle_is_a_value_naming_one_message(federation: Join) -> None:
+    """The sender's handle and the one its receiver gets are equal and hash alike; each message has its own;
+    only the RTI makes them (bindings/retraction.cpp)."""
+    a, b, command, value = regulating_sender_constrained_receiver(federation)
+    at5 = a.rtia.sendInteraction(command, {value: b"5"}, "", 5.0)
+    at6 = a.rtia.sendInteraction(command, {value: b"6"}, "", 6.0)
+    assert a.rtia.advance_to(5.5, timeout=5.0) == 5.5
+    assert b.rtia.next_event(5.5, timeout=5.0) == 5.0
+    received = b.amb.named("receiveInteraction")[0][6]
+    assert received == at5 and not received != at5 and hash(received) == hash(at5)
+    assert received is not at5 and at5 != at6 and {at5: 5, at6: 6}[received] == 5
+    assert isinstance(at5.sendingFederate, int) and at5.sendingFederate == at6.sendingFederate
+    assert at6.serial == at5.serial + 1
+    assert repr(at5) == f"<rti.EventRetractionHandle={at5.sendingFederate}:{at5.serial}>"
+    assert at5 != (at5.sendingFederate, at5.serial)
+    with pytest.raises(TypeError):
+        type(at5)()
+    with pytest.raises(TypeError):
+        a.rtia.retract((at5.sendingFederate, at5.serial))
+
+
 def test_retraction_reaches_every_receiver_of_the_message(federation: Join) -> None:
     """The gateway keeps one routing record per timestamped message with all its receivers."""
     a, b, command, value = regulating_sender_constrained_receiver(federation)

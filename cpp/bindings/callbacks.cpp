@@ -39,7 +39,7 @@ const py::object& method_name(C callback) {
 template <class M, class... Args>
 py::tuple timed(const M& m, Args&&... args) {
     if (!m.time) return py::make_tuple(std::forward<Args>(args)...);
-    return py::make_tuple(std::forward<Args>(args)..., *m.time, retraction_or_none(m.serial, m.sender));
+    return py::make_tuple(std::forward<Args>(args)..., *m.time, make_retraction({m.sender, m.serial}));
 }
 
 // The arguments of the callbacks about a set of an object's attributes (ownership, scope, updates on/off).

@@ -88,6 +88,10 @@ struct EventRetractionHandle {
     std::uint32_t sender;
     std::uint64_t serial;
 };
+// Its Python type (bindings/retraction.cpp): the handle a Python object holds, or null; a new object.
+const EventRetractionHandle* retraction_in(PyObject* object);
+py::object make_retraction(EventRetractionHandle h);
+void bind_retraction(py::module_& m);
 
 // Whether a and b are equal handles of kind H; nullopt when either is not one. Equality with anything but a
 // handle of the same kind is NotImplemented (so `handle == 4` is False), never the wrong-handle TypeError that
@@ -326,14 +330,10 @@ auto query(Result (Client::*f)(Raw...) const) {
     return [f](Client& c, Py... args) { return Out{(c.*f)(raw(args)...)}; };
 }
 
-inline py::object retraction_or_none(std::uint64_t serial, std::uint32_t sender) {
-    return py::cast(EventRetractionHandle{sender, serial});
-}
-
 // A timestamped send returns its EventRetractionHandle, an untimed one None (PyHLA).
 inline py::object serial_result(std::uint64_t serial, const std::optional<double>& time, const Client& c) {
     if (!time) return py::none();
-    return py::cast(EventRetractionHandle{c.federate_handle(), serial});
+    return make_retraction({c.federate_handle(), serial});
 }
 
 // ---- docstrings ----
@@ -441,6 +441,20 @@ private:
 
 template <>
 class type_caster<hlacore::Client> : public held_value_caster<hlacore::Client> {};
+
+template <>
+class type_caster<hlacore::bindings::EventRetractionHandle> {
+public:
+    PYBIND11_TYPE_CASTER(hlacore::bindings::EventRetractionHandle, const_name("EventRetractionHandle"));
+    bool load(handle source, bool) {
+        const auto* held = hlacore::bindings::retraction_in(source.ptr());
+        if (held) value = *held;
+        return held != nullptr;
+    }
+    static handle cast(const hlacore::bindings::EventRetractionHandle& h, return_value_policy, handle) {
+        return hlacore::bindings::make_retraction(h).release();
+    }
+};
 
 // Handle arguments: loaded as above, and the typed error above instead of "incompatible function arguments".
 // No binding overloads a name, so no later overload is hidden by the throw.

@@ -129,17 +129,7 @@ PYBIND11_MODULE(_core, m) {
     bind_handle<RegionHandle>(m, "RegionHandle");
     m.attr("MIN_EXTENT") = Client::kMinExtent;
     m.attr("MAX_EXTENT") = Client::kMaxExtent;
-    py::class_<EventRetractionHandle>(m, "EventRetractionHandle",
-                                      "Names a timestamped message so that its sender can retract it.")
-        .def_readonly("sendingFederate", &EventRetractionHandle::sender,
-                      "The handle of the federate that sent the message, as an int.")
-        .def_readonly("serial", &EventRetractionHandle::serial, "The message's serial number at its sender.")
-        .def("__eq__", [](const EventRetractionHandle& a, const EventRetractionHandle& b) {
-            return a.sender == b.sender && a.serial == b.serial; }, py::is_operator())
-        .def("__hash__", [](const EventRetractionHandle& h) { return py::hash(py::make_tuple("ERH", h.sender, h.serial)); })
-        .def("__repr__", [](const EventRetractionHandle& h) {
-            return "<rti.EventRetractionHandle=" + std::to_string(h.sender) + ":" + std::to_string(h.serial) + ">";
-        });
+    bind_retraction(m);
 
     bind_fed(m);
 

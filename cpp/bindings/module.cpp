@@ -245,7 +245,7 @@ PYBIND11_MODULE(_core, m) {
             // (federate, frames, grant, constrained_enabled, regulation_enabled)
             for (auto& r : tm.release()) {
                 py::list frames;
-                for (auto& frame : r.frames) frames.append(py::bytes(frame));
+                for (auto& frame : r.frames) frames.append(py::bytes(*frame));
                 out.append(py::make_tuple(r.federate, frames, time_or_none(r.grant),
                                           time_or_none(r.constrained_enabled), time_or_none(r.regulation_enabled)));
             }

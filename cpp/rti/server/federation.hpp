@@ -201,7 +201,7 @@ private:
     struct Routed;
     template <class M>
     void deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender, std::uint64_t serial,
-                                 double time, Routed*& routed, std::string frame);
+                                 double time, Routed*& routed, wire::SharedFrame frame);
 
     // The handlers, one per message of HLACORE_FEDERATION_SERVICES (wire/messages.hpp), each defined in
     // the server file of its group; anything else is a protocol violation.

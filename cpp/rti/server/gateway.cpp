@@ -51,19 +51,20 @@ public:
         gateway_.mark_dirty(*it->second);
         return gateway_.output(*it->second);
     }
-    void send_frames(FederateHandle federate, std::vector<std::string>& frames) override {
+    void send_frames(FederateHandle federate, std::vector<wire::SharedFrame>& frames) override {
         auto it = peers_.find(federate);
         if (it == peers_.end()) return;
         Connection& c = *it->second;
         std::size_t total = 0;
-        for (const auto& frame : frames) total += frame.size();
+        for (const auto& frame : frames) total += frame->size();
         if (c.backlog.empty() && total < kPacedBytes) return Outbox::send_frames(federate, frames);
         if (!c.tail.empty()) {
             c.backlog_bytes += c.tail.size();
             c.backlog.push_back(std::move(c.tail));
             c.tail.clear();
         }
-        for (auto& frame : frames) c.backlog.push_back(std::move(frame));
+        // A frame no other queue holds any more is moved (a large one is megabytes), a shared one copied.
+        for (auto& frame : frames) c.backlog.push_back(frame.use_count() == 1 ? std::move(*frame) : *frame);
         c.backlog_bytes += total;
         gateway_.mark_dirty(c);
     }

@@ -19,6 +19,10 @@ std::string held_frame(const M& message) {
     wire::encode(frame, message);
     return frame;
 }
+template <class M>
+wire::SharedFrame shared_frame(const M& message) {
+    return std::make_shared<std::string>(held_frame(message));
+}
 }  // namespace
 
 std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle h, fom::Handle cls_handle,
@@ -79,7 +83,7 @@ void Federation::remove_object(ObjectHandle oh, FederateHandle by, const std::st
         if (!g.known.erase(oh) || gh == by) continue;
         if (time && time_.is_tso(by, gh)) {
             const wire::RemoveObject removal{oh, tag, time, by, serial};
-            deliver_timestamp_order(gh, removal, by, serial, *time, routed, held_frame(removal));
+            deliver_timestamp_order(gh, removal, by, serial, *time, routed, shared_frame(removal));
         } else {
             deliver_receive_order(gh, wire::RemoveObject{oh, tag, std::nullopt, by, serial});
         }
@@ -109,10 +113,9 @@ void Federation::deliver_receive_order(FederateHandle to, const M& message) {
 
 template <class M>
 void Federation::deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender,
-                                         std::uint64_t serial, double time, Routed*& routed, std::string frame) {
+                                         std::uint64_t serial, double time, Routed*& routed, wire::SharedFrame frame) {
     outbox_.record(to, message);
-    TsoMessage queued{time, sender, serial, std::move(frame)};
-    time_.enqueue_tso(to, std::move(queued));
+    time_.enqueue_tso(to, time, sender, serial, std::move(frame));
     outbox_.held(to);
     if (!routed) {
         routed = &routed_[sender][serial];
@@ -182,9 +185,9 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributesView& m) {
     }
     Routed* routed = nullptr;
     // The timestamped reflection last encoded for each transport, and the values it holds: the receivers that
-    // get the same attributes each get a copy of those bytes (encoding each receiver's was 9 % of the rtig's
-    // CPU in a 32-federate lockstep).
-    std::string tso_frames[2];
+    // get the same attributes share those bytes (encoding each receiver's was 9 % of the rtig's CPU in a
+    // 32-federate lockstep).
+    wire::SharedFrame tso_frames[2];
     wire::HandleValueRefs tso_framed[2];
     for (auto& [gh, g] : federates_) {
         if (gh == from) continue;
@@ -220,8 +223,8 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributesView& m) {
         for (int tr = 0; tr < 2; ++tr) {
             const auto& r = out[1][tr];
             if (r.values.empty()) continue;
-            if (tso_frames[tr].empty() || r.values != tso_framed[tr]) {
-                tso_frames[tr] = held_frame(r);
+            if (!tso_frames[tr] || r.values != tso_framed[tr]) {
+                tso_frames[tr] = shared_frame(r);
                 tso_framed[tr] = r.values;
             }
             deliver_timestamp_order(gh, r, from, m.serial, *m.time, routed, tso_frames[tr]);
@@ -278,7 +281,7 @@ void Federation::route_interaction(FederateHandle from, const wire::SendInteract
         if (timestamped && time_.is_tso(from, gh)) {
             receive.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
             receive.time = m.time;
-            deliver_timestamp_order(gh, receive, from, m.serial, *m.time, routed, held_frame(receive));
+            deliver_timestamp_order(gh, receive, from, m.serial, *m.time, routed, shared_frame(receive));
         } else {
             receive.order = static_cast<std::uint8_t>(fom::Order::Receive);
             receive.time.reset();

@@ -75,9 +75,9 @@ public:
     void send_frame(FederateHandle federate, const std::string& frame) { buffer(federate).append(frame); }
     // Frames released at once (held messages): the gateway writes them as the federate takes them, freeing
     // each on the way, rather than copying them all into its output buffer (docs/robustness.md).
-    virtual void send_frames(FederateHandle federate, std::vector<std::string>& frames) {
+    virtual void send_frames(FederateHandle federate, std::vector<wire::SharedFrame>& frames) {
         std::string& out = buffer(federate);
-        for (const auto& frame : frames) out.append(frame);
+        for (const auto& frame : frames) out.append(*frame);
     }
     // A best-effort receive-order message: sent as a datagram when the federate takes them and it fits
     // (server/datagrams.cpp); false: the caller sends it in the stream.

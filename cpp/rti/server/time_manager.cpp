@@ -111,7 +111,7 @@ std::vector<std::string> TimeManager::disable_constrained(std::uint32_t f) {
     s.constrained = false;
     s.constrained_pending = false;
     std::vector<std::string> frames;
-    for (auto& [key, frame] : s.tso) frames.push_back(std::move(frame));
+    for (auto& m : s.tso_in_order()) frames.push_back(*m.frame);
     s.tso.clear();
     s.tso_bytes = 0;
     return frames;
@@ -155,13 +155,17 @@ Time TimeManager::promise(std::uint32_t f) const {
 }
 
 void TimeManager::enqueue_tso(std::uint32_t receiver, TsoMessage message) {
+    enqueue_tso(receiver, message.time, message.sender, message.serial,
+                std::make_shared<std::string>(std::move(message.frame)));
+}
+
+void TimeManager::enqueue_tso(std::uint32_t receiver, Time time, std::uint32_t sender, std::uint64_t serial,
+                              wire::SharedFrame frame) {
     State& s = state(receiver);
     // The queue only matters to bounds and grants of a federate in NER/NERA/FQR: a message cannot make a
     // TAR grantable, and the lockstep's updates would otherwise each cost a bound computation.
     if (is_next_event(s.pending)) changed_ = true;
-    s.tso_bytes += weight(message.frame);
-    s.tso.emplace(std::make_pair(message.time, std::make_pair(message.sender, message.serial)),
-                  std::move(message.frame));
+    s.push_tso(Queued{time, sender, serial, std::move(frame)});
 }
 
 void TimeManager::enqueue_receive_order(std::uint32_t receiver, std::string frame) {
@@ -175,15 +179,13 @@ std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint6
     changed_ = true;
     std::vector<std::uint32_t> removed_from;
     for (auto& [f, s] : federates_) {
-        for (auto it = s.tso.begin(); it != s.tso.end();) {
-            if (it->first.second.first == sender && it->first.second.second == serial) {
-                s.tso_bytes -= weight(it->second);
-                it = s.tso.erase(it);
-                removed_from.push_back(f);
-            } else {
-                ++it;
-            }
-        }
+        auto it = std::find_if(s.tso.begin(), s.tso.end(),
+                               [&](const Queued& m) { return m.sender == sender && m.serial == serial; });
+        if (it == s.tso.end()) continue;  // (sender, serial) names one message: at most once per queue
+        s.tso_bytes -= weight(*it->frame);
+        s.tso.erase(it);
+        std::make_heap(s.tso.begin(), s.tso.end(), later);
+        removed_from.push_back(f);
     }
     return removed_from;
 }
@@ -195,7 +197,6 @@ std::size_t TimeManager::held_bytes(std::uint32_t f) const {
     return s.ro_bytes + (s.pending == AdvanceKind::None ? s.tso_bytes : 0);
 }
 
-Time TimeManager::earliest_tso(const State& s) const { return s.tso.empty() ? kInfinity : s.tso.begin()->first.first; }
 
 // The greatest fixed point of the bound equations (see the header), by increasing bounds like Dijkstra:
 // a federate's bound only depends on smaller ones through after(), which never lowers a value. Only a
@@ -213,7 +214,7 @@ void TimeManager::compute_bounds() {
                   : s.strict_after_grant                            ? std::nextafter(s.time, kInfinity)
                                                                     : s.time;
         } else if (is_next_event(s.pending)) {
-            own = bound_after(std::min(s.pending_time, s.constrained ? earliest_tso(s) : kInfinity), s.lookahead,
+            own = bound_after(std::min(s.pending_time, s.constrained ? s.earliest_tso() : kInfinity), s.lookahead,
                               s.pending);
             relax = relax || s.constrained;
         } else {
@@ -266,7 +267,7 @@ Time TimeManager::lbts(std::uint32_t f) {
 
 Time TimeManager::min_next_event_time(std::uint32_t f) {
     const Time l = lbts(f);
-    return std::min(l, earliest_tso(state(f)));
+    return std::min(l, state(f).earliest_tso());
 }
 
 Time TimeManager::federate_time(std::uint32_t f) const { return state(f).time; }
@@ -286,7 +287,7 @@ bool TimeManager::try_grant(std::uint32_t f, State& s, Release& out) {
     bool deliver_all = false;
     if (s.constrained) {
         const Time lbts = lbts_from_bounds(f);
-        const Time next = std::min(t, earliest_tso(s));
+        const Time next = std::min(t, s.earliest_tso());
         switch (s.pending) {
             case AdvanceKind::TimeAdvanceRequest:  // §8.5: nothing at or below t may still arrive
                 if (!(t < lbts)) return false;
@@ -303,13 +304,13 @@ bool TimeManager::try_grant(std::uint32_t f, State& s, Release& out) {
                 grant = deliver_up_to = next;
                 break;
             case AdvanceKind::FlushQueueRequest:  // §8.9: everything queued, grant no further than is safe
-                grant = std::max(s.time, std::min({t, lbts, earliest_tso(s)}));
+                grant = std::max(s.time, std::min({t, lbts, s.earliest_tso()}));
                 deliver_all = true;
                 break;
             case AdvanceKind::None: return false;
         }
     }
-    while (!s.tso.empty() && (deliver_all || s.tso.begin()->first.first <= deliver_up_to)) s.pop_tso(out.frames);
+    while (!s.tso.empty() && (deliver_all || s.tso.front().time <= deliver_up_to)) s.pop_tso(out.frames);
     s.time = grant;
     s.strict_after_grant = !is_available(s.pending) && !(s.lookahead > 0 && grant + s.lookahead > grant);
     // Conservative for newcomers: after FQR with zero lookahead too, start strictly above the grant.
@@ -328,7 +329,7 @@ bool TimeManager::try_complete_regulation(std::uint32_t f, State& s, Release& ou
     if (s.time < t0) {
         if (s.constrained) {
             if (!(t0 <= lbts_from_bounds(f))) return false;
-            while (!s.tso.empty() && s.tso.begin()->first.first <= t0) s.pop_tso(out.frames);
+            while (!s.tso.empty() && s.tso.front().time <= t0) s.pop_tso(out.frames);
         }
         s.time = t0;
         s.receives_above_time = false;  // messages at t0 itself may still come
@@ -357,7 +358,7 @@ std::vector<TimeManager::Release> TimeManager::release() {
         for (auto& [f, s] : federates_) {
             if (!s.held_ro.empty() && !holds_receive_order(f)) {
                 auto& frames = slot(f).frames;
-                for (auto& frame : s.held_ro) frames.push_back(std::move(frame));
+                for (auto& frame : s.held_ro) frames.push_back(std::make_shared<std::string>(std::move(frame)));
                 s.held_ro.clear();
                 s.ro_bytes = 0;
             }
@@ -433,7 +434,7 @@ TimeManager::SavedState TimeManager::save_state(std::uint32_t f) const {
     // never lets a message into anyone's past).
     out.time.regulating = s.regulating && !s.enabling;
     out.time.promise = out.time.regulating ? s.promise : -kInfinity;
-    for (const auto& [key, frame] : s.tso) out.tso.push_back(TsoMessage{key.first, key.second.first, key.second.second, frame});
+    for (const auto& m : s.tso_in_order()) out.tso.push_back(TsoMessage{m.time, m.sender, m.serial, *m.frame});
     out.held_ro = s.held_ro;
     return out;
 }
@@ -446,10 +447,8 @@ void TimeManager::restore_state(std::uint32_t f, SavedState saved) {
     s = State{};
     static_cast<wire::SavedTime&>(s) = saved.time;
     if (!s.regulating) s.promise = -kInfinity;
-    for (auto& m : saved.tso) {
-        s.tso_bytes += weight(m.frame);
-        s.tso.emplace(std::make_pair(m.time, std::make_pair(m.sender, m.serial)), std::move(m.frame));
-    }
+    for (auto& m : saved.tso)
+        s.push_tso(Queued{m.time, m.sender, m.serial, std::make_shared<std::string>(std::move(m.frame))});
     s.held_ro = std::move(saved.held_ro);
     for (const auto& frame : s.held_ro) s.ro_bytes += weight(frame);
 }

@@ -1388,6 +1388,10 @@ void encode_to(Out& out, const M& m) {
     m.fields(w);
 }
 
+// An encoded frame that several receivers' queues hold (the gateway's timestamp-ordered queues): one string,
+// not a copy each.
+using SharedFrame = std::shared_ptr<std::string>;
+
 struct Frame {
     MessageType type = MessageType::Invalid;
     std::string_view payload;

@@ -227,7 +227,6 @@ int dispatch(Client& c, const py::object& ambassador, bool stop_after_grant, dou
         ++delivered;
         const Named callback = to_callback(*m);
         const bool granted = std::holds_alternative<wire::TimeAdvanceGrant>(*m);
-        wire::recycle(*m);
         m.reset();  // its values are Python's copies now: the blocks they were read into go back to the reader
         if (!ambassador.is_none()) {
             if (PyObject* method = methods.of(callback.callback)) call(method, callback.args);

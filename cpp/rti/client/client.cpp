@@ -779,7 +779,7 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
             read_now += static_cast<std::size_t>(r);
             if (static_cast<std::size_t>(r) < want) break;
             // Small frames are read a batch at a time: the rest waits in the socket (poll() sees it), and the
-            // batch's messages and value lists are delivered and reused before more are decoded.
+            // batch is delivered before more is decoded, in the room the arrival vector keeps (Arrivals::kKept).
             if (want == wire::ReadBuffer::kChunk && read_now >= kReadBatchBytes) {
                 got.more_in_socket = true;
                 break;

@@ -37,40 +37,11 @@ std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_
     return 4 + static_cast<std::size_t>(length);
 }
 
-namespace {
-// A read brings up to a few thousand small updates, decoded before the first is delivered: as many lists are
-// kept, up to kSpareValues values' room in all (under 1 MB a thread).
-constexpr std::size_t kSpareValues = 8192;
-struct Spare {
-    std::vector<HandleValues> lists;
-    std::size_t room = 0;  // the lists' capacities summed
-};
-thread_local Spare spare;
-}  // namespace
-
-HandleValues spare_values() {
-    if (spare.lists.empty()) return {};
-    HandleValues values = std::move(spare.lists.back());
-    spare.lists.pop_back();
-    spare.room -= values.capacity();
-    return values;
-}
-
-void recycle(Message& delivered) {
-    HandleValues* values = nullptr;
-    if (auto* r = std::get_if<ReflectAttributes>(&delivered)) values = &r->values;
-    else if (auto* i = std::get_if<ReceiveInteraction>(&delivered)) values = &i->values;
-    if (!values || values->capacity() == 0 || spare.room + values->capacity() > kSpareValues) return;
-    values->clear();
-    spare.room += values->capacity();
-    spare.lists.push_back(std::move(*values));
-}
-
 void decode(const Frame& frame, Message& into) {
     switch (frame.type) {
-#define HLACORE_X(name)                                \
-    case MessageType::name:                            \
-        decode_fields(frame, into.emplace<name>());    \
+#define HLACORE_X(name)                             \
+    case MessageType::name:                         \
+        decode_fields(frame, into.emplace<name>()); \
         return;
         HLACORE_MESSAGES(HLACORE_X)
 #undef HLACORE_X

@@ -51,10 +51,6 @@ using HandleValueRefs = std::vector<const HandleValueView*>;
 inline HandleValueViews views_of(const HandleValues& values) {
     return HandleValueViews(values.begin(), values.end());
 }
-// Value lists kept for decoding on this thread: a subscriber decodes one per reflection, and allocating it
-// was 3-7 % of its CPU (docs/performance.md). An empty list when none is kept; recycle() keeps them.
-HandleValues spare_values();
-
 using OptionalTime = std::optional<double>;
 
 // The list that fixes each message's wire code (its position, from 1). Append only.
@@ -1304,9 +1300,6 @@ public:
         get(n);
         // Every element takes at least 4 bytes (all our element types), which bounds the allocation.
         if (n > remaining() / 4) fail("element count exceeds frame");
-        if constexpr (std::is_same_v<T, HandleValue>) {
-            if (items.capacity() < n) items = spare_values();
-        }
         items.clear();
         items.resize(n);
         for (auto& item : items) get(item);
@@ -1408,9 +1401,7 @@ Message decode(const Frame& frame);
 // The same into `into`, where it stays: a reflection is not moved twice more on its way to the callback queue;
 // after a WireError, `into` holds what was decoded so far.
 void decode(const Frame& frame, Message& into);
-// Keeps the value list of a delivered update or interaction for spare_values(), emptied, up to a few lists.
-void recycle(Message& delivered);
-// Decodes a frame of M's type as M (a view type such as UpdateAttributesView included).
+// Decodes a frame of M's type into m, or as M (a view type such as UpdateAttributesView included).
 template <class M>
 void decode_fields(const Frame& frame, M& m) {
     Reader r(frame.payload, frame.type, frame.block);

@@ -309,7 +309,7 @@ bool tick(Client& c, std::optional<double> minimum, std::optional<double> maximu
 }
 
 const Doc kDocs[] = {
-    {"tick", "Evoke callbacks on this thread (HLA 1.3 §2.2 tick). tick() delivers every callback that is ready and returns at once. tick(minimum, maximum) waits up to minimum seconds for the first callback (the GIL released; Ctrl-C interrupts it), then keeps delivering what is ready for at most maximum seconds. Returns True when callbacks are still pending. An exception raised by a callback propagates with its traceback; the callbacks not yet delivered stay queued for the next tick."},
+    {"tick", "Evoke callbacks on this thread (HLA 1.3 §2.2 tick). tick() delivers the callbacks that are ready and returns at once; a read takes up to 128 KiB of small messages, so a burst larger than that takes several calls. tick(minimum, maximum) waits up to minimum seconds for the first callback (the GIL released; Ctrl-C interrupts it), then keeps delivering what is ready for at most maximum seconds. Returns True when callbacks are still pending, queued or still in the socket: `while tick(): pass` delivers all that had arrived. An exception raised by a callback propagates with its traceback; the callbacks not yet delivered stay queued for the next tick."},
 };
 
 }  // namespace

@@ -197,7 +197,6 @@ std::size_t TimeManager::held_bytes(std::uint32_t f) const {
     return s.ro_bytes + (s.pending == AdvanceKind::None ? s.tso_bytes : 0);
 }
 
-
 // The greatest fixed point of the bound equations (see the header), by increasing bounds like Dijkstra:
 // a federate's bound only depends on smaller ones through after(), which never lowers a value. Only a
 // constrained federate in NER/NERA/FQR depends on others; without one, each bound is its own.

@@ -15,8 +15,9 @@ namespace {
 template <class M>
 std::string held_frame(const M& message) {
     std::string frame;
-    frame.reserve(4 + wire::frame_length(message));
-    wire::encode(frame, message);
+    const std::size_t length = wire::frame_length(message);
+    frame.reserve(4 + length);
+    wire::encode(frame, message, length);
     return frame;
 }
 template <class M>

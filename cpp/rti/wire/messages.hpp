@@ -1358,12 +1358,11 @@ struct RawOutput {
 // Frames up to this size are written into room made first (zero-filled, which a larger one would notice).
 constexpr std::size_t kEncodedInPlaceBytes = 4096;
 
-// Appends one complete frame holding `m` to `out`.
+// Appends one complete frame holding `m`, whose frame_length() is `length`, to `out`.
 template <class M>
-void encode(std::string& out, const M& m) {
+void encode(std::string& out, const M& m, std::size_t length) {
     const std::size_t start = out.size();
     const auto type = static_cast<std::uint16_t>(M::kType);
-    const std::size_t length = frame_length(m);
     if (length <= kEncodedInPlaceBytes) {
         out.resize(start + 4 + length);
         RawOutput raw{&out[start]};
@@ -1380,6 +1379,11 @@ void encode(std::string& out, const M& m) {
     const auto written = static_cast<std::uint32_t>(out.size() - start - 4);
     std::memcpy(&out[start], &written, 4);
     std::memcpy(&out[start + 4], &type, 2);
+}
+// Appends one complete frame holding `m` to `out`.
+template <class M>
+void encode(std::string& out, const M& m) {
+    encode(out, m, frame_length(m));
 }
 void encode(std::string& out, const Message& m);
 

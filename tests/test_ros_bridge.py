@@ -16,12 +16,12 @@ import os
 import pathlib
 import queue
 import signal
-import socket
 import subprocess
 import sys
 import threading
 import time
 import xmlrpc.client
+import xmlrpc.server
 from typing import Any, Iterator, Optional, Sequence
 
 import pytest
@@ -30,6 +30,7 @@ import hlacore.rti as rti
 from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, load_world
 from hlacore.federates.robot_world.federate import Pose
 from hlacore.federates.ros_bridge.children import stop_process
+from hlacore.federates.ros_bridge.master import free_master_port, master_online
 
 from conftest import ROVER_MODEL
 
@@ -59,12 +60,6 @@ def require_ros() -> None:
 @pytest.fixture
 def ros() -> None:
     require_ros()
-
-
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
 
 
 class Lines:
@@ -109,7 +104,7 @@ def running_roscore(home: pathlib.Path, ip: str = "127.0.0.1", prefix: Sequence[
     the environment for ROS processes. On another host: `prefix` runs it there, `ip` is its address there
     (the master's URI), `reach` where this process reaches it to see it up."""
     home.mkdir(parents=True, exist_ok=True)
-    port = free_port()
+    port = free_master_port()
     env = dict(os.environ, ROS_MASTER_URI=f"http://{ip}:{port}", ROS_IP=ip, ROS_HOME=str(home),
                ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
     env.pop("ROS_HOSTNAME", None)
@@ -276,6 +271,23 @@ def test_import_without_ros_names_the_packages(tmp_path: pathlib.Path) -> None:
     assert done.returncode == 1
     assert "ImportError: the ROS bridge needs ROS 1" in done.stderr, done.stderr
     assert "apt-get install -y --no-install-recommends ros-core python3-rospy" in done.stderr
+
+
+def test_a_roscore_port_is_one_no_ros_process_can_be_handed_and_another_server_is_no_master() -> None:
+    """roscore's port lies below the ephemeral range (roslaunch and rosout bind port 0; a CI run once had
+    roslaunch's own server answer on the port picked for the master), and an XML-RPC server that is not a
+    ROS master is not taken for one."""
+    low = int(pathlib.Path("/proc/sys/net/ipv4/ip_local_port_range").read_text().split()[0])
+    assert all(1024 <= free_master_port() < low for _ in range(20))
+    server = xmlrpc.server.SimpleXMLRPCServer(("127.0.0.1", 0), logRequests=False)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        assert master_online(f"http://127.0.0.1:{server.server_address[1]}") is False
+    finally:
+        server.shutdown()
+        server.server_close()
+        thread.join(10)
 
 
 CHECK_FINDER = """

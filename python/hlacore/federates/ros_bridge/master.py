@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import contextlib
 import os
+import pathlib
+import random
 import shutil
 import signal
 import socket
@@ -30,8 +32,22 @@ def master_online(uri: str, with_rosout: bool = False) -> bool:
                 return True
             found = master.lookupNode("/hlacore", "/rosout")  # [code, message, URI]; code 1: registered
             return isinstance(found, list) and found[0] == 1
-    except OSError:
+    except (OSError, xmlrpc.client.Fault):  # nothing there, or a server that is not a ROS master
         return False
+
+
+def free_master_port(host: str = "127.0.0.1") -> int:
+    """A free port for a roscore, below the kernel's ephemeral range: roslaunch and rosout bind port 0,
+    so a port the kernel handed out that way could go to one of them before rosmaster binds it."""
+    low = int(pathlib.Path("/proc/sys/net/ipv4/ip_local_port_range").read_text().split()[0])
+    for port in random.sample(range(max(1024, low - 12000), low), 200):
+        with socket.socket() as s:
+            try:
+                s.bind((host, port))
+            except OSError:
+                continue
+            return port
+    raise RuntimeError(f"no free port for a ROS master below the ephemeral range (ports from {low})")
 
 
 @contextlib.contextmanager
@@ -49,9 +65,7 @@ def ros_master(timeout: float = 30.0) -> Iterator[str]:
     if uri and master_online(uri):
         yield uri
         return
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        port = int(s.getsockname()[1])
+    port = free_master_port()
     home = tempfile.mkdtemp(prefix="hlacore-ros-")
     uri = f"http://127.0.0.1:{port}"
     os.environ.update(ROS_MASTER_URI=uri, ROS_IP="127.0.0.1", ROS_HOME=home, ROS_LOG_DIR=f"{home}/log")

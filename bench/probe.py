@@ -14,6 +14,9 @@ each process's CPU read from /proc over the measured rounds. Prints one JSON lin
                                                                    update ping-pong, receive order and TSO; run under
                                                                    `taskset -c 0` to see them all on one core
 
+--unix runs fanout, large, lockstep and pingpong with the federates connected to the rtig over a Unix socket
+(rtig --unix, docs/networking.md) instead of TCP.
+
 The rtig is bench_rtig()'s ($HLACORE_BENCH_RTIG overrides), the C++ floor program $HLACORE_TCP_FLOOR (default
 build/bench/tcp_floor, built by ./scripts/bench.sh). For an A/B, run each side with its own package on
 PYTHONPATH, its own rtig and its own bench code, alternating; `perf record -p PID` on the pids printed with
@@ -21,13 +24,17 @@ PYTHONPATH, its own rtig and its own bench code, alternating; `perf record -p PI
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import resource
 import statistics
 import sys
+import tempfile
 import time
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Iterator, Optional
+
+from hlacore.processes import Rtig
 
 from .floor import PyEcho, cpp_rtt_ns
 from .lockstep import Lockstep
@@ -35,6 +42,22 @@ from .pingpong import PingPong
 from .procs import bench_rtig, cpu_seconds
 from .three_rtis import Server, run
 from .throughput import Fanout
+
+
+_over_unix = False  # --unix
+
+
+@contextlib.contextmanager
+def gateway() -> Iterator[tuple[Rtig, str]]:
+    """bench_rtig() and the address its federates connect to: its TCP one, or with --unix its Unix socket's."""
+    if not _over_unix:
+        with bench_rtig() as rtig:
+            yield rtig, rtig.address
+        return
+    with tempfile.TemporaryDirectory(prefix="hlacore-probe-") as directory, \
+            bench_rtig("--unix", os.path.join(directory, "rtig.sock")) as rtig:
+        assert rtig.unix_address is not None
+        yield rtig, rtig.unix_address
 
 
 def spent(pids: dict[str, int], run: Callable[[], None]) -> dict[str, float]:
@@ -75,8 +98,8 @@ def measured_bursts(f: Fanout, pids: dict[str, int], rounds: int, show_pids: boo
 
 
 def fanout(subscribers: int = 8, burst: int = 25_000, rounds: int = 6, show_pids: bool = False) -> dict[str, Any]:
-    with bench_rtig() as rtig:
-        f = Fanout(rtig.address, subscribers, burst)
+    with gateway() as (rtig, address):
+        f = Fanout(address, subscribers, burst)
         try:
             f.burst()  # warm-up
             pids = {"rtig": rtig.child.pid, "sender": os.getpid()}
@@ -93,8 +116,8 @@ def fanout(subscribers: int = 8, burst: int = 25_000, rounds: int = 6, show_pids
 
 def large(mib: float = 16, burst: int = 4, rounds: int = 6, show_pids: bool = False) -> dict[str, Any]:
     size = int(mib * (1 << 20))
-    with bench_rtig() as rtig:
-        f = Fanout(rtig.address, 1, burst, payload=bytes(size))
+    with gateway() as (rtig, address):
+        f = Fanout(address, 1, burst, payload=bytes(size))
         try:
             f.burst()
             pids = {"sender": os.getpid(), "rtig": rtig.child.pid, "receiver": f.peers[0].pid}
@@ -107,8 +130,8 @@ def large(mib: float = 16, burst: int = 4, rounds: int = 6, show_pids: bool = Fa
 
 
 def lockstep(federates: int = 32, steps: int = 400, show_pids: bool = False) -> dict[str, Any]:
-    with bench_rtig() as rtig:
-        f = Lockstep(rtig.address, federates, max_steps=steps + 60)
+    with gateway() as (rtig, address):
+        f = Lockstep(address, federates, max_steps=steps + 60)
         try:
             for _ in range(50):  # warm-up
                 f.step()
@@ -163,9 +186,9 @@ def pingpong(size: int = 8, rounds: int = 3000, show_pids: bool = False) -> dict
         result["python_us"] = timed_median_us(echo.round_trip, rounds)
     finally:
         echo.close()
-    with bench_rtig() as rtig:
+    with gateway() as (rtig, address):
         for order in ("ro", "tso"):
-            p = PingPong(rtig.address, order, size)
+            p = PingPong(address, order, size)
             try:
                 announce({"rtig": rtig.child.pid, "pong": p.peer.pid}, show_pids)
                 timed_median_us(p.round_trip, 200)
@@ -181,8 +204,9 @@ PROBES: dict[str, Callable[..., dict[str, Any]]] = {"fanout": fanout, "large": l
 
 
 def main(argv: list[str]) -> int:
-    show_pids = "--pids" in argv
-    args = [a for a in argv if a != "--pids"]
+    global _over_unix
+    show_pids, _over_unix = "--pids" in argv, "--unix" in argv
+    args = [a for a in argv if a not in ("--pids", "--unix")]
     if not args or args[0] not in PROBES:
         print(__doc__, file=sys.stderr)
         return 2

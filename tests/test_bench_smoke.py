@@ -145,6 +145,17 @@ def test_probe_runs_its_workload_and_reads_the_cpu(probe: str, args: tuple, figu
     assert result.get("wall_us_per_step", 1) > 0
 
 
+def test_probe_over_a_unix_socket_connects_there(monkeypatch: pytest.MonkeyPatch) -> None:
+    """`python -m bench.probe ... --unix`: the workloads' federates connect to the rtig's Unix socket."""
+    import bench.probe as probe
+
+    monkeypatch.setattr(probe, "_over_unix", True)
+    with probe.gateway() as (rtig, address):
+        assert address == rtig.unix_address and address.startswith("unix:")
+    result = PROBES["lockstep"](3, 20)
+    assert result["wall_us_per_step"] > 0
+
+
 def test_pingpong_probe_times_the_floors_and_both_orders(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("HLACORE_TCP_FLOOR", tcp_floor_binary())
     result = PROBES["pingpong"](8, 30)

@@ -26,8 +26,9 @@ public:
                       double stall_timeout, std::uint32_t max_frame, const std::string& secret_file,
                       std::uint32_t max_datagram, const std::map<std::string, std::string>& federation_secret_files,
                       const std::string& tls_cert, const std::string& tls_key, std::string record_path,
-                      std::uint32_t busy_poll_us) {
+                      std::uint32_t busy_poll_us, std::string unix_path) {
         GatewayOptions options;
+        options.unix_path = std::move(unix_path);  // RuntimeError or ValueError from the Gateway, saying why
         options.busy_poll_us = busy_poll_us;  // ValueError from the Gateway beyond kMaxBusyPollUs
         options.tls_cert = tls_cert;  // loaded by the Gateway: RuntimeError saying why, ValueError for one alone
         options.tls_key = tls_key;
@@ -46,21 +47,27 @@ public:
         options.trace_path = std::move(trace_path);
         options.record_path = std::move(record_path);
         gateway_ = std::make_unique<Gateway>(options);
+        host_ = gateway_->host();
+        port_ = gateway_->port();
         thread_ = std::thread([this] { gateway_->run(); });
     }
     ~BackgroundGateway() { stop(); }
+    // Stops the loop and closes the gateway: its sockets (a Unix socket's file removed) and its recording.
     void stop() {
         if (thread_.joinable()) {
             gateway_->stop();
             thread_.join();
         }
+        gateway_.reset();
     }
-    std::string host() const { return gateway_->host(); }
-    std::uint16_t port() const { return gateway_->port(); }
+    const std::string& host() const { return host_; }
+    std::uint16_t port() const { return port_; }
     bool running() const { return thread_.joinable(); }
 
 private:
     std::unique_ptr<Gateway> gateway_;
+    std::string host_;
+    std::uint16_t port_ = 0;
     std::thread thread_;
 };
 
@@ -142,14 +149,14 @@ PYBIND11_MODULE(_core, m) {
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
                       std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t,
                       const std::map<std::string, std::string>&, const std::string&, const std::string&,
-                      std::string, std::uint32_t>(),
+                      std::string, std::uint32_t, std::string>(),
              py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
              py::arg("trace_path") = "", py::arg("client_budget") = hlacore::GatewayOptions{}.client_budget,
              py::arg("stall_timeout") = hlacore::GatewayOptions{}.stall_timeout_s,
              py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes, py::arg("secret_file") = "",
              py::arg("max_datagram") = hlacore::GatewayOptions{}.max_datagram,
              py::arg("federation_secret_files") = std::map<std::string, std::string>{}, py::arg("tls_cert") = "",
-             py::arg("tls_key") = "", py::arg("record_path") = "", py::arg("busy_poll_us") = 0,
+             py::arg("tls_key") = "", py::arg("record_path") = "", py::arg("busy_poll_us") = 0, py::arg("unix_path") = "",
              py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
         .def_property_readonly("host", &BackgroundGateway::host)

@@ -12,6 +12,7 @@
 #include "fed_parser/fom.hpp"
 #include "rti/auth.hpp"
 #include "rti/busy_poll.hpp"
+#include "rti/unix_socket.hpp"
 
 using namespace hlacore;
 using hlacore::hla13::guarded;
@@ -45,7 +46,10 @@ std::uint16_t port_number(const std::string& text, const char* what) {
 
 Connection connection_from_environment() {
     Connection c;
-    if (const char* address = env("HLACORE_RTIG")) {
+    if (const char* address = env("HLACORE_RTIG"); address && unix_socket::is_unix(address)) {
+        c.host = address;  // unix:PATH, a gateway on this host (rtig --unix PATH)
+        c.port = 0;
+    } else if (address) {
         const std::string a = address;
         const auto colon = a.rfind(':');
         if (colon == std::string::npos)

@@ -619,7 +619,7 @@ class EventRetractionHandle:
         The message's serial number at its sender.
         """
 class BackgroundGateway:
-    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, fom_path: collections.abc.Sequence[str], verbose: bool, save_dir: str = '', trace_path: str = '', client_budget: typing.SupportsInt | typing.SupportsIndex = 67108864, stall_timeout: typing.SupportsFloat | typing.SupportsIndex = 30.0, max_frame: typing.SupportsInt | typing.SupportsIndex = 67108864, secret_file: str = '', max_datagram: typing.SupportsInt | typing.SupportsIndex = 1400, federation_secret_files: collections.abc.Mapping[str, str] = {}, tls_cert: str = '', tls_key: str = '', record_path: str = '', busy_poll_us: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
+    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, fom_path: collections.abc.Sequence[str], verbose: bool, save_dir: str = '', trace_path: str = '', client_budget: typing.SupportsInt | typing.SupportsIndex = 67108864, stall_timeout: typing.SupportsFloat | typing.SupportsIndex = 30.0, max_frame: typing.SupportsInt | typing.SupportsIndex = 67108864, secret_file: str = '', max_datagram: typing.SupportsInt | typing.SupportsIndex = 1400, federation_secret_files: collections.abc.Mapping[str, str] = {}, tls_cert: str = '', tls_key: str = '', record_path: str = '', busy_poll_us: typing.SupportsInt | typing.SupportsIndex = 0, unix_path: str = '') -> None:
         ...
     def stop(self) -> None:
         ...

@@ -49,6 +49,9 @@ class Gateway:
     encrypted stream). :meth:`status` then trusts ``tls_cert`` itself.
     ``busy_poll_us`` is ``rtig --busy-poll``: each wait for the clients polls without sleeping for up to that
     many µs before it sleeps (0, the default: off; at most :attr:`MAX_BUSY_POLL_US`; docs/performance.md).
+    ``unix`` is ``rtig --unix``: also listen on a Unix socket at that path, for federates on this host, which
+    connect to :attr:`unix_address` (``"unix:PATH"``) with less CPU per message than over TCP; no datagrams
+    and no TLS on it; the file is its owner's only and is removed when the gateway stops (docs/networking.md).
     """
 
     #: The smallest ``client_budget`` in bytes (a smaller one raises :class:`ValueError`).
@@ -79,6 +82,7 @@ class Gateway:
         tls_key: Optional[str | os.PathLike[str]] = None,
         record: Optional[str | os.PathLike[str]] = None,
         busy_poll_us: int = 0,
+        unix: Optional[str | os.PathLike[str]] = None,
     ) -> None:
         if client_budget < self.MIN_CLIENT_BUDGET:
             raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
@@ -105,7 +109,9 @@ class Gateway:
                                                 {name: os.fspath(path) for name, path in (federation_secrets or {}).items()},
                                                 self._tls_cert or "",
                                                 os.fspath(tls_key) if tls_key is not None else "",
-                                                os.fspath(record) if record is not None else "", busy_poll_us)
+                                                os.fspath(record) if record is not None else "", busy_poll_us,
+                                                os.fspath(unix) if unix is not None else "")
+        self._unix = os.fspath(unix) if unix is not None else None
 
     @property
     def host(self) -> str:
@@ -121,6 +127,12 @@ class Gateway:
     def address(self) -> str:
         """``"host:port"``, as :class:`hlacore.rti.RTIAmbassador` takes it."""
         return f"{self.host}:{self.port}"
+
+    @property
+    def unix_address(self) -> Optional[str]:
+        """``"unix:PATH"`` when constructed with ``unix=PATH``, as :class:`hlacore.rti.RTIAmbassador` takes it;
+        else None."""
+        return f"unix:{self._unix}" if self._unix is not None else None
 
     @property
     def running(self) -> bool:

@@ -352,7 +352,8 @@ _SWITCH_CLASS, _SWITCH_ATTRIBUTE, _SWITCH_SCOPE, _SWITCH_INTERACTION = 1, 2, 3, 
 
 def _resolve_address(address: Optional[str]) -> tuple[str, int]:
     """The gateway's (host, port): `address`, else $HLACORE_RTIG, else CERTI's $CERTI_HOST and
-    $CERTI_TCP_PORT (either may be left out), else 127.0.0.1:60400."""
+    $CERTI_TCP_PORT (either may be left out), else 127.0.0.1:60400. ``unix:PATH`` is (``unix:PATH``, 0):
+    the client connects to that Unix socket."""
     text = address or os.environ.get("HLACORE_RTIG")
     if not text and ("CERTI_HOST" in os.environ or "CERTI_TCP_PORT" in os.environ):
         default_host, default_port = DEFAULT_ADDRESS.rsplit(":", 1)
@@ -361,6 +362,10 @@ def _resolve_address(address: Optional[str]) -> tuple[str, int]:
             raise _core.RTIinternalError(f"CERTI_TCP_PORT={port!r} is not a port number")
         text = f"{os.environ.get('CERTI_HOST') or default_host}:{port}"
     text = text or DEFAULT_ADDRESS
+    if text.startswith("unix:"):  # a gateway on this host over a Unix socket (rtig --unix PATH)
+        if text == "unix:":
+            raise _core.RTIinternalError("rtig address 'unix:' names no socket: unix:PATH")
+        return text, 0
     host, sep, port = text.rpartition(":")
     if not sep or not port.isdigit():
         raise _core.RTIinternalError(f"rtig address {text!r} is not HOST:PORT")

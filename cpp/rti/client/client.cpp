@@ -3,6 +3,7 @@
 #include "rti/auth.hpp"
 #include "rti/busy_poll.hpp"
 #include "rti/client/waiting.hpp"
+#include "rti/unix_socket.hpp"
 #include "rti/wire/splices.hpp"
 
 #include <algorithm>
@@ -51,7 +52,7 @@ const std::uint32_t* answered_request(const wire::Message& m) {
 }  // namespace
 
 Client::Client(const std::string& host, std::uint16_t port, ClientOptions options)
-    : address_(host + ":" + std::to_string(port)),
+    : address_(unix_socket::is_unix(host) ? host : host + ":" + std::to_string(port)),
       options_(options),
       timeout_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.timeout_s))) {
     if (!(options.timeout_s > 0) || options.timeout_s > 1e6)
@@ -59,13 +60,16 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
                                                std::to_string(options.timeout_s));
     if (const std::string error = busy_poll_error(options.busy_poll_us); !error.empty())
         raise(ErrorCode::RTIinternalError, error);
+    const bool local = unix_socket::is_unix(host);
+    if (local && options_.tls)
+        raise(ErrorCode::RTIinternalError, "TLS is for TCP: a Unix socket (" + host + ") does not leave this host");
     addrinfo hints{};
     hints.ai_family = AF_UNSPEC;
     hints.ai_socktype = SOCK_STREAM;
     hints.ai_flags = AI_NUMERICSERV;
     addrinfo* found = nullptr;
     const std::string service = std::to_string(port);
-    if (int rc = getaddrinfo(host.c_str(), service.c_str(), &hints, &found); rc != 0)
+    if (int rc = local ? 0 : getaddrinfo(host.c_str(), service.c_str(), &hints, &found); rc != 0)
         raise(ErrorCode::RTIinternalError, "cannot resolve rtig host '" + host + "': " + gai_strerror(rc));
     std::unique_ptr<addrinfo, decltype(&freeaddrinfo)> guard(found, freeaddrinfo);
     tls::Context tls_context;  // before connecting: a CA file that cannot be used fails without the network
@@ -80,6 +84,7 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
     std::string error = "no address";
     ErrorCode code = ErrorCode::RTIinternalError;
     try {
+        if (local) connect_local(unix_socket::path_of(host));
         for (addrinfo* a = found; a && fd_ < 0; a = a->ai_next) {
             fd_ = ::socket(a->ai_family, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
             if (fd_ < 0) continue;
@@ -103,8 +108,10 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
             fd_ = -1;
         }
         if (fd_ < 0) raise(code, "cannot connect to rtig at " + address_ + ": " + error);
-        int one = 1;
-        setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+        if (!local) {
+            int one = 1;
+            setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+        }
         if (tls_context) start_tls(tls_context.get(), host, deadline);
         last_heard_ = Clock::now();
         send(wire::Hello{});
@@ -113,6 +120,8 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
         if (datagram_token_) {
             if (options_.datagrams) open_datagram_path(deadline);
             else datagram_reason_ = "datagrams turned off on this side";
+        } else if (local) {
+            datagram_reason_ = "no datagrams over a Unix socket: best-effort messages go over it as a stream";
         } else {
             datagram_reason_ = ssl_ ? "the gateway offers no datagrams under TLS: best-effort messages go over the "
                                       "encrypted TCP stream"
@@ -125,6 +134,25 @@ Client::Client(const std::string& host, std::uint16_t port, ClientOptions option
         fd_ = datagram_fd_ = -1;
         throw;
     }
+}
+
+// fd_ connected to the gateway's Unix socket at `path`, or RTIinternalError saying why not. A connect to
+// a Unix socket does not wait: it succeeds or fails at once (EAGAIN: the gateway's backlog is full).
+void Client::connect_local(const std::string& path) {
+    sockaddr_un a{};
+    try {
+        a = unix_socket::address_of(path);
+    } catch (const std::invalid_argument& e) {
+        raise(ErrorCode::RTIinternalError, e.what());
+    }
+    fd_ = ::socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    if (fd_ < 0 || ::connect(fd_, reinterpret_cast<const sockaddr*>(&a), sizeof a) < 0) {
+        const int error = errno;
+        raise(error == EAGAIN ? ErrorCode::GatewayNotResponding : ErrorCode::RTIinternalError,
+              "cannot connect to rtig at " + address_ + ": " +
+                  (error == EAGAIN ? std::string("it takes no more connections now") : std::strerror(error)));
+    }
+    unix_socket::size_send_buffer(fd_);
 }
 
 void Client::start_tls(SSL_CTX* context, const std::string& host, Clock::time_point deadline) {

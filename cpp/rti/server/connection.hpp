@@ -26,6 +26,7 @@ struct Gateway::Connection {
 
     int fd = -1;
     std::string peer;
+    bool local = false;  // over the Unix socket (GatewayOptions::unix_path): no TLS, no datagrams
     // With TLS (rtig --tls-cert): the session, in accept state, on the non-blocking socket. A read that must
     // write first (the handshake's answer to a full socket) waits for EPOLLOUT, a write that must read first
     // for EPOLLIN.

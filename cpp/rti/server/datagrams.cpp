@@ -45,7 +45,7 @@ void Gateway::open_datagrams(const sockaddr_storage& bound, socklen_t length) {
 }
 
 void Gateway::give_datagram_token(Connection& c) {
-    if (datagram_fd_ < 0) return;
+    if (datagram_fd_ < 0 || c.local) return;
     do {
         const std::string random = auth::random_challenge();
         std::memcpy(&c.datagram_token, random.data(), sizeof c.datagram_token);

@@ -2,6 +2,7 @@
 #include "rti/auth.hpp"
 #include "rti/busy_poll.hpp"
 #include "rti/server/connection.hpp"
+#include "rti/unix_socket.hpp"
 #include "rti/wire/json.hpp"
 
 #include <algorithm>
@@ -167,6 +168,14 @@ std::string describe_peer(const sockaddr_storage& addr) {
     return std::string(host) + ":" + std::to_string(port);
 }
 
+// A Unix socket's peer, by the process that connected (its credentials, SO_PEERCRED).
+std::string describe_local_peer(int fd) {
+    ucred peer{};
+    socklen_t len = sizeof peer;
+    if (getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &len) < 0) return "unix socket";
+    return "unix socket, pid " + std::to_string(peer.pid);
+}
+
 // Reads at most `limit` bytes: parse_fed refuses a longer text anyway, and one byte more is enough for it
 // to say so.
 bool read_file(const std::string& path, std::string& text, std::size_t limit) {
@@ -231,40 +240,48 @@ Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
     if (options_.tls_cert.empty() != options_.tls_key.empty())
         throw std::invalid_argument("TLS needs both a certificate and its key (rtig --tls-cert FILE --tls-key FILE)");
     if (!options_.tls_cert.empty()) tls_ = tls::server_context(options_.tls_cert, options_.tls_key);
-    addrinfo hints{};
-    hints.ai_family = AF_UNSPEC;
-    hints.ai_socktype = SOCK_STREAM;
-    hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
-    addrinfo* found = nullptr;
-    const std::string port = std::to_string(options_.port);
-    if (int rc = getaddrinfo(options_.host.c_str(), port.c_str(), &hints, &found); rc != 0)
-        throw std::runtime_error("cannot resolve " + options_.host + ": " + gai_strerror(rc));
-    std::unique_ptr<addrinfo, decltype(&freeaddrinfo)> guard(found, freeaddrinfo);
+    // What the constructor opened is closed again when a later step fails (a Gateway made in Python that
+    // cannot listen leaks nothing).
+    try {
+        addrinfo hints{};
+        hints.ai_family = AF_UNSPEC;
+        hints.ai_socktype = SOCK_STREAM;
+        hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
+        addrinfo* found = nullptr;
+        const std::string port = std::to_string(options_.port);
+        if (int rc = getaddrinfo(options_.host.c_str(), port.c_str(), &hints, &found); rc != 0)
+            throw std::runtime_error("cannot resolve " + options_.host + ": " + gai_strerror(rc));
+        std::unique_ptr<addrinfo, decltype(&freeaddrinfo)> guard(found, freeaddrinfo);
 
-    listen_fd_ = socket(found->ai_family, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
-    if (listen_fd_ < 0) fail("socket");
-    int one = 1;
-    setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-    if (bind(listen_fd_, found->ai_addr, found->ai_addrlen) < 0) {
-        ::close(listen_fd_);
-        fail("cannot listen on " + options_.host + ":" + port);
+        listen_fd_ = socket(found->ai_family, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+        if (listen_fd_ < 0) fail("socket");
+        int one = 1;
+        setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+        if (bind(listen_fd_, found->ai_addr, found->ai_addrlen) < 0) fail("cannot listen on " + options_.host + ":" + port);
+        if (listen(listen_fd_, 128) < 0) fail("listen");
+        sockaddr_storage bound{};
+        socklen_t len = sizeof bound;
+        getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&bound), &len);
+        port_ = bound.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&bound)->sin6_port)
+                                            : ntohs(reinterpret_cast<sockaddr_in*>(&bound)->sin_port);
+
+        wake_fd_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+        if (wake_fd_ < 0) fail("eventfd");
+        loop_.add(listen_fd_, EPOLLIN);
+        loop_.add(wake_fd_, EPOLLIN);
+        reserve_fd_ = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+        // Datagrams are neither encrypted nor signed: under TLS best effort goes over the encrypted stream.
+        if (options_.max_datagram && !tls_) open_datagrams(bound, len);
+        if (!options_.unix_path.empty()) {
+            unix_listen_fd_ = unix_socket::listen_at(options_.unix_path);
+            loop_.add(unix_listen_fd_, EPOLLIN);
+        }
+        if (!options_.trace_path.empty()) trace_ = std::make_unique<MessageTrace>(options_.trace_path);
+        if (!options_.record_path.empty()) recorder_ = std::make_unique<Recorder>(options_.record_path);
+    } catch (...) {
+        close_descriptors();
+        throw;
     }
-    if (listen(listen_fd_, 128) < 0) fail("listen");
-    sockaddr_storage bound{};
-    socklen_t len = sizeof bound;
-    getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&bound), &len);
-    port_ = bound.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&bound)->sin6_port)
-                                        : ntohs(reinterpret_cast<sockaddr_in*>(&bound)->sin_port);
-
-    wake_fd_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
-    if (wake_fd_ < 0) fail("eventfd");
-    loop_.add(listen_fd_, EPOLLIN);
-    loop_.add(wake_fd_, EPOLLIN);
-    reserve_fd_ = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
-    // Datagrams are neither encrypted nor signed: under TLS best effort goes over the encrypted stream.
-    if (options_.max_datagram && !tls_) open_datagrams(bound, len);
-    if (!options_.trace_path.empty()) trace_ = std::make_unique<MessageTrace>(options_.trace_path);
-    if (!options_.record_path.empty()) recorder_ = std::make_unique<Recorder>(options_.record_path);
 }
 
 Gateway::~Gateway() {
@@ -276,11 +293,21 @@ Gateway::~Gateway() {
         }
         recorder_failed();
     }
+    close_descriptors();
+}
+
+void Gateway::close_descriptors() {
     for (auto& [fd, c] : connections_) ::close(fd);
-    if (listen_fd_ >= 0) ::close(listen_fd_);
-    if (datagram_fd_ >= 0) ::close(datagram_fd_);
-    if (wake_fd_ >= 0) ::close(wake_fd_);
-    if (reserve_fd_ >= 0) ::close(reserve_fd_);
+    connections_.clear();
+    for (int* fd : {&listen_fd_, &datagram_fd_, &wake_fd_, &reserve_fd_}) {
+        if (*fd >= 0) ::close(*fd);
+        *fd = -1;
+    }
+    if (unix_listen_fd_ >= 0) {
+        ::close(unix_listen_fd_);
+        ::unlink(options_.unix_path.c_str());  // only a file this gateway made: it listened there
+        unix_listen_fd_ = -1;
+    }
 }
 
 void Gateway::stop() {
@@ -310,8 +337,8 @@ void Gateway::run() {
                 if (trace_) trace_->flush();
                 return;
             }
-            if (fd == listen_fd_) {
-                accept_all();
+            if (fd == listen_fd_ || fd == unix_listen_fd_) {
+                accept_all(fd);
                 continue;
             }
             if (fd == datagram_fd_) {
@@ -351,11 +378,11 @@ void Gateway::record_federation(FederationEntry& entry) {
     entry.outbox.recorder = entry.recording.get();
 }
 
-void Gateway::accept_all() {
+void Gateway::accept_all(int listen_fd) {
     for (;;) {
         sockaddr_storage addr{};
         socklen_t len = sizeof addr;
-        int fd = accept4(listen_fd_, reinterpret_cast<sockaddr*>(&addr), &len, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        int fd = accept4(listen_fd, reinterpret_cast<sockaddr*>(&addr), &len, SOCK_NONBLOCK | SOCK_CLOEXEC);
         if (fd < 0) {
             if (errno == EINTR || errno == ECONNABORTED) continue;
             if ((errno == EMFILE || errno == ENFILE) && reserve_fd_ >= 0) {
@@ -365,7 +392,7 @@ void Gateway::accept_all() {
                 const int saved = errno;
                 ::close(reserve_fd_);
                 reserve_fd_ = -1;
-                const int refused = accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
+                const int refused = accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC);
                 if (refused >= 0) ::close(refused);
                 reserve_fd_ = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
                 // accept4 reports EMFILE before looking at the queue: there may have been nothing to refuse.
@@ -377,12 +404,18 @@ void Gateway::accept_all() {
             if (errno != EAGAIN && errno != EWOULDBLOCK) log(std::string("accept failed: ") + std::strerror(errno));
             return;
         }
-        int one = 1;
-        setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
         auto c = std::make_unique<Connection>();
         c->fd = fd;
-        c->peer = describe_peer(addr);
-        if (tls_) {
+        c->local = listen_fd == unix_listen_fd_;
+        if (c->local) {
+            unix_socket::size_send_buffer(fd);
+            c->peer = describe_local_peer(fd);
+        } else {
+            int one = 1;
+            setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+            c->peer = describe_peer(addr);
+        }
+        if (tls_ && !c->local) {
             try {
                 c->ssl = tls::session(tls_.get(), fd);
             } catch (const std::exception& e) {

@@ -78,6 +78,9 @@ struct GatewayOptions {
     // Busy polling (rti/busy_poll.hpp; 0, the default: off): each wait for the clients polls without sleeping
     // for up to this many µs before it sleeps. At most kMaxBusyPollUs.
     std::uint32_t busy_poll_us = 0;
+    // Non-empty: also listen on a Unix socket at this path, for federates on this host (rti/unix_socket.hpp);
+    // its connections get neither TLS nor datagrams. The file is removed when the gateway ends.
+    std::string unix_path;
 };
 // The bounds of the options (rtig's arguments and hlacore.Gateway check them; both included). The smallest
 // max_datagram (or 0) leaves room for a header and a small message.
@@ -108,7 +111,8 @@ private:
     class ConnectionOutbox;
     class ConnectionTap;
 
-    void accept_all();
+    void accept_all(int listen_fd);
+    void close_descriptors();  // the sockets and descriptors it opened (the destructor, a failed constructor)
     void on_readable(Connection& c);
     // Reads into c.in what the socket (or, with TLS, the TLS session) has, at most about `budget` bytes but
     // never leaving decrypted bytes inside the session; "" or why the connection must be closed, with
@@ -177,6 +181,7 @@ private:
 
     GatewayOptions options_;
     int listen_fd_ = -1;
+    int unix_listen_fd_ = -1;  // options_.unix_path's
     int wake_fd_ = -1;
     int reserve_fd_ = -1;  // kept open to accept-and-close a connection when out of file descriptors
     std::uint16_t port_ = 0;

@@ -100,7 +100,7 @@ def test_help_prints_usage_on_stdout_and_exits_0() -> None:
     assert result.stdout.startswith("usage: rtig")
     for option in ("--host", "--port", "--fom-path", "--frame-timeout", "--client-budget", "--stall-timeout",
                    "--max-frame", "--max-datagram", "--save-dir", "--verbose", "--tls-cert", "--tls-key", "--tls-ca",
-                   "--busy-poll"):
+                   "--busy-poll", "--unix"):
         assert option in result.stdout
     assert "rtig listening" not in result.stdout
 

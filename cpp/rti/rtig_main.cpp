@@ -24,10 +24,10 @@ void on_signal(int) {
 int usage(int status) {
     std::fprintf(status ? stderr : stdout,
                  "usage: rtig [--host HOST] [--port PORT] [--unix PATH] [--fom-path DIR]... [--frame-timeout S]\n"
-                 "            [--client-budget B]\n"
-                 "            [--stall-timeout S] [--max-frame B] [--max-datagram B] [--secret-file FILE | --no-secret]\n"
-                 "            [--federation-secret NAME=FILE]... [--tls-cert FILE --tls-key FILE] [--save-dir DIR]\n"
-                 "            [--trace FILE] [--record FILE] [--busy-poll US] [--verbose]\n"
+                 "            [--client-budget B] [--stall-timeout S] [--max-frame B] [--max-datagram B]\n"
+                 "            [--secret-file FILE | --no-secret] [--federation-secret NAME=FILE]...\n"
+                 "            [--tls-cert FILE --tls-key FILE] [--save-dir DIR] [--trace FILE] [--record FILE]\n"
+                 "            [--busy-poll US] [--verbose]\n"
                  "       rtig [--secret-file FILE] [--tls | --tls-ca FILE] --status [HOST:PORT]\n"
                  "  --host HOST        address to listen on (default 127.0.0.1)\n"
                  "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"

@@ -446,8 +446,9 @@ private:
     template <class Pred>
     void await_answer(Clock::time_point deadline, Pred done, const char* what);
     void authenticate(Clock::time_point deadline);
-    // The TLS handshake right after connecting, bounded by `deadline` (client.cpp).
+    // fd_ connected to the gateway's Unix socket at `path` (rti/unix_socket.hpp; client.cpp).
     void connect_local(const std::string& path);
+    // The TLS handshake right after connecting, bounded by `deadline` (client.cpp).
     void start_tls(SSL_CTX* context, const std::string& host, Clock::time_point deadline);
     // One SSL_write / SSL_read under ssl_mu_: bytes moved, 0 when the socket would block (WANT_READ/WRITE),
     // -1 with `error` (and `eof` for the end of the stream).

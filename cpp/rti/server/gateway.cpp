@@ -298,7 +298,6 @@ Gateway::~Gateway() {
 
 void Gateway::close_descriptors() {
     for (auto& [fd, c] : connections_) ::close(fd);
-    connections_.clear();
     for (int* fd : {&listen_fd_, &datagram_fd_, &wake_fd_, &reserve_fd_}) {
         if (*fd >= 0) ::close(*fd);
         *fd = -1;

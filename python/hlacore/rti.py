@@ -440,7 +440,8 @@ def _resolve_tls(tls: Optional[bool | str | os.PathLike[str]]) -> tuple[bool, st
 class RTIAmbassador(_core.RTIAmbassadorBase):
     """A federate's connection to the RTI (HLA 1.3 RTIambassador).
 
-    ``RTIAmbassador(address=None)`` connects to ``address`` ("host:port"), else ``$HLACORE_RTIG``, else
+    ``RTIAmbassador(address=None)`` connects to ``address`` ("host:port", or "unix:PATH" for a gateway on this
+    host listening there, ``rtig --unix PATH``), else ``$HLACORE_RTIG``, else
     CERTI's ``$CERTI_HOST`` and ``$CERTI_TCP_PORT`` (as PyHLA scripts and tutorials set them; a missing one
     takes its default), else ``127.0.0.1:60400``; raises :class:`RTIinternalError` naming the address if nothing answers.
     One ambassador joins at most one federation execution at a time.

@@ -336,7 +336,7 @@ public:
     public:
         typedef FederateAmbassador* FederateAmbassadorPtr;
 
-        // Connects to the gateway named by $HLACORE_RTIG (HOST:PORT), else CERTI's $CERTI_HOST and
+        // Connects to the gateway named by $HLACORE_RTIG (HOST:PORT, or unix:PATH), else CERTI's $CERTI_HOST and
         // $CERTI_TCP_PORT, else 127.0.0.1:60400; RTIinternalError naming the address when nothing answers.
         RTIambassador();
         ~RTIambassador();

@@ -19,7 +19,7 @@ import hlacore
 import hlacore.rti as rti
 
 from conftest import (DATA, ROBOT_FED, Federate, RtigProcess, cpp_federate, joined_federation, rtig_executable,
-                      running_rtig, share_robot_location, tick_until)
+                      running_rtig, share_robot_location, tick_until, wait_for_log)
 from test_tls import check_federation, run_federation
 
 
@@ -149,3 +149,18 @@ def test_a_cpp_federate_connects_over_the_unix_socket(unix_rtig: RtigProcess) ->
                          timeout=120, stdin=subprocess.DEVNULL)
     assert run.returncode == 0, run.stdout + run.stderr
     assert run.stdout == "called 102 services\n"
+
+
+def test_both_ends_size_their_send_buffer_and_the_gateway_names_the_peer_by_pid(tmp_path: pathlib.Path,
+                                                                                socket_dir: pathlib.Path) -> None:
+    """The federate's send buffer as large as net.core.wmem_max allows (4 MiB at most; the gateway sizes its
+    end with the same call): the default held back streams of small updates (docs/performance.md). The
+    gateway's log names a Unix peer by its process."""
+    wanted = min(4 << 20, int(pathlib.Path("/proc/sys/net/core/wmem_max").read_text()))
+    with running_rtig(tmp_path, "--unix", str(socket_dir / "rtig.sock"), "--verbose") as server:
+        assert server.unix_address is not None
+        rtia = rti.RTIAmbassador(server.unix_address)
+        with socket.socket(fileno=os.dup(rtia.fileno())) as conn:
+            assert conn.family == socket.AF_UNIX
+            assert conn.getsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF) >= wanted  # the kernel doubles it
+        wait_for_log(server, rf"connection from unix socket, pid {os.getpid()}\b")

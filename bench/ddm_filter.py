@@ -19,15 +19,10 @@ from typing import Any, Optional
 import hlacore.rti as rti
 
 from .outputs import ROOT
-from .procs import bench_rtig
+from .procs import bench_rtig, cpu_seconds
 
 FED = str(ROOT / "tests" / "data" / "ddm.fed")
 PAYLOAD = b"x" * 64
-
-
-def cpu_seconds(pid: int) -> float:
-    fields = open(f"/proc/{pid}/stat").read().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
 class Counting(rti.FederateAmbassador):

@@ -73,19 +73,22 @@ class PySink(_SocketPeer):
         assert got == {"received": self.sent}, (got, self.sent)
 
 
-def cpp_rtt_ns(binary: str, size: int, count: int, relay: bool = False) -> list[int]:
+def cpp_rtt_ns(binary: str, size: int, count: int, relay: bool = False, unix: bool = False,
+               spin: bool = False) -> list[int]:
     """`count` round trips of `size` bytes timed by the C++ program, in nanoseconds; with `relay`, through a
-    third process that passes each message on (four hops, as through a gateway)."""
-    out = subprocess.run([binary, "rtt-relay" if relay else "rtt", str(size), str(count)], check=True,
-                         capture_output=True, text=True, timeout=120).stdout
+    third process that passes each message on (four hops, as through a gateway); with `unix`, over a Unix
+    socket pair instead of TCP loopback; with `spin` (not with `relay`), both ends polling their socket."""
+    options = [*(["--unix"] if unix else []), *(["--spin"] if spin else [])]
+    out = subprocess.run([binary, *options, "rtt-relay" if relay else "rtt", str(size), str(count)],
+                         check=True, capture_output=True, text=True, timeout=120).stdout
     samples: list[int] = json.loads(out)["rtt_ns"]
     return samples
 
 
-def cpp_stream_rate(binary: str, count: int, record: int = RECORD, mode: str = "stream") -> float:
+def cpp_stream_rate(binary: str, count: int, record: int = RECORD, mode: str = "stream", unix: bool = False) -> float:
     """Messages per second of `count` sends of `record` bytes, timed by the C++ program until all were read;
-    mode "relay": through a third process that forwards them (tcp_floor.cpp)."""
-    out = subprocess.run([binary, mode, str(record), str(count)], check=True, capture_output=True,
-                         text=True, timeout=120).stdout
+    mode "relay": through a third process that forwards them (tcp_floor.cpp); `unix`: over a Unix socket pair."""
+    out = subprocess.run([binary, *(["--unix"] if unix else []), mode, str(record), str(count)], check=True,
+                         capture_output=True, text=True, timeout=120).stdout
     result = json.loads(out)
     return float(result["count"] / result["seconds"])

@@ -27,6 +27,11 @@ messages per second (rates), keyed as the bench tests record them:
     monitor.grant.2.off / .on               grant.rtig.2 through an rtig without / with hlacore.monitor watching
     busy.KEY                                KEY (grant.pure.2, grant.rtig.2, update.ro.8, update.tso.8) with
                                             every process busy polling (rtig --busy-poll, $HLACORE_BUSY_POLL_US)
+    busy.floor.cpp                          the C++ TCP round trip of 8 B with both ends polling (tcp_floor --spin)
+    unix.KEY                                over a Unix socket (rtig --unix): KEY = busy.* as above, large.S,
+                                            grant.rtig.32 and cpu.32.*; unix.floor.cpp (C++ round trip 8 B),
+                                            unix.busy.floor.cpp (the same polling) and unix.large.floor.cpp.S (C++
+                                            stream) over a Unix socket pair
     rtis.floor.cpp, rtis.floor.stream.cpp   the three-RTI run's floors: C++ TCP round trip 8 B, stream rate
     rtis.R.lockstep.K, rtis.R.pingpong,     the three-RTI benchmark, R = hlacore, openrti, certi (the C++
     rtis.R.throughput                       program of bench/rtis) or python (hlacore's Python federates)
@@ -126,7 +131,9 @@ class Report:
                                           relay=True))
             update += [self._update_row(order, size) for order in ("ro", "tso")]
         sections.append(("Update latency: one-way = ping-pong round trip / 2", _present(update)))
-        busy = [self._busy_row("pure grant, 2 federates", "grant.pure.2", "grant.floor", 1.5),
+        busy = [self._polling_floor_row("raw TCP round trip 8 B, C++, both ends polling", "busy.floor.cpp",
+                                        "grant.floor.cpp"),
+                self._busy_row("pure grant, 2 federates", "grant.pure.2", "grant.floor", 1.5),
                 self._busy_row("lockstep with updates, 2 federates", "grant.rtig.2", "grant.floor", 2.5),
                 self._busy_row("receive order one-way 8 B", "update.ro.8", "update.floor", 2.5, size=8),
                 self._busy_row("TSO one-way 8 B", "update.tso.8", "update.floor", 3.5, size=8)]
@@ -150,8 +157,10 @@ class Report:
             large += [self._bandwidth_row(size, None), self._bandwidth_row(size, f"large.{size}")]
         sections.append(("Large updates 1 → 1, every one delivered: bandwidth against a raw TCP stream of the same "
                          "sizes", _present(large)))
-        sections.append(("CPU per step of the 32-federate lockstep with updates (/proc: user + system)",
+        sections.append(("CPU per step of the 32-federate lockstep with updates (each process's CPU clock: user + system)",
                          _present([self._cpu_row()])))
+        sections.append(("Same host over a Unix socket (opt-in: rtig --unix PATH, address unix:PATH); ratios to the "
+                         "TCP floors as above, the target column to the Unix socket's", _present(self._unix_rows())))
         fom = [self._fom_row(label, key, target) for label, key, target in (
             ("1000 classes × 10 attributes, flat: `_core.parse_fed`", "fom.flat", 0.020),
             ("same, 3-level tree (inherited attributes): `_core.parse_fed`", "fom.tree", 0.020),
@@ -241,21 +250,70 @@ class Report:
                    _us(statistics.median(values) / 2), _us(p99(values) / 2),
                    self._ratio(key, f"update.floor.py.{size}"), self._ratio(key, f"update.floor.cpp.{size}"), target)
 
-    def _busy_row(self, figure: str, key: str, floor: str, limit: float, size: Optional[int] = None) -> Optional[Row]:
-        """`key` with busy polling (busy.KEY), with issue 20's target for it and its ratio to the same loop
-        without; with `size`, a one-way figure: half the round trip, the floor's too."""
-        values = self.samples.get(f"busy.{key}")
+    def _busy_row(self, figure: str, key: str, floor: str, limit: float, size: Optional[int] = None,
+                  prefix: str = "") -> Optional[Row]:
+        """`key` with busy polling (PREFIXbusy.KEY): its ratios to this run's sleeping floors (the columns), and
+        issue 20's target against the floor of processes that do not sleep either, the C++ round trip with both
+        ends polling (PREFIXbusy.floor.cpp, 8 B); then its ratio to the same loop without polling, or with
+        `prefix` "unix." to the same over TCP. With `size`, a one-way figure: half the round trip, the floors' too."""
+        values = self.samples.get(f"{prefix}busy.{key}")
         if not values:
             return None
         suffix, half = (f".{size}", 0.5) if size is not None else ("", 1.0)
-        cpp = self.median(f"{floor}.cpp{suffix}")
+        polling = self.median(f"{prefix}busy.floor.cpp")
         median = statistics.median(values)
-        target = _meets(median / cpp if cpp else None, limit, f"≤ {limit}× C++ {'one-way' if size else 'round trip'}")
-        without = self._ratio(f"busy.{key}", key)
-        if target and without != "–":
-            target += f"; {without} the time without"
-        return Row(figure, _us(median * half), _us(p99(values) * half), self._ratio(f"busy.{key}", f"{floor}.py{suffix}"),
-                   self._ratio(f"busy.{key}", f"{floor}.cpp{suffix}"), target)
+        what = f"≤ {limit}× the polling C++ {'one-way' if size else 'round trip'}{' over the Unix socket' if prefix else ''}"
+        target = _meets(median / polling if polling else None, limit, what)
+        other, name = (f"busy.{key}", "the time over TCP") if prefix else (key, "the time without")
+        compared = self._ratio(f"{prefix}busy.{key}", other)
+        if target and compared != "–":
+            target += f"; {compared} {name}"
+        return Row(figure, _us(median * half), _us(p99(values) * half),
+                   self._ratio(f"{prefix}busy.{key}", f"{floor}.py{suffix}"),
+                   self._ratio(f"{prefix}busy.{key}", f"{floor}.cpp{suffix}"), target)
+
+    def _polling_floor_row(self, figure: str, key: str, sleeping: str) -> Optional[Row]:
+        """A C++ round trip with both ends polling, beside the sleeping one of the same socket."""
+        values = self.samples.get(key)
+        if not values:
+            return None
+        return Row(figure, _us(statistics.median(values)), _us(p99(values)), "",
+                   f"{self._ratio(key, sleeping)} the sleeping one", "")
+
+    def _unix_rows(self) -> list[Optional[Row]]:
+        """The figures over a Unix socket: each against the TCP floors (the columns), the Unix socket's floor
+        and the same figure over TCP (the target column)."""
+        rows: list[Optional[Row]] = []
+        unix_rtt = self.samples.get("unix.floor.cpp")
+        if unix_rtt:
+            rows.append(Row("raw round trip 8 B, C++ over a Unix socket", _us(statistics.median(unix_rtt)), _us(p99(unix_rtt)),
+                            "", f"{self._ratio('unix.floor.cpp', 'grant.floor.cpp')} TCP's", ""))
+        rows.append(self._polling_floor_row("raw round trip 8 B, C++ over a Unix socket, both ends polling",
+                                            "unix.busy.floor.cpp", "unix.floor.cpp"))
+        rows += [self._busy_row("pure grant, 2 federates, busy polling", "grant.pure.2", "grant.floor", 1.5, prefix="unix."),
+                 self._busy_row("lockstep with updates, 2 federates, busy polling", "grant.rtig.2", "grant.floor", 2.5,
+                                prefix="unix."),
+                 self._busy_row("receive order one-way 8 B, busy polling", "update.ro.8", "update.floor", 2.5, 8,
+                                prefix="unix."),
+                 self._busy_row("TSO one-way 8 B, busy polling", "update.tso.8", "update.floor", 3.5, 8, prefix="unix.")]
+        for size in LARGE_SIZES:
+            floor = self.median(f"unix.large.floor.cpp.{size}")
+            if floor is not None:
+                rows.append(Row(f"raw stream of {size >> 20} MiB records, C++ over a Unix socket", _mbps(floor), "", "",
+                                f"{self._ratio(f'unix.large.floor.cpp.{size}', f'large.floor.cpp.{size}')} TCP's", ""))
+            rate = self.median(f"unix.large.{size}")
+            if rate is None:
+                continue
+            target = f"≥ 50 % of the Unix socket's C++ floor: {'met' if floor and rate >= floor / 2 else 'missed'}"
+            if floor:
+                target += f" ({rate / floor:.2f}×)"
+            over_tcp = self._ratio(f"unix.large.{size}", f"large.{size}")
+            rows.append(Row(f"{size >> 20} MiB updates", _mbps(rate), f"slowest round {_mbps(min(self.samples[f'unix.large.{size}']))}",
+                            self._ratio(f"unix.large.{size}", f"large.floor.py.{size}"),
+                            self._ratio(f"unix.large.{size}", f"large.floor.cpp.{size}"),
+                            target + (f"; {over_tcp} the bandwidth over TCP" if over_tcp != "–" else "")))
+        rows.append(self._cpu_row("unix."))
+        return rows
 
     def _rate_row(self, figure: str, key: str, target: str, subscribers: int = 1) -> Optional[Row]:
         """A rate row: the median rate, and the slowest round in the p99 column."""
@@ -292,15 +350,20 @@ class Report:
         return Row(f"{size >> 20} MiB updates", _mbps(rate), f"slowest round {_mbps(min(self.samples[key]))}",
                    self._ratio(key, f"large.floor.py.{size}"), self._ratio(key, f"large.floor.cpp.{size}"), target)
 
-    def _cpu_row(self) -> Optional[Row]:
-        rtig, federate = self.median("cpu.32.rtig"), self.median("cpu.32.federate")
-        step = self.median("grant.rtig.32")
+    def _cpu_row(self, prefix: str = "") -> Optional[Row]:
+        """The 32-federate lockstep's CPU per step; `prefix` "unix.": over the Unix socket, against TCP's."""
+        rtig, federate = self.median(f"{prefix}cpu.32.rtig"), self.median(f"{prefix}cpu.32.federate")
+        step = self.median(f"{prefix}grant.rtig.32")
         if rtig is None or federate is None:
             return None
         whole = rtig + 32 * federate
         share = f" ({whole / step:.2f} cores busy)" if step else ""
-        return Row("rtig / each Python federate", f"{_us(rtig)} / {_us(federate)}", "", "", "",
-                   f"{_us(whole / 32)} per federate-step in all{share}")
+        target = f"{_us(whole / 32)} per federate-step in all{share}"
+        tcp_rtig, tcp_federate = self.median("cpu.32.rtig"), self.median("cpu.32.federate")
+        if prefix and tcp_rtig is not None and tcp_federate is not None:
+            target += f"; {whole / (tcp_rtig + 32 * tcp_federate):.2f}× that over TCP"
+        figure = "32-federate lockstep with updates, CPU per step: " if prefix else ""
+        return Row(f"{figure}rtig / each Python federate", f"{_us(rtig)} / {_us(federate)}", "", "", "", target)
 
     def _world_row(self, robots: int) -> Optional[Row]:
         """No floor: the world runs in one process without the RTI."""
@@ -401,6 +464,10 @@ def expected_keys() -> list[str]:
     keys += [f"large.{kind}{size}" for size in LARGE_SIZES for kind in ("", "floor.py.", "floor.cpp.", "floor.relay.")]
     keys += ["cpu.32.rtig", "cpu.32.federate"]
     keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
+    keys += [f"unix.busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
+    keys += [f"unix.{kind}{size}" for size in LARGE_SIZES for kind in ("large.", "large.floor.cpp.")]
+    keys += ["busy.floor.cpp", "unix.floor.cpp", "unix.busy.floor.cpp", "unix.grant.rtig.32", "unix.cpu.32.rtig",
+             "unix.cpu.32.federate"]
     return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
 
 

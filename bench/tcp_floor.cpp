@@ -1,5 +1,8 @@
 // The C++ floor of the benchmarks: raw TCP over loopback between two processes (this one and a forked
-// child), with TCP_NODELAY as hlacore's sockets have. Prints one JSON line.
+// child), with TCP_NODELAY as hlacore's sockets have; with --unix, a Unix socket pair (the floor of
+// federates on the gateway's host, rtig --unix); with --spin (rtt only), both ends poll instead of sleeping
+// in recv (the floor of busy-polling processes: no wake-up, so not bimodal as the sleeping round trip is
+// between one core and two). Prints one JSON line.
 //
 //   tcp_floor rtt SIZE COUNT       COUNT round trips of SIZE bytes (after 200 unmeasured):
 //                                  {"rtt_ns": [each round trip in ns, in order]}
@@ -18,6 +21,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -39,13 +43,16 @@ void nodelay(int fd) {
     if (setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one) != 0) die("setsockopt");
 }
 
+// --spin: every read polls (MSG_DONTWAIT in a loop) instead of sleeping, as busy-polling processes do.
+int read_flags = 0;
+
 // Reads exactly n bytes; false on EOF.
 bool read_exact(int fd, char* p, std::size_t n) {
     while (n > 0) {
-        ssize_t r = recv(fd, p, n, 0);
+        ssize_t r = recv(fd, p, n, read_flags);
         if (r == 0) return false;
         if (r < 0) {
-            if (errno == EINTR) continue;
+            if (errno == EINTR || errno == EAGAIN) continue;
             die("recv");
         }
         p += r;
@@ -66,38 +73,53 @@ void write_all(int fd, const char* p, std::size_t n) {
     }
 }
 
-int listen_loopback(sockaddr_in& addr) {
+// A connected pair of stream sockets, one end for each of two processes: over TCP loopback (TCP_NODELAY, as
+// hlacore's sockets have) or, with --unix, a Unix socket pair (4 MiB send buffers, as hlacore's Unix socket
+// ends have: the default 208 KiB would throttle the stream modes).
+struct Link {
+    int near = -1;  // the end of the process that connects (the parent, or the relay towards the child)
+    int far = -1;   // the end of the process that accepts
+};
+
+Link make_link(bool unix_socket) {
+    Link link;
+    if (unix_socket) {
+        int ends[2];
+        if (socketpair(AF_UNIX, SOCK_STREAM, 0, ends) != 0) die("socketpair");
+        const int size = 4 << 20;
+        for (int fd : ends)
+            if (setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &size, sizeof size) != 0) die("setsockopt");
+        link.near = ends[0];
+        link.far = ends[1];
+        return link;
+    }
     int listener = socket(AF_INET, SOCK_STREAM, 0);
-    addr = sockaddr_in{};
+    sockaddr_in addr{};
     addr.sin_family = AF_INET;
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     socklen_t len = sizeof addr;
     if (bind(listener, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0 || listen(listener, 1) != 0 ||
         getsockname(listener, reinterpret_cast<sockaddr*>(&addr), &len) != 0)
         die("listen");
-    return listener;
-}
-
-int connect_to(const sockaddr_in& addr) {
-    int fd = socket(AF_INET, SOCK_STREAM, 0);
-    if (connect(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) die("connect");
-    nodelay(fd);
-    return fd;
-}
-
-int accept_one(int listener) {
-    int fd = accept(listener, nullptr, nullptr);
-    if (fd < 0) die("accept");
+    link.near = socket(AF_INET, SOCK_STREAM, 0);  // the handshake completes in the backlog: no second thread
+    if (connect(link.near, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) die("connect");
+    link.far = accept(listener, nullptr, nullptr);
+    if (link.far < 0) die("accept");
     close(listener);
-    nodelay(fd);
-    return fd;
+    for (int fd : {link.near, link.far}) nodelay(fd);
+    return link;
+}
+
+// In a forked process: closes every end of `links` but `keep`, so each end's EOF reaches its peer.
+void keep_only(const std::vector<Link>& links, std::initializer_list<int> keep) {
+    for (const Link& link : links)
+        for (int fd : {link.near, link.far})
+            if (std::find(keep.begin(), keep.end(), fd) == keep.end()) close(fd);
 }
 
 // The relay: forwards `total` bytes from the parent to the sink, then the sink's answer back, then waits for
 // the parent's EOF.
-[[noreturn]] void relay(int listener, const sockaddr_in& sink, std::size_t total) {
-    int from = accept_one(listener);
-    int to = connect_to(sink);
+[[noreturn]] void relay(int from, int to, std::size_t total) {
     std::vector<char> buf(1 << 20);
     for (std::size_t moved = 0; moved < total;) {
         ssize_t r = recv(from, buf.data(), std::min(buf.size(), total - moved), 0);
@@ -117,9 +139,7 @@ int accept_one(int listener) {
 
 // The round-trip relay: passes each SIZE-byte message from the parent to the echo and its echo back, until
 // the parent's EOF.
-[[noreturn]] void rtt_relay(int listener, const sockaddr_in& echo, std::size_t size) {
-    int from = accept_one(listener);
-    int to = connect_to(echo);
+[[noreturn]] void rtt_relay(int from, int to, std::size_t size) {
     std::vector<char> buf(size);
     while (read_exact(from, buf.data(), size)) {
         write_all(to, buf.data(), size);
@@ -131,9 +151,8 @@ int accept_one(int listener) {
     std::exit(0);
 }
 
-// The child: accept one connection, then echo SIZE-byte messages or count RECORD-byte records.
-[[noreturn]] void child(int listener, bool stream, std::size_t size, long count) {
-    int fd = accept_one(listener);
+// The child: echo SIZE-byte messages or count RECORD-byte records.
+[[noreturn]] void child(int fd, bool stream, std::size_t size, long count) {
     std::vector<char> buf(stream ? 1 << 20 : size);
     if (!stream) {
         while (read_exact(fd, buf.data(), size)) write_all(fd, buf.data(), size);
@@ -155,36 +174,55 @@ int accept_one(int listener) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    bool unix_socket = false;
+    for (; argc > 1 && argv[1][0] == '-'; ++argv, --argc) {
+        if (std::string(argv[1]) == "--unix") {
+            unix_socket = true;
+        } else if (std::string(argv[1]) == "--spin") {
+            read_flags = MSG_DONTWAIT;
+        } else {
+            argc = 0;  // a usage error below
+            break;
+        }
+    }
     const std::string mode = argc == 4 ? argv[1] : "";
-    if (mode != "rtt" && mode != "rtt-relay" && mode != "stream" && mode != "relay") {
-        std::fprintf(stderr, "usage: tcp_floor rtt|rtt-relay SIZE COUNT | tcp_floor stream|relay RECORD COUNT\n");
+    if ((mode != "rtt" && mode != "rtt-relay" && mode != "stream" && mode != "relay") ||
+        (read_flags != 0 && mode != "rtt")) {  // three polling processes on two cores starve each other
+        std::fprintf(stderr, "usage: tcp_floor [--unix] [--spin] rtt SIZE COUNT | tcp_floor [--unix] rtt-relay|stream|relay SIZE COUNT\n");
         return 2;
     }
     const bool stream = mode == "stream" || mode == "relay";
+    const bool relayed = mode == "relay" || mode == "rtt-relay";
     const std::size_t size = std::strtoul(argv[2], nullptr, 10);
     const long count = std::strtol(argv[3], nullptr, 10);
     if (size == 0 || count <= 0) return 2;
 
-    sockaddr_in addr{};
-    int listener = listen_loopback(addr);
+    // parent -> child, or parent -> relay -> child
+    std::vector<Link> links{make_link(unix_socket)};
+    if (relayed) links.push_back(make_link(unix_socket));
     std::vector<pid_t> children;
+    const int child_end = links.back().far;
     pid_t pid = fork();
     if (pid < 0) die("fork");
-    if (pid == 0) child(listener, stream, size, count);
-    close(listener);
+    if (pid == 0) {
+        keep_only(links, {child_end});
+        child(child_end, stream, size, count);
+    }
     children.push_back(pid);
-    if (mode == "relay" || mode == "rtt-relay") {
-        const sockaddr_in sink = addr;
-        listener = listen_loopback(addr);
+    if (relayed) {
+        const int from = links[0].far, to = links[1].near;
         pid = fork();
         if (pid < 0) die("fork");
-        if (pid == 0 && stream) relay(listener, sink, size * static_cast<std::size_t>(count));
-        if (pid == 0) rtt_relay(listener, sink, size);
-        close(listener);
+        if (pid == 0) {
+            keep_only(links, {from, to});
+            if (stream) relay(from, to, size * static_cast<std::size_t>(count));
+            rtt_relay(from, to, size);
+        }
         children.push_back(pid);
     }
+    const int fd = links[0].near;
+    keep_only(links, {fd});
 
-    int fd = connect_to(addr);
     std::vector<char> buf(size, 'x');
     std::string out;
     if (!stream) {

@@ -1,6 +1,7 @@
 """Busy polling (opt-in): the 2-federate grant and lockstep and the 8 B update ping-pong with every process
 polling 50 µs before it sleeps (`rtig --busy-poll 50`, $HLACORE_BUSY_POLL_US=50 for the federates), beside the
-same loops without it (test_grant.py, test_update.py) and the floors of the same run."""
+same loops without it (test_grant.py, test_update.py), the floors of the same run and the C++ round trip with
+both ends polling (the floor of processes that do not sleep)."""
 
 from __future__ import annotations
 
@@ -10,9 +11,11 @@ import pytest
 
 from hlacore.processes import Rtig
 
+from .floor import cpp_rtt_ns
 from .pingpong import PingPong
 from .procs import bench_rtig
-from .test_grant import run_lockstep
+from .report import Report
+from .test_grant import FLOOR_ROUNDS, run_lockstep
 from .test_update import ROUNDS as UPDATE_ROUNDS
 
 BUSY_POLL_US = "50"
@@ -26,6 +29,10 @@ def busy_rtig(monkeypatch: pytest.MonkeyPatch) -> Iterator[Rtig]:
     monkeypatch.setenv("HLACORE_BUSY_POLL_US", BUSY_POLL_US)
     with bench_rtig("--busy-poll", BUSY_POLL_US) as server:
         yield server
+
+
+def test_floor_cpp_rtt_polling(report: Report, tcp_floor: str) -> None:
+    report.add("busy.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, spin=True)])
 
 
 @pytest.mark.parametrize("updates", [False, True], ids=["pure", "updates"])

@@ -34,9 +34,9 @@ def test_floor_cpp_rtt(report: Report, tcp_floor: str) -> None:
 
 
 def run_lockstep(measure, address: str, federates: int, key: str, updates: bool = True, extend: bool = False,
-                 rounds: Optional[int] = None, cpu: Optional[tuple[Report, int]] = None) -> None:
+                 rounds: Optional[int] = None, cpu: Optional[tuple[Report, int]] = None, cpu_prefix: str = "") -> None:
     """`cpu` = (report, the rtig's pid): also record the CPU time per step of the rtig and of each peer
-    federate process (cpu.K.rtig, cpu.K.federate: their mean)."""
+    federate process (PREFIXcpu.K.rtig, PREFIXcpu.K.federate: their mean)."""
     rounds = rounds or ROUNDS[federates]
     federation = Lockstep(address, federates, max_steps=rounds + rounds // 10 + 10,  # warm-up, stop, margin
                           updates=updates)
@@ -47,8 +47,8 @@ def run_lockstep(measure, address: str, federates: int, key: str, updates: bool 
         if cpu:
             steps = federation.time - steps
             per_step = [(cpu_seconds(pid) - before) / steps for pid, before in zip(pids, spent)]
-            cpu[0].add(f"cpu.{federates}.rtig", per_step[:1])
-            cpu[0].add(f"cpu.{federates}.federate", per_step[1:])
+            cpu[0].add(f"{cpu_prefix}cpu.{federates}.rtig", per_step[:1])
+            cpu[0].add(f"{cpu_prefix}cpu.{federates}.federate", per_step[1:])
         federation.finish()
     finally:
         federation.close()

@@ -1,0 +1,97 @@
+"""Federates on the gateway's host over a Unix socket (`rtig --unix PATH`, opt-in; docs/networking.md): the
+figures the socket changes most, beside the same loops over TCP in this run (test_busy_poll.py,
+test_large.py, test_grant.py) and against the C++ floors of both sockets (bench/tcp_floor.cpp --unix, and
+--spin for the busy-polling figures).
+
+- the 2-federate grant and lockstep and the 8 B update ping-pong with every process busy polling 50 µs,
+  where the sockets' own cost is what is left of a step;
+- 1 MiB and 16 MiB updates 1 → 1, where copies through the kernel are;
+- the CPU per step of the 32-federate lockstep."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from typing import Iterator
+
+import pytest
+
+from hlacore.processes import Rtig
+
+from .floor import cpp_rtt_ns, cpp_stream_rate
+from .pingpong import PingPong
+from .procs import bench_rtig
+from .report import LARGE_SIZES, Report
+from .test_busy_poll import BUSY_POLL_US
+from .test_grant import FLOOR_ROUNDS, ROUNDS, run_lockstep
+from .test_large import BURST, ROUNDS as LARGE_ROUNDS
+from .test_update import ROUNDS as UPDATE_ROUNDS
+from .throughput import Fanout
+
+pytestmark = pytest.mark.benchmark(group="same host over a Unix socket")
+
+
+def unix_rtig(*args: str) -> Iterator[Rtig]:
+    with tempfile.TemporaryDirectory(prefix="hlacore-bench-") as directory, \
+            bench_rtig("--unix", os.path.join(directory, "rtig.sock"), *args) as server:
+        assert server.unix_address is not None
+        yield server
+
+
+@pytest.fixture
+def rtig_unix() -> Iterator[Rtig]:
+    yield from unix_rtig()
+
+
+@pytest.fixture
+def busy_rtig_unix(monkeypatch: pytest.MonkeyPatch) -> Iterator[Rtig]:
+    """As test_busy_poll.busy_rtig: the rtig and every federate this test starts poll BUSY_POLL_US."""
+    monkeypatch.setenv("HLACORE_BUSY_POLL_US", BUSY_POLL_US)
+    yield from unix_rtig("--busy-poll", BUSY_POLL_US)
+
+
+@pytest.mark.parametrize("spin", [False, True], ids=["sleeping", "polling"])
+def test_floor_cpp_rtt_unix(report: Report, tcp_floor: str, spin: bool) -> None:
+    report.add(f"unix.{'busy.' if spin else ''}floor.cpp",
+               [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, unix=True, spin=spin)])
+
+
+@pytest.mark.parametrize("size", LARGE_SIZES)
+def test_floor_cpp_stream_unix(report: Report, tcp_floor: str, size: int) -> None:
+    report.add(f"unix.large.floor.cpp.{size}",
+               [cpp_stream_rate(tcp_floor, BURST[size], size, unix=True) * size for _ in range(LARGE_ROUNDS)])
+
+
+@pytest.mark.parametrize("updates", [False, True], ids=["pure", "updates"])
+def test_lockstep_busy_unix(measure, busy_rtig_unix: Rtig, updates: bool) -> None:
+    assert busy_rtig_unix.unix_address is not None
+    run_lockstep(measure, busy_rtig_unix.unix_address, 2, f"unix.busy.grant.{'rtig' if updates else 'pure'}.2",
+                 updates=updates)
+
+
+@pytest.mark.parametrize("order", ["ro", "tso"])
+def test_update_ping_pong_busy_unix(measure, busy_rtig_unix: Rtig, order: str) -> None:
+    assert busy_rtig_unix.unix_address is not None
+    pingpong = PingPong(busy_rtig_unix.unix_address, order, 8)
+    try:
+        measure(f"unix.busy.update.{order}.8", pingpong.round_trip, UPDATE_ROUNDS[8])
+        pingpong.finish()
+    finally:
+        pingpong.close()
+
+
+@pytest.mark.parametrize("size", LARGE_SIZES)
+def test_large_updates_unix(measure, rtig_unix: Rtig, size: int) -> None:
+    assert rtig_unix.unix_address is not None
+    fanout = Fanout(rtig_unix.unix_address, 1, BURST[size], payload=bytes(size))
+    try:
+        measure(f"unix.large.{size}", fanout.burst, LARGE_ROUNDS, per_round=BURST[size] * size)
+        fanout.finish()
+    finally:
+        fanout.close()
+
+
+def test_lockstep_32_unix(measure, report: Report, rtig_unix: Rtig) -> None:
+    assert rtig_unix.unix_address is not None
+    run_lockstep(measure, rtig_unix.unix_address, 32, "unix.grant.rtig.32", rounds=ROUNDS[32],
+                 cpu=(report, rtig_unix.proc.pid), cpu_prefix="unix.")

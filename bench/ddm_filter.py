@@ -12,7 +12,6 @@ bench report.
 from __future__ import annotations
 
 import argparse
-import os
 import time
 from typing import Any, Optional
 

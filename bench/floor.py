@@ -77,7 +77,8 @@ def cpp_rtt_ns(binary: str, size: int, count: int, relay: bool = False, unix: bo
                spin: bool = False) -> list[int]:
     """`count` round trips of `size` bytes timed by the C++ program, in nanoseconds; with `relay`, through a
     third process that passes each message on (four hops, as through a gateway); with `unix`, over a Unix
-    socket pair instead of TCP loopback; with `spin` (not with `relay`), both ends polling their socket."""
+    socket pair instead of TCP loopback; with `spin`, every process polling its socket (yielding between tries,
+    as hlacore's busy polling does) instead of sleeping in recv."""
     options = [*(["--unix"] if unix else []), *(["--spin"] if spin else [])]
     out = subprocess.run([binary, *options, "rtt-relay" if relay else "rtt", str(size), str(count)],
                          check=True, capture_output=True, text=True, timeout=120).stdout

@@ -27,11 +27,12 @@ messages per second (rates), keyed as the bench tests record them:
     monitor.grant.2.off / .on               grant.rtig.2 through an rtig without / with hlacore.monitor watching
     busy.KEY                                KEY (grant.pure.2, grant.rtig.2, update.ro.8, update.tso.8) with
                                             every process busy polling (rtig --busy-poll, $HLACORE_BUSY_POLL_US)
-    busy.floor.cpp                          the C++ TCP round trip of 8 B with both ends polling (tcp_floor --spin)
+    busy.floor.cpp, busy.floor.relay        the C++ TCP round trip of 8 B with every process polling (tcp_floor
+                                            --spin), directly and through a relay
     unix.KEY                                over a Unix socket (rtig --unix): KEY = busy.* as above, large.S,
                                             grant.rtig.32 and cpu.32.*; unix.floor.cpp (C++ round trip 8 B),
-                                            unix.busy.floor.cpp (the same polling) and unix.large.floor.cpp.S (C++
-                                            stream) over a Unix socket pair
+                                            unix.busy.floor.cpp / .relay (the same polling, directly and through a
+                                            relay) and unix.large.floor.cpp.S (C++ stream) over Unix socket pairs
     rtis.floor.cpp, rtis.floor.stream.cpp   the three-RTI run's floors: C++ TCP round trip 8 B, stream rate
     rtis.R.lockstep.K, rtis.R.pingpong,     the three-RTI benchmark, R = hlacore, openrti, certi (the C++
     rtis.R.throughput                       program of bench/rtis) or python (hlacore's Python federates)
@@ -133,6 +134,7 @@ class Report:
         sections.append(("Update latency: one-way = ping-pong round trip / 2", _present(update)))
         busy = [self._polling_floor_row("raw TCP round trip 8 B, C++, both ends polling", "busy.floor.cpp",
                                         "grant.floor.cpp"),
+                self._polling_floor_row("the same through a polling relay", "busy.floor.relay", "update.floor.relay.8"),
                 self._busy_row("pure grant, 2 federates", "grant.pure.2", "grant.floor", 1.5),
                 self._busy_row("lockstep with updates, 2 federates", "grant.rtig.2", "grant.floor", 2.5),
                 self._busy_row("receive order one-way 8 B", "update.ro.8", "update.floor", 2.5, size=8),
@@ -254,8 +256,9 @@ class Report:
                   prefix: str = "") -> Optional[Row]:
         """`key` with busy polling (PREFIXbusy.KEY): its ratios to this run's sleeping floors (the columns), and
         issue 20's target against the floor of processes that do not sleep either, the C++ round trip with both
-        ends polling (PREFIXbusy.floor.cpp, 8 B); then its ratio to the same loop without polling, or with
-        `prefix` "unix." to the same over TCP. With `size`, a one-way figure: half the round trip, the floors' too."""
+        ends polling (PREFIXbusy.floor.cpp, 8 B); then its ratio to the same through a polling relay (the round
+        trip, both ways), and to the same loop without polling, or with `prefix` "unix." to the same over TCP.
+        With `size`, a one-way figure: half the round trip, the floors' too."""
         values = self.samples.get(f"{prefix}busy.{key}")
         if not values:
             return None
@@ -264,6 +267,9 @@ class Report:
         median = statistics.median(values)
         what = f"≤ {limit}× the polling C++ {'one-way' if size else 'round trip'}{' over the Unix socket' if prefix else ''}"
         target = _meets(median / polling if polling else None, limit, what)
+        relay = self._ratio(f"{prefix}busy.{key}", f"{prefix}busy.floor.relay")
+        if target and relay != "–":
+            target += f"; {relay} the polling relay"
         other, name = (f"busy.{key}", "the time over TCP") if prefix else (key, "the time without")
         compared = self._ratio(f"{prefix}busy.{key}", other)
         if target and compared != "–":
@@ -272,13 +278,13 @@ class Report:
                    self._ratio(f"{prefix}busy.{key}", f"{floor}.py{suffix}"),
                    self._ratio(f"{prefix}busy.{key}", f"{floor}.cpp{suffix}"), target)
 
-    def _polling_floor_row(self, figure: str, key: str, sleeping: str) -> Optional[Row]:
-        """A C++ round trip with both ends polling, beside the sleeping one of the same socket."""
+    def _polling_floor_row(self, figure: str, key: str, sleeping: Optional[str]) -> Optional[Row]:
+        """A C++ round trip with every process polling, beside the sleeping one of the same socket if measured."""
         values = self.samples.get(key)
         if not values:
             return None
         return Row(figure, _us(statistics.median(values)), _us(p99(values)), "",
-                   f"{self._ratio(key, sleeping)} the sleeping one", "")
+                   f"{self._ratio(key, sleeping)} the sleeping one" if sleeping else "", "")
 
     def _unix_rows(self) -> list[Optional[Row]]:
         """The figures over a Unix socket: each against the TCP floors (the columns), the Unix socket's floor
@@ -290,6 +296,7 @@ class Report:
                             "", f"{self._ratio('unix.floor.cpp', 'grant.floor.cpp')} TCP's", ""))
         rows.append(self._polling_floor_row("raw round trip 8 B, C++ over a Unix socket, both ends polling",
                                             "unix.busy.floor.cpp", "unix.floor.cpp"))
+        rows.append(self._polling_floor_row("the same through a polling relay", "unix.busy.floor.relay", None))
         rows += [self._busy_row("pure grant, 2 federates, busy polling", "grant.pure.2", "grant.floor", 1.5, prefix="unix."),
                  self._busy_row("lockstep with updates, 2 federates, busy polling", "grant.rtig.2", "grant.floor", 2.5,
                                 prefix="unix."),
@@ -466,8 +473,8 @@ def expected_keys() -> list[str]:
     keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
     keys += [f"unix.busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
     keys += [f"unix.{kind}{size}" for size in LARGE_SIZES for kind in ("large.", "large.floor.cpp.")]
-    keys += ["busy.floor.cpp", "unix.floor.cpp", "unix.busy.floor.cpp", "unix.grant.rtig.32", "unix.cpu.32.rtig",
-             "unix.cpu.32.federate"]
+    keys += ["busy.floor.cpp", "busy.floor.relay", "unix.floor.cpp", "unix.busy.floor.cpp", "unix.busy.floor.relay",
+             "unix.grant.rtig.32", "unix.cpu.32.rtig", "unix.cpu.32.federate"]
     return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
 
 

@@ -1,8 +1,8 @@
 // The C++ floor of the benchmarks: raw TCP over loopback between two processes (this one and a forked
 // child), with TCP_NODELAY as hlacore's sockets have; with --unix, a Unix socket pair (the floor of
-// federates on the gateway's host, rtig --unix); with --spin (rtt only), both ends poll instead of sleeping
-// in recv (the floor of busy-polling processes: no wake-up, so not bimodal as the sleeping round trip is
-// between one core and two). Prints one JSON line.
+// federates on the gateway's host, rtig --unix); with --spin (rtt, rtt-relay), every process polls instead
+// of sleeping in recv (the floor of busy-polling processes: no wake-up, so not bimodal as the sleeping round
+// trip is between one core and two). Prints one JSON line.
 //
 //   tcp_floor rtt SIZE COUNT       COUNT round trips of SIZE bytes (after 200 unmeasured):
 //                                  {"rtt_ns": [each round trip in ns, in order]}
@@ -17,15 +17,16 @@
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/socket.h>
+#include <sched.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <initializer_list>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,8 @@ void nodelay(int fd) {
     if (setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one) != 0) die("setsockopt");
 }
 
-// --spin: every read polls (MSG_DONTWAIT in a loop) instead of sleeping, as busy-polling processes do.
+// --spin: every read polls (MSG_DONTWAIT, yielding the core between tries) instead of sleeping, as hlacore's
+// busy polling does (cpp/rti/busy_poll.hpp).
 int read_flags = 0;
 
 // Reads exactly n bytes; false on EOF.
@@ -52,6 +54,7 @@ bool read_exact(int fd, char* p, std::size_t n) {
         ssize_t r = recv(fd, p, n, read_flags);
         if (r == 0) return false;
         if (r < 0) {
+            if (errno == EAGAIN) sched_yield();  // a third polling process may share this core
             if (errno == EINTR || errno == EAGAIN) continue;
             die("recv");
         }
@@ -77,8 +80,8 @@ void write_all(int fd, const char* p, std::size_t n) {
 // hlacore's sockets have) or, with --unix, a Unix socket pair (4 MiB send buffers, as hlacore's Unix socket
 // ends have: the default 208 KiB would throttle the stream modes).
 struct Link {
-    int near = -1;  // the end of the process that connects (the parent, or the relay towards the child)
-    int far = -1;   // the end of the process that accepts
+    int near = -1;  // the parent's end (on the second link of a relay, the relay's)
+    int far = -1;   // the other process's end
 };
 
 Link make_link(bool unix_socket) {
@@ -186,12 +189,12 @@ int main(int argc, char** argv) {
         }
     }
     const std::string mode = argc == 4 ? argv[1] : "";
-    if ((mode != "rtt" && mode != "rtt-relay" && mode != "stream" && mode != "relay") ||
-        (read_flags != 0 && mode != "rtt")) {  // three polling processes on two cores starve each other
-        std::fprintf(stderr, "usage: tcp_floor [--unix] [--spin] rtt SIZE COUNT | tcp_floor [--unix] rtt-relay|stream|relay SIZE COUNT\n");
+    const bool stream = mode == "stream" || mode == "relay";
+    if ((mode != "rtt" && mode != "rtt-relay" && !stream) ||
+        (read_flags != 0 && stream)) {
+        std::fprintf(stderr, "usage: tcp_floor [--unix] [--spin] rtt|rtt-relay SIZE COUNT | tcp_floor [--unix] stream|relay RECORD COUNT\n");
         return 2;
     }
-    const bool stream = mode == "stream" || mode == "relay";
     const bool relayed = mode == "relay" || mode == "rtt-relay";
     const std::size_t size = std::strtoul(argv[2], nullptr, 10);
     const long count = std::strtol(argv[3], nullptr, 10);

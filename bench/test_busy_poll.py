@@ -1,7 +1,7 @@
 """Busy polling (opt-in): the 2-federate grant and lockstep and the 8 B update ping-pong with every process
 polling 50 µs before it sleeps (`rtig --busy-poll 50`, $HLACORE_BUSY_POLL_US=50 for the federates), beside the
 same loops without it (test_grant.py, test_update.py), the floors of the same run and the C++ round trip with
-both ends polling (the floor of processes that do not sleep)."""
+every process polling, directly and through a relay (the floors of processes that do not sleep)."""
 
 from __future__ import annotations
 
@@ -31,8 +31,10 @@ def busy_rtig(monkeypatch: pytest.MonkeyPatch) -> Iterator[Rtig]:
         yield server
 
 
-def test_floor_cpp_rtt_polling(report: Report, tcp_floor: str) -> None:
-    report.add("busy.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, spin=True)])
+@pytest.mark.parametrize("relay", [False, True], ids=["direct", "relay"])
+def test_floor_cpp_rtt_polling(report: Report, tcp_floor: str, relay: bool) -> None:
+    report.add(f"busy.floor.{'relay' if relay else 'cpp'}",
+               [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, relay=relay, spin=True)])
 
 
 @pytest.mark.parametrize("updates", [False, True], ids=["pure", "updates"])
@@ -40,11 +42,16 @@ def test_lockstep_busy(measure, busy_rtig: Rtig, updates: bool) -> None:
     run_lockstep(measure, busy_rtig.address, 2, f"busy.grant.{'rtig' if updates else 'pure'}.2", updates=updates)
 
 
-@pytest.mark.parametrize("order", ["ro", "tso"])
-def test_update_ping_pong_busy(measure, busy_rtig: Rtig, order: str) -> None:
-    pingpong = PingPong(busy_rtig.address, order, 8)
+def run_ping_pong(measure, address: str, order: str, key: str) -> None:
+    """The 8 B update ping-pong of test_update.py through the gateway at `address`, timed under `key`."""
+    pingpong = PingPong(address, order, 8)
     try:
-        measure(f"busy.update.{order}.8", pingpong.round_trip, UPDATE_ROUNDS[8])
+        measure(key, pingpong.round_trip, UPDATE_ROUNDS[8])
         pingpong.finish()
     finally:
         pingpong.close()
+
+
+@pytest.mark.parametrize("order", ["ro", "tso"])
+def test_update_ping_pong_busy(measure, busy_rtig: Rtig, order: str) -> None:
+    run_ping_pong(measure, busy_rtig.address, order, f"busy.update.{order}.8")

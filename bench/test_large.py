@@ -37,11 +37,17 @@ def test_floor_cpp_relay(report: Report, tcp_floor: str, size: int) -> None:
                [cpp_stream_rate(tcp_floor, BURST[size], size, mode="relay") * size for _ in range(ROUNDS)])
 
 
-@pytest.mark.parametrize("size", LARGE_SIZES)
-def test_large_updates(measure, rtig, size: int) -> None:
-    fanout = Fanout(rtig.address, 1, BURST[size], payload=bytes(size))
+def run_large(measure, address: str, size: int, key: str) -> None:
+    """ROUNDS rounds of BURST[size] updates of `size` bytes 1 → 1 through the gateway at `address`, in bytes
+    per second under `key`."""
+    fanout = Fanout(address, 1, BURST[size], payload=bytes(size))
     try:
-        measure(f"large.{size}", fanout.burst, ROUNDS, per_round=BURST[size] * size)
+        measure(key, fanout.burst, ROUNDS, per_round=BURST[size] * size)
         fanout.finish()
     finally:
         fanout.close()
+
+
+@pytest.mark.parametrize("size", LARGE_SIZES)
+def test_large_updates(measure, rtig, size: int) -> None:
+    run_large(measure, rtig.address, size, f"large.{size}")

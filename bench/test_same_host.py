@@ -19,14 +19,11 @@ import pytest
 from hlacore.processes import Rtig
 
 from .floor import cpp_rtt_ns, cpp_stream_rate
-from .pingpong import PingPong
 from .procs import bench_rtig
 from .report import LARGE_SIZES, Report
-from .test_busy_poll import BUSY_POLL_US
+from .test_busy_poll import BUSY_POLL_US, run_ping_pong
 from .test_grant import FLOOR_ROUNDS, ROUNDS, run_lockstep
-from .test_large import BURST, ROUNDS as LARGE_ROUNDS
-from .test_update import ROUNDS as UPDATE_ROUNDS
-from .throughput import Fanout
+from .test_large import BURST, ROUNDS as LARGE_ROUNDS, run_large
 
 pytestmark = pytest.mark.benchmark(group="same host over a Unix socket")
 
@@ -50,10 +47,10 @@ def busy_rtig_unix(monkeypatch: pytest.MonkeyPatch) -> Iterator[Rtig]:
     yield from unix_rtig("--busy-poll", BUSY_POLL_US)
 
 
-@pytest.mark.parametrize("spin", [False, True], ids=["sleeping", "polling"])
-def test_floor_cpp_rtt_unix(report: Report, tcp_floor: str, spin: bool) -> None:
-    report.add(f"unix.{'busy.' if spin else ''}floor.cpp",
-               [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, unix=True, spin=spin)])
+@pytest.mark.parametrize("key, relay, spin", [("unix.floor.cpp", False, False), ("unix.busy.floor.cpp", False, True),
+                                              ("unix.busy.floor.relay", True, True)])
+def test_floor_cpp_rtt_unix(report: Report, tcp_floor: str, key: str, relay: bool, spin: bool) -> None:
+    report.add(key, [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, relay=relay, unix=True, spin=spin)])
 
 
 @pytest.mark.parametrize("size", LARGE_SIZES)
@@ -72,23 +69,13 @@ def test_lockstep_busy_unix(measure, busy_rtig_unix: Rtig, updates: bool) -> Non
 @pytest.mark.parametrize("order", ["ro", "tso"])
 def test_update_ping_pong_busy_unix(measure, busy_rtig_unix: Rtig, order: str) -> None:
     assert busy_rtig_unix.unix_address is not None
-    pingpong = PingPong(busy_rtig_unix.unix_address, order, 8)
-    try:
-        measure(f"unix.busy.update.{order}.8", pingpong.round_trip, UPDATE_ROUNDS[8])
-        pingpong.finish()
-    finally:
-        pingpong.close()
+    run_ping_pong(measure, busy_rtig_unix.unix_address, order, f"unix.busy.update.{order}.8")
 
 
 @pytest.mark.parametrize("size", LARGE_SIZES)
 def test_large_updates_unix(measure, rtig_unix: Rtig, size: int) -> None:
     assert rtig_unix.unix_address is not None
-    fanout = Fanout(rtig_unix.unix_address, 1, BURST[size], payload=bytes(size))
-    try:
-        measure(f"unix.large.{size}", fanout.burst, LARGE_ROUNDS, per_round=BURST[size] * size)
-        fanout.finish()
-    finally:
-        fanout.close()
+    run_large(measure, rtig_unix.unix_address, size, f"unix.large.{size}")
 
 
 def test_lockstep_32_unix(measure, report: Report, rtig_unix: Rtig) -> None:

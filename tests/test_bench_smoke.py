@@ -66,16 +66,15 @@ def test_cpp_floor_program() -> None:
 
 @pytest.mark.parametrize("relay", [False, True], ids=["direct", "relay"])
 def test_cpp_floor_program_over_a_unix_socket_pair(relay: bool) -> None:
-    """tcp_floor --unix: each mode over Unix socket pairs, and --spin's polling round trip over both sockets (an
+    """tcp_floor --unix: each mode over Unix socket pairs, and --spin's polling round trips over both sockets (an
     unknown option is a usage error, so neither is ignored)."""
     binary = tcp_floor_binary()
     samples = cpp_rtt_ns(binary, 64, 5, relay=relay, unix=True)
     assert len(samples) == 5 and all(ns > 0 for ns in samples)
     assert cpp_stream_rate(binary, 4, 1 << 20, mode="relay" if relay else "stream", unix=True) > 0
-    if not relay:
-        for unix in (False, True):
-            polled = cpp_rtt_ns(binary, 8, 5, unix=unix, spin=True)
-            assert len(polled) == 5 and all(ns > 0 for ns in polled)
+    for unix in (False, True):
+        polled = cpp_rtt_ns(binary, 8, 5, relay=relay, unix=unix, spin=True)
+        assert len(polled) == 5 and all(ns > 0 for ns in polled)
 
 
 @pytest.mark.parametrize("federates", [2, 3])
@@ -238,17 +237,18 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     assert "| 16 MiB updates | 0 MB/s | slowest round 0 MB/s | 1.00× | 1.00× | ≥ 50 % of the C++ floor: met (1.00× of the relay) |" in text
     assert "| rtig / each Python federate | 200.0 µs / 200.0 µs |" in text
     assert "| raw TCP round trip 8 B, C++, both ends polling | 200.0 µs | 300.0 µs |  | 1.00× the sleeping one |  |" in text
+    assert "| the same through a polling relay | 200.0 µs | 300.0 µs |  | 1.00× the sleeping one |  |" in text
     assert ("| pure grant, 2 federates | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 1.5× the polling C++ round trip: met "
-            "(1.00×); 1.00× the time without |") in text
+            "(1.00×); 1.00× the polling relay; 1.00× the time without |") in text
     assert ("| TSO one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 3.5× the polling C++ one-way: met (1.00×); "
-            "1.00× the time without |") in text
+            "1.00× the polling relay; 1.00× the time without |") in text
     assert "| raw round trip 8 B, C++ over a Unix socket | 200.0 µs | 300.0 µs |  | 1.00× TCP's |  |" in text
     assert ("| raw round trip 8 B, C++ over a Unix socket, both ends polling | 200.0 µs | 300.0 µs |  | 1.00× the "
             "sleeping one |  |") in text
     assert ("| pure grant, 2 federates, busy polling | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 1.5× the polling C++ "
-            "round trip over the Unix socket: met (1.00×); 1.00× the time over TCP |") in text
+            "round trip over the Unix socket: met (1.00×); 1.00× the polling relay; 1.00× the time over TCP |") in text
     assert ("| receive order one-way 8 B, busy polling | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× the polling C++ "
-            "one-way over the Unix socket: met (1.00×); 1.00× the time over TCP |") in text
+            "one-way over the Unix socket: met (1.00×); 1.00× the polling relay; 1.00× the time over TCP |") in text
     assert ("| 16 MiB updates | 0 MB/s | slowest round 0 MB/s | 1.00× | 1.00× | ≥ 50 % of the Unix socket's C++ floor: "
             "met (1.00×); 1.00× the bandwidth over TCP |") in text
     assert "| raw stream of 1 MiB records, C++ over a Unix socket | 0 MB/s |  |  | 1.00× TCP's |  |" in text

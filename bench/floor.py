@@ -73,14 +73,15 @@ class PySink(_SocketPeer):
         assert got == {"received": self.sent}, (got, self.sent)
 
 
-def cpp_rtt_ns(binary: str, size: int, count: int, relay: bool = False, unix: bool = False,
+def cpp_rtt_ns(binary: str, size: int, count: int, mode: str = "rtt", unix: bool = False,
                spin: bool = False) -> list[int]:
-    """`count` round trips of `size` bytes timed by the C++ program, in nanoseconds; with `relay`, through a
-    third process that passes each message on (four hops, as through a gateway); with `unix`, over a Unix
-    socket pair instead of TCP loopback; with `spin`, every process polling its socket (yielding between tries,
-    as hlacore's busy polling does) instead of sleeping in recv."""
+    """`count` round trips of `size` bytes timed by the C++ program, in nanoseconds. `mode` "rtt": to an echo;
+    "rtt-relay": through a third process that passes each message on (four hops, as through a gateway);
+    "barrier": to a server that answers this process and a second client once both have sent (as the rtig
+    grants two federates). `unix`: over Unix socket pairs instead of TCP loopback; `spin`: every process polls
+    its socket (yielding between tries, as hlacore's busy polling does) instead of sleeping in recv."""
     options = [*(["--unix"] if unix else []), *(["--spin"] if spin else [])]
-    out = subprocess.run([binary, *options, "rtt-relay" if relay else "rtt", str(size), str(count)],
+    out = subprocess.run([binary, *options, mode, str(size), str(count)],
                          check=True, capture_output=True, text=True, timeout=120).stdout
     samples: list[int] = json.loads(out)["rtt_ns"]
     return samples

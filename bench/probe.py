@@ -179,7 +179,7 @@ def timed_median_us(round_trip: Callable[[], None], rounds: int) -> float:
 def pingpong(size: int = 8, rounds: int = 3000, show_pids: bool = False) -> dict[str, Any]:
     binary = os.environ.get("HLACORE_TCP_FLOOR", "build/bench/tcp_floor")
     result = {"cpp_us": statistics.median(cpp_rtt_ns(binary, size, rounds)) / 1e3,
-              "cpp_relay_us": statistics.median(cpp_rtt_ns(binary, size, rounds, relay=True)) / 1e3}
+              "cpp_relay_us": statistics.median(cpp_rtt_ns(binary, size, rounds, "rtt-relay")) / 1e3}
     echo = PyEcho(size)
     try:
         timed_median_us(echo.round_trip, 200)  # warm-up

@@ -3,6 +3,7 @@ the Markdown table of docs/performance.md and as JSON. Samples are seconds (late
 messages per second (rates), keyed as the bench tests record them:
 
     grant.floor.py / grant.floor.cpp        raw TCP round trips of 8 B
+    grant.floor.barrier                     the C++ barrier of 8 B: a server answers two clients once both sent
     grant.pure.K                            TAR -> TAG steps of K federates, no updates (rtig)
     grant.rtig.K, grant.inprocess.2         lockstep steps of K federates (standalone / in-process gateway)
     update.floor.py.S / update.floor.cpp.S  raw TCP round trips of S bytes
@@ -27,12 +28,12 @@ messages per second (rates), keyed as the bench tests record them:
     monitor.grant.2.off / .on               grant.rtig.2 through an rtig without / with hlacore.monitor watching
     busy.KEY                                KEY (grant.pure.2, grant.rtig.2, update.ro.8, update.tso.8) with
                                             every process busy polling (rtig --busy-poll, $HLACORE_BUSY_POLL_US)
-    busy.floor.cpp, busy.floor.relay        the C++ TCP round trip of 8 B with every process polling (tcp_floor
-                                            --spin), directly and through a relay
+    busy.floor.cpp / .relay / .barrier      the C++ TCP round trip of 8 B with every process polling (tcp_floor
+                                            --spin): direct, through a relay, the barrier
     unix.KEY                                over a Unix socket (rtig --unix): KEY = busy.* as above, large.S,
                                             grant.rtig.32 and cpu.32.*; unix.floor.cpp (C++ round trip 8 B),
-                                            unix.busy.floor.cpp / .relay (the same polling, directly and through a
-                                            relay) and unix.large.floor.cpp.S (C++ stream) over Unix socket pairs
+                                            unix.busy.floor.cpp / .relay / .barrier (the same polling) and
+                                            unix.large.floor.cpp.S (C++ stream) over Unix socket pairs
     rtis.floor.cpp, rtis.floor.stream.cpp   the three-RTI run's floors: C++ TCP round trip 8 B, stream rate
     rtis.R.lockstep.K, rtis.R.pingpong,     the three-RTI benchmark, R = hlacore, openrti, certi (the C++
     rtis.R.throughput                       program of bench/rtis) or python (hlacore's Python federates)
@@ -112,8 +113,11 @@ class Report:
         cpp_rtt = self.median("grant.floor.cpp")
         pure = [
             self._floor_row("raw TCP round trip 8 B", "grant.floor"),
+            self._polling_floor_row("raw TCP barrier 8 B, C++: a server answers two clients once both have sent",
+                                    "grant.floor.barrier", None),
             *[self._latency_row(f"{k} federates, rtig", f"grant.pure.{k}", "grant.floor",
-                                _grant_target(k, self.median(f"grant.pure.{k}"), p2, cpp_rtt)) for k in FEDERATES],
+                                _grant_target(k, self.median(f"grant.pure.{k}"), p2, cpp_rtt,
+                                              self.median("grant.floor.barrier"))) for k in FEDERATES],
         ]
         sections.append(("Grant latency: one step of the federation, TAR t+1 and tick to TAG (no updates)",
                          _present(pure)))
@@ -135,6 +139,7 @@ class Report:
         busy = [self._polling_floor_row("raw TCP round trip 8 B, C++, both ends polling", "busy.floor.cpp",
                                         "grant.floor.cpp"),
                 self._polling_floor_row("the same through a polling relay", "busy.floor.relay", "update.floor.relay.8"),
+                self._polling_floor_row("the barrier of two clients, polling", "busy.floor.barrier", "grant.floor.barrier"),
                 self._busy_row("pure grant, 2 federates", "grant.pure.2", "grant.floor", 1.5),
                 self._busy_row("lockstep with updates, 2 federates", "grant.rtig.2", "grant.floor", 2.5),
                 self._busy_row("receive order one-way 8 B", "update.ro.8", "update.floor", 2.5, size=8),
@@ -256,9 +261,10 @@ class Report:
                   prefix: str = "") -> Optional[Row]:
         """`key` with busy polling (PREFIXbusy.KEY): its ratios to this run's sleeping floors (the columns), and
         issue 20's target against the floor of processes that do not sleep either, the C++ round trip with both
-        ends polling (PREFIXbusy.floor.cpp, 8 B); then its ratio to the same through a polling relay (the round
-        trip, both ways), and to the same loop without polling, or with `prefix` "unix." to the same over TCP.
-        With `size`, a one-way figure: half the round trip, the floors' too."""
+        ends polling (PREFIXbusy.floor.cpp, 8 B); then its ratio to the polling floor of its shape, the barrier of
+        two clients for a grant, the relay for an update's round trip, and to the same loop without polling, or
+        with `prefix` "unix." to the same over TCP. With `size`, a one-way figure: half the round trip, the
+        floors' too."""
         values = self.samples.get(f"{prefix}busy.{key}")
         if not values:
             return None
@@ -267,9 +273,10 @@ class Report:
         median = statistics.median(values)
         what = f"≤ {limit}× the polling C++ {'one-way' if size else 'round trip'}{' over the Unix socket' if prefix else ''}"
         target = _meets(median / polling if polling else None, limit, what)
-        relay = self._ratio(f"{prefix}busy.{key}", f"{prefix}busy.floor.relay")
-        if target and relay != "–":
-            target += f"; {relay} the polling relay"
+        routed, name = ("barrier", "the polling barrier") if size is None else ("relay", "the polling relay")
+        beside = self._ratio(f"{prefix}busy.{key}", f"{prefix}busy.floor.{routed}")
+        if target and beside != "–":
+            target += f"; {beside} {name}"
         other, name = (f"busy.{key}", "the time over TCP") if prefix else (key, "the time without")
         compared = self._ratio(f"{prefix}busy.{key}", other)
         if target and compared != "–":
@@ -297,6 +304,7 @@ class Report:
         rows.append(self._polling_floor_row("raw round trip 8 B, C++ over a Unix socket, both ends polling",
                                             "unix.busy.floor.cpp", "unix.floor.cpp"))
         rows.append(self._polling_floor_row("the same through a polling relay", "unix.busy.floor.relay", None))
+        rows.append(self._polling_floor_row("the barrier of two clients, polling", "unix.busy.floor.barrier", None))
         rows += [self._busy_row("pure grant, 2 federates, busy polling", "grant.pure.2", "grant.floor", 1.5, prefix="unix."),
                  self._busy_row("lockstep with updates, 2 federates, busy polling", "grant.rtig.2", "grant.floor", 2.5,
                                 prefix="unix."),
@@ -473,8 +481,9 @@ def expected_keys() -> list[str]:
     keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
     keys += [f"unix.busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
     keys += [f"unix.{kind}{size}" for size in LARGE_SIZES for kind in ("large.", "large.floor.cpp.")]
-    keys += ["busy.floor.cpp", "busy.floor.relay", "unix.floor.cpp", "unix.busy.floor.cpp", "unix.busy.floor.relay",
-             "unix.grant.rtig.32", "unix.cpu.32.rtig", "unix.cpu.32.federate"]
+    keys += ["grant.floor.barrier", "busy.floor.cpp", "busy.floor.relay", "busy.floor.barrier", "unix.floor.cpp",
+             "unix.busy.floor.cpp", "unix.busy.floor.relay", "unix.busy.floor.barrier", "unix.grant.rtig.32",
+             "unix.cpu.32.rtig", "unix.cpu.32.federate"]
     return keys + list(FOMS) + [f"world.robot_steps.{n}" for n in WORLD_ROBOTS]
 
 
@@ -485,11 +494,13 @@ def three_rtis_keys() -> list[str]:
     return keys
 
 
-def _grant_target(k: int, median: Optional[float], g2: Optional[float], cpp_rtt: Optional[float]) -> str:
+def _grant_target(k: int, median: Optional[float], g2: Optional[float], cpp_rtt: Optional[float],
+                  barrier: Optional[float] = None) -> str:
     if not median:
         return ""
     if k == 2:
-        return _meets(median / cpp_rtt if cpp_rtt else None, 2.0, "≤ 2.0× C++ RTT")
+        target = _meets(median / cpp_rtt if cpp_rtt else None, 2.0, "≤ 2.0× C++ RTT")
+        return target + (f"; {median / barrier:.2f}× the barrier" if target and barrier else "")
     if k == 32:
         return _meets(median / g2 if g2 else None, 4.0, "≤ 4× 2-federate figure")
     return f"{median / g2:.1f}× 2-federate figure" if g2 else ""

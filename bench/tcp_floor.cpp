@@ -1,6 +1,6 @@
 // The C++ floor of the benchmarks: raw TCP over loopback between two processes (this one and a forked
 // child), with TCP_NODELAY as hlacore's sockets have; with --unix, a Unix socket pair (the floor of
-// federates on the gateway's host, rtig --unix); with --spin (rtt, rtt-relay), every process polls instead
+// federates on the gateway's host, rtig --unix); with --spin (rtt, rtt-relay, barrier), every process polls instead
 // of sleeping in recv (the floor of busy-polling processes: no wake-up, so not bimodal as the sleeping round
 // trip is between one core and two). Prints one JSON line.
 //
@@ -8,6 +8,8 @@
 //                                  {"rtt_ns": [each round trip in ns, in order]}
 //   tcp_floor rtt-relay SIZE COUNT the same through a third process that passes each message on, both ways:
 //                                  four hops, as an update and its echo through a gateway take
+//   tcp_floor barrier SIZE COUNT   the same through a server that answers this process and a second client
+//                                  once both have sent, as the rtig grants two federates in lockstep
 //   tcp_floor stream RECORD COUNT  COUNT records of RECORD bytes, one send() each, until the child has
 //                                  counted them all and answered one byte: {"seconds": s, "count": COUNT}
 //   tcp_floor relay RECORD COUNT   the same through a third process that forwards every byte as it comes
@@ -154,6 +156,34 @@ void keep_only(const std::vector<Link>& links, std::initializer_list<int> keep) 
     std::exit(0);
 }
 
+// The barrier's server: waits for a SIZE-byte message from each of its two clients, then answers both (as the
+// rtig grants two federates once both have asked), until the parent's EOF.
+[[noreturn]] void barrier_server(int parent, int peer, std::size_t size) {
+    std::vector<char> buf(size);
+    while (read_exact(parent, buf.data(), size)) {
+        if (!read_exact(peer, buf.data(), size)) die("barrier: peer closed");
+        write_all(parent, buf.data(), size);
+        write_all(peer, buf.data(), size);
+    }
+    // The peer has asked once more: end its wait with an EOF, and read it to its own EOF before closing, as
+    // closing with its request unread would reset the connection under it.
+    shutdown(peer, SHUT_WR);
+    while (recv(peer, buf.data(), size, 0) > 0) {
+    }
+    close(parent);
+    close(peer);
+    std::exit(0);
+}
+
+// The barrier's other client: asks and waits for the answer, as the parent does, until the server's EOF.
+[[noreturn]] void barrier_peer(int fd, std::size_t size) {
+    std::vector<char> buf(size, 'y');
+    while (write_all(fd, buf.data(), size), read_exact(fd, buf.data(), size)) {
+    }
+    close(fd);
+    std::exit(0);
+}
+
 // The child: echo SIZE-byte messages or count RECORD-byte records.
 [[noreturn]] void child(int fd, bool stream, std::size_t size, long count) {
     std::vector<char> buf(stream ? 1 << 20 : size);
@@ -190,9 +220,10 @@ int main(int argc, char** argv) {
     }
     const std::string mode = argc == 4 ? argv[1] : "";
     const bool stream = mode == "stream" || mode == "relay";
-    if ((mode != "rtt" && mode != "rtt-relay" && !stream) ||
+    const bool barrier = mode == "barrier";
+    if ((mode != "rtt" && mode != "rtt-relay" && !barrier && !stream) ||
         (read_flags != 0 && stream)) {
-        std::fprintf(stderr, "usage: tcp_floor [--unix] [--spin] rtt|rtt-relay SIZE COUNT | tcp_floor [--unix] stream|relay RECORD COUNT\n");
+        std::fprintf(stderr, "usage: tcp_floor [--unix] [--spin] rtt|rtt-relay|barrier SIZE COUNT | tcp_floor [--unix] stream|relay RECORD COUNT\n");
         return 2;
     }
     const bool relayed = mode == "relay" || mode == "rtt-relay";
@@ -200,18 +231,30 @@ int main(int argc, char** argv) {
     const long count = std::strtol(argv[3], nullptr, 10);
     if (size == 0 || count <= 0) return 2;
 
-    // parent -> child, or parent -> relay -> child
+    // parent -> child, or parent -> relay -> child, or parent -> barrier server <- peer
     std::vector<Link> links{make_link(unix_socket)};
-    if (relayed) links.push_back(make_link(unix_socket));
+    if (relayed || barrier) links.push_back(make_link(unix_socket));
     std::vector<pid_t> children;
-    const int child_end = links.back().far;
     pid_t pid = fork();
     if (pid < 0) die("fork");
+    if (pid == 0 && barrier) {
+        keep_only(links, {links[0].far, links[1].far});
+        barrier_server(links[0].far, links[1].far, size);
+    }
     if (pid == 0) {
-        keep_only(links, {child_end});
-        child(child_end, stream, size, count);
+        keep_only(links, {links.back().far});
+        child(links.back().far, stream, size, count);
     }
     children.push_back(pid);
+    if (barrier) {
+        pid = fork();
+        if (pid < 0) die("fork");
+        if (pid == 0) {
+            keep_only(links, {links[1].near});
+            barrier_peer(links[1].near, size);
+        }
+        children.push_back(pid);
+    }
     if (relayed) {
         const int from = links[0].far, to = links[1].near;
         pid = fork();

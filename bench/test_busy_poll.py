@@ -1,7 +1,8 @@
 """Busy polling (opt-in): the 2-federate grant and lockstep and the 8 B update ping-pong with every process
 polling 50 µs before it sleeps (`rtig --busy-poll 50`, $HLACORE_BUSY_POLL_US=50 for the federates), beside the
-same loops without it (test_grant.py, test_update.py), the floors of the same run and the C++ round trip with
-every process polling, directly and through a relay (the floors of processes that do not sleep)."""
+same loops without it (test_grant.py, test_update.py), the floors of the same run and the C++ round trips with
+every process polling: direct, through a relay, and the barrier of two clients (the floors of processes that
+do not sleep)."""
 
 from __future__ import annotations
 
@@ -31,10 +32,10 @@ def busy_rtig(monkeypatch: pytest.MonkeyPatch) -> Iterator[Rtig]:
         yield server
 
 
-@pytest.mark.parametrize("relay", [False, True], ids=["direct", "relay"])
-def test_floor_cpp_rtt_polling(report: Report, tcp_floor: str, relay: bool) -> None:
-    report.add(f"busy.floor.{'relay' if relay else 'cpp'}",
-               [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, relay=relay, spin=True)])
+@pytest.mark.parametrize("key, mode", [("busy.floor.cpp", "rtt"), ("busy.floor.relay", "rtt-relay"),
+                                       ("busy.floor.barrier", "barrier")])
+def test_floor_cpp_rtt_polling(report: Report, tcp_floor: str, key: str, mode: str) -> None:
+    report.add(key, [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, mode, spin=True)])
 
 
 @pytest.mark.parametrize("updates", [False, True], ids=["pure", "updates"])

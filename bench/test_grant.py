@@ -33,6 +33,11 @@ def test_floor_cpp_rtt(report: Report, tcp_floor: str) -> None:
     report.add("grant.floor.cpp", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS)])
 
 
+def test_floor_cpp_barrier(report: Report, tcp_floor: str) -> None:
+    """The C++ floor of a 2-federate grant: a server answers two clients once both have sent."""
+    report.add("grant.floor.barrier", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, "barrier")])
+
+
 def run_lockstep(measure, address: str, federates: int, key: str, updates: bool = True, extend: bool = False,
                  rounds: Optional[int] = None, cpu: Optional[tuple[Report, int]] = None, cpu_prefix: str = "") -> None:
     """`cpu` = (report, the rtig's pid): also record the CPU time per step of the rtig and of each peer

@@ -47,10 +47,11 @@ def busy_rtig_unix(monkeypatch: pytest.MonkeyPatch) -> Iterator[Rtig]:
     yield from unix_rtig("--busy-poll", BUSY_POLL_US)
 
 
-@pytest.mark.parametrize("key, relay, spin", [("unix.floor.cpp", False, False), ("unix.busy.floor.cpp", False, True),
-                                              ("unix.busy.floor.relay", True, True)])
-def test_floor_cpp_rtt_unix(report: Report, tcp_floor: str, key: str, relay: bool, spin: bool) -> None:
-    report.add(key, [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, relay=relay, unix=True, spin=spin)])
+@pytest.mark.parametrize("key, mode, spin", [("unix.floor.cpp", "rtt", False), ("unix.busy.floor.cpp", "rtt", True),
+                                             ("unix.busy.floor.relay", "rtt-relay", True),
+                                             ("unix.busy.floor.barrier", "barrier", True)])
+def test_floor_cpp_rtt_unix(report: Report, tcp_floor: str, key: str, mode: str, spin: bool) -> None:
+    report.add(key, [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, 8, FLOOR_ROUNDS, mode, unix=True, spin=spin)])
 
 
 @pytest.mark.parametrize("size", LARGE_SIZES)

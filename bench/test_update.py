@@ -29,7 +29,7 @@ def test_floor_cpp_rtt(report: Report, tcp_floor: str, size: int) -> None:
 
 @pytest.mark.parametrize("size", PAYLOADS)
 def test_floor_cpp_relay_rtt(report: Report, tcp_floor: str, size: int) -> None:
-    report.add(f"update.floor.relay.{size}", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, size, ROUNDS[size], relay=True)])
+    report.add(f"update.floor.relay.{size}", [ns / 1e9 for ns in cpp_rtt_ns(tcp_floor, size, ROUNDS[size], "rtt-relay")])
 
 
 @pytest.mark.parametrize("order", ["ro", "tso"])

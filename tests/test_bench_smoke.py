@@ -58,23 +58,23 @@ def test_cpp_floor_program() -> None:
     binary = tcp_floor_binary()
     samples = cpp_rtt_ns(binary, 64, 5)
     assert len(samples) == 5 and all(ns > 0 for ns in samples)
-    relayed = cpp_rtt_ns(binary, 64, 5, relay=True)
-    assert len(relayed) == 5 and all(ns > 0 for ns in relayed)
+    for mode in ("rtt-relay", "barrier"):
+        routed = cpp_rtt_ns(binary, 64, 5, mode)
+        assert len(routed) == 5 and all(ns > 0 for ns in routed)
     assert cpp_stream_rate(binary, 100) > 0
     assert cpp_stream_rate(binary, 100, 4096, mode="relay") > 0
 
 
-@pytest.mark.parametrize("relay", [False, True], ids=["direct", "relay"])
-def test_cpp_floor_program_over_a_unix_socket_pair(relay: bool) -> None:
-    """tcp_floor --unix: each mode over Unix socket pairs, and --spin's polling round trips over both sockets (an
-    unknown option is a usage error, so neither is ignored)."""
+@pytest.mark.parametrize("mode", ["rtt", "rtt-relay", "barrier"])
+def test_cpp_floor_program_over_a_unix_socket_pair_and_polling(mode: str) -> None:
+    """tcp_floor --unix and --spin: each round-trip mode over Unix socket pairs, sleeping and polling, and over
+    TCP polling; the streams over Unix socket pairs (an unknown option is a usage error, so neither is ignored)."""
     binary = tcp_floor_binary()
-    samples = cpp_rtt_ns(binary, 64, 5, relay=relay, unix=True)
-    assert len(samples) == 5 and all(ns > 0 for ns in samples)
-    assert cpp_stream_rate(binary, 4, 1 << 20, mode="relay" if relay else "stream", unix=True) > 0
-    for unix in (False, True):
-        polled = cpp_rtt_ns(binary, 8, 5, relay=relay, unix=unix, spin=True)
-        assert len(polled) == 5 and all(ns > 0 for ns in polled)
+    for unix, spin in ((True, False), (True, True), (False, True)):
+        samples = cpp_rtt_ns(binary, 64, 5, mode, unix=unix, spin=spin)
+        assert len(samples) == 5 and all(ns > 0 for ns in samples)
+    if mode != "barrier":
+        assert cpp_stream_rate(binary, 4, 1 << 20, mode="stream" if mode == "rtt" else "relay", unix=True) > 0
 
 
 @pytest.mark.parametrize("federates", [2, 3])
@@ -223,7 +223,7 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     report.add("grant.pure.32", [1e-3, 2e-3, 3e-3])
     assert report.complete()
     text = results_markdown(report, {"cpu": "test", "date": "today"}, "./scripts/bench.sh")
-    assert "| 2 federates, rtig | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 2.0× C++ RTT: met (1.00×) |" in text
+    assert "| 2 federates, rtig | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 2.0× C++ RTT: met (1.00×); 1.00× the barrier |" in text
     assert "| 32 federates, rtig | 2000 µs | 3000 µs | 10.00× | 10.00× | ≤ 4× 2-federate figure: missed (10.00×) |" in text
     assert "OpenRTI 151 µs, CERTI 398 µs (C++ federates)" in text
     assert ("| receive order one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× C++ one-way: met (1.00×); "
@@ -238,15 +238,16 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
     assert "| rtig / each Python federate | 200.0 µs / 200.0 µs |" in text
     assert "| raw TCP round trip 8 B, C++, both ends polling | 200.0 µs | 300.0 µs |  | 1.00× the sleeping one |  |" in text
     assert "| the same through a polling relay | 200.0 µs | 300.0 µs |  | 1.00× the sleeping one |  |" in text
+    assert "| the barrier of two clients, polling | 200.0 µs | 300.0 µs |  | 1.00× the sleeping one |  |" in text
     assert ("| pure grant, 2 federates | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 1.5× the polling C++ round trip: met "
-            "(1.00×); 1.00× the polling relay; 1.00× the time without |") in text
+            "(1.00×); 1.00× the polling barrier; 1.00× the time without |") in text
     assert ("| TSO one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 3.5× the polling C++ one-way: met (1.00×); "
             "1.00× the polling relay; 1.00× the time without |") in text
     assert "| raw round trip 8 B, C++ over a Unix socket | 200.0 µs | 300.0 µs |  | 1.00× TCP's |  |" in text
     assert ("| raw round trip 8 B, C++ over a Unix socket, both ends polling | 200.0 µs | 300.0 µs |  | 1.00× the "
             "sleeping one |  |") in text
     assert ("| pure grant, 2 federates, busy polling | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 1.5× the polling C++ "
-            "round trip over the Unix socket: met (1.00×); 1.00× the polling relay; 1.00× the time over TCP |") in text
+            "round trip over the Unix socket: met (1.00×); 1.00× the polling barrier; 1.00× the time over TCP |") in text
     assert ("| receive order one-way 8 B, busy polling | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 2.5× the polling C++ "
             "one-way over the Unix socket: met (1.00×); 1.00× the polling relay; 1.00× the time over TCP |") in text
     assert ("| 16 MiB updates | 0 MB/s | slowest round 0 MB/s | 1.00× | 1.00× | ≥ 50 % of the Unix socket's C++ floor: "

@@ -113,8 +113,8 @@ class Report:
         cpp_rtt = self.median("grant.floor.cpp")
         pure = [
             self._floor_row("raw TCP round trip 8 B", "grant.floor"),
-            self._polling_floor_row("raw TCP barrier 8 B, C++: a server answers two clients once both have sent",
-                                    "grant.floor.barrier", None),
+            self._cpp_floor_row("raw TCP barrier 8 B, C++: a server answers two clients once both have sent",
+                                "grant.floor.barrier"),
             *[self._latency_row(f"{k} federates, rtig", f"grant.pure.{k}", "grant.floor",
                                 _grant_target(k, self.median(f"grant.pure.{k}"), p2, cpp_rtt,
                                               self.median("grant.floor.barrier"))) for k in FEDERATES],
@@ -136,10 +136,10 @@ class Report:
                                           relay=True))
             update += [self._update_row(order, size) for order in ("ro", "tso")]
         sections.append(("Update latency: one-way = ping-pong round trip / 2", _present(update)))
-        busy = [self._polling_floor_row("raw TCP round trip 8 B, C++, both ends polling", "busy.floor.cpp",
+        busy = [self._cpp_floor_row("raw TCP round trip 8 B, C++, both ends polling", "busy.floor.cpp",
                                         "grant.floor.cpp"),
-                self._polling_floor_row("the same through a polling relay", "busy.floor.relay", "update.floor.relay.8"),
-                self._polling_floor_row("the barrier of two clients, polling", "busy.floor.barrier", "grant.floor.barrier"),
+                self._cpp_floor_row("the same through a polling relay", "busy.floor.relay", "update.floor.relay.8"),
+                self._cpp_floor_row("the barrier of two clients, polling", "busy.floor.barrier", "grant.floor.barrier"),
                 self._busy_row("pure grant, 2 federates", "grant.pure.2", "grant.floor", 1.5),
                 self._busy_row("lockstep with updates, 2 federates", "grant.rtig.2", "grant.floor", 2.5),
                 self._busy_row("receive order one-way 8 B", "update.ro.8", "update.floor", 2.5, size=8),
@@ -285,26 +285,25 @@ class Report:
                    self._ratio(f"{prefix}busy.{key}", f"{floor}.py{suffix}"),
                    self._ratio(f"{prefix}busy.{key}", f"{floor}.cpp{suffix}"), target)
 
-    def _polling_floor_row(self, figure: str, key: str, sleeping: Optional[str]) -> Optional[Row]:
-        """A C++ round trip with every process polling, beside the sleeping one of the same socket if measured."""
+    def _cpp_floor_row(self, figure: str, key: str, beside: Optional[str] = None,
+                       name: str = "the sleeping one") -> Optional[Row]:
+        """A C++ floor of tcp_floor alone (latency), with its ratio to the floor `beside`, called `name`, if given."""
         values = self.samples.get(key)
         if not values:
             return None
         return Row(figure, _us(statistics.median(values)), _us(p99(values)), "",
-                   f"{self._ratio(key, sleeping)} the sleeping one" if sleeping else "", "")
+                   f"{self._ratio(key, beside)} {name}" if beside else "", "")
 
     def _unix_rows(self) -> list[Optional[Row]]:
         """The figures over a Unix socket: each against the TCP floors (the columns), the Unix socket's floor
         and the same figure over TCP (the target column)."""
         rows: list[Optional[Row]] = []
-        unix_rtt = self.samples.get("unix.floor.cpp")
-        if unix_rtt:
-            rows.append(Row("raw round trip 8 B, C++ over a Unix socket", _us(statistics.median(unix_rtt)), _us(p99(unix_rtt)),
-                            "", f"{self._ratio('unix.floor.cpp', 'grant.floor.cpp')} TCP's", ""))
-        rows.append(self._polling_floor_row("raw round trip 8 B, C++ over a Unix socket, both ends polling",
+        rows.append(self._cpp_floor_row("raw round trip 8 B, C++ over a Unix socket", "unix.floor.cpp", "grant.floor.cpp",
+                                        "TCP's"))
+        rows.append(self._cpp_floor_row("raw round trip 8 B, C++ over a Unix socket, both ends polling",
                                             "unix.busy.floor.cpp", "unix.floor.cpp"))
-        rows.append(self._polling_floor_row("the same through a polling relay", "unix.busy.floor.relay", None))
-        rows.append(self._polling_floor_row("the barrier of two clients, polling", "unix.busy.floor.barrier", None))
+        rows.append(self._cpp_floor_row("the same through a polling relay", "unix.busy.floor.relay"))
+        rows.append(self._cpp_floor_row("the barrier of two clients, polling", "unix.busy.floor.barrier"))
         rows += [self._busy_row("pure grant, 2 federates, busy polling", "grant.pure.2", "grant.floor", 1.5, prefix="unix."),
                  self._busy_row("lockstep with updates, 2 federates, busy polling", "grant.rtig.2", "grant.floor", 2.5,
                                 prefix="unix."),

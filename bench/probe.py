@@ -30,7 +30,6 @@ import os
 import resource
 import statistics
 import sys
-import tempfile
 import time
 from typing import Any, Callable, Iterator, Optional
 
@@ -39,7 +38,7 @@ from hlacore.processes import Rtig
 from .floor import PyEcho, cpp_rtt_ns
 from .lockstep import Lockstep
 from .pingpong import PingPong
-from .procs import bench_rtig, cpu_seconds
+from .procs import bench_rtig, cpu_seconds, unix_rtig
 from .three_rtis import Server, run
 from .throughput import Fanout
 
@@ -54,10 +53,8 @@ def gateway() -> Iterator[tuple[Rtig, str]]:
         with bench_rtig() as rtig:
             yield rtig, rtig.address
         return
-    with tempfile.TemporaryDirectory(prefix="hlacore-probe-") as directory, \
-            bench_rtig("--unix", os.path.join(directory, "rtig.sock")) as rtig:
-        assert rtig.unix_address is not None
-        yield rtig, rtig.unix_address
+    with unix_rtig() as (rtig, address):
+        yield rtig, address
 
 
 def spent(pids: dict[str, int], run: Callable[[], None]) -> dict[str, float]:

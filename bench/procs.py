@@ -11,6 +11,7 @@ import os
 import pathlib
 import shlex
 import sys
+import tempfile
 import time
 import urllib.request
 from typing import Iterator, Optional
@@ -34,6 +35,16 @@ def bench_rtig(*args: str, executable: Optional[str] = None) -> Rtig:
     """The rtig under test ($HLACORE_BENCH_RTIG, else beside Python) with `args` and $HLACORE_BENCH_RTIG_ARGS."""
     return Rtig(*shlex.split(os.environ.get("HLACORE_BENCH_RTIG_ARGS", "")), *args,
                 executable=executable or os.environ.get("HLACORE_BENCH_RTIG"))
+
+
+@contextlib.contextmanager
+def unix_rtig(*args: str) -> Iterator[tuple[Rtig, str]]:
+    """bench_rtig(*args) also listening on a Unix socket in a directory of its own (`rtig --unix`), and the
+    address federates connect to it by ("unix:PATH"); the directory is removed when it stops."""
+    with tempfile.TemporaryDirectory(prefix="hlacore-bench-") as directory, \
+            bench_rtig("--unix", os.path.join(directory, "rtig.sock"), *args) as rtig:
+        assert rtig.unix_address is not None
+        yield rtig, rtig.unix_address
 
 
 def cpu_seconds(pid: int) -> float:

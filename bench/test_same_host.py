@@ -10,8 +10,6 @@ test_large.py, test_grant.py) and against the C++ floors of both sockets (bench/
 
 from __future__ import annotations
 
-import os
-import tempfile
 from typing import Iterator
 
 import pytest
@@ -19,7 +17,7 @@ import pytest
 from hlacore.processes import Rtig
 
 from .floor import cpp_rtt_ns, cpp_stream_rate
-from .procs import bench_rtig
+from .procs import unix_rtig
 from .report import LARGE_SIZES, Report
 from .test_busy_poll import BUSY_POLL_US, run_ping_pong
 from .test_grant import FLOOR_ROUNDS, ROUNDS, run_lockstep
@@ -28,23 +26,18 @@ from .test_large import BURST, ROUNDS as LARGE_ROUNDS, run_large
 pytestmark = pytest.mark.benchmark(group="same host over a Unix socket")
 
 
-def unix_rtig(*args: str) -> Iterator[Rtig]:
-    with tempfile.TemporaryDirectory(prefix="hlacore-bench-") as directory, \
-            bench_rtig("--unix", os.path.join(directory, "rtig.sock"), *args) as server:
-        assert server.unix_address is not None
+@pytest.fixture
+def rtig_unix() -> Iterator[tuple[Rtig, str]]:
+    with unix_rtig() as server:
         yield server
 
 
 @pytest.fixture
-def rtig_unix() -> Iterator[Rtig]:
-    yield from unix_rtig()
-
-
-@pytest.fixture
-def busy_rtig_unix(monkeypatch: pytest.MonkeyPatch) -> Iterator[Rtig]:
+def busy_rtig_unix(monkeypatch: pytest.MonkeyPatch) -> Iterator[str]:
     """As test_busy_poll.busy_rtig: the rtig and every federate this test starts poll BUSY_POLL_US."""
     monkeypatch.setenv("HLACORE_BUSY_POLL_US", BUSY_POLL_US)
-    yield from unix_rtig("--busy-poll", BUSY_POLL_US)
+    with unix_rtig("--busy-poll", BUSY_POLL_US) as (_, address):
+        yield address
 
 
 @pytest.mark.parametrize("key, mode, spin", [("unix.floor.cpp", "rtt", False), ("unix.busy.floor.cpp", "rtt", True),
@@ -61,25 +54,22 @@ def test_floor_cpp_stream_unix(report: Report, tcp_floor: str, size: int) -> Non
 
 
 @pytest.mark.parametrize("updates", [False, True], ids=["pure", "updates"])
-def test_lockstep_busy_unix(measure, busy_rtig_unix: Rtig, updates: bool) -> None:
-    assert busy_rtig_unix.unix_address is not None
-    run_lockstep(measure, busy_rtig_unix.unix_address, 2, f"unix.busy.grant.{'rtig' if updates else 'pure'}.2",
+def test_lockstep_busy_unix(measure, busy_rtig_unix: str, updates: bool) -> None:
+    run_lockstep(measure, busy_rtig_unix, 2, f"unix.busy.grant.{'rtig' if updates else 'pure'}.2",
                  updates=updates)
 
 
 @pytest.mark.parametrize("order", ["ro", "tso"])
-def test_update_ping_pong_busy_unix(measure, busy_rtig_unix: Rtig, order: str) -> None:
-    assert busy_rtig_unix.unix_address is not None
-    run_ping_pong(measure, busy_rtig_unix.unix_address, order, f"unix.busy.update.{order}.8")
+def test_update_ping_pong_busy_unix(measure, busy_rtig_unix: str, order: str) -> None:
+    run_ping_pong(measure, busy_rtig_unix, order, f"unix.busy.update.{order}.8")
 
 
 @pytest.mark.parametrize("size", LARGE_SIZES)
-def test_large_updates_unix(measure, rtig_unix: Rtig, size: int) -> None:
-    assert rtig_unix.unix_address is not None
-    run_large(measure, rtig_unix.unix_address, size, f"unix.large.{size}")
+def test_large_updates_unix(measure, rtig_unix: tuple[Rtig, str], size: int) -> None:
+    run_large(measure, rtig_unix[1], size, f"unix.large.{size}")
 
 
-def test_lockstep_32_unix(measure, report: Report, rtig_unix: Rtig) -> None:
-    assert rtig_unix.unix_address is not None
-    run_lockstep(measure, rtig_unix.unix_address, 32, "unix.grant.rtig.32", rounds=ROUNDS[32],
-                 cpu=(report, rtig_unix.proc.pid), cpu_prefix="unix.")
+def test_lockstep_32_unix(measure, report: Report, rtig_unix: tuple[Rtig, str]) -> None:
+    server, address = rtig_unix
+    run_lockstep(measure, address, 32, "unix.grant.rtig.32", rounds=ROUNDS[32], cpu=(report, server.proc.pid),
+                 cpu_prefix="unix.")

@@ -12,9 +12,11 @@ import base64
 import contextlib
 import dataclasses
 import json
+import os
 import pathlib
 import subprocess
 import sys
+import threading
 import time
 from importlib import resources
 from typing import Any, Iterator
@@ -116,6 +118,45 @@ def test_recording_holds_what_the_federates_did(kind: str, tmp_path: pathlib.Pat
     events = list(read(path))
     assert [(f"/{e.federation}/{e.topic}", e.sequence) for e in events] == [(t, s) for t, s, _ in messages]
     assert [e.values()["location"] for e in events if e.kind == "update"] == [u[0] for u in updates]
+
+
+def test_a_recording_of_many_chunks_keeps_every_update_in_order(tmp_path: pathlib.Path) -> None:
+    """Many more chunks than the file thread may have waiting (mcap.hpp's kQueuedChunks), into a pipe read
+    slowly so that they do wait, then one value larger than a chunk: every update is in the file once, in
+    the order sent, each chunk's CRC right."""
+    path, pipe = tmp_path / "long.mcap", tmp_path / "pipe"
+    os.mkfifo(pipe)
+
+    def read_slowly() -> None:
+        with open(pipe, "rb") as source, open(path, "wb") as out:
+            while block := source.read(1 << 16):
+                out.write(block)
+                time.sleep(0.005)
+
+    reader = threading.Thread(target=read_slowly, daemon=True)
+    reader.start()
+    values = [i.to_bytes(4, "big") * 1024 for i in range(3000)] + [b"\xab" * (3 << 20)]  # 4 KiB each, then 3 MiB
+    with recording_gateway("rtig", tmp_path, pipe) as address:
+        creator = rti.RTIAmbassador(address)
+        creator.createFederationExecution("TestFed", ROBOT_FED)
+        a, b = Federate(address, "alpha"), Federate(address, "beta")
+        robot, location = share_robot_location(a, b)
+        obj = a.rtia.registerObjectInstance(robot, "r1")
+        for value in values:
+            a.rtia.updateAttributeValues(obj, {location: value}, "")
+        tick_until(lambda: len(b.amb.named("reflectAttributeValues")) == len(values), a.rtia, b.rtia)
+        for f in (a, b):
+            f.rtia.resignFederationExecution(rti.ResignAction.DeleteObjects)
+        creator.destroyFederationExecution("TestFed")
+    reader.join(timeout=60)
+    assert not reader.is_alive()
+
+    with open(path, "rb") as f:
+        summary = mcap.reader.make_reader(f).get_summary()
+    assert summary is not None and len(summary.chunk_indexes) > 12  # each 4 KiB value is 5.5 KiB of JSON
+    updates = [data for topic, _, data in mcap_messages(path) if topic == "/TestFed/objects/robot"
+               and data["kind"] == "update"]
+    assert [base64.b64decode(u["attributes"]["location"]) for u in updates] == values
 
 
 def run_main_job(tmp_path: pathlib.Path, name: str, rtig: bool, **options: Any) -> Experiment:

@@ -82,6 +82,7 @@ Writer::Writer(const std::string& path, std::string_view profile, std::string_vi
     std::string out(kMagic);
     put_record(out, kHeader, header);
     write(out);
+    thread_ = std::thread(&Writer::file_thread, this);
 }
 
 Writer::~Writer() {
@@ -160,14 +161,13 @@ void Writer::message(std::uint16_t channel, std::uint32_t sequence, std::uint64_
 
 void Writer::write_chunk() {
     if (chunk_.empty()) return;
-    // The chunk record's head, then its records as they are (not copied into one string).
     std::string head;
     put<std::uint8_t>(head, kChunk);
     put<std::uint64_t>(head, 8 + 8 + 8 + 4 + 4 + 8 + chunk_.size());
     put(head, chunk_start_ns_);
     put(head, chunk_end_ns_);
     put<std::uint64_t>(head, chunk_.size());
-    put(head, crc32(chunk_));
+    put<std::uint32_t>(head, 0);  // the CRC, filled in by the file thread
     put_string(head, "");  // uncompressed
     put<std::uint64_t>(head, chunk_.size());
     const std::uint64_t length = head.size() + chunk_.size();
@@ -185,30 +185,97 @@ void Writer::write_chunk() {
         put_record(indexes, kMessageIndex, content);
     }
     index.index_length = indexes.size();
-    write(head);
-    write(chunk_);
-    write(indexes);
-    flush_file();
+    {
+        std::unique_lock<std::mutex> lock(mu_);
+        changed_.wait(lock, [this] { return queue_.size() < kQueuedChunks || !failure_.empty(); });
+        if (!failure_.empty()) throw std::runtime_error(failure_);
+        queue_.push_back({std::move(head), std::move(chunk_), std::move(indexes)});
+        chunk_.clear();  // moved from: empty, unless the spare below replaces it
+        if (!spare_.empty()) {
+            chunk_ = std::move(spare_.back());
+            spare_.pop_back();
+        }
+    }
+    changed_.notify_all();
+    offset_ += length + index.index_length;
     chunk_indexes_.push_back(std::move(index));
-    chunk_.clear();
     chunk_messages_.clear();
+}
+
+void Writer::wait_written() {
+    std::unique_lock<std::mutex> lock(mu_);
+    changed_.wait(lock, [this] { return (queue_.empty() && !writing_) || !failure_.empty(); });
+    if (!failure_.empty()) throw std::runtime_error(failure_);
+}
+
+void Writer::stop_file_thread() {
+    if (!thread_.joinable()) return;
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        stopping_ = true;
+    }
+    changed_.notify_all();
+    thread_.join();
+}
+
+// Writes the chunks it is handed, in order, until stopped with none left; after a write error it only
+// empties the queue (the error is thrown on the writer's thread by the next call that hands or waits).
+void Writer::file_thread() {
+    std::unique_lock<std::mutex> lock(mu_);
+    for (;;) {
+        changed_.wait(lock, [this] { return !queue_.empty() || stopping_; });
+        if (queue_.empty()) return;
+        SealedChunk chunk = std::move(queue_.front());
+        queue_.pop_front();
+        writing_ = true;
+        const bool failed = !failure_.empty();
+        lock.unlock();
+        std::string error = failed ? std::string() : write_out(chunk);
+        lock.lock();
+        writing_ = false;
+        if (!error.empty()) failure_ = std::move(error);
+        // A chunk of ordinary size keeps its buffer for a later one; one grown by a large message does not.
+        if (spare_.size() < kQueuedChunks && chunk.records.capacity() <= 2 * kChunkBytes) {
+            chunk.records.clear();
+            spare_.push_back(std::move(chunk.records));
+        }
+        changed_.notify_all();
+    }
+}
+
+std::string Writer::write_out(SealedChunk& chunk) {
+    const std::uint32_t crc = crc32(chunk.records);
+    std::memcpy(&chunk.head[1 + 8 + 8 + 8 + 8], &crc, sizeof crc);
+    for (const std::string* part : {&chunk.head, &chunk.records, &chunk.indexes}) {
+        if (std::fwrite(part->data(), 1, part->size(), file_) != part->size())
+            return "cannot write the recording '" + path_ + "': " + std::strerror(errno);
+    }
+    // stdio keeps small writes in its buffer: a full disk shows only here.
+    if (std::fflush(file_) != 0) return "cannot write the recording '" + path_ + "': " + std::strerror(errno);
+    return {};
 }
 
 void Writer::flush() {
     if (!file_) return;
     write_chunk();
-    flush_file();
-}
-
-// stdio keeps small writes in its buffer: a full disk shows only here.
-void Writer::flush_file() {
-    if (std::fflush(file_) != 0)
-        throw std::runtime_error("cannot write the recording '" + path_ + "': " + std::strerror(errno));
+    wait_written();
 }
 
 void Writer::close() {
     if (!file_) return;
-    write_chunk();
+    std::string error;
+    try {
+        write_chunk();
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    stop_file_thread();  // once it has written what it was handed
+    if (error.empty()) error = failure_;
+    if (!error.empty()) {
+        std::fclose(file_);
+        file_ = nullptr;
+        throw std::runtime_error(error);
+    }
     std::string out;
     put_record(out, kDataEnd, std::string(4, '\0'));  // no data section CRC (the chunks have theirs)
     write(out);

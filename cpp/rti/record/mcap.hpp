@@ -3,15 +3,23 @@
 // channels, statistics, chunk indexes) so that readers such as Foxglove seek instead of scanning. Chunks
 // carry a CRC-32 of their records, which readers check.
 //
-// Not thread-safe; one writer per file. Written from the MCAP specification, no code of the reference
+// A full chunk goes to a thread of the writer's own, which computes its CRC and writes it out: in the
+// gateway's loop those were half of what recording cost (docs/performance.md). At most kQueuedChunks wait
+// for that thread; message() waits when they do, so memory stays bounded by a few chunks.
+//
+// Not thread-safe; one writer per file, called from one thread at a time. Written from the MCAP specification, no code of the reference
 // implementation.
 #pragma once
 
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
+#include <deque>
 #include <map>
+#include <mutex>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 namespace hlacore::mcap {
@@ -34,7 +42,8 @@ public:
     // Appends a message to the current chunk; the chunk is written out when it reaches its size.
     void message(std::uint16_t channel, std::uint32_t sequence, std::uint64_t log_ns, std::string_view data);
 
-    // Writes out the current chunk (a reader of a file cut short after this sees everything before it).
+    // Writes out the current chunk and waits until everything before it is in the file (a reader of a file
+    // cut short after this sees it all); throws on a write error, this one or an earlier chunk's.
     void flush();
     // Writes out the current chunk, the summary and the footer, and closes the file; throws on a write error.
     void close();
@@ -61,14 +70,33 @@ private:
         std::uint64_t size;
     };
 
+    // A chunk record as the file thread gets it: its head (the CRC still to fill in), its records and the
+    // message indexes that follow it.
+    struct SealedChunk {
+        std::string head, records, indexes;
+    };
+
     static void put_schema(std::string& out, const Schema& schema);
     static void put_channel(std::string& out, const Channel& channel);
-    void write(std::string_view bytes);
-    void flush_file();
-    void write_chunk();
+    void write(std::string_view bytes);  // on this thread (before the file thread starts, after it stops)
+    void write_chunk();  // hands the current chunk to the file thread
+    void wait_written(); // until the file thread has written all it was handed; throws its failure
+    void stop_file_thread();
+    void file_thread();
+    std::string write_out(SealedChunk& chunk);  // on the file thread; "" or what went wrong
+
     std::string path_;
     std::FILE* file_ = nullptr;
-    std::uint64_t offset_ = 0;
+    std::uint64_t offset_ = 0;  // where the next record goes, counting what the file thread has still to write
+
+    static constexpr std::size_t kQueuedChunks = 4;
+    std::thread thread_;
+    std::mutex mu_;  // guards what follows, shared with the file thread
+    std::condition_variable changed_;
+    std::deque<SealedChunk> queue_;
+    bool writing_ = false, stopping_ = false;
+    std::string failure_;               // the file thread's first write error; it writes nothing after it
+    std::vector<std::string> spare_;    // emptied record buffers, their capacity kept for the next chunks
 
     std::vector<Schema> schemas_;
     std::map<std::string, std::uint16_t> schema_ids_;

@@ -25,7 +25,7 @@ install_hlacore() {
     if [ -f "$stamp" ] && grep -qxF "$digest [$extras]" "$stamp" && .venv/bin/python -c "import hlacore._core" 2>/dev/null; then
         return 0
     fi
-    require_openssl_headers
+    require_build_headers
     echo "Building hlacore into .venv (the C++ core: a few minutes the first time, seconds after a change) ..." >&2
     pip_install scikit-build-core pybind11 cmake ninja
     local lock status=0
@@ -46,11 +46,14 @@ install_hlacore() {
     mv "$stamp.new" "$stamp"
 }
 
-# OpenSSL's headers and link libraries for the build (Debian's libssl-dev): libcrypto for the shared
-# secret's HMAC (cpp/rti/auth.cpp), libssl for the optional TLS (cpp/rti/tls.cpp).
-require_openssl_headers() {
+# The headers and link libraries of the C++ core's two system libraries: OpenSSL (Debian's libssl-dev):
+# libcrypto for the shared secret's HMAC (cpp/rti/auth.cpp), libssl for the optional TLS (cpp/rti/tls.cpp);
+# zlib (zlib1g-dev) for the recordings' CRC (cpp/rti/record/mcap.cpp).
+require_build_headers() {
     [ -e /usr/include/openssl/ssl.h ] \
         || debian_install "hlacore's C++ core compiles against OpenSSL (libcrypto for the shared secret, libssl for TLS)" libssl-dev
+    [ -e /usr/include/zlib.h ] \
+        || debian_install "hlacore's C++ core computes the recordings' checksums with zlib" zlib1g-dev
 }
 
 # Builds TARGETS in the configured CMake build directory DIR, saying so (LABEL) and showing the compiler's

@@ -21,7 +21,7 @@ if ! .venv/bin/python -c "import scikit_build_core, pybind11" 2>/dev/null || [ !
     pip_install scikit-build-core pybind11 cmake ninja
 fi
 
-require_openssl_headers
+require_build_headers
 mkdir -p "$outdir"
 lock_build_dir lock || exit 1  # held until this script exits: one build at a time in build/wheel
 staging=$(mktemp -d build/wheel-out.XXXXXX)

@@ -1,9 +1,11 @@
 #include "rti/record/mcap.hpp"
 
-#include <array>
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+
+#include <zlib.h>
 
 namespace hlacore::mcap {
 
@@ -43,34 +45,17 @@ void put_record(std::string& out, Opcode op, std::string_view content) {
 
 }  // namespace
 
-// Eight bytes per step with eight tables ("slicing-by-8"): a chunk's CRC is computed in the gateway's loop,
-// and a byte at a time took milliseconds per MiB.
+// zlib's: 0.2 ms a MiB here, where the eight-table loop this replaced took 0.55 ms (the file thread computes
+// one per chunk of 1 MiB, on the core the federates would otherwise have).
 std::uint32_t crc32(std::string_view bytes, std::uint32_t crc) {
-    static const auto tables = [] {
-        std::array<std::array<std::uint32_t, 256>, 8> t{};
-        for (std::uint32_t i = 0; i < 256; ++i) {
-            std::uint32_t c = i;
-            for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-            t[0][i] = c;
-        }
-        for (std::uint32_t i = 0; i < 256; ++i)
-            for (int k = 1; k < 8; ++k) t[k][i] = (t[k - 1][i] >> 8) ^ t[0][t[k - 1][i] & 0xFF];
-        return t;
-    }();
-    crc = ~crc;
-    const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
-    std::size_t n = bytes.size();
-    for (; n >= 8; p += 8, n -= 8) {
-        std::uint32_t low, high;
-        std::memcpy(&low, p, 4);
-        std::memcpy(&high, p + 4, 4);
-        low ^= crc;
-        crc = tables[7][low & 0xFF] ^ tables[6][(low >> 8) & 0xFF] ^ tables[5][(low >> 16) & 0xFF] ^
-              tables[4][low >> 24] ^ tables[3][high & 0xFF] ^ tables[2][(high >> 8) & 0xFF] ^
-              tables[1][(high >> 16) & 0xFF] ^ tables[0][high >> 24];
+    const auto* p = reinterpret_cast<const Bytef*>(bytes.data());
+    for (std::size_t left = bytes.size(); left > 0;) {  // zlib takes an unsigned int of bytes at a time
+        const auto n = static_cast<uInt>(std::min<std::size_t>(left, 1u << 30));
+        crc = static_cast<std::uint32_t>(::crc32(crc, p, n));
+        p += n;
+        left -= n;
     }
-    for (; n > 0; ++p, --n) crc = tables[0][(crc ^ *p) & 0xFF] ^ (crc >> 8);
-    return ~crc;
+    return crc;
 }
 
 Writer::Writer(const std::string& path, std::string_view profile, std::string_view library) : path_(path) {

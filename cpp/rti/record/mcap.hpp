@@ -113,7 +113,7 @@ private:
     std::map<std::uint16_t, std::uint64_t> channel_counts_;
 };
 
-// CRC-32 (ISO-HDLC, as zlib's crc32), the checksum MCAP uses.
+// CRC-32 (ISO-HDLC), the checksum MCAP uses: zlib's crc32, continuing from `crc`.
 std::uint32_t crc32(std::string_view bytes, std::uint32_t crc = 0);
 
 }  // namespace hlacore::mcap

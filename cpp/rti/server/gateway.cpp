@@ -633,6 +633,7 @@ template <class View>
 void Gateway::serve_view(Connection& c, const wire::Frame& frame) {
     check_forwardable(frame, options_.max_frame_bytes);
     const View view = wire::decode_as<View>(frame);
+    if (recorder_ && c.federation) recorder_->request(c.federation->federation, c.federate, view);
     if (frame.payload.size() < wire::kSplicedValueBytes) return serve(c, view);
     struct Scope {  // the block is let go once served, whatever happens
         SpliceSource& source;
@@ -643,9 +644,9 @@ void Gateway::serve_view(Connection& c, const wire::Frame& frame) {
 }
 
 void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
-    // Updates and interactions, when nothing needs them whole (the trace, the recorder): served with their
-    // values viewed in the frame rather than copied out of it, a camera frame's megabytes included.
-    if (c.greeted && c.challenge.empty() && !trace_ && !recorder_) {
+    // Updates and interactions, when nothing needs them whole (the trace): served with their values viewed in
+    // the frame rather than copied out of it, a camera frame's megabytes included.
+    if (c.greeted && c.challenge.empty() && !trace_) {
         if (frame.type == wire::MessageType::UpdateAttributes) return serve_view<wire::UpdateAttributesView>(c, frame);
         if (frame.type == wire::MessageType::SendInteraction) return serve_view<wire::SendInteractionView>(c, frame);
     }

@@ -68,8 +68,8 @@ const char* name_of(const M&) {
 }
 
 // `values` as a JSON object of base64 strings by the names `named(handle)` gives ("#handle" for none).
-template <class Named>
-void put_values(std::string& json, const char* key, const wire::HandleValues& values, Named&& named) {
+template <class Values, class Named>  // HandleValues, or HandleValueViews into the frame being served
+void put_values(std::string& json, const char* key, const Values& values, Named&& named) {
     json += ",\"";
     json += key;
     json += "\":{";
@@ -255,7 +255,7 @@ void Recorder::request(const Federation& federation, FederateHandle from, const 
         [&](const auto& m) {
             using M = std::decay_t<decltype(m)>;
             if constexpr (std::is_same_v<M, wire::UpdateAttributes> || std::is_same_v<M, wire::DeleteObject>) {
-                record_object_event(federation, from, m, message);
+                record_object_event(federation, from, m);
             } else if constexpr (std::is_same_v<M, wire::SendInteraction>) {
                 record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, nullptr);
             } else if constexpr (std::is_same_v<M, wire::SendInteractionWithRegion>) {
@@ -268,10 +268,18 @@ void Recorder::request(const Federation& federation, FederateHandle from, const 
                                  std::is_same_v<M, wire::DatagramPath> || std::is_same_v<M, wire::StartRecording>) {
                 // Questions that change nothing in the federation.
             } else {
-                record_message(federation, from, TopicKind::Requests, "request", name_of(m), message);
+                record_message(federation, from, TopicKind::Requests, "request", message);
             }
         },
         message);
+}
+
+void Recorder::request(const Federation& federation, FederateHandle from, const wire::UpdateAttributesView& m) {
+    if (records(federation)) record_object_event(federation, from, m);
+}
+
+void Recorder::request(const Federation& federation, FederateHandle from, const wire::SendInteractionView& m) {
+    if (records(federation)) record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, nullptr);
 }
 
 void Recorder::answered(const Federation& federation, FederateHandle to, const wire::Message& answer) {
@@ -286,7 +294,7 @@ void Recorder::answered(const Federation& federation, FederateHandle to, const w
         put_uint(json_, registered->object);
         write(federation, topic(federation, TopicKind::Object, object->object_class), json_);
     } else if (const auto* reply = std::get_if<wire::Reply>(&answer); reply && reply->error != 0) {
-        record_message(federation, to, TopicKind::Refusals, "answer", "Reply", answer);
+        record_message(federation, to, TopicKind::Refusals, "answer", answer);
     }
 }
 
@@ -299,18 +307,16 @@ void Recorder::callback(const Federation& federation, FederateHandle to, const w
         write(federation, topic(federation, TopicKind::Grants), json_);
         return;
     }
-    std::visit([&](const auto& m) { record_message(federation, to, TopicKind::Callbacks, "callback", name_of(m), message); },
-               message);
+    record_message(federation, to, TopicKind::Callbacks, "callback", message);
 }
 
 template <class M>
-void Recorder::record_object_event(const Federation& federation, FederateHandle from, const M& m,
-                                   const wire::Message& message) {
+void Recorder::record_object_event(const Federation& federation, FederateHandle from, const M& m) {
     const ObjectInstance* object = federation.object(m.object);
     if (!object)  // refused as it is served, or an object deleted meanwhile: kept as the request it is
-        return record_message(federation, from, TopicKind::Requests, "request", wire::message_name(M::kType), message);
+        return record_fields(federation, from, TopicKind::Requests, "request", m);
     begin(json_, federation, from);
-    json_ += std::is_same_v<M, wire::UpdateAttributes> ? ",\"kind\":\"update\",\"object\":" : ",\"kind\":\"delete\",\"object\":";
+    json_ += std::is_same_v<M, wire::DeleteObject> ? ",\"kind\":\"delete\",\"object\":" : ",\"kind\":\"update\",\"object\":";
     json_string(json_, object->name);
     json_ += ",\"object_handle\":";
     put_uint(json_, m.object);
@@ -319,15 +325,16 @@ void Recorder::record_object_event(const Federation& federation, FederateHandle 
     put_uint(json_, m.serial);
     json_ += ",\"tag\":";
     json_text(json_, m.tag);
-    if constexpr (std::is_same_v<M, wire::UpdateAttributes>) {
+    if constexpr (!std::is_same_v<M, wire::DeleteObject>) {
         const fom::ObjectClass& cls = *federation.fom().object_class(object->object_class);
         put_values(json_, "attributes", m.values, [&](std::uint32_t h) { return cls.attribute(h); });
     }
     write(federation, topic(federation, TopicKind::Object, object->object_class), json_);
 }
 
+template <class Values>
 void Recorder::record_interaction(const Federation& federation, FederateHandle from, std::uint32_t class_handle,
-                                  const wire::HandleValues& values, const std::string& tag,
+                                  const Values& values, const std::string& tag,
                                   const wire::OptionalTime& time, const std::uint32_t* region) {
     const fom::InteractionClass* cls = federation.fom().interaction_class(class_handle);
     if (!cls) return;  // refused as it is served; the drop is recorded
@@ -345,19 +352,21 @@ void Recorder::record_interaction(const Federation& federation, FederateHandle f
 }
 
 void Recorder::record_message(const Federation& federation, FederateHandle federate, TopicKind kind, const char* key,
-                              const char* name, const wire::Message& message) {
+                              const wire::Message& message) {
+    std::visit([&](const auto& m) { record_fields(federation, federate, kind, key, m); }, message);
+}
+
+template <class M>
+void Recorder::record_fields(const Federation& federation, FederateHandle federate, TopicKind kind, const char* key,
+                             const M& m) {
     begin(json_, federation, federate);
     json_ += ",\"";
     json_ += key;
     json_ += "\":\"";
-    json_ += name;
+    json_ += name_of(m);
     json_ += "\",\"fields\":";
-    std::visit(
-        [&](const auto& m) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(m)>, std::monostate>) json_ += "{}";
-            else wire::to_json(json_, m);
-        },
-        message);
+    if constexpr (std::is_same_v<M, std::monostate>) json_ += "{}";
+    else wire::to_json(json_, m);
     write(federation, topic(federation, kind), json_);
 }
 

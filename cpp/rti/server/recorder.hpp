@@ -69,6 +69,9 @@ public:
     void dropped(const Federation& federation, FederateHandle federate, const std::string& why);
     // A request of a joined federate, before it is served.
     void request(const Federation& federation, FederateHandle from, const wire::Message& message);
+    // The same for an update or interaction the gateway serves from its frame (Gateway::serve_view).
+    void request(const Federation& federation, FederateHandle from, const wire::UpdateAttributesView& m);
+    void request(const Federation& federation, FederateHandle from, const wire::SendInteractionView& m);
     // The gateway's answer to a request: a registration's object, or a refusal.
     void answered(const Federation& federation, FederateHandle to, const wire::Message& answer);
     // A callback sent to a federate (Outbox::send: every kind but reflections and received interactions).
@@ -99,15 +102,17 @@ private:
     void write_created(const Federation& federation, RecordTap* only);
     void write_joined(const Federation& federation, FederateHandle federate, RecordTap* only);
     void begin(std::string& json, const Federation& federation, FederateHandle federate) const;
-    template <class M>  // UpdateAttributes or DeleteObject
-    void record_object_event(const Federation& federation, FederateHandle from, const M& m,
-                             const wire::Message& message);
-    void record_interaction(const Federation& federation, FederateHandle from, std::uint32_t cls,
-                            const wire::HandleValues& values, const std::string& tag, const wire::OptionalTime& time,
-                            const std::uint32_t* region);
-    // A request, refusal or callback: `key` names the wire message `name`, "fields" holds its fields.
+    template <class M>  // UpdateAttributes(View) or DeleteObject
+    void record_object_event(const Federation& federation, FederateHandle from, const M& m);
+    template <class Values>  // HandleValues, or HandleValueViews into the frame being served
+    void record_interaction(const Federation& federation, FederateHandle from, std::uint32_t cls, const Values& values,
+                            const std::string& tag, const wire::OptionalTime& time, const std::uint32_t* region);
+    // A request, refusal or callback: `key` names the wire message, "fields" holds its fields.
     void record_message(const Federation& federation, FederateHandle federate, TopicKind kind, const char* key,
-                        const char* name, const wire::Message& message);
+                        const wire::Message& message);
+    template <class M>
+    void record_fields(const Federation& federation, FederateHandle federate, TopicKind kind, const char* key,
+                       const M& m);
 
     std::unique_ptr<mcap::Writer> writer_;
     std::map<const Federation*, std::vector<RecordTap*>> taps_;

@@ -60,7 +60,8 @@ public:
         if (t) json_number(out, *t);
         else out += "null";
     }
-    static void put(std::string& out, const HandleValue& hv) {
+    template <class V, std::enable_if_t<std::is_same_v<V, Value> || std::is_same_v<V, std::string_view>, int> = 0>
+    static void put(std::string& out, const std::pair<std::uint32_t, V>& hv) {  // HandleValue(View)
         out += '[';
         put(out, hv.first);
         out += ',';

@@ -4,11 +4,11 @@
 // carry a CRC-32 of their records, which readers check.
 //
 // A full chunk goes to a thread of the writer's own, which computes its CRC and writes it out: in the
-// gateway's loop those were half of what recording cost (docs/performance.md). At most kQueuedChunks wait
+// gateway's loop those were a third of what recording cost (docs/performance.md). At most kQueuedChunks wait
 // for that thread; message() waits when they do, so memory stays bounded by a few chunks.
 //
-// Not thread-safe; one writer per file, called from one thread at a time. Written from the MCAP specification, no code of the reference
-// implementation.
+// Not thread-safe: one writer per file, called from one thread at a time. Written from the MCAP
+// specification, no code of the reference implementation.
 #pragma once
 
 #include <condition_variable>

@@ -1,7 +1,8 @@
 """Grant latency: a federation of regulating + constrained federates in lockstep, each its own process,
 the pytest process being one of them. One step (the benchmarked call) is what every federate does:
 update at t+1 (TSO), timeAdvanceRequest(t+1), tick to the grant; or, `updates=False`, only the
-timeAdvanceRequest and the grant (pure TAR → TAG). Lookahead 1."""
+timeAdvanceRequest and the grant (pure TAR → TAG); `batched=True`: the update and the request inside
+RTIAmbassador.batch() (one write). Lookahead 1."""
 
 from __future__ import annotations
 
@@ -16,9 +17,11 @@ class Lockstep:
     """`federates` federates in lockstep on the gateway at `address`; `federates - 1` are peer processes,
     which stop by themselves after `max_steps` (the stop step included) should this process be killed."""
 
-    def __init__(self, address: str, federates: int, max_steps: int, updates: bool = True) -> None:
+    def __init__(self, address: str, federates: int, max_steps: int, updates: bool = True,
+                 batched: bool = False) -> None:
         self.federates = federates
         self.updates = updates
+        self.batched = batched
         self.max_steps = max_steps
         self.time = 0
         self.federation = create(address)
@@ -28,7 +31,7 @@ class Lockstep:
         try:
             self.peers = [
                 start_peer("lockstep_peer.py", address, self.federation, f"p{i}", federates, max_steps,
-                            *([] if updates else ["pure"]))
+                            *(["pure"] if not updates else ["batched"] if batched else []))
                 for i in range(federates - 1)
             ]
             for peer in self.peers:
@@ -40,10 +43,16 @@ class Lockstep:
 
     def step(self, value: bytes = b"conductor") -> None:
         """One lockstep step of the whole federation, seen from this federate."""
-        t = float(self.time + 1)
-        if self.updates:
-            self.fed.rtia.updateAttributeValues(self.fed.obj, {self.fed.location: value}, "", t)
-        self.fed.rtia.advance_to(t, timeout=60.0)
+        t, rtia = float(self.time + 1), self.fed.rtia
+        if self.batched:
+            with rtia.batch():
+                rtia.updateAttributeValues(self.fed.obj, {self.fed.location: value}, "", t)
+                rtia.timeAdvanceRequest(t)
+            rtia.await_grant(timeout=60.0)
+        else:
+            if self.updates:
+                rtia.updateAttributeValues(self.fed.obj, {self.fed.location: value}, "", t)
+            rtia.advance_to(t, timeout=60.0)
         self.time += 1
 
     def finish(self) -> None:

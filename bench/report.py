@@ -27,7 +27,9 @@ messages per second (rates), keyed as the bench tests record them:
     record.throughput.1.off / .on           throughput.1 the same way
     monitor.grant.2.off / .on               grant.rtig.2 through an rtig without / with hlacore.monitor watching
     busy.KEY                                KEY (grant.pure.2, grant.rtig.2, update.ro.8, update.tso.8) with
-                                            every process busy polling (rtig --busy-poll, $HLACORE_BUSY_POLL_US)
+                                            every process busy polling (rtig --busy-poll, $HLACORE_BUSY_POLL_US);
+                                            busy.grant.batched.2: grant.rtig.2 with each step's update and
+                                            request in RTIAmbassador.batch()
     busy.floor.cpp / .relay / .barrier      the C++ TCP round trip of 8 B with every process polling (tcp_floor
                                             --spin): direct, through a relay, the barrier
     unix.KEY                                over a Unix socket (rtig --unix): KEY = busy.* as above, large.S,
@@ -142,6 +144,9 @@ class Report:
                 self._cpp_floor_row("the barrier of two clients, polling", "busy.floor.barrier", "grant.floor.barrier"),
                 self._busy_row("pure grant, 2 federates", "grant.pure.2", "grant.floor", 1.5),
                 self._busy_row("lockstep with updates, 2 federates", "grant.rtig.2", "grant.floor", 2.5),
+                self._busy_row("the same, each federate's update and request in one write (RTIAmbassador.batch(), "
+                               "opt-in)", "grant.batched.2", "grant.floor", 2.5,
+                               without=("busy.grant.rtig.2", "the time without the batch")),
                 self._busy_row("receive order one-way 8 B", "update.ro.8", "update.floor", 2.5, size=8),
                 self._busy_row("TSO one-way 8 B", "update.tso.8", "update.floor", 3.5, size=8)]
         sections.append(("Busy polling (opt-in): every process polls 50 µs before it sleeps (rtig --busy-poll 50, "
@@ -258,12 +263,13 @@ class Report:
                    self._ratio(key, f"update.floor.py.{size}"), self._ratio(key, f"update.floor.cpp.{size}"), target)
 
     def _busy_row(self, figure: str, key: str, floor: str, limit: float, size: Optional[int] = None,
-                  prefix: str = "") -> Optional[Row]:
+                  prefix: str = "", without: Optional[tuple[str, str]] = None) -> Optional[Row]:
         """`key` with busy polling (PREFIXbusy.KEY): its ratios to this run's sleeping floors (the columns), and
         issue 20's target against the floor of processes that do not sleep either, the C++ round trip with both
         ends polling (PREFIXbusy.floor.cpp, 8 B); then its ratio to the polling floor of its shape, the barrier of
         two clients for a grant, the relay for an update's round trip, and to the same loop without polling, or
-        with `prefix` "unix." to the same over TCP. With `size`, a one-way figure: half the round trip, the
+        with `prefix` "unix." to the same over TCP, or to `without` = (key, its name). With `size`, a one-way
+        figure: half the round trip, the
         floors' too."""
         values = self.samples.get(f"{prefix}busy.{key}")
         if not values:
@@ -277,7 +283,7 @@ class Report:
         beside = self._ratio(f"{prefix}busy.{key}", f"{prefix}busy.floor.{routed}")
         if target and beside != "–":
             target += f"; {beside} {name}"
-        other, name = (f"busy.{key}", "the time over TCP") if prefix else (key, "the time without")
+        other, name = (f"busy.{key}", "the time over TCP") if prefix else without or (key, "the time without")
         compared = self._ratio(f"{prefix}busy.{key}", other)
         if target and compared != "–":
             target += f"; {compared} {name}"
@@ -477,7 +483,8 @@ def expected_keys() -> list[str]:
     keys += [f"monitor.grant.2.{side}" for side in ("off", "on")]
     keys += [f"large.{kind}{size}" for size in LARGE_SIZES for kind in ("", "floor.py.", "floor.cpp.", "floor.relay.")]
     keys += ["cpu.32.rtig", "cpu.32.federate"]
-    keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
+    keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "grant.batched.2", "update.ro.8",
+                                        "update.tso.8")]
     keys += [f"unix.busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
     keys += [f"unix.{kind}{size}" for size in LARGE_SIZES for kind in ("large.", "large.floor.cpp.")]
     keys += ["grant.floor.barrier", "busy.floor.cpp", "busy.floor.relay", "busy.floor.barrier", "unix.floor.cpp",

@@ -43,6 +43,11 @@ def test_lockstep_busy(measure, busy_rtig: Rtig, updates: bool) -> None:
     run_lockstep(measure, busy_rtig.address, 2, f"busy.grant.{'rtig' if updates else 'pure'}.2", updates=updates)
 
 
+def test_lockstep_busy_batched(measure, busy_rtig: Rtig) -> None:
+    """The lockstep with updates, each federate's update and request in one write (RTIAmbassador.batch())."""
+    run_lockstep(measure, busy_rtig.address, 2, "busy.grant.batched.2", batched=True)
+
+
 def run_ping_pong(measure, address: str, order: str, key: str) -> None:
     """The 8 B update ping-pong of test_update.py through the gateway at `address`, timed under `key`."""
     pingpong = PingPong(address, order, 8)

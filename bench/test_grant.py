@@ -39,12 +39,13 @@ def test_floor_cpp_barrier(report: Report, tcp_floor: str) -> None:
 
 
 def run_lockstep(measure, address: str, federates: int, key: str, updates: bool = True, extend: bool = False,
-                 rounds: Optional[int] = None, cpu: Optional[tuple[Report, int]] = None, cpu_prefix: str = "") -> None:
+                 rounds: Optional[int] = None, cpu: Optional[tuple[Report, int]] = None, cpu_prefix: str = "",
+                 batched: bool = False) -> None:
     """`cpu` = (report, the rtig's pid): also record the CPU time per step of the rtig and of each peer
     federate process (PREFIXcpu.K.rtig, PREFIXcpu.K.federate: their mean)."""
     rounds = rounds or ROUNDS[federates]
     federation = Lockstep(address, federates, max_steps=rounds + rounds // 10 + 10,  # warm-up, stop, margin
-                          updates=updates)
+                          updates=updates, batched=batched)
     try:
         pids = [cpu[1], *(peer.pid for peer in federation.peers)] if cpu else []  # the rtig's first
         spent, steps = [cpu_seconds(pid) for pid in pids], federation.time

@@ -1,6 +1,7 @@
 """Coalescing of the federate's writes (cpp/rti/client/client.cpp): a message sent soon after a wait (a lone
 update, or an update and its time advance request) is written by the caller at once; a longer run of sends
-goes to the writer thread, many messages per system call, in the order sent. Both gateways."""
+goes to the writer thread, many messages per system call, in the order sent; RTIAmbassador.batch() holds
+them for one write at its end or before a wait. Both gateways."""
 
 from __future__ import annotations
 
@@ -120,3 +121,56 @@ def test_a_gateway_that_dies_during_a_run_makes_the_next_call_raise(tmp_path: pa
             assert flood.wait(10) == 0, flood.stderr()
     finally:
         server.stop()  # killed: its status is the signal's
+
+
+def test_a_batch_is_written_in_one_call_at_its_end(federation: Any) -> None:
+    pub, sub = federation("pub"), federation("sub")
+    robot, location = share_robot_location(pub, sub)
+    obj = pub.rtia.registerObjectInstance(robot, "r")
+    pub.rtia.tick()  # a wait: without the batch each update would be written at once
+    before = counts(pub)
+    with pub.rtia.batch():
+        for n in range(3):
+            pub.rtia.updateAttributeValues(obj, {location: b"held %d" % n}, "")
+        assert counts(pub) == before  # nothing written yet
+    assert counts(pub) == (before[0] + 3, before[1] + 1)
+    tick_until(lambda: len(sub.amb.named("reflectAttributeValues")) == 3, sub.rtia)
+    assert [args[1][location] for args in sub.amb.named("reflectAttributeValues")] == [b"held 0", b"held 1", b"held 2"]
+
+
+def test_a_wait_inside_a_batch_writes_what_it_holds_first(federation: Any) -> None:
+    """A service with an answer and a time advance inside a batch: what the batch held goes out before each
+    wait, in the order sent, so neither waits for what it holds."""
+    pub, sub = federation("pub"), federation("sub")
+    robot, location = share_robot_location(pub, sub)
+    pub.enable_time(1.0, constrained=False)  # the only regulating federate: its grants wait for nobody
+    pub.rtia.tick()
+    before = counts(pub)
+    with pub.rtia.batch():
+        obj = pub.rtia.registerObjectInstance(robot, "r")  # waits for the gateway's answer
+        assert counts(pub) == (before[0] + 1, before[1] + 1)
+        pub.rtia.updateAttributeValues(obj, {location: b"at 1.5"}, "", 1.5)
+        assert pub.rtia.advance_to(1.0, timeout=10.0) == 1.0  # the update and the request: one write
+        assert counts(pub) == (before[0] + 3, before[1] + 2)
+        pub.rtia.updateAttributeValues(obj, {location: b"after the grant"}, "")
+    assert counts(pub) == (before[0] + 4, before[1] + 3)
+    tick_until(lambda: len(sub.amb.named("reflectAttributeValues")) == 2, sub.rtia)
+    assert [args[1][location] for args in sub.amb.named("reflectAttributeValues")] == [b"at 1.5", b"after the grant"]
+
+
+def test_a_large_batch_is_written_before_it_grows_further(federation: Any) -> None:
+    """Held messages past 64 KiB (Client::kMaxHeldBytes) are written at once: memory stays bounded."""
+    pub, sub = federation("pub"), federation("sub")
+    robot, location = share_robot_location(pub, sub)
+    obj = pub.rtia.registerObjectInstance(robot, "r")
+    pub.rtia.tick()
+    before = counts(pub)
+    value = bytes(16 << 10)
+    with pub.rtia.batch():
+        for _ in range(4):
+            pub.rtia.updateAttributeValues(obj, {location: value}, "")
+        assert counts(pub)[1] == before[1] + 1  # the fourth took the batch past 64 KiB
+        pub.rtia.updateAttributeValues(obj, {location: b"last"}, "")
+    assert counts(pub) == (before[0] + 5, before[1] + 2)
+    tick_until(lambda: len(sub.amb.named("reflectAttributeValues")) == 5, sub.rtia)
+    assert [args[1][location] for args in sub.amb.named("reflectAttributeValues")] == [value] * 4 + [b"last"]

@@ -34,7 +34,7 @@ class Ambassador(SyncAmbassador):
 def main() -> None:
     address, federation, name = sys.argv[1:4]
     federates, max_steps = int(sys.argv[4]), int(sys.argv[5])
-    pure = sys.argv[6:] == ["pure"]
+    pure, batched = sys.argv[6:] == ["pure"], sys.argv[6:] == ["batched"]
     amb = Ambassador()
     fed = Joined(address, federation, name, amb)
     fed.enable_time()
@@ -44,9 +44,15 @@ def main() -> None:
     errors: list[str] = []
     received = steps = 0
     for k in range(1, max_steps + 1):
-        if not pure:
-            fed.rtia.updateAttributeValues(fed.obj, {fed.location: payload}, "", float(k))
-        granted = fed.rtia.advance_to(float(k), timeout=60.0)
+        if batched:  # the update and the request in one write (RTIAmbassador.batch)
+            with fed.rtia.batch():
+                fed.rtia.updateAttributeValues(fed.obj, {fed.location: payload}, "", float(k))
+                fed.rtia.timeAdvanceRequest(float(k))
+            granted = fed.rtia.await_grant(timeout=60.0)
+        else:
+            if not pure:
+                fed.rtia.updateAttributeValues(fed.obj, {fed.location: payload}, "", float(k))
+            granted = fed.rtia.advance_to(float(k), timeout=60.0)
         steps = k
         got, amb.times = amb.times, []
         received += len(got)

@@ -633,6 +633,14 @@ class BackgroundGateway:
     def running(self) -> bool:
         ...
 class RTIAmbassadorBase:
+    class Batch:
+        """
+        What `with rtia.batch():` enters (RTIAmbassadorBase.batch).
+        """
+        def __enter__(self) -> None:
+            ...
+        def __exit__(self, *args: typing.Any) -> None:
+            ...
     def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, secret_file: str = '', datagrams: bool = True, federation_secret_file: str = '', tls: bool = False, tls_ca: str = '', busy_poll_us: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
         ...
     def _await_grant(self, timeout: typing.SupportsFloat | typing.SupportsIndex | None) -> float:
@@ -708,6 +716,10 @@ class RTIAmbassadorBase:
     def changeInteractionTransportationType(self, interactionClass: InteractionClassHandle, transportationHandle: TransportationHandle) -> None:
         """
         Change the transportation of this federate's later interactions of a published class (HLA 1.3 §6.20), until it unpublishes the class; receiveInteraction reports it. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidTransportationHandle.
+        """
+    def batch(self) -> RTIAmbassadorBase.Batch:
+        """
+        Hold this federate's messages while a `with rtia.batch():` block runs and write them together, in one system call, when it ends, or before the first call inside it that waits for the gateway (tick, advance_to, a service that returns an answer), whichever comes first. Opt-in, for a step that sends several messages and then waits: around the updates and the time advance request after them, one write and one read of the gateway instead of one each. That pays where the gateway polls (rtig --busy-poll); where it sleeps, an update written at once wakes it while the request is still being made, and a batch measured slower (docs/performance.md has both). Outside a batch every message is written when it is sent. While a batch is open, other threads' messages are held too, in the order sent; batches nest, and the outermost one's end writes. A batch of more than 64 KiB is written at once.
         """
     def clock_offset(self, max_age: typing.SupportsFloat | typing.SupportsIndex = 10.0) -> tuple[float, float]:
         """

@@ -374,11 +374,41 @@ void Client::send(const M& message) {
     auto lock = lock_send();
     if constexpr (federation_service(M::kType)) require_member(M::kType);
     if constexpr (std::is_same_v<M, wire::UpdateAttributesView> || std::is_same_v<M, wire::SendInteractionView>) {
-        if (!ssl_ && !writer_busy_ && pending_.empty() && wire::has_spliced_value(message.values)) return send_spliced(message);
+        if (!ssl_ && !writer_busy_ && pending_.empty() && holds_ == 0 && wire::has_spliced_value(message.values))
+            return send_spliced(message);
     }
     send_buffer_.clear();
     wire::encode(send_buffer_, message);
     check_frame_length(M::kType, send_buffer_.size() - 4);
+    if (holds_ > 0) return hold_encoded(lock);
+    send_encoded(lock);
+}
+
+void Client::hold_sends() {
+    auto lock = lock_send();
+    ++holds_;
+}
+
+void Client::release_sends() {
+    auto lock = lock_send();
+    if (holds_ > 0 && --holds_ == 0) write_held(lock);
+}
+
+void Client::hold_encoded(std::unique_lock<std::mutex>& lock) {
+    held_ += send_buffer_;
+    ++held_messages_;
+    has_held_.store(true, std::memory_order_relaxed);
+    if (held_.size() >= kMaxHeldBytes) write_held(lock);
+}
+
+// What is held, as one message of send_encoded's (written now, or queued behind the writer thread's).
+void Client::write_held(std::unique_lock<std::mutex>& lock) {
+    if (held_.empty()) return;
+    send_buffer_.swap(held_);
+    held_.clear();
+    messages_sent_ += held_messages_ - 1;  // send_encoded counts one
+    held_messages_ = 0;
+    has_held_.store(false, std::memory_order_relaxed);
     send_encoded(lock);
 }
 
@@ -692,6 +722,10 @@ wire::Message Client::take_answer(std::uint32_t id) {
 
 template <class Pred>
 Client::WaitStatus Client::pump(Clock::time_point deadline, Pred pred) {
+    if (has_held_.load(std::memory_order_relaxed)) {  // a wait inside a batch: what it holds goes first
+        auto sending = lock_send();
+        write_held(sending);
+    }
     sends_since_wait_.store(0, std::memory_order_relaxed);  // the next message is a lone one: written at once
     std::unique_lock<std::mutex> lock(mu_);
     bool read_once = false;  // even with a deadline already past, look at the socket once (poll_now)

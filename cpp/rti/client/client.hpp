@@ -249,6 +249,13 @@ public:
     };
     SendCounts send_counts() const { return {messages_sent_.load(), write_calls_.load()}; }
 
+    // Held sends (RTIAmbassador.batch(), opt-in): while any hold is open, this federate's messages are kept
+    // and written together, in one system call, when the last hold is released or before the next wait for
+    // the gateway (a tick, a grant, an answer), whichever comes first; a batch over kMaxHeldBytes is written
+    // at once. An update and the time advance request after it then cost the gateway one read.
+    void hold_sends();
+    void release_sends();
+
     // The gateway's state as JSON (needs no join), with the events of its log numbered above `events_after`,
     // and every object instance unless `instances` is false.
     std::string query_status(std::uint64_t events_after = 0, bool instances = true);
@@ -546,6 +553,14 @@ private:
     std::condition_variable writer_room_;
     std::thread writer_;
     std::atomic<int> sends_since_wait_{0};  // reset by every read of the socket (pump)
+    // Held sends (hold_sends), under send_mu_ but has_held_: the frames kept, how many, and the holds open.
+    static constexpr std::size_t kMaxHeldBytes = 64 * 1024;
+    std::string held_;
+    std::uint64_t held_messages_ = 0;
+    int holds_ = 0;
+    std::atomic<bool> has_held_{false};  // read by every wait, which writes what is held
+    void hold_encoded(std::unique_lock<std::mutex>& lock);  // send_buffer_'s message, kept
+    void write_held(std::unique_lock<std::mutex>& lock);
     std::atomic<std::uint64_t> messages_sent_{0};
     std::atomic<std::uint64_t> write_calls_{0};
     bool member_ = false;  // under send_mu_: joined, and no resign sent since (federation_service() messages go)

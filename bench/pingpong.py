@@ -3,7 +3,9 @@ the same bytes back; one round trip is the benchmarked call (one-way = half of i
 
 Receive order: neither federate uses time management; the conductor ticks until the echo is reflected.
 TSO: both are regulating (lookahead 1) and constrained; the conductor updates at t+1 and waits in
-nextEventRequest, which grants it t+2 together with the echo (the peer answers at its grant + 1)."""
+nextEventRequest, which grants it t+2 together with the echo (the peer answers at its grant + 1).
+TSO batched: the same, each side's update and the nextEventRequest after it in RTIAmbassador.batch()
+(one write)."""
 
 from __future__ import annotations
 
@@ -20,8 +22,8 @@ FAR = 1e12
 
 class PingPong:
     def __init__(self, address: str, mode: str, size: int) -> None:
-        assert mode in ("ro", "tso")
-        self.tso = mode == "tso"
+        assert mode in ("ro", "tso", "tso-batched")
+        self.tso, self.batched = mode != "ro", mode == "tso-batched"
         self.payload = bytes(i % 251 for i in range(size))
         self.round_trips = 0
         self.time = 0.0  # the conductor's logical time (TSO)
@@ -45,10 +47,16 @@ class PingPong:
 
     def round_trip(self) -> None:
         """Send the payload and return once its echo has been reflected here."""
-        before = self.amb.reflected
-        self._send(self.payload)
-        if self.tso:
-            self.time = self.fed.rtia.next_event(FAR, timeout=60.0)
+        before, rtia = self.amb.reflected, self.fed.rtia
+        if self.batched:
+            with rtia.batch():
+                self._send(self.payload)
+                rtia.nextEventRequest(FAR)
+            self.time = rtia.await_grant(timeout=60.0)
+        else:
+            self._send(self.payload)
+            if self.tso:
+                self.time = rtia.next_event(FAR, timeout=60.0)
         deadline = time.monotonic() + 60.0
         while self.amb.reflected == before:
             if time.monotonic() > deadline:

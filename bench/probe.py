@@ -15,7 +15,8 @@ each process's CPU read from /proc over the measured rounds. Prints one JSON lin
                                                                    `taskset -c 0` to see them all on one core
 
 --unix runs fanout, large, lockstep and pingpong with the federates connected to the rtig over a Unix socket
-(rtig --unix, docs/networking.md) instead of TCP.
+(rtig --unix, docs/networking.md) instead of TCP; --batched runs lockstep with each federate's update and
+request in RTIAmbassador.batch().
 
 The rtig is bench_rtig()'s ($HLACORE_BENCH_RTIG overrides), the C++ floor program $HLACORE_TCP_FLOOR (default
 build/bench/tcp_floor, built by ./scripts/bench.sh). For an A/B, run each side with its own package on
@@ -44,6 +45,7 @@ from .throughput import Fanout
 
 
 _over_unix = False  # --unix
+_batched = False  # --batched
 
 
 @contextlib.contextmanager
@@ -128,7 +130,7 @@ def large(mib: float = 16, burst: int = 4, rounds: int = 6, show_pids: bool = Fa
 
 def lockstep(federates: int = 32, steps: int = 400, show_pids: bool = False) -> dict[str, Any]:
     with gateway() as (rtig, address):
-        f = Lockstep(address, federates, max_steps=steps + 60)
+        f = Lockstep(address, federates, max_steps=steps + 60, batched=_batched)
         try:
             for _ in range(50):  # warm-up
                 f.step()
@@ -201,9 +203,9 @@ PROBES: dict[str, Callable[..., dict[str, Any]]] = {"fanout": fanout, "large": l
 
 
 def main(argv: list[str]) -> int:
-    global _over_unix
-    show_pids, _over_unix = "--pids" in argv, "--unix" in argv
-    args = [a for a in argv if a not in ("--pids", "--unix")]
+    global _over_unix, _batched
+    show_pids, _over_unix, _batched = "--pids" in argv, "--unix" in argv, "--batched" in argv
+    args = [a for a in argv if a not in ("--pids", "--unix", "--batched")]
     if not args or args[0] not in PROBES:
         print(__doc__, file=sys.stderr)
         return 2

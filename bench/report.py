@@ -28,8 +28,9 @@ messages per second (rates), keyed as the bench tests record them:
     monitor.grant.2.off / .on               grant.rtig.2 through an rtig without / with hlacore.monitor watching
     busy.KEY                                KEY (grant.pure.2, grant.rtig.2, update.ro.8, update.tso.8) with
                                             every process busy polling (rtig --busy-poll, $HLACORE_BUSY_POLL_US);
-                                            busy.grant.batched.2: grant.rtig.2 with each step's update and
-                                            request in RTIAmbassador.batch()
+                                            busy.grant.batched.2, busy.update.tso-batched.8: grant.rtig.2 and
+                                            update.tso.8 with each update and the request after it in
+                                            RTIAmbassador.batch()
     busy.floor.cpp / .relay / .barrier      the C++ TCP round trip of 8 B with every process polling (tcp_floor
                                             --spin): direct, through a relay, the barrier
     unix.KEY                                over a Unix socket (rtig --unix): KEY = busy.* as above, large.S,
@@ -148,7 +149,10 @@ class Report:
                                "opt-in)", "grant.batched.2", "grant.floor", 2.5,
                                without=("busy.grant.rtig.2", "the time without the batch")),
                 self._busy_row("receive order one-way 8 B", "update.ro.8", "update.floor", 2.5, size=8),
-                self._busy_row("TSO one-way 8 B", "update.tso.8", "update.floor", 3.5, size=8)]
+                self._busy_row("TSO one-way 8 B", "update.tso.8", "update.floor", 3.5, size=8),
+                self._busy_row("the same, each side's update and request in one write (RTIAmbassador.batch(), opt-in)",
+                               "update.tso-batched.8", "update.floor", 3.5, size=8,
+                               without=("busy.update.tso.8", "the time without the batch"))]
         sections.append(("Busy polling (opt-in): every process polls 50 µs before it sleeps (rtig --busy-poll 50, "
                          "$HLACORE_BUSY_POLL_US=50)", _present(busy)))
         throughput = [self._rate_row("raw TCP 48 B messages, one send each", "throughput.floor", "")]
@@ -484,7 +488,7 @@ def expected_keys() -> list[str]:
     keys += [f"large.{kind}{size}" for size in LARGE_SIZES for kind in ("", "floor.py.", "floor.cpp.", "floor.relay.")]
     keys += ["cpu.32.rtig", "cpu.32.federate"]
     keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "grant.batched.2", "update.ro.8",
-                                        "update.tso.8")]
+                                        "update.tso.8", "update.tso-batched.8")]
     keys += [f"unix.busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
     keys += [f"unix.{kind}{size}" for size in LARGE_SIZES for kind in ("large.", "large.floor.cpp.")]
     keys += ["grant.floor.barrier", "busy.floor.cpp", "busy.floor.relay", "busy.floor.barrier", "unix.floor.cpp",

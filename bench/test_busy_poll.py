@@ -58,6 +58,6 @@ def run_ping_pong(measure, address: str, order: str, key: str) -> None:
         pingpong.close()
 
 
-@pytest.mark.parametrize("order", ["ro", "tso"])
+@pytest.mark.parametrize("order", ["ro", "tso", "tso-batched"])
 def test_update_ping_pong_busy(measure, busy_rtig: Rtig, order: str) -> None:
     run_ping_pong(measure, busy_rtig.address, order, f"busy.update.{order}.8")

@@ -34,9 +34,12 @@ class Ambassador(SyncAmbassador):
         (self.value,) = attributes.values()
 
 
-def receive(fed: Joined, amb: Ambassador, tso: bool) -> bytes:
-    """The next value reflected; in tso mode, with the federate granted to its timestamp."""
-    if tso:
+def receive(fed: Joined, amb: Ambassador, tso: bool, requested: bool = False) -> bytes:
+    """The next value reflected; in tso mode, with the federate granted to its timestamp (the
+    nextEventRequest already made if `requested`)."""
+    if tso and requested:
+        fed.rtia.await_grant(timeout=60.0)
+    elif tso:
         fed.rtia.next_event(FAR, timeout=60.0)
     deadline = time.monotonic() + 60.0
     while amb.value is None:
@@ -49,7 +52,7 @@ def receive(fed: Joined, amb: Ambassador, tso: bool) -> bytes:
 
 def main() -> None:
     address, federation, mode = sys.argv[1:4]
-    tso = mode == "tso"
+    tso, batched = mode != "ro", mode == "tso-batched"
     amb = Ambassador()
     fed = Joined(address, federation, "pong", amb)
     if tso:
@@ -57,9 +60,14 @@ def main() -> None:
     tick_until(fed.rtia, lambda: amb.discovered)
     say(ready=True)
     echoed = 0
-    while (value := receive(fed, amb, tso)) != STOP:
+    while (value := receive(fed, amb, tso, requested=batched and echoed > 0)) != STOP:
         time_arg = (float(fed.rtia.queryFederateTime()) + 1.0,) if tso else ()
-        fed.rtia.updateAttributeValues(fed.obj, {fed.location: value}, "", *time_arg)
+        if batched:  # the echo and the next request in one write (RTIAmbassador.batch)
+            with fed.rtia.batch():
+                fed.rtia.updateAttributeValues(fed.obj, {fed.location: value}, "", *time_arg)
+                fed.rtia.nextEventRequest(FAR)
+        else:
+            fed.rtia.updateAttributeValues(fed.obj, {fed.location: value}, "", *time_arg)
         echoed += 1
     say(echoed=echoed)
     fed.resign()

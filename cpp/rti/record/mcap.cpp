@@ -98,10 +98,14 @@ void Writer::put_channel(std::string& out, const Channel& channel) {
     put_record(out, kChannel, content);
 }
 
+std::string Writer::write_error() const {
+    return "cannot write the recording '" + path_ + "': " + std::strerror(errno);
+}
+
 void Writer::write(std::string_view bytes) {
     if (!file_) throw std::runtime_error("the recording '" + path_ + "' is closed");
     if (std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size())
-        throw std::runtime_error("cannot write the recording '" + path_ + "': " + std::strerror(errno));
+        throw std::runtime_error(write_error());
     offset_ += bytes.size();
 }
 
@@ -233,10 +237,10 @@ std::string Writer::write_out(SealedChunk& chunk) {
     std::memcpy(&chunk.head[1 + 8 + 8 + 8 + 8], &crc, sizeof crc);
     for (const std::string* part : {&chunk.head, &chunk.records, &chunk.indexes}) {
         if (std::fwrite(part->data(), 1, part->size(), file_) != part->size())
-            return "cannot write the recording '" + path_ + "': " + std::strerror(errno);
+            return write_error();
     }
     // stdio keeps small writes in its buffer: a full disk shows only here.
-    if (std::fflush(file_) != 0) return "cannot write the recording '" + path_ + "': " + std::strerror(errno);
+    if (std::fflush(file_) != 0) return write_error();
     return {};
 }
 
@@ -325,7 +329,7 @@ void Writer::close() {
     std::FILE* file = file_;
     file_ = nullptr;
     if (std::fclose(file) != 0)
-        throw std::runtime_error("cannot write the recording '" + path_ + "': " + std::strerror(errno));
+        throw std::runtime_error(write_error());
 }
 
 }  // namespace hlacore::mcap

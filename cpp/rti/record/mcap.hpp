@@ -4,7 +4,7 @@
 // carry a CRC-32 of their records, which readers check.
 //
 // A full chunk goes to a thread of the writer's own, which computes its CRC and writes it out: in the
-// gateway's loop those were a third of what recording cost (docs/performance.md). At most kQueuedChunks wait
+// gateway's loop those were a third of a recording gateway's CPU (docs/performance.md). At most kQueuedChunks wait
 // for that thread; message() waits when they do, so memory stays bounded by a few chunks.
 //
 // Not thread-safe: one writer per file, called from one thread at a time. Written from the MCAP
@@ -84,6 +84,7 @@ private:
     void stop_file_thread();
     void file_thread();
     std::string write_out(SealedChunk& chunk);  // on the file thread; "" or what went wrong
+    std::string write_error() const;            // why the last write failed (errno), naming the file
 
     std::string path_;
     std::FILE* file_ = nullptr;

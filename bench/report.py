@@ -30,7 +30,9 @@ messages per second (rates), keyed as the bench tests record them:
                                             every process busy polling (rtig --busy-poll, $HLACORE_BUSY_POLL_US);
                                             busy.grant.batched.2, busy.update.tso-batched.8: grant.rtig.2 and
                                             update.tso.8 with each update and the request after it in
-                                            RTIAmbassador.batch()
+                                            RTIAmbassador.batch(); busy.grant.cpp.2, busy.update.ro-cpp.8:
+                                            grant.rtig.2 and update.ro.8 with bench/rtis's C++ program as the
+                                            federates
     busy.floor.cpp / .relay / .barrier      the C++ TCP round trip of 8 B with every process polling (tcp_floor
                                             --spin): direct, through a relay, the barrier
     unix.KEY                                over a Unix socket (rtig --unix): KEY = busy.* as above, large.S,
@@ -148,7 +150,12 @@ class Report:
                 self._busy_row("the same, each federate's update and request in one write (RTIAmbassador.batch(), "
                                "opt-in)", "grant.batched.2", "grant.floor", 2.5,
                                without=("busy.grant.rtig.2", "the time without the batch")),
+                self._busy_row("the same, bench/rtis's C++ program as both federates (no Python; the update and the "
+                               "request in two writes)", "grant.cpp.2", "grant.floor", 2.5,
+                               without=("busy.grant.rtig.2", "the Python federates' time")),
                 self._busy_row("receive order one-way 8 B", "update.ro.8", "update.floor", 2.5, size=8),
+                self._busy_row("the same, bench/rtis's C++ program as both federates (no Python)", "update.ro-cpp.8",
+                               "update.floor", 2.5, size=8, without=("busy.update.ro.8", "the Python federates' time")),
                 self._busy_row("TSO one-way 8 B", "update.tso.8", "update.floor", 3.5, size=8),
                 self._busy_row("the same, each side's update and request in one write (RTIAmbassador.batch(), opt-in)",
                                "update.tso-batched.8", "update.floor", 3.5, size=8,
@@ -487,8 +494,8 @@ def expected_keys() -> list[str]:
     keys += [f"monitor.grant.2.{side}" for side in ("off", "on")]
     keys += [f"large.{kind}{size}" for size in LARGE_SIZES for kind in ("", "floor.py.", "floor.cpp.", "floor.relay.")]
     keys += ["cpu.32.rtig", "cpu.32.federate"]
-    keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "grant.batched.2", "update.ro.8",
-                                        "update.tso.8", "update.tso-batched.8")]
+    keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "grant.batched.2", "grant.cpp.2", "update.ro.8",
+                                        "update.ro-cpp.8", "update.tso.8", "update.tso-batched.8")]
     keys += [f"unix.busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "update.ro.8", "update.tso.8")]
     keys += [f"unix.{kind}{size}" for size in LARGE_SIZES for kind in ("large.", "large.floor.cpp.")]
     keys += ["grant.floor.barrier", "busy.floor.cpp", "busy.floor.relay", "busy.floor.barrier", "unix.floor.cpp",

@@ -56,10 +56,11 @@ def _wait_listening(port: int, child: Child, timeout: float = 10.0) -> None:
 
 
 class Server:
-    """One RTI's server on 127.0.0.1, with the federation name and environment its federates use."""
+    """One RTI's server on 127.0.0.1, with the federation name and environment its federates use;
+    `rtig_args` are hlacore's rtig's (bench_rtig()'s, --busy-poll US for one)."""
 
-    def __init__(self, rti: str) -> None:
-        assert rti in RTIS, rti
+    def __init__(self, rti: str, *rtig_args: str) -> None:
+        assert rti in RTIS and (rti == "hlacore" or not rtig_args), (rti, rtig_args)
         self.rti = rti
         self.env = dict(os.environ)
         self.address = ""  # hlacore's gateway, for its Python federates
@@ -67,7 +68,7 @@ class Server:
         self._child: Optional[Child] = None
         self._dir = tempfile.TemporaryDirectory(prefix=f"rti-{rti}-")
         if rti == "hlacore":
-            self._rtig = bench_rtig()
+            self._rtig = bench_rtig(*rtig_args)
             self.federation = "Bench"
             self.address = self._rtig.address
             self.env["HLACORE_RTIG"] = self.address

@@ -243,6 +243,11 @@ def test_report_renders_every_figure_with_its_ratio_and_target() -> None:
             "(1.00×); 1.00× the polling barrier; 1.00× the time without |") in text
     assert ("| TSO one-way 8 B | 100.0 µs | 150.0 µs | 1.00× | 1.00× | ≤ 3.5× the polling C++ one-way: met (1.00×); "
             "1.00× the polling relay; 1.00× the time without |") in text
+    assert ("| the same, bench/rtis's C++ program as both federates (no Python; the update and the request in two "
+            "writes) | 200.0 µs | 300.0 µs | 1.00× | 1.00× | ≤ 2.5× the polling C++ round trip: met (1.00×); 1.00× the "
+            "polling barrier; 1.00× the Python federates' time |") in text
+    assert ("| the same, bench/rtis's C++ program as both federates (no Python) | 100.0 µs | 150.0 µs | 1.00× | 1.00× | "
+            "≤ 2.5× the polling C++ one-way: met (1.00×); 1.00× the polling relay; 1.00× the Python federates' time |") in text
     assert "| raw round trip 8 B, C++ over a Unix socket | 200.0 µs | 300.0 µs |  | 1.00× TCP's |  |" in text
     assert ("| raw round trip 8 B, C++ over a Unix socket, both ends polling | 200.0 µs | 300.0 µs |  | 1.00× the "
             "sleeping one |  |") in text
@@ -265,10 +270,15 @@ def test_the_monitor_cost_bench_watches_with_a_connected_page(rtig) -> None:
 
 @pytest.mark.parametrize("workload, federates, n, m", [("lockstep", 3, 20, 2), ("pingpong", 2, 20, 2),
                                                       ("throughput", 2, 500, 2)])
-def test_three_rti_program_on_hlacore(workload: str, federates: int, n: int, m: int) -> None:
-    """bench/rtis/hla13_bench.cpp (built by ./scripts/test.sh against the installed hlacore) on each workload;
-    its federates check what they receive and exit 0."""
-    server = Server("hlacore")
+@pytest.mark.parametrize("busy", [False, True], ids=["sleeping", "polling"])
+def test_three_rti_program_on_hlacore(monkeypatch: pytest.MonkeyPatch, workload: str, federates: int, n: int, m: int,
+                                      busy: bool) -> None:
+    """bench/rtis/hla13_bench.cpp (built by ./scripts/test.sh against the installed hlacore) on each workload,
+    and with every process polling as bench/test_busy_poll.py runs it; its federates check what they receive
+    and exit 0."""
+    if busy:
+        monkeypatch.setenv("HLACORE_BUSY_POLL_US", "50")
+    server = Server("hlacore", *(["--busy-poll", "50"] if busy else []))
     try:
         result = run(server, workload, federates, n, m, timeout=60.0, binary=cpp_federate("hla13_bench"))
     finally:

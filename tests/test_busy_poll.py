@@ -6,6 +6,7 @@ tests/test_liveness.py runs every blocking call both ways."""
 from __future__ import annotations
 
 import pathlib
+import threading
 import time
 from typing import Iterator
 
@@ -15,6 +16,7 @@ import hlacore
 from hlacore import rti
 
 from conftest import Conductor, running_rtig
+from test_datagrams import pair
 from test_time_processes import lockstep_peers
 
 
@@ -71,3 +73,53 @@ def test_a_bad_busy_poll_variable_is_refused(inprocess_gateway: hlacore.Gateway,
     monkeypatch.setenv("HLACORE_BUSY_POLL_US", text)
     with pytest.raises(rti.RTIinternalError, match="HLACORE_BUSY_POLL_US|busy polling"):
         rti.RTIAmbassador(inprocess_gateway.address)
+
+
+def test_a_datagram_that_comes_during_a_spin_is_delivered_before_a_later_stream_message(tmp_path: pathlib.Path) -> None:
+    """A spin reads the stream as it polls and looks at the datagram socket every few turns: a best-effort update
+    that lands mid-spin is delivered first, not after the reliable one that comes 30 ms later (the spin, 100 ms,
+    would otherwise find only the stream's)."""
+    with running_rtig(tmp_path) as server, pair(server.address, busy_poll_us=100_000) as p:
+        def send_later() -> None:
+            time.sleep(0.03)
+            p.alice.updateAttributeValues(p.obj, {p.sonar: b"datagram"}, "")
+            time.sleep(0.03)
+            p.alice.updateAttributeValues(p.obj, {p.location: b"stream"}, "")
+
+        sender = threading.Thread(target=send_later)
+        sender.start()
+        deadline = time.monotonic() + 10.0
+        while len(p.bob_amb.reflections) < 2 and time.monotonic() < deadline:
+            p.bob.tick(1.0, 1.0)
+        sender.join()
+        assert [list(values.values()) for values, _ in p.bob_amb.reflections] == [[b"datagram"], [b"stream"]]
+        assert p.bob.datagram_status()["received"] == 1
+
+
+def test_a_busy_stream_does_not_keep_datagrams_waiting(tmp_path: pathlib.Path) -> None:
+    """Best-effort and reliable updates interleaved, 300 of each, to a federate that busy-polls: every one arrives,
+    the best-effort ones as datagrams."""
+    with running_rtig(tmp_path, "--busy-poll", "50") as server, pair(server.address, busy_poll_us=50) as p:
+        for i in range(300):
+            p.alice.updateAttributeValues(p.obj, {p.sonar: b"s%d" % i}, "")
+            p.alice.updateAttributeValues(p.obj, {p.location: b"l%d" % i}, "")
+        p.wait(lambda: len(p.bob_amb.reflections) == 600)
+        received = [v for values, _ in p.bob_amb.reflections for v in values.values()]
+        assert sorted(received) == sorted([b"s%d" % i for i in range(300)] + [b"l%d" % i for i in range(300)])
+        assert p.bob.datagram_status()["received"] == 300
+
+
+def test_a_gateway_that_closes_during_a_spin_is_a_lost_connection_at_the_call() -> None:
+    """The spin's read finds the end of the stream: the waiting tick raises at once, naming it."""
+    gateway = hlacore.Gateway(port=0)
+    rtia = rti.RTIAmbassador(gateway.address, busy_poll_us=100_000)
+    closer = threading.Timer(0.05, gateway.stop)
+    closer.start()
+    start = time.monotonic()
+    try:
+        with pytest.raises(rti.RTIinternalError, match="closed the connection"):
+            rtia.tick(5.0, 5.0)
+    finally:
+        closer.join()
+        gateway.stop()
+    assert time.monotonic() - start < 4.0  # not the tick's 5 s: the close ended it

@@ -431,7 +431,16 @@ private:
     // What one read takes from the socket in small frames: about 3000 reflections of a small value, within kKept.
     static constexpr std::size_t kReadBatchBytes = 128u << 10;
     WaitStatus read_socket(Clock::time_point deadline, Arrivals& got);
-    int wait_readable(pollfd* fds, nfds_t count, const timespec* timeout, bool& sliced);
+    // A busy-polling spin that reads the stream as it polls (wait_readable): where it reads, and what the read
+    // that found data returned, for read_socket's loop to take as its first read.
+    struct SpinRead {
+        char* into = nullptr;  // in_.room(want), made on the spin's first reading turn
+        std::size_t want = 0;
+        bool done = false;  // the spin read: `result` and `error` are that recv's
+        ssize_t result = 0;
+        int error = 0;
+    };
+    int wait_readable(pollfd* fds, nfds_t count, const timespec* timeout, bool& sliced, SpinRead* spin_read);
     void file(Arrivals& got);  // under mu_; clears got
     void write_recorded(const wire::Message& m);  // under mu_
     // Best effort over UDP (client/datagrams.cpp): proving the path at connect (falling back to TCP with one

@@ -5,11 +5,16 @@ them for one write at its end or before a wait. Both gateways."""
 
 from __future__ import annotations
 
+import gc
 import os
 import pathlib
 import signal
+import socket
 import time
+import weakref
 from typing import Any
+
+import pytest
 
 import hlacore.rti as rti
 from hlacore.status import status
@@ -174,3 +179,26 @@ def test_a_large_batch_is_written_before_it_grows_further(federation: Any) -> No
     assert counts(pub) == (before[0] + 5, before[1] + 2)
     tick_until(lambda: len(sub.amb.named("reflectAttributeValues")) == 5, sub.rtia)
     assert [args[1][location] for args in sub.amb.named("reflectAttributeValues")] == [value] * 4 + [b"last"]
+
+
+def test_a_batch_keeps_its_ambassador_and_raises_a_failed_write_typed_at_its_end(inprocess_gateway: Any) -> None:
+    """The block's object holds the ambassador it was made from (which lives as long as the block does), and a
+    write that fails at the block's end (the socket shut for writing under the client) raises the client's own
+    error there."""
+    rtia = rti.RTIAmbassador(inprocess_gateway.address)
+    rtia.createFederationExecution("Batched", ROBOT_FED)
+    rtia.joinFederationExecution("f", "Batched", rti.FederateAmbassador())
+    held = weakref.ref(rtia)
+    batch, fileno = rtia.batch(), rtia.fileno()
+    del rtia
+    gc.collect()
+    ambassador = held()
+    assert ambassador is not None
+    with pytest.raises(rti.RTIinternalError, match="lost"):
+        with batch:
+            ambassador.enableAsynchronousDelivery()  # held until the block ends
+            with socket.socket(fileno=os.dup(fileno)) as s:
+                s.shutdown(socket.SHUT_WR)
+    del ambassador, batch
+    gc.collect()
+    assert held() is None

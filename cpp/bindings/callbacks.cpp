@@ -260,13 +260,21 @@ bool wait_for_callback(Client& c, double timeout_s) {
     }
 }
 
-// rti.py's await_grant: delivers what is ready up to the grant, waiting for the socket in between (the GIL
+// self._federate_ambassador (set by joinFederationExecution in rti.py), None before: read from the Python
+// object the call was made on, rather than found again from the client (pybind11's instance map).
+py::object federate_ambassador(py::handle self) {
+    static const py::object& name = *new py::object(py::reinterpret_steal<py::object>(PyUnicode_InternFromString("_federate_ambassador")));
+    py::object ambassador = optional_method(self, name);
+    return ambassador ? ambassador : py::none();
+}
+
+// RTIAmbassador.await_grant: delivers what is ready up to the grant, waiting for the socket in between (the GIL
 // released, Ctrl-C interrupts), until the pending time advance is granted; TimeoutError after timeout_s.
 // Here rather than in Python: it runs once per step of every time-managed federate.
-double await_grant(Client& c, std::optional<double> timeout_s) {
+double await_grant(py::handle self, std::optional<double> timeout_s) {
+    Client& c = client_of(self);
     if (!c.time_advance_pending()) throw RtiError(ErrorCode::TimeAdvanceWasNotInProgress, "no time advance is pending");
-    const py::object self = py::cast(&c, py::return_value_policy::reference);
-    const py::object ambassador = py::getattr(self, "_federate_ambassador", py::none());
+    const py::object ambassador = federate_ambassador(self);
     const auto start = Client::Clock::now();
     for (;;) {
         while (c.time_advance_pending() && dispatch(c, ambassador, true, -1.0) > 0) {
@@ -285,12 +293,19 @@ double await_grant(Client& c, std::optional<double> timeout_s) {
     }
 }
 
+// A time advance request of `kind`, then await_grant.
+template <AdvanceKind kind>
+double advance_and_await(py::handle self, double time, std::optional<double> timeout_s) {
+    client_of(self).time_advance(kind, time);
+    return await_grant(self, timeout_s);
+}
+
 // HLA 1.3 tick: all that is ready (no window), or wait up to `minimum` for a first callback, then deliver
 // for up to `maximum`, reading what arrives meanwhile. Callbacks go to self._federate_ambassador (set by
 // joinFederationExecution in rti.py). Here rather than in Python: it runs once per reflection.
-bool tick(Client& c, std::optional<double> minimum, std::optional<double> maximum) {
-    const py::object self = py::cast(&c, py::return_value_policy::reference);  // the existing Python object
-    const py::object ambassador = py::getattr(self, "_federate_ambassador", py::none());
+bool tick(py::handle self, std::optional<double> minimum, std::optional<double> maximum) {
+    Client& c = client_of(self);
+    const py::object ambassador = federate_ambassador(self);
     const auto poll = [&c] {
         py::gil_scoped_release release;
         c.poll_now();
@@ -316,6 +331,9 @@ bool tick(Client& c, std::optional<double> minimum, std::optional<double> maximu
 }
 
 const Doc kDocs[] = {
+    {"advance_to", "timeAdvanceRequest(time), then deliver callbacks until the grant is delivered; returns the grant time. Beyond PyHLA (asyncio forms in hlacore.aio). Callbacks before the grant (the timestamped messages up to time) are delivered to the federate ambassador as usual, the grant included; callbacks queued behind it wait for the next tick. timeout (seconds, default none) raises TimeoutError with the request still pending."},
+    {"next_event", "nextEventRequest(time), then deliver callbacks until granted; returns the grant time (the earliest of time and the next timestamped message). timeout as in advance_to."},
+    {"await_grant", "Deliver callbacks until the pending time advance is granted; returns the federate's new time. For a request made with any of the five PyHLA calls. Raises TimeAdvanceWasNotInProgress when no request is pending and TimeoutError when timeout seconds pass first."},
     {"tick", "Evoke callbacks on this thread (HLA 1.3 §2.2 tick). tick() delivers the callbacks that are ready and returns at once; a read takes up to 128 KiB of small messages, so a burst larger than that takes several calls. tick(minimum, maximum) waits up to minimum seconds for the first callback (the GIL released; Ctrl-C interrupts it), then keeps delivering what is ready for at most maximum seconds. Returns True when callbacks are still pending, queued or still in the socket: `while tick(): pass` delivers all that had arrived. An exception raised by a callback propagates with its traceback; the callbacks not yet delivered stay queued for the next tick."},
 };
 
@@ -327,7 +345,11 @@ void bind_callbacks(Ambassador& rtia) {
         .def("_poll", &Client::poll_now, py::call_guard<py::gil_scoped_release>())
         .def("_wait", &wait_for_callback, py::arg("timeout"))
         .def("_has_callbacks", &Client::has_callbacks)
-        .def("_await_grant", &await_grant, py::arg("timeout"))
+        .def("await_grant", &await_grant, py::arg("timeout") = py::none())
+        .def("advance_to", &advance_and_await<AdvanceKind::TimeAdvanceRequest>, py::arg("time"),
+             py::arg("timeout") = py::none())
+        .def("next_event", &advance_and_await<AdvanceKind::NextEventRequest>, py::arg("time"),
+             py::arg("timeout") = py::none())
         .def("_dispatch", &dispatch, py::arg("ambassador"), py::arg("stop_after_grant"), py::arg("max_seconds"));
 }
 

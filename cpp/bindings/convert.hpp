@@ -469,3 +469,13 @@ public:
     }
 };
 }  // namespace pybind11::detail
+
+namespace hlacore::bindings {
+// The client of an ambassador given as its Python object, for a method that needs the object itself too (its
+// federate ambassador); read where pybind11 holds it, as an argument's is.
+inline Client& client_of(py::handle ambassador) {
+    py::detail::make_caster<Client> caster;
+    if (!caster.load(ambassador, true)) throw py::type_error("expected an RTIAmbassador");
+    return caster;
+}
+}  // namespace hlacore::bindings

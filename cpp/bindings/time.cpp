@@ -12,10 +12,67 @@ void advance(Client& c, double time) {
 
 // What `with rtia.batch():` enters (Client::hold_sends): in C++, because a busy-polled lockstep's step pays
 // for every µs of it (16.9 µs with a contextlib context manager, 16.0 with a Python class, 14.7 with the two
-// calls made directly, 15.1 with this: docs/performance.md, "Batched sends").
-struct Batch {
+// calls made directly: docs/performance.md, "Batched sends"); and a plain CPython type, because a pybind11
+// instance (made, registered in pybind11's instance map, kept alive with its ambassador, freed) was half of
+// the 0.47 µs a block cost. It holds its ambassador, whose client it holds the sends of.
+struct BatchObject {
+    PyObject_HEAD
+    PyObject* ambassador;  // a strong reference: the client outlives the block
     Client* client;
 };
+
+PyTypeObject* batch_type = nullptr;  // made once by bind_time(), kept for the interpreter's life
+
+// `call` on the block's client; its exceptions become Python's as pybind11's own bindings raise them.
+template <void (Client::*call)()>
+PyObject* on_client(PyObject* self) {
+    try {
+        (reinterpret_cast<BatchObject*>(self)->client->*call)();
+    } catch (...) {
+        py::detail::try_translate_exceptions();
+        return nullptr;
+    }
+    Py_RETURN_NONE;
+}
+
+PyObject* batch_enter(PyObject* self, PyObject*) { return on_client<&Client::hold_sends>(self); }
+
+PyObject* batch_exit(PyObject* self, PyObject* const*, Py_ssize_t) { return on_client<&Client::release_sends>(self); }
+
+void batch_dealloc(PyObject* self) {
+    PyTypeObject* type = Py_TYPE(self);
+    Py_XDECREF(reinterpret_cast<BatchObject*>(self)->ambassador);
+    type->tp_free(self);
+    Py_DECREF(type);  // a heap type's instances hold it
+}
+
+PyMethodDef batch_methods[] = {
+    {"__enter__", batch_enter, METH_NOARGS, "Hold the federate's messages (Client::hold_sends)."},
+    {"__exit__", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(batch_exit)), METH_FASTCALL,
+     "Write what the block held, unless an outer block still holds."},
+    {nullptr, nullptr, 0, nullptr},
+};
+
+PyType_Slot batch_slots[] = {
+    {Py_tp_doc, const_cast<char*>("What `with rtia.batch():` enters (RTIAmbassadorBase.batch).")},
+    {Py_tp_dealloc, reinterpret_cast<void*>(batch_dealloc)},
+    {Py_tp_methods, batch_methods},
+    {0, nullptr},
+};
+
+// Made by batch() only (Py_TPFLAGS_DISALLOW_INSTANTIATION).
+PyType_Spec batch_spec = {"hlacore._core.Batch", sizeof(BatchObject), 0,
+                          Py_TPFLAGS_DEFAULT | Py_TPFLAGS_DISALLOW_INSTANTIATION, batch_slots};
+
+py::object batch(py::handle self) {
+    Client& client = client_of(self);
+    PyObject* made = batch_type->tp_alloc(batch_type, 0);
+    if (!made) throw py::error_already_set();
+    auto* b = reinterpret_cast<BatchObject*>(made);
+    b->ambassador = py::handle(self).inc_ref().ptr();
+    b->client = &client;
+    return py::reinterpret_steal<py::object>(made);
+}
 
 // What help() says of each service of the group (convert.hpp: Documented).
 const Doc kDocs[] = {
@@ -46,9 +103,9 @@ const Doc kDocs[] = {
 }  // namespace
 
 void bind_time(Ambassador& rtia) {
-    py::class_<Batch>(rtia, "Batch", "What `with rtia.batch():` enters (RTIAmbassadorBase.batch).")
-        .def("__enter__", [](Batch& b) { b.client->hold_sends(); })
-        .def("__exit__", [](Batch& b, const py::args&) { b.client->release_sends(); });
+    batch_type = reinterpret_cast<PyTypeObject*>(PyType_FromSpec(&batch_spec));
+    if (!batch_type) throw py::error_already_set();
+    rtia.attr("Batch") = py::handle(reinterpret_cast<PyObject*>(batch_type));
     Documented(rtia, kDocs)
         .def("enableTimeRegulation", &Client::enable_time_regulation, py::arg("federateTime"), py::arg("lookahead"))
         .def("disableTimeRegulation", &Client::disable_time_regulation)
@@ -72,7 +129,7 @@ void bind_time(Ambassador& rtia) {
         .def("_lowest_sendable_time", &Client::lowest_sendable_time)
         .def("_status", &Client::query_status, py::arg("events_after") = 0, py::arg("instances") = true,
              py::call_guard<py::gil_scoped_release>())
-        .def("batch", [](Client& c) { return Batch{&c}; }, py::keep_alive<0, 1>())
+        .def("batch", &batch)
         .def("_send_counts",
              [](const Client& c) {
                  const Client::SendCounts n = c.send_counts();

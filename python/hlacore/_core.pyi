@@ -643,8 +643,6 @@ class RTIAmbassadorBase:
             ...
     def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, secret_file: str = '', datagrams: bool = True, federation_secret_file: str = '', tls: bool = False, tls_ca: str = '', busy_poll_us: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
         ...
-    def _await_grant(self, timeout: typing.SupportsFloat | typing.SupportsIndex | None) -> float:
-        ...
     def _create(self, arg0: str, arg1: str, arg2: str) -> None:
         ...
     def _datagram_fileno(self) -> int:
@@ -677,9 +675,17 @@ class RTIAmbassadorBase:
         ...
     def _wait(self, timeout: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         ...
+    def advance_to(self, time: typing.SupportsFloat | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+        """
+        timeAdvanceRequest(time), then deliver callbacks until the grant is delivered; returns the grant time. Beyond PyHLA (asyncio forms in hlacore.aio). Callbacks before the grant (the timestamped messages up to time) are delivered to the federate ambassador as usual, the grant included; callbacks queued behind it wait for the next tick. timeout (seconds, default none) raises TimeoutError with the request still pending.
+        """
     def associateRegionForUpdates(self, region: RegionHandle, object: ObjectHandle, attributes: collections.abc.Sequence[AttributeHandle]) -> None:
         """
         This federate's updates of these attributes of the object reach only the subscribers whose regions overlap `region` (HLA 1.3 §9.6); replaces the attribute's previous update region. Raises ObjectNotKnown, AttributeNotDefined, RegionNotKnown, InvalidRegionContext (an attribute of another routing space).
+        """
+    def await_grant(self, timeout: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+        """
+        Deliver callbacks until the pending time advance is granted; returns the federate's new time. For a request made with any of the five PyHLA calls. Raises TimeAdvanceWasNotInProgress when no request is pending and TimeoutError when timeout seconds pass first.
         """
     def attributeOwnershipAcquisition(self, object: ObjectHandle, attributes: collections.abc.Sequence[AttributeHandle], tag: typing.Any) -> None:
         """
@@ -888,6 +894,10 @@ class RTIAmbassadorBase:
     def negotiatedAttributeOwnershipDivestiture(self, object: ObjectHandle, attributes: collections.abc.Sequence[AttributeHandle], tag: typing.Any) -> None:
         """
         Offer owned attributes (HLA 1.3 §7.3): the federates publishing them get requestAttributeOwnershipAssumption; this federate owns them until attributeOwnershipDivestitureNotification. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, AttributeAlreadyBeingDivested.
+        """
+    def next_event(self, time: typing.SupportsFloat | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+        """
+        nextEventRequest(time), then deliver callbacks until granted; returns the grant time (the earliest of time and the next timestamped message). timeout as in advance_to.
         """
     def nextEventRequest(self, theTime: typing.SupportsFloat | typing.SupportsIndex) -> None:
         """

@@ -656,31 +656,8 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         that stopped the recording, if one did."""
         return int(self._stop_recording())
 
-    # ---- blocking time advance (beyond PyHLA; asyncio forms in hlacore.aio) ----
-
-    def advance_to(self, time: float, timeout: Optional[float] = None) -> float:
-        """``timeAdvanceRequest(time)``, then tick until the grant is delivered; returns the grant time.
-
-        Callbacks before the grant (the timestamped messages up to ``time``) are delivered to the federate
-        ambassador as usual, the grant included; callbacks queued behind it wait for the next tick.
-        ``timeout`` (seconds, default none) raises :class:`TimeoutError` with the request still pending.
-        """
-        self.timeAdvanceRequest(time)
-        return self.await_grant(timeout)
-
-    def next_event(self, time: float, timeout: Optional[float] = None) -> float:
-        """``nextEventRequest(time)``, then tick until granted; returns the grant time (the earliest of
-        ``time`` and the next timestamped message). ``timeout`` as in :meth:`advance_to`."""
-        self.nextEventRequest(time)
-        return self.await_grant(timeout)
-
-    def await_grant(self, timeout: Optional[float] = None) -> float:
-        """Tick until the pending time advance is granted; returns the federate's new time.
-
-        For a request made with any of the five PyHLA calls. Raises :class:`TimeAdvanceWasNotInProgress`
-        when no request is pending and :class:`TimeoutError` when ``timeout`` seconds pass first.
-        """
-        return self._await_grant(timeout)
+    # ---- blocking time advance (beyond PyHLA; asyncio forms in hlacore.aio): advance_to, next_event and
+    # await_grant are _core's (cpp/bindings/callbacks.cpp), run once per step of every time-managed federate ----
 
     def _deliver_until(self, delivered: Callable[[], bool], timeout: Optional[float], what: str) -> None:
         """Call `delivered` (it delivers what is ready) until it returns True, waiting for the socket in

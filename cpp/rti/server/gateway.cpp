@@ -195,7 +195,7 @@ bool read_file(const std::string& path, std::string& text, std::size_t limit) {
 
 // The gateway's epoll wrapper (gateway.hpp).
 
-EventLoop::EventLoop() : epoll_fd_(epoll_create1(EPOLL_CLOEXEC)), ready_(256) {
+EventLoop::EventLoop() : epoll_fd_(epoll_create1(EPOLL_CLOEXEC)) {
     if (epoll_fd_ < 0) fail("epoll_create1");
 }
 
@@ -217,18 +217,15 @@ void EventLoop::modify(int fd, std::uint32_t events) {
 
 void EventLoop::remove(int fd) { epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, fd, nullptr); }
 
-const std::vector<epoll_event>& EventLoop::wait(int timeout_ms, std::chrono::microseconds spin) {
-    ready_.resize(256);
-    const int size = static_cast<int>(ready_.size());
+EventLoop::Ready EventLoop::wait(int timeout_ms, std::chrono::microseconds spin) {
     int n = 0;
-    if (spin.count() > 0 && timeout_ms != 0) n = busy_poll(spin, [&] { return epoll_wait(epoll_fd_, ready_.data(), size, 0); });
-    if (n == 0) n = epoll_wait(epoll_fd_, ready_.data(), size, timeout_ms);
+    if (spin.count() > 0 && timeout_ms != 0) n = busy_poll(spin, [&] { return epoll_wait(epoll_fd_, ready_, kMaxEvents, 0); });
+    if (n == 0) n = epoll_wait(epoll_fd_, ready_, kMaxEvents, timeout_ms);
     if (n < 0) {
         if (errno != EINTR) fail("epoll_wait");
         n = 0;
     }
-    ready_.resize(static_cast<std::size_t>(n));
-    return ready_;
+    return {ready_, ready_ + n};
 }
 
 Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
@@ -323,7 +320,7 @@ void Gateway::run() {
             writes_pending |= c->write_armed;
         }
         const bool recording_pending = recorder_ && recorder_->pending();  // written out within half a second
-        const auto& events =
+        const EventLoop::Ready events =
             loop_.wait(partial_pending || writes_pending || !paused_.empty() || recording_pending || large_buffers_kept_
                            ? 250 : -1,
                        std::chrono::microseconds(options_.busy_poll_us));

@@ -36,13 +36,21 @@ public:
     void modify(int fd, std::uint32_t events);
     void remove(int fd);
 
-    // Waits up to timeout_ms (-1: forever) and returns the ready events; EINTR yields an empty list. With
-    // `spin`, polls without sleeping for up to that long first (rti/busy_poll.hpp).
-    const std::vector<epoll_event>& wait(int timeout_ms, std::chrono::microseconds spin = {});
+    // The events of one wait, in the loop's own array (until the next wait).
+    struct Ready {
+        const epoll_event* first;
+        const epoll_event* last;
+        const epoll_event* begin() const { return first; }
+        const epoll_event* end() const { return last; }
+    };
+    // Waits up to timeout_ms (-1: forever) and returns the ready events; EINTR yields none. With `spin`, polls
+    // without sleeping for up to that long first (rti/busy_poll.hpp).
+    Ready wait(int timeout_ms, std::chrono::microseconds spin = {});
 
 private:
+    static constexpr int kMaxEvents = 256;
     int epoll_fd_;
-    std::vector<epoll_event> ready_;
+    epoll_event ready_[kMaxEvents];  // not a vector sized per wait: a busy-polling turn zeroed all of it
 };
 
 struct GatewayOptions {

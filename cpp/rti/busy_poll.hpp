@@ -25,9 +25,12 @@ inline std::string busy_poll_error(long long us) {
 
 // Calls `poll` (non-blocking: > 0 ready, 0 nothing yet, < 0 an error) until it reports something or `spin`
 // has passed, yielding the core between calls so that a peer sharing it runs. Returns the last result.
+// `yield_first`: yield before the first call too, for a process that has just written what it now waits the
+// answer to: the answer cannot be there yet, and the process that makes it may be waiting for this core.
 template <class Poll>
-int busy_poll(std::chrono::microseconds spin, Poll poll) {
+int busy_poll(std::chrono::microseconds spin, Poll poll, bool yield_first = false) {
     const auto until = std::chrono::steady_clock::now() + spin;
+    if (yield_first) sched_yield();
     for (;;) {
         const int n = poll();
         if (n != 0 || std::chrono::steady_clock::now() >= until) return n;

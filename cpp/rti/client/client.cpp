@@ -780,6 +780,9 @@ int Client::wait_readable(pollfd* p, nfds_t count, const timespec* timeout, bool
         if (n > 0) idle_after_spin_ = false;
         return n;
     }
+    const std::uint64_t writes = write_calls_.load(std::memory_order_relaxed);
+    const bool wrote = writes != writes_before_spin_;  // a request just went out: its answer cannot be here yet
+    writes_before_spin_ = writes;
     unsigned turn = 0;
     int n = busy_poll(std::chrono::microseconds(options_.busy_poll_us), [&] {
         if (!spin_read || turn++ == 0) return ::ppoll(p, count, &kNow, nullptr);
@@ -799,7 +802,7 @@ int Client::wait_readable(pollfd* p, nfds_t count, const timespec* timeout, bool
         if (count < 2 || turn % kDatagramTurns != 0) return 0;
         p[0].revents = 0;
         return ::ppoll(p + 1, 1, &kNow, nullptr);
-    });
+    }, wrote);
     if (n != 0) return n;
     sliced = options_.wait_host && (!timeout || timeout->tv_sec || timeout->tv_nsec > kSlice.tv_nsec);
     n = ::ppoll(p, count, sliced ? &kSlice : timeout, nullptr);

@@ -611,6 +611,7 @@ private:
     // of callbacks not delivered yet keep the blocks they lie in (wire::Value).
     wire::ReadBuffer in_;
     bool idle_after_spin_ = false;  // wait_readable(): a spin and the sleep after it found nothing
+    std::uint64_t writes_before_spin_ = 0;  // write_calls_ when the last spin began
     Clock::time_point last_heard_;  // when the gateway last sent a byte
     Clock::time_point ping_sent_;   // when the unanswered Ping left (last_heard_ is later once answered)
     std::uint32_t pings_ = 0;

@@ -217,9 +217,10 @@ void EventLoop::modify(int fd, std::uint32_t events) {
 
 void EventLoop::remove(int fd) { epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, fd, nullptr); }
 
-EventLoop::Ready EventLoop::wait(int timeout_ms, std::chrono::microseconds spin) {
+EventLoop::Ready EventLoop::wait(int timeout_ms, std::chrono::microseconds spin, bool yield_first) {
     int n = 0;
-    if (spin.count() > 0 && timeout_ms != 0) n = busy_poll(spin, [&] { return epoll_wait(epoll_fd_, ready_, kMaxEvents, 0); });
+    if (spin.count() > 0 && timeout_ms != 0)
+        n = busy_poll(spin, [&] { return epoll_wait(epoll_fd_, ready_, kMaxEvents, 0); }, yield_first);
     if (n == 0) n = epoll_wait(epoll_fd_, ready_, kMaxEvents, timeout_ms);
     if (n < 0) {
         if (errno != EINTR) fail("epoll_wait");
@@ -320,10 +321,12 @@ void Gateway::run() {
             writes_pending |= c->write_armed;
         }
         const bool recording_pending = recorder_ && recorder_->pending();  // written out within half a second
+        const bool wrote = writes_ != writes_before_wait_;  // answers went out: their readers may want this core
+        writes_before_wait_ = writes_;
         const EventLoop::Ready events =
             loop_.wait(partial_pending || writes_pending || !paused_.empty() || recording_pending || large_buffers_kept_
                            ? 250 : -1,
-                       std::chrono::microseconds(options_.busy_poll_us));
+                       std::chrono::microseconds(options_.busy_poll_us), wrote);
         for (const epoll_event& ev : events) {
             const int fd = ev.data.fd;
             if (fd == wake_fd_) {
@@ -1091,6 +1094,7 @@ void Gateway::flush(Connection& c) {
         std::string error;
         const long n = write_some(c, error);
         if (n > 0) {
+            ++writes_;
             c.sent(static_cast<std::size_t>(n));
             c.progress_at = Clock::now();
             if (c.unsent() < kPacedBytes) refill(c);

@@ -45,7 +45,7 @@ public:
     };
     // Waits up to timeout_ms (-1: forever) and returns the ready events; EINTR yields none. With `spin`, polls
     // without sleeping for up to that long first (rti/busy_poll.hpp).
-    Ready wait(int timeout_ms, std::chrono::microseconds spin = {});
+    Ready wait(int timeout_ms, std::chrono::microseconds spin = {}, bool yield_first = false);
 
 private:
     static constexpr int kMaxEvents = 256;
@@ -194,6 +194,8 @@ private:
     int reserve_fd_ = -1;  // kept open to accept-and-close a connection when out of file descriptors
     std::uint16_t port_ = 0;
     EventLoop loop_;
+    std::uint64_t writes_ = 0;             // successful socket writes, for the busy-polling wait after them
+    std::uint64_t writes_before_wait_ = 0;
     tls::Context tls_;  // set: every connection is TLS
     std::map<int, std::unique_ptr<Connection>> connections_;
     std::map<std::string, std::unique_ptr<FederationEntry>> federations_;

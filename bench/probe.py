@@ -13,6 +13,10 @@ each process's CPU read from /proc over the measured rounds. Prints one JSON lin
                                                                    C++, through a C++ relay, in Python, and hlacore's
                                                                    update ping-pong, receive order and TSO; run under
                                                                    `taskset -c 0` to see them all on one core
+    python -m bench.probe busy [ROUNDS]                           busy polling (bench/test_busy_poll.py's loops):
+                                                                   median µs of a 2-federate lockstep step, batched
+                                                                   and plain, and of 8 B round trips, receive order
+                                                                   and TSO batched
 
 --unix runs fanout, large, lockstep and pingpong with the federates connected to the rtig over a Unix socket
 (rtig --unix, docs/networking.md) instead of TCP; --batched runs lockstep with each federate's update and
@@ -41,6 +45,7 @@ from .lockstep import Lockstep
 from .pingpong import PingPong
 from .procs import bench_rtig, cpu_seconds, unix_rtig
 from .three_rtis import Server, run
+from .test_busy_poll import BUSY_POLL_US
 from .throughput import Fanout
 
 
@@ -198,8 +203,47 @@ def pingpong(size: int = 8, rounds: int = 3000, show_pids: bool = False) -> dict
     return result
 
 
+def busy(rounds: int = 20_000, show_pids: bool = False) -> dict[str, Any]:
+    """The 2-federate loops of bench/test_busy_poll.py, every process polling BUSY_POLL_US: median µs of a
+    lockstep step, batched and plain, and of an 8 B round trip, receive order and TSO batched."""
+    before = os.environ.get("HLACORE_BUSY_POLL_US")
+    os.environ["HLACORE_BUSY_POLL_US"] = BUSY_POLL_US  # for this process's federates and their peers
+    try:
+        return _busy_loops(rounds, show_pids)
+    finally:
+        if before is None:
+            del os.environ["HLACORE_BUSY_POLL_US"]
+        else:
+            os.environ["HLACORE_BUSY_POLL_US"] = before
+
+
+def _busy_loops(rounds: int, show_pids: bool) -> dict[str, Any]:
+    result: dict[str, Any] = {}
+    with bench_rtig("--busy-poll", BUSY_POLL_US) as rtig:
+        for name, batched in (("lockstep_batched_us", True), ("lockstep_us", False)):
+            f = Lockstep(rtig.address, 2, max_steps=rounds + rounds // 10 + 10, batched=batched)
+            try:
+                announce({"rtig": rtig.child.pid, **{f"federate{i}": peer.pid for i, peer in enumerate(f.peers)}},
+                         show_pids)
+                timed_median_us(f.step, rounds // 10)  # warm-up
+                result[name] = timed_median_us(f.step, rounds)
+                f.finish()
+            finally:
+                f.close()
+        for name, mode in (("ro_round_trip_us", "ro"), ("tso_batched_round_trip_us", "tso-batched")):
+            p = PingPong(rtig.address, mode, 8)
+            try:
+                announce({"rtig": rtig.child.pid, "pong": p.peer.pid}, show_pids)
+                timed_median_us(p.round_trip, rounds // 10)
+                result[name] = timed_median_us(p.round_trip, rounds)
+                p.finish()
+            finally:
+                p.close()
+    return result
+
+
 PROBES: dict[str, Callable[..., dict[str, Any]]] = {"fanout": fanout, "large": large, "lockstep": lockstep,
-                                                    "lockstep-cpp": lockstep_cpp, "pingpong": pingpong}
+                                                    "lockstep-cpp": lockstep_cpp, "pingpong": pingpong, "busy": busy}
 
 
 def main(argv: list[str]) -> int:

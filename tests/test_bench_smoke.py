@@ -200,6 +200,13 @@ def test_pingpong_probe_times_the_floors_and_both_orders(monkeypatch: pytest.Mon
     assert all(v > 0 for v in result.values())
 
 
+def test_busy_probe_times_the_four_loops_polling() -> None:
+    result = PROBES["busy"](30)
+    assert set(result) == {"lockstep_batched_us", "lockstep_us", "ro_round_trip_us", "tso_batched_round_trip_us"}
+    assert all(v > 0 for v in result.values())
+    assert "HLACORE_BUSY_POLL_US" not in os.environ  # given to the loops' federates only
+
+
 def test_probe_of_the_cpp_lockstep_reads_its_federates_cpu() -> None:
     result = lockstep_cpp(3, 30, binary=cpp_federate("hla13_bench"))
     assert result["wall_us_per_step"] > 0 and result["federate_us_per_step"] > 0  # RUSAGE_CHILDREN: µs, not ticks

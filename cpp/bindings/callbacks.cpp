@@ -263,7 +263,8 @@ bool wait_for_callback(Client& c, double timeout_s) {
 // self._federate_ambassador (set by joinFederationExecution in rti.py), None before: read from the Python
 // object the call was made on, rather than found again from the client (pybind11's instance map).
 py::object federate_ambassador(py::handle self) {
-    static const py::object& name = *new py::object(py::reinterpret_steal<py::object>(PyUnicode_InternFromString("_federate_ambassador")));
+    static const py::object& name =
+        *new py::object(py::reinterpret_steal<py::object>(PyUnicode_InternFromString("_federate_ambassador")));
     py::object ambassador = optional_method(self, name);
     return ambassador ? ambassador : py::none();
 }

@@ -43,9 +43,8 @@ from hlacore.processes import Rtig
 from .floor import PyEcho, cpp_rtt_ns
 from .lockstep import Lockstep
 from .pingpong import PingPong
-from .procs import bench_rtig, cpu_seconds, unix_rtig
+from .procs import BUSY_POLL_US, bench_rtig, cpu_seconds, unix_rtig
 from .three_rtis import Server, run
-from .test_busy_poll import BUSY_POLL_US
 from .throughput import Fanout
 
 

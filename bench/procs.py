@@ -19,6 +19,7 @@ from typing import Iterator, Optional
 from hlacore.processes import Child, Rtig, python_peer
 
 PEERS = pathlib.Path(__file__).parent / "peers"
+BUSY_POLL_US = "50"  # the busy-polling group's spin (rtig --busy-poll, $HLACORE_BUSY_POLL_US), in µs
 
 
 def start_peer(script: str, *args: object) -> Child:

@@ -15,13 +15,11 @@ from hlacore.processes import Rtig
 
 from .floor import cpp_rtt_ns
 from .pingpong import PingPong
-from .procs import bench_rtig
+from .procs import BUSY_POLL_US, bench_rtig
 from .report import Report
 from .test_grant import FLOOR_ROUNDS, ROUNDS as GRANT_ROUNDS, run_lockstep
 from .test_update import ROUNDS as UPDATE_ROUNDS
 from .three_rtis import Server, run
-
-BUSY_POLL_US = "50"
 
 pytestmark = pytest.mark.benchmark(group="busy polling")
 

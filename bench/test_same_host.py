@@ -17,9 +17,9 @@ import pytest
 from hlacore.processes import Rtig
 
 from .floor import cpp_rtt_ns, cpp_stream_rate
-from .procs import unix_rtig
+from .procs import BUSY_POLL_US, unix_rtig
 from .report import LARGE_SIZES, Report
-from .test_busy_poll import BUSY_POLL_US, run_ping_pong
+from .test_busy_poll import run_ping_pong
 from .test_grant import FLOOR_ROUNDS, ROUNDS, run_lockstep
 from .test_large import BURST, ROUNDS as LARGE_ROUNDS, run_large
 

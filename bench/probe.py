@@ -37,6 +37,7 @@ import statistics
 import sys
 import time
 from typing import Any, Callable, Iterator, Optional
+from unittest import mock
 
 from hlacore.processes import Rtig
 
@@ -205,15 +206,8 @@ def pingpong(size: int = 8, rounds: int = 3000, show_pids: bool = False) -> dict
 def busy(rounds: int = 20_000, show_pids: bool = False) -> dict[str, Any]:
     """The 2-federate loops of bench/test_busy_poll.py, every process polling BUSY_POLL_US: median µs of a
     lockstep step, batched and plain, and of an 8 B round trip, receive order and TSO batched."""
-    before = os.environ.get("HLACORE_BUSY_POLL_US")
-    os.environ["HLACORE_BUSY_POLL_US"] = BUSY_POLL_US  # for this process's federates and their peers
-    try:
+    with mock.patch.dict(os.environ, {"HLACORE_BUSY_POLL_US": BUSY_POLL_US}):  # this process's federates, its peers
         return _busy_loops(rounds, show_pids)
-    finally:
-        if before is None:
-            del os.environ["HLACORE_BUSY_POLL_US"]
-        else:
-            os.environ["HLACORE_BUSY_POLL_US"] = before
 
 
 def _busy_loops(rounds: int, show_pids: bool) -> dict[str, Any]:

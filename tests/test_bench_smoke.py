@@ -15,7 +15,7 @@ from bench.floor import PyEcho, PySink, cpp_rtt_ns, cpp_stream_rate
 from bench.fomgen import generate_fed
 from bench.lockstep import Lockstep
 from bench.lossy_stream import stream_through_loss
-from bench.procs import cpu_seconds, watching
+from bench.procs import BUSY_POLL_US, cpu_seconds, watching
 from bench.outputs import results_markdown
 from bench.pingpong import PingPong
 from bench.probe import PROBES, lockstep_cpp
@@ -284,8 +284,8 @@ def test_three_rti_program_on_hlacore(monkeypatch: pytest.MonkeyPatch, workload:
     and with every process polling as bench/test_busy_poll.py runs it; its federates check what they receive
     and exit 0."""
     if busy:
-        monkeypatch.setenv("HLACORE_BUSY_POLL_US", "50")
-    server = Server("hlacore", *(["--busy-poll", "50"] if busy else []))
+        monkeypatch.setenv("HLACORE_BUSY_POLL_US", BUSY_POLL_US)
+    server = Server("hlacore", *(["--busy-poll", BUSY_POLL_US] if busy else []))
     try:
         result = run(server, workload, federates, n, m, timeout=60.0, binary=cpp_federate("hla13_bench"))
     finally:

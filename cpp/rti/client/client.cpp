@@ -829,7 +829,7 @@ Client::WaitStatus Client::read_socket(Clock::time_point deadline, Arrivals& got
     if (buffered) timeout = &now;
     bool sliced = false;
     SpinRead spin_read;
-    const bool read_in_spin = !ssl_ && !in_.holds_large_frame();
+    const bool read_in_spin = options_.busy_poll_us && !ssl_ && !in_.holds_large_frame();
     int n = wait_readable(p, datagram_path_ ? 2 : 1, timeout, sliced, read_in_spin ? &spin_read : nullptr);
     if (n == 0 && sliced) return WaitStatus::Interrupted;
     if (buffered && n >= 0) {

@@ -21,9 +21,9 @@ from hlacore.processes import round_trip as barrier  # noqa: F401 (the tests' na
 
 DATA = pathlib.Path(__file__).parent / "data"
 ROBOT_FED = str(DATA / "robot.fed")
-# The wire protocol's version, for the tests that speak it byte by byte (cpp/rti/wire/messages.hpp).
+# The wire protocol's version, for the tests that speak it byte by byte (cpp/rti/wire/message_list.hpp).
 PROTOCOL_VERSION = int(re.search(r"kProtocolVersion = (\d+);", (pathlib.Path(__file__).parent.parent / "cpp" / "rti"
-                                                                / "wire" / "messages.hpp").read_text()).group(1))
+                                                                / "wire" / "message_list.hpp").read_text()).group(1))
 SANITIZER_REPORT = re.compile(r"ERROR: AddressSanitizer|runtime error:|ERROR: LeakSanitizer")
 # The A* path of the paper's 5x5 grid (hlacore.federates.robot_driver.PAPER_5X5) from (0, 0) to (4, 4): what the
 # driver's planner must find and the robot experiment drives.

@@ -34,12 +34,12 @@ from conftest import (
     wait_for_log,
 )
 
-# ---- the wire protocol, as a hostile client speaks it (cpp/rti/wire/messages.hpp) ----
+# ---- the wire protocol, as a hostile client speaks it (cpp/rti/wire/messages.hpp, codec.hpp) ----
 
 MAGIC = 0x484C4143
 VERSION = PROTOCOL_VERSION
 MAX_FRAME = 64 << 20
-MESSAGE_TYPES = _core._message_names()  # the list of cpp/rti/wire/messages.hpp, in code order
+MESSAGE_TYPES = _core._message_names()  # the list of cpp/rti/wire/message_list.hpp, in code order
 T = {name: code for code, name in enumerate(MESSAGE_TYPES, start=1)}
 
 

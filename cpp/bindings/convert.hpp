@@ -317,7 +317,7 @@ auto forward(void (Client::*f)(Raw...)) {
     return [f](Client& c, Py... args) { (c.*f)(raw(args)...); };
 }
 
-// A Python method that sends the request M of HLACORE_CLIENT_REQUESTS (wire/messages.hpp), its fields the
+// A Python method that sends the request M of HLACORE_CLIENT_REQUESTS (wire/message_list.hpp), its fields the
 // raw values of the method's arguments in order; Client::request runs the service's check first.
 template <class M, class... Py>
 auto request() {

@@ -21,7 +21,7 @@
 #include <string_view>
 
 #include "gateway_fixture.hpp"
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 #include "rti/wire/datagram.hpp"
 
 using namespace hlacore;

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "gateway_fixture.hpp"
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 using namespace hlacore;
 using fuzz_fixture::die;

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 using namespace hlacore::wire;
 

@@ -10,7 +10,7 @@ import struct
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 # The message list, read from its one declaration (X(Name) entries of HLACORE_MESSAGES, in code order).
-_HEADER = (ROOT / "cpp" / "rti" / "wire" / "messages.hpp").read_text()
+_HEADER = (ROOT / "cpp" / "rti" / "wire" / "message_list.hpp").read_text()
 _LIST = _HEADER.split("#define HLACORE_MESSAGES(X)")[1]
 NAMES = re.findall(r"X\((\w+)\)", _LIST.split("\n\n")[0])  # up to the blank line ending the macro
 CODE = {name: i for i, name in enumerate(NAMES, start=1)}

@@ -10,7 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace {
 

@@ -30,9 +30,9 @@
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
 #include "rti/record/mcap.hpp"
-#include "rti/server/time_manager.hpp"
+#include "rti/time.hpp"
 #include "rti/tls.hpp"
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 #include "rti/wire/datagram.hpp"
 #include "rti/wire/read_buffer.hpp"
 
@@ -111,7 +111,7 @@ public:
     int datagram_fileno() const { return datagram_path_ ? datagram_fd_ : -1; }  // beside fileno() for select()
     DatagramStatus datagram_status() const;
 
-    // A request of HLACORE_CLIENT_REQUESTS (wire/messages.hpp): its check in client/<group>.cpp, then the send.
+    // A request of HLACORE_CLIENT_REQUESTS (wire/message_list.hpp): its check in client/<group>.cpp, then the send.
     template <class M>
     void request(const M& message) {
         {

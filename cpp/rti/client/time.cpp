@@ -32,17 +32,6 @@ std::string text(Time t) {
     return out.str();
 }
 
-bool is_available(AdvanceKind kind) {
-    return kind == AdvanceKind::TimeAdvanceRequestAvailable || kind == AdvanceKind::NextEventRequestAvailable;
-}
-
-// after(x, L, kind) of the contract: x + L, or with zero lookahead x itself after an "available" request
-// and the next double above x otherwise.
-Time after(Time x, Time lookahead, bool strict) {
-    if (lookahead > 0 && x + lookahead > x) return x + lookahead;
-    return strict ? std::nextafter(x, kInfinity) : x;
-}
-
 const char* service_name(AdvanceKind kind) {
     switch (kind) {
         case AdvanceKind::TimeAdvanceRequest: return "timeAdvanceRequest";

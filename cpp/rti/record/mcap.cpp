@@ -20,7 +20,7 @@ enum Opcode : std::uint8_t {
 };
 
 template <class T>
-void put(std::string& out, T value) {  // little-endian (the host's; messages.hpp checks it)
+void put(std::string& out, T value) {  // little-endian (the host's; wire/codec.hpp checks it)
     char bytes[sizeof(T)];
     std::memcpy(bytes, &value, sizeof(T));
     out.append(bytes, sizeof(T));

@@ -22,7 +22,7 @@
 #include "rti/server/save_restore.hpp"
 #include "rti/server/sync_points.hpp"
 #include "rti/server/time_manager.hpp"
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace hlacore {
 
@@ -203,7 +203,7 @@ private:
     void deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender, std::uint64_t serial,
                                  double time, Routed*& routed, wire::SharedFrame frame);
 
-    // The handlers, one per message of HLACORE_FEDERATION_SERVICES (wire/messages.hpp), each defined in
+    // The handlers, one per message of HLACORE_FEDERATION_SERVICES (wire/message_list.hpp), each defined in
     // the server file of its group; anything else is a protocol violation.
 #define HLACORE_X(name) void on(FederateHandle from, const wire::name& m);
     HLACORE_FEDERATION_SERVICES(HLACORE_X)

@@ -9,7 +9,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace hlacore {
 

@@ -31,7 +31,7 @@
 
 #include "rti/record/mcap.hpp"
 #include "rti/server/outbox.hpp"
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace hlacore {
 

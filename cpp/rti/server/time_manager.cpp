@@ -9,10 +9,6 @@ namespace hlacore {
 
 namespace {
 
-bool is_available(AdvanceKind kind) {
-    return kind == AdvanceKind::TimeAdvanceRequestAvailable || kind == AdvanceKind::NextEventRequestAvailable;
-}
-
 bool is_next_event(AdvanceKind kind) {
     return kind == AdvanceKind::NextEventRequest || kind == AdvanceKind::NextEventRequestAvailable ||
            kind == AdvanceKind::FlushQueueRequest;
@@ -21,9 +17,8 @@ bool is_next_event(AdvanceKind kind) {
 }  // namespace
 
 Time TimeManager::bound_after(Time t, Time lookahead, AdvanceKind kind) {
-    if (lookahead > 0 && t + lookahead > t) return t + lookahead;
     // HLA 1.3 §8.1.1 zero lookahead: after TAR/NER a federate sends only above its time, after TARA/NERA at it.
-    return is_available(kind) ? t : std::nextafter(t, kInfinity);
+    return after(t, lookahead, !is_available(kind));
 }
 
 const TimeManager::State* TimeManager::find(std::uint32_t f) const {

@@ -23,21 +23,10 @@
 #include <tuple>
 #include <vector>
 
-#include "rti/wire/messages.hpp"
+#include "rti/time.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace hlacore {
-
-using Time = double;
-constexpr Time kInfinity = std::numeric_limits<double>::infinity();
-
-enum class AdvanceKind : std::uint8_t {
-    None = 0,
-    TimeAdvanceRequest = 1,
-    TimeAdvanceRequestAvailable = 2,
-    NextEventRequest = 3,
-    NextEventRequestAvailable = 4,
-    FlushQueueRequest = 5,
-};
 
 // A message waiting in a constrained federate's TSO queue. Ties in time are broken by the sending
 // federate's handle, then by the sender's serial number: deterministic, independent of arrival order.

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace hlacore::wire {
 

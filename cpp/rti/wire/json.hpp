@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace hlacore {
 

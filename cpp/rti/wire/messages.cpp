@@ -1,6 +1,6 @@
 // The runtime half of the wire protocol (messages.hpp): message names, framing and the decoding switch, kept
 // out of the header so that the files that only encode do not compile every decoder.
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace hlacore::wire {
 

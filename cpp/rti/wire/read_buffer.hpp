@@ -14,7 +14,7 @@
 #include <memory>
 #include <string_view>
 
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace hlacore::wire {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "rti/wire/messages.hpp"
+#include "rti/wire/codec.hpp"
 
 namespace hlacore::wire {
 

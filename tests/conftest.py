@@ -42,9 +42,9 @@ def rtig_executable() -> str:
 
 
 def status_client() -> str:
-    """The rtig that asks a gateway for its status (``rtig --status``): the installed one, since the sanitizer
-    build of scripts/test.sh is the gateway alone (cmake -DHLACORE_RTIG_STATUS=OFF)."""
-    return rtig_beside_python()
+    """The rtig that asks a gateway for its status (``rtig --status``): the one under test, which needs no federate
+    side for it (cpp/rti/net/status_query.cpp)."""
+    return rtig_executable()
 
 
 def cpp_federate(name: str) -> str:

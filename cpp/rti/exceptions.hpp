@@ -116,5 +116,9 @@ private:
 
 // Throws the RtiError that becomes the HLA exception `code` at the Python call.
 [[noreturn]] inline void raise(ErrorCode code, const std::string& message) { throw RtiError(code, message); }
+// A refusal's code off the wire; one this side does not know is an RTIinternalError.
+constexpr ErrorCode error_code(std::uint16_t code) {
+    return code < static_cast<std::uint16_t>(ErrorCode::Count) ? static_cast<ErrorCode>(code) : ErrorCode::RTIinternalError;
+}
 
 }  // namespace hlacore

@@ -8,9 +8,7 @@
 
 #include "rti/auth.hpp"
 #include "rti/busy_poll.hpp"
-#if HLACORE_RTIG_STATUS
-#include "rti/client/client.hpp"
-#endif
+#include "rti/net/status_query.hpp"
 #include "rti/server/gateway.hpp"
 
 namespace {
@@ -94,26 +92,18 @@ int print_status(const std::string& address, const std::string& secret, bool tls
         std::fprintf(stderr, "rtig: invalid address '%s' (HOST:PORT expected)\n", address.c_str());
         return 2;
     }
-#if HLACORE_RTIG_STATUS
     try {
-        hlacore::ClientOptions client_options;
-        client_options.secret = secret;
-        client_options.datagrams = false;  // a status query sends nothing best effort
-        client_options.tls = tls;
-        client_options.tls_ca = tls_ca;
-        hlacore::Client client(host.empty() ? "127.0.0.1" : host, static_cast<std::uint16_t>(port), client_options);
-        std::printf("%s\n", client.query_status().c_str());
+        hlacore::net::StatusQueryOptions query;
+        query.secret = secret;
+        query.tls = tls;
+        query.tls_ca = tls_ca;
+        std::printf("%s\n", hlacore::net::query_status(host.empty() ? "127.0.0.1" : host, static_cast<std::uint16_t>(port),
+                                                       query).c_str());
         return 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "rtig: %s\n", e.what());
         return 1;
     }
-#else
-    (void)host, (void)secret, (void)tls, (void)tls_ca;
-    std::fprintf(stderr, "rtig: --status is not in this build (cmake -DHLACORE_RTIG_STATUS=OFF: a gateway-only build, "
-                         "such as the tests' sanitized one); ask with the installed rtig or python -m hlacore.status\n");
-    return 2;
-#endif
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include <openssl/ssl.h>
 
@@ -35,6 +36,12 @@ Session session(SSL_CTX* ctx, int fd);
 // For a client: check that the certificate names `host` (an IP address: its IP SANs; a name: its DNS names,
 // also sent as SNI).
 void expect_host(SSL* ssl, const std::string& host);
+
+// Whether `bytes` begin like a TLS record (a handshake or an alert, TLS 1.x): what a TLS peer sends first.
+// No hlacore frame starts so before the handshake's end: its length field is small.
+inline bool looks_like_record(std::string_view bytes) {
+    return bytes.size() >= 2 && (bytes[0] == 0x16 || bytes[0] == 0x15) && bytes[1] == 0x03;
+}
 
 // OpenSSL's error queue as one line (emptied); `fallback` when it is empty.
 std::string errors(const std::string& fallback = "");

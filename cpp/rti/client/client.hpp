@@ -29,6 +29,7 @@
 
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
+#include "rti/net/wait.hpp"
 #include "rti/record/mcap.hpp"
 #include "rti/time.hpp"
 #include "rti/tls.hpp"
@@ -37,18 +38,6 @@
 #include "rti/wire/read_buffer.hpp"
 
 namespace hlacore {
-
-// What the program around a client does while one of its calls blocks. The Python binding releases the
-// GIL and turns Ctrl-C into KeyboardInterrupt; without a host, waits go on through signals.
-class WaitHost {
-public:
-    virtual ~WaitHost() = default;
-    // Around a wait that may block; begin's result is given back to end.
-    virtual void* begin_wait() { return nullptr; }
-    virtual void end_wait(void*) {}
-    // A signal interrupted the wait: throw to abandon it, return to go on waiting.
-    virtual void interrupted() {}
-};
 
 struct ClientOptions {
     // Bounds connecting, the handshake, each reply and each blocked send; a gateway silent for half of it
@@ -461,11 +450,9 @@ private:
     // Waits until `done()` (under mu_) for an answer of the handshake kind, GatewayNotResponding at `deadline`.
     template <class Pred>
     void await_answer(Clock::time_point deadline, Pred done, const char* what);
+    // The hlacore session on the connection: the Hello, the gateway's Welcome, the answer to its challenge.
+    void open_session(Clock::time_point deadline);
     void authenticate(Clock::time_point deadline);
-    // fd_ connected to the gateway's Unix socket at `path` (rti/unix_socket.hpp; client.cpp).
-    void connect_local(const std::string& path);
-    // The TLS handshake right after connecting, bounded by `deadline` (client.cpp).
-    void start_tls(SSL_CTX* context, const std::string& host, Clock::time_point deadline);
     // One SSL_write / SSL_read under ssl_mu_: bytes moved, 0 when the socket would block (WANT_READ/WRITE),
     // -1 with `error` (and `eof` for the end of the stream).
     long tls_write(const char* data, std::size_t length, std::string& error);

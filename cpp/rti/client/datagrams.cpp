@@ -5,7 +5,7 @@
 // interactions whose values all travel best effort and that carry no timestamp then go as datagrams;
 // reflections and interactions the gateway sends as datagrams are read beside the stream.
 #include "rti/client/client.hpp"
-#include "rti/client/waiting.hpp"
+#include "rti/net/wait.hpp"
 
 #include <cerrno>
 #include <cstdio>

@@ -132,6 +132,8 @@ private:
     // Serves the whole frames read from c, until one of them delivers to a client over its budget.
     void serve_frames(Connection& c);
     void on_frame(Connection& c, const wire::Frame& frame);
+    // The session before any service: the Hello, then the answer to the challenge (session.cpp).
+    void greet(Connection& c, wire::MessageType type, const wire::Message& message);
     // The one dispatcher: a visit onto serve() for the message's type (gateway.cpp).
     void on_request(Connection& c, const wire::Message& message);
 #define HLACORE_X(name) void serve(Connection& c, const wire::name& m);

@@ -4,7 +4,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include "rti/server/federation.hpp"
+#include "rti/server/gateway.hpp"
+#include "rti/server/gateway_internal.hpp"
 #include "rti/wire/json.hpp"
 
 namespace hlacore {
@@ -72,6 +77,47 @@ void Federation::write_status(std::string& out, bool instances) {
     write_save_status(out);
     if (instances) write_instances(out);
     out += '}';
+}
+
+namespace {
+
+// ,"process":{...}: the gateway's process (for an in-process gateway, the federate's program that runs it).
+void write_process_status(std::string& json) {
+    rusage usage{};
+    ::getrusage(RUSAGE_SELF, &usage);
+    const double cpu = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                       static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
+    long long resident_pages = 0;  // now, not the peak that ru_maxrss gives
+    if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(statm, "%*s %lld", &resident_pages) != 1) resident_pages = 0;
+        std::fclose(statm);
+    }
+    json += ",\"process\":{\"pid\":" + std::to_string(::getpid()) + ",\"rss_bytes\":" +
+            std::to_string(resident_pages * ::sysconf(_SC_PAGESIZE)) + ",\"cpu_seconds\":";
+    json_number(json, cpu);
+    json += '}';
+}
+
+}  // namespace
+void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
+    answer(c, m.request, [&] {
+        std::string json = "{\"server\":\"hlacore rtig\",\"address\":";
+        json_string(json, options_.host + ":" + std::to_string(port_));
+        json += tls_ ? ",\"tls\":true" : ",\"tls\":false";
+        json += ",\"connections\":" + std::to_string(connections_.size()) + ",\"federations\":[";
+        bool first = true;
+        for (auto& [name, entry] : federations_) {
+            if (!first) json += ',';
+            first = false;
+            entry->federation.write_status(json, m.instances);
+        }
+        json += "],\"datagrams\":";
+        write_datagram_status(json);
+        write_process_status(json);
+        events_.write_after(m.events_after, json);
+        json += '}';
+        return wire::StatusReport{m.request, std::move(json)};
+    });
 }
 
 }  // namespace hlacore

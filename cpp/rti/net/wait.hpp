@@ -1,17 +1,37 @@
-// Blocking waits of the client, shared by its files: the time left for poll(), and the WaitHost's
-// begin_wait/end_wait around a wait (the GIL released, for Python).
+// Blocking waits on a connection's socket, for the federate side and rtig --status alike: the program around
+// a call (WaitHost: the Python binding releases the GIL and turns Ctrl-C into KeyboardInterrupt), the time
+// left for poll(), and one bounded wait that hands signals to the host.
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <cerrno>
+#include <chrono>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 #include <poll.h>
 
-#include "rti/client/client.hpp"
-
 namespace hlacore {
+
+// What the program around a client does while one of its calls blocks. The Python binding releases the
+// GIL and turns Ctrl-C into KeyboardInterrupt; without a host, waits go on through signals.
+class WaitHost {
+public:
+    virtual ~WaitHost() = default;
+    // Around a wait that may block; begin's result is given back to end.
+    virtual void* begin_wait() { return nullptr; }
+    virtual void end_wait(void*) {}
+    // A signal interrupted the wait: throw to abandon it, return to go on waiting.
+    virtual void interrupted() {}
+};
+
+// A duration for a message: "2.5 s".
+inline std::string seconds(std::chrono::steady_clock::duration d) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f s", std::chrono::duration<double>(d).count());
+    return text;
+}
 
 // Milliseconds left until `deadline` for poll(), at least 0.
 inline int ms_until(std::chrono::steady_clock::time_point deadline) {

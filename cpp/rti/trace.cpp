@@ -56,14 +56,6 @@ void MessageTrace::joined(const std::string& federation, std::uint32_t federate,
     row(ns, "join", federation, federate, 0, 0, std::nullopt, name);
 }
 
-void MessageTrace::received(const std::string& federation, std::uint32_t sender, const wire::Message& message,
-                            std::int64_t ns) {
-    if (const auto* m = std::get_if<wire::UpdateAttributes>(&message))
-        row(ns, "update", federation, sender, sender, m->serial, m->time, "");
-    else if (const auto* m = std::get_if<wire::SendInteraction>(&message))
-        row(ns, "interaction", federation, sender, sender, m->serial, m->time, "");
-}
-
 void MessageTrace::sending(const std::string& federation, std::uint32_t receiver, std::string_view frames,
                            std::int64_t ns) {
     wire::Frame frame;

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include "rti/wire/codec.hpp"
 
@@ -26,8 +27,14 @@ public:
     static std::int64_t now_ns();
 
     void joined(const std::string& federation, std::uint32_t federate, const std::string& name, std::int64_t ns);
-    // An UpdateAttributes or SendInteraction from `sender` read at `ns`; other messages are not traced.
-    void received(const std::string& federation, std::uint32_t sender, const wire::Message& message, std::int64_t ns);
+    // An update or interaction from `sender` read at `ns`, as the gateway serves it; other messages are not traced.
+    template <class M>
+    void received(const std::string& federation, std::uint32_t sender, const M& m, std::int64_t ns) {
+        if constexpr (std::is_same_v<M, wire::UpdateAttributesView>)
+            row(ns, "update", federation, sender, sender, m.serial, m.time, "");
+        else if constexpr (std::is_same_v<M, wire::SendInteractionView>)
+            row(ns, "interaction", federation, sender, sender, m.serial, m.time, "");
+    }
     // `frames` (whole frames) are about to be written to `receiver`'s socket: records the reflections and
     // interactions among them.
     void sending(const std::string& federation, std::uint32_t receiver, std::string_view frames, std::int64_t ns);

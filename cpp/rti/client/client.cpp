@@ -61,22 +61,32 @@ std::uint64_t Client::stop_recording() {
     return writer->messages();
 }
 
-// Under mu_: a topic or a record of the recording this federate asked for (start_recording).
-void Client::write_recorded(const wire::Message& m) {
+template <class Write>
+void Client::write_recorded(Write write) {
     if (!recording_) return;  // stopped: the gateway's last records before it heard of it
     try {
-        if (const auto* topic = std::get_if<wire::RecordedTopic>(&m)) {
-            recording_->channel(topic->topic, topic->schema_name, topic->schema);
-        } else if (const auto* r = std::get_if<wire::Recorded>(&m)) {
-            if (!recording_->has_channel(r->topic))
-                throw std::runtime_error("the gateway sent a record on '" + r->topic + "' before announcing the topic");
-            recording_->message(recording_->channel_id(r->topic), r->sequence, r->log_ns, r->data);
-        }
+        write();
     } catch (const std::exception& e) {
         recording_failure_ = e.what();
         recording_.reset();
     }
 }
+
+// A topic or a record of the recording this federate asked for (start_recording), written as it comes.
+bool Client::arrived(wire::RecordedTopic& topic) {
+    write_recorded([&] { recording_->channel(topic.topic, topic.schema_name, topic.schema); });
+    return false;
+}
+
+bool Client::arrived(wire::Recorded& r) {
+    write_recorded([&] {
+        if (!recording_->has_channel(r.topic))
+            throw std::runtime_error("the gateway sent a record on '" + r.topic + "' before announcing the topic");
+        recording_->message(recording_->channel_id(r.topic), r.sequence, r.log_ns, r.data);
+    });
+    return false;
+}
+
 
 void Client::connection_lost() const {
     raise(closed_code_, "connection to rtig at " + address_ + " lost: " + closed_reason_);

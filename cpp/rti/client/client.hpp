@@ -431,7 +431,22 @@ private:
     };
     int wait_readable(pollfd* fds, nfds_t count, const timespec* timeout, bool& sliced, SpinRead* spin_read);
     void file(Arrivals& got);  // under mu_; clears got
-    void write_recorded(const wire::Message& m);  // under mu_
+    // The one receive dispatcher: file() visits each message onto arrived() once (true: a callback, queued),
+    // pop_callback() each callback onto delivered() once. Overloads from HLACORE_CLIENT_ARRIVALS and
+    // HLACORE_CLIENT_DELIVERIES in client/<group>.cpp; callers hold mu_.
+    template <class M>
+    bool arrived(M&) { return true; }
+    template <class M>
+    void delivered(const M&) {}
+#define HLACORE_X(name) bool arrived(wire::name& m);
+    HLACORE_CLIENT_ARRIVALS(HLACORE_X)
+    HLACORE_ANSWERS(HLACORE_X)
+#undef HLACORE_X
+#define HLACORE_X(name) void delivered(const wire::name& m);
+    HLACORE_CLIENT_DELIVERIES(HLACORE_X)
+#undef HLACORE_X
+    template <class Write>
+    void write_recorded(Write write);  // a write into the recording; a failure stops it (client.cpp)
     // Best effort over UDP (client/datagrams.cpp): proving the path at connect (falling back to TCP with one
     // log line), reading what came, and whether an update or interaction may go as a datagram (mu_ held).
     void open_datagram_path(Clock::time_point deadline);
@@ -501,7 +516,6 @@ private:
     LocalObject make_local_object(fom::Handle cls, const std::string& name) const;
     // An object the gateway registered for this federate, which owns `owned` and may delete it (mu_ held).
     void add_registered(std::uint32_t object, fom::Handle cls, const std::string& name, std::set<fom::Handle> owned);
-    void apply_ownership_callback(const wire::Message& m);
     // The checks and message behind the transport and order changes (order, transport: 0 = unchanged).
     void change_attribute_delivery(std::uint32_t object, const std::vector<fom::Handle>& attributes,
                                    std::uint8_t order, std::uint8_t transport);
@@ -518,13 +532,11 @@ private:
     void check_not_saving_or_restoring(const char* service) const;
     void require_idle(const char* service) const;  // require_joined, then check_not_saving_or_restoring
     void require_no_advance() const;                // TimeAdvanceAlreadyInProgress (client/time.cpp)
-    void apply_save_callback(const wire::Message& m);
     // The lowest timestamp this federate may send now, and the checks of the sending rule (callers hold mu_).
     Time lowest_sendable() const;
     void check_send_time(const wire::OptionalTime& time) const;
     // Checks the sending rule for `time` and numbers the message (a timestamped one becomes retractable).
     std::uint64_t next_serial(const wire::OptionalTime& time);
-    void apply_time_callback(const wire::Message& m);
 
     std::string address_;
     ClientOptions options_;

@@ -199,4 +199,15 @@ void Client::change_interaction_delivery(fom::Handle cls, std::uint8_t order, st
     send(wire::ChangeInteractionDelivery{cls, order, transport});
 }
 
+// Discoveries and removals count at once, before tick() delivers them: later calls check against them.
+bool Client::arrived(wire::DiscoverObject& d) {
+    objects_[d.object] = make_local_object(d.object_class, d.name);
+    return true;
+}
+
+bool Client::arrived(wire::RemoveObject& r) {
+    objects_.erase(r.object);
+    return true;
+}
+
 }  // namespace hlacore

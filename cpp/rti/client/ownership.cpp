@@ -204,28 +204,37 @@ bool Client::is_owned(std::uint32_t object, fom::Handle attribute) const {
     return obj.owned.count(attribute) > 0;
 }
 
-// Called under mu_ when a callback is popped: the federate's view follows what it is told.
-void Client::apply_ownership_callback(const wire::Message& m) {
-    // Applies `change` to each attribute the callback names, unless the object is gone meanwhile.
-    const auto apply = [this](const auto& callback, auto&& change) {
-        auto it = objects_.find(callback.object);
-        if (it == objects_.end()) return;
-        for (auto a : callback.attributes) change(it->second, a);
-    };
-    using A = fom::Handle;
-    if (const auto* acquired = std::get_if<wire::AcquisitionNotification>(&m)) {
-        apply(*acquired, [](LocalObject& obj, A a) { obj.gain(a); });
-    } else if (const auto* divested = std::get_if<wire::DivestitureNotification>(&m)) {
-        apply(*divested, [](LocalObject& obj, A a) { obj.lose(a); });
-    } else if (const auto* u = std::get_if<wire::OwnershipUnavailable>(&m)) {
-        apply(*u, [](LocalObject& obj, A a) { obj.acquiring_if_available.erase(a); });
-    } else if (const auto* r = std::get_if<wire::RequestOwnershipRelease>(&m)) {
-        apply(*r, [](LocalObject& obj, A a) {
-            if (obj.owned.count(a)) obj.release_requested.insert(a);
-        });
-    } else if (const auto* c = std::get_if<wire::ConfirmAcquisitionCancellation>(&m)) {
-        apply(*c, [](LocalObject& obj, A a) { obj.acquiring.erase(a); });
-    }
+// When a notification is popped the federate's view follows what it is told, for each attribute it names,
+// unless the object is gone meanwhile.
+namespace {
+template <class Objects, class Callback, class Change>
+void for_each_attribute(Objects& objects, const Callback& callback, Change change) {
+    auto it = objects.find(callback.object);
+    if (it == objects.end()) return;
+    for (auto a : callback.attributes) change(it->second, a);
+}
+}  // namespace
+
+void Client::delivered(const wire::AcquisitionNotification& m) {
+    for_each_attribute(objects_, m, [](LocalObject& obj, fom::Handle a) { obj.gain(a); });
+}
+
+void Client::delivered(const wire::DivestitureNotification& m) {
+    for_each_attribute(objects_, m, [](LocalObject& obj, fom::Handle a) { obj.lose(a); });
+}
+
+void Client::delivered(const wire::OwnershipUnavailable& m) {
+    for_each_attribute(objects_, m, [](LocalObject& obj, fom::Handle a) { obj.acquiring_if_available.erase(a); });
+}
+
+void Client::delivered(const wire::RequestOwnershipRelease& m) {
+    for_each_attribute(objects_, m, [](LocalObject& obj, fom::Handle a) {
+        if (obj.owned.count(a)) obj.release_requested.insert(a);
+    });
+}
+
+void Client::delivered(const wire::ConfirmAcquisitionCancellation& m) {
+    for_each_attribute(objects_, m, [](LocalObject& obj, fom::Handle a) { obj.acquiring.erase(a); });
 }
 
 }  // namespace hlacore

@@ -29,14 +29,6 @@ namespace hlacore {
 
 namespace {
 
-// The request id an answer of the gateway echoes (HLACORE_ANSWERS); null for any other message.
-const std::uint32_t* answered_request(const wire::Message& m) {
-#define HLACORE_X(name) \
-    if (const auto* answer = std::get_if<wire::name>(&m)) return &answer->request;
-    HLACORE_ANSWERS(HLACORE_X)
-#undef HLACORE_X
-    return nullptr;
-}
 
 }  // namespace
 
@@ -417,41 +409,7 @@ void Client::check_liveness() {
 void Client::file(Arrivals& got) {
     std::size_t callbacks = 0;
     for (auto& m : got.stream) {
-        if (const std::uint32_t* request = answered_request(m)) {
-            replies_[*request] = std::move(m);
-            continue;
-        }
-        if (auto* w = std::get_if<wire::Welcome>(&m)) {
-            welcomed_ = true;
-            max_frame_bytes_ = w->max_frame_bytes;
-            challenge_ = std::move(w->challenge);
-            nonce_ = std::move(w->nonce);
-            datagram_token_ = w->datagram_token;
-            max_datagram_ = w->max_datagram;
-            continue;
-        }
-        if (auto* a = std::get_if<wire::Authenticated>(&m)) {
-            authenticated_ = std::move(*a);
-            continue;
-        }
-        if (auto* e = std::get_if<wire::ClockEcho>(&m)) {
-            clock_echo_ = *e;
-            continue;
-        }
-        if (std::holds_alternative<wire::Pong>(m)) continue;  // what it says is that bytes came: last_heard_
-        if (std::holds_alternative<wire::RecordedTopic>(m) || std::holds_alternative<wire::Recorded>(m)) {
-            write_recorded(m);
-            continue;
-        }
-        if (auto* d = std::get_if<wire::DiscoverObject>(&m)) {
-            objects_[d->object] = make_local_object(d->object_class, d->name);
-        } else if (auto* rm = std::get_if<wire::RemoveObject>(&m)) {
-            objects_.erase(rm->object);
-        } else if (auto* a = std::get_if<wire::AnnounceSyncPoint>(&m)) {
-            announced_.insert(a->label);
-        } else if (auto* s = std::get_if<wire::FederationSynchronized>(&m)) {
-            announced_.erase(s->label);
-        }
+        if (!std::visit([this](auto& message) { return arrived(message); }, m)) continue;
         if (&m != &got.stream[callbacks]) got.stream[callbacks] = std::move(m);
         ++callbacks;
     }
@@ -470,6 +428,38 @@ void Client::file(Arrivals& got) {
     }
     got.clear();
 }
+
+// The answers: filed for the caller waiting on their id.
+#define HLACORE_X(name)                         \
+    bool Client::arrived(wire::name& m) {       \
+        replies_[m.request] = std::move(m);     \
+        return false;                           \
+    }
+HLACORE_ANSWERS(HLACORE_X)
+#undef HLACORE_X
+
+// The session's messages: what the handshake, the clock and the recorder federate wait for.
+bool Client::arrived(wire::Welcome& w) {
+    welcomed_ = true;
+    max_frame_bytes_ = w.max_frame_bytes;
+    challenge_ = std::move(w.challenge);
+    nonce_ = std::move(w.nonce);
+    datagram_token_ = w.datagram_token;
+    max_datagram_ = w.max_datagram;
+    return false;
+}
+
+bool Client::arrived(wire::Authenticated& a) {
+    authenticated_ = std::move(a);
+    return false;
+}
+
+bool Client::arrived(wire::ClockEcho& e) {
+    clock_echo_ = e;
+    return false;
+}
+
+bool Client::arrived(wire::Pong&) { return false; }  // what it says is that bytes came: last_heard_
 
 void Client::Arrivals::clear() {
     more_in_socket.reset();
@@ -495,9 +485,7 @@ std::optional<wire::Message> Client::pop_callback() {
         return std::nullopt;
     }
     std::optional<wire::Message> m = callbacks_.pop();
-    apply_time_callback(*m);
-    apply_ownership_callback(*m);
-    apply_save_callback(*m);
+    std::visit([this](const auto& callback) { delivered(callback); }, *m);
     return m;
 }
 

@@ -93,53 +93,55 @@ void Client::federate_restore_complete(bool success) {
     send(wire::FederateRestoreComplete{success});
 }
 
-void Client::apply_save_callback(const wire::Message& message) {
-    if (const auto* m = std::get_if<wire::InitiateFederateSave>(&message)) {
-        save_restore_.save = SavePhase::Initiated;
-        save_restore_.label = m->label;
-    } else if (std::holds_alternative<wire::FederationSaved>(message)) {
-        save_restore_.save = SavePhase::None;
-    } else if (std::holds_alternative<wire::FederationRestoreBegun>(message)) {
-        save_restore_.restore = RestorePhase::Begun;
-        save_restore_.save = SavePhase::None;
-    } else if (std::holds_alternative<wire::FederationRestored>(message)) {
-        save_restore_.restore = RestorePhase::None;
-    } else if (const auto* m = std::get_if<wire::InitiateFederateRestore>(&message)) {
-        save_restore_.restore = RestorePhase::Initiated;
-        // The federation as it was saved: this federate's handle, declarations, objects and time state.
-        const wire::RestoredState& saved = *m->state;
-        federate_ = m->federate;
-        declarations_.published.clear();
-        for (const auto& [cls, attrs] : saved.published) declarations_.published[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
-        declarations_.subscribed.clear();
-        for (const auto& [cls, attrs] : saved.subscribed) declarations_.subscribed[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
-        declarations_.published_interactions =
-            std::set<fom::Handle>(saved.published_interactions.begin(), saved.published_interactions.end());
-        declarations_.subscribed_interactions =
-            std::set<fom::Handle>(saved.subscribed_interactions.begin(), saved.subscribed_interactions.end());
-        objects_.clear();
-        for (const auto& known : saved.objects) {
-            LocalObject obj = make_local_object(known.known_class, known.name);
-            obj.owned = std::set<fom::Handle>(known.owned.begin(), known.owned.end());
-            obj.privilege_to_delete = known.may_delete;
-            objects_[known.object] = std::move(obj);
-        }
-        announced_.clear();  // synchronization points are not saved
-        restore_regions(saved);
-        const wire::SavedTime& st = saved.time_state;
-        TimeState t;
-        t.time = st.time;
-        t.lookahead = st.lookahead;
-        t.enable_lookahead = st.lookahead;
-        t.regulating = st.regulating;
-        t.constrained = st.constrained;
-        t.asynchronous_delivery = st.asynchronous_delivery;
-        t.strict = st.strict_after_grant;
-        t.floor = st.regulating ? st.promise : -kInfinity;
-        time_ = std::move(t);
-        // Restored queues hold messages with serials up to next_serial: new ones must not collide.
-        serial_ = std::max(serial_, saved.next_serial);
+void Client::delivered(const wire::InitiateFederateSave& m) {
+    save_restore_.save = SavePhase::Initiated;
+    save_restore_.label = m.label;
+}
+
+void Client::delivered(const wire::FederationSaved&) { save_restore_.save = SavePhase::None; }
+
+void Client::delivered(const wire::FederationRestoreBegun&) {
+    save_restore_.restore = RestorePhase::Begun;
+    save_restore_.save = SavePhase::None;
+}
+
+void Client::delivered(const wire::FederationRestored&) { save_restore_.restore = RestorePhase::None; }
+
+void Client::delivered(const wire::InitiateFederateRestore& m) {
+    save_restore_.restore = RestorePhase::Initiated;
+    // The federation as it was saved: this federate's handle, declarations, objects and time state.
+    const wire::RestoredState& saved = *m.state;
+    federate_ = m.federate;
+    declarations_.published.clear();
+    for (const auto& [cls, attrs] : saved.published) declarations_.published[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+    declarations_.subscribed.clear();
+    for (const auto& [cls, attrs] : saved.subscribed) declarations_.subscribed[cls] = std::set<fom::Handle>(attrs.begin(), attrs.end());
+    declarations_.published_interactions =
+        std::set<fom::Handle>(saved.published_interactions.begin(), saved.published_interactions.end());
+    declarations_.subscribed_interactions =
+        std::set<fom::Handle>(saved.subscribed_interactions.begin(), saved.subscribed_interactions.end());
+    objects_.clear();
+    for (const auto& known : saved.objects) {
+        LocalObject obj = make_local_object(known.known_class, known.name);
+        obj.owned = std::set<fom::Handle>(known.owned.begin(), known.owned.end());
+        obj.privilege_to_delete = known.may_delete;
+        objects_[known.object] = std::move(obj);
     }
+    announced_.clear();  // synchronization points are not saved
+    restore_regions(saved);
+    const wire::SavedTime& st = saved.time_state;
+    TimeState t;
+    t.time = st.time;
+    t.lookahead = st.lookahead;
+    t.enable_lookahead = st.lookahead;
+    t.regulating = st.regulating;
+    t.constrained = st.constrained;
+    t.asynchronous_delivery = st.asynchronous_delivery;
+    t.strict = st.strict_after_grant;
+    t.floor = st.regulating ? st.promise : -kInfinity;
+    time_ = std::move(t);
+    // Restored queues hold messages with serials up to next_serial: new ones must not collide.
+    serial_ = std::max(serial_, saved.next_serial);
 }
 
 }  // namespace hlacore

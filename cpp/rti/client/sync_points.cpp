@@ -12,4 +12,15 @@ void Client::check(const wire::SyncPointAchieved& m) {
               "synchronization point '" + m.label + "' was not announced to this federate");
 }
 
+// The labels announced and not yet synchronized, known at once (achieving one checks against them).
+bool Client::arrived(wire::AnnounceSyncPoint& a) {
+    announced_.insert(a.label);
+    return true;
+}
+
+bool Client::arrived(wire::FederationSynchronized& s) {
+    announced_.erase(s.label);
+    return true;
+}
+
 }  // namespace hlacore

@@ -79,29 +79,32 @@ std::uint64_t Client::next_serial(const wire::OptionalTime& time) {
 }
 
 // HLA 1.3 §8.3, §8.6, §8.13: the callbacks take effect when the federate receives them.
-void Client::apply_time_callback(const wire::Message& m) {
+void Client::delivered(const wire::TimeRegulationEnabled& r) {
     TimeState& s = time_;
-    if (const auto* r = std::get_if<wire::TimeRegulationEnabled>(&m)) {
-        s.regulation_pending = false;
-        s.regulating = true;
-        s.time = r->time;
-        s.strict = false;
-        // The gateway bounded this federate by after(t0, L) for every lookahead it had since asking.
-        s.floor = after(r->time, s.enable_lookahead, false);
-    } else if (const auto* c = std::get_if<wire::TimeConstrainedEnabled>(&m)) {
-        s.constrained_pending = false;
-        s.constrained = true;
-        s.time = c->time;
-    } else if (const auto* g = std::get_if<wire::TimeAdvanceGrant>(&m)) {
-        // A TARA/NERA grant to the very time a strict grant reached stays strict: others were granted it.
-        const bool strict_kind = !is_available(s.pending) || (s.strict && g->time == s.time);
-        s.time = g->time;
-        s.strict = strict_kind;
-        s.pending = AdvanceKind::None;
-        // A message at or below the federate's time can no longer be retracted (§8.21).
-        for (auto it = s.retractable.begin(); it != s.retractable.end();)
-            it = it->second <= g->time ? s.retractable.erase(it) : std::next(it);
-    }
+    s.regulation_pending = false;
+    s.regulating = true;
+    s.time = r.time;
+    s.strict = false;
+    // The gateway bounded this federate by after(t0, L) for every lookahead it had since asking.
+    s.floor = after(r.time, s.enable_lookahead, false);
+}
+
+void Client::delivered(const wire::TimeConstrainedEnabled& c) {
+    time_.constrained_pending = false;
+    time_.constrained = true;
+    time_.time = c.time;
+}
+
+void Client::delivered(const wire::TimeAdvanceGrant& g) {
+    TimeState& s = time_;
+    // A TARA/NERA grant to the very time a strict grant reached stays strict: others were granted it.
+    const bool strict_kind = !is_available(s.pending) || (s.strict && g.time == s.time);
+    s.time = g.time;
+    s.strict = strict_kind;
+    s.pending = AdvanceKind::None;
+    // A message at or below the federate's time can no longer be retracted (§8.21).
+    for (auto it = s.retractable.begin(); it != s.retractable.end();)
+        it = it->second <= g.time ? s.retractable.erase(it) : std::next(it);
 }
 
 void Client::require_no_advance() const {

@@ -68,6 +68,20 @@ void Gateway::on_datagrams() {
     }
 }
 
+// Whether a datagram's frame decodes into `m`; one that does not is what a stray (or forged) datagram looks
+// like: counted and dropped, the connection unharmed.
+template <class M>
+bool Gateway::decodes(const wire::Frame& frame, M& m) {
+    try {
+        if constexpr (std::is_same_v<M, wire::Message>) wire::decode(frame, m);
+        else wire::decode_fields(frame, m);
+        return true;
+    } catch (const wire::WireError&) {
+        ++stray_datagrams_;
+        return false;
+    }
+}
+
 void Gateway::on_datagram(std::string_view datagram, const sockaddr_storage& from, socklen_t length) {
     const auto read = wire::read_datagram(datagram);
     auto owner = read ? datagram_tokens_.find(read->header.token) : datagram_tokens_.end();
@@ -79,20 +93,15 @@ void Gateway::on_datagram(std::string_view datagram, const sockaddr_storage& fro
     }
     Connection& c = *it->second;
     const wire::Frame& frame = read->frame;
-    wire::Message message;
-    try {
-        message = wire::decode(frame);
-    } catch (const wire::WireError&) {
-        ++stray_datagrams_;  // what a stray (or forged) datagram looks like: dropped, the connection unharmed
-        return;
-    }
-    if (const auto* hello = std::get_if<wire::DatagramHello>(&message)) {
+    if (frame.type == wire::MessageType::DatagramHello) {
+        wire::DatagramHello hello;
+        if (!decodes(frame, hello)) return;
         // The client's datagrams come from here from now on; the echo tells it that datagrams get through.
         c.datagram_peer = from;
         c.datagram_peer_length = length;
         std::string echo;
         wire::put_datagram_header(echo, c.datagram_token, 0);
-        wire::encode(echo, wire::DatagramHello{hello->attempt});
+        wire::encode(echo, wire::DatagramHello{hello.attempt});
         ::sendto(datagram_fd_, echo.data(), echo.size(), MSG_DONTWAIT | MSG_NOSIGNAL,
                  reinterpret_cast<const sockaddr*>(&from), length);
         return;
@@ -101,20 +110,25 @@ void Gateway::on_datagram(std::string_view datagram, const sockaddr_storage& fro
         ++stray_datagrams_;
         return;
     }
+    if (frame.type == wire::MessageType::UpdateAttributes) {
+        if (wire::UpdateAttributesView m; !decodes(frame, m)) return;
+    } else if (frame.type == wire::MessageType::SendInteraction) {
+        if (wire::SendInteractionView m; !decodes(frame, m)) return;
+    } else {
+        if (wire::Message m; decodes(frame, m))
+            close(c.fd, std::string("protocol error: ") + wire::message_name(frame.type) + " in a datagram");
+        return;
+    }
     if (!c.datagram_window.accept(read->header.sequence, c.datagrams)) return;
     if (c.paused) {  // held back by flow control: what it sends as best effort is dropped, not queued
         ++c.datagrams.held_back;
         return;
     }
     const int fd = c.fd;
-    if (!std::holds_alternative<wire::UpdateAttributes>(message) && !std::holds_alternative<wire::SendInteraction>(message)) {
-        close(fd, std::string("protocol error: ") + wire::message_name(frame.type) + " in a datagram");
-        return;
-    }
     try {
         over_budget_ = -1;
-        if (trace_ && c.federation) trace_->received(federation_name(c), c.federate, message, MessageTrace::now_ns());
-        on_request(c, message);
+        if (trace_) c.read_ns = MessageTrace::now_ns();
+        on_request(c, frame);
     } catch (const wire::WireError& e) {
         close(fd, std::string("protocol error: ") + e.what());
         return;

@@ -1,5 +1,5 @@
-// The gateway's path of a request: what a connection reads is cut into frames, decoded and dispatched once
-// (on_request) onto the serve() overload of its type. The reactor around it is reactor.cpp, the stream
+// The gateway's path of a request: what a connection reads is cut into frames, each decoded and dispatched
+// once (on_request) onto the serve() overload of its type, past the taps. The reactor around it is reactor.cpp, the stream
 // I/O transport.cpp, the handshake session.cpp, flow control flow_control.cpp, and the federation
 // management it serves itself federations.cpp.
 #include "rti/server/gateway.hpp"
@@ -86,39 +86,65 @@ void check_forwardable(const wire::Frame& frame, std::uint32_t max_frame_bytes) 
     }
 }
 }  // namespace
-template <class View>
-void Gateway::serve_view(Connection& c, const wire::Frame& frame) {
+void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
+    if (!c.greeted || !c.challenge.empty()) return greet(c, frame.type, wire::decode(frame));  // session.cpp
     check_forwardable(frame, options_.max_frame_bytes);
-    const View view = wire::decode_as<View>(frame);
-    if (recorder_ && c.federation) recorder_->request(c.federation->federation, c.federate, view);
-    if (frame.payload.size() < wire::kSplicedValueBytes) return serve(c, view);
-    struct Scope {  // the block is let go once served, whatever happens
+    if (frame.payload.size() < wire::kSplicedValueBytes) return on_request(c, frame);
+    // A large update's or interaction's values go to the receivers from the block they were read into
+    // (ConnectionOutbox::spliced): the block is shared while the frame is served, and let go after.
+    struct Scope {
         SpliceSource& source;
         ~Scope() { source = {}; }
     } scope{splice_source_};
     splice_source_ = {c.in.share(), frame.payload};
-    serve(c, view);
+    on_request(c, frame);
 }
 
-void Gateway::on_frame(Connection& c, const wire::Frame& frame) {
-    // Updates and interactions, when nothing needs them whole (the trace): served with their values viewed in
-    // the frame rather than copied out of it, a camera frame's megabytes included.
-    if (c.greeted && c.challenge.empty() && !trace_) {
-        if (frame.type == wire::MessageType::UpdateAttributes) return serve_view<wire::UpdateAttributesView>(c, frame);
-        if (frame.type == wire::MessageType::SendInteraction) return serve_view<wire::SendInteractionView>(c, frame);
+namespace {
+// The form the gateway serves each message in: updates and interactions with their values viewed in the frame
+// rather than copied out of it (a camera frame is megabytes), everything else as it is.
+template <class M>
+struct Served {
+    using type = M;
+};
+template <>
+struct Served<wire::UpdateAttributes> {
+    using type = wire::UpdateAttributesView;
+};
+template <>
+struct Served<wire::SendInteraction> {
+    using type = wire::SendInteractionView;
+};
+}  // namespace
+
+// The one dispatcher of the gateway process, for the stream and the datagrams alike: a switch over the frame's
+// type decodes the message in the form it is served in, shows it to the taps and hands it to the overload of
+// serve() for its type. Requests with a result are served by the gateway; everything else a joined federate
+// sends goes to its federation.
+void Gateway::on_request(Connection& c, const wire::Frame& frame) {
+    switch (frame.type) {
+#define HLACORE_X(name)             \
+    case wire::MessageType::name:   \
+        return serve_frame<Served<wire::name>::type>(c, frame);
+        HLACORE_MESSAGES(HLACORE_X)
+#undef HLACORE_X
+        default: throw wire::WireError("unknown message type " + std::to_string(static_cast<unsigned>(frame.type)));
     }
-    wire::Message message = wire::decode(frame);
-    if (!c.greeted || !c.challenge.empty()) return greet(c, frame.type, message);  // session.cpp
-    check_forwardable(frame, options_.max_frame_bytes);
-    if (trace_ && c.federation) trace_->received(c.federation->federation.name(), c.federate, message, c.read_ns);
-    on_request(c, message);
 }
 
-// The one dispatcher of the gateway process: each message goes to the overload of serve() for its type.
-// Requests with a result are served here; everything else a joined federate sends goes to its federation.
-void Gateway::on_request(Connection& c, const wire::Message& message) {
-    if (recorder_ && c.federation) recorder_->request(c.federation->federation, c.federate, message);
-    std::visit([&](const auto& m) { serve(c, m); }, message);
+template <class M>
+void Gateway::serve_frame(Connection& c, const wire::Frame& frame) {
+    const M m = wire::decode_as<M>(frame);
+    if ((recorder_ || trace_) && c.federation) tap(c, m);
+    serve(c, m);
+}
+
+// The taps: the recording (rtig --record, or a recorder federate) and the message trace (rtig --trace), each
+// attached when asked for; a request meets them here and nowhere else.
+template <class M>
+void Gateway::tap(Connection& c, const M& m) {
+    if (recorder_) recorder_->request(c.federation->federation, c.federate, m);
+    if (trace_) trace_->received(c.federation->federation.name(), c.federate, m, c.read_ns);
 }
 
 Federation& Gateway::joined(const Connection& c) const {
@@ -131,11 +157,7 @@ const std::string& Gateway::federation_name(const Connection& c) const { return 
 namespace {
 template <class M>
 const char* name_of() {
-    if constexpr (std::is_same_v<M, std::monostate>) {
-        return wire::message_name(wire::MessageType::Invalid);
-    } else {
-        return wire::message_name(M::kType);
-    }
+    return wire::message_name(M::kType);
 }
 }  // namespace
 template <class M>

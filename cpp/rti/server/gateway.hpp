@@ -134,8 +134,12 @@ private:
     void on_frame(Connection& c, const wire::Frame& frame);
     // The session before any service: the Hello, then the answer to the challenge (session.cpp).
     void greet(Connection& c, wire::MessageType type, const wire::Message& message);
-    // The one dispatcher: a visit onto serve() for the message's type (gateway.cpp).
-    void on_request(Connection& c, const wire::Message& message);
+    // The one dispatcher: a switch over the frame's type onto serve() (gateway.cpp), past the taps.
+    void on_request(Connection& c, const wire::Frame& frame);
+    template <class M>
+    void serve_frame(Connection& c, const wire::Frame& frame);
+    template <class M>
+    void tap(Connection& c, const M& m);
 #define HLACORE_X(name) void serve(Connection& c, const wire::name& m);
     HLACORE_GATEWAY_SERVICES(HLACORE_X)
 #undef HLACORE_X
@@ -184,6 +188,8 @@ private:
     void open_datagrams(const sockaddr_storage& bound, socklen_t length);
     void on_datagrams();
     void on_datagram(std::string_view datagram, const sockaddr_storage& from, socklen_t length);
+    template <class M>
+    bool decodes(const wire::Frame& frame, M& m);  // counts a datagram that does not as stray
     // Sends `frame` to c as a datagram when c takes them and it fits; false: it goes in the stream.
     bool send_datagram(Connection& c, std::string_view frame);
     void give_datagram_token(Connection& c);
@@ -215,8 +221,6 @@ private:
         std::string_view frame;
     };
     SpliceSource splice_source_;
-    template <class View>
-    void serve_view(Connection& c, const wire::Frame& frame);
     EventLog events_;  // joins, resigns and drops, for the status report
     void recorder_failed();  // logs why recording into the file stopped, once
     // Has the federation's outbox hand its callbacks to the recorder (made now if there is none).

@@ -69,9 +69,14 @@ public:
     void dropped(const Federation& federation, FederateHandle federate, const std::string& why);
     // A request of a joined federate, before it is served.
     void request(const Federation& federation, FederateHandle from, const wire::Message& message);
-    // The same for an update or interaction the gateway serves from its frame (Gateway::serve_view).
+    // The same for an update or interaction the gateway serves from its frame (Gateway::tap).
     void request(const Federation& federation, FederateHandle from, const wire::UpdateAttributesView& m);
     void request(const Federation& federation, FederateHandle from, const wire::SendInteractionView& m);
+    // Any other request as the gateway serves it (Gateway::tap).
+    template <class M>
+    void request(const Federation& federation, FederateHandle from, const M& m) {
+        if (records(federation)) request(federation, from, wire::Message(m));
+    }
     // The gateway's answer to a request: a registration's object, or a refusal.
     void answered(const Federation& federation, FederateHandle to, const wire::Message& answer);
     // A callback sent to a federate (Outbox::send: every kind but reflections and received interactions).

@@ -213,6 +213,29 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     X(UnsubscribeObjectClassWithRegion) X(SubscribeInteractionClassWithRegion)                         \
     X(UnsubscribeInteractionClassWithRegion) X(RequestClassUpdateWithRegion)
 
+// What a federate's client does when a message from the gateway is filed (under its lock, before tick()): each
+// has a `bool Client::arrived(M&)` (false: not a callback, tick() never sees it) in client/<group>.cpp,
+// declared from this list; the answers (HLACORE_ANSWERS) go to the caller waiting on their id. Any other
+// message is a callback, queued as it is.
+#define HLACORE_CLIENT_ARRIVALS(X)                                                                     \
+    /* the session (client/reader.cpp) */                                                              \
+    X(Welcome) X(Authenticated) X(ClockEcho) X(Pong) X(RecordedTopic) X(Recorded)                      \
+    /* objects, sync_points: what later calls check against, known at once */                          \
+    X(DiscoverObject) X(RemoveObject) X(AnnounceSyncPoint) X(FederationSynchronized)
+
+// The callbacks whose delivery changes the federate's own state (HLA 1.3: when tick() hands them over, not
+// when they arrive): each has a `void Client::delivered(const M&)` in client/<group>.cpp, declared from this
+// list.
+#define HLACORE_CLIENT_DELIVERIES(X)                                                                   \
+    /* time */                                                                                         \
+    X(TimeRegulationEnabled) X(TimeConstrainedEnabled) X(TimeAdvanceGrant)                             \
+    /* ownership */                                                                                    \
+    X(AcquisitionNotification) X(DivestitureNotification) X(OwnershipUnavailable)                      \
+    X(RequestOwnershipRelease) X(ConfirmAcquisitionCancellation)                                       \
+    /* save_restore */                                                                                 \
+    X(InitiateFederateSave) X(FederationSaved) X(FederationRestoreBegun) X(FederationRestored)         \
+    X(InitiateFederateRestore)
+
 enum class MessageType : std::uint16_t { HLACORE_LIST_CODES(Invalid, HLACORE_MESSAGES) };
 
 const char* message_name(MessageType type);

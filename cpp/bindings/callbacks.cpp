@@ -64,97 +64,119 @@ Named object_attributes(C callback, const M& m, Extra&&... extra) {
     return named(callback, ObjectHandle{m.object}, to_tuple<AttributeHandle>(m.attributes), std::forward<Extra>(extra)...);
 }
 
-// A queued message as the callback it is, with PyHLA's argument order.
+// Each callback message as the callback it is, with PyHLA's argument order: one overload per message of
+// HLACORE_CALLBACK_MESSAGES (wire/callbacks.hpp checks that none is missing).
+struct ToCallback {
+    Named operator()(const wire::SyncPointRegistrationSucceeded& m) const {
+        return named(C::synchronizationPointRegistrationSucceeded, to_str(m.label));
+    }
+    Named operator()(const wire::SyncPointRegistrationFailed& m) const {
+        return named(C::synchronizationPointRegistrationFailed, to_str(m.label));
+    }
+    Named operator()(const wire::AnnounceSyncPoint& m) const {
+        return named(C::announceSynchronizationPoint, to_str(m.label), to_str(m.tag));
+    }
+    Named operator()(const wire::FederationSynchronized& m) const {
+        return named(C::federationSynchronized, to_str(m.label));
+    }
+    Named operator()(const wire::StartRegistration& m) const {
+        return named(C::startRegistrationForObjectClass, ObjectClassHandle{m.object_class});
+    }
+    Named operator()(const wire::StopRegistration& m) const {
+        return named(C::stopRegistrationForObjectClass, ObjectClassHandle{m.object_class});
+    }
+    Named operator()(const wire::TurnInteractionsOn& m) const {
+        return named(C::turnInteractionsOn, InteractionClassHandle{m.interaction_class});
+    }
+    Named operator()(const wire::TurnInteractionsOff& m) const {
+        return named(C::turnInteractionsOff, InteractionClassHandle{m.interaction_class});
+    }
+    Named operator()(const wire::DiscoverObject& m) const {
+        return named(C::discoverObjectInstance, handle_of<ObjectHandle>(m.object), ObjectClassHandle{m.object_class}, to_str(m.name));
+    }
+    Named operator()(const wire::ReflectAttributes& m) const {
+        return timed(C::reflectAttributeValues, m, handle_of<ObjectHandle>(m.object), to_dict<AttributeHandle>(m.values), to_str(m.tag),
+                     handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport));
+    }
+    Named operator()(const wire::ReceiveInteraction& m) const {
+        return timed(C::receiveInteraction, m, handle_of<InteractionClassHandle>(m.interaction_class), to_dict<ParameterHandle>(m.values),
+                     to_str(m.tag), handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport));
+    }
+    Named operator()(const wire::RemoveObject& m) const {
+        return timed(C::removeObjectInstance, m, handle_of<ObjectHandle>(m.object), to_str(m.tag));
+    }
+    Named operator()(const wire::TimeRegulationEnabled& m) const { return named(C::timeRegulationEnabled, m.time); }
+    Named operator()(const wire::TimeConstrainedEnabled& m) const { return named(C::timeConstrainedEnabled, m.time); }
+    Named operator()(const wire::TimeAdvanceGrant& m) const { return named(C::timeAdvanceGrant, m.time); }
+    Named operator()(const wire::RequestRetraction& m) const {
+        return named(C::requestRetraction, EventRetractionHandle{m.sender, m.serial});
+    }
+    Named operator()(const wire::ProvideAttributeValueUpdate& m) const {
+        return object_attributes(C::provideAttributeValueUpdate, m);
+    }
+    Named operator()(const wire::RequestOwnershipAssumption& m) const {
+        return object_attributes(C::requestAttributeOwnershipAssumption, m, to_str(m.tag));
+    }
+    Named operator()(const wire::DivestitureNotification& m) const {
+        return object_attributes(C::attributeOwnershipDivestitureNotification, m);
+    }
+    Named operator()(const wire::AcquisitionNotification& m) const {
+        return object_attributes(C::attributeOwnershipAcquisitionNotification, m);
+    }
+    Named operator()(const wire::OwnershipUnavailable& m) const {
+        return object_attributes(C::attributeOwnershipUnavailable, m);
+    }
+    Named operator()(const wire::RequestOwnershipRelease& m) const {
+        return object_attributes(C::requestAttributeOwnershipRelease, m, to_str(m.tag));
+    }
+    Named operator()(const wire::ConfirmAcquisitionCancellation& m) const {
+        return object_attributes(C::confirmAttributeOwnershipAcquisitionCancellation, m);
+    }
+    Named operator()(const wire::AttributesInScope& m) const { return object_attributes(C::attributesInScope, m); }
+    Named operator()(const wire::AttributesOutOfScope& m) const {
+        return object_attributes(C::attributesOutOfScope, m);
+    }
+    Named operator()(const wire::TurnUpdatesOn& m) const {
+        return object_attributes(C::turnUpdatesOnForObjectInstance, m);
+    }
+    Named operator()(const wire::TurnUpdatesOff& m) const {
+        return object_attributes(C::turnUpdatesOffForObjectInstance, m);
+    }
+    Named operator()(const wire::OwnershipInformation& m) const {
+        switch (static_cast<wire::OwnershipKind>(m.kind)) {
+            case wire::OwnershipKind::OwnedByFederate:
+                return named(C::informAttributeOwnership, ObjectHandle{m.object}, AttributeHandle{m.attribute},
+                             FederateHandle{m.owner});
+            case wire::OwnershipKind::OwnedByRti:
+                return named(C::attributeOwnedByRTI, ObjectHandle{m.object}, AttributeHandle{m.attribute});
+            default:
+                return named(C::attributeIsNotOwned, ObjectHandle{m.object}, AttributeHandle{m.attribute});
+        }
+    }
+    Named operator()(const wire::InitiateFederateSave& m) const {
+        return named(C::initiateFederateSave, to_str(m.label));
+    }
+    Named operator()(const wire::FederationSaved& m) const {
+        return named(m.success ? C::federationSaved : C::federationNotSaved);
+    }
+    Named operator()(const wire::RestoreRequestAnswer& m) const {
+        if (m.succeeded)
+            return named(C::requestFederationRestoreSucceeded, to_str(m.label));
+        return named(C::requestFederationRestoreFailed, to_str(m.label), to_str(m.reason));
+    }
+    Named operator()(const wire::FederationRestoreBegun&) const { return named(C::federationRestoreBegun); }
+    Named operator()(const wire::InitiateFederateRestore& m) const {
+        return named(C::initiateFederateRestore, to_str(m.label), FederateHandle{m.federate});
+    }
+    Named operator()(const wire::FederationRestored& m) const {
+        return named(m.success ? C::federationRestored : C::federationNotRestored);
+    }
+    Named unexpected() const { throw RtiError(ErrorCode::RTIinternalError, "unexpected message from the gateway"); }
+};
+
 Named to_callback(const wire::Message& message) {
-    return std::visit(
-        [](const auto& m) -> Named {
-            using M = std::decay_t<decltype(m)>;
-            if constexpr (std::is_same_v<M, wire::SyncPointRegistrationSucceeded>) {
-                return named(C::synchronizationPointRegistrationSucceeded, to_str(m.label));
-            } else if constexpr (std::is_same_v<M, wire::SyncPointRegistrationFailed>) {
-                return named(C::synchronizationPointRegistrationFailed, to_str(m.label));
-            } else if constexpr (std::is_same_v<M, wire::AnnounceSyncPoint>) {
-                return named(C::announceSynchronizationPoint, to_str(m.label), to_str(m.tag));
-            } else if constexpr (std::is_same_v<M, wire::FederationSynchronized>) {
-                return named(C::federationSynchronized, to_str(m.label));
-            } else if constexpr (std::is_same_v<M, wire::StartRegistration>) {
-                return named(C::startRegistrationForObjectClass, ObjectClassHandle{m.object_class});
-            } else if constexpr (std::is_same_v<M, wire::StopRegistration>) {
-                return named(C::stopRegistrationForObjectClass, ObjectClassHandle{m.object_class});
-            } else if constexpr (std::is_same_v<M, wire::TurnInteractionsOn>) {
-                return named(C::turnInteractionsOn, InteractionClassHandle{m.interaction_class});
-            } else if constexpr (std::is_same_v<M, wire::TurnInteractionsOff>) {
-                return named(C::turnInteractionsOff, InteractionClassHandle{m.interaction_class});
-            } else if constexpr (std::is_same_v<M, wire::DiscoverObject>) {
-                return named(C::discoverObjectInstance, handle_of<ObjectHandle>(m.object), ObjectClassHandle{m.object_class}, to_str(m.name));
-            } else if constexpr (std::is_same_v<M, wire::ReflectAttributes>) {
-                return timed(C::reflectAttributeValues, m, handle_of<ObjectHandle>(m.object), to_dict<AttributeHandle>(m.values), to_str(m.tag),
-                             handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport));
-            } else if constexpr (std::is_same_v<M, wire::ReceiveInteraction>) {
-                return timed(C::receiveInteraction, m, handle_of<InteractionClassHandle>(m.interaction_class), to_dict<ParameterHandle>(m.values),
-                             to_str(m.tag), handle_of<OrderingHandle>(m.order), handle_of<TransportationHandle>(m.transport));
-            } else if constexpr (std::is_same_v<M, wire::RemoveObject>) {
-                return timed(C::removeObjectInstance, m, handle_of<ObjectHandle>(m.object), to_str(m.tag));
-            } else if constexpr (std::is_same_v<M, wire::TimeRegulationEnabled>) {
-                return named(C::timeRegulationEnabled, m.time);
-            } else if constexpr (std::is_same_v<M, wire::TimeConstrainedEnabled>) {
-                return named(C::timeConstrainedEnabled, m.time);
-            } else if constexpr (std::is_same_v<M, wire::TimeAdvanceGrant>) {
-                return named(C::timeAdvanceGrant, m.time);
-            } else if constexpr (std::is_same_v<M, wire::RequestRetraction>) {
-                return named(C::requestRetraction, EventRetractionHandle{m.sender, m.serial});
-            } else if constexpr (std::is_same_v<M, wire::ProvideAttributeValueUpdate>) {
-                return object_attributes(C::provideAttributeValueUpdate, m);
-            } else if constexpr (std::is_same_v<M, wire::RequestOwnershipAssumption>) {
-                return object_attributes(C::requestAttributeOwnershipAssumption, m, to_str(m.tag));
-            } else if constexpr (std::is_same_v<M, wire::DivestitureNotification>) {
-                return object_attributes(C::attributeOwnershipDivestitureNotification, m);
-            } else if constexpr (std::is_same_v<M, wire::AcquisitionNotification>) {
-                return object_attributes(C::attributeOwnershipAcquisitionNotification, m);
-            } else if constexpr (std::is_same_v<M, wire::OwnershipUnavailable>) {
-                return object_attributes(C::attributeOwnershipUnavailable, m);
-            } else if constexpr (std::is_same_v<M, wire::RequestOwnershipRelease>) {
-                return object_attributes(C::requestAttributeOwnershipRelease, m, to_str(m.tag));
-            } else if constexpr (std::is_same_v<M, wire::ConfirmAcquisitionCancellation>) {
-                return object_attributes(C::confirmAttributeOwnershipAcquisitionCancellation, m);
-            } else if constexpr (std::is_same_v<M, wire::AttributesInScope>) {
-                return object_attributes(C::attributesInScope, m);
-            } else if constexpr (std::is_same_v<M, wire::AttributesOutOfScope>) {
-                return object_attributes(C::attributesOutOfScope, m);
-            } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOn>) {
-                return object_attributes(C::turnUpdatesOnForObjectInstance, m);
-            } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOff>) {
-                return object_attributes(C::turnUpdatesOffForObjectInstance, m);
-            } else if constexpr (std::is_same_v<M, wire::OwnershipInformation>) {
-                switch (static_cast<wire::OwnershipKind>(m.kind)) {
-                    case wire::OwnershipKind::OwnedByFederate:
-                        return named(C::informAttributeOwnership, ObjectHandle{m.object}, AttributeHandle{m.attribute},
-                                     FederateHandle{m.owner});
-                    case wire::OwnershipKind::OwnedByRti:
-                        return named(C::attributeOwnedByRTI, ObjectHandle{m.object}, AttributeHandle{m.attribute});
-                    default:
-                        return named(C::attributeIsNotOwned, ObjectHandle{m.object}, AttributeHandle{m.attribute});
-                }
-            // save/restore (HLA 1.3 §4.11-4.22)
-            } else if constexpr (std::is_same_v<M, wire::InitiateFederateSave>) {
-                return named(C::initiateFederateSave, to_str(m.label));
-            } else if constexpr (std::is_same_v<M, wire::FederationSaved>) {
-                return named(m.success ? C::federationSaved : C::federationNotSaved);
-            } else if constexpr (std::is_same_v<M, wire::RestoreRequestAnswer>) {
-                if (m.succeeded)
-                    return named(C::requestFederationRestoreSucceeded, to_str(m.label));
-                return named(C::requestFederationRestoreFailed, to_str(m.label), to_str(m.reason));
-            } else if constexpr (std::is_same_v<M, wire::FederationRestoreBegun>) {
-                return named(C::federationRestoreBegun);
-            } else if constexpr (std::is_same_v<M, wire::InitiateFederateRestore>) {
-                return named(C::initiateFederateRestore, to_str(m.label), FederateHandle{m.federate});
-            } else if constexpr (std::is_same_v<M, wire::FederationRestored>) {
-                return named(m.success ? C::federationRestored : C::federationNotRestored);
-            } else {
-                throw RtiError(ErrorCode::RTIinternalError, "unexpected message from the gateway");
-            }
-        },
-        message);
+    ToCallback to_callback;
+    return wire::dispatch_callback<Named>(message, to_callback);
 }
 
 // The ambassador's method `name`, or null when it has none, without the AttributeError that getattr would

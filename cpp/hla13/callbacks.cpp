@@ -4,6 +4,7 @@
 
 #include "ambassador.hpp"
 #include "fedtime.hh"
+#include "rti/wire/callbacks.hpp"
 
 using namespace hlacore;
 using hlacore::hla13::AttributeHandles;
@@ -20,104 +21,110 @@ Pairs received(M& m) {
     return Pairs{std::move(m.values), true, m.order, m.transport};
 }
 
+// Each callback message as the call of the federate's ambassador it is: one overload per message of
+// HLACORE_CALLBACK_MESSAGES (wire/callbacks.hpp checks that none is missing).
+struct Deliver {
+    RTI::FederateAmbassador& fa;
+    void operator()(wire::SyncPointRegistrationSucceeded& m) {
+        fa.synchronizationPointRegistrationSucceeded(m.label.c_str());
+    }
+    void operator()(wire::SyncPointRegistrationFailed& m) {
+        fa.synchronizationPointRegistrationFailed(m.label.c_str());
+    }
+    void operator()(wire::AnnounceSyncPoint& m) { fa.announceSynchronizationPoint(m.label.c_str(), m.tag.c_str()); }
+    void operator()(wire::FederationSynchronized& m) { fa.federationSynchronized(m.label.c_str()); }
+    void operator()(wire::StartRegistration& m) { fa.startRegistrationForObjectClass(m.object_class); }
+    void operator()(wire::StopRegistration& m) { fa.stopRegistrationForObjectClass(m.object_class); }
+    void operator()(wire::TurnInteractionsOn& m) { fa.turnInteractionsOn(m.interaction_class); }
+    void operator()(wire::TurnInteractionsOff& m) { fa.turnInteractionsOff(m.interaction_class); }
+    void operator()(wire::DiscoverObject& m) { fa.discoverObjectInstance(m.object, m.object_class, m.name.c_str()); }
+    void operator()(wire::ReflectAttributes& m) {
+        const AttributeValues values(received(m));
+        if (m.time)
+            fa.reflectAttributeValues(m.object, values, RTIfedTime(*m.time), m.tag.c_str(), retraction(m.sender, m.serial));
+        else
+            fa.reflectAttributeValues(m.object, values, m.tag.c_str());
+    }
+    void operator()(wire::ReceiveInteraction& m) {
+        const ParameterValues values(received(m));
+        if (m.time)
+            fa.receiveInteraction(m.interaction_class, values, RTIfedTime(*m.time), m.tag.c_str(),
+                                  retraction(m.sender, m.serial));
+        else
+            fa.receiveInteraction(m.interaction_class, values, m.tag.c_str());
+    }
+    void operator()(wire::RemoveObject& m) {
+        if (m.time)
+            fa.removeObjectInstance(m.object, RTIfedTime(*m.time), m.tag.c_str(), retraction(m.sender, m.serial));
+        else
+            fa.removeObjectInstance(m.object, m.tag.c_str());
+    }
+    void operator()(wire::TimeRegulationEnabled& m) { fa.timeRegulationEnabled(RTIfedTime(m.time)); }
+    void operator()(wire::TimeConstrainedEnabled& m) { fa.timeConstrainedEnabled(RTIfedTime(m.time)); }
+    void operator()(wire::TimeAdvanceGrant& m) { fa.timeAdvanceGrant(RTIfedTime(m.time)); }
+    void operator()(wire::RequestRetraction& m) { fa.requestRetraction(retraction(m.sender, m.serial)); }
+    void operator()(wire::ProvideAttributeValueUpdate& m) {
+        fa.provideAttributeValueUpdate(m.object, AttributeHandles(std::move(m.attributes)));
+    }
+    void operator()(wire::RequestOwnershipAssumption& m) {
+        fa.requestAttributeOwnershipAssumption(m.object, AttributeHandles(std::move(m.attributes)), m.tag.c_str());
+    }
+    void operator()(wire::DivestitureNotification& m) {
+        fa.attributeOwnershipDivestitureNotification(m.object, AttributeHandles(std::move(m.attributes)));
+    }
+    void operator()(wire::AcquisitionNotification& m) {
+        fa.attributeOwnershipAcquisitionNotification(m.object, AttributeHandles(std::move(m.attributes)));
+    }
+    void operator()(wire::OwnershipUnavailable& m) {
+        fa.attributeOwnershipUnavailable(m.object, AttributeHandles(std::move(m.attributes)));
+    }
+    void operator()(wire::RequestOwnershipRelease& m) {
+        fa.requestAttributeOwnershipRelease(m.object, AttributeHandles(std::move(m.attributes)), m.tag.c_str());
+    }
+    void operator()(wire::ConfirmAcquisitionCancellation& m) {
+        fa.confirmAttributeOwnershipAcquisitionCancellation(m.object, AttributeHandles(std::move(m.attributes)));
+    }
+    void operator()(wire::AttributesInScope& m) {
+        fa.attributesInScope(m.object, AttributeHandles(std::move(m.attributes)));
+    }
+    void operator()(wire::AttributesOutOfScope& m) {
+        fa.attributesOutOfScope(m.object, AttributeHandles(std::move(m.attributes)));
+    }
+    void operator()(wire::TurnUpdatesOn& m) {
+        fa.turnUpdatesOnForObjectInstance(m.object, AttributeHandles(std::move(m.attributes)));
+    }
+    void operator()(wire::TurnUpdatesOff& m) {
+        fa.turnUpdatesOffForObjectInstance(m.object, AttributeHandles(std::move(m.attributes)));
+    }
+    void operator()(wire::OwnershipInformation& m) {
+        switch (static_cast<wire::OwnershipKind>(m.kind)) {
+            case wire::OwnershipKind::OwnedByFederate: fa.informAttributeOwnership(m.object, m.attribute, m.owner); break;
+            case wire::OwnershipKind::OwnedByRti: fa.attributeOwnedByRTI(m.object, m.attribute); break;
+            default: fa.attributeIsNotOwned(m.object, m.attribute); break;
+        }
+    }
+    void operator()(wire::InitiateFederateSave& m) { fa.initiateFederateSave(m.label.c_str()); }
+    void operator()(wire::FederationSaved& m) {
+        if (m.success) fa.federationSaved();
+        else fa.federationNotSaved();
+    }
+    void operator()(wire::RestoreRequestAnswer& m) {
+        if (m.succeeded) fa.requestFederationRestoreSucceeded(m.label.c_str());
+        else fa.requestFederationRestoreFailed(m.label.c_str(), m.reason.c_str());
+    }
+    void operator()(wire::FederationRestoreBegun&) { fa.federationRestoreBegun(); }
+    void operator()(wire::InitiateFederateRestore& m) { fa.initiateFederateRestore(m.label.c_str(), m.federate); }
+    void operator()(wire::FederationRestored& m) {
+        if (m.success) fa.federationRestored();
+        else fa.federationNotRestored();
+    }
+    void unexpected() { throw RTI::RTIinternalError("unexpected message from the gateway"); }
+};
+
 }  // namespace
 
 void RTIambPrivateRefs::deliver(wire::Message& message) {
     if (!federate) return;  // not joined (or joined without an ambassador): nobody to tell
-    RTI::FederateAmbassador& fa = *federate;
-    std::visit(
-        [&fa](auto& m) {
-            using M = std::decay_t<decltype(m)>;
-            if constexpr (std::is_same_v<M, wire::SyncPointRegistrationSucceeded>) {
-                fa.synchronizationPointRegistrationSucceeded(m.label.c_str());
-            } else if constexpr (std::is_same_v<M, wire::SyncPointRegistrationFailed>) {
-                fa.synchronizationPointRegistrationFailed(m.label.c_str());
-            } else if constexpr (std::is_same_v<M, wire::AnnounceSyncPoint>) {
-                fa.announceSynchronizationPoint(m.label.c_str(), m.tag.c_str());
-            } else if constexpr (std::is_same_v<M, wire::FederationSynchronized>) {
-                fa.federationSynchronized(m.label.c_str());
-            } else if constexpr (std::is_same_v<M, wire::StartRegistration>) {
-                fa.startRegistrationForObjectClass(m.object_class);
-            } else if constexpr (std::is_same_v<M, wire::StopRegistration>) {
-                fa.stopRegistrationForObjectClass(m.object_class);
-            } else if constexpr (std::is_same_v<M, wire::TurnInteractionsOn>) {
-                fa.turnInteractionsOn(m.interaction_class);
-            } else if constexpr (std::is_same_v<M, wire::TurnInteractionsOff>) {
-                fa.turnInteractionsOff(m.interaction_class);
-            } else if constexpr (std::is_same_v<M, wire::DiscoverObject>) {
-                fa.discoverObjectInstance(m.object, m.object_class, m.name.c_str());
-            } else if constexpr (std::is_same_v<M, wire::ReflectAttributes>) {
-                const AttributeValues values(received(m));
-                if (m.time)
-                    fa.reflectAttributeValues(m.object, values, RTIfedTime(*m.time), m.tag.c_str(), retraction(m.sender, m.serial));
-                else
-                    fa.reflectAttributeValues(m.object, values, m.tag.c_str());
-            } else if constexpr (std::is_same_v<M, wire::ReceiveInteraction>) {
-                const ParameterValues values(received(m));
-                if (m.time)
-                    fa.receiveInteraction(m.interaction_class, values, RTIfedTime(*m.time), m.tag.c_str(),
-                                          retraction(m.sender, m.serial));
-                else
-                    fa.receiveInteraction(m.interaction_class, values, m.tag.c_str());
-            } else if constexpr (std::is_same_v<M, wire::RemoveObject>) {
-                if (m.time)
-                    fa.removeObjectInstance(m.object, RTIfedTime(*m.time), m.tag.c_str(), retraction(m.sender, m.serial));
-                else
-                    fa.removeObjectInstance(m.object, m.tag.c_str());
-            } else if constexpr (std::is_same_v<M, wire::TimeRegulationEnabled>) {
-                fa.timeRegulationEnabled(RTIfedTime(m.time));
-            } else if constexpr (std::is_same_v<M, wire::TimeConstrainedEnabled>) {
-                fa.timeConstrainedEnabled(RTIfedTime(m.time));
-            } else if constexpr (std::is_same_v<M, wire::TimeAdvanceGrant>) {
-                fa.timeAdvanceGrant(RTIfedTime(m.time));
-            } else if constexpr (std::is_same_v<M, wire::RequestRetraction>) {
-                fa.requestRetraction(retraction(m.sender, m.serial));
-            } else if constexpr (std::is_same_v<M, wire::ProvideAttributeValueUpdate>) {
-                fa.provideAttributeValueUpdate(m.object, AttributeHandles(std::move(m.attributes)));
-            } else if constexpr (std::is_same_v<M, wire::RequestOwnershipAssumption>) {
-                fa.requestAttributeOwnershipAssumption(m.object, AttributeHandles(std::move(m.attributes)), m.tag.c_str());
-            } else if constexpr (std::is_same_v<M, wire::DivestitureNotification>) {
-                fa.attributeOwnershipDivestitureNotification(m.object, AttributeHandles(std::move(m.attributes)));
-            } else if constexpr (std::is_same_v<M, wire::AcquisitionNotification>) {
-                fa.attributeOwnershipAcquisitionNotification(m.object, AttributeHandles(std::move(m.attributes)));
-            } else if constexpr (std::is_same_v<M, wire::OwnershipUnavailable>) {
-                fa.attributeOwnershipUnavailable(m.object, AttributeHandles(std::move(m.attributes)));
-            } else if constexpr (std::is_same_v<M, wire::RequestOwnershipRelease>) {
-                fa.requestAttributeOwnershipRelease(m.object, AttributeHandles(std::move(m.attributes)), m.tag.c_str());
-            } else if constexpr (std::is_same_v<M, wire::ConfirmAcquisitionCancellation>) {
-                fa.confirmAttributeOwnershipAcquisitionCancellation(m.object, AttributeHandles(std::move(m.attributes)));
-            } else if constexpr (std::is_same_v<M, wire::AttributesInScope>) {
-                fa.attributesInScope(m.object, AttributeHandles(std::move(m.attributes)));
-            } else if constexpr (std::is_same_v<M, wire::AttributesOutOfScope>) {
-                fa.attributesOutOfScope(m.object, AttributeHandles(std::move(m.attributes)));
-            } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOn>) {
-                fa.turnUpdatesOnForObjectInstance(m.object, AttributeHandles(std::move(m.attributes)));
-            } else if constexpr (std::is_same_v<M, wire::TurnUpdatesOff>) {
-                fa.turnUpdatesOffForObjectInstance(m.object, AttributeHandles(std::move(m.attributes)));
-            } else if constexpr (std::is_same_v<M, wire::OwnershipInformation>) {
-                switch (static_cast<wire::OwnershipKind>(m.kind)) {
-                    case wire::OwnershipKind::OwnedByFederate: fa.informAttributeOwnership(m.object, m.attribute, m.owner); break;
-                    case wire::OwnershipKind::OwnedByRti: fa.attributeOwnedByRTI(m.object, m.attribute); break;
-                    default: fa.attributeIsNotOwned(m.object, m.attribute); break;
-                }
-            } else if constexpr (std::is_same_v<M, wire::InitiateFederateSave>) {
-                fa.initiateFederateSave(m.label.c_str());
-            } else if constexpr (std::is_same_v<M, wire::FederationSaved>) {
-                if (m.success) fa.federationSaved();
-                else fa.federationNotSaved();
-            } else if constexpr (std::is_same_v<M, wire::RestoreRequestAnswer>) {
-                if (m.succeeded) fa.requestFederationRestoreSucceeded(m.label.c_str());
-                else fa.requestFederationRestoreFailed(m.label.c_str(), m.reason.c_str());
-            } else if constexpr (std::is_same_v<M, wire::FederationRestoreBegun>) {
-                fa.federationRestoreBegun();
-            } else if constexpr (std::is_same_v<M, wire::InitiateFederateRestore>) {
-                fa.initiateFederateRestore(m.label.c_str(), m.federate);
-            } else if constexpr (std::is_same_v<M, wire::FederationRestored>) {
-                if (m.success) fa.federationRestored();
-                else fa.federationNotRestored();
-            } else {
-                throw RTI::RTIinternalError("unexpected message from the gateway");
-            }
-        },
-        message);
+    Deliver deliver{*federate};
+    wire::dispatch_callback<void>(message, deliver);
 }

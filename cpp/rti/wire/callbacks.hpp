@@ -1,10 +1,14 @@
-// The federate ambassador's callbacks, by their HLA 1.3 (PyHLA) names, declared once: the binding turns
-// each message from the gateway into one of them (cpp/bindings/callbacks.cpp), Python reads the list as
-// hlacore._core.CALLBACKS, and tests/test_callbacks.py checks rti.FederateAmbassador's documentation
-// against it.
+// The federate ambassador's callbacks, declared once: their HLA 1.3 (PyHLA) names (Python reads the list as
+// hlacore._core.CALLBACKS, and tests/test_callbacks.py checks rti.FederateAmbassador's documentation against
+// it), the messages that carry them, and the one dispatch of every front end onto its overload per message
+// (cpp/bindings/callbacks.cpp, cpp/hla13/callbacks.cpp).
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
+#include <variant>
+
+#include "rti/wire/messages.hpp"
 
 namespace hlacore::wire {
 
@@ -44,5 +48,47 @@ constexpr const char* kCallbackNames[] = {
 };
 
 constexpr const char* callback_name(Callback c) { return kCallbackNames[static_cast<std::size_t>(c)]; }
+
+// The messages from the gateway that a federate's ambassador gets as callbacks (one each, or one of a few by a
+// flag or a kind: FederationSaved is federationSaved or federationNotSaved), in HLA's order of the groups.
+#define HLACORE_CALLBACK_MESSAGES(X)                                                                    \
+    X(SyncPointRegistrationSucceeded) X(SyncPointRegistrationFailed) X(AnnounceSyncPoint)              \
+    X(FederationSynchronized) X(InitiateFederateSave) X(FederationSaved) X(RestoreRequestAnswer)       \
+    X(FederationRestoreBegun) X(InitiateFederateRestore) X(FederationRestored)                         \
+    X(StartRegistration) X(StopRegistration) X(TurnInteractionsOn) X(TurnInteractionsOff)              \
+    X(DiscoverObject) X(ReflectAttributes) X(ReceiveInteraction) X(RemoveObject) X(AttributesInScope)  \
+    X(AttributesOutOfScope) X(ProvideAttributeValueUpdate) X(TurnUpdatesOn) X(TurnUpdatesOff)          \
+    X(RequestOwnershipAssumption) X(DivestitureNotification) X(AcquisitionNotification)                \
+    X(OwnershipUnavailable) X(RequestOwnershipRelease) X(ConfirmAcquisitionCancellation)               \
+    X(OwnershipInformation)                                                                            \
+    X(TimeRegulationEnabled) X(TimeConstrainedEnabled) X(TimeAdvanceGrant) X(RequestRetraction)
+
+template <class M>
+struct IsCallback : std::false_type {};
+#define HLACORE_X(name) \
+    template <>         \
+    struct IsCallback<name> : std::true_type {};
+HLACORE_CALLBACK_MESSAGES(HLACORE_X)
+#undef HLACORE_X
+
+// Hands a callback message to a front end (the Python binding, the HLA 1.3 C++ API, the ones to come):
+// `front_end(m)` with one overload per message of HLACORE_CALLBACK_MESSAGES, each returning R. A front end
+// that misses one does not compile. Any other message (none reaches the callback queue) goes to
+// front_end.unexpected().
+template <class R, class FrontEnd, class Queued>
+R dispatch_callback(Queued& message, FrontEnd& front_end) {
+    return std::visit(
+        [&front_end](auto& m) -> R {
+            using M = std::decay_t<decltype(m)>;
+            if constexpr (IsCallback<M>::value) {
+                static_assert(std::is_invocable_r_v<R, FrontEnd&, decltype(m)>,
+                              "a front end has no overload for a message of HLACORE_CALLBACK_MESSAGES");
+                return front_end(m);
+            } else {
+                return front_end.unexpected();
+            }
+        },
+        message);
+}
 
 }  // namespace hlacore::wire

@@ -12,7 +12,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from .report import FEDERATES, Report, p99  # noqa: E402
 
-# Medians of the reference RTIs on the same kind of machine (shared/reference/rti-performance-anchors.md).
+# Medians of the reference RTIs on the same kind of machine (measured 2026-11-23 with C++ federates in the
+# same loop, as report.ANCHORS; not re-measured by a run).
 ANCHORS_US = {"OpenRTI 0.10": {2: 151, 4: 563, 8: 1631}, "CERTI 3.5.1": {2: 398, 4: 975, 8: 3617}}
 
 

@@ -1,4 +1,4 @@
-"""Large updates (issue 20): camera-frame and point-cloud sizes, 1 MiB and 16 MiB, sent 1 → 1 through one
+"""Large updates: camera-frame and point-cloud sizes, 1 MiB and 16 MiB, sent 1 → 1 through one
 rtig as fast as the receiver takes them, every one counted; against a raw TCP stream of the same sizes (C++
 and Python, one send() per record), and the same C++ stream through a relay process (what any design that
 routes through a server cannot beat). Figures in bytes per second."""

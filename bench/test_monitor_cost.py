@@ -1,4 +1,4 @@
-"""The monitor's cost on the gateway (issue 21): the 2-federate lockstep through an rtig watched by
+"""The monitor's cost on the gateway: the 2-federate lockstep through an rtig watched by
 ``python -m hlacore.monitor`` (its own process, a status query every 0.5 s, a page connected to it) against
 the same rtig unwatched, in alternating rounds of one run."""
 

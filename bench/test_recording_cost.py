@@ -1,4 +1,4 @@
-"""The cost of recording (issue 18): the 2-federate lockstep and the 1 → 1 throughput through an rtig that
+"""The cost of recording: the 2-federate lockstep and the 1 → 1 throughput through an rtig that
 records everything (``rtig --record``) against the same rtig without, in alternating rounds of one run."""
 
 from __future__ import annotations

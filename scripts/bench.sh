@@ -3,8 +3,9 @@
 # floor program, then run the benchmarks in bench/. Arguments go to pytest (./scripts/bench.sh -k grant).
 # Writes build/bench/ (results.json, results.md, grant-latency.png) and, after a full run, the figures of
 # docs/performance.md and docs/grant-latency.png; the three-RTI table of docs/performance.md after any run that
-# measured all of it (-k three_rtis). The other two RTIs are built from the source archives in
-# $HLACORE_ANCHORS (default ../shared/anchors: OpenRTI's and CERTI 3.5.1's) by bench/rtis/build.sh.
+# measured all of it (-k three_rtis). OpenRTI and CERTI 3.5.1 join the three-RTI group only when given as
+# existing installs, HLACORE_BENCH_OPENRTI=PREFIX and HLACORE_BENCH_CERTI=PREFIX (bench/three_rtis.py says what
+# each prefix must hold); without them hlacore's rows run alone and one skip line says so.
 source "$(dirname "$0")/env.sh"
 install_hlacore bench
 command -v nft >/dev/null 2>&1 \
@@ -15,10 +16,6 @@ mkdir -p build
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/bench-configure.log 2>&1 \
     || { cat build/bench-configure.log; exit 1; }
 .venv/bin/cmake --build build/bench --target tcp_floor >build/bench-build.log 2>&1 || { cat build/bench-build.log; exit 1; }
-# OpenRTI and CERTI 3.5.1 from their source archives ($HLACORE_ANCHORS, default ../shared/anchors), and the
-# three-RTI benchmark program against each and against hlacore (bench/rtis/build.sh; kept once built).
-./bench/rtis/build.sh "${HLACORE_ANCHORS:-../shared/anchors}" build/rtis >/dev/null || exit 1
-export HLACORE_RTIS="$PWD/build/rtis"
 export HLACORE_TCP_FLOOR="$PWD/build/bench/tcp_floor"
 export HLACORE_BENCH_COMMAND="./scripts/bench.sh${*:+ $*}"
 exec .venv/bin/python -m pytest bench --benchmark-columns=min,median,mean,max,rounds "$@"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The load test of issue 6 at full size: FEDERATES federate processes (default 32) x UPDATES timestamped updates
+# The load test at full size: FEDERATES federate processes (default 32) x UPDATES timestamped updates
 # each (default 10000) in lockstep over the optimized rtig, every delivery checked by per-sender sequence
 # numbers; then the same with 2 federates killed midway. Prints the figures. The suite runs it at 8 x 200.
 #   scripts/load.sh [FEDERATES [UPDATES]]

@@ -1,5 +1,6 @@
 // One benchmark program written against the HLA 1.3 C++ API only, compiled unchanged against hlacore,
-// OpenRTI and CERTI 3.5.1 (bench/rtis/build.sh builds the two others; bench/test_three_rtis.py runs it).
+// OpenRTI and CERTI 3.5.1 (bench/three_rtis.py compiles it against each install given; bench/test_three_rtis.py
+// runs it).
 // Every federate is its own process; the federation uses hlacore's robot.fed (robot.location, 8-byte values).
 //
 //   hla13_bench WORKLOAD FEDERATION FED create|join NAME FEDERATES N M

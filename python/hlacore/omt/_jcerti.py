@@ -49,11 +49,14 @@ class _Fixed(Protocol[_V_co]):
     """A basic type of a fixed size whose ``unpack`` gives a ``_V_co``."""
 
     @property
-    def fixed_size(self) -> int | None: ...
+    def fixed_size(self) -> int | None:
+        """The encoded size in bytes."""
 
-    def pack(self, value: Any) -> bytes: ...
+    def pack(self, value: Any) -> bytes:
+        """Encode ``value``."""
 
-    def unpack(self, buffer: Buffer, offset: int = 0) -> tuple[_V_co, int]: ...
+    def unpack(self, buffer: Buffer, offset: int = 0) -> tuple[_V_co, int]:
+        """Decode one value at ``offset``; return ``(value, size)``."""
 
 
 class _Pack(Protocol[_V_contra]):

@@ -15,6 +15,7 @@ from types import ModuleType
 from typing import Any, Iterator, NamedTuple
 
 import pytest
+from sphinx.errors import PycodeError
 from sphinx.pycode import ModuleAnalyzer
 from sphinx.util.inventory import InventoryFile
 
@@ -74,9 +75,13 @@ def _is_variable(value: Any) -> bool:
 
 
 def _doc_of(value: Any, name: str, comments: dict[tuple[str, str], str], owner: str) -> str:
-    """A variable's doc comment (its value's __doc__ is its type's), else the object's own docstring."""
+    """A variable's doc comment, or its own __doc__ when that is not its type's (hlacore.omt's basic types
+    carry their own: defined in a submodule, a doc comment there would not reach hlacore.omt); else the
+    object's own docstring."""
     if _is_variable(value):
-        return comments.get((owner, name), "")
+        own = getattr(value, "__doc__", None)
+        return comments.get((owner, name), "") or (own if isinstance(own, str) and own != type(value).__doc__
+                                                   else "")
     return _pybind11_body(inspect.getdoc(value) or "", name)
 
 
@@ -92,13 +97,30 @@ def _members(cls: type) -> Iterator[str]:
             yield name
 
 
+def _comments_of(owner: type, comments: dict[tuple[str, str], str]) -> dict[tuple[str, str], str]:
+    """The doc comments of the module that defines ``owner`` (hlacore.omt's classes are in its submodules),
+    else ``comments`` (a compiled module has no source to read them from)."""
+    try:
+        return _attribute_docs(sys.modules[owner.__module__])
+    except (KeyError, PycodeError):
+        return comments
+
+
+def _homes(cls: type, module: ModuleType) -> set[str]:
+    """Where the reference may document ``cls``: its own module, and ``module`` if that exports it."""
+    return {cls.__module__} | ({module.__name__} if getattr(module, cls.__name__, None) is cls else set())
+
+
 def _class_names(prefix: str, cls: type, comments: dict[tuple[str, str], str]) -> Iterator[Name]:
     """A documented class's members, documented under it or under the base class that defines them."""
+    home = sys.modules[prefix.rpartition(".")[0]]
     for member in _members(cls):
-        bases = tuple(f"{base.__module__}.{base.__qualname__}.{member}" for base in cls.__mro__[1:])
+        bases = tuple(f"{module}.{base.__qualname__}.{member}" for base in cls.__mro__[1:]
+                      for module in sorted(_homes(base, home)))
         owner = next(base for base in cls.__mro__ if member in vars(base))
         value = inspect.getattr_static(cls, member)
-        doc = _doc_of(value if _is_variable(value) else getattr(cls, member), member, comments, owner.__qualname__)
+        doc = _doc_of(value if _is_variable(value) else getattr(cls, member), member, _comments_of(owner, comments),
+                      owner.__qualname__)
         yield Name(f"{prefix}.{member}", (f"{prefix}.{member}",) + bases, doc)
 
 

@@ -1,4 +1,4 @@
-"""Deprecated alias of :mod:`hlacore.experiments.robot_in_the_loop` (moved in issue 14); removed in the next release."""
+"""Deprecated alias of :mod:`hlacore.experiments.robot_in_the_loop`; removed in the next release."""
 
 from hlacore._deprecated import moved
 

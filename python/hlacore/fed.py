@@ -172,6 +172,7 @@ class _ClassIndex:
     @staticmethod
     def of(classes: Sequence[ObjectClass | InteractionClass]) -> _ClassIndex:
         # Built from the end so that the first declared class wins a shared leaf name.
+        """Index ``classes`` by handle, qualified name and leaf name."""
         return _ClassIndex(
             {c.handle: c for c in classes},
             {c.qualified_name: c for c in reversed(classes)},
@@ -179,6 +180,8 @@ class _ClassIndex:
         )
 
     def find(self, key: int | str, roots: tuple[str, ...], what: str) -> Any:
+        """The class with handle ``key``, or named ``key``: qualified, qualified under one of ``roots``
+        (``ObjectRoot.robot``), or by its leaf name; KeyError naming ``what`` otherwise."""
         _check_key(key, what)
         if isinstance(key, int):
             if key in self.by_handle:
@@ -195,6 +198,7 @@ class _ClassIndex:
         raise KeyError(f"no {what} named {key!r}")
 
     def is_subclass(self, cls: int, ancestor: int) -> bool:
+        """Whether the class with handle ``cls`` is the class ``ancestor`` or one of its subclasses."""
         c = self.by_handle.get(cls)
         while c is not None:
             if c.handle == ancestor:

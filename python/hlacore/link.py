@@ -279,9 +279,12 @@ class _DatagramFront(asyncio.DatagramProtocol):
         self.down = _Shaper(link._figures["down"], link._rng, in_order=False)
 
     def connection_made(self, transport: Any) -> None:
+        """Keep the listening socket's transport."""
         self.transport = transport
 
     def datagram_received(self, data: bytes, addr: Any) -> None:
+        """Forward a client's datagram upstream through its own back socket, delayed or dropped as the
+        up direction's figures say."""
         self.link._record("up", data)
         back = self.backs.get(addr)
         if back is None:

@@ -43,6 +43,7 @@ class Child:
 
     @property
     def pid(self) -> int:
+        """The process id."""
         return self.proc.pid
 
     def stderr(self) -> str:
@@ -77,9 +78,11 @@ class Child:
         return result
 
     def poll(self) -> Optional[int]:
+        """The exit status, or None while the process runs."""
         return self.proc.poll()
 
     def send_signal(self, sig: int) -> None:
+        """Send ``sig`` to the process unless it has exited."""
         if self.proc.poll() is None:
             self.proc.send_signal(sig)
 
@@ -101,6 +104,7 @@ class Child:
             return self.proc.returncode
 
     def kill(self) -> None:
+        """SIGKILL unless it has exited, and reap the process."""
         if self.proc.poll() is None:
             self.proc.kill()
         self.proc.wait()
@@ -166,6 +170,7 @@ class Rtig:
 
     @property
     def proc(self) -> subprocess.Popen[bytes]:
+        """The rtig process."""
         return self.child.proc
 
     def log(self) -> str:
@@ -245,9 +250,11 @@ class SyncAmbassador(rti.FederateAmbassador):
         self.synchronized: set[str] = set()
 
     def announceSynchronizationPoint(self, label: str, tag: str) -> None:
+        """Note the announced label."""
         self.announced.add(label)
 
     def federationSynchronized(self, label: str) -> None:
+        """Note the label the federation is synchronized on."""
         self.synchronized.add(label)
 
 

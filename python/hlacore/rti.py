@@ -695,13 +695,16 @@ class _EnableWatcher:
         self.constraint_pending = constrained
 
     def done(self) -> bool:
+        """Whether every enable callback asked for has arrived."""
         return not (self.regulation_pending or self.constraint_pending)
 
     def timeRegulationEnabled(self, time: float) -> None:
+        """Note that regulation is enabled, and forward the callback."""
         self.regulation_pending = False
         self._forward("timeRegulationEnabled", time)
 
     def timeConstrainedEnabled(self, time: float) -> None:
+        """Note that the federate is constrained, and forward the callback."""
         self.constraint_pending = False
         self._forward("timeConstrainedEnabled", time)
 

@@ -126,6 +126,8 @@ def _screen(text: str, columns: int, rows: int) -> str:
 
 
 def main(argv: Optional[list[str]] = None) -> int:
+    """Print the gateway's status (once, or every ``--watch`` seconds); returns the exit status (1 when
+    the gateway cannot be asked)."""
     parser = argparse.ArgumentParser(prog="python -m hlacore.status", description=__doc__.splitlines()[0])
     parser.add_argument("address", nargs="?",
                         help="HOST:PORT (default $HLACORE_RTIG, $CERTI_HOST:$CERTI_TCP_PORT or 127.0.0.1:60400)")

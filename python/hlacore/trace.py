@@ -41,6 +41,7 @@ class TraceRow:
 
     @property
     def seconds(self) -> float:
+        """``ns`` in seconds."""
         return self.ns / 1e9
 
 

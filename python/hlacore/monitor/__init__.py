@@ -194,6 +194,7 @@ class _Subscriber:
         self._task = asyncio.create_task(self._send())
 
     def offer(self, message: str) -> None:
+        """Make ``message`` the next one sent, replacing one not sent yet."""
         self._latest = message
         self._wake.set()
 
@@ -209,6 +210,7 @@ class _Subscriber:
                     return
 
     async def close(self) -> None:
+        """Stop sending and close the web socket."""
         self._task.cancel()
         if not self._socket.closed:
             await self._socket.close()

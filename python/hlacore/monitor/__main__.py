@@ -21,6 +21,7 @@ def listen_address(text: str) -> tuple[str, int]:
 
 
 def main(argv: Optional[list[str]] = None) -> int:
+    """Serve the monitor until Ctrl-C; returns the exit status (1 when it cannot listen)."""
     parser = argparse.ArgumentParser(prog="python -m hlacore.monitor", description=__doc__.splitlines()[0])
     parser.add_argument("address", nargs="?",
                         help="the gateway's HOST:PORT (default $HLACORE_RTIG, $CERTI_HOST:$CERTI_TCP_PORT or "

@@ -105,6 +105,8 @@ class _Lines:
                 self._cond.notify_all()
 
     def wait_for(self, text: str, timeout: float) -> None:
+        """Wait until the process has printed the line ``text``; TimeoutError after ``timeout`` seconds,
+        RuntimeError if the process ends first."""
         with self._cond:
             if not self._cond.wait_for(lambda: text in self.lines or self.proc.poll() is not None, timeout):
                 raise TimeoutError(f"no {text!r} within {timeout} s; saw {self.lines[-20:]}")
@@ -112,6 +114,7 @@ class _Lines:
                 raise RuntimeError(f"the process ended ({self.proc.poll()}) before {text!r}: {self.lines[-20:]}")
 
     def finish(self, timeout: float = 10.0) -> list[str]:
+        """Wait up to ``timeout`` seconds for the end of the output; return every line read."""
         self._thread.join(timeout)
         return self.lines
 

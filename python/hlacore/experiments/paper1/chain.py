@@ -68,6 +68,8 @@ class ChainResult(Result):
     late: list[str] = field(default_factory=list)  #: the bridge's lines about late states or acknowledgements
 
     def summary(self) -> dict[str, Any]:
+        """The checks' summary, plus the DE controller's grants, late states and acknowledgements, the
+        bridge's lines about them and the number of avatar commands."""
         out = super().summary()
         out.update(controller="de", de_grants=self.de_grants, late_states=self.late_states,
                    late_acks=self.late_acks, late=self.late,

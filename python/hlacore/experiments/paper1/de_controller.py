@@ -68,6 +68,7 @@ class AvatarControl(_CommandActor):
         self.log: list[tuple[float, float, float]] = []
 
     def fire(self) -> None:
+        """Command the avatar's speed from the nearest beam of each of its states, and log it."""
         for record in self.state.tokens:
             ranges = record.values.get("ranges")
             if record.source != self.avatar or not ranges:
@@ -88,6 +89,7 @@ class ObstacleDrivers(_CommandActor):
         self.obstacles = tuple(obstacles)
 
     def fire(self) -> None:
+        """Command each obstacle's speed from the y of its state."""
         for record in self.state.tokens:
             pose = record.values.get("pose")
             if record.source in self.obstacles and pose is not None:
@@ -101,6 +103,7 @@ class _Discoveries(rti.FederateAmbassador):
         self.names: set[str] = set()
 
     def discoverObjectInstance(self, obj: Any, cls: Any, name: str) -> None:
+        """Note the discovered robot's name."""
         self.names.add(str(name))
 
 
@@ -131,6 +134,7 @@ class _PoseLog(Actor):
         self._log = model_log
 
     def fire(self) -> None:
+        """Append each reflected pose to the model's log, with the time and the robot."""
         for record in self.state.tokens:
             pose = record.values.get("pose")
             if pose is not None:

@@ -27,10 +27,12 @@ class _Reflections(rti.FederateAmbassador):
         self.latest: dict[str, dict[str, Any]] = {}  # robot -> attribute -> value
 
     def discoverObjectInstance(self, obj: Any, cls: Any, name: str) -> None:
+        """Note the discovered robot's name."""
         self.names[obj] = str(name)
 
     def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], tag: Any, order: Any,
                                transport: Any, t: Optional[float] = None, retraction: Any = None) -> None:
+        """Decode the pose, ranges and stall flag reflected and keep them as the robot's latest."""
         kinds = {"pose": codec.POSE, "ranges": codec.RANGES, "stall": codec.STALL}
         values = self.latest.setdefault(self.names.get(obj, str(obj)), {})
         for handle, data in attributes.items():

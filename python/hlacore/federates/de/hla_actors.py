@@ -157,6 +157,7 @@ class ObjectPublisher(_Sender):
         return self._object
 
     def declare(self, director: "HlaDirector") -> None:
+        """Look up the class and attribute handles and publish the attributes."""
         rtia = director.rtia
         object_class, self._handles = _class_fields(
             rtia.getObjectClassHandle, rtia.getAttributeHandle, self.object_class, self.codecs)
@@ -164,10 +165,12 @@ class ObjectPublisher(_Sender):
         director.publish_attributes(object_class, set(self._handles.values()))
 
     def register(self, director: "HlaDirector") -> None:
+        """Register the object instance (shared with the publishers of the same class and name)."""
         assert self._class is not None
         self._object = director.register_object(self._class, self.instance_name)
 
     def fire(self) -> None:
+        """Update the attributes whose ports have a token, each port's last token encoded."""
         values = {
             self._handles[attr]: _encoder(self.codecs[attr])(port.last())
             for attr, port in self.ports.items()
@@ -205,6 +208,7 @@ class _Receiver(HlaActor):
         director.inject(self.inbox, Received(source, decoded, timestamp, max(at, director.now), tag), at)
 
     def fire(self) -> None:
+        """Send each received value on its port and the :class:`Received` on ``received``."""
         _send_received(self.inbox, self.ports, self.received)
 
 
@@ -230,6 +234,7 @@ class ObjectSubscriber(_Receiver):
         self.reflections = self.inbox
 
     def declare(self, director: "HlaDirector") -> None:
+        """Look up the class and attribute handles and subscribe to the attributes."""
         rtia = director.rtia
         object_class = self._look_up(rtia.getObjectClassHandle, rtia.getAttributeHandle, self.object_class)
         director.subscribe_attributes(object_class, set(self._names), self)
@@ -266,6 +271,7 @@ class InteractionSender(_Sender):
         self._class: Optional[rti.InteractionClassHandle] = None
 
     def declare(self, director: "HlaDirector") -> None:
+        """Look up the class and parameter handles and publish the interaction class."""
         rtia = director.rtia
         interaction_class, self._handles = _class_fields(
             rtia.getInteractionClassHandle, rtia.getParameterHandle, self.interaction_class, self.codecs)
@@ -273,6 +279,7 @@ class InteractionSender(_Sender):
         director.publish_interaction(interaction_class)
 
     def fire(self) -> None:
+        """Send one interaction per token index, with the parameters whose ports have that many tokens."""
         director = self.hla()
         if self._class is None:
             raise RuntimeError(f"{self.name!r} fired before its director declared the interaction")
@@ -304,6 +311,7 @@ class InteractionReceiver(_Receiver):
         self.interactions = self.inbox
 
     def declare(self, director: "HlaDirector") -> None:
+        """Look up the class and parameter handles and subscribe to the interaction class."""
         rtia = director.rtia
         interaction_class = self._look_up(rtia.getInteractionClassHandle, rtia.getParameterHandle,
                                           self.interaction_class)

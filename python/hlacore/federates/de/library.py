@@ -29,12 +29,14 @@ class Clock(Actor):
         self._origin = 0.0
 
     def initialize(self) -> None:
+        """Schedule the first tick at the start time plus ``offset`` (none when ``cycles`` is 0)."""
         self._k = 0
         self._origin = self.director_or_raise().start_time + self.offset
         if self.cycles is None or self.cycles > 0:
             self.fire_at(self._origin)
 
     def fire(self) -> None:
+        """Send the tick's number and schedule the next tick, until ``cycles``."""
         self.output.send(self._k)
         self._k += 1
         if self.cycles is None or self._k < self.cycles:
@@ -54,11 +56,13 @@ class TimedSource(Actor):
         self._next = 0
 
     def initialize(self) -> None:
+        """Schedule a firing at the first item's time."""
         self._next = 0
         if self.items:
             self.fire_at(self.items[0][0])
 
     def fire(self) -> None:
+        """Send the values due by now and schedule a firing at the next item's time."""
         while self._next < len(self.items) and self.items[self._next][0] <= self.now:
             self.output.send(self.items[self._next][1])
             self._next += 1
@@ -76,6 +80,7 @@ class Function(Actor):
         self.output = self.add_output("output")
 
     def fire(self) -> None:
+        """Send ``function(token)`` for each token on ``input``."""
         for token in self.input.tokens:
             self.output.send(self.function(token))
 
@@ -95,6 +100,7 @@ class Delay(Actor):
         self.output = self.add_output("output", delayed=True)
 
     def fire(self) -> None:
+        """Send each token on ``input`` ``delay`` later."""
         for token in self.input.tokens:
             self.output.send(token, delay=self.delay)
 
@@ -127,6 +133,7 @@ class Recorder(Actor):
         return [r.time for r in self.records]
 
     def fire(self) -> None:
+        """Append each token on ``input`` to :attr:`records`, with the director's tag."""
         director = self.director_or_raise()
         for token in self.input.tokens:
             self.records.append(Record(director.now, director.microstep, token))

@@ -1,4 +1,4 @@
-"""Deprecated alias of :mod:`hlacore.experiments.mirror.node` (moved in issue 14); removed in the next release."""
+"""Deprecated alias of :mod:`hlacore.experiments.mirror.node`; removed in the next release."""
 
 from hlacore._deprecated import moved
 

@@ -1,4 +1,4 @@
-"""Deprecated alias of :mod:`hlacore.experiments.mirror.reference` (moved in issue 14); removed in the next release."""
+"""Deprecated alias of :mod:`hlacore.experiments.mirror.reference`; removed in the next release."""
 
 from hlacore._deprecated import moved
 

@@ -41,11 +41,14 @@ class FdTransport:
         self._pending = b""
 
     def write(self, data: bytes) -> None:
+        """Write all of ``data``."""
         view = memoryview(data)
         while view:
             view = view[os.write(self.fd, view):]
 
     def read_line(self, timeout: float) -> bytes:
+        """The next line without its newline; TimeoutError after ``timeout`` seconds, ConnectionError
+        when the device closes the stream."""
         deadline = time.monotonic() + timeout
         while b"\n" not in self._pending:
             remaining = deadline - time.monotonic()
@@ -61,6 +64,7 @@ class FdTransport:
         return line
 
     def close(self) -> None:
+        """Close the file descriptor (idempotent)."""
         if self.fd >= 0:
             os.close(self.fd)
             self.fd = -1
@@ -80,10 +84,12 @@ class SerialTransport:
         self.port: Any = serial.Serial(path, baudrate=baudrate, timeout=0.1)
 
     def write(self, data: bytes) -> None:
+        """Write ``data`` and flush it to the port."""
         self.port.write(data)
         self.port.flush()
 
     def read_line(self, timeout: float) -> bytes:
+        """The next line without its newline; TimeoutError after ``timeout`` seconds."""
         deadline = time.monotonic() + timeout
         line = b""
         while not line.endswith(b"\n"):
@@ -93,6 +99,7 @@ class SerialTransport:
         return line[:-1]
 
     def close(self) -> None:
+        """Close the serial port."""
         self.port.close()
 
 

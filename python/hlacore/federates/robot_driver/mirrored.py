@@ -70,10 +70,12 @@ class _Ambassador(rti.FederateAmbassador):
         self.ranges_handle: Any = None
 
     def discoverObjectInstance(self, obj: Any, cls: Any, name: str) -> None:
+        """Note the discovered robot's name."""
         self.names[obj] = str(name)
 
     def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], tag: Any, order: Any,
                                transport: Any, time: Optional[float] = None, retraction: Any = None) -> None:
+        """Keep the ranges reflected for a known robot, as floats."""
         name = self.names.get(obj)
         data = attributes.get(self.ranges_handle)
         if name is not None and data is not None:

@@ -39,6 +39,7 @@ class _Ambassador(rti.FederateAmbassador):
 
     def receiveInteraction(self, cls: Any, parameters: dict[Any, bytes], tag: Any, order: Any, transport: Any,
                            time: Optional[float] = None, retraction: Any = None) -> None:
+        """Queue a complete command as a :class:`Command` (an incomplete one is ignored)."""
         values = {self.params[h]: v for h, v in parameters.items() if h in self.params}
         if set(values) != set(codec.PARAMETERS):
             return  # an incomplete command is ignored

@@ -214,15 +214,18 @@ class _Units:
         self.angle = 1.0 if str(props.get("unit_angle", "degrees")) == "radians" else math.pi / 180.0
 
     def nums(self, value: Value, n: int, default: list[float]) -> list[float]:
+        """The first ``n`` numbers of ``value`` (one number or a list), completed from ``default``."""
         items = value if isinstance(value, list) else [value]
         out = [float(v) for v in items] + default[len(items):]
         return out[:n]
 
     def pose(self, props: dict[str, Value]) -> tuple[float, float, float]:
+        """The ``pose`` property as ``(x, y, a)`` in metres and radians (z dropped)."""
         x, y, _z, a = self.nums(props.get("pose", [0, 0, 0, 0]), 4, [0.0, 0.0, 0.0, 0.0])
         return (x * self.length, y * self.length, a * self.angle)
 
     def size(self, props: dict[str, Value], default: list[float]) -> tuple[float, float]:
+        """The ``size`` property (else ``default``) as ``(sx, sy)`` in metres."""
         sx, sy = self.nums(props.get("size", default), 2, default)
         return (sx * self.length, sy * self.length)
 

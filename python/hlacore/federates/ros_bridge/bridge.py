@@ -248,13 +248,16 @@ class _Ambassador(rti.FederateAmbassador):
         self.parameters: dict[Any, str] = {}
 
     def discoverObjectInstance(self, obj: Any, cls: Any, name: str) -> None:
+        """Note the discovered robot's name."""
         self.names[obj] = str(name)
 
     def removeObjectInstance(self, obj: Any, tag: Any, time: Any = None, retraction: Any = None) -> None:
+        """Forget the removed robot."""
         self.names.pop(obj, None)
 
     def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], tag: Any, order: Any,
                                transport: Any, t: Optional[float] = None, retraction: Any = None) -> None:
+        """Decode what a known robot reflects and hand it to the bridge, with its timestamp."""
         name = self.names.get(obj)
         if name is None:
             return
@@ -268,6 +271,7 @@ class _Ambassador(rti.FederateAmbassador):
 
     def receiveInteraction(self, cls: Any, parameters: dict[Any, bytes], tag: Any, order: Any, transport: Any,
                            t: Optional[float] = None, retraction: Any = None) -> None:
+        """Hand a complete, decodable command to the bridge; count any other as ignored."""
         values = {self.parameters[h]: v for h, v in parameters.items() if h in self.parameters}
         if set(values) != set(codec.PARAMETERS):
             self.bridge.ignored += 1  # an incomplete command

@@ -1,4 +1,4 @@
-"""Deprecated alias of :mod:`hlacore.experiments.paper1.chain` (moved in issue 14); removed in the next release."""
+"""Deprecated alias of :mod:`hlacore.experiments.paper1.chain`; removed in the next release."""
 
 from hlacore._deprecated import moved
 

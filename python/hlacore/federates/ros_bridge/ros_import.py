@@ -59,6 +59,7 @@ class RosFinder(importlib.abc.MetaPathFinder):
 
     def find_spec(self, fullname: str, path: Optional[Sequence[str]] = None,
                   target: Optional[ModuleType] = None) -> Optional[importlib.machinery.ModuleSpec]:
+        """The spec of a ROS top-level module found in :attr:`directory`; None for any other name."""
         if path is not None or "." in fullname or not is_ros_module(fullname):
             return None
         return importlib.machinery.PathFinder.find_spec(fullname, [self.directory])

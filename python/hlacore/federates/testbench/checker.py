@@ -68,6 +68,7 @@ class Checker(Actor):
         self._actual: dict[int, Received] = {}
 
     def fire(self) -> None:
+        """Pair the expected and the reported locations by cycle, and send a :class:`Verdict` for each pair."""
         for token in self.expected.tokens:
             self._expected[token.cycle] = token
         for record in self.actual.tokens:

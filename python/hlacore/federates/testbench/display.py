@@ -31,5 +31,6 @@ class Display(Actor):
         self.input = self.add_input("input")
 
     def fire(self) -> None:
+        """Write each verdict on ``input``."""
         for verdict in self.input.tokens:
             self.write(format_verdict(verdict, self.precision))

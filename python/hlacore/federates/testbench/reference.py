@@ -37,6 +37,8 @@ class ReferenceModel(Actor):
         self._origin = 0.0
 
     def fire(self) -> None:
+        """On a new scenario, start its mission; otherwise send the cycle's :class:`Expected` and schedule the
+        next cycle."""
         if self.input.has_token():
             scenario: Scenario = self.input.last()
             self._cells, self._k = mission(scenario), 0

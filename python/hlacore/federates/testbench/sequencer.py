@@ -24,7 +24,9 @@ class Sequencer(Actor):
         self.output = self.add_output("output")
 
     def initialize(self) -> None:
+        """Schedule the firing at the start time."""
         self.fire_at(self.director_or_raise().start_time)
 
     def fire(self) -> None:
+        """Send the scenario on ``output``."""
         self.output.send(self.scenario)

@@ -111,36 +111,15 @@ struct ToCallback {
     Named operator()(const wire::RequestRetraction& m) const {
         return named(C::requestRetraction, EventRetractionHandle{m.sender, m.serial});
     }
-    Named operator()(const wire::ProvideAttributeValueUpdate& m) const {
-        return object_attributes(C::provideAttributeValueUpdate, m);
-    }
+#define HLACORE_X(message, callback) \
+    Named operator()(const wire::message& m) const { return object_attributes(C::callback, m); }
+    HLACORE_OBJECT_ATTRIBUTE_CALLBACKS(HLACORE_X)
+#undef HLACORE_X
     Named operator()(const wire::RequestOwnershipAssumption& m) const {
         return object_attributes(C::requestAttributeOwnershipAssumption, m, to_str(m.tag));
     }
-    Named operator()(const wire::DivestitureNotification& m) const {
-        return object_attributes(C::attributeOwnershipDivestitureNotification, m);
-    }
-    Named operator()(const wire::AcquisitionNotification& m) const {
-        return object_attributes(C::attributeOwnershipAcquisitionNotification, m);
-    }
-    Named operator()(const wire::OwnershipUnavailable& m) const {
-        return object_attributes(C::attributeOwnershipUnavailable, m);
-    }
     Named operator()(const wire::RequestOwnershipRelease& m) const {
         return object_attributes(C::requestAttributeOwnershipRelease, m, to_str(m.tag));
-    }
-    Named operator()(const wire::ConfirmAcquisitionCancellation& m) const {
-        return object_attributes(C::confirmAttributeOwnershipAcquisitionCancellation, m);
-    }
-    Named operator()(const wire::AttributesInScope& m) const { return object_attributes(C::attributesInScope, m); }
-    Named operator()(const wire::AttributesOutOfScope& m) const {
-        return object_attributes(C::attributesOutOfScope, m);
-    }
-    Named operator()(const wire::TurnUpdatesOn& m) const {
-        return object_attributes(C::turnUpdatesOnForObjectInstance, m);
-    }
-    Named operator()(const wire::TurnUpdatesOff& m) const {
-        return object_attributes(C::turnUpdatesOffForObjectInstance, m);
     }
     Named operator()(const wire::OwnershipInformation& m) const {
         switch (static_cast<wire::OwnershipKind>(m.kind)) {

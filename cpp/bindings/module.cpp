@@ -145,7 +145,8 @@ PYBIND11_MODULE(_core, m) {
     m.attr("MAX_BUSY_POLL_US") = hlacore::kMaxBusyPollUs;
     m.attr("MAX_FRAME_RANGE") = py::make_tuple(hlacore::kMinMaxFrame, hlacore::kMaxMaxFrame);
     m.attr("MAX_DATAGRAM_RANGE") = py::make_tuple(hlacore::kMinMaxDatagram, hlacore::wire::kMaxDatagramLimit);
-    py::class_<BackgroundGateway>(m, "BackgroundGateway")
+    py::class_<BackgroundGateway>(m, "BackgroundGateway",
+                                  "The gateway serving on a thread of this process; hlacore.Gateway is its Python face.")
         .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
                       std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t,
                       const std::map<std::string, std::string>&, const std::string&, const std::string&,
@@ -158,12 +159,15 @@ PYBIND11_MODULE(_core, m) {
              py::arg("federation_secret_files") = std::map<std::string, std::string>{}, py::arg("tls_cert") = "",
              py::arg("tls_key") = "", py::arg("record_path") = "", py::arg("busy_poll_us") = 0, py::arg("unix_path") = "",
              py::call_guard<py::gil_scoped_release>())
-        .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>())
-        .def_property_readonly("host", &BackgroundGateway::host)
-        .def_property_readonly("port", &BackgroundGateway::port)
-        .def_property_readonly("running", &BackgroundGateway::running);
+        .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>(),
+             "Stops serving and waits for the gateway's thread to end.")
+        .def_property_readonly("host", &BackgroundGateway::host, "The address it listens on.")
+        .def_property_readonly("port", &BackgroundGateway::port, "The TCP port it listens on (the one picked, for port 0).")
+        .def_property_readonly("running", &BackgroundGateway::running, "Whether its thread still serves.");
 
-    Ambassador rtia(m, "RTIAmbassadorBase");
+    Ambassador rtia(m, "RTIAmbassadorBase",
+                    "The federate's side of the connection to a gateway: the HLA 1.3 services under their PyHLA names; "
+                    "hlacore.rti.RTIAmbassador builds on it.");
     rtia
         .def(py::init(&connect_client), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s,
              py::arg("secret_file") = "", py::arg("datagrams") = true, py::arg("federation_secret_file") = "",

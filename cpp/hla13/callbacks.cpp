@@ -7,11 +7,7 @@
 #include "rti/wire/callbacks.hpp"
 
 using namespace hlacore;
-using hlacore::hla13::AttributeHandles;
-using hlacore::hla13::AttributeValues;
-using hlacore::hla13::Pairs;
-using hlacore::hla13::ParameterValues;
-using hlacore::hla13::retraction;
+using namespace hlacore::hla13;
 
 namespace {
 
@@ -63,38 +59,15 @@ struct Deliver {
     void operator()(wire::TimeConstrainedEnabled& m) { fa.timeConstrainedEnabled(RTIfedTime(m.time)); }
     void operator()(wire::TimeAdvanceGrant& m) { fa.timeAdvanceGrant(RTIfedTime(m.time)); }
     void operator()(wire::RequestRetraction& m) { fa.requestRetraction(retraction(m.sender, m.serial)); }
-    void operator()(wire::ProvideAttributeValueUpdate& m) {
-        fa.provideAttributeValueUpdate(m.object, AttributeHandles(std::move(m.attributes)));
-    }
+#define HLACORE_X(message, callback) \
+    void operator()(wire::message& m) { fa.callback(m.object, AttributeHandles(std::move(m.attributes))); }
+    HLACORE_OBJECT_ATTRIBUTE_CALLBACKS(HLACORE_X)
+#undef HLACORE_X
     void operator()(wire::RequestOwnershipAssumption& m) {
         fa.requestAttributeOwnershipAssumption(m.object, AttributeHandles(std::move(m.attributes)), m.tag.c_str());
     }
-    void operator()(wire::DivestitureNotification& m) {
-        fa.attributeOwnershipDivestitureNotification(m.object, AttributeHandles(std::move(m.attributes)));
-    }
-    void operator()(wire::AcquisitionNotification& m) {
-        fa.attributeOwnershipAcquisitionNotification(m.object, AttributeHandles(std::move(m.attributes)));
-    }
-    void operator()(wire::OwnershipUnavailable& m) {
-        fa.attributeOwnershipUnavailable(m.object, AttributeHandles(std::move(m.attributes)));
-    }
     void operator()(wire::RequestOwnershipRelease& m) {
         fa.requestAttributeOwnershipRelease(m.object, AttributeHandles(std::move(m.attributes)), m.tag.c_str());
-    }
-    void operator()(wire::ConfirmAcquisitionCancellation& m) {
-        fa.confirmAttributeOwnershipAcquisitionCancellation(m.object, AttributeHandles(std::move(m.attributes)));
-    }
-    void operator()(wire::AttributesInScope& m) {
-        fa.attributesInScope(m.object, AttributeHandles(std::move(m.attributes)));
-    }
-    void operator()(wire::AttributesOutOfScope& m) {
-        fa.attributesOutOfScope(m.object, AttributeHandles(std::move(m.attributes)));
-    }
-    void operator()(wire::TurnUpdatesOn& m) {
-        fa.turnUpdatesOnForObjectInstance(m.object, AttributeHandles(std::move(m.attributes)));
-    }
-    void operator()(wire::TurnUpdatesOff& m) {
-        fa.turnUpdatesOffForObjectInstance(m.object, AttributeHandles(std::move(m.attributes)));
     }
     void operator()(wire::OwnershipInformation& m) {
         switch (static_cast<wire::OwnershipKind>(m.kind)) {

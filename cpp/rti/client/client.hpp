@@ -537,6 +537,7 @@ private:
     void check_send_time(const wire::OptionalTime& time) const;
     // Checks the sending rule for `time` and numbers the message (a timestamped one becomes retractable).
     std::uint64_t next_serial(const wire::OptionalTime& time);
+    Time query_time(wire::TimeQuery which);  // the gateway's LBTS or minimum next event time
 
     std::string address_;
     ClientOptions options_;

@@ -214,24 +214,17 @@ Time Client::query_federate_time() const {
     return time_.time;
 }
 
-Time Client::query_lbts() {
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        require_joined();
-    }
-    const auto id = next_request();
-    const auto which = static_cast<std::uint8_t>(wire::TimeQuery::Lbts);
-    return call<wire::TimeQueried>(wire::QueryTime{id, which}, id).time;
-}
+Time Client::query_lbts() { return query_time(wire::TimeQuery::Lbts); }
 
-Time Client::query_min_next_event_time() {
+Time Client::query_min_next_event_time() { return query_time(wire::TimeQuery::MinNextEventTime); }
+
+Time Client::query_time(wire::TimeQuery which) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         require_joined();
     }
     const auto id = next_request();
-    const auto which = static_cast<std::uint8_t>(wire::TimeQuery::MinNextEventTime);
-    return call<wire::TimeQueried>(wire::QueryTime{id, which}, id).time;
+    return call<wire::TimeQueried>(wire::QueryTime{id, static_cast<std::uint8_t>(which)}, id).time;
 }
 
 void Client::set_asynchronous_delivery(bool on) {

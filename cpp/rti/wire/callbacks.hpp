@@ -63,6 +63,18 @@ constexpr const char* callback_name(Callback c) { return kCallbackNames[static_c
     X(OwnershipInformation)                                                                            \
     X(TimeRegulationEnabled) X(TimeConstrainedEnabled) X(TimeAdvanceGrant) X(RequestRetraction)
 
+// Of those, the callbacks that name a set of an object's attributes and nothing else (ownership, scope,
+// updates on or off): message, callback. The front ends make their overloads for these from the list.
+#define HLACORE_OBJECT_ATTRIBUTE_CALLBACKS(X) \
+    X(ProvideAttributeValueUpdate, provideAttributeValueUpdate)                                          \
+    X(DivestitureNotification, attributeOwnershipDivestitureNotification)                                \
+    X(AcquisitionNotification, attributeOwnershipAcquisitionNotification)                                \
+    X(OwnershipUnavailable, attributeOwnershipUnavailable)                                               \
+    X(ConfirmAcquisitionCancellation, confirmAttributeOwnershipAcquisitionCancellation)                  \
+    X(AttributesInScope, attributesInScope) X(AttributesOutOfScope, attributesOutOfScope)                \
+    X(TurnUpdatesOn, turnUpdatesOnForObjectInstance)                                                     \
+    X(TurnUpdatesOff, turnUpdatesOffForObjectInstance)
+
 template <class M>
 struct IsCallback : std::false_type {};
 #define HLACORE_X(name) \

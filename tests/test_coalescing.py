@@ -1,4 +1,4 @@
-"""Coalescing of the federate's writes (cpp/rti/client/client.cpp): a message sent soon after a wait (a lone
+"""Coalescing of the federate's writes (cpp/rti/client/writer.cpp): a message sent soon after a wait (a lone
 update, or an update and its time advance request) is written by the caller at once; a longer run of sends
 goes to the writer thread, many messages per system call, in the order sent; RTIAmbassador.batch() holds
 them for one write at its end or before a wait. Both gateways."""

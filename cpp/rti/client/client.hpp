@@ -361,7 +361,7 @@ private:
     void restore_regions(const wire::RestoredState& saved);
     void refuse_region_change_while_restoring(const char* service) const;  // RestoreInProgress
 
-    // Encodes and writes one message (client.cpp instantiates it for every message type).
+    // Encodes and writes one message (writer.cpp instantiates it for every message type).
     template <class M>
     void send(const M& message);
     // An update or interaction whose values all travel best effort, without a timestamp: as a datagram when
@@ -369,7 +369,7 @@ private:
     template <class M>
     void send_best_effort(const M& message);
     std::unique_lock<std::mutex> lock_send();
-    // Coalescing (client.cpp): a message sent within kDirectSends of the caller's last wait (a lone one, or
+    // Coalescing (writer.cpp): a message sent within kDirectSends of the caller's last wait (a lone one, or
     // an update and its time advance request) is written by the caller at once; the rest of a longer run of
     // sends is appended to pending_ and written by the writer thread, many per system call while its
     // previous write is in flight (send_mu_ held for both). A write of less than kWriterLingerBelow bytes that
@@ -396,7 +396,7 @@ private:
     // The gateway is not reading (yet): waits with `host` (none on the writer thread) until it does.
     void wait_writable(std::size_t sent, WaitHost* host);
     void read_beside_send();
-    // Sends a request and waits for its answer, a Result (HLACORE_ANSWERS; client.cpp instantiates them). A
+    // Sends a request and waits for its answer, a Result (HLACORE_ANSWERS; reader.cpp instantiates them). A
     // refusal raises its exception; an answer of another type closes the connection as a protocol error.
     template <class Result = wire::Reply>
     Result call(wire::Message request, std::uint32_t request_id);

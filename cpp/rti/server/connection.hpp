@@ -1,5 +1,5 @@
 // A client's connection to the gateway: its buffers, flow-control state and datagram path, in one place for
-// the gateway's reactor (gateway.cpp) and its datagrams (datagrams.cpp).
+// the gateway's files (gateway_internal.hpp names them).
 #pragma once
 
 #include <algorithm>

@@ -24,7 +24,7 @@
 
 namespace hlacore {
 
-// A thin epoll wrapper for the gateway's loop: register file descriptors, wait for readiness (gateway.cpp).
+// A thin epoll wrapper for the gateway's loop: register file descriptors, wait for readiness (reactor.cpp).
 class EventLoop {
 public:
     EventLoop();

@@ -1,5 +1,5 @@
 // Where a federation's service groups write what they send to federates: the output buffers of the
-// gateway's connections (gateway.cpp), held back while a federate saves or restores (save_restore.cpp).
+// gateway's connections (gateway_internal.hpp), held back while a federate saves or restores (save_restore.cpp).
 #pragma once
 
 #include <cstdint>

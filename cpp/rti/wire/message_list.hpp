@@ -155,7 +155,7 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply or a result. Each has a `Gateway::serve(Connection&, const M&)` in
-// cpp/rti/server/gateway.cpp, declared from this list.
+// cpp/rti/server/ (federations.cpp, session.cpp, status.cpp, datagrams.cpp), declared from this list.
 #define HLACORE_GATEWAY_SERVICES(X)                                                                    \
     X(CreateFederation) X(DestroyFederation) X(JoinFederation) X(ResignFederation) X(RegisterObject)   \
     X(RegisterObjectWithRegion) X(RequestFederationSave) X(RequestFederationRestore) X(ReleaseResponse) \

@@ -1,5 +1,5 @@
 // Large values written from where they are instead of being copied into an output buffer: a federate's
-// send (client.cpp) writes them from the caller's bytes, the gateway (server/connection.hpp) from the
+// send (client/writer.cpp) writes them from the caller's bytes, the gateway (server/connection.hpp) from the
 // sender's read block. The buffer holds the rest of the stream; each splice goes in at its offset.
 #pragma once
 

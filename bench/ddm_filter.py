@@ -16,6 +16,7 @@ import time
 from typing import Any, Optional
 
 import hlacore.rti as rti
+from hlacore.processes import round_trip
 
 from .outputs import ROOT
 from .procs import bench_rtig, cpu_seconds
@@ -32,21 +33,12 @@ class Counting(rti.FederateAmbassador):
         self.reflections += 1
 
 
-def round_trip(rtia: rti.RTIAmbassador) -> None:
-    """Returns once the gateway has handled everything this ambassador sent before."""
-    try:
-        rtia.destroyFederationExecution("ddm-filter-barrier")
-    except rti.FederationExecutionDoesNotExist:
-        pass
-
-
 def run(rtig: Optional[str], updates: int, subscribers: int, regions_each: int, in_scope: bool) -> str:
     """regions_each = 0: plain subscriptions. Else subscriber i subscribes through `regions_each` disjoint
     regions; the object's update region overlaps the last region of subscriber 0 (or none)."""
     with bench_rtig(executable=rtig) as server:
         pub = rti.RTIAmbassador(server.address)
-        pub.createFederationExecution("DdmFed", FED)
-        pub.joinFederationExecution("pub", "DdmFed", rti.FederateAmbassador())
+        pub.create_or_join("pub", "DdmFed", FED, rti.FederateAmbassador())
         geo = pub.getRoutingSpaceHandle("Geo")
         x = pub.getDimensionHandle("X", geo)
         vehicle = pub.getObjectClassHandle("vehicle")

@@ -122,6 +122,12 @@ void keep_only(const std::vector<Link>& links, std::initializer_list<int> keep) 
             if (std::find(keep.begin(), keep.end(), fd) == keep.end()) close(fd);
 }
 
+// In a forked process, once its part is done: closes its ends and exits 0, the status the parent checks.
+[[noreturn]] void finish(std::initializer_list<int> fds) {
+    for (int fd : fds) close(fd);
+    std::exit(0);
+}
+
 // The relay: forwards `total` bytes from the parent to the sink, then the sink's answer back, then waits for
 // the parent's EOF.
 [[noreturn]] void relay(int from, int to, std::size_t total) {
@@ -137,9 +143,7 @@ void keep_only(const std::vector<Link>& links, std::initializer_list<int> keep) 
     if (!read_exact(to, &ack, 1)) die("relay: sink closed");
     write_all(from, &ack, 1);
     read_exact(from, &ack, 1);  // EOF from the parent
-    close(to);
-    close(from);
-    std::exit(0);
+    finish({to, from});
 }
 
 // The round-trip relay: passes each SIZE-byte message from the parent to the echo and its echo back, until
@@ -151,9 +155,7 @@ void keep_only(const std::vector<Link>& links, std::initializer_list<int> keep) 
         if (!read_exact(to, buf.data(), size)) die("relay: echo closed");
         write_all(from, buf.data(), size);
     }
-    close(to);
-    close(from);
-    std::exit(0);
+    finish({to, from});
 }
 
 // The barrier's server: waits for a SIZE-byte message from each of its two clients, then answers both (as the
@@ -170,9 +172,7 @@ void keep_only(const std::vector<Link>& links, std::initializer_list<int> keep) 
     shutdown(peer, SHUT_WR);
     while (recv(peer, buf.data(), size, 0) > 0) {
     }
-    close(parent);
-    close(peer);
-    std::exit(0);
+    finish({parent, peer});
 }
 
 // The barrier's other client: asks and waits for the answer, as the parent does, until the server's EOF.
@@ -180,8 +180,7 @@ void keep_only(const std::vector<Link>& links, std::initializer_list<int> keep) 
     std::vector<char> buf(size, 'y');
     while (write_all(fd, buf.data(), size), read_exact(fd, buf.data(), size)) {
     }
-    close(fd);
-    std::exit(0);
+    finish({fd});
 }
 
 // The child: echo SIZE-byte messages or count RECORD-byte records.
@@ -200,8 +199,7 @@ void keep_only(const std::vector<Link>& links, std::initializer_list<int> keep) 
         write_all(fd, "!", 1);
         read_exact(fd, buf.data(), 1);  // EOF from the parent
     }
-    close(fd);
-    std::exit(0);
+    finish({fd});
 }
 
 }  // namespace

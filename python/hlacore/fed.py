@@ -14,7 +14,7 @@ import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any, Generic, Literal, TypeVar
+from typing import Any, ClassVar, Generic, Literal, TypeVar
 
 from . import _core
 
@@ -84,6 +84,21 @@ class _Lookup(Generic[_N]):
         return found
 
 
+class _Members(Generic[_N]):
+    """What object classes, interaction classes and routing spaces share: a list of members (attributes,
+    parameters, dimensions: the field named by ``_MEMBERS``) looked up by handle or name."""
+
+    _MEMBERS: ClassVar[str]
+
+    @cached_property
+    def _members(self) -> _Lookup[_N]:
+        # Built on first use: most classes of a large FOM are never looked into by name.
+        return _Lookup(getattr(self, self._MEMBERS))
+
+    def _member(self, key: int | str, what: str) -> _N:
+        return self._members.find(key, what)
+
+
 @dataclass(frozen=True)
 class Attribute(_Handled):
     """An attribute of an object class; ``space`` is the routing space name, None without one."""
@@ -103,20 +118,15 @@ class _Class(_Handled):
 
 
 @dataclass(frozen=True)
-class ObjectClass(_Class):
+class ObjectClass(_Class, _Members[Attribute]):
     """An object class. ``attributes`` holds the inherited attributes first (with the parent's handles)."""
 
+    _MEMBERS = "attributes"
     attributes: tuple[Attribute, ...]
-
-    @cached_property
-    def _attributes(self) -> _Lookup[Attribute]:
-        # Built on first use: most classes of a large FOM are never looked into by name.
-        return _Lookup(self.attributes)
 
     def attribute(self, name_or_handle: int | str) -> Attribute:
         """The attribute with this handle or name; KeyError if the class has none."""
-        what = f"attribute of class {self.qualified_name!r} with name/handle"
-        return self._attributes.find(name_or_handle, what)
+        return self._member(name_or_handle, f"attribute of class {self.qualified_name!r} with name/handle")
 
 
 @dataclass(frozen=True)
@@ -125,22 +135,18 @@ class Parameter(_Handled):
 
 
 @dataclass(frozen=True)
-class InteractionClass(_Class):
+class InteractionClass(_Class, _Members[Parameter]):
     """An interaction class. ``parameters`` holds the inherited parameters first (with the parent's handles)."""
 
+    _MEMBERS = "parameters"
     transport: Transport
     order: Order
     space: str | None
     parameters: tuple[Parameter, ...]
 
-    @cached_property
-    def _parameters(self) -> _Lookup[Parameter]:
-        return _Lookup(self.parameters)
-
     def parameter(self, name_or_handle: int | str) -> Parameter:
         """The parameter with this handle or name; KeyError if the class has none."""
-        what = f"parameter of interaction class {self.qualified_name!r} with name/handle"
-        return self._parameters.find(name_or_handle, what)
+        return self._member(name_or_handle, f"parameter of interaction class {self.qualified_name!r} with name/handle")
 
 
 @dataclass(frozen=True)
@@ -149,18 +155,15 @@ class Dimension(_Handled):
 
 
 @dataclass(frozen=True)
-class RoutingSpace(_Handled):
+class RoutingSpace(_Handled, _Members[Dimension]):
     """A routing space and its dimensions."""
 
+    _MEMBERS = "dimensions"
     dimensions: tuple[Dimension, ...]
-
-    @cached_property
-    def _dimensions(self) -> _Lookup[Dimension]:
-        return _Lookup(self.dimensions)
 
     def dimension(self, name_or_handle: int | str) -> Dimension:
         """The dimension with this handle or name; KeyError if the space has none."""
-        return self._dimensions.find(name_or_handle, f"dimension of space {self.name!r} with name/handle")
+        return self._member(name_or_handle, f"dimension of space {self.name!r} with name/handle")
 
 
 @dataclass(frozen=True)

@@ -277,6 +277,22 @@ def _documented(datatype: _T, doc: str) -> _T:
     return datatype
 
 
+_ENDIAN = {">": "big-endian", "<": "little-endian"}
+
+
+def _integer(name: str, order: str, code: str, note: str = "") -> _IntegerType:
+    """The integer type ``name``, documented by its size, signedness and byte order (then ``note``)."""
+    kind = "unsigned" if code.isupper() else "signed"
+    bits = 8 * struct.calcsize(order + code)
+    return _documented(_IntegerType(name, order, code), f"{bits}-bit {kind} integer, {_ENDIAN[order]}{note}.")
+
+
+def _float(name: str, order: str, code: str) -> _FloatType:
+    """The float type ``name``, documented by its IEEE 754 format and byte order."""
+    bits = 8 * struct.calcsize(order + code)
+    return _documented(_FloatType(name, order, code), f"IEEE 754 binary{bits}, {_ENDIAN[order]}.")
+
+
 HLAoctet = _documented(
     _OctetType(),
     "One octet; ``pack`` takes a 1-byte ``bytes``, ``unpack`` returns one.")
@@ -297,45 +313,19 @@ HLAunicodeChar = _documented(
     _UnicodeCharType(),
     "The MIM's ``HLAunicodeChar``: one UTF-16BE code unit; ``pack`` takes a one-character ``str`` (or its "
     "code), ``unpack`` returns a ``str``.")
-HLAinteger16BE = _documented(
-    _IntegerType("HLAinteger16BE", ">", "h"),
-    "16-bit signed integer, big-endian.")
-HLAinteger16LE = _documented(
-    _IntegerType("HLAinteger16LE", "<", "h"),
-    "16-bit signed integer, little-endian.")
-HLAinteger32BE = _documented(
-    _IntegerType("HLAinteger32BE", ">", "i"),
-    "32-bit signed integer, big-endian.")
-HLAinteger32LE = _documented(
-    _IntegerType("HLAinteger32LE", "<", "i"),
-    "32-bit signed integer, little-endian.")
-HLAinteger64BE = _documented(
-    _IntegerType("HLAinteger64BE", ">", "q"),
-    "64-bit signed integer, big-endian.")
-HLAinteger64LE = _documented(
-    _IntegerType("HLAinteger64LE", "<", "q"),
-    "64-bit signed integer, little-endian.")
-HLAfloat32BE = _documented(
-    _FloatType("HLAfloat32BE", ">", "f"),
-    "IEEE 754 binary32, big-endian.")
-HLAfloat32LE = _documented(
-    _FloatType("HLAfloat32LE", "<", "f"),
-    "IEEE 754 binary32, little-endian.")
-HLAfloat64BE = _documented(
-    _FloatType("HLAfloat64BE", ">", "d"),
-    "IEEE 754 binary64, big-endian.")
-HLAfloat64LE = _documented(
-    _FloatType("HLAfloat64LE", "<", "d"),
-    "IEEE 754 binary64, little-endian.")
-Unsignedinteger16BE = _documented(
-    _IntegerType("Unsignedinteger16BE", ">", "H"),
-    "16-bit unsigned integer, big-endian (RPR FOM extra).")
-Unsignedinteger32BE = _documented(
-    _IntegerType("Unsignedinteger32BE", ">", "I"),
-    "32-bit unsigned integer, big-endian (RPR FOM extra).")
-Unsignedinteger64BE = _documented(
-    _IntegerType("Unsignedinteger64BE", ">", "Q"),
-    "64-bit unsigned integer, big-endian (RPR FOM extra).")
+HLAinteger16BE = _integer("HLAinteger16BE", ">", "h")
+HLAinteger16LE = _integer("HLAinteger16LE", "<", "h")
+HLAinteger32BE = _integer("HLAinteger32BE", ">", "i")
+HLAinteger32LE = _integer("HLAinteger32LE", "<", "i")
+HLAinteger64BE = _integer("HLAinteger64BE", ">", "q")
+HLAinteger64LE = _integer("HLAinteger64LE", "<", "q")
+HLAfloat32BE = _float("HLAfloat32BE", ">", "f")
+HLAfloat32LE = _float("HLAfloat32LE", "<", "f")
+HLAfloat64BE = _float("HLAfloat64BE", ">", "d")
+HLAfloat64LE = _float("HLAfloat64LE", "<", "d")
+Unsignedinteger16BE = _integer("Unsignedinteger16BE", ">", "H", " (RPR FOM extra)")
+Unsignedinteger32BE = _integer("Unsignedinteger32BE", ">", "I", " (RPR FOM extra)")
+Unsignedinteger64BE = _integer("Unsignedinteger64BE", ">", "Q", " (RPR FOM extra)")
 HLAASCIIstring = _documented(
     _ASCIIStringType(),
     "Length-prefixed ASCII string; ``unpack`` returns ``bytes`` like PyHLA.")

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 from typing import Any, Callable, Optional
 
 from hlacore import rti
@@ -84,31 +84,33 @@ class _Ambassador(rti.FederateAmbassador):
             self.ranges[name] = [float(r) for r in ranges]
 
 
+@dataclass(eq=False, repr=False)  # the constructor only: a federate compares and prints as an object
 class MirroredRobotFederate:
     """The robot's control loop in the ``RobotWorld`` federation (see the module docstring).
 
     ``controller`` is an :class:`~.avoid.OpenLoopAvoid` or :class:`~.avoid.CorrectedAvoid`; ``mirror`` names
     the world robot that mirrors this one; ``on_cycle`` sees each :class:`CycleRecord`."""
 
-    def __init__(self, driver: TxRxDriver, controller: "OpenLoopAvoid | CorrectedAvoid", mirror: str = "mirror",
-                 name: str = "real", address: Optional[str] = None, cycle: float = 0.5, lookahead: float = 0.1,
-                 mirror_from: str = "commands", on_cycle: Optional[Callable[[CycleRecord], None]] = None) -> None:
-        if mirror_from not in MIRROR_SOURCES:
-            raise ValueError(f"mirror_from must be one of {MIRROR_SOURCES}, not {mirror_from!r}")
-        if not 0 < lookahead <= cycle:
+    driver: TxRxDriver
+    controller: "OpenLoopAvoid | CorrectedAvoid"
+    mirror: str = "mirror"
+    name: str = "real"
+    address: Optional[str] = None
+    cycle: float = 0.5
+    lookahead: float = 0.1
+    mirror_from: str = "commands"
+    on_cycle: Optional[Callable[[CycleRecord], None]] = None
+    records: list[CycleRecord] = field(init=False, default_factory=list)
+    rtia: Optional[rti.RTIAmbassador] = field(init=False, default=None)
+    _amb: _Ambassador = field(init=False, default_factory=_Ambassador)
+
+    def __post_init__(self) -> None:
+        if self.mirror_from not in MIRROR_SOURCES:
+            raise ValueError(f"mirror_from must be one of {MIRROR_SOURCES}, not {self.mirror_from!r}")
+        if not 0 < self.lookahead <= self.cycle:
             raise ValueError("the lookahead must be positive and at most one cycle")
-        self.driver = driver
-        self.controller = controller
-        self.mirror = mirror
-        self.name = name
-        self.address = address
-        self.cycle = float(cycle)
-        self.lookahead = float(lookahead)
-        self.mirror_from = mirror_from
-        self.on_cycle = on_cycle
-        self.records: list[CycleRecord] = []
-        self.rtia: Optional[rti.RTIAmbassador] = None
-        self._amb = _Ambassador()
+        self.cycle = float(self.cycle)
+        self.lookahead = float(self.lookahead)
 
     def join(self, timeout: float = 30.0) -> None:
         """Join ``RobotWorld`` (created from its FOM if missing), enable regulation and constraint, publish

@@ -26,9 +26,9 @@
 
 using namespace hlacore;
 using fuzz_fixture::die;
+using fuzz_fixture::fixture;
 
 namespace {
-fuzz_fixture::Fixture fixture;
 unsigned counter = 0;
 
 void send_all(int fd, const std::string& bytes) {
@@ -71,19 +71,11 @@ bool answers(const wire::Message& m, std::uint32_t request) {
 }
 }  // namespace
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    fixture = fuzz_fixture::start_gateway();
-    return 0;
-}
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const int stream = ::socket(AF_INET, SOCK_STREAM, 0);
+    const int stream = fuzz_fixture::connect_stream(fixture.port);
     const int datagrams = ::socket(AF_INET, SOCK_DGRAM, 0);
-    if (stream < 0 || datagrams < 0) die("socket");
-    fuzz_fixture::connect_to_gateway(stream, fixture.port);
+    if (datagrams < 0) die("socket");
     fuzz_fixture::connect_to_gateway(datagrams, fixture.port);  // a UDP connect does not wait
-    int one = 1;
-    setsockopt(stream, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);  // or each request waits for a delayed ACK
 
     std::string in, out;
     std::uint64_t token = 0;

@@ -21,23 +21,14 @@
 
 using namespace hlacore;
 using fuzz_fixture::die;
+using fuzz_fixture::fixture;
 
 namespace {
-fuzz_fixture::Fixture fixture;
 unsigned counter = 0;
 }  // namespace
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    fixture = fuzz_fixture::start_gateway();
-    return 0;
-}
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    if (fd < 0) die("socket");
-    fuzz_fixture::connect_to_gateway(fd, fixture.port);
-    int one = 1;
-    setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    const int fd = fuzz_fixture::connect_stream(fixture.port);
 
     std::string out;
     wire::encode(out, wire::Hello{});

@@ -76,4 +76,22 @@ inline void connect_to_gateway(int fd, std::uint16_t port) {
     }
 }
 
+// A TCP connection to the gateway with Nagle off (or each request waits for a delayed ACK).
+inline int connect_stream(std::uint16_t port) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0) die("socket");
+    connect_to_gateway(fd, port);
+    int one = 1;
+    setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    return fd;
+}
+
+// This target's gateway (a target includes this header once), started by libFuzzer's initialization hook.
+inline Fixture fixture;
+
 }  // namespace fuzz_fixture
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    fuzz_fixture::fixture = fuzz_fixture::start_gateway();
+    return 0;
+}

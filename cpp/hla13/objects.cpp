@@ -12,6 +12,27 @@ namespace {
 RTI::EventRetractionHandle retraction(const Client& c, std::uint64_t serial) {
     return hla13::retraction(c.federate_handle(), serial);
 }
+
+// A timestamped message's event retraction handle: `send(client, time)` sends it and returns its serial.
+template <class Send>
+RTI::EventRetractionHandle timed(RTIambPrivateRefs& refs, const RTI::FedTime& time, Send send) {
+    return guarded([&] {
+        Client& c = refs.client;
+        return retraction(c, send(c, hla13::time_of(time)));
+    });
+}
+
+// An update or an interaction, its values as the client takes them; the message's serial.
+std::uint64_t update(Client& c, RTI::ObjectHandle object, const RTI::AttributeHandleValuePairSet& set, const char* tag,
+                     wire::OptionalTime time) {
+    const wire::HandleValues values = hla13::values_of(set);
+    return c.update_attributes(h32(object), wire::views_of(values), text(tag), time);
+}
+std::uint64_t interact(Client& c, RTI::InteractionClassHandle cls, const RTI::ParameterHandleValuePairSet& set,
+                       const char* tag, wire::OptionalTime time) {
+    const wire::HandleValues values = hla13::values_of(set);
+    return c.send_interaction(h32(cls), wire::views_of(values), text(tag), time);
+}
 }  // namespace
 
 RTI::ObjectHandle RTI::RTIambassador::registerObjectInstance(ObjectClassHandle theClass, const char* theObject) {
@@ -25,46 +46,33 @@ RTI::ObjectHandle RTI::RTIambassador::registerObjectInstance(ObjectClassHandle t
 RTI::EventRetractionHandle RTI::RTIambassador::updateAttributeValues(ObjectHandle theObject,
                                                                      const AttributeHandleValuePairSet& theAttributes,
                                                                      const FedTime& theTime, const char* theTag) {
-    return guarded([&] {
-        Client& c = privateRefs->client;
-        const wire::HandleValues values = hla13::values_of(theAttributes);
-        return retraction(c, c.update_attributes(h32(theObject), wire::views_of(values), text(theTag),
-                                                 hla13::time_of(theTime)));
+    return timed(*privateRefs, theTime, [&](Client& c, wire::OptionalTime time) {
+        return update(c, theObject, theAttributes, theTag, time);
     });
 }
 
 void RTI::RTIambassador::updateAttributeValues(ObjectHandle theObject, const AttributeHandleValuePairSet& theAttributes,
                                                const char* theTag) {
-    guarded([&] {
-        const wire::HandleValues values = hla13::values_of(theAttributes);
-        privateRefs->client.update_attributes(h32(theObject), wire::views_of(values), text(theTag), std::nullopt);
-    });
+    guarded([&] { update(privateRefs->client, theObject, theAttributes, theTag, std::nullopt); });
 }
 
 RTI::EventRetractionHandle RTI::RTIambassador::sendInteraction(InteractionClassHandle theInteraction,
                                                                const ParameterHandleValuePairSet& theParameters,
                                                                const FedTime& theTime, const char* theTag) {
-    return guarded([&] {
-        Client& c = privateRefs->client;
-        const wire::HandleValues values = hla13::values_of(theParameters);
-        return retraction(c, c.send_interaction(h32(theInteraction), wire::views_of(values), text(theTag),
-                                                hla13::time_of(theTime)));
+    return timed(*privateRefs, theTime, [&](Client& c, wire::OptionalTime time) {
+        return interact(c, theInteraction, theParameters, theTag, time);
     });
 }
 
 void RTI::RTIambassador::sendInteraction(InteractionClassHandle theInteraction,
                                          const ParameterHandleValuePairSet& theParameters, const char* theTag) {
-    guarded([&] {
-        const wire::HandleValues values = hla13::values_of(theParameters);
-        privateRefs->client.send_interaction(h32(theInteraction), wire::views_of(values), text(theTag), std::nullopt);
-    });
+    guarded([&] { interact(privateRefs->client, theInteraction, theParameters, theTag, std::nullopt); });
 }
 
 RTI::EventRetractionHandle RTI::RTIambassador::deleteObjectInstance(ObjectHandle theObject, const FedTime& theTime,
                                                                     const char* theTag) {
-    return guarded([&] {
-        Client& c = privateRefs->client;
-        return retraction(c, c.delete_object(h32(theObject), text(theTag), hla13::time_of(theTime)));
+    return timed(*privateRefs, theTime, [&](Client& c, wire::OptionalTime time) {
+        return c.delete_object(h32(theObject), text(theTag), time);
     });
 }
 

@@ -11,14 +11,6 @@
 
 #include "recorder.hh"
 
-namespace {
-std::unique_ptr<RTI::AttributeHandleValuePairSet> location_value(RTI::AttributeHandle location, const std::string& value) {
-    std::unique_ptr<RTI::AttributeHandleValuePairSet> set(RTI::AttributeSetFactory::create(1));
-    set->add(location, value.data(), value.size());
-    return set;
-}
-}  // namespace
-
 int main(int argc, char** argv) {
     if (argc != 4) {
         std::cerr << "usage: mixed_federate FEDERATION NAME STEPS\n";
@@ -49,7 +41,7 @@ int main(int argc, char** argv) {
 
         // Both ways, in receive order: an update and an interaction each.
         const std::string hello = "hello from " + name;
-        rtia.updateAttributeValues(object, *location_value(location, hello), "ro");
+        rtia.updateAttributeValues(object, *attribute_values(location, hello), "ro");
         std::unique_ptr<RTI::ParameterHandleValuePairSet> parameters(RTI::ParameterSetFactory::create(1));
         parameters->add(value, hello.data(), hello.size());
         rtia.sendInteraction(command, *parameters, "ro");
@@ -62,7 +54,7 @@ int main(int argc, char** argv) {
         // A camera frame each way: sent from where it is, received in the block it was read into.
         std::string camera(1 << 20, '\0');
         for (std::size_t i = 0; i < camera.size(); ++i) camera[i] = static_cast<char>(i % 251);
-        rtia.updateAttributeValues(object, *location_value(location, camera), "camera");
+        rtia.updateAttributeValues(object, *attribute_values(location, camera), "camera");
         until([&] {
             for (const auto* e : amb.saw("reflectAttributeValues"))
                 if (e->values.count(location) && e->values.at(location) == camera) return true;
@@ -78,7 +70,7 @@ int main(int argc, char** argv) {
         until([&] { return amb.count("federationSynchronized") == 2; }, "timed synchronized");
         for (int step = 1; step <= steps; ++step) {
             const RTIfedTime t(step);
-            rtia.updateAttributeValues(object, *location_value(location, name + " " + std::to_string(step)), t, "");
+            rtia.updateAttributeValues(object, *attribute_values(location, name + " " + std::to_string(step)), t, "");
             rtia.timeAdvanceRequest(t);
             until([&] { return !amb.grants().empty() && amb.grants().back() == step; }, "the grant");
         }

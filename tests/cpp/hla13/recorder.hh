@@ -9,6 +9,7 @@
 #include <functional>
 #include <initializer_list>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,13 @@ struct Event {
     std::string text;                            // label, tag or object name
     RTI::ULong other = 0;                        // owner, federate, class
 };
+
+// A set of one attribute's value, as the test federates send it.
+inline std::unique_ptr<RTI::AttributeHandleValuePairSet> attribute_values(RTI::AttributeHandle h, const std::string& value) {
+    std::unique_ptr<RTI::AttributeHandleValuePairSet> set(RTI::AttributeSetFactory::create(1));
+    set->add(h, value.data(), static_cast<RTI::ULong>(value.size()));
+    return set;
+}
 
 inline std::vector<RTI::ULong> handles_in(const RTI::AttributeHandleSet& set) {
     std::vector<RTI::ULong> out;
@@ -173,19 +181,20 @@ private:
         events.back().name = name;
         return events.back();
     }
-    Event& reflect(RTI::ObjectHandle o, const RTI::AttributeHandleValuePairSet& values, const char* tag) {
-        Event& e = add("reflectAttributeValues");
-        e.handle = o;
+    // A reflection (an object's attribute values) or an interaction (a class's parameter values).
+    template <class Values>
+    Event& valued(const char* name, RTI::Handle h, const Values& values, const char* tag) {
+        Event& e = add(name);
+        e.handle = h;
         e.values = values_in(values);
         e.text = tag;
         return e;
     }
+    Event& reflect(RTI::ObjectHandle o, const RTI::AttributeHandleValuePairSet& values, const char* tag) {
+        return valued("reflectAttributeValues", o, values, tag);
+    }
     Event& receive(RTI::InteractionClassHandle c, const RTI::ParameterHandleValuePairSet& values, const char* tag) {
-        Event& e = add("receiveInteraction");
-        e.handle = c;
-        e.values = values_in(values);
-        e.text = tag;
-        return e;
+        return valued("receiveInteraction", c, values, tag);
     }
     void attributes(const char* name, RTI::ObjectHandle o, const RTI::AttributeHandleSet& a) {
         Event& e = add(name);

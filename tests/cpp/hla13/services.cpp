@@ -75,12 +75,6 @@ std::unique_ptr<RTI::ParameterHandleValuePairSet> parameters(RTI::ParameterHandl
     return set;
 }
 
-std::unique_ptr<RTI::AttributeHandleValuePairSet> attribute_values(RTI::AttributeHandle h, const char* value) {
-    std::unique_ptr<RTI::AttributeHandleValuePairSet> set(RTI::AttributeSetFactory::create(1));
-    set->add(h, value, std::strlen(value));
-    return set;
-}
-
 bool has_parameter(const Recorder& r, RTI::ParameterHandle h, const std::string& value) {
     for (const auto* e : r.saw("receiveInteraction"))
         if (e->values.count(h) && e->values.at(h) == value) return true;

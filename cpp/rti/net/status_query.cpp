@@ -37,6 +37,7 @@ public:
     }
 
     std::uint32_t max_frame_bytes = wire::kMaxFrameBytes;  // the Welcome's, once it came
+    bool welcomed = false;
 
     // The next message from the gateway.
     wire::Message receive() {
@@ -49,6 +50,8 @@ public:
             }
             char chunk[1 << 16];
             in_.append(chunk, move_bytes(POLLIN, chunk, sizeof chunk));
+            if (!link_.ssl && !welcomed && tls::looks_like_record(in_))
+                raise(ErrorCode::AuthenticationFailed, "the gateway at " + address_ + " answered with TLS: " + kTlsAdvice);
         }
     }
 
@@ -85,8 +88,13 @@ private:
         }
     }
     [[noreturn]] void closed() const {
+        if (!link_.ssl && !welcomed)
+            raise(ErrorCode::RTIinternalError, "the gateway at " + address_ + " closed the connection before its "
+                                               "Welcome, as a gateway with TLS does to a client without it: " + kTlsAdvice);
         raise(ErrorCode::RTIinternalError, "the gateway at " + address_ + " closed the connection");
     }
+    static constexpr const char* kTlsAdvice =
+        "give --tls or --tls-ca FILE (or $HLACORE_TLS) for a gateway with TLS (rtig --tls-cert; docs/networking.md)";
 
     Dialed& link_;
     std::string address_;
@@ -113,6 +121,7 @@ std::string query_status(const std::string& host, std::uint16_t port, const Stat
         wire::Message m = exchange.receive();
         if (const auto* welcome = std::get_if<wire::Welcome>(&m)) {
             exchange.max_frame_bytes = welcome->max_frame_bytes;
+            exchange.welcomed = true;
             if (!welcome->challenge.empty()) exchange.send(answer_challenge(address, options.secret, welcome->challenge));
             exchange.send(wire::QueryStatus{1, 0, true});
         } else if (const auto* verdict = std::get_if<wire::Authenticated>(&m)) {

@@ -619,20 +619,34 @@ class EventRetractionHandle:
         The message's serial number at its sender.
         """
 class BackgroundGateway:
+    """
+    The gateway serving on a thread of this process; hlacore.Gateway is its Python face.
+    """
     def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, fom_path: collections.abc.Sequence[str], verbose: bool, save_dir: str = '', trace_path: str = '', client_budget: typing.SupportsInt | typing.SupportsIndex = 67108864, stall_timeout: typing.SupportsFloat | typing.SupportsIndex = 30.0, max_frame: typing.SupportsInt | typing.SupportsIndex = 67108864, secret_file: str = '', max_datagram: typing.SupportsInt | typing.SupportsIndex = 1400, federation_secret_files: collections.abc.Mapping[str, str] = {}, tls_cert: str = '', tls_key: str = '', record_path: str = '', busy_poll_us: typing.SupportsInt | typing.SupportsIndex = 0, unix_path: str = '') -> None:
         ...
     def stop(self) -> None:
-        ...
+        """
+        Stops serving and waits for the gateway's thread to end.
+        """
     @property
     def host(self) -> str:
-        ...
+        """
+        The address it listens on.
+        """
     @property
     def port(self) -> int:
-        ...
+        """
+        The TCP port it listens on (the one picked, for port 0).
+        """
     @property
     def running(self) -> bool:
-        ...
+        """
+        Whether its thread still serves.
+        """
 class RTIAmbassadorBase:
+    """
+    The federate's side of the connection to a gateway: the HLA 1.3 services under their PyHLA names; hlacore.rti.RTIAmbassador builds on it.
+    """
     class Batch:
         """
         What `with rtia.batch():` enters (RTIAmbassadorBase.batch).

@@ -595,7 +595,7 @@ void Gateway::release_large_buffers() {
     large_buffers_kept_ = in_use;
 #if defined(__GLIBC__)
     // Once per burst of large frames, when all is given back: the decoded values were freed below the top of
-    // the heap, where glibc keeps up to twice the largest for reuse (tests/test_large_values.py measures it).
+    // the heap, where glibc keeps up to twice the largest for reuse (tests/transport/test_large_values.py measures it).
     if (!in_use) malloc_trim(0);
 #endif
 }
@@ -1235,7 +1235,7 @@ void Gateway::close(int fd, const std::string& why) {
 #if defined(__GLIBC__)
     // What a departed federate held (its queues, its messages queued in the federation) is freed by now, but
     // glibc keeps freed memory below the top of the heap; without this a burst of dying federates left rtig
-    // tens of MiB larger for good (tests/test_death.py measures it).
+    // tens of MiB larger for good (tests/transport/test_death.py measures it).
     if (held_memory) malloc_trim(0);
 #else
     (void)held_memory;

@@ -1,6 +1,6 @@
 // The federate ambassador's callbacks, by their HLA 1.3 (PyHLA) names, declared once: the binding turns
 // each message from the gateway into one of them (cpp/bindings/callbacks.cpp), Python reads the list as
-// hlacore._core.CALLBACKS, and tests/test_callbacks.py checks rti.FederateAmbassador's documentation
+// hlacore._core.CALLBACKS, and tests/rti/test_callbacks.py checks rti.FederateAmbassador's documentation
 // against it.
 #pragma once
 

@@ -1,6 +1,6 @@
-"""The paper's A* experiment end to end (issue 7 acceptance): `python -m hlacore.experiments.robot_in_the_loop` in its own process,
-the Robot Federate in another, the simulated device in a third, over the real rtig or the in-process
-gateway."""
+"""The paper's A* experiment end to end, its acceptance runs (docs/robot.md):
+`python -m hlacore.experiments.robot_in_the_loop` in its own process, the Robot Federate in another, the simulated
+device in a third, over the real rtig or the in-process gateway."""
 
 from __future__ import annotations
 

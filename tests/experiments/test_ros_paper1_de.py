@@ -1,4 +1,4 @@
-"""Paper 1's chain (issue 8): a DE-engine controller federate commands a stageros-style world node through
+"""Paper 1's chain (docs/ros-bridge.md): a DE-engine controller federate commands a stageros-style world node through
 the RTI, the ROS bridge and ROS topics; and the bridge's other direction alone (HLA cmd_vel → Twist, the
 node's state → WorldRobot reflections with federation timestamps); and the stage node on its own clock.
 
@@ -116,10 +116,10 @@ def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_addre
 
 def test_paper1_chain_with_world_bridge_and_controller_on_hosts_of_their_own(ros: None, nethosts: NetHosts,
                                                                           tmp_path: pathlib.Path) -> None:
-    """Paper 1's chain across machines (issue 16): the stage node (the world) on host "world", the bridge and
-    roscore on host "bridge", the DE controller federate on host "control", rtig on this one. The world and
-    the bridge share a LAN for ROS (nodes connect on ports they choose); the bridge and the controller reach
-    the gateway only through emulated links (2 ms each way). The paper-1 checks pass, as on one machine."""
+    """Paper 1's chain across machines (test hosts, docs/networking.md): the stage node (the world) on host "world",
+    the bridge and roscore on host "bridge", the DE controller federate on host "control", rtig on this one. The
+    world and the bridge share a LAN for ROS (nodes connect on ports they choose); the bridge and the controller
+    reach the gateway only through emulated links (2 ms each way). The paper-1 checks pass, as on one machine."""
     world, bridge, control = nethosts.add("world"), nethosts.add("bridge"), nethosts.add("control")
     world_ip, bridge_ip = nethosts.lan(world, bridge)
     two_ms = Direction(delay=0.002)

@@ -1,5 +1,5 @@
 """Test hosts: network namespaces on this machine, each joined to the root namespace by a veth pair, so a test
-runs a gateway and federates "on different machines" (issue 16). The `nethosts` fixture (tests/conftest.py) makes them.
+runs a gateway and federates "on different machines". The `nethosts` fixture (tests/conftest.py) makes them.
 
 Host k gets 10.213.k.1 inside its namespace; the root namespace holds 10.213.k.254 on the other end. There
 is no route between the hosts: whatever crosses from one to another goes through a relay that the test runs

@@ -1,4 +1,4 @@
-"""The Python package is layered and free of import cycles (issue 14, point 5).
+"""The Python package is layered and free of import cycles (docs/architecture.md, the layers).
 
 The test reads python/hlacore with :mod:`ast` (nothing is imported), builds the graph of imports between
 its modules (relative imports resolved; module-level and function-level imports count, those under

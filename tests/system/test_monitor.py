@@ -1,4 +1,4 @@
-"""hlacore.monitor (issue 21): the live web view, from the views it computes to the page in a real browser.
+"""hlacore.monitor (docs/monitor.md): the live web view, from the views it computes to the page in a real browser.
 
 The browser test drives Debian's headless chromium with Selenium (scripts/test.sh installs chromium and
 chromium-driver when missing) against an ASan rtig and a lockstep of federate processes.

@@ -1,4 +1,4 @@
-"""Recording a federation and replaying federates from it (issue 18, docs/record-replay.md).
+"""Recording a federation and replaying federates from it (docs/record-replay.md).
 
 The recording of a small federation is checked event by event against what its federates sent, through the
 mcap library's own reader; the main job is recorded, its Robot Federate replayed against a live testbench

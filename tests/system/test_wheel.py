@@ -1,4 +1,4 @@
-"""scripts/wheel.sh (issue 17): one command builds a binary wheel that installs into a fresh virtual environment
+"""scripts/wheel.sh: one command builds a binary wheel that installs into a fresh virtual environment
 and runs the main job there on a machine without a compiler, which this test makes by leaving only the fresh
 environment's bin directory on PATH (no cc, gcc, clang, cmake or ninja reachable; CC and CXX unset).
 

@@ -1,4 +1,4 @@
-"""Access control (issue 16): a gateway with a secret (`rtig --secret-file`) lets in only clients that prove
+"""Access control (docs/networking.md): a gateway with a secret (`rtig --secret-file`) lets in only clients that prove
 they know it, by challenge-response before anything else; without it or with a wrong one the client gets
 AuthenticationFailed and no federation data; the secret never crosses the network. Against the real rtig,
 on loopback and bound to a test host's address in a network namespace."""

@@ -1,6 +1,6 @@
-"""Clock offsets to the gateway (issue 16): NTP-style probes on first request and when older than asked. The estimate must
-hold the true offset within its uncertainty, whatever the path's asymmetry; on one host the true offset
-is 0 (every process reads the same CLOCK_MONOTONIC), which is what these tests check against."""
+"""Clock offsets to the gateway (docs/networking.md): NTP-style probes on first request and when older than asked.
+The estimate must hold the true offset within its uncertainty, whatever the path's asymmetry; on one host the true
+offset is 0 (every process reads the same CLOCK_MONOTONIC), which is what these tests check against."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Best effort over UDP (issue 16, docs/networking.md): which messages travel as datagrams, the counts on
+"""Best effort over UDP (docs/networking.md): which messages travel as datagrams, the counts on
 both ends, the fall back to TCP, garbage on the datagram port, and a lossy link beside a reliable lockstep."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Large FOMs (issue 15, case 5): the .fed parser is linear, so a 40 000-attribute class parses with every
+"""Large FOMs (docs/robustness.md, case 5): the .fed parser is linear, so a 40 000-attribute class parses with every
 handle right in a fraction of a second, a text beyond 256 MiB is refused with ErrorReadingFED, and a federation
 created from a 10 MB FED leaves the gateway answering a federate in another federation and process within a
 bounded stall. docs/robustness.md lists the figures."""

@@ -1,9 +1,9 @@
-"""Flow control (issue 15, cases 1 and 4): a constrained federate that keeps ticking but does not advance while an
-untimed publisher floods it with 1 KiB updates (the ROS bridge's pattern). The gateway holds the updates
-for it (HLA 1.3: receive-order messages wait until it advances) up to its --client-budget, then stops
-reading the publisher, whose calls block; nobody is dropped, and when the federate advances it receives
-every update in order. Against the optimized rtig (its memory is measured), federates in their own
-processes; the test process is a bystander in another federation measuring its round trips."""
+"""Flow control (docs/robustness.md, cases 1 and 4): a constrained federate that keeps ticking but does not advance
+while an untimed publisher floods it with 1 KiB updates (the ROS bridge's pattern). The gateway holds the updates
+for it (HLA 1.3: receive-order messages wait until it advances) up to its --client-budget, then stops reading the
+publisher, whose calls block; nobody is dropped, and when the federate advances it receives every update in order.
+Against the optimized rtig (its memory is measured), federates in their own processes; the test process is a
+bystander in another federation measuring its round trips."""
 
 from __future__ import annotations
 
@@ -88,7 +88,7 @@ def test_a_federate_that_does_not_advance_holds_back_its_publisher_within_the_bu
     assert not re.search(r"dropped .*\(federate", log), log  # no federate dropped (a closing idle client may log)
 
 
-# ---- fairness (issue 15, case 4): what one client's requests make the gateway produce is bounded ----
+# ---- fairness (case 4): what one client's requests make the gateway produce is bounded ----
 
 
 def test_pipelined_status_queries_that_are_never_read_cannot_grow_the_gateway(tmp_path: pathlib.Path) -> None:

@@ -1,4 +1,4 @@
-"""Issue 15, case 3: large values. A value too large for the gateway's frame limit raises ValueLengthExceeded
+"""Large values (docs/robustness.md, case 3). A value too large for the gateway's frame limit raises ValueLengthExceeded
 at the call, before anything is sent, with the limit computed so that what the gateway forwards (a
 reflection is a few bytes longer than the update) always fits; a client that sends one anyway is dropped
 with the reason; camera-size updates reach a subscriber that ticks slowly, through flow control. Against

@@ -1,6 +1,6 @@
-"""The link emulator (hlacore.link) and test hosts in network namespaces (tests/support/nethosts.py), issue 16: first
-the relay's figures on loopback (delay per direction, the rate limit, order and integrity under jitter,
-datagram loss), then a federation across namespaces through emulated Wi-Fi links."""
+"""The link emulator (hlacore.link) and test hosts in network namespaces (tests/support/nethosts.py),
+docs/networking.md: first the relay's figures on loopback (delay per direction, the rate limit, order and integrity
+under jitter, datagram loss), then a federation across namespaces through emulated Wi-Fi links."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""A frozen gateway (issue 15, case 2): with `rtig` stopped (SIGSTOP, as a frozen host or a partition looks to
+"""A frozen gateway (docs/robustness.md, case 2): with `rtig` stopped (SIGSTOP, as a frozen host or a partition looks to
 its clients), every blocking call of a federate in another process ends with GatewayNotResponding within the
 client's timeout plus a second, Ctrl-C ends any of them with KeyboardInterrupt at once, and a send the gateway
 does not take leaves the other Python threads running. docs/robustness.md lists the figures."""

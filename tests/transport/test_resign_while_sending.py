@@ -1,5 +1,5 @@
-"""Issue 15, case 6: resigning while another thread still sends (a bridge shutting down). The resign goes
-out in the socket's order with the other thread's messages; from it on, that thread's updates and
+"""Resigning while another thread still sends, as a bridge shutting down does (docs/robustness.md, case 6). The
+resign goes out in the socket's order with the other thread's messages; from it on, that thread's updates and
 interactions raise FederateNotExecutionMember at the call instead of reaching the gateway after the resign
 (a protocol error that dropped the connection, lost the resign's reply and left the ambassador unusable).
 Against the real rtig, the resigning federate in its own process, a watcher in the test process."""

@@ -524,9 +524,9 @@ def test_timestamp_below_the_senders_bound_is_a_protocol_error(rtig: RtigProcess
         "timestamp-minus-inf"])
 def test_non_finite_times_are_refused_by_the_gateway(rtig: RtigProcess, legit: Legit, message: str, payload: Any,
                                                      reason: str) -> None:
-    """Issue 15, case 7: the client refuses these (InvalidLookahead, InvalidFederationTime); a client that
-    sends them anyway is dropped with the reason, before a federate granted +inf could make every later
-    regulating federate start at +inf."""
+    """Non-finite times (docs/robustness.md, case 7): the client refuses these (InvalidLookahead,
+    InvalidFederationTime); a client that sends them anyway is dropped with the reason, before a federate granted
+    +inf could make every later regulating federate start at +inf."""
     command, value = int(legit.command), int(legit.value)
     with joined_raw_client(rtig.address, "infinite") as (client, handle):
         if message == "interaction":

@@ -1,4 +1,4 @@
-"""Optional TLS (issue 16): `rtig --tls-cert FILE --tls-key FILE` makes every connection TLS, and
+"""Optional TLS (docs/networking.md): `rtig --tls-cert FILE --tls-key FILE` makes every connection TLS, and
 `RTIAmbassador(address, tls=...)` (or $HLACORE_TLS) verifies the gateway's certificate and the host it
 connected to. Against the real rtig and the in-process gateway, on loopback, with certificates the `openssl`
 command makes for the test (docs/networking.md)."""

@@ -70,6 +70,7 @@ def driver(address: str) -> Iterator[tuple[Federate, dict[Any, str], Any, dict[s
         creator.destroyFederationExecution(FEDERATION)
 
 
+@pytest.mark.slow
 def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_address: str,
                                          tmp_path: pathlib.Path) -> None:
     """One command, paper 1's architecture: the DE controller federate, the bridge and the stage node, each
@@ -114,6 +115,7 @@ def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_addre
     assert (out / "paper1-de-snapshot.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+@pytest.mark.slow
 def test_paper1_chain_with_world_bridge_and_controller_on_hosts_of_their_own(ros: None, nethosts: NetHosts,
                                                                           tmp_path: pathlib.Path) -> None:
     """Paper 1's chain across machines (test hosts, docs/networking.md): the stage node (the world) on host "world",

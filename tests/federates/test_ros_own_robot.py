@@ -18,6 +18,8 @@ from hlacore.processes import Child, descendants, still_running
 from support import ROOT, RtigProcess
 from support.ros import require_ros, running_roscore
 
+pytestmark = pytest.mark.slow  # roscore, the robot node, the bridge and a federate, as the walkthrough runs them
+
 EXAMPLE = ROOT / "docs" / "own-robot"
 
 

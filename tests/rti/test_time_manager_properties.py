@@ -439,6 +439,7 @@ def scenario(draw: Any) -> Harness:
     return h
 
 
+@pytest.mark.slow
 @settings(
     max_examples=500,
     deadline=None,

@@ -311,7 +311,7 @@ def test_report_renders_the_three_rti_table() -> None:
     assert "400.0 k/s = 1.00 of the floor" in text and "C++ ≥ 3× OpenRTI: met (4.00×)" in text
 
 
-@pytest.mark.parametrize("datagrams", [True, False], ids=["udp", "tcp"])
+@pytest.mark.parametrize("datagrams", [pytest.param(True, marks=pytest.mark.slow), False], ids=["udp", "tcp"])
 def test_lossy_stream_body(datagrams: bool) -> None:
     """The loss bench in its namespace with 2 % loss each way: the stream takes the path asked for; over TCP
     nothing is lost (it is sent again), over datagrams some is (odds of losing none of 200 on two lossy hops:

@@ -54,6 +54,7 @@ def files_of(*directories: pathlib.Path) -> list[str]:
     return sorted(str(p) for d in directories for p in d.rglob("*") if p.is_file() and not p.name.startswith(".") and p.name != "README.md")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("target", TARGETS)
 def test_short_fuzz_run(target: str, tmp_path: pathlib.Path) -> None:
     """Each target runs SECONDS (10) from the committed seeds without a crash, a sanitizer report, a leak, a

@@ -217,6 +217,7 @@ def row_times(driver: Any) -> dict[str, float]:
     return {row["name"]: float(row["time"]) for row in federate_rows(driver)}
 
 
+@pytest.mark.slow
 def test_the_page_shows_a_lockstep_live_a_paused_federate_holding_it_back_and_a_killed_one_gone(
         rtig: RtigProcess, browser: Any, tmp_path: pathlib.Path) -> None:
     creator = rti.RTIAmbassador(rtig.address)

@@ -21,6 +21,8 @@ import pytest
 
 from support import ROOT
 
+pytestmark = pytest.mark.slow  # a wheel built and installed into a fresh venv: minutes
+
 COMPILERS = ("cc", "c++", "gcc", "g++", "clang", "clang++", "cmake", "ninja")
 # What must not reach the fresh environment: a compiler named by variable, the checkout or .venv on the
 # import path, the virtual environment the tests run in.

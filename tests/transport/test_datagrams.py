@@ -168,6 +168,7 @@ def test_garbage_on_the_datagram_port_is_counted_and_harms_nobody(tmp_path: path
         assert "dropped" not in server.log(), server.log()
 
 
+@pytest.mark.slow
 def test_a_lossy_best_effort_stream_beside_a_reliable_lockstep(nethosts: NetHosts, tmp_path: pathlib.Path) -> None:
     """Two lockstep federates (TSO, reliable), one on its own host behind a link that loses 5 % of the
     datagrams each way (TCP untouched), each streaming 200 best-effort interactions a second to the other:

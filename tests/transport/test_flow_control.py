@@ -39,6 +39,7 @@ def bystander_round_trip(pub: rti.RTIAmbassador, sub: rti.RTIAmbassador, amb: Re
     return time.monotonic() - started
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("order, seconds, budget", [("receive", 60.0, 16 * MIB), ("timestamp", 20.0, 16 * MIB)])
 def test_a_federate_that_does_not_advance_holds_back_its_publisher_within_the_budget(
         tmp_path: pathlib.Path, order: str, seconds: float, budget: int) -> None:

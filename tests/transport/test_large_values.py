@@ -112,6 +112,7 @@ def test_the_in_process_gateway_takes_the_frame_limit() -> None:
             legit.alice.rtia.updateAttributeValues(obj, {legit.location: bytes(LIMIT)}, "")
 
 
+@pytest.mark.slow
 def test_camera_size_updates_reach_a_subscriber_that_ticks_slowly(tmp_path: pathlib.Path) -> None:
     """Eight updates of about 20 MiB (camera frames) from a publisher process to a subscriber that ticks every
     0.3 s: flow control holds the publisher back while the subscriber takes them; nobody is dropped and every

@@ -46,6 +46,7 @@ def frozen_peer(server: RtigProcess, mode: str, timeout: float, busy_poll_us: st
     return peer
 
 
+@pytest.mark.slow
 @BUSY_POLL
 def test_every_blocking_call_raises_gateway_not_responding_within_its_timeout(stoppable_rtig: RtigProcess,
                                                                              busy_poll_us: str) -> None:
@@ -94,6 +95,7 @@ def test_other_threads_run_while_a_send_is_blocked(stoppable_rtig: RtigProcess) 
     assert report["counted"] >= 50 * report["after"], report
 
 
+@pytest.mark.slow
 def test_a_resumed_gateway_resigns_the_federates_that_gave_up(stoppable_rtig: RtigProcess) -> None:
     """After the peer's calls failed, their connections are closed: once continued, rtig resigns those
     federates and the federation takes a new one under a name they held."""

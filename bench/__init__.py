@@ -1,2 +1,2 @@
 """hlacore's benchmarks (pytest-benchmark), run by ./scripts/bench.sh; the bodies are importable so that
-tests/test_bench_smoke.py can run each of them at a tiny size."""
+tests/system/test_bench_smoke.py can run each of them at a tiny size."""

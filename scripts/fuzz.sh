@@ -37,7 +37,7 @@ if ! fuzzer_runtime_works; then
     sudo=""
     if [ "$(id -u)" -ne 0 ]; then sudo="sudo -n"; fi
     echo "fuzz.sh: installing clang and its libFuzzer runtime from Debian's packages (apt-get, about a minute)" \
-         "to build the fuzz targets that tests/test_fuzz.py runs" >&2
+         "to build the fuzz targets that tests/system/test_fuzz.py runs" >&2
     export DEBIAN_FRONTEND=noninteractive
     apt_install() { $sudo apt-get install -y -q --no-install-recommends "$@" >build-apt.log 2>&1; }
     if ! apt_install clang libclang-rt-14-dev && ! apt_install clang; then

@@ -14,4 +14,4 @@ install_hlacore test
 unset HLACORE_TEST_RTIG  # the rtig installed in .venv (optimized), not the sanitizer build
 export HLACORE_LOAD_FEDERATES=$federates HLACORE_LOAD_UPDATES=$updates
 # pytest-timeout: a bound proportional to the size (the tests bound each wait themselves too)
-exec .venv/bin/python -m pytest tests/test_load.py -s -q --timeout=$(( 600 + federates * updates / 20 )) "$@"
+exec .venv/bin/python -m pytest tests/system/test_load.py -s -q --timeout=$(( 600 + federates * updates / 20 )) "$@"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerate python/hlacore/_core.pyi, the type stub of the compiled module (signatures and docstrings
 # of RTIAmbassadorBase, the handles, the exceptions), with pybind11-stubgen from a fresh build of
-# hlacore. Run it after changing cpp/bindings/; tests/test_stub.py fails while the stub lags the module.
+# hlacore. Run it after changing cpp/bindings/; tests/system/test_stub.py fails while the stub lags the module.
 source "$(dirname "$0")/env.sh"
 install_hlacore ""
 pip_install pybind11-stubgen

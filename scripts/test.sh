@@ -2,20 +2,20 @@
 # Install hlacore and its test dependencies into .venv, build an ASan+UBSan rtig for the tests that run
 # against the real executable (and the bench's C++ TCP floor program, for its smoke test), then run the
 # whole test suite. Arguments go to pytest. It also builds the libFuzzer targets (scripts/fuzz.sh --build-only,
-# which installs clang from Debian's packages when missing) for tests/test_fuzz.py's short fuzz runs; outside
+# which installs clang from Debian's packages when missing) for tests/system/test_fuzz.py's short fuzz runs; outside
 # CI (CI=true) a machine where clang cannot be installed only skips those.
 source "$(dirname "$0")/env.sh"
 ./scripts/install-ros.sh   # ROS 1 from Debian for the ROS bridge tests (docs/ros-bridge.md)
 command -v ip >/dev/null 2>&1 \
-    || debian_install "the ip command makes the test hosts (network namespaces) of tests/test_link.py" iproute2
+    || debian_install "the ip command makes the test hosts (network namespaces) of tests/transport/test_link.py" iproute2
 command -v nft >/dev/null 2>&1 \
     || debian_install "nft drops packets in the namespace of the best-effort loss bench (bench/lossy_stream.py)" nftables
 command -v openssl >/dev/null 2>&1 \
-    || debian_install "the openssl command makes the test certificates of tests/test_tls.py" openssl
+    || debian_install "the openssl command makes the test certificates of tests/transport/test_tls.py" openssl
 { command -v chromium && command -v chromedriver; } >/dev/null 2>&1 \
-    || debian_install "tests/test_monitor.py opens the monitor's page in headless chromium, driven by Selenium through chromedriver" chromium chromium-driver
+    || debian_install "tests/system/test_monitor.py opens the monitor's page in headless chromium, driven by Selenium through chromedriver" chromium chromium-driver
 command -v pkg-config >/dev/null 2>&1 \
-    || debian_install "pkg-config reads the installed hlacore.pc in tests/test_cpp_api.py (the HLA 1.3 C++ API)" pkgconf
+    || debian_install "pkg-config reads the installed hlacore.pc in tests/system/test_cpp_api.py (the HLA 1.3 C++ API)" pkgconf
 install_hlacore test
 [ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build
@@ -35,7 +35,7 @@ if ./scripts/fuzz.sh --build-only; then
 elif [ "${CI:-}" = true ]; then
     exit 1
 else
-    echo "test.sh: the fuzz targets could not be built; tests/test_fuzz.py will skip" >&2
+    echo "test.sh: the fuzz targets could not be built; tests/system/test_fuzz.py will skip" >&2
 fi
 export HLACORE_TEST_RTIG="$PWD/build/asan/rtig" HLACORE_TEST_TCP_FLOOR="$PWD/build/asan/tcp_floor" \
     HLACORE_TEST_STATE_TYPES="$PWD/build/asan/state_types_test" HLACORE_TEST_HLA13="$PWD/build/hla13-tests"

@@ -211,7 +211,7 @@ PYBIND11_MODULE(_core, m) {
     m.attr("CALLBACKS") = py::tuple(py::cast(std::vector<std::string>(std::begin(hlacore::wire::kCallbackNames),
                                                                       std::end(hlacore::wire::kCallbackNames))));
 
-    // The pure time manager, exposed for the property tests (tests/test_time_manager_properties.py).
+    // The pure time manager, exposed for the property tests (tests/rti/test_time_manager_properties.py).
     using hlacore::AdvanceKind;
     using hlacore::TimeManager;
     py::class_<TimeManager>(m, "_TimeManager")

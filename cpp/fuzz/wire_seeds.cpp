@@ -1,5 +1,5 @@
 // wire_seeds DIR: writes one valid frame of every wire message into DIR/<Name>.bin, each field filled with
-// a sample value. scripts/fuzz.sh and tests/test_fuzz.py give them to fuzz_wire and fuzz_gateway beside the
+// a sample value. scripts/fuzz.sh and tests/system/test_fuzz.py give them to fuzz_wire and fuzz_gateway beside the
 // hand-written seeds of make_wire_seeds.py, so a message appended to HLACORE_MESSAGES gets a seed (and the
 // seed replay checks that it decodes and re-encodes to the same bytes) without anyone writing one.
 #include <cstdio>

@@ -1,6 +1,6 @@
 """Sphinx configuration of hlacore's API reference: docs/api/*.rst arrange what the docstrings say.
 
-Built by ``scripts/docs.sh`` into build/docs; ``tests/test_api_docs.py`` builds it the same way (nitpicky,
+Built by ``scripts/docs.sh`` into build/docs; ``tests/system/test_api_docs.py`` builds it the same way (nitpicky,
 warnings are errors) and checks that every public name is documented and in the reference.
 """
 

@@ -4,7 +4,7 @@
 - :class:`hlacore.Gateway` — the gateway run in-process; ``rtig`` is the same gateway as a server.
 - :mod:`hlacore.fed` — the ``.fed`` parser; :mod:`hlacore.omt` — encoding helpers.
 
-Three layers, nothing importing upward (tests/test_layers.py): this core (rti, _core, fed, omt, gateway,
+Three layers, nothing importing upward (tests/system/test_layers.py): this core (rti, _core, fed, omt, gateway,
 aio, status, trace, ...), the reusable federates in :mod:`hlacore.federates`, and the papers' experiments
 in :mod:`hlacore.experiments`.
 """

@@ -3,7 +3,7 @@
 Every class is a subclass of :class:`~hlacore.rti.RTIexception`; the services of :mod:`hlacore.rti` raise
 them and the same classes are reachable as ``hlacore.rti.<Name>``. The list is declared once in C++
 (``HLACORE_EXCEPTIONS`` in ``cpp/rti/exceptions.hpp``, where the position is the wire code); this module
-names the classes statically so that type checkers and readers see them (tests/test_exceptions.py checks
+names the classes statically so that type checkers and readers see them (tests/rti/test_exceptions.py checks
 that it matches the C++ list exactly). ``ErrorReadingFED`` carries ``file``, ``line`` and ``column`` of a
 ``.fed`` error. hlacore's own exceptions (``GatewayNotResponding``, ``AuthenticationFailed``) are subclasses
 of :class:`~hlacore.rti.RTIinternalError`, so code written for PyHLA that catches that still catches them.

@@ -2,7 +2,7 @@
 // a federation: regions and their overlap, a federate's DDM state, attribute ownership, save/restore; and
 // the connection's read buffer and the values a federate decodes as views into it (cpp/rti/wire/).
 // Built by ./scripts/test.sh (target state_types_test, with the sanitizers) and run by
-// tests/test_state_types.py; prints "ok <case>" per case, exits non-zero at the first failure.
+// tests/rti/test_state_types.py; prints "ok <case>" per case, exits non-zero at the first failure.
 #include <cstdio>
 #include <cstring>
 #include <cstdlib>

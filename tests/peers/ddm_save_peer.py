@@ -1,4 +1,4 @@
-"""Federate 's2' of tests/test_save_restore_ddm.py, in its own process (so its region numbers start at 1).
+"""Federate 's2' of tests/rti/test_save_restore_ddm.py, in its own process (so its region numbers start at 1).
 
 Usage: ddm_save_peer.py HOST:PORT first|restart.
 - first: joins DdmFed as 's2', creates a Geo region with X in [20, 30], subscribes vehicle.position and

@@ -1,4 +1,4 @@
-"""A subscriber through a region, in its own process (tests/test_ddm.py).
+"""A subscriber through a region, in its own process (tests/rti/test_ddm.py).
 
 usage: ddm_subscriber.py ADDRESS NAME LOW HIGH
 

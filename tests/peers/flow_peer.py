@@ -1,4 +1,4 @@
-"""The two federates of the flow-control case (issue 15, case 1): `python flow_peer.py ROLE ADDRESS SECONDS
+"""The two federates of the flow-control case (docs/robustness.md, case 1): `python flow_peer.py ROLE ADDRESS SECONDS
 ORDER`, in TestFed, ORDER "receive" or "timestamp".
 
 ROLE "publisher": sends 1 KiB updates of one robot's location (value = sequence number, padded) as fast as

@@ -1,4 +1,4 @@
-"""The publisher of camera-size updates for tests/test_large_values.py: `python large_values_peer.py ADDRESS
+"""The publisher of camera-size updates for tests/transport/test_large_values.py: `python large_values_peer.py ADDRESS
 COUNT MIB SHRINK`. Joins TestFed, publishes robot.location, registers "camera", sends COUNT updates (update k
 of MIB MiB less k * SHRINK bytes, filled with the byte k) as fast as the gateway takes them, reports
 {"sent": COUNT, "seconds": S, "slowest_call": S}, resigns and exits."""

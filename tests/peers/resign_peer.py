@@ -1,5 +1,5 @@
 """A federate that resigns while another of its threads keeps sending (a bridge shutting down), for
-tests/test_resign_while_sending.py: `python resign_peer.py ADDRESS ROUNDS`.
+tests/transport/test_resign_while_sending.py: `python resign_peer.py ADDRESS ROUNDS`.
 
 Each round it joins TestFed as "shutting-down", registers a robot, starts a thread that sends location
 updates and command interactions as fast as it can, resigns (DeleteObjectsAndReleaseAttributes) from the

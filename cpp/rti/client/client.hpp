@@ -230,7 +230,7 @@ public:
     fom::Handle interaction_routing_space(fom::Handle cls) const;
     std::uint32_t federate_handle() const;
 
-    // Messages sent and write system calls made so far (tests/test_coalescing.py): a long run of sends
+    // Messages sent and write system calls made so far (tests/transport/test_coalescing.py): a long run of sends
     // takes fewer writes than messages.
     struct SendCounts {
         std::uint64_t messages = 0;

@@ -34,7 +34,7 @@ void Gateway::release_large_buffers() {
     large_buffers_kept_ = in_use;
 #if defined(__GLIBC__)
     // Once per burst of large frames, when all is given back: the decoded values were freed below the top of
-    // the heap, where glibc keeps up to twice the largest for reuse (tests/test_large_values.py measures it).
+    // the heap, where glibc keeps up to twice the largest for reuse (tests/transport/test_large_values.py measures it).
     if (!in_use) malloc_trim(0);
 #endif
 }

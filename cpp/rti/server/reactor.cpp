@@ -397,7 +397,7 @@ void Gateway::close(int fd, const std::string& why) {
 #if defined(__GLIBC__)
     // What a departed federate held (its queues, its messages queued in the federation) is freed by now, but
     // glibc keeps freed memory below the top of the heap; without this a burst of dying federates left rtig
-    // tens of MiB larger for good (tests/test_death.py measures it).
+    // tens of MiB larger for good (tests/transport/test_death.py measures it).
     if (held_memory) malloc_trim(0);
 #else
     (void)held_memory;

@@ -1,5 +1,5 @@
 // The federate ambassador's callbacks, declared once: their HLA 1.3 (PyHLA) names (Python reads the list as
-// hlacore._core.CALLBACKS, and tests/test_callbacks.py checks rti.FederateAmbassador's documentation against
+// hlacore._core.CALLBACKS, and tests/rti/test_callbacks.py checks rti.FederateAmbassador's documentation against
 // it), the messages that carry them, and the one dispatch of every front end onto its overload per message
 // (cpp/bindings/callbacks.cpp, cpp/hla13/callbacks.cpp).
 #pragma once

@@ -7,6 +7,6 @@
   paper 1's own chain through ROS.
 
 Top layer: experiments import the core (:mod:`hlacore.rti`, ...) and the federates
-(:mod:`hlacore.federates`); nothing below imports them (tests/test_layers.py checks it). Their old paths
+(:mod:`hlacore.federates`); nothing below imports them (tests/system/test_layers.py checks it). Their old paths
 under ``hlacore.federates`` and ``hlacore.demo`` are deprecated aliases for one release.
 """

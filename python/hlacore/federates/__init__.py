@@ -1,7 +1,7 @@
 """Reusable federates: the library's middle layer, above the core (:mod:`hlacore.rti`, ...) and below the
 papers' experiments (:mod:`hlacore.experiments`), which nothing here imports.
 
-Lowest first (a package imports only lower ones; tests/test_layers.py checks it):
+Lowest first (a package imports only lower ones; tests/system/test_layers.py checks it):
 
 - :mod:`.de` — the discrete-event engine and its HLA-aware director (``docs/de.md``);
 - :mod:`.robot_world` — the pymunk world of Stage-style robots and its federate (``docs/robot-world.md``);

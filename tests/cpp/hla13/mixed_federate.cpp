@@ -1,4 +1,4 @@
-// The C++ half of a mixed federation (tests/test_cpp_api.py runs the Python half): joins FEDERATION
+// The C++ half of a mixed federation (tests/system/test_cpp_api.py runs the Python half): joins FEDERATION
 // (made from tests/data/robot.fed) as NAME, exchanges a receive-order update and interaction with the
 // Python federate, and a camera-size update (1 MiB) each way, then, from synchronization point "timed", runs
 // STEPS steps of a TSO lockstep with it

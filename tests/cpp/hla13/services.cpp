@@ -1,6 +1,6 @@
 // Every HLA 1.3 service of RTI::RTIambassador called once from C++, through a gateway ($HLACORE_RTIG):
-// the scenario of tests/test_hla13_services.py, written against RTI.hh. Exits 0 and prints the number of
-// services called when all behaved; tests/test_cpp_api.py runs it.
+// the scenario of tests/rti/test_hla13_services.py, written against RTI.hh. Exits 0 and prints the number of
+// services called when all behaved; tests/system/test_cpp_api.py runs it.
 #include <cstring>
 #include <iostream>
 #include <memory>

@@ -222,7 +222,7 @@ function receive(message) {
 
 function show(view, fresh) {
   latest = view;
-  window.hlacoreViews = (window.hlacoreViews || 0) + 1;  // views drawn: what tests/test_monitor.py counts
+  window.hlacoreViews = (window.hlacoreViews || 0) + 1;  // views drawn: what tests/system/test_monitor.py counts
   if (fresh) record(view);
   drawGateway(view);
   drawFederations(view);

@@ -1,6 +1,6 @@
 // A federate in the style of CERTI's HLA 1.3 examples (test/Billard): C++98 with exception specifications
 // on the callbacks, RTI_USES_STD_FSTREAM, NullFederateAmbassador, RTIfedTime, tick(min, max). It is kept
-// as such: tests/test_cpp_api.py builds it unchanged against hlacore (g++ -std=gnu++14
+// as such: tests/system/test_cpp_api.py builds it unchanged against hlacore (g++ -std=gnu++14
 // -DRTI_USES_STD_FSTREAM and the flags of python -m hlacore.config) and runs two of them.
 //
 // usage: billiard NAME STEPS FED_FILE [--creator]

@@ -1,0 +1,185 @@
+"""The ROS 1 bridge against a real roscore (started here on a free port, ended by pid), in separate
+processes: the world federate runs in this process, the bridge (``python -m hlacore.federates.ros_bridge``)
+and a plain rospy node (tests/peers/ros_teleop.py) in their own. The node's Twist moves the world robot
+through the federation; its Odometry, LaserScan and Range come back on ROS carrying the federation
+timestamps and exactly the values the world had at those times.
+
+The tests run whenever ROS is installed (scripts/install-ros.sh, called by scripts/test.sh, installs it);
+without ROS they skip, except under CI=true where missing ROS is a failure. This process never imports
+rospy: the ROS side lives in the subprocesses."""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import pathlib
+import subprocess
+import sys
+import threading
+import time
+import xmlrpc.client
+import xmlrpc.server
+from typing import Iterator
+
+import pytest
+
+import hlacore.rti as rti
+from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, load_world
+from hlacore.federates.robot_world.federate import Pose
+from hlacore.federates.ros_bridge.master import free_master_port, master_online
+
+from support.ros import DIST, WORLD, f32, running, start_bridge, start_teleop
+
+DT, PERIOD = 0.01, 0.1
+MAX_CYCLES = 4000  # bounds each run: 400 s of federation time
+
+
+@contextlib.contextmanager
+def world_federate(address: str, tmp_path: pathlib.Path) -> Iterator[tuple[WorldFederate, pathlib.Path]]:
+    creator = rti.RTIAmbassador(address)
+    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
+    world_file = tmp_path / "rover.world"
+    world_file.write_text(WORLD)
+    fed = WorldFederate.join(World(load_world(WORLD), dt=DT, watchdog=None), address, period=PERIOD,
+                             lookahead=PERIOD)
+    try:
+        yield fed, world_file
+    finally:
+        fed.resign()
+        creator.destroyFederationExecution(FEDERATION)
+
+
+def state(fed: WorldFederate) -> tuple[Pose, tuple[float, ...], list[float]]:
+    r = fed.world.robot("rover")
+    return r.pose, (r.odometry.x, r.odometry.y, r.odometry.theta, r.linear, r.angular), list(r.ranges)
+
+
+def test_timed_bridge_round_trip(roscore: dict[str, str], gateway_address: str, tmp_path: pathlib.Path) -> None:
+    """Twist from a ROS node → cmd_vel → the world moves the robot → Odometry, LaserScan, Range and /clock
+    on ROS, stamped with federation time, equal to the world's state at the grant they were taken."""
+    with world_federate(gateway_address, tmp_path) as (world, world_file):
+        states = {0: state(world)}
+        with running(start_bridge(roscore, gateway_address, "--world", str(world_file), "--clock", "--rate",
+                                  "20")) as bridge:
+            bridge.out.wait_for("ros_bridge ready", 60)
+            with running(start_teleop(roscore, "/rover", "0.5", "0.2", "60", "--clock")) as teleop:
+                for _ in range(MAX_CYCLES):
+                    granted = world.advance(timeout=30)
+                    states[round(granted / PERIOD)] = state(world)
+                    if teleop.proc.poll() is not None:
+                        break
+                seen = teleop.report(30)
+        assert bridge.status == 0, bridge.lines
+        assert any(line.startswith("ros_bridge stopped at") for line in bridge.lines), bridge.lines
+
+    # the Twist reached the world: the robot drove at the commanded speed
+    assert any(odom[3] == 0.5 for _pose, odom, _ranges in states.values())
+    # Odometry: stamped G + L with the world's odometry at G (float64: exact)
+    odom = seen["odom"]
+    k = round(odom["stamp"] / PERIOD) - 1
+    assert odom["stamp"] == pytest.approx((k + 1) * PERIOD, abs=1e-6)
+    _pose, o, _ranges = states[k]
+    assert (odom["x"], odom["y"], odom["v"]) == (o[0], o[1], o[3])
+    assert odom["x"] > 0.2 and odom["frame"] == "rover/odom" and odom["child"] == "base_footprint"
+    # LaserScan and Range: the world's beams at G (float32 on the wire), the sonar's 40° fan
+    scan = seen["scan"]
+    k = round(scan["stamp"] / PERIOD) - 1
+    assert scan["ranges"] == [f32(r) for r in states[k][2]]
+    assert scan["angle_min"] == pytest.approx(-0.349066, abs=1e-5) and scan["range_max"] == pytest.approx(4.0)
+    rng = seen["range"]
+    k = round(rng["stamp"] / PERIOD) - 1
+    assert rng["range"] == f32(min(states[k][2])) and rng["radiation_type"] == 0
+    # /clock follows the grants; /use_sim_time is set
+    assert seen["clock"] >= odom["stamp"] - PERIOD and seen["use_sim_time"] is True
+
+
+def test_untimed_bridge_round_trip(roscore: dict[str, str], inprocess_gateway: object,
+                                   tmp_path: pathlib.Path) -> None:
+    """Untimed (neither regulating nor constrained): the Twist goes in receive order from rospy's thread,
+    the reflections come back as they arrive; the node's Odometry and LaserScan are states the world had."""
+    address = str(inprocess_gateway.address)  # type: ignore[attr-defined]
+    with world_federate(address, tmp_path) as (world, world_file):
+        states = [state(world)]
+        with running(start_bridge(roscore, address, "--world", str(world_file), "--untimed")) as bridge:
+            bridge.out.wait_for("ros_bridge ready", 60)
+            with running(start_teleop(roscore, "/rover", "0.5", "0.2", "60")) as teleop:
+                for _ in range(MAX_CYCLES):
+                    world.advance(timeout=30)  # the world alone regulates: the test paces it
+                    states.append(state(world))
+                    if teleop.proc.poll() is not None:
+                        break
+                    time.sleep(0.005)
+                seen = teleop.report(30)
+        assert bridge.status == 0, bridge.lines
+    odometries = {(o[0], o[1]) for _pose, o, _ranges in states}
+    assert (seen["odom"]["x"], seen["odom"]["y"]) in odometries and seen["odom"]["x"] > 0.2
+    assert seen["scan"]["ranges"] in [[f32(r) for r in ranges] for _pose, _o, ranges in states]
+    assert any(o[3] == 0.5 for _pose, o, _ranges in states)
+
+
+def test_import_without_ros_names_the_packages(tmp_path: pathlib.Path) -> None:
+    """With no rospy to be found, importing the bridge is an ImportError that says what to install."""
+    env = dict(os.environ, HLACORE_ROS_DIST_PACKAGES=str(tmp_path))
+    done = subprocess.run([sys.executable, "-c", "import hlacore.federates.ros_bridge"], capture_output=True,
+                          text=True, env=env, timeout=60, stdin=subprocess.DEVNULL)
+    assert done.returncode == 1
+    assert "ImportError: the ROS bridge needs ROS 1" in done.stderr, done.stderr
+    assert "apt-get install -y --no-install-recommends ros-core python3-rospy" in done.stderr
+
+
+def test_a_roscore_port_is_one_no_ros_process_can_be_handed_and_another_server_is_no_master() -> None:
+    """roscore's port lies below the ephemeral range (roslaunch and rosout bind port 0; a CI run once had
+    roslaunch's own server answer on the port picked for the master), and an XML-RPC server that is not a
+    ROS master is not taken for one."""
+    low = int(pathlib.Path("/proc/sys/net/ipv4/ip_local_port_range").read_text().split()[0])
+    assert all(1024 <= free_master_port() < low for _ in range(20))
+    server = xmlrpc.server.SimpleXMLRPCServer(("127.0.0.1", 0), logRequests=False)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        assert master_online(f"http://127.0.0.1:{server.server_address[1]}") is False
+    finally:
+        server.shutdown()
+        server.server_close()
+        thread.join(10)
+
+
+CHECK_FINDER = """
+import importlib.util, json, sys
+import hlacore.federates.ros_bridge as bridge
+import rospy, std_msgs.msg
+print(json.dumps({"rospy": rospy.__file__, "std_msgs": std_msgs.msg.__file__,
+                  "dist_on_path": any(p.rstrip("/") == sys.argv[1].rstrip("/") for p in sys.path),
+                  "paramiko": importlib.util.find_spec("paramiko") is not None}))
+"""
+
+
+def test_only_ros_modules_come_from_dist_packages(ros: None) -> None:
+    """rospy and the messages load from Debian's dist-packages without putting it on sys.path: another
+    Debian package in the same directory (paramiko, a dependency of ROS's) stays invisible."""
+    assert os.path.isdir(os.path.join(DIST, "paramiko"))
+    done = subprocess.run([sys.executable, "-c", CHECK_FINDER, DIST], capture_output=True, text=True,
+                          timeout=60, stdin=subprocess.DEVNULL)
+    assert done.returncode == 0, done.stderr
+    seen = json.loads(done.stdout)
+    assert seen["rospy"].startswith(DIST) and seen["std_msgs"].startswith(DIST)
+    assert seen["dist_on_path"] is False and seen["paramiko"] is False
+
+
+def test_paper1_through_ros(roscore: dict[str, str], gateway_address: str, tmp_path: pathlib.Path) -> None:
+    """Paper 1 through ROS, one command: the world federate and the bridge in one process, the controllers
+    as a ROS node in another; the avatar never collides, passes once the obstacles have gone, stops
+    before the wall (the checks of hlacore.experiments.paper1.checks.check)."""
+    out = tmp_path / "out"
+    done = subprocess.run([sys.executable, "-m", "hlacore.experiments.paper1.ros", str(out), "--rtig",
+                           gateway_address], capture_output=True, text=True, env=roscore, timeout=300,
+                          stdin=subprocess.DEVNULL)
+    assert done.returncode == 0, done.stdout + done.stderr
+    summary = json.loads(done.stdout.strip().splitlines()[-1])
+    assert summary["checks"] == {"no_stall": True, "no_overlap": True, "obstacles_crossed": True,
+                                 "held_back": True, "stopped_before_wall": True}
+    assert summary["grants"] == 301 and summary["end"] == pytest.approx(30.0)
+    assert 0.0 < summary["wall_gap"] <= 0.5 and summary["sent"] > 4 * 250
+    assert (out / "paper1-ros-trace.csv").read_text().count("\n") == 302
+    assert (out / "paper1-ros-snapshot.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -1,0 +1,154 @@
+"""ROS 1 for the tests: whether it is installed, a real roscore on a free port, the bridge and tests/peers'
+ROS nodes started as processes and stopped by pid, and the rover world they drive."""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import pathlib
+import queue
+import signal
+import struct
+import subprocess
+import sys
+import threading
+import time
+import xmlrpc.client
+from typing import Any, Iterator, Optional, Sequence
+
+import pytest
+
+from hlacore.federates.ros_bridge.children import stop_process
+from hlacore.federates.ros_bridge.master import free_master_port
+
+from support import PEERS, ROVER_MODEL
+
+DIST = os.environ.get("HLACORE_ROS_DIST_PACKAGES", "/usr/lib/python3/dist-packages")
+WORLD = ROVER_MODEL + """
+bot( pose [ 0 0 0 0 ] name "rover" )
+model( pose [ 3 0 0 0 ] size [ 0.2 3 0.5 ] )
+"""
+
+
+def ros_installed() -> bool:
+    return os.path.exists("/usr/bin/roscore") and os.path.isdir(os.path.join(DIST, "rospy"))
+
+
+def require_ros() -> None:
+    """Skip without ROS, except under CI where scripts/test.sh must have installed it."""
+    if not ros_installed():
+        message = "ROS 1 is not installed (./scripts/install-ros.sh installs it from Debian)"
+        if os.environ.get("CI"):
+            pytest.fail(message + "; CI=true requires it")
+        pytest.skip(message)
+
+
+class Lines:
+    """A subprocess's stdout read line by line on a thread, for bounded waits."""
+
+    def __init__(self, proc: subprocess.Popen[str]) -> None:
+        self.proc = proc
+        self.lines: "queue.Queue[str]" = queue.Queue()
+        self.seen: list[str] = []
+        assert proc.stdout is not None
+        stdout = proc.stdout
+        self._thread = threading.Thread(target=lambda: [self.lines.put(line) for line in stdout], daemon=True)
+        self._thread.start()
+
+    def wait_for(self, prefix: str, timeout: float) -> str:
+        deadline = time.monotonic() + timeout
+        while True:
+            try:
+                line = self.lines.get(timeout=max(0.0, min(0.1, deadline - time.monotonic())))
+            except queue.Empty:
+                if time.monotonic() > deadline or self.proc.poll() is not None and self.lines.empty():
+                    raise AssertionError(f"no {prefix!r} line (exit {self.proc.poll()}); saw {self.seen}")
+                continue
+            self.seen.append(line)
+            if line.startswith(prefix):
+                return line
+
+    def rest(self, timeout: float = 5.0) -> list[str]:
+        """Once the process has ended: every line not read yet appended to those seen; closes the pipe."""
+        self._thread.join(timeout)
+        while not self.lines.empty():
+            self.seen.append(self.lines.get())
+        if not self._thread.is_alive() and self.proc.stdout is not None:
+            self.proc.stdout.close()
+        return self.seen
+
+
+@contextlib.contextmanager
+def running_roscore(home: pathlib.Path, ip: str = "127.0.0.1", prefix: Sequence[str] = (),
+                    reach: str = "127.0.0.1") -> Iterator[dict[str, str]]:
+    """A real roscore on a free port, its ROS_HOME (and log) in `home`, stopped by pid at the end; yields
+    the environment for ROS processes. On another host: `prefix` runs it there, `ip` is its address there
+    (the master's URI), `reach` where this process reaches it to see it up."""
+    home.mkdir(parents=True, exist_ok=True)
+    port = free_master_port()
+    env = dict(os.environ, ROS_MASTER_URI=f"http://{ip}:{port}", ROS_IP=ip, ROS_HOME=str(home),
+               ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
+    env.pop("ROS_HOSTNAME", None)
+    with open(home / "roscore.log", "wb") as log:
+        proc = subprocess.Popen([*prefix, "roscore", "-p", str(port)], stdout=log, stderr=subprocess.STDOUT,
+                                stdin=subprocess.DEVNULL, env=env)
+        try:
+            deadline = time.monotonic() + 30
+            while True:
+                try:
+                    with xmlrpc.client.ServerProxy(f"http://{reach}:{port}") as master:
+                        master.getPid("/hlacore_test")
+                    break
+                except OSError:
+                    if proc.poll() is not None or time.monotonic() > deadline:
+                        raise AssertionError("roscore did not start: "
+                                             + (home / "roscore.log").read_text(errors="replace"))
+                    time.sleep(0.1)
+            yield env
+        finally:
+            stop_process(proc, signal.SIGINT)
+
+
+def start_bridge(env: dict[str, str], address: str, *args: str) -> subprocess.Popen[str]:
+    return subprocess.Popen([sys.executable, "-m", "hlacore.federates.ros_bridge", "--rtig", address, *args],
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                            text=True, env=env)
+
+
+def start_teleop(env: dict[str, str], *args: str) -> subprocess.Popen[str]:
+    return subprocess.Popen([sys.executable, str(PEERS / "ros_teleop.py"), *args], stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True, env=env)
+
+
+class Running:
+    """A started process and its output (Lines); once `running` has stopped it, its exit status and every
+    line it printed."""
+
+    def __init__(self, proc: subprocess.Popen[str]) -> None:
+        self.proc, self.out = proc, Lines(proc)
+        self.status: Optional[int] = None
+        self.lines: list[str] = []
+
+    def report(self, timeout: float) -> Any:
+        """For a node that ends by itself (tests/peers/ros_teleop.py): it exits 0 within `timeout` s; the JSON
+        line it printed last."""
+        assert self.proc.wait(timeout) == 0, self.out.rest()
+        return json.loads(self.out.wait_for("{", 5))
+
+
+@contextlib.contextmanager
+def running(proc: subprocess.Popen[str]) -> Iterator[Running]:
+    """`proc` (one of the start_* above) for the block; at the end, even on failure, it is stopped by pid
+    (stop_process; a process that has exited is only reaped) and the rest of its output is read."""
+    run = Running(proc)
+    try:
+        yield run
+    finally:
+        run.status = stop_process(proc)
+        run.lines = run.out.rest()
+
+
+def f32(x: float) -> float:
+    """x rounded to a float32, as a ROS message carries it."""
+    return float(struct.unpack("f", struct.pack("f", x))[0])

@@ -214,8 +214,9 @@ private:
     bool large_buffers_kept_ = false;  // since then, buffers above it may be kept for the next one
     std::unique_ptr<MessageTrace> trace_;
     std::unique_ptr<Recorder> recorder_;
-    // While an update or interaction of at least wire::kSplicedValueBytes is served from its frame: the frame and
-    // the read block it lies in, which its large values are written to the receivers from (server/outbox.hpp).
+    // While a frame of at least wire::kSplicedValueBytes is served (on_frame): the frame and the read block it
+    // lies in, which a forwarded update's or interaction's large values are written to the receivers from
+    // (ConnectionOutbox::spliced).
     struct SpliceSource {
         std::shared_ptr<const char[]> block;
         std::string_view frame;

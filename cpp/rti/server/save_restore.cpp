@@ -31,7 +31,9 @@ namespace hlacore {
 
 using wire::WireError;
 
-namespace {
+// The save file's format and records: a named namespace, not an anonymous one, since Federation::Snapshot
+// (declared in federation.hpp) holds them.
+namespace save_file {
 
 constexpr char kFileMagic[8] = {'H', 'L', 'A', 'C', 'S', 'A', 'V', 'E'};
 // Version 2 added data distribution management; version 1 files (no regions) are refused, since
@@ -172,7 +174,9 @@ void check_delivery_values(const Pairs_& values, const std::string& whose) {
 }
 
 
-}  // namespace
+}  // namespace save_file
+
+using namespace save_file;
 
 struct Federation::Snapshot {
     std::string label;

@@ -1,7 +1,7 @@
 // The gateway's path of a request: what a connection reads is cut into frames, each decoded and dispatched
-// once (on_request) onto the serve() overload of its type, past the taps. The reactor around it is reactor.cpp, the stream
-// I/O transport.cpp, the handshake session.cpp, flow control flow_control.cpp, and the federation
-// management it serves itself federations.cpp.
+// once (on_request) onto the serve() overload of its type, past the taps. Around it: the reactor (reactor.cpp),
+// the stream I/O (transport.cpp), the handshake (session.cpp), flow control (flow_control.cpp) and the
+// federation management the gateway serves itself (federations.cpp).
 #include "rti/server/gateway.hpp"
 #include "rti/server/gateway_internal.hpp"
 

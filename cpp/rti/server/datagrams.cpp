@@ -110,16 +110,21 @@ void Gateway::on_datagram(std::string_view datagram, const sockaddr_storage& fro
         ++stray_datagrams_;
         return;
     }
-    if (frame.type == wire::MessageType::UpdateAttributes) {
-        if (wire::UpdateAttributesView m; !decodes(frame, m)) return;
-    } else if (frame.type == wire::MessageType::SendInteraction) {
-        if (wire::SendInteractionView m; !decodes(frame, m)) return;
-    } else {
-        if (wire::Message m; decodes(frame, m))
-            close(c.fd, std::string("protocol error: ") + wire::message_name(frame.type) + " in a datagram");
-        return;
-    }
-    if (!c.datagram_window.accept(read->header.sequence, c.datagrams)) return;
+    if (frame.type == wire::MessageType::UpdateAttributes)
+        return serve_best_effort<wire::UpdateAttributesView>(c, read->header.sequence, frame);
+    if (frame.type == wire::MessageType::SendInteraction)
+        return serve_best_effort<wire::SendInteractionView>(c, read->header.sequence, frame);
+    if (wire::Message m; decodes(frame, m))
+        close(c.fd, std::string("protocol error: ") + wire::message_name(frame.type) + " in a datagram");
+}
+
+// An update or interaction that came as a datagram, decoded once (as a view into the datagram) and served
+// unless it is stray, late or duplicated, or its sender is held back by flow control.
+template <class View>
+void Gateway::serve_best_effort(Connection& c, std::uint64_t sequence, const wire::Frame& frame) {
+    View m;
+    if (!decodes(frame, m)) return;
+    if (!c.datagram_window.accept(sequence, c.datagrams)) return;
     if (c.paused) {  // held back by flow control: what it sends as best effort is dropped, not queued
         ++c.datagrams.held_back;
         return;
@@ -128,7 +133,7 @@ void Gateway::on_datagram(std::string_view datagram, const sockaddr_storage& fro
     try {
         over_budget_ = -1;
         if (trace_) c.read_ns = MessageTrace::now_ns();
-        on_request(c, frame);
+        serve_message(c, m);
     } catch (const wire::WireError& e) {
         close(fd, std::string("protocol error: ") + e.what());
         return;

@@ -117,9 +117,9 @@ struct Served<wire::SendInteraction> {
 };
 }  // namespace
 
-// The one dispatcher of the gateway process, for the stream and the datagrams alike: a switch over the frame's
-// type decodes the message in the form it is served in, shows it to the taps and hands it to the overload of
-// serve() for its type. Requests with a result are served by the gateway; everything else a joined federate
+// The one dispatcher of the gateway process: a switch over the frame's type decodes the message in the form it
+// is served in and serves it (serve_message). The datagrams, only updates and interactions, decode theirs as
+// they check them (datagrams.cpp) and go straight to serve_message. Requests with a result are served by the gateway; everything else a joined federate
 // sends goes to its federation.
 void Gateway::on_request(Connection& c, const wire::Frame& frame) {
     switch (frame.type) {
@@ -134,7 +134,12 @@ void Gateway::on_request(Connection& c, const wire::Frame& frame) {
 
 template <class M>
 void Gateway::serve_frame(Connection& c, const wire::Frame& frame) {
-    const M m = wire::decode_as<M>(frame);
+    serve_message(c, wire::decode_as<M>(frame));
+}
+
+// Shows the message to the taps and hands it to the overload of serve() for its type.
+template <class M>
+void Gateway::serve_message(Connection& c, const M& m) {
     if ((recorder_ || trace_) && c.federation) tap(c, m);
     serve(c, m);
 }
@@ -169,5 +174,9 @@ void Gateway::serve(Connection& c, const M& m) {
         throw wire::WireError(std::string("refused ") + name_of<M>() + ": " + e.what());
     }
 }
+
+// The two the datagrams serve (datagrams.cpp).
+template void Gateway::serve_message(Connection&, const wire::UpdateAttributesView&);
+template void Gateway::serve_message(Connection&, const wire::SendInteractionView&);
 
 }  // namespace hlacore

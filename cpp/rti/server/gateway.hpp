@@ -139,6 +139,8 @@ private:
     template <class M>
     void serve_frame(Connection& c, const wire::Frame& frame);
     template <class M>
+    void serve_message(Connection& c, const M& m);  // through the taps onto serve()
+    template <class M>
     void tap(Connection& c, const M& m);
 #define HLACORE_X(name) void serve(Connection& c, const wire::name& m);
     HLACORE_GATEWAY_SERVICES(HLACORE_X)
@@ -190,6 +192,8 @@ private:
     void on_datagram(std::string_view datagram, const sockaddr_storage& from, socklen_t length);
     template <class M>
     bool decodes(const wire::Frame& frame, M& m);  // counts a datagram that does not as stray
+    template <class View>
+    void serve_best_effort(Connection& c, std::uint64_t sequence, const wire::Frame& frame);
     // Sends `frame` to c as a datagram when c takes them and it fits; false: it goes in the stream.
     bool send_datagram(Connection& c, std::string_view frame);
     void give_datagram_token(Connection& c);

@@ -249,38 +249,31 @@ void Recorder::dropped(const Federation& federation, FederateHandle federate, co
     write(federation, topic(federation, TopicKind::Federation), json_);
 }
 
-void Recorder::request(const Federation& federation, FederateHandle from, const wire::Message& message) {
+template <class M>
+void Recorder::request(const Federation& federation, FederateHandle from, const M& m) {
     if (!records(federation)) return;
-    std::visit(
-        [&](const auto& m) {
-            using M = std::decay_t<decltype(m)>;
-            if constexpr (std::is_same_v<M, wire::UpdateAttributes> || std::is_same_v<M, wire::DeleteObject>) {
-                record_object_event(federation, from, m);
-            } else if constexpr (std::is_same_v<M, wire::SendInteraction>) {
-                record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, nullptr);
-            } else if constexpr (std::is_same_v<M, wire::SendInteractionWithRegion>) {
-                record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, &m.region);
-            } else if constexpr (std::is_same_v<M, wire::RegisterObject> ||
-                                 std::is_same_v<M, wire::RegisterObjectWithRegion>) {
-                // Recorded with its outcome (answered): the object's handle and name.
-            } else if constexpr (std::is_same_v<M, wire::QueryStatus> || std::is_same_v<M, wire::Ping> ||
-                                 std::is_same_v<M, wire::ClockProbe> || std::is_same_v<M, wire::QueryTime> ||
-                                 std::is_same_v<M, wire::DatagramPath> || std::is_same_v<M, wire::StartRecording>) {
-                // Questions that change nothing in the federation.
-            } else {
-                record_message(federation, from, TopicKind::Requests, "request", message);
-            }
-        },
-        message);
+    if constexpr (std::is_same_v<M, wire::UpdateAttributesView> || std::is_same_v<M, wire::UpdateAttributes> ||
+                  std::is_same_v<M, wire::DeleteObject>) {
+        record_object_event(federation, from, m);
+    } else if constexpr (std::is_same_v<M, wire::SendInteractionView> || std::is_same_v<M, wire::SendInteraction>) {
+        record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, nullptr);
+    } else if constexpr (std::is_same_v<M, wire::SendInteractionWithRegion>) {
+        record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, &m.region);
+    } else if constexpr (std::is_same_v<M, wire::RegisterObject> || std::is_same_v<M, wire::RegisterObjectWithRegion>) {
+        // Recorded with its outcome (answered): the object's handle and name.
+    } else if constexpr (std::is_same_v<M, wire::QueryStatus> || std::is_same_v<M, wire::Ping> ||
+                         std::is_same_v<M, wire::ClockProbe> || std::is_same_v<M, wire::QueryTime> ||
+                         std::is_same_v<M, wire::DatagramPath> || std::is_same_v<M, wire::StartRecording>) {
+        // Questions that change nothing in the federation.
+    } else {
+        record_fields(federation, from, TopicKind::Requests, "request", m);
+    }
 }
-
-void Recorder::request(const Federation& federation, FederateHandle from, const wire::UpdateAttributesView& m) {
-    if (records(federation)) record_object_event(federation, from, m);
-}
-
-void Recorder::request(const Federation& federation, FederateHandle from, const wire::SendInteractionView& m) {
-    if (records(federation)) record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, nullptr);
-}
+#define HLACORE_X(name) template void Recorder::request(const Federation&, FederateHandle, const wire::name&);
+HLACORE_MESSAGES(HLACORE_X)
+#undef HLACORE_X
+template void Recorder::request(const Federation&, FederateHandle, const wire::UpdateAttributesView&);
+template void Recorder::request(const Federation&, FederateHandle, const wire::SendInteractionView&);
 
 void Recorder::answered(const Federation& federation, FederateHandle to, const wire::Message& answer) {
     if (!records(federation)) return;

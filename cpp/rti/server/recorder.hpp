@@ -67,16 +67,10 @@ public:
     void joined(const Federation& federation, FederateHandle federate);
     // The federate's connection ended without a resign (`why`); its resign request is recorded otherwise.
     void dropped(const Federation& federation, FederateHandle federate, const std::string& why);
-    // A request of a joined federate, before it is served.
-    void request(const Federation& federation, FederateHandle from, const wire::Message& message);
-    // The same for an update or interaction the gateway serves from its frame (Gateway::tap).
-    void request(const Federation& federation, FederateHandle from, const wire::UpdateAttributesView& m);
-    void request(const Federation& federation, FederateHandle from, const wire::SendInteractionView& m);
-    // Any other request as the gateway serves it (Gateway::tap).
+    // A request of a joined federate as the gateway serves it (Gateway::tap), before it is served: any message of
+    // HLACORE_MESSAGES, updates and interactions as views into their frame (recorder.cpp instantiates them).
     template <class M>
-    void request(const Federation& federation, FederateHandle from, const M& m) {
-        if (records(federation)) request(federation, from, wire::Message(m));
-    }
+    void request(const Federation& federation, FederateHandle from, const M& m);
     // The gateway's answer to a request: a registration's object, or a refusal.
     void answered(const Federation& federation, FederateHandle to, const wire::Message& answer);
     // A callback sent to a federate (Outbox::send: every kind but reflections and received interactions).

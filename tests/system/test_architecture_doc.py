@@ -20,7 +20,7 @@ def section(title: str) -> str:
 
 def listed_files(text: str) -> set[str]:
     """The files named at the head of each numbered item, before the dash: `cpp/...` and the short forms that
-    follow a full one in the same item (`messages.cpp` after `cpp/rti/wire/codec.hpp`)."""
+    follow a full one in the same item (`convert.hpp` after `cpp/bindings/objects.cpp`)."""
     files = set()
     for item in re.findall(r"^\d+\. (.*?) —", text, re.M):
         directory = ""

@@ -1,5 +1,5 @@
 // The bounds-checked binary codec of the wire protocol's messages (messages.hpp): frames, their encoding and
-// decoding; the runtime half (names, framing, decoding a Message) is messages.cpp.
+// decoding; the runtime half (names, framing) is messages.cpp.
 #pragma once
 
 #include <cstdint>
@@ -285,11 +285,6 @@ struct Frame {
 // are needed. Throws WireError when the header is impossible (length too short or above max_bytes).
 std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_bytes = kMaxFrameBytes);
 
-// Decodes a frame's payload. Throws WireError on an unknown type, a truncated field or trailing bytes.
-Message decode(const Frame& frame);
-// The same into `into`, where it stays: a reflection is not moved twice more on its way to the callback queue;
-// after a WireError, `into` holds what was decoded so far.
-void decode(const Frame& frame, Message& into);
 // Decodes a frame of M's type into m, or as M (a view type such as UpdateAttributesView included).
 template <class M>
 void decode_fields(const Frame& frame, M& m) {
@@ -301,6 +296,29 @@ template <class M>
 M decode_as(const Frame& frame) {
     M m;
     decode_fields(frame, m);
+    return m;
+}
+
+// Decodes a frame into the message of its type, in `into`, where it stays: a reflection is not moved twice
+// more on its way to the callback queue; after a WireError, `into` holds what was decoded so far. Throws
+// WireError on an unknown type, a truncated field or trailing bytes. A template so that only the files that
+// decode compile the switch.
+template <class Variant = Message>
+void decode(const Frame& frame, Variant& into) {
+    switch (frame.type) {
+#define HLACORE_X(name)                                      \
+    case MessageType::name:                                  \
+        decode_fields(frame, into.template emplace<name>()); \
+        return;
+        HLACORE_MESSAGES(HLACORE_X)
+#undef HLACORE_X
+        default: throw WireError("unknown message type " + std::to_string(static_cast<unsigned>(frame.type)));
+    }
+}
+template <class Variant = Message>
+Variant decode(const Frame& frame) {
+    Variant m;
+    decode(frame, m);
     return m;
 }
 }  // namespace hlacore::wire

@@ -1,5 +1,5 @@
-// The runtime half of the wire protocol (messages.hpp): message names, framing and the decoding switch, kept
-// out of the header so that the files that only encode do not compile every decoder.
+// The runtime half of the wire protocol (messages.hpp): message names and framing, which know the messages
+// only by their codes.
 #include "rti/wire/codec.hpp"
 
 namespace hlacore::wire {
@@ -35,24 +35,6 @@ std::size_t next_frame(std::string_view buffer, Frame& frame, std::uint32_t max_
     frame.type = static_cast<MessageType>(type);
     frame.payload = buffer.substr(kHeaderBytes, length - 2);
     return 4 + static_cast<std::size_t>(length);
-}
-
-void decode(const Frame& frame, Message& into) {
-    switch (frame.type) {
-#define HLACORE_X(name)                             \
-    case MessageType::name:                         \
-        decode_fields(frame, into.emplace<name>()); \
-        return;
-        HLACORE_MESSAGES(HLACORE_X)
-#undef HLACORE_X
-        default: throw WireError("unknown message type " + std::to_string(static_cast<unsigned>(frame.type)));
-    }
-}
-
-Message decode(const Frame& frame) {
-    Message m;
-    decode(frame, m);
-    return m;
 }
 
 }  // namespace hlacore::wire

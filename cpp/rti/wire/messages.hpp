@@ -1,5 +1,5 @@
 // The wire protocol: every message exchanged between a federate and the gateway, declared once in the order
-// of message_list.hpp; codec.hpp encodes and decodes them (messages.cpp: names, framing, decoding). No sockets
+// of message_list.hpp; codec.hpp encodes and decodes them (messages.cpp: names, framing). No sockets
 // here.
 //
 // A frame on the socket is: u32 length (little-endian, counts what follows), u16 message type, payload.

@@ -6,9 +6,9 @@
 #include <thread>
 
 #include "bindings/convert.hpp"
-#include "rti/auth.hpp"
 #include "rti/busy_poll.hpp"
-#include "rti/server/gateway.hpp"
+#include "rti/client/options.hpp"
+#include "rti/server/options.hpp"
 #include "rti/server/time_manager.hpp"
 #include "rti/wire/callbacks.hpp"
 
@@ -21,31 +21,17 @@ namespace {
 
 class BackgroundGateway {
 public:
-    BackgroundGateway(const std::string& host, std::uint16_t port, std::vector<std::string> fom_path, bool verbose,
-                      const std::string& save_dir, std::string trace_path, std::size_t client_budget,
-                      double stall_timeout, std::uint32_t max_frame, const std::string& secret_file,
-                      std::uint32_t max_datagram, const std::map<std::string, std::string>& federation_secret_files,
-                      const std::string& tls_cert, const std::string& tls_key, std::string record_path,
-                      std::uint32_t busy_poll_us, std::string unix_path) {
+    // The options given by keyword, as text (hlacore.Gateway makes it), checked by the gateway's table:
+    // ValueError naming the one refused.
+    explicit BackgroundGateway(const std::vector<std::pair<std::string, std::string>>& given) {
         GatewayOptions options;
-        options.unix_path = std::move(unix_path);  // RuntimeError or ValueError from the Gateway, saying why
-        options.busy_poll_us = busy_poll_us;  // ValueError from the Gateway beyond kMaxBusyPollUs
-        options.tls_cert = tls_cert;  // loaded by the Gateway: RuntimeError saying why, ValueError for one alone
-        options.tls_key = tls_key;
-        options.max_datagram = max_datagram;
-        if (!secret_file.empty()) options.secret = auth::read_secret_file(secret_file);  // RuntimeError, saying why
-        for (const auto& [federation, path] : federation_secret_files)
-            options.federation_secrets[federation] = auth::read_secret_file(path);
-        options.max_frame_bytes = max_frame;
-        options.client_budget = client_budget;
-        options.stall_timeout_s = stall_timeout;
-        options.save_dir = save_dir;
-        options.host = host;
-        options.port = port;
-        options.fom_path = std::move(fom_path);
-        options.verbose = verbose;
-        options.trace_path = std::move(trace_path);
-        options.record_path = std::move(record_path);
+        for (const auto& [keyword, text] : given) {
+            const auto* option = find_option(gateway_options(), keyword, Given::Keyword);
+            if (!option) throw std::invalid_argument("no gateway option named '" + keyword + "'");
+            apply(options, *option, Given::Keyword, text);  // RuntimeError for a secret file that cannot be used
+        }
+        if (const std::string conflict = gateway_options_conflict(options, Given::Keyword); !conflict.empty())
+            throw std::invalid_argument(conflict);
         gateway_ = std::make_unique<Gateway>(options);
         host_ = gateway_->host();
         port_ = gateway_->port();
@@ -85,32 +71,27 @@ public:
     }
 };
 
-// A secret file's content for the client; AuthenticationFailed, saying why, when it cannot be used.
-std::string client_secret(const std::string& path) {
-    if (path.empty()) return "";
-    try {
-        return auth::read_secret_file(path);
-    } catch (const std::exception& e) {
-        throw RtiError(ErrorCode::AuthenticationFailed, e.what());
-    }
+std::unique_ptr<Client> connect_client(ClientSettings settings) {
+    static PythonWaitHost wait_host;
+    settings.options.wait_host = &wait_host;
+    py::gil_scoped_release release;
+    return std::make_unique<Client>(settings.host, settings.port, settings.options);
 }
 
-std::unique_ptr<Client> connect_client(const std::string& host, std::uint16_t port, double timeout,
-                                       const std::string& secret_file, bool datagrams,
-                                       const std::string& federation_secret_file, bool tls, const std::string& tls_ca,
-                                       std::uint32_t busy_poll_us) {
-    static PythonWaitHost wait_host;
-    ClientOptions options;
-    options.timeout_s = timeout;
-    options.wait_host = &wait_host;
-    options.datagrams = datagrams;
-    options.secret = client_secret(secret_file);
-    options.federation_secret = client_secret(federation_secret_file);
-    options.tls = tls;
-    options.tls_ca = tls_ca;
-    options.busy_poll_us = busy_poll_us;
-    py::gil_scoped_release release;
-    return std::make_unique<Client>(host, port, options);
+// A table's rows as Python sees them: (keyword, flag or variable, placeholder or None for a switch, repeated,
+// the default as text, help).
+template <class Settings>
+py::list option_rows(const Options<Settings>& table) {
+    py::list rows;
+    const Settings defaults{};
+    for (const auto& o : table) {
+        if (!o.keyword) continue;
+        const char* spelled = o.flag ? o.flag : o.variable;
+        rows.append(py::make_tuple(o.keyword, spelled ? py::object(py::str(spelled)) : py::object(py::none()),
+                                   o.metavar ? py::object(py::str(o.metavar)) : py::object(py::none()), o.repeated,
+                                   o.shown ? o.shown(defaults) : std::string(), o.help));
+    }
+    return rows;
 }
 
 }  // namespace
@@ -145,19 +126,21 @@ PYBIND11_MODULE(_core, m) {
     m.attr("MAX_BUSY_POLL_US") = hlacore::kMaxBusyPollUs;
     m.attr("MAX_FRAME_RANGE") = py::make_tuple(hlacore::kMinMaxFrame, hlacore::kMaxMaxFrame);
     m.attr("MAX_DATAGRAM_RANGE") = py::make_tuple(hlacore::kMinMaxDatagram, hlacore::wire::kMaxDatagramLimit);
+    m.def("gateway_options", [] { return option_rows(hlacore::gateway_options()); },
+          "The gateway's options (server/options.cpp): (keyword, rtig flag, placeholder or None for a switch, repeated, "
+          "default as text, help) each.");
+    m.def("client_options", [] { return option_rows(hlacore::client_options()); },
+          "The client's options (client/options.cpp): (keyword, environment variable, placeholder, repeated, default "
+          "as text, help) each.");
+    py::class_<hlacore::ClientSettings>(m, "ClientSettings", "Where and how a client connects (client_settings()).")
+        .def_readonly("host", &hlacore::ClientSettings::host, "The gateway's host, or unix:PATH.")
+        .def_readonly("port", &hlacore::ClientSettings::port, "The gateway's port, 0 for a Unix socket.");
+    m.def("client_settings", &hlacore::client_settings, py::arg("given"),
+          "The client's settings from the options given (keyword: text), else the environment, else the defaults; "
+          "RTIinternalError naming a value refused.");
     py::class_<BackgroundGateway>(m, "BackgroundGateway",
                                   "The gateway serving on a thread of this process; hlacore.Gateway is its Python face.")
-        .def(py::init<const std::string&, std::uint16_t, std::vector<std::string>, bool, const std::string&,
-                      std::string, std::size_t, double, std::uint32_t, const std::string&, std::uint32_t,
-                      const std::map<std::string, std::string>&, const std::string&, const std::string&,
-                      std::string, std::uint32_t, std::string>(),
-             py::arg("host"), py::arg("port"), py::arg("fom_path"), py::arg("verbose"), py::arg("save_dir") = "",
-             py::arg("trace_path") = "", py::arg("client_budget") = hlacore::GatewayOptions{}.client_budget,
-             py::arg("stall_timeout") = hlacore::GatewayOptions{}.stall_timeout_s,
-             py::arg("max_frame") = hlacore::GatewayOptions{}.max_frame_bytes, py::arg("secret_file") = "",
-             py::arg("max_datagram") = hlacore::GatewayOptions{}.max_datagram,
-             py::arg("federation_secret_files") = std::map<std::string, std::string>{}, py::arg("tls_cert") = "",
-             py::arg("tls_key") = "", py::arg("record_path") = "", py::arg("busy_poll_us") = 0, py::arg("unix_path") = "",
+        .def(py::init<const std::vector<std::pair<std::string, std::string>>&>(), py::arg("given"),
              py::call_guard<py::gil_scoped_release>())
         .def("stop", &BackgroundGateway::stop, py::call_guard<py::gil_scoped_release>(),
              "Stops serving and waits for the gateway's thread to end.")
@@ -169,9 +152,7 @@ PYBIND11_MODULE(_core, m) {
                     "The federate's side of the connection to a gateway: the HLA 1.3 services under their PyHLA names; "
                     "hlacore.rti.RTIAmbassador builds on it.");
     rtia
-        .def(py::init(&connect_client), py::arg("host"), py::arg("port"), py::arg("timeout") = hlacore::ClientOptions{}.timeout_s,
-             py::arg("secret_file") = "", py::arg("datagrams") = true, py::arg("federation_secret_file") = "",
-             py::arg("tls") = false, py::arg("tls_ca") = "", py::arg("busy_poll_us") = 0)
+        .def(py::init(&connect_client), py::arg("settings"))
         .def_property_readonly("address", &Client::address, "The gateway's \"host:port\" this ambassador is connected to.")
         .def("fileno", &Client::fileno,
              "The connection's socket, for select() or an event loop's add_reader (hlacore.aio): readable when the "

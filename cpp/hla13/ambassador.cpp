@@ -1,18 +1,13 @@
 // RTIambassador: connecting, federation management (§4: create, join, resign, synchronization points,
 // save and restore), declaration management (§5), the support services (§10) and tick. The other groups
 // are in objects.cpp, time.cpp and regions.cpp; the callbacks in callbacks.cpp.
-#include <cctype>
 #include <chrono>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "ambassador.hpp"
 #include "fed_parser/fom.hpp"
-#include "rti/auth.hpp"
-#include "rti/busy_poll.hpp"
-#include "rti/unix_socket.hpp"
 
 using namespace hlacore;
 using hlacore::hla13::guarded;
@@ -20,75 +15,6 @@ using hlacore::hla13::h32;
 using hlacore::hla13::text;
 
 namespace {
-
-const char* env(const char* name) {
-    const char* value = std::getenv(name);
-    return value && *value ? value : nullptr;
-}
-
-// The gateway's address and the client's options from the environment, as hlacore.rti.RTIAmbassador reads
-// them: $HLACORE_RTIG (else CERTI's $CERTI_HOST and $CERTI_TCP_PORT, else 127.0.0.1:60400),
-// $HLACORE_TIMEOUT, $HLACORE_SECRET_FILE, $HLACORE_FEDERATION_SECRET_FILE, $HLACORE_DATAGRAMS, $HLACORE_TLS,
-// $HLACORE_BUSY_POLL_US.
-struct Connection {
-    std::string host = "127.0.0.1";
-    std::uint16_t port = 60400;
-    ClientOptions options;
-};
-
-std::uint16_t port_number(const std::string& text, const char* what) {
-    char* end = nullptr;
-    const unsigned long port = std::strtoul(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || port > 65535)
-        throw RTI::RTIinternalError((std::string(what) + "=" + text + " is not a port number").c_str());
-    return static_cast<std::uint16_t>(port);
-}
-
-Connection connection_from_environment() {
-    Connection c;
-    if (const char* address = env("HLACORE_RTIG"); address && unix_socket::is_unix(address)) {
-        c.host = address;  // unix:PATH, a gateway on this host (rtig --unix PATH)
-        c.port = 0;
-    } else if (address) {
-        const std::string a = address;
-        const auto colon = a.rfind(':');
-        if (colon == std::string::npos)
-            throw RTI::RTIinternalError(("HLACORE_RTIG=" + a + " is not HOST:PORT").c_str());
-        std::string host = a.substr(0, colon);
-        if (host.size() >= 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
-        if (!host.empty()) c.host = host;
-        c.port = port_number(a.substr(colon + 1), "HLACORE_RTIG's port");
-    } else {
-        if (const char* host = env("CERTI_HOST")) c.host = host;
-        if (const char* port = env("CERTI_TCP_PORT")) c.port = port_number(port, "CERTI_TCP_PORT");
-    }
-    if (const char* timeout = env("HLACORE_TIMEOUT")) {
-        char* end = nullptr;
-        c.options.timeout_s = std::strtod(timeout, &end);
-        if (*end != '\0' || !(c.options.timeout_s > 0))
-            throw RTI::RTIinternalError((std::string("HLACORE_TIMEOUT=") + timeout + " is not a number of seconds").c_str());
-    }
-    if (const char* file = env("HLACORE_SECRET_FILE")) c.options.secret = auth::read_secret_file(file);
-    if (const char* file = env("HLACORE_FEDERATION_SECRET_FILE")) c.options.federation_secret = auth::read_secret_file(file);
-    if (const char* datagrams = env("HLACORE_DATAGRAMS")) {
-        if (std::strcmp(datagrams, "0") != 0 && std::strcmp(datagrams, "1") != 0)
-            throw RTI::RTIinternalError((std::string("HLACORE_DATAGRAMS=") + datagrams + " must be 0 or 1").c_str());
-        c.options.datagrams = std::strcmp(datagrams, "1") == 0;
-    }
-    if (const char* spin = env("HLACORE_BUSY_POLL_US")) {
-        char* end = nullptr;
-        const unsigned long us = std::strtoul(spin, &end, 10);
-        if (*end != '\0' || !std::isdigit(static_cast<unsigned char>(*spin)) || us > kMaxBusyPollUs)
-            throw RTI::RTIinternalError((std::string("HLACORE_BUSY_POLL_US=") + spin + " is not a whole number of µs between 0 and " +
-                                         std::to_string(kMaxBusyPollUs)).c_str());
-        c.options.busy_poll_us = static_cast<std::uint32_t>(us);
-    }
-    if (const char* tls = env("HLACORE_TLS"); tls && std::strcmp(tls, "0") != 0) {
-        c.options.tls = true;
-        if (std::strcmp(tls, "1") != 0) c.options.tls_ca = tls;
-    }
-    return c;
-}
 
 // A new[]'d copy of a name, as the support services return it.
 char* name_copy(const std::string& name) {
@@ -101,7 +27,8 @@ char* name_copy(const std::string& name) {
 
 RTI::RTIambassador::RTIambassador() : privateData(nullptr), privateRefs(nullptr) {
     guarded([&] {
-        Connection c = connection_from_environment();
+        // The environment hlacore.rti.RTIAmbassador reads too (client/options.hpp).
+        ClientSettings c = client_settings({});
         privateRefs = new RTIambPrivateRefs(std::move(c.options), c.host, c.port);
     });
 }

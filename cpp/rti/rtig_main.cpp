@@ -6,10 +6,8 @@
 #include <exception>
 #include <string>
 
-#include "rti/auth.hpp"
-#include "rti/busy_poll.hpp"
 #include "rti/net/status_query.hpp"
-#include "rti/server/gateway.hpp"
+#include "rti/server/options.hpp"
 
 namespace {
 
@@ -19,61 +17,51 @@ void on_signal(int) {
     if (g_gateway) g_gateway->stop();
 }
 
+// rtig's own options, beside the gateway's: the policy beyond loopback and how --status connects.
+struct Command {
+    bool no_secret = false;
+    // --status over TLS: --tls, --tls-ca FILE, else $HLACORE_TLS as the clients read it (1: the system's CA
+    // store, a path: that CA file, unset, empty or 0: no TLS).
+    bool status_tls = false;
+    std::string status_tls_ca;
+};
+
+const hlacore::Options<Command>& command_options() {
+    using Text = const std::string&;
+    static const hlacore::Options<Command> table = {
+        {"--no-secret", nullptr, nullptr, nullptr, false, [](Command& c, Text) { c.no_secret = true; }, nullptr,
+         "listen beyond loopback without a secret: anyone who reaches the port may read, join, and destroy "
+         "federations"},
+        {"--tls", nullptr, nullptr, nullptr, false,
+         [](Command& c, Text) {
+             c.status_tls = true;
+             c.status_tls_ca.clear();
+         },
+         nullptr, "with --status: TLS, the gateway's certificate verified against the system's CA store (also $HLACORE_TLS=1)"},
+        {"--tls-ca", nullptr, nullptr, "FILE", false,
+         [](Command& c, Text t) {
+             c.status_tls = true;
+             c.status_tls_ca = hlacore::not_empty(t, "a file");
+         },
+         nullptr,
+         "with --status: TLS, trusting the CA or self-signed certificate in FILE (also $HLACORE_TLS=FILE)"},
+    };
+    return table;
+}
+
 int usage(int status) {
-    std::fprintf(status ? stderr : stdout,
-                 "usage: rtig [--host HOST] [--port PORT] [--unix PATH] [--fom-path DIR]... [--frame-timeout S]\n"
-                 "            [--client-budget B] [--stall-timeout S] [--max-frame B] [--max-datagram B]\n"
-                 "            [--secret-file FILE | --no-secret] [--federation-secret NAME=FILE]...\n"
-                 "            [--tls-cert FILE --tls-key FILE] [--save-dir DIR] [--trace FILE] [--record FILE]\n"
-                 "            [--busy-poll US] [--verbose]\n"
-                 "       rtig [--secret-file FILE] [--tls | --tls-ca FILE] --status [HOST:PORT]\n"
-                 "  --host HOST        address to listen on (default 127.0.0.1)\n"
-                 "  --port PORT        TCP port, 0 picks a free one (default 60400)\n"
-                 "  --unix PATH        also listen on a Unix socket at PATH, for federates on this host (address\n"
-                 "                     unix:PATH): less CPU per message than TCP, no datagrams, no TLS; the file\n"
-                 "                     is its owner's only and is removed when rtig ends (docs/networking.md)\n"
-                 "  --fom-path DIR     where to look for FED files a federate could not read itself\n"
-                 "  --frame-timeout S  drop a client whose frame stays incomplete S seconds (default 10)\n"
-                 "  --client-budget B  bytes held for one client (its output queue, the messages time management\n"
-                 "                     keeps for it) above which the clients sending to it are no longer read\n"
-                 "                     until it takes half of them (default 67108864, at least 65536)\n"
-                 "  --stall-timeout S  drop a client over its budget that takes nothing for S seconds (default 30,\n"
-                 "                     0: never)\n"
-                 "  --max-frame B      the largest message in bytes, both directions (default 67108864, 65536 to\n"
-                 "                     1073741824): clients learn it when they connect and refuse larger values\n"
-                 "                     at the call (ValueLengthExceeded)\n"
-                 "  --max-datagram B   best effort over UDP on the same port: the largest datagram (default 1400,\n"
-                 "                     256 to 65507; 0: none, everything over TCP); larger best-effort messages go\n"
-                 "                     over TCP (docs/networking.md)\n"
-                 "  --secret-file FILE clients must prove they know the secret in FILE (readable by its owner only)\n"
-                 "                     before anything else; required when HOST is not a loopback address\n"
-                 "                     (docs/networking.md); with --status: the secret to show\n"
-                 "  --no-secret        listen beyond loopback without a secret: anyone who reaches the port may\n"
-                 "                     read, join, and destroy federations\n"
-                 "  --federation-secret NAME=FILE  creating, joining or destroying federation NAME needs a proof of\n"
-                 "                     the secret in FILE, whatever the client's connection secret (docs/networking.md)\n"
-                 "  --tls-cert FILE    every connection is TLS (1.2 at least, 1.3 preferred) with the certificate\n"
-                 "  --tls-key FILE     (chain) and the private key in these PEM files (the key readable by its owner\n"
-                 "                     only); clients without TLS are refused. No datagrams are then offered:\n"
-                 "                     best-effort messages go over the encrypted TCP stream (docs/networking.md)\n"
-                 "  --tls              with --status: TLS, the gateway's certificate verified against the system's\n"
-                 "                     CA store (also $HLACORE_TLS=1)\n"
-                 "  --tls-ca FILE      with --status: TLS, trusting the CA or self-signed certificate in FILE (also\n"
-                 "                     $HLACORE_TLS=FILE)\n"
-                 "  --save-dir DIR     write federation saves to DIR (created if missing) and restore from\n"
-                 "                     there, also after a restart; without it saves live in memory only\n"
-                 "  --trace FILE       write when each update/interaction arrived and each reflection of it left,\n"
-                 "                     on the host's monotonic clock, as CSV (docs/robot.md, delay decomposition)\n"
-                 "  --record FILE      record every federation into FILE (MCAP): the FOM, joins, registrations,\n"
-                 "                     updates, interactions, requests and callbacks with their times, for\n"
-                 "                     python -m hlacore.replay and Foxglove (docs/record-replay.md)\n"
-                 "  --busy-poll US     before each wait for clients sleeps, poll for up to US µs without sleeping\n"
-                 "                     (0 to 100000; default 0: off): a message that comes meanwhile costs no\n"
-                 "                     wake-up, at the price of a busy core (docs/performance.md, busy polling)\n"
-                 "  --verbose          log connections, joins and federations to stderr\n"
-                 "  --status           print the state of a running rtig (default 127.0.0.1:60400) as JSON:\n"
-                 "                     per federation each federate's time, lookahead, regulating/constrained,\n"
-                 "                     pending request, queued messages, LBTS (`python -m hlacore.status` is a table)\n");
+    std::vector<std::string> synopsis = hlacore::synopsis(hlacore::gateway_options());
+    synopsis.emplace_back("[--no-secret]");
+    std::string text = "usage: rtig " + hlacore::wrap(synopsis, 98, 11, 110) +
+                       "\n       rtig [--secret-file FILE] [--tls | --tls-ca FILE] --status [HOST:PORT]\n" +
+                       hlacore::help_entries(hlacore::gateway_options()) + hlacore::help_entries(command_options()) +
+                       hlacore::help_entry("--status [HOST:PORT]",
+                                           "print the state of a running rtig (default 127.0.0.1:60400) as JSON: per "
+                                           "federation each federate's time, lookahead, regulating/constrained, pending "
+                                           "request, queued messages, LBTS (python -m hlacore.status is a table); "
+                                           "--secret-file is then the secret to show",
+                                           "");
+    std::fputs(text.c_str(), status ? stderr : stdout);
     return status;
 }
 
@@ -110,145 +98,54 @@ int print_status(const std::string& address, const std::string& secret, bool tls
 
 int main(int argc, char** argv) {
     hlacore::GatewayOptions options;
-    bool no_secret = false;
-    // --status over TLS: --tls, --tls-ca FILE, else $HLACORE_TLS as the Python client reads it (1: the
-    // system's CA store, a path: that CA file, unset, empty or 0: no TLS).
-    bool status_tls = false;
-    std::string status_tls_ca;
+    Command command;
     if (const char* env = std::getenv("HLACORE_TLS"); env && *env && std::string(env) != "0") {
-        status_tls = true;
-        if (std::string(env) != "1") status_tls_ca = env;
+        command.status_tls = true;
+        if (std::string(env) != "1") command.status_tls_ca = env;
     }
     for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        auto value = [&](const char* name) -> const char* {
-            if (i + 1 >= argc) {
-                std::fprintf(stderr, "rtig: %s needs a value\n", name);
-                std::exit(usage(2));
-            }
-            return argv[++i];
-        };
-        // The option's value as a number above `low` (or equal to it when `low_ok`); exits on anything else.
-        auto number = [&](const char* name, double low, bool low_ok) {
-            const char* text = value(name);
-            char* end = nullptr;
-            const double v = std::strtod(text, &end);
-            if (*text == '\0' || *end != '\0' || !(v > low || (low_ok && v == low)) || !(v < 1e15)) {
-                std::fprintf(stderr, "rtig: invalid %s '%s'\n", name, text);
-                std::exit(usage(2));
-            }
-            return v;
-        };
-        if (arg == "--host") {
-            options.host = value("--host");
-        } else if (arg == "--port") {
-            const char* text = value("--port");
-            char* end = nullptr;
-            const long port = std::strtol(text, &end, 10);
-            if (*text == '\0' || *end != '\0' || port < 0 || port > 65535) {
-                std::fprintf(stderr, "rtig: invalid port '%s'\n", text);
-                return usage(2);
-            }
-            options.port = static_cast<std::uint16_t>(port);
-        } else if (arg == "--unix") {
-            options.unix_path = value("--unix");
-        } else if (arg == "--fom-path") {
-            options.fom_path.emplace_back(value("--fom-path"));
-        } else if (arg == "--frame-timeout") {
-            options.partial_frame_timeout_s = number("--frame-timeout", 0, false);
-        } else if (arg == "--client-budget") {
-            options.client_budget = static_cast<std::size_t>(number("--client-budget", hlacore::kMinClientBudget, true));
-        } else if (arg == "--stall-timeout") {
-            options.stall_timeout_s = number("--stall-timeout", 0, true);
-        } else if (arg == "--max-frame") {
-            const double v = number("--max-frame", hlacore::kMinMaxFrame, true);
-            if (v > hlacore::kMaxMaxFrame) {
-                std::fprintf(stderr, "rtig: invalid --max-frame '%s'\n", argv[i]);
-                return usage(2);
-            }
-            options.max_frame_bytes = static_cast<std::uint32_t>(v);
-        } else if (arg == "--busy-poll") {
-            const double v = number("--busy-poll", 0, true);
-            if (v > hlacore::kMaxBusyPollUs || v != static_cast<std::uint32_t>(v)) {
-                std::fprintf(stderr, "rtig: invalid --busy-poll '%s' (whole µs, 0 to %u)\n", argv[i],
-                             static_cast<unsigned>(hlacore::kMaxBusyPollUs));
-                return usage(2);
-            }
-            options.busy_poll_us = static_cast<std::uint32_t>(v);
-        } else if (arg == "--max-datagram") {
-            const double v = number("--max-datagram", 0, true);
-            if ((v != 0 && v < hlacore::kMinMaxDatagram) || v > hlacore::wire::kMaxDatagramLimit || v != static_cast<std::uint32_t>(v)) {
-                std::fprintf(stderr, "rtig: invalid --max-datagram '%s'\n", argv[i]);
-                return usage(2);
-            }
-            options.max_datagram = static_cast<std::uint32_t>(v);
-        } else if (arg == "--secret-file") {
-            const char* path = value("--secret-file");
-            try {
-                options.secret = hlacore::auth::read_secret_file(path);
-            } catch (const std::exception& e) {
-                std::fprintf(stderr, "rtig: %s\n", e.what());
-                return 2;
-            }
-        } else if (arg == "--federation-secret") {
-            const std::string text = value("--federation-secret");
-            const auto equals = text.find('=');
-            if (equals == 0 || equals == std::string::npos || equals + 1 == text.size()) {
-                std::fprintf(stderr, "rtig: --federation-secret takes NAME=FILE, not '%s'\n", text.c_str());
-                return usage(2);
-            }
-            try {
-                options.federation_secrets[text.substr(0, equals)] = hlacore::auth::read_secret_file(text.substr(equals + 1));
-            } catch (const std::exception& e) {
-                std::fprintf(stderr, "rtig: %s\n", e.what());
-                return 2;
-            }
-        } else if (arg == "--tls-cert") {
-            options.tls_cert = value("--tls-cert");
-        } else if (arg == "--tls-key") {
-            options.tls_key = value("--tls-key");
-        } else if (arg == "--tls") {
-            status_tls = true;
-            status_tls_ca.clear();
-        } else if (arg == "--tls-ca") {
-            status_tls = true;
-            status_tls_ca = value("--tls-ca");
-        } else if (arg == "--no-secret") {
-            no_secret = true;
-        } else if (arg == "--save-dir") {
-            options.save_dir = value("--save-dir");
-            if (options.save_dir.empty()) {
-                std::fprintf(stderr, "rtig: --save-dir needs a directory\n");
-                return usage(2);
-            }
-        } else if (arg == "--trace") {
-            options.trace_path = value("--trace");
-        } else if (arg == "--record") {
-            options.record_path = value("--record");
-            if (options.record_path.empty()) {
-                std::fprintf(stderr, "rtig: --record needs a file\n");
-                return usage(2);
-            }
-        } else if (arg == "--verbose" || arg == "-v") {
-            options.verbose = true;
-        } else if (arg == "--status") {
+        const std::string arg = std::strcmp(argv[i], "-v") == 0 ? "--verbose" : argv[i];
+        if (arg == "--help" || arg == "-h") return usage(0);
+        if (arg == "--status") {
             if (i + 2 < argc) {
                 std::fprintf(stderr, "rtig: --status takes at most one HOST:PORT\n");
                 return usage(2);
             }
-            return print_status(i + 1 < argc ? argv[i + 1] : "127.0.0.1:60400", options.secret, status_tls, status_tls_ca);
-        } else if (arg == "--help" || arg == "-h") {
-            return usage(0);
-        } else {
-            std::fprintf(stderr, "rtig: unknown argument '%s'\n", arg.c_str());
+            return print_status(i + 1 < argc ? argv[i + 1] : "127.0.0.1:60400", options.secret, command.status_tls,
+                                command.status_tls_ca);
+        }
+        // The option's value: the next argument, "1" for a switch.
+        auto value = [&](const char* metavar) -> std::string {
+            if (!metavar) return "1";
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "rtig: %s needs a value\n", arg.c_str());
+                std::exit(usage(2));
+            }
+            return argv[++i];
+        };
+        try {
+            using hlacore::Given;
+            if (const auto* o = hlacore::find_option(hlacore::gateway_options(), arg, Given::Flag)) {
+                hlacore::apply(options, *o, Given::Flag, value(o->metavar));
+            } else if (const auto* c = hlacore::find_option(command_options(), arg, Given::Flag)) {
+                hlacore::apply(command, *c, Given::Flag, value(c->metavar));
+            } else {
+                std::fprintf(stderr, "rtig: unknown argument '%s'\n", arg.c_str());
+                return usage(2);
+            }
+        } catch (const hlacore::OptionError& e) {
+            std::fprintf(stderr, "rtig: %s\n", e.what());
             return usage(2);
+        } catch (const std::exception& e) {  // a secret file that cannot be used
+            std::fprintf(stderr, "rtig: %s\n", e.what());
+            return 2;
         }
     }
-    if (options.tls_cert.empty() != options.tls_key.empty()) {
-        std::fprintf(stderr, "rtig: --tls-cert and --tls-key go together\n");
+    if (const std::string conflict = hlacore::gateway_options_conflict(options, hlacore::Given::Flag); !conflict.empty()) {
+        std::fprintf(stderr, "rtig: %s\n", conflict.c_str());
         return usage(2);
     }
-    if (options.secret.empty() && !no_secret && !is_loopback(options.host)) {
+    if (options.secret.empty() && !command.no_secret && !is_loopback(options.host)) {
         std::fprintf(stderr,
                      "rtig: listening on %s, beyond this machine, needs --secret-file FILE (docs/networking.md), or\n"
                      "      --no-secret to let in anyone who reaches the port\n",

@@ -5,7 +5,7 @@ hlacore native core: gateway, client connection, FED parser
 from __future__ import annotations
 import collections.abc
 import typing
-__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'parse_fed']
+__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ClientSettings', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'client_options', 'client_settings', 'gateway_options', 'parse_fed']
 class RTIexception(Exception):
     """
     Base of every HLA 1.3 exception raised by hlacore.
@@ -618,11 +618,25 @@ class EventRetractionHandle:
         """
         The message's serial number at its sender.
         """
+class ClientSettings:
+    """
+    Where and how a client connects (client_settings()).
+    """
+    @property
+    def host(self) -> str:
+        """
+        The gateway's host, or unix:PATH.
+        """
+    @property
+    def port(self) -> int:
+        """
+        The gateway's port, 0 for a Unix socket.
+        """
 class BackgroundGateway:
     """
     The gateway serving on a thread of this process; hlacore.Gateway is its Python face.
     """
-    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, fom_path: collections.abc.Sequence[str], verbose: bool, save_dir: str = '', trace_path: str = '', client_budget: typing.SupportsInt | typing.SupportsIndex = 67108864, stall_timeout: typing.SupportsFloat | typing.SupportsIndex = 30.0, max_frame: typing.SupportsInt | typing.SupportsIndex = 67108864, secret_file: str = '', max_datagram: typing.SupportsInt | typing.SupportsIndex = 1400, federation_secret_files: collections.abc.Mapping[str, str] = {}, tls_cert: str = '', tls_key: str = '', record_path: str = '', busy_poll_us: typing.SupportsInt | typing.SupportsIndex = 0, unix_path: str = '') -> None:
+    def __init__(self, given: collections.abc.Sequence[tuple[str, str]]) -> None:
         ...
     def stop(self) -> None:
         """
@@ -655,7 +669,7 @@ class RTIAmbassadorBase:
             ...
         def __exit__(self, *args: typing.Any) -> None:
             ...
-    def __init__(self, host: str, port: typing.SupportsInt | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, secret_file: str = '', datagrams: bool = True, federation_secret_file: str = '', tls: bool = False, tls_ca: str = '', busy_poll_us: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
+    def __init__(self, settings: ClientSettings) -> None:
         ...
     def _create(self, arg0: str, arg1: str, arg2: str) -> None:
         ...
@@ -1131,6 +1145,18 @@ def _ordering_handle(arg0: typing.SupportsInt | typing.SupportsIndex) -> Orderin
     ...
 def _transportation_handle(arg0: typing.SupportsInt | typing.SupportsIndex) -> TransportationHandle:
     ...
+def client_options() -> list[tuple[str, str | None, str | None, bool, str, str]]:
+    """
+    The client's options (client/options.cpp): (keyword, environment variable, placeholder, repeated, default as text, help) each.
+    """
+def client_settings(given: collections.abc.Mapping[str, str]) -> ClientSettings:
+    """
+    The client's settings from the options given (keyword: text), else the environment, else the defaults; RTIinternalError naming a value refused.
+    """
+def gateway_options() -> list[tuple[str, str | None, str | None, bool, str, str]]:
+    """
+    The gateway's options (server/options.cpp): (keyword, rtig flag, placeholder or None for a switch, repeated, default as text, help) each.
+    """
 def parse_fed(text: str, file_name: str) -> dict:
     """
     Parse the text of an HLA 1.3 .fed file; raises ErrorReadingFED ("FILE:LINE:COL: message") on the first error. Returns plain data (see hlacore.fed for the typed form).

@@ -2,13 +2,11 @@
 
 from __future__ import annotations
 
-import math
 import os
 from types import TracebackType
 from typing import TYPE_CHECKING, Any, Iterable, Mapping, Optional
 
-from . import _core
-from .rti import _busy_poll_error
+from . import _core, _options
 
 if TYPE_CHECKING:
     from .monitor import Monitor
@@ -22,37 +20,13 @@ class Gateway:
         with hlacore.Gateway(port=0) as gw:          # port 0 picks a free port
             rtia = hlacore.rti.RTIAmbassador(gw.address)
 
-    The gateway listens from construction until :meth:`stop` (or the end of the ``with`` block).
-    It logs dropped connections to stderr; ``verbose=True`` logs joins and federations too.
-    ``save_dir`` is ``rtig --save-dir``: federation saves are written there as files and can be restored
-    by a later gateway; without it saves are kept in memory only (docs/save-restore.md).
-    ``trace`` names a CSV file for the message trace (``rtig --trace``): when each update and interaction
-    arrived and each reflection of it left, on the host's monotonic clock (read by ``hlacore.trace``).
-    ``record`` names an MCAP file to record every federation of the gateway into (``rtig --record``), read by
-    :mod:`hlacore.recording`, replayed by ``python -m hlacore.replay`` (docs/record-replay.md); it is complete
-    once the gateway stops.
-    ``client_budget`` and ``stall_timeout`` are ``rtig --client-budget`` and ``--stall-timeout``, the flow
-    control of docs/robustness.md: the bytes the gateway holds for one client (its output queue and the
-    messages time management keeps for it) above which the clients sending to it are no longer read until
-    it has taken half of them, and how long such a client may take nothing before it is dropped (0: never).
-    ``max_frame`` is ``rtig --max-frame``: the largest message in bytes; clients learn it when they connect
-    and raise ``ValueLengthExceeded`` at a call whose values would not fit. ``secret_file`` is ``rtig
-    --secret-file``: clients prove they know the secret in it before anything else (docs/networking.md).
-    ``max_datagram`` is ``rtig --max-datagram``: best effort over UDP on the same port, the largest datagram
-    either side sends (larger best-effort messages go over TCP); 0 turns datagrams off.
-    ``federation_secrets`` maps federation names to secret files (``rtig --federation-secret NAME=FILE``):
-    creating, joining or destroying such a federation needs a proof of its secret
-    (``RTIAmbassador(federation_secret_file=...)``).
-    ``tls_cert`` and ``tls_key`` are ``rtig --tls-cert`` and ``--tls-key`` (both or neither): PEM files of the
-    certificate (chain) and its private key (readable by its owner only); every connection is then TLS and
-    clients connect with ``RTIAmbassador(tls=...)``; no datagrams are offered (best effort goes over the
-    encrypted stream). :meth:`status` then trusts ``tls_cert`` itself.
-    ``busy_poll_us`` is ``rtig --busy-poll``: each wait for the clients polls without sleeping for up to that
-    many µs before it sleeps (0, the default: off; at most :attr:`MAX_BUSY_POLL_US`; docs/performance.md).
-    ``unix`` is ``rtig --unix``: also listen on a Unix socket at that path, for federates on this host, which
-    connect to :attr:`unix_address` (``"unix:PATH"``) with less CPU per message than over TCP; no datagrams
-    and no TLS on it; the file is its owner's only and is removed when the gateway stops (docs/networking.md).
-    """
+    The gateway listens from construction until :meth:`stop` (or the end of the ``with`` block). It logs
+    dropped connections to stderr. Each keyword is an ``rtig`` option, named in its entry below and checked by
+    the same table: a value out of range raises :class:`ValueError` naming it, a secret, certificate or key file that
+    cannot be used :class:`RuntimeError` saying why. With ``tls_cert``, :meth:`status` trusts that certificate
+    itself. The keywords:
+
+"""
 
     #: The smallest ``client_budget`` in bytes (a smaller one raises :class:`ValueError`).
     MIN_CLIENT_BUDGET: int = _core.MIN_CLIENT_BUDGET
@@ -68,7 +42,7 @@ class Gateway:
         self,
         host: str = "127.0.0.1",
         port: int = 60400,
-        fom_path: Iterable[str] = (),
+        fom_path: Iterable[str | os.PathLike[str]] = (),
         verbose: bool = False,
         save_dir: Optional[str | os.PathLike[str]] = None,
         trace: Optional[str | os.PathLike[str]] = None,
@@ -83,35 +57,13 @@ class Gateway:
         record: Optional[str | os.PathLike[str]] = None,
         busy_poll_us: int = 0,
         unix: Optional[str | os.PathLike[str]] = None,
+        frame_timeout: float = 10.0,
     ) -> None:
-        if client_budget < self.MIN_CLIENT_BUDGET:
-            raise ValueError(f"client_budget must be at least {self.MIN_CLIENT_BUDGET} bytes, not {client_budget}")
-        if not (math.isfinite(stall_timeout) and stall_timeout >= 0):
-            raise ValueError(f"stall_timeout must be a finite number of seconds >= 0, not {stall_timeout}")
+        given = _options.given(_core.gateway_options(), locals())
         self._secret_file = secret_file
-        if (tls_cert is None) != (tls_key is None):
-            raise ValueError("tls_cert and tls_key go together")
         self._tls_cert = os.fspath(tls_cert) if tls_cert is not None else None
-        low, high = self.MAX_FRAME_RANGE
-        if not low <= max_frame <= high:
-            raise ValueError(f"max_frame must be between {low} and {high} bytes, not {max_frame}")
-        low, high = self.MAX_DATAGRAM_RANGE
-        if max_datagram != 0 and not low <= max_datagram <= high:
-            raise ValueError(f"max_datagram must be 0 or between {low} and {high} bytes, not {max_datagram}")
-        if error := _busy_poll_error(busy_poll_us):
-            raise ValueError(error)
-        self._gateway = _core.BackgroundGateway(host, port, list(fom_path), verbose,
-                                                os.fspath(save_dir) if save_dir is not None else "",
-                                                os.fspath(trace) if trace is not None else "",
-                                                client_budget, stall_timeout, max_frame,
-                                                os.fspath(secret_file) if secret_file is not None else "",
-                                                max_datagram,
-                                                {name: os.fspath(path) for name, path in (federation_secrets or {}).items()},
-                                                self._tls_cert or "",
-                                                os.fspath(tls_key) if tls_key is not None else "",
-                                                os.fspath(record) if record is not None else "", busy_poll_us,
-                                                os.fspath(unix) if unix is not None else "")
         self._unix = os.fspath(unix) if unix is not None else None
+        self._gateway = _core.BackgroundGateway(given)
 
     @property
     def host(self) -> str:
@@ -172,3 +124,6 @@ class Gateway:
     def __repr__(self) -> str:
         state = "running" if self.running else "stopped"
         return f"<hlacore.Gateway {self.address} {state}>"
+
+
+Gateway.__doc__ = f"{Gateway.__doc__}{_options.document(_core.gateway_options(), 'rtig ``{}``')}\n"

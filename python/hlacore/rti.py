@@ -25,7 +25,7 @@ import os
 import time as _time
 from typing import Any, Callable, Dict, Optional, Type
 
-from . import _core
+from . import _core, _options
 from ._core import (  # noqa: F401  (re-exported handle types)
     AttributeHandle,
     DimensionHandle,
@@ -350,146 +350,33 @@ _SWITCH_CLASS, _SWITCH_ATTRIBUTE, _SWITCH_SCOPE, _SWITCH_INTERACTION = 1, 2, 3, 
 
 
 
-def _resolve_address(address: Optional[str]) -> tuple[str, int]:
-    """The gateway's (host, port): `address`, else $HLACORE_RTIG, else CERTI's $CERTI_HOST and
-    $CERTI_TCP_PORT (either may be left out), else 127.0.0.1:60400. ``unix:PATH`` is (``unix:PATH``, 0):
-    the client connects to that Unix socket."""
-    text = address or os.environ.get("HLACORE_RTIG")
-    if not text and ("CERTI_HOST" in os.environ or "CERTI_TCP_PORT" in os.environ):
-        default_host, default_port = DEFAULT_ADDRESS.rsplit(":", 1)
-        port = os.environ.get("CERTI_TCP_PORT", default_port)
-        if not port.isdigit():
-            raise _core.RTIinternalError(f"CERTI_TCP_PORT={port!r} is not a port number")
-        text = f"{os.environ.get('CERTI_HOST') or default_host}:{port}"
-    text = text or DEFAULT_ADDRESS
-    if text.startswith("unix:"):  # a gateway on this host over a Unix socket (rtig --unix PATH)
-        if text == "unix:":
-            raise _core.RTIinternalError("rtig address 'unix:' names no socket: unix:PATH")
-        return text, 0
-    host, sep, port = text.rpartition(":")
-    if not sep or not port.isdigit():
-        raise _core.RTIinternalError(f"rtig address {text!r} is not HOST:PORT")
-    return host.strip("[]") or "127.0.0.1", int(port)
-
-
-def _resolve_timeout(timeout: Optional[float]) -> float:
-    """The client's liveness bound in seconds: `timeout`, else $HLACORE_TIMEOUT, else 5."""
-    if timeout is not None:
-        return float(timeout)
-    text = os.environ.get("HLACORE_TIMEOUT", "5")
-    try:
-        return float(text)
-    except ValueError:
-        raise _core.RTIinternalError(f"HLACORE_TIMEOUT={text!r} is not a number of seconds") from None
-
-
-def _resolve_secret_file(secret_file: Optional[str | os.PathLike[str]], variable: str = "HLACORE_SECRET_FILE") -> str:
-    """A secret file's path for the client: `secret_file`, else $`variable`, else "" (none)."""
-    if secret_file is not None:
-        return os.fspath(secret_file)
-    return os.environ.get(variable, "")
-
-
-def _resolve_datagrams(datagrams: Optional[bool]) -> bool:
-    """Whether to try best effort over UDP: `datagrams`, else not when $HLACORE_DATAGRAMS is 0, else yes."""
-    if datagrams is not None:
-        return bool(datagrams)
-    text = os.environ.get("HLACORE_DATAGRAMS", "1")
-    if text not in ("0", "1"):
-        raise _core.RTIinternalError(f"HLACORE_DATAGRAMS={text!r} must be 0 or 1")
-    return text == "1"
-
-
-def _busy_poll_error(value: object) -> str:
-    """Why `value` is not a busy-polling time ("" when it is): a whole number of µs from 0 to
-    ``MAX_BUSY_POLL_US`` (what ``RTIAmbassador``, ``hlacore.Gateway`` and ``rtig --busy-poll`` take)."""
-    if isinstance(value, int) and not isinstance(value, bool) and 0 <= value <= _core.MAX_BUSY_POLL_US:
-        return ""
-    return f"busy polling must be a whole number of µs between 0 and {_core.MAX_BUSY_POLL_US}, not {value!r}"
-
-
-def _resolve_busy_poll(busy_poll_us: Optional[int]) -> int:
-    """How long a wait polls before it sleeps, in µs: `busy_poll_us`, else $HLACORE_BUSY_POLL_US, else 0 (off)."""
-    if busy_poll_us is None:
-        text = os.environ.get("HLACORE_BUSY_POLL_US", "0") or "0"
-        if not text.isdigit():
-            raise _core.RTIinternalError(f"HLACORE_BUSY_POLL_US={text!r} is not a whole number of µs")
-        busy_poll_us = int(text)
-    if error := _busy_poll_error(busy_poll_us):
-        raise _core.RTIinternalError(error)
-    return busy_poll_us
-
-
-def _resolve_tls(tls: Optional[bool | str | os.PathLike[str]]) -> tuple[bool, str]:
-    """Whether to speak TLS and the CA file to trust ("" for the system's CA store): `tls`, else $HLACORE_TLS.
-
-    None (and an unset, empty or "0" $HLACORE_TLS) or False: no TLS; True or "1": TLS verified against the
-    system's default CA store; a path: TLS trusting the CA or self-signed certificate in that PEM file."""
-    if tls is None:
-        tls = os.environ.get("HLACORE_TLS", "")
-    if isinstance(tls, bool):
-        return tls, ""
-    text = os.fspath(tls)
-    if text in ("", "0"):
-        return False, ""
-    if text == "1":
-        return True, ""
-    return True, text
+def _client_settings(**values: object) -> _core.ClientSettings:
+    """Where and how to connect: the values given (None: not given), else the environment, else the defaults,
+    checked by the client's table (``cpp/rti/client/options.cpp``); :class:`RTIinternalError` naming a value
+    it refuses."""
+    return _core.client_settings(dict(_options.given(_core.client_options(), values)))
 
 
 class RTIAmbassador(_core.RTIAmbassadorBase):
     """A federate's connection to the RTI (HLA 1.3 RTIambassador).
 
-    ``RTIAmbassador(address=None)`` connects to ``address`` ("host:port", or "unix:PATH" for a gateway on this
-    host listening there, ``rtig --unix PATH``), else ``$HLACORE_RTIG``, else
-    CERTI's ``$CERTI_HOST`` and ``$CERTI_TCP_PORT`` (as PyHLA scripts and tutorials set them; a missing one
-    takes its default), else ``127.0.0.1:60400``; raises :class:`RTIinternalError` naming the address if nothing answers.
-    One ambassador joins at most one federation execution at a time.
+    ``RTIAmbassador(address=None)`` connects to the gateway; raises :class:`RTIinternalError` naming the address
+    if nothing answers. One ambassador joins at most one federation execution at a time. Every blocking call
+    releases the GIL and Ctrl-C interrupts it with KeyboardInterrupt; a call interrupted while its reply was
+    owed closes the connection (the gateway resigns the federate). Each keyword not given is read from its
+    environment variable, as the HLA 1.3 C++ API reads them all (docs/cpp-api.md); a value refused raises
+    :class:`RTIinternalError` naming it, a secret file that cannot be used :class:`AuthenticationFailed`. The
+    keywords:
 
-    ``timeout`` (seconds; else ``$HLACORE_TIMEOUT``, else 5) bounds connecting, each reply and each send the
-    gateway does not take: a gateway that stays silent that long (stopped, frozen, unreachable; it is pinged
-    after half of it while this federate waits) raises :class:`GatewayNotResponding` and closes the
-    connection. Every blocking call releases the GIL and Ctrl-C interrupts it with KeyboardInterrupt; a call
-    interrupted while its reply was owed closes the connection (the gateway resigns the federate).
-
-    ``secret_file`` (else ``$HLACORE_SECRET_FILE``) names the file with the secret a gateway may ask for
-    (``rtig --secret-file``): it is proven by challenge-response, never sent; a gateway that asks when none
-    is given, or refuses it, raises :class:`AuthenticationFailed` (docs/networking.md).
-    ``federation_secret_file`` (else ``$HLACORE_FEDERATION_SECRET_FILE``) names the file with the secret of
-    a federation that has one of its own (``rtig --federation-secret NAME=FILE``): creating, joining or
-    destroying that federation proves it, and raises :class:`AuthenticationFailed` without it.
-
-    ``datagrams`` (else ``$HLACORE_DATAGRAMS``, 0 or 1; default on): updates and interactions whose values
-    all travel ``best_effort`` and carry no timestamp go to the gateway as UDP datagrams, and the gateway
-    sends such reflections back the same way, when it offers them and datagrams get through (tried at
-    connect; otherwise one line on stderr and TCP). :meth:`datagram_status` tells which, with the counts.
-
-    ``tls`` (else ``$HLACORE_TLS``) encrypts the connection for a gateway with TLS (``rtig --tls-cert``):
-    ``None`` or ``False`` (``$HLACORE_TLS`` unset, empty or ``0``): plain TCP; ``True`` (``1``): TLS, the
-    gateway's certificate verified against the system's default CA store; a path: TLS trusting the CA or
-    self-signed certificate in that PEM file. The certificate must also name the host or IP address
-    connected to. The handshake is bounded by ``timeout``; an untrusted certificate, a name that does not
-    match, or a gateway without TLS raises :class:`AuthenticationFailed` saying which. Under TLS the gateway
-    offers no datagrams: best-effort messages go over the encrypted stream (docs/networking.md).
-
-    ``busy_poll_us`` (else ``$HLACORE_BUSY_POLL_US``; default 0, off; at most 100000): each wait for the
-    gateway (a tick, a grant, a reply) polls the socket without sleeping for up to that many µs before it
-    sleeps. A message that comes meanwhile is read without a wake-up, which on a machine with idle cores
-    costs tens of µs; the price is a busy core while waiting. Worth it for federates that step in lockstep
-    with fewer processes than cores, with ``rtig --busy-poll`` on the gateway (docs/performance.md, busy
-    polling). Ctrl-C still interrupts a wait, within the spin and 0.1 s more.
-    """
+"""
 
     def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None,
                  secret_file: Optional[str | os.PathLike[str]] = None, datagrams: Optional[bool] = None,
                  federation_secret_file: Optional[str | os.PathLike[str]] = None,
                  tls: Optional[bool | str | os.PathLike[str]] = None, busy_poll_us: Optional[int] = None) -> None:
-        host, port = _resolve_address(address)
-        use_tls, tls_ca = _resolve_tls(tls)
-        super().__init__(host, port, _resolve_timeout(timeout), _resolve_secret_file(secret_file),
-                         _resolve_datagrams(datagrams),
-                         _resolve_secret_file(federation_secret_file, "HLACORE_FEDERATION_SECRET_FILE"),
-                         use_tls, tls_ca, _resolve_busy_poll(busy_poll_us))
+        super().__init__(_client_settings(address=address, timeout=timeout, secret_file=secret_file,
+                                          datagrams=datagrams, federation_secret_file=federation_secret_file,
+                                          tls=tls, busy_poll_us=busy_poll_us))
         self._federate_ambassador: Any = None
 
     # ---- federation management ----
@@ -684,6 +571,9 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
                 if not self._dispatch(ambassador, True, -1.0):
                     return False
         return True
+
+
+RTIAmbassador.__doc__ = f"{RTIAmbassador.__doc__}{_options.document(_core.client_options(), 'else ``${}``')}\n"
 
 
 class _EnableWatcher:

@@ -16,7 +16,7 @@ import time
 from typing import Any, Optional
 
 from . import _core
-from .rti import _resolve_address, _resolve_secret_file, _resolve_tls
+from .rti import _client_settings
 
 _NUMBERS = ("time", "lookahead", "lbts", "output_bound")
 
@@ -56,10 +56,8 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
 
 def _raw_status(address: Optional[str], secret_file: Optional[str | os.PathLike[str]] = None,
                 tls: Optional[bool | str | os.PathLike[str]] = None) -> str:
-    host, port = _resolve_address(address)
-    use_tls, tls_ca = _resolve_tls(tls)
-    return str(_core.RTIAmbassadorBase(host, port, secret_file=_resolve_secret_file(secret_file),
-                                       datagrams=False, tls=use_tls, tls_ca=tls_ca)._status())
+    settings = _client_settings(address=address, secret_file=secret_file, tls=tls, datagrams=False)
+    return str(_core.RTIAmbassadorBase(settings)._status())
 
 
 def format_table(report: dict[str, Any], width: int = 80) -> str:

@@ -42,7 +42,7 @@ def test_a_bad_busy_poll_variable_is_an_rti_internal_error(rtig: RtigProcess) ->
                          env={**gateway_env(rtig.address), "HLACORE_BUSY_POLL_US": "100001"},
                          capture_output=True, text=True, timeout=60)
     assert run.returncode == 1
-    assert "unexpected RTIinternalError: HLACORE_BUSY_POLL_US=100001 is not a whole number of µs" in run.stderr
+    assert "unexpected RTIinternalError: $HLACORE_BUSY_POLL_US='100001': busy polling must be a whole number of µs" in run.stderr
 
 
 def test_no_gateway_is_an_rti_internal_error() -> None:

@@ -145,8 +145,7 @@ def test_status_keeps_a_log_of_joins_resigns_and_drops_with_the_reason(rtig: Rti
     victim = python_subprocess("victim_federate.py", rtig.address)
     try:
         assert victim.read_line(30).startswith("ready ")
-        host, port = rtig.address.rsplit(":", 1)
-        client = hlacore._core.RTIAmbassadorBase(host, int(port))
+        client = hlacore._core.RTIAmbassadorBase(hlacore._core.client_settings({"address": rtig.address}))
         report = json.loads(client._status())
         assert [(e["kind"], e["federation"], e["name"]) for e in report["events"]] == [
             ("created", "TestFed", ROBOT_FED), ("joined", "TestFed", "stayer"), ("joined", "TestFed", "victim")]

@@ -244,9 +244,9 @@ def test_a_federation_proof_is_bound_to_its_connection_action_and_federation(
 
 
 @pytest.mark.parametrize("value, why", [
-    ("Lab", "--federation-secret takes NAME=FILE, not 'Lab'"),
-    ("=file", "--federation-secret takes NAME=FILE, not '=file'"),
-    ("Lab=", "--federation-secret takes NAME=FILE, not 'Lab='"),
+    ("Lab", "invalid --federation-secret 'Lab': takes NAME=FILE"),
+    ("=file", "invalid --federation-secret '=file': takes NAME=FILE"),
+    ("Lab=", "invalid --federation-secret 'Lab=': takes NAME=FILE"),
     ("Lab=/no/such/file", "cannot read the secret file '/no/such/file'"),
 ])
 def test_rtig_refuses_a_malformed_federation_secret(value: str, why: str) -> None:

@@ -34,10 +34,11 @@ def test_hlacore_rtig_comes_before_certi_variables(inprocess_gateway, clean_envi
 
 def test_certi_host_alone_takes_the_default_port(clean_environment):
     clean_environment.setenv("CERTI_HOST", "127.0.0.1")
-    assert rti._resolve_address(None) == ("127.0.0.1", 60400)
+    settings = rti._client_settings()
+    assert (settings.host, settings.port) == ("127.0.0.1", 60400)
 
 
 def test_bad_certi_port_is_a_clear_error(clean_environment):
     clean_environment.setenv("CERTI_TCP_PORT", "sixty")
-    with pytest.raises(rti.RTIinternalError, match="CERTI_TCP_PORT='sixty' is not a port number"):
+    with pytest.raises(rti.RTIinternalError, match=r"\$CERTI_TCP_PORT='sixty': must be a whole number between 0 and 65535"):
         rti.RTIAmbassador()

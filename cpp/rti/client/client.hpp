@@ -29,6 +29,7 @@
 
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
+#include "rti/client/options.hpp"
 #include "rti/net/wait.hpp"
 #include "rti/record/mcap.hpp"
 #include "rti/time.hpp"
@@ -38,30 +39,6 @@
 #include "rti/wire/read_buffer.hpp"
 
 namespace hlacore {
-
-struct ClientOptions {
-    // Bounds connecting, the handshake, each reply and each blocked send; a gateway silent for half of it
-    // while the client waits is pinged.
-    double timeout_s = 5.0;
-    WaitHost* wait_host = nullptr;  // not owned; must outlive the client
-    // Proven to a gateway that asks (its Welcome carries a challenge; rti/auth.hpp); never sent.
-    std::string secret;
-    // Proven when creating, joining or destroying a federation that has a secret of its own (over the
-    // Welcome's nonce; auth::federation_proof); never sent.
-    std::string federation_secret;
-    // Best effort over UDP when the gateway offers it and datagrams get through (client/datagrams.cpp).
-    bool datagrams = true;
-    // TLS (rtig --tls-cert): the gateway's certificate is verified against the system's default CA store
-    // (tls_ca empty) or the CA / self-signed certificate in the PEM file tls_ca, and must name the host
-    // connected to. Failures raise AuthenticationFailed.
-    bool tls = false;
-    std::string tls_ca;
-    // Busy polling (rti/busy_poll.hpp; 0, the default: off): a wait polls the socket without sleeping for up
-    // to this many µs before it sleeps, so that a message arriving meanwhile costs no wake-up. At most
-    // kMaxBusyPollUs. With a wait_host, a wait that spun sleeps in slices of 100 ms after it, each ended as if
-    // interrupted, so that the host looks at signals the spin may have taken without a poll seeing them.
-    std::uint32_t busy_poll_us = 0;
-};
 
 // The client's datagram path: whether best-effort messages travel as datagrams, and the counts both ways.
 struct DatagramStatus {

@@ -25,7 +25,7 @@ from typing import Any, Optional
 from aiohttp import WSMsgType, web
 
 from .. import _core
-from ..rti import _resolve_address, _resolve_secret_file, _resolve_tls
+from ..rti import _client_settings
 from .state import HOLD_SECONDS, MonitorState
 
 __all__ = ["Monitor", "DEFAULT_PORT"]
@@ -53,12 +53,11 @@ class Monitor:
             raise ValueError(f"interval must be between 0.05 and 1 second, not {interval}")
         if hold_seconds <= 0:
             raise ValueError(f"hold_seconds must be positive, not {hold_seconds}")
-        self.gateway_host, self.gateway_port = _resolve_address(address)
+        self._settings = _client_settings(address=address, secret_file=secret_file, tls=tls, datagrams=False)
+        self.gateway_host, self.gateway_port = self._settings.host, self._settings.port
         self.host = host
         self.port = port
         self.interval = interval
-        self._secret_file = _resolve_secret_file(secret_file)
-        self._tls, self._tls_ca = _resolve_tls(tls)
         self.state = MonitorState(hold_seconds=hold_seconds)
         self._subscribers: set[_Subscriber] = set()
         self._client: Any = None
@@ -178,9 +177,7 @@ class Monitor:
     def _query(self) -> str:
         """One status query, on the query thread (the call releases the GIL while it waits)."""
         if self._client is None:
-            self._client = _core.RTIAmbassadorBase(self.gateway_host, self.gateway_port,
-                                                   secret_file=self._secret_file, datagrams=False, tls=self._tls,
-                                                   tls_ca=self._tls_ca)
+            self._client = _core.RTIAmbassadorBase(self._settings)
         return str(self._client._status(self.state.last_event, instances=False))
 
 

@@ -36,10 +36,16 @@ class Fanout:
 
     def burst(self) -> None:
         """Send `burst` updates, then wait until every subscriber has reflected all of them."""
+        self.send()
+        self.wait_counted()
+
+    def send(self) -> None:
         update, obj, values = self.fed.rtia.updateAttributeValues, self.fed.obj, {self.fed.location: self.payload}
         for _ in range(self.burst_size):
             update(obj, values, "")
         self.sent += self.burst_size
+
+    def wait_counted(self) -> None:
         for peer in self.peers:
             got = peer.read_json(timeout=60.0)
             assert got == {"received": self.sent}, (got, self.sent)

@@ -85,8 +85,8 @@ bool yes_or_no(const std::string& text) {
     throw OptionError("must be 0 or 1");
 }
 
-const std::string& not_empty(const std::string& text, const char* what) {
-    if (text.empty()) throw OptionError(std::string("needs ") + what);
+const std::string& not_empty(const std::string& text) {
+    if (text.empty()) throw OptionError("must not be empty");
     return text;
 }
 

@@ -92,7 +92,7 @@ std::string wrap(const std::string& text, std::size_t first_room, std::size_t in
 double number_above(const std::string& text, double low, bool low_ok, const char* unit);  // finite
 std::uint64_t whole_number(const std::string& text, std::uint64_t low, std::uint64_t high, const char* unit);
 bool yes_or_no(const std::string& text);  // "1"/"true" or "0"/"false"
-const std::string& not_empty(const std::string& text, const char* what);
+const std::string& not_empty(const std::string& text);
 std::uint32_t busy_poll_micros(const std::string& text);  // rti/busy_poll.hpp's bounds
 
 }  // namespace hlacore

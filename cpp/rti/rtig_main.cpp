@@ -41,7 +41,7 @@ const hlacore::Options<Command>& command_options() {
         {"--tls-ca", nullptr, nullptr, "FILE", false,
          [](Command& c, Text t) {
              c.status_tls = true;
-             c.status_tls_ca = hlacore::not_empty(t, "a file");
+             c.status_tls_ca = hlacore::not_empty(t);
          },
          nullptr,
          "with --status: TLS, trusting the CA or self-signed certificate in FILE (also $HLACORE_TLS=FILE)"},

@@ -56,11 +56,13 @@ void MessageTrace::joined(const std::string& federation, std::uint32_t federate,
     row(ns, "join", federation, federate, 0, 0, std::nullopt, name);
 }
 
-void MessageTrace::sending(const std::string& federation, std::uint32_t receiver, std::string_view frames,
-                           std::int64_t ns) {
+std::size_t MessageTrace::sending(const std::string& federation, std::uint32_t receiver, std::string_view frames,
+                                  std::int64_t ns) {
     wire::Frame frame;
+    std::size_t traced = 0;
     while (std::size_t used = wire::next_frame(frames, frame)) {
         frames.remove_prefix(used);
+        traced += used;
         if (frame.type == wire::MessageType::ReflectAttributes) {
             const auto m = std::get<wire::ReflectAttributes>(wire::decode(frame));
             row(ns, "reflect", federation, receiver, m.sender, m.serial, m.time, "");
@@ -69,6 +71,7 @@ void MessageTrace::sending(const std::string& federation, std::uint32_t receiver
             row(ns, "receive", federation, receiver, m.sender, m.serial, m.time, "");
         }
     }
+    return traced;
 }
 
 void MessageTrace::flush() {

@@ -35,9 +35,10 @@ public:
         else if constexpr (std::is_same_v<M, wire::SendInteractionView>)
             row(ns, "interaction", federation, sender, sender, m.serial, m.time, "");
     }
-    // `frames` (whole frames) are about to be written to `receiver`'s socket: records the reflections and
-    // interactions among them.
-    void sending(const std::string& federation, std::uint32_t receiver, std::string_view frames, std::int64_t ns);
+    // `frames` are about to be written to `receiver`'s socket: records the reflections and interactions among
+    // them. Returns the bytes of the whole frames, where the next call starts (a frame read back from a spill
+    // file may come in two parts).
+    std::size_t sending(const std::string& federation, std::uint32_t receiver, std::string_view frames, std::int64_t ns);
     // Writes out what is buffered (the gateway calls it once per turn of its loop).
     void flush();
 

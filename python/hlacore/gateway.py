@@ -58,6 +58,8 @@ class Gateway:
         busy_poll_us: int = 0,
         unix: Optional[str | os.PathLike[str]] = None,
         frame_timeout: float = 10.0,
+        spill_dir: Optional[str | os.PathLike[str]] = None,
+        disk_budget: int = 1 << 30,
     ) -> None:
         given = _options.given(_core.gateway_options(), locals())
         self._secret_file = secret_file

@@ -29,7 +29,8 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
     "federates": [{"handle", "name", "time", "lookahead", "regulating", "enabling_regulation", "constrained",
     "asynchronous_delivery", "pending": None | {"request": "TAR"|"TARA"|"NER"|"NERA"|"FQR", "time"},
     "queued_tso", "queued_ro", "regions", "lbts", "output_bound", "updates_sent", "interactions_sent",
-    "grants"}], "save_restore", "instances"}], "datagrams": {"port" (None: no datagrams), "max_datagram",
+    "grants", "backlog": {"memory", "disk"}}], "save_restore", "instances"}], "spill": {"directory", "budget",
+    "used"}, "datagrams": {"port" (None: no datagrams), "max_datagram",
     "stray", "federates": [{"federation", "federate", "path", "counts": {"sent", "send_failed", "oversize",
     "received", "lost", "reordered", "duplicates", "held_back", "early"}}]}, "process": {"pid", "rss_bytes",
     "cpu_seconds"}, "events": [{"sequence", "time", "kind", "federation", "federate", "name", "reason"}],
@@ -38,7 +39,9 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
     docs/ddm.md; "datagrams": best effort over UDP, docs/networking.md, sent/failed/oversize towards each
     federate and received/lost/reordered from it). On the wire infinite times are null; here they are
     ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A pending request also has
-    ``"waiting"``, the seconds since it came. "process" is the gateway's process (an in-process gateway's is
+    ``"waiting"``, the seconds since it came. "backlog" is what the gateway holds for the federate in memory
+    and has spilled to disk (it is not reading: paused, or slower than its publishers; docs/robustness.md),
+    "spill" the spill files' directory, disk budget and use. "process" is the gateway's process (an in-process gateway's is
     the program that runs it); "events" is the gateway's log of its last 256 federations "created" and
     "destroyed" and federates "joined", "resigned" and "dropped" (with the reason), numbered up to
     "last_event", with their Unix "time". A gateway with a

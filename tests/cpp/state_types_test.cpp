@@ -1,5 +1,6 @@
 // Unit tests of the gateway's service-group state types (cpp/rti/server/<group>.hpp) on their own, without
-// a federation: regions and their overlap, a federate's DDM state, attribute ownership, save/restore; and
+// a federation: regions and their overlap, a federate's DDM state, attribute ownership, save/restore, held
+// messages parked beyond a federate's share and the spill files they go to; and
 // the connection's read buffer and the values a federate decodes as views into it (cpp/rti/wire/).
 // Built by ./scripts/test.sh (target state_types_test, with the sanitizers) and run by
 // tests/rti/test_state_types.py; prints "ok <case>" per case, exits non-zero at the first failure.
@@ -7,6 +8,8 @@
 #include <cstring>
 #include <cstdlib>
 #include <functional>
+#include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,6 +18,8 @@
 #include "rti/server/ownership.hpp"
 #include "rti/server/regions.hpp"
 #include "rti/server/save_restore.hpp"
+#include "rti/server/spill.hpp"
+#include "rti/server/time_manager.hpp"
 #include "rti/wire/read_buffer.hpp"
 #include "rti/wire/splices.hpp"
 
@@ -287,6 +292,91 @@ void splices_gather() {
     CHECK(stream(all.data(), wire::gather(rest, 0, noted, all.data(), all.size())) == frame);
 }
 
+// A parking in memory, to see what the time manager parks and takes back.
+struct MapParking : FrameParking {
+    std::map<std::uint64_t, std::string> kept;
+    std::uint64_t next = 0;
+    int forgotten = 0;
+    std::optional<std::uint64_t> park(std::uint32_t, std::string_view frame) override {
+        kept[next] = std::string(frame);
+        return next++;
+    }
+    std::string unpark(std::uint32_t, std::uint64_t ticket, std::uint32_t size, bool keep) override {
+        std::string frame = kept.at(ticket);
+        check(frame.size() == size, "the parked size", __LINE__);
+        if (!keep) kept.erase(ticket);
+        return frame;
+    }
+    void forget(std::uint32_t) override {
+        kept.clear();
+        ++forgotten;
+    }
+};
+
+void time_parking() {
+    MapParking parking;
+    TimeManager time;
+    time.attach_parking(&parking, 1000);
+    for (std::uint32_t f : {1u, 2u}) time.add_federate(f);
+    time.enable_regulation(1, 0, 1);
+    time.enable_constrained(2);
+    time.release();
+    // Out of timestamp order, 100 frames of 100 bytes: beyond 1000 bytes held in memory, the rest parked.
+    for (std::uint64_t i = 0; i < 100; ++i) {
+        const double t = 1 + static_cast<double>((i * 37) % 100);
+        time.enqueue_tso(2, t, 1, i, std::make_shared<std::string>(std::string(99, 'a') + std::to_string(i % 10)));
+    }
+    CHECK(!parking.kept.empty() && parking.kept.size() < 100);
+    CHECK(time.held_bytes(2) < 100 * 100);  // the parked ones weigh their entry only
+    const auto saved = time.save_state(2);   // reads the parked frames and leaves them parked
+    CHECK(saved.tso.size() == 100 && !parking.kept.empty());
+    time.request(1, AdvanceKind::TimeAdvanceRequest, 200);
+    time.request(2, AdvanceKind::TimeAdvanceRequest, 200);
+    std::vector<std::string> delivered;
+    for (auto& r : time.release())
+        if (r.federate == 2)
+            for (auto& frame : r.frames) delivered.push_back(*frame);
+    CHECK(delivered.size() == 100 && parking.kept.empty());  // all taken back, none left parked
+    bool in_order = delivered.size() == saved.tso.size();
+    for (std::size_t k = 0; in_order && k < delivered.size(); ++k) in_order = delivered[k] == saved.tso[k].frame;
+    CHECK(in_order);
+    // Held receive-order messages park the same way; leaving gives up what is parked.
+    time.request(1, AdvanceKind::TimeAdvanceRequest, 300);
+    time.release();
+    for (int i = 0; i < 50; ++i) time.enqueue_receive_order(2, std::string(100, 'r'));
+    CHECK(!parking.kept.empty());
+    time.remove_federate(2);
+    CHECK(parking.forgotten == 1 && parking.kept.empty());
+}
+
+void spill_files() {
+    SpillBudget budget;
+    budget.limit = 1 << 20;
+    {
+        SpillFile fifo(budget);
+        CHECK(fifo.append("hello ") == 0 && fifo.append("world") == 6 && budget.used == 11);
+        std::string out;
+        CHECK(fifo.read(out, 8) == 8 && out == "hello wo" && fifo.size() == 3);
+        CHECK(fifo.read(out, 100) == 3 && out == "hello world");
+        CHECK(fifo.size() == 0 && budget.used == 0);  // drained: all given back
+        SpillFile parked(budget);
+        const auto a = parked.append("first"), b = parked.append("second");
+        std::string frame;
+        parked.read_at(b, 6, frame);
+        parked.release(6);
+        CHECK(frame == "second" && budget.used == 11);
+        frame.clear();
+        parked.read_at(a, 5, frame);
+        parked.release(5);
+        CHECK(frame == "first" && budget.used == 0);
+        fifo.append(std::string(600000, 'x'));
+        CHECK(throws<SpillError>([&] { parked.append(std::string(600000, 'y')); }, "is spent"));
+    }
+    CHECK(budget.used == 0);  // the files' disk goes with them
+    budget.directory = "/no/such/directory";
+    CHECK(throws<SpillError>([&] { SpillFile{budget}; }, "No such file or directory"));
+}
+
 }  // namespace
 
 int main() {
@@ -301,6 +391,8 @@ int main() {
         {"read_buffer", read_buffer},
         {"viewed_values", viewed_values},
         {"splices_gather", splices_gather},
+        {"time_parking", time_parking},
+        {"spill_files", spill_files},
     };
     for (const auto& [name, run] : cases) {
         const int before = failures;

@@ -1,6 +1,7 @@
 """The gateway's service-group state types on their own (tests/cpp/state_types_test.cpp, built with the
 sanitizers by ./scripts/test.sh): regions and their overlap, a federate's DDM state, attribute ownership,
-save/restore runs and files; a connection's read buffer, the values a federate decodes as views into it, and
+save/restore runs and files, held messages parked beyond a federate's share and the spill files; a
+connection's read buffer, the values a federate decodes as views into it, and
 the pieces of a stream with splices (wire/). The services built on them are tested through federates in the
 group's own test file (test_ddm.py, test_ownership.py, test_save_restore.py), the buffers by
 test_large_values.py."""
@@ -14,7 +15,8 @@ from pathlib import Path
 from support import ROOT
 
 CASES = ["regions_from_bounds", "regions_overlap", "federate_regions", "attribute_ownership",
-         "save_restore_runs", "save_restore_files", "read_buffer", "viewed_values", "splices_gather"]
+         "save_restore_runs", "save_restore_files", "read_buffer", "viewed_values", "splices_gather",
+         "time_parking", "spill_files"]
 
 
 def test_every_case_passes() -> None:

@@ -49,7 +49,7 @@ def test_status_reports_each_federates_time_state(inprocess_gateway: hlacore.Gat
         "enabling_regulation": False, "constrained": True,
         "asynchronous_delivery": False, "pending": {"request": "TAR", "time": 3.0}, "queued_tso": 0,
         "queued_ro": 0, "regions": 0, "lbts": 2.0, "output_bound": 4.0,
-        "updates_sent": 0, "interactions_sent": 1, "grants": 0,
+        "updates_sent": 0, "interactions_sent": 1, "grants": 0, "backlog": {"memory": 0, "disk": 0},
     }
     assert beta["pending"] is None and beta["queued_tso"] == 1 and beta["lbts"] == 4.0
     assert beta["output_bound"] == 2.0

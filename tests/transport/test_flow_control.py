@@ -156,10 +156,11 @@ def test_a_burst_of_class_update_requests_does_not_drop_the_owner(tmp_path: path
 
 
 def test_the_in_process_gateway_takes_the_same_flow_control_knobs(capfd: pytest.CaptureFixture[str]) -> None:
-    """hlacore.Gateway(client_budget=..., stall_timeout=...) are rtig's --client-budget and --stall-timeout:
-    a subscriber that never reads holds back its publisher, then is dropped with its budget in the reason."""
+    """hlacore.Gateway(client_budget=..., stall_timeout=..., disk_budget=0) are rtig's --client-budget,
+    --stall-timeout and --disk-budget: without spilling, a subscriber that never reads holds back its
+    publisher, then is dropped with its budget in the reason."""
     budget = 1 << 16
-    with hlacore.Gateway(port=0, client_budget=budget, stall_timeout=1.0) as gw, \
+    with hlacore.Gateway(port=0, client_budget=budget, stall_timeout=1.0, disk_budget=0) as gw, \
             legit_federation(gw.address) as legit:
         robot, _, location = legit.handles()
         with raw_client(gw.address, rcvbuf=4096) as sloth:

@@ -325,12 +325,13 @@ class Counter(rti.FederateAmbassador):
 
 
 def test_client_that_never_reads_holds_back_its_publisher_then_is_dropped(tmp_path: pathlib.Path) -> None:
-    """A subscriber that never reads: once 8 MiB (--client-budget) are held for it the publisher is no longer
+    """Without spilling (--disk-budget 0; tests/transport/test_paused_federate.py spills), a subscriber that
+    never reads: once 8 MiB (--client-budget) are held for it the publisher is no longer
     read (its updates wait in its socket, its calls block), and after 2 s (--stall-timeout) in which the
     subscriber took nothing it is dropped (`not reading: ...`); then the publisher goes on and a reading
     subscriber gets every update. Nobody else is dropped."""
     budget = 8 << 20
-    with running_rtig(tmp_path, "--client-budget", str(budget), "--stall-timeout", "2") as server, \
+    with running_rtig(tmp_path, "--client-budget", str(budget), "--stall-timeout", "2", "--disk-budget", "0") as server, \
             legit_federation(server.address) as legit:
         robot, _, location = legit.handles()
         with raw_client(server.address, rcvbuf=4096) as sloth:

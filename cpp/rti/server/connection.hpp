@@ -48,6 +48,12 @@ struct Gateway::Connection {
     // at a time), then `tail`: what was written for the client meanwhile, kept behind them.
     std::deque<std::string> backlog;
     std::size_t backlog_bytes = 0;
+    // Spilling (server/spill.hpp): while the client is over its budget in memory, what is written for it goes
+    // through `tail` to this file, between the backlog and `tail` in the stream; `spill_failed` says why the
+    // connection is dropped at the end of the turn when spilling failed.
+    std::unique_ptr<SpillFile> spill;
+    std::unique_ptr<SpillFile> parked;  // the messages time management holds for it, beyond its share (FrameParking)
+    std::string spill_failed;
     std::string tail;
     bool greeted = false;
     std::string challenge;  // sent in the Welcome while the gateway has a secret and the client has not answered

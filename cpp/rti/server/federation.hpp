@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -67,10 +68,14 @@ public:
     // LBTS or the minimum next event time of a federate (HLA 1.3 §8.16, §8.18).
     double query_time(FederateHandle federate, wire::TimeQuery which);
     // Appends this federation's state as a JSON object (federates, time state, objects, sync points), with
-    // every object instance and its owners if `instances`.
-    void write_status(std::string& json, bool instances);
+    // every object instance and its owners if `instances`; `more` appends a federate's fields the federation
+    // does not know (the gateway's: its connection's backlog).
+    void write_status(std::string& json, bool instances,
+                      const std::function<void(FederateHandle, std::string&)>& more = {});
     // What waits in the federation for `federate` until its own time state moves (flow control counts it).
     std::size_t held_bytes(FederateHandle federate) const { return time_.held_bytes(federate); }
+    // Where the messages time management holds for a federate go beyond `above` bytes (the gateway's spill).
+    void attach_parking(FrameParking* parking, std::size_t above) { time_.attach_parking(parking, above); }
 
     // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/server/save_restore.cpp, docs/save-restore.md) ----
     // Where saves are written as files ("" keeps them in memory only).

@@ -119,6 +119,7 @@ void Gateway::serve(Connection& c, const wire::ResignFederation& m) {
         c.federation->outbox.peers_.erase(c.federate);
         c.federation = nullptr;
         c.federate = 0;
+        memory_freed_ = true;
     });
 }
 

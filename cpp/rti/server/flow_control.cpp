@@ -4,6 +4,7 @@
 #include "rti/server/gateway.hpp"
 #include "rti/server/gateway_internal.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +37,97 @@ void Gateway::release_large_buffers() {
     // Once per burst of large frames, when all is given back: the decoded values were freed below the top of
     // the heap, where glibc keeps up to twice the largest for reuse (tests/transport/test_large_values.py measures it).
     if (!in_use) malloc_trim(0);
+#endif
+}
+
+bool Gateway::spill(Connection& c) {
+    if (!c.spill_failed.empty()) return true;  // dropped at the end of the turn: what it is sent goes nowhere
+    // A client whose own requests made more than it reads is held back instead (it asks more than it reads);
+    // so are the senders to one that is taking what it is sent, only slower: waiting for it a few
+    // milliseconds costs less than writing to disk and reading back (a burst of camera frames).
+    if (!spill_budget_.on() || (!c.spill && (c.fd == serving_ || !stopped_reading(c))))
+        return held_for(c) <= options_.client_budget;
+    try {
+        if (!c.spill) {
+            c.spill = std::make_unique<SpillFile>(spill_budget_);
+            // The stream is out, backlog, spill, tail: what `out` holds beyond what the client takes next (past
+            // the splices, which point into it, and what the trace has seen) and the backlog go to the file first.
+            const std::size_t keep = std::max({c.out_offset + spill_keep(), c.splices.empty() ? 0 : c.splices.back().at, c.traced});
+            if (keep < c.out.size()) {
+                c.spill->append(std::string_view(c.out).substr(keep));
+                c.out.resize(keep);
+            }
+            for (const auto& frame : c.backlog) c.spill->append(frame);
+            c.backlog.clear();
+            c.backlog_bytes = 0;
+            log_spilling(c, "is not reading: what it is sent", c.spill->directory());
+        }
+        c.spill->append(c.tail);
+        c.tail.clear();
+        if (c.tail.capacity() > kKeptBufferBytes) c.tail.shrink_to_fit();
+    } catch (const SpillError& e) {
+        spill_failed(c, e.what());
+        return true;
+    }
+    return held_for(c) <= options_.client_budget;
+}
+
+std::optional<std::uint64_t> Gateway::park(Connection& c, std::string_view frame) {
+    if (!c.spill_failed.empty()) return std::nullopt;
+    try {
+        if (!c.parked) {
+            c.parked = std::make_unique<SpillFile>(spill_budget_);
+            log_spilling(c, "is not advancing: what time management holds for it", c.parked->directory());
+        }
+        return c.parked->append(frame);
+    } catch (const SpillError& e) {
+        spill_failed(c, e.what());
+        return std::nullopt;
+    }
+}
+
+std::string Gateway::unpark(Connection& c, std::uint64_t ticket, std::uint32_t size, bool keep) {
+    std::string frame;
+    if (!c.parked || !c.spill_failed.empty()) return frame;  // dropped at the end of the turn
+    try {
+        c.parked->read_at(ticket, size, frame);
+        if (!keep) c.parked->release(size);
+    } catch (const SpillError& e) {
+        spill_failed(c, e.what());
+        frame.clear();
+    }
+    return frame;
+}
+
+void Gateway::log_spilling(const Connection& c, const char* what, const std::string& directory) {
+    log(c.peer + (c.federation ? " (federate " + std::to_string(c.federate) + " of '" + federation_name(c) + "')" : "") +
+        " " + what + " beyond " + std::to_string(options_.client_budget) + " bytes is spilled to " + directory +
+        " until it catches up (docs/robustness.md)");
+}
+
+void Gateway::spill_failed(Connection& c, const std::string& why) {
+    if (!c.spill_failed.empty()) return;
+    c.spill_failed = why;
+    spill_failed_.push_back(c.fd);
+}
+
+void Gateway::drop_failed_spills() {
+    std::vector<int> failed;
+    failed.swap(spill_failed_);
+    for (int fd : failed) {
+        auto it = connections_.find(fd);
+        if (it != connections_.end())
+            close(fd, "not reading, and its backlog could not be spilled: " + it->second->spill_failed);
+    }
+}
+
+void Gateway::give_memory_back() {
+    const auto now = Clock::now();
+    if (now - memory_given_back_at_ < std::chrono::seconds(1)) return;
+    memory_freed_ = false;
+    memory_given_back_at_ = now;
+#if defined(__GLIBC__)
+    malloc_trim(0);
 #endif
 }
 
@@ -90,6 +182,9 @@ void Gateway::service_paused() {
         if (it == connections_.end()) continue;
         Connection& p = *it->second;
         auto blocker = connections_.find(p.blocked_by);
+        // One that has stopped reading since is spilled (then p goes on).
+        if (blocker != connections_.end() && !blocker->second->spill && stopped_reading(*blocker->second))
+            spill(*blocker->second);
         if (blocker != connections_.end() && held_for(*blocker->second) > options_.client_budget / 2) {
             Connection& c = *blocker->second;
             if (!p.pause_logged && now - p.paused_since > std::chrono::seconds(10)) {
@@ -122,6 +217,10 @@ void Gateway::drop_stalled_readers() {
     std::vector<std::pair<int, std::string>> stalled;
     for (const auto& [fd, c] : connections_) {
         const double idle = std::chrono::duration<double>(now - c->progress_at).count();
+        // One that spills is paused, not dead (keepalive tells): dropped when its spill fails, unless what
+        // time management holds for it keeps it over budget.
+        const std::size_t time_held = c->federation ? c->federation->federation.held_bytes(c->federate) : 0;
+        if (c->spill && time_held <= options_.client_budget / 2) continue;
         if (c->write_armed && idle > options_.stall_timeout_s && held_for(*c) > options_.client_budget / 2)
             stalled.emplace_back(fd, "not reading: " + std::to_string(c->unsent()) +
                                          " bytes queued, none taken for " + std::to_string(static_cast<int>(idle)) +

@@ -56,13 +56,16 @@ void Gateway::serve_frames(Connection& c) {
                 large_buffers_kept_ = true;
             }
             over_budget_ = -1;
+            serving_ = fd;
             on_frame(c, frame);
+            serving_ = -1;
             if (!connections_.count(fd)) return;
             if (!c.in.empty()) c.partial_since = Clock::now();
             pause_if_over_budget(c);
             if (!connections_.count(fd)) return;
         }
     } catch (const wire::WireError& e) {
+        serving_ = -1;
         close(fd, std::string("protocol error: ") + e.what());
         return;
     }
@@ -141,6 +144,7 @@ void Gateway::serve_frame(Connection& c, const wire::Frame& frame) {
 template <class M>
 void Gateway::serve_message(Connection& c, const M& m) {
     if ((recorder_ || trace_) && c.federation) tap(c, m);
+    if constexpr (std::is_same_v<M, wire::DeleteObject>) memory_freed_ = true;
     serve(c, m);
 }
 

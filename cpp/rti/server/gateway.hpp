@@ -19,6 +19,7 @@
 #include "rti/server/federation.hpp"
 #include "rti/tls.hpp"
 #include "rti/server/recorder.hpp"
+#include "rti/server/spill.hpp"
 #include "rti/trace.hpp"
 #include "rti/wire/datagram.hpp"
 
@@ -59,12 +60,16 @@ struct GatewayOptions {
     std::vector<std::string> fom_path;  // searched for FED files a client could not read itself
     bool verbose = false;
     double partial_frame_timeout_s = 10.0;     // a half-sent frame older than this drops the connection
-    // Flow control (docs/robustness.md): the bytes the gateway holds for one client (its output queue and
-    // the messages time management keeps for it) above which the clients sending to it are paused (not read)
-    // until it is below half of it again; a client over its budget that takes nothing from its queue for
+    // Flow control (docs/robustness.md): the bytes the gateway holds in memory for one client (its output
+    // queue and the messages time management keeps for it). Beyond it, what is written for the client is
+    // spilled to a file in spill_dir (server/spill.hpp), all such files within disk_budget; without spilling
+    // (disk_budget 0), or for what time management holds, the clients sending to it are paused (not read)
+    // until it is below half of it again, and a client over its budget that takes nothing from its queue for
     // stall_timeout_s is dropped (0: never).
     std::size_t client_budget = 64u << 20;
     double stall_timeout_s = 30.0;
+    std::string spill_dir;  // "": $TMPDIR, else /tmp
+    std::uint64_t disk_budget = std::uint64_t{1} << 30;
     std::uint32_t max_frame_bytes = wire::kMaxFrameBytes;  // announced in the Welcome; larger frames are refused
     std::string save_dir;  // federation saves are written here as files ("": kept in memory only)
     // Non-empty: every client proves it knows this secret (challenge-response, rti/auth.hpp) before anything
@@ -169,6 +174,9 @@ private:
     // than the copy). Once the large frames stop, the next turn of the loop gives them all back.
     bool keeping_large_buffers() const;
     void release_large_buffers();
+    // After federates resign and objects are deleted: the heap glibc keeps below its top goes back to the
+    // system, at most once a second, so that a long-running gateway returns to near its idle size.
+    void give_memory_back();
     void mark_dirty(Connection& c);
     // Flow control: what the gateway holds for c, c stops being read while `consumer` is over its budget,
     // and each turn of the loop resumes, keeps alive or drops what waits.
@@ -179,6 +187,22 @@ private:
     void update_events(Connection& c);
     void service_paused();
     void drop_stalled_readers();
+    // Moves what c holds in memory beyond what it takes next to its spill file (made now if need be): true
+    // when c is within its budget then (or is being dropped, its spill having failed), false when what keeps
+    // it over is held by time management, which does not spill.
+    bool spill(Connection& c);
+    void spill_failed(Connection& c, const std::string& why);  // c is dropped at the end of the turn
+    // FrameParking for c's federate (ConnectionOutbox): nullopt, or "", with c dropped, when its file fails.
+    std::optional<std::uint64_t> park(Connection& c, std::string_view frame);
+    std::string unpark(Connection& c, std::uint64_t ticket, std::uint32_t size, bool keep);
+    void log_spilling(const Connection& c, const char* what, const std::string& directory);
+    // Whether c has taken nothing of what waits for it for kStoppedReading: a client that is reading, only
+    // slower than its senders, holds them back; one that stopped (at a breakpoint) spills.
+    bool stopped_reading(const Connection& c) const;
+    static constexpr std::chrono::milliseconds kStoppedReading{50};
+    // While c spills: what it may hold in `out` and in `tail` each (a quarter of its budget, at most 256 KiB).
+    std::size_t spill_keep() const { return std::min<std::size_t>(256u << 10, options_.client_budget / 4); }
+    void drop_failed_spills();
     // After serving a frame of `producer`: pauses it when a client it sent to is still over its budget once
     // flushed.
     void pause_if_over_budget(Connection& producer);
@@ -213,9 +237,14 @@ private:
     std::map<std::string, std::unique_ptr<FederationEntry>> federations_;
     std::vector<int> dirty_;
     std::vector<int> paused_;
+    SpillBudget spill_budget_;
+    std::vector<int> spill_failed_;  // connections whose spill failed, dropped at the end of the turn
     int over_budget_ = -1;  // a client found over its budget while the current frame was served
+    int serving_ = -1;      // the client whose frame is being served
     std::chrono::steady_clock::time_point large_frame_at_{};  // when the last frame above kKeptBufferBytes came
     bool large_buffers_kept_ = false;  // since then, buffers above it may be kept for the next one
+    bool memory_freed_ = false;        // a resign or a deletion since the last give_memory_back()
+    std::chrono::steady_clock::time_point memory_given_back_at_{};
     std::unique_ptr<MessageTrace> trace_;
     std::unique_ptr<Recorder> recorder_;
     // While a frame of at least wire::kSplicedValueBytes is served (on_frame): the frame and the read block it

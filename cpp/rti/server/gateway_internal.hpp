@@ -26,7 +26,7 @@ constexpr std::chrono::seconds kLargeFrameGrace{1};
 // Released frames beyond this go through a connection's backlog rather than straight into its buffer.
 constexpr std::size_t kPacedBytes = 256u << 10;
 
-class Gateway::ConnectionOutbox : public Outbox {
+class Gateway::ConnectionOutbox : public Outbox, public FrameParking {
 public:
     explicit ConnectionOutbox(Gateway& gateway) : gateway_(gateway) {}
     std::string& buffer(FederateHandle federate) override {
@@ -41,6 +41,10 @@ public:
         Connection& c = *it->second;
         std::size_t total = 0;
         for (const auto& frame : frames) total += frame->size();
+        if (c.spill) {  // behind what is spilled: through `tail`, which mark_dirty() spills
+            for (const auto& frame : frames) c.tail.append(*frame);
+            return gateway_.mark_dirty(c);
+        }
         if (c.backlog.empty() && total < kPacedBytes) return Outbox::send_frames(federate, frames);
         if (!c.tail.empty()) {
             c.backlog_bytes += c.tail.size();
@@ -66,6 +70,18 @@ public:
         auto it = peers_.find(federate);
         if (it != peers_.end()) gateway_.mark_dirty(*it->second);
     }
+    // The messages time management holds for a federate beyond its share go to its connection's file.
+    std::optional<std::uint64_t> park(std::uint32_t federate, std::string_view frame) override {
+        Connection* c = peer(federate);
+        return c ? gateway_.park(*c, frame) : std::nullopt;
+    }
+    std::string unpark(std::uint32_t federate, std::uint64_t ticket, std::uint32_t size, bool keep) override {
+        Connection* c = peer(federate);
+        return c ? gateway_.unpark(*c, ticket, size, keep) : std::string();
+    }
+    void forget(std::uint32_t federate) override {
+        if (Connection* c = peer(federate)) c->parked.reset();
+    }
     void rehandle(const std::map<FederateHandle, FederateHandle>& new_handles) override {
         std::unordered_map<FederateHandle, Connection*> peers;
         for (auto& [old_handle, c] : peers_) {
@@ -78,14 +94,18 @@ public:
     std::unordered_map<FederateHandle, Connection*> peers_;
 
 private:
+    Connection* peer(FederateHandle federate) {
+        auto it = peers_.find(federate);
+        return it == peers_.end() ? nullptr : it->second;
+    }
     template <class M>
     bool spliced(FederateHandle federate, const M& m) {
         auto it = peers_.find(federate);
         if (!gateway_.splice_source_.block || it == peers_.end()) return false;
         Connection& c = *it->second;
         // TLS encrypts from one buffer, the trace reads the frames in `out`, and output() is `tail` while
-        // there is a backlog.
-        if (c.ssl || gateway_.trace_ || !c.backlog.empty()) return false;
+        // there is a backlog or a spill.
+        if (c.ssl || gateway_.trace_ || &gateway_.output(c) != &c.out) return false;
         gateway_.mark_dirty(c);
         // The large values that lie in the frame being served are spliced in, referenced rather than copied.
         const SpliceSource& source = gateway_.splice_source_;
@@ -124,24 +144,32 @@ private:
 
 struct Gateway::FederationEntry {
     FederationEntry(Gateway& gw, std::string name, fom::Fom fom, std::string fed_name, std::string fed_text)
-        : outbox(gw), federation(std::move(name), std::move(fom), std::move(fed_name), std::move(fed_text), outbox) {}
+        : outbox(gw), federation(std::move(name), std::move(fom), std::move(fed_name), std::move(fed_text), outbox) {
+        if (gw.spill_budget_.on()) federation.attach_parking(&outbox, gw.options_.client_budget / 4);
+    }
     ConnectionOutbox outbox;
     Federation federation;
     std::unique_ptr<FederationRecording> recording;  // when the gateway records: what its outbox sends
 };
 
-inline std::string& Gateway::output(Connection& c) { return c.backlog.empty() ? c.out : c.tail; }
+inline std::string& Gateway::output(Connection& c) { return c.backlog.empty() && !c.spill ? c.out : c.tail; }
 
 inline std::size_t Gateway::held_for(const Connection& c) const {
     const std::size_t queued = c.unsent() + c.backlog_bytes + c.tail.size();
     return c.federation ? queued + c.federation->federation.held_bytes(c.federate) : queued;
+}
+inline bool Gateway::stopped_reading(const Connection& c) const {
+    return !c.idle && Clock::now() - c.progress_at >= kStoppedReading;
 }
 inline void Gateway::mark_dirty(Connection& c) {
     if (!c.dirty) {
         c.dirty = true;
         dirty_.push_back(c.fd);
     }
-    if (held_for(c) > options_.client_budget) over_budget_ = c.fd;
+    // Over its budget, or spilling with a tail worth writing: to disk, else its senders are paused.
+    if ((c.spill && c.tail.size() >= spill_keep()) || held_for(c) > options_.client_budget) {
+        if (!spill(c)) over_budget_ = c.fd;
+    }
 }
 template <class F>
 void Gateway::answer(Connection& c, std::uint32_t request, F&& serve_request) {

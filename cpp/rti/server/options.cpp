@@ -9,6 +9,13 @@ namespace {
 using O = GatewayOptions;
 using Text = const std::string&;
 
+// A row whose value is a non-empty text kept as it is.
+template <std::string GatewayOptions::*member>
+Option<GatewayOptions> text_option(const char* flag, const char* keyword, const char* metavar, const char* help) {
+    return {flag, keyword, nullptr, metavar, false, [](O& o, Text t) { o.*member = not_empty(t); },
+            [](const O& o) { return o.*member; }, help};
+}
+
 std::string text(double v) {
     std::string s = std::to_string(v);
     s.erase(s.find_last_not_of('0') + 1);
@@ -20,17 +27,15 @@ std::string text(double v) {
 
 const Options<GatewayOptions>& gateway_options() {
     static const Options<GatewayOptions> table = {
-        {"--host", "host", nullptr, "HOST", false, [](O& o, Text t) { o.host = not_empty(t, "an address"); },
-         [](const O& o) { return o.host; }, "address to listen on"},
+        text_option<&O::host>("--host", "host", "HOST", "address to listen on"),
         {"--port", "port", nullptr, "PORT", false,
          [](O& o, Text t) { o.port = static_cast<std::uint16_t>(whole_number(t, 0, 65535, "")); },
          [](const O& o) { return std::to_string(o.port); }, "TCP port, 0 picks a free one"},
-        {"--unix", "unix", nullptr, "PATH", false, [](O& o, Text t) { o.unix_path = not_empty(t, "a path"); },
-         [](const O& o) { return o.unix_path; },
+        text_option<&O::unix_path>("--unix", "unix", "PATH",
          "also listen on a Unix socket at PATH, for federates on this host (address unix:PATH): less CPU per "
          "message than TCP, no datagrams, no TLS; the file is its owner's only and is removed when the gateway "
-         "ends (docs/networking.md)"},
-        {"--fom-path", "fom_path", nullptr, "DIR", true, [](O& o, Text t) { o.fom_path.push_back(not_empty(t, "a directory")); },
+         "ends (docs/networking.md)"),
+        {"--fom-path", "fom_path", nullptr, "DIR", true, [](O& o, Text t) { o.fom_path.push_back(not_empty(t)); },
          nullptr, "where to look for FED files a federate could not read itself"},
         {"--frame-timeout", "frame_timeout", nullptr, "S", false,
          [](O& o, Text t) { o.partial_frame_timeout_s = number_above(t, 0, false, "seconds"); },
@@ -39,12 +44,23 @@ const Options<GatewayOptions>& gateway_options() {
         {"--client-budget", "client_budget", nullptr, "B", false,
          [](O& o, Text t) { o.client_budget = whole_number(t, kMinClientBudget, std::uint64_t{1} << 48, "bytes"); },
          [](const O& o) { return std::to_string(o.client_budget); },
-         "bytes held for one client (its output queue, the messages time management keeps for it) above which "
-         "the clients sending to it are no longer read until it takes half of them (docs/robustness.md)"},
+         "bytes held in memory for one client (its output queue, the messages time management keeps for it): "
+         "beyond it its output is spilled to disk (--spill-dir), or, for what time management keeps or without "
+         "spilling, the clients sending to it are no longer read until it takes half of them (docs/robustness.md)"},
         {"--stall-timeout", "stall_timeout", nullptr, "S", false,
          [](O& o, Text t) { o.stall_timeout_s = number_above(t, 0, true, "seconds"); },
          [](const O& o) { return text(o.stall_timeout_s); },
-         "drop a client over its budget that takes nothing for S seconds (0: never)"},
+         "drop a client over its budget in memory that takes nothing for S seconds (0: never); one that spills "
+         "is dropped only when its peer is gone (TCP keepalive) or the disk budget is spent"},
+        text_option<&O::spill_dir>("--spill-dir", "spill_dir", "DIR",
+         "where what a client does not read beyond its budget (a federate paused in a debugger) is spilled, in "
+         "unnamed files that never outlive the gateway ($TMPDIR, else /tmp, by default; docs/robustness.md)"),
+        {"--disk-budget", "disk_budget", nullptr, "B", false,
+         [](O& o, Text t) { o.disk_budget = whole_number(t, 0, std::uint64_t{1} << 50, "bytes"); },
+         [](const O& o) { return std::to_string(o.disk_budget); },
+         "bytes all spill files may take together: a client whose backlog would go beyond is dropped, saying so "
+         "(0: no spilling; the clients sending to one over its budget are then no longer read until it takes "
+         "half of it)"},
         {"--max-frame", "max_frame", nullptr, "B", false,
          [](O& o, Text t) { o.max_frame_bytes = static_cast<std::uint32_t>(whole_number(t, kMinMaxFrame, kMaxMaxFrame, "bytes")); },
          [](const O& o) { return std::to_string(o.max_frame_bytes); },
@@ -70,26 +86,21 @@ const Options<GatewayOptions>& gateway_options() {
          nullptr,
          "creating, joining or destroying federation NAME needs a proof of the secret in FILE, whatever the "
          "client's connection secret (docs/networking.md)"},
-        {"--tls-cert", "tls_cert", nullptr, "FILE", false, [](O& o, Text t) { o.tls_cert = not_empty(t, "a file"); },
-         [](const O& o) { return o.tls_cert; },
+        text_option<&O::tls_cert>("--tls-cert", "tls_cert", "FILE",
          "every connection is TLS (1.2 at least, 1.3 preferred) with the certificate (chain) in this PEM file "
          "and the key of --tls-key; clients without TLS are refused. No datagrams are then offered: best-effort "
-         "messages go over the encrypted TCP stream (docs/networking.md)"},
-        {"--tls-key", "tls_key", nullptr, "FILE", false, [](O& o, Text t) { o.tls_key = not_empty(t, "a file"); },
-         [](const O& o) { return o.tls_key; }, "the private key of --tls-cert, a PEM file readable by its owner only"},
-        {"--save-dir", "save_dir", nullptr, "DIR", false, [](O& o, Text t) { o.save_dir = not_empty(t, "a directory"); },
-         [](const O& o) { return o.save_dir; },
+         "messages go over the encrypted TCP stream (docs/networking.md)"),
+        text_option<&O::tls_key>("--tls-key", "tls_key", "FILE", "the private key of --tls-cert, a PEM file readable by its owner only"),
+        text_option<&O::save_dir>("--save-dir", "save_dir", "DIR",
          "write federation saves to DIR (created if missing) and restore from there, also after a restart; "
-         "without it saves live in memory only (docs/save-restore.md)"},
-        {"--trace", "trace", nullptr, "FILE", false, [](O& o, Text t) { o.trace_path = not_empty(t, "a file"); },
-         [](const O& o) { return o.trace_path; },
+         "without it saves live in memory only (docs/save-restore.md)"),
+        text_option<&O::trace_path>("--trace", "trace", "FILE",
          "write when each update/interaction arrived and each reflection of it left, on the host's monotonic "
-         "clock, as CSV (docs/robot.md, delay decomposition)"},
-        {"--record", "record", nullptr, "FILE", false, [](O& o, Text t) { o.record_path = not_empty(t, "a file"); },
-         [](const O& o) { return o.record_path; },
+         "clock, as CSV (docs/robot.md, delay decomposition)"),
+        text_option<&O::record_path>("--record", "record", "FILE",
          "record every federation into FILE (MCAP): the FOM, joins, registrations, updates, interactions, "
          "requests and callbacks with their times, for python -m hlacore.replay and Foxglove; complete once the "
-         "gateway stops (docs/record-replay.md)"},
+         "gateway stops (docs/record-replay.md)"),
         {"--busy-poll", "busy_poll_us", nullptr, "US", false,
          [](O& o, Text t) { o.busy_poll_us = busy_poll_micros(t); },
          [](const O& o) { return std::to_string(o.busy_poll_us); },

@@ -94,6 +94,8 @@ EventLoop::Ready EventLoop::wait(int timeout_ms, std::chrono::microseconds spin,
     return {ready_, ready_ + n};
 }
 Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
+    spill_budget_.directory = options_.spill_dir;
+    spill_budget_.limit = options_.disk_budget;
     if (options_.max_datagram != 0 && (options_.max_datagram < kMinMaxDatagram || options_.max_datagram > wire::kMaxDatagramLimit))
         throw std::invalid_argument("max_datagram must be 0 or between " + std::to_string(kMinMaxDatagram) + " and " +
                                     std::to_string(wire::kMaxDatagramLimit) + " bytes, not " +
@@ -188,8 +190,10 @@ void Gateway::run() {
         const bool wrote = writes_ != writes_before_wait_;  // answers went out: their readers may want this core
         writes_before_wait_ = writes_;
         const EventLoop::Ready events =
-            loop_.wait(partial_pending || writes_pending || !paused_.empty() || recording_pending || large_buffers_kept_
-                           ? 250 : -1,
+            // While senders wait, soon again: their consumer may have stopped reading, and spill (flow_control.cpp).
+            loop_.wait(!paused_.empty() ? 20
+                       : partial_pending || writes_pending || recording_pending || large_buffers_kept_ ? 250
+                       : memory_freed_ ? 1000 : -1,
                        std::chrono::microseconds(options_.busy_poll_us), wrote);
         for (const epoll_event& ev : events) {
             const int fd = ev.data.fd;
@@ -217,10 +221,12 @@ void Gateway::run() {
             if (it != connections_.end() && (ev.events & EPOLLOUT)) mark_dirty(*it->second);
         }
         flush_dirty();
+        if (!spill_failed_.empty()) drop_failed_spills();
         if (!paused_.empty()) service_paused();
         if (partial_pending) drop_stale_partials();
         if (writes_pending) drop_stalled_readers();
         if (large_buffers_kept_ && !keeping_large_buffers()) release_large_buffers();
+        if (memory_freed_) give_memory_back();
         if (trace_) trace_->flush();
         if (recorder_) {
             recorder_->tick();
@@ -264,6 +270,13 @@ void Gateway::accept_all(int listen_fd) {
         } else {
             int one = 1;
             setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+            // A federate that does not read may be paused (spill.hpp) or gone: keepalive tells them apart while
+            // the connection is idle, its host answering for a stopped process and not for a vanished one.
+            int idle = 10, interval = 5, count = 3;
+            setsockopt(fd, SOL_SOCKET, SO_KEEPALIVE, &one, sizeof one);
+            setsockopt(fd, IPPROTO_TCP, TCP_KEEPIDLE, &idle, sizeof idle);
+            setsockopt(fd, IPPROTO_TCP, TCP_KEEPINTVL, &interval, sizeof interval);
+            setsockopt(fd, IPPROTO_TCP, TCP_KEEPCNT, &count, sizeof count);
             c->peer = describe_peer(addr);
         }
         if (tls_ && !c->local) {
@@ -342,7 +355,7 @@ void Gateway::flush(Connection& c) {
 // Moves released frames from the backlog into the output buffer while it holds less than kPacedBytes,
 // then what was written behind them.
 void Gateway::move_backlog(Connection& c) {
-    if (c.backlog.empty()) return;
+    if (c.backlog.empty() && !c.spill) return;
     if (c.out_offset == c.out.size()) {
         c.drop_sent();
         c.traced = 0;
@@ -352,18 +365,27 @@ void Gateway::move_backlog(Connection& c) {
         c.backlog_bytes -= c.backlog.front().size();
         c.backlog.pop_front();
     }
-    if (c.backlog.empty()) {
-        c.out.append(c.tail);
-        std::string().swap(c.tail);
+    if (!c.backlog.empty()) return;
+    if (c.spill) {  // then what was spilled, read back as the client takes what is in memory
+        if (!c.spill_failed.empty()) return;
+        try {
+            if (c.unsent() < spill_keep()) c.spill->read(c.out, spill_keep() - c.unsent());
+        } catch (const SpillError& e) {
+            spill_failed(c, e.what());
+            return;
+        }
+        if (c.spill->size() > 0) return;
+        c.spill.reset();
     }
+    c.out.append(c.tail);
+    std::string().swap(c.tail);
 }
 
 void Gateway::refill(Connection& c) {
     move_backlog(c);
     if (trace_ && c.federation && c.traced < c.out.size()) {
-        trace_->sending(c.federation->federation.name(), c.federate,
-                        std::string_view(c.out).substr(c.traced), MessageTrace::now_ns());
-        c.traced = c.out.size();
+        c.traced += trace_->sending(c.federation->federation.name(), c.federate,
+                                    std::string_view(c.out).substr(c.traced), MessageTrace::now_ns());
     }
 }
 

@@ -30,7 +30,8 @@ const char* request_name(AdvanceKind kind) {
 
 }  // namespace
 
-void Federation::write_status(std::string& out, bool instances) {
+void Federation::write_status(std::string& out, bool instances,
+                              const std::function<void(FederateHandle, std::string&)>& more) {
     out += "{\"name\":";
     json_string(out, name_);
     out += ",\"fed\":";
@@ -72,6 +73,7 @@ void Federation::write_status(std::string& out, bool instances) {
         out += ",\"updates_sent\":" + std::to_string(f.updates_sent);
         out += ",\"interactions_sent\":" + std::to_string(f.interactions_sent);
         out += ",\"grants\":" + std::to_string(f.grants);
+        if (more) more(t.federate, out);
         out += '}';
     });
     write_save_status(out);
@@ -109,9 +111,20 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
         for (auto& [name, entry] : federations_) {
             if (!first) json += ',';
             first = false;
-            entry->federation.write_status(json, m.instances);
+            // Each federate's backlog: the bytes held for it in memory and spilled to disk (flow_control.cpp).
+            const auto& peers = entry->outbox.peers_;  // (clang's C++17 lambdas take no structured bindings)
+            entry->federation.write_status(json, m.instances, [&](FederateHandle f, std::string& out) {
+                const auto peer = peers.find(f);
+                if (peer == peers.end()) return;
+                const Connection& fc = *peer->second;
+                out += ",\"backlog\":{\"memory\":" + std::to_string(held_for(fc)) +
+                       ",\"disk\":" + std::to_string((fc.spill ? fc.spill->size() : 0) + (fc.parked ? fc.parked->size() : 0)) + '}';
+            });
         }
-        json += "],\"datagrams\":";
+        json += "],\"spill\":{\"directory\":";
+        json_string(json, spill_budget_.on() ? SpillFile::directory_for(spill_budget_) : "");
+        json += ",\"budget\":" + std::to_string(spill_budget_.limit) + ",\"used\":" + std::to_string(spill_budget_.used) + '}';
+        json += ",\"datagrams\":";
         write_datagram_status(json);
         write_process_status(json);
         events_.write_after(m.events_after, json);

@@ -47,6 +47,7 @@ void TimeManager::add_federate(std::uint32_t f) { index(f, &federates_[f]); }
 
 void TimeManager::remove_federate(std::uint32_t f) {
     changed_ = true;
+    if (const State* s = find(f); s && s->parked) parking_->forget(f);
     federates_.erase(f);
     index(f, nullptr);
     regulating_.clear();  // it may point at the erased state until the next compute_bounds()
@@ -106,7 +107,7 @@ std::vector<std::string> TimeManager::disable_constrained(std::uint32_t f) {
     s.constrained = false;
     s.constrained_pending = false;
     std::vector<std::string> frames;
-    for (auto& m : s.tso_in_order()) frames.push_back(*m.frame);
+    for (auto& m : s.tso_in_order()) frames.push_back(*frame_of(f, m, false));
     s.tso.clear();
     s.tso_bytes = 0;
     return frames;
@@ -160,14 +161,15 @@ void TimeManager::enqueue_tso(std::uint32_t receiver, Time time, std::uint32_t s
     // The queue only matters to bounds and grants of a federate in NER/NERA/FQR: a message cannot make a
     // TAR grantable, and the lockstep's updates would otherwise each cost a bound computation.
     if (is_next_event(s.pending)) changed_ = true;
-    s.push_tso(Queued{time, sender, serial, std::move(frame)});
+    s.push_tso(Queued{time, sender, serial, hold(receiver, s, std::move(frame))});
 }
 
 void TimeManager::enqueue_receive_order(std::uint32_t receiver, std::string frame) {
     // Only called while the receiver holds receive-order messages: nothing becomes deliverable.
     State& s = state(receiver);
-    s.ro_bytes += weight(frame);
-    s.held_ro.push_back(std::move(frame));
+    Held held = hold(receiver, s, std::make_shared<std::string>(std::move(frame)));
+    s.ro_bytes += held.weight();
+    s.held_ro.push_back(std::move(held));
 }
 
 std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint64_t serial) {
@@ -177,12 +179,28 @@ std::vector<std::uint32_t> TimeManager::retract(std::uint32_t sender, std::uint6
         auto it = std::find_if(s.tso.begin(), s.tso.end(),
                                [&](const Queued& m) { return m.sender == sender && m.serial == serial; });
         if (it == s.tso.end()) continue;  // (sender, serial) names one message: at most once per queue
-        s.tso_bytes -= weight(*it->frame);
+        s.tso_bytes -= it->weight();
+        frame_of(f, std::move(*it), false);  // given up where it was parked
         s.tso.erase(it);
         std::make_heap(s.tso.begin(), s.tso.end(), later);
         removed_from.push_back(f);
     }
     return removed_from;
+}
+
+TimeManager::Held TimeManager::hold(std::uint32_t f, State& s, wire::SharedFrame frame) {
+    if (parking_ && s.tso_bytes + s.ro_bytes > park_above_) {
+        if (const auto ticket = parking_->park(f, *frame)) {
+            s.parked = true;
+            return Held{nullptr, *ticket, static_cast<std::uint32_t>(frame->size())};
+        }
+    }
+    return Held{std::move(frame)};
+}
+
+wire::SharedFrame TimeManager::frame_of(std::uint32_t f, Held held, bool keep) const {
+    if (!held.parked()) return std::move(held.frame);
+    return std::make_shared<std::string>(parking_->unpark(f, held.ticket, held.size, keep));
 }
 
 std::size_t TimeManager::held_bytes(std::uint32_t f) const {
@@ -304,7 +322,7 @@ bool TimeManager::try_grant(std::uint32_t f, State& s, Release& out) {
             case AdvanceKind::None: return false;
         }
     }
-    while (!s.tso.empty() && (deliver_all || s.tso.front().time <= deliver_up_to)) s.pop_tso(out.frames);
+    while (!s.tso.empty() && (deliver_all || s.tso.front().time <= deliver_up_to)) pop_tso(f, s, out.frames);
     s.time = grant;
     s.strict_after_grant = !is_available(s.pending) && !(s.lookahead > 0 && grant + s.lookahead > grant);
     // Conservative for newcomers: after FQR with zero lookahead too, start strictly above the grant.
@@ -323,7 +341,7 @@ bool TimeManager::try_complete_regulation(std::uint32_t f, State& s, Release& ou
     if (s.time < t0) {
         if (s.constrained) {
             if (!(t0 <= lbts_from_bounds(f))) return false;
-            while (!s.tso.empty() && s.tso.front().time <= t0) s.pop_tso(out.frames);
+            while (!s.tso.empty() && s.tso.front().time <= t0) pop_tso(f, s, out.frames);
         }
         s.time = t0;
         s.receives_above_time = false;  // messages at t0 itself may still come
@@ -352,7 +370,7 @@ std::vector<TimeManager::Release> TimeManager::release() {
         for (auto& [f, s] : federates_) {
             if (!s.held_ro.empty() && !holds_receive_order(f)) {
                 auto& frames = slot(f).frames;
-                for (auto& frame : s.held_ro) frames.push_back(std::make_shared<std::string>(std::move(frame)));
+                for (auto& held : s.held_ro) frames.push_back(frame_of(f, std::move(held), false));
                 s.held_ro.clear();
                 s.ro_bytes = 0;
             }
@@ -428,8 +446,8 @@ TimeManager::SavedState TimeManager::save_state(std::uint32_t f) const {
     // never lets a message into anyone's past).
     out.time.regulating = s.regulating && !s.enabling;
     out.time.promise = out.time.regulating ? s.promise : -kInfinity;
-    for (const auto& m : s.tso_in_order()) out.tso.push_back(TsoMessage{m.time, m.sender, m.serial, *m.frame});
-    out.held_ro = s.held_ro;
+    for (const auto& m : s.tso_in_order()) out.tso.push_back(TsoMessage{m.time, m.sender, m.serial, *frame_of(f, m, true)});
+    for (const auto& held : s.held_ro) out.held_ro.push_back(*frame_of(f, held, true));
     return out;
 }
 
@@ -437,14 +455,17 @@ void TimeManager::restore_state(std::uint32_t f, SavedState saved) {
     changed_ = true;
     regulating_.clear();  // recomputed by the next compute_bounds()
     State& s = federates_[f];
+    if (s.parked) parking_->forget(f);
     index(f, &s);
     s = State{};
     static_cast<wire::SavedTime&>(s) = saved.time;
     if (!s.regulating) s.promise = -kInfinity;
     for (auto& m : saved.tso)
-        s.push_tso(Queued{m.time, m.sender, m.serial, std::make_shared<std::string>(std::move(m.frame))});
-    s.held_ro = std::move(saved.held_ro);
-    for (const auto& frame : s.held_ro) s.ro_bytes += weight(frame);
+        s.push_tso(Queued{m.time, m.sender, m.serial, Held{std::make_shared<std::string>(std::move(m.frame))}});
+    for (auto& frame : saved.held_ro) {
+        s.held_ro.push_back(Held{std::make_shared<std::string>(std::move(frame))});
+        s.ro_bytes += s.held_ro.back().weight();
+    }
 }
 
 }  // namespace hlacore

@@ -20,6 +20,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -51,6 +52,21 @@ struct TimeFederateStatus : wire::SavedTime {
     Time output_bound = kInfinity;  // infinity when not regulating
 };
 
+// Where a federate's held messages go while it holds more than a threshold of them in memory (the gateway's
+// spill files, server/spill.hpp): the time manager keeps each message's place in its queue and a ticket, and
+// takes the bytes back when it releases the message. Attached at one point (TimeManager::attach_parking);
+// without it every held message stays in memory.
+class FrameParking {
+public:
+    virtual ~FrameParking() = default;
+    // Keeps `frame` for federate f and returns its ticket; nullopt when it cannot (it then stays in memory).
+    virtual std::optional<std::uint64_t> park(std::uint32_t f, std::string_view frame) = 0;
+    // The frame of `ticket`, `size` bytes, given up unless `keep` (a save reads it and keeps it).
+    virtual std::string unpark(std::uint32_t f, std::uint64_t ticket, std::uint32_t size, bool keep) = 0;
+    // Every frame kept for f is given up (it left, or a restore replaced its queues).
+    virtual void forget(std::uint32_t f) = 0;
+};
+
 class TimeManager {
 public:
     // What release() hands back for one federate. Delivery order: constrained_enabled, frames,
@@ -64,6 +80,11 @@ public:
     };
 
     void add_federate(std::uint32_t f);
+    // From now on a federate's held messages beyond `park_above` bytes in memory go to `parking`.
+    void attach_parking(FrameParking* parking, std::size_t park_above) {
+        parking_ = parking;
+        park_above_ = park_above;
+    }
     // Forgets the federate: it leaves the regulating set and its queues are dropped.
     void remove_federate(std::uint32_t f);
 
@@ -139,12 +160,20 @@ public:
     void restore_state(std::uint32_t f, SavedState saved);
 
 private:
+    // A held frame: in memory, or parked (FrameParking) as `size` bytes under `ticket`.
+    struct Held {
+        wire::SharedFrame frame;
+        std::uint64_t ticket = 0;
+        std::uint32_t size = 0;
+        bool parked() const { return !frame; }
+        std::size_t weight() const { return parked() ? kParkedWeight : TimeManager::weight(*frame); }
+    };
     // A message in a constrained federate's TSO queue, in delivery order by (time, sender, serial).
-    struct Queued {
+    struct Queued : Held {
+        Queued(Time t, std::uint32_t from, std::uint64_t n, Held held) : Held(std::move(held)), time(t), sender(from), serial(n) {}
         Time time = 0;
         std::uint32_t sender = 0;
         std::uint64_t serial = 0;
-        wire::SharedFrame frame;
     };
     static bool later(const Queued& a, const Queued& b) {
         return std::tie(a.time, a.sender, a.serial) > std::tie(b.time, b.sender, b.serial);
@@ -160,19 +189,21 @@ private:
         // The TSO queue: a heap with the earliest message at the front (a tree node per queued message was
         // 10 % of the gateway's CPU in a 32-federate lockstep).
         std::vector<Queued> tso;
-        std::vector<std::string> held_ro;
+        std::vector<Held> held_ro;
         std::size_t tso_bytes = 0;  // the weight() of the frames in tso
         std::size_t ro_bytes = 0;   // and in held_ro
+        bool parked = false;        // some of them are parked
         Time earliest_tso() const { return tso.empty() ? kInfinity : tso.front().time; }
-        // Moves the earliest TSO message into `frames`.
-        void pop_tso(std::vector<wire::SharedFrame>& frames) {
+        // Removes the earliest TSO message.
+        Held pop_tso() {
             std::pop_heap(tso.begin(), tso.end(), later);
-            tso_bytes -= weight(*tso.back().frame);
-            frames.push_back(std::move(tso.back().frame));
+            tso_bytes -= tso.back().weight();
+            Held held = std::move(tso.back());
             tso.pop_back();
+            return held;
         }
         void push_tso(Queued message) {
-            tso_bytes += weight(*message.frame);
+            tso_bytes += message.weight();
             tso.push_back(std::move(message));
             std::push_heap(tso.begin(), tso.end(), later);
         }
@@ -187,6 +218,14 @@ private:
     // What a held frame costs the gateway: its bytes and its queue entry (with the routing record of a
     // timestamped message), so that small messages are not held far beyond the budget.
     static std::size_t weight(const std::string& frame) { return frame.size() + 160; }
+    static constexpr std::size_t kParkedWeight = 64;
+    // A frame about to be held for f: parked when f holds more than park_above_ in memory and it can be.
+    Held hold(std::uint32_t f, State& s, wire::SharedFrame frame);
+    // The frame of a held message, taken back from the parking if it was parked (given up there unless `keep`).
+    wire::SharedFrame frame_of(std::uint32_t f, Held held, bool keep) const;
+    void pop_tso(std::uint32_t f, State& s, std::vector<wire::SharedFrame>& frames) {
+        frames.push_back(frame_of(f, s.pop_tso(), false));
+    }
 
     State& state(std::uint32_t f);
     const State& state(std::uint32_t f) const;
@@ -212,6 +251,8 @@ private:
     // Set by every change that can make something deliverable; release() does nothing otherwise, which
     // keeps the bound computation off the path of plain receive-order updates.
     bool changed_ = false;
+    FrameParking* parking_ = nullptr;
+    std::size_t park_above_ = 0;
 };
 
 }  // namespace hlacore

@@ -58,6 +58,7 @@ const COLUMNS = [
     ? `${f.pending.request} ${number(f.pending.time)} for ${f.pending.waiting.toFixed(1)} s` : "-"],
   ["lbts", "LBTS", (f) => number(f.lbts)],
   ["queued", "TSO / RO queued", (f) => `${f.queued_tso} / ${f.queued_ro}`],
+  ["backlog", "backlog memory / disk", (f) => f.backlog ? `${bytes(f.backlog.memory)} / ${bytes(f.backlog.disk)}` : "-"],
   ["grants", "grants/s", (f) => f.grants_per_second.toFixed(1)],
   ["updates", "updates/s", (f) => f.updates_per_second.toFixed(1)],
   ["state", "state", (f) => f.holding

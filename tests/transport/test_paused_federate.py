@@ -101,7 +101,7 @@ def test_a_subscriber_paused_for_a_minute_stalls_nobody(tmp_path: pathlib.Path, 
     assert seen["received"] == sent["sent"] and seen["in_order"] and seen["max_gap"] < 0.1, seen
     assert paused["received"] == sent["sent"] and paused["in_order"], paused
     assert got["disk"] > BUDGET  # it did not fit in memory
-    assert got["peak"] < BUDGET + 8 * MIB
+    assert got["peak"] < BUDGET + MIB  # the budget, reached before the spill begins, and allocator pages
     assert "spilled to" in got["log"] and not got["names"]
     assert not re.search(r"dropped .*\(federate", got["log"]), got["log"]
 

@@ -56,10 +56,12 @@ bool Gateway::spill(Connection& c) {
             if (keep < c.out.size()) {
                 c.spill->append(std::string_view(c.out).substr(keep));
                 c.out.resize(keep);
+                c.out.shrink_to_fit();  // the budget it grew to goes back to the system, not only out of use
             }
             for (const auto& frame : c.backlog) c.spill->append(frame);
             c.backlog.clear();
             c.backlog_bytes = 0;
+            memory_freed_ = true;  // and the heap is trimmed within a second (give_memory_back)
             log_spilling(c, "is not reading: what it is sent", c.spill->directory());
         }
         c.spill->append(c.tail);

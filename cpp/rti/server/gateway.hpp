@@ -243,7 +243,7 @@ private:
     int serving_ = -1;      // the client whose frame is being served
     std::chrono::steady_clock::time_point large_frame_at_{};  // when the last frame above kKeptBufferBytes came
     bool large_buffers_kept_ = false;  // since then, buffers above it may be kept for the next one
-    bool memory_freed_ = false;        // a resign or a deletion since the last give_memory_back()
+    bool memory_freed_ = false;        // a resign, a deletion or a spill since the last give_memory_back()
     std::chrono::steady_clock::time_point memory_given_back_at_{};
     std::unique_ptr<MessageTrace> trace_;
     std::unique_ptr<Recorder> recorder_;

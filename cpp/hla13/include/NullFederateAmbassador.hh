@@ -8,7 +8,7 @@
 class NullFederateAmbassador : public RTI::FederateAmbassador {
 public:
     NullFederateAmbassador() {}
-    ~NullFederateAmbassador() override {}
+    ~NullFederateAmbassador() noexcept(false) override {}
 
     void synchronizationPointRegistrationSucceeded(const char*) override {}
     void synchronizationPointRegistrationFailed(const char*) override {}

@@ -515,7 +515,9 @@ public:
     // ---- the callbacks (HLA 1.3 §4-8), delivered by RTIambassador::tick ----
     class RTI_EXPORT FederateAmbassador {
     public:
-        virtual ~FederateAmbassador() {}
+        // noexcept(false): CERTI's federates declare theirs `throw (RTI::FederateInternalError)`, which an
+        // implicitly noexcept destructor here would refuse as a looser exception specification.
+        virtual ~FederateAmbassador() noexcept(false) {}
 
         // Federation management
         virtual void synchronizationPointRegistrationSucceeded(const char* label) = 0;

@@ -1,5 +1,5 @@
 // A federate in the style of CERTI's HLA 1.3 examples (test/Billard): C++98 with exception specifications
-// on the callbacks, RTI_USES_STD_FSTREAM, NullFederateAmbassador, RTIfedTime, tick(min, max). It is kept
+// on the callbacks and the destructor, RTI_USES_STD_FSTREAM, NullFederateAmbassador, RTIfedTime, tick(min, max). It is kept
 // as such: tests/system/test_cpp_api.py builds it unchanged against hlacore (g++ -std=gnu++14
 // -DRTI_USES_STD_FSTREAM and the flags of python -m hlacore.config) and runs two of them.
 //
@@ -29,6 +29,7 @@ public:
     BilliardAmbassador()
         : granted(false), announced(false), synchronized(false), regulating(false), constrained(false),
           otherBall(0), reflections(0), bings(0), late(0), grantedTime(0.0) {}
+    virtual ~BilliardAmbassador() throw (RTI::FederateInternalError) {}
 
     bool granted, announced, synchronized, regulating, constrained;
     RTI::ObjectHandle otherBall;

@@ -21,10 +21,10 @@ class Gateway:
             rtia = hlacore.rti.RTIAmbassador(gw.address)
 
     The gateway listens from construction until :meth:`stop` (or the end of the ``with`` block). It logs
-    dropped connections to stderr. Each keyword is an ``rtig`` option, named in its entry below and checked by
-    the same table: a value out of range raises :class:`ValueError` naming it, a secret, certificate or key file that
-    cannot be used :class:`RuntimeError` saying why. With ``tls_cert``, :meth:`status` trusts that certificate
-    itself. The keywords:
+    dropped connections to stderr. Each keyword is an ``rtig`` option, named in its entry below and checked
+    by the same table: a value out of range raises :class:`ValueError` naming it, a secret, certificate or
+    key file that cannot be used :class:`RuntimeError` saying why. With ``tls_cert``, :meth:`status` trusts
+    that certificate itself. The keywords:
 
 """
 

@@ -42,10 +42,11 @@ void Gateway::release_large_buffers() {
 
 bool Gateway::spill(Connection& c) {
     if (!c.spill_failed.empty()) return true;  // dropped at the end of the turn: what it is sent goes nowhere
-    // A client whose own requests made more than it reads is held back instead (it asks more than it reads);
-    // so are the senders to one that is taking what it is sent, only slower: waiting for it a few
-    // milliseconds costs less than writing to disk and reading back (a burst of camera frames).
-    if (!spill_budget_.on() || (!c.spill && (c.fd == serving_ || !stopped_reading(c))))
+    // A client whose own requests made more than it reads is held back instead (it asks more than it reads:
+    // being served, or paused for its own queue); so are the senders to one that is taking what it is sent,
+    // only slower: waiting for it a few milliseconds costs less than writing to disk and reading back.
+    const bool own_requests = c.fd == serving_ || (c.paused && c.blocked_by == c.fd);
+    if (!spill_budget_.on() || (!c.spill && (own_requests || !stopped_reading(c))))
         return held_for(c) <= options_.client_budget;
     try {
         if (!c.spill) {

@@ -75,8 +75,11 @@ def pause_while_publishing(server: RtigProcess, seconds: float, pause: float, or
             finally:
                 paused.send_signal(signal.SIGCONT)
             sent = publisher.read_json(seconds + 60)
+            ended = [publisher.wait(30)]  # resigned and gone before leaving the block (which kills)
         seen = watcher.read_json(60)
         caught_up = paused.read_json(300)
+        ended += [watcher.wait(30), paused.wait(30)]
+    assert ended == [0, 0, 0]
     return {"sent": sent, "watcher": seen, "paused": caught_up, "peak": peak - baseline, "disk": disk,
             "names": names, "log": server.log()}
 

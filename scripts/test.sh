@@ -19,11 +19,12 @@ command -v pkg-config >/dev/null 2>&1 \
 install_hlacore test
 [ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build
-# The gateway alone, without the federate side (rtig --status needs none).
+# The gateway, and hlacore-rtia over the federate side (it decodes what CERTI federates send: sanitized too).
 .venv/bin/cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHLACORE_SANITIZE=ON -DHLACORE_PYTHON=OFF -DHLACORE_BENCH=ON \
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/asan-configure.log 2>&1 \
     || { cat build/asan-configure.log; exit 1; }
-cmake_build build/asan "the ASan+UBSan rtig the tests run against" rtig tcp_floor state_types_test
+cmake_build build/asan "the ASan+UBSan rtig and hlacore-rtia the tests run against" rtig hlacore-rtia tcp_floor \
+    state_types_test
 # The C++ test federates of the HLA 1.3 API (tests/cpp/hla13), against the installed package's CMake config.
 hla13_dir=$(.venv/bin/python -m hlacore.config --cmake-dir) || exit 1
 .venv/bin/cmake -S tests/cpp/hla13 -B build/hla13-tests -G Ninja -Dhlacore_DIR="$hla13_dir" \
@@ -37,6 +38,7 @@ elif [ "${CI:-}" = true ]; then
 else
     echo "test.sh: the fuzz targets could not be built; tests/system/test_fuzz.py will skip" >&2
 fi
-export HLACORE_TEST_RTIG="$PWD/build/asan/rtig" HLACORE_TEST_TCP_FLOOR="$PWD/build/asan/tcp_floor" \
+export HLACORE_TEST_RTIG="$PWD/build/asan/rtig" HLACORE_TEST_RTIA="$PWD/build/asan/hlacore-rtia" \
+    HLACORE_TEST_TCP_FLOOR="$PWD/build/asan/tcp_floor" \
     HLACORE_TEST_STATE_TYPES="$PWD/build/asan/state_types_test" HLACORE_TEST_HLA13="$PWD/build/hla13-tests"
 exec .venv/bin/python -m pytest "$@"

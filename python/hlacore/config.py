@@ -1,4 +1,5 @@
-"""Where the HLA 1.3 C++ API of this installation is: ``python -m hlacore.config --cflags --libs``.
+"""Where the HLA 1.3 C++ API of this installation is: ``python -m hlacore.config --cflags --libs``; and
+hlacore-rtia, which CERTI-built federates start in place of CERTI's rtia: ``python -m hlacore.config --rtia``.
 
 hlacore installs, inside the package, the headers of the HLA 1.3 C++ interface (``RTI.hh``,
 ``fedtime.hh``, ``NullFederateAmbassador.hh``), the libraries ``libRTI-NG.so`` and ``libFedTime.so``, a
@@ -8,12 +9,14 @@ CMake package config (``find_package(hlacore)``, target ``hlacore::RTI-NG``) and
     g++ -std=c++17 federate.cpp $(python -m hlacore.config --cflags --libs) -o federate
     cmake -Dhlacore_DIR=$(python -m hlacore.config --cmake-dir) ...
     PKG_CONFIG_PATH=$(python -m hlacore.config --pkg-config-dir) pkg-config --cflags --libs hlacore
+    export CERTI_RTIA=$(python -m hlacore.config --rtia)      # docs/certi.md
 """
 
 from __future__ import annotations
 
 import argparse
 import pathlib
+import shutil
 import sys
 from typing import Optional, Sequence
 
@@ -40,6 +43,15 @@ def pkg_config_dir() -> pathlib.Path:
     return _existing(PREFIX / "lib" / "pkgconfig", "hlacore.pc")
 
 
+def rtia() -> pathlib.Path:
+    """hlacore-rtia: installed beside this Python's rtig, else found on PATH."""
+    beside = pathlib.Path(sys.executable).parent / "hlacore-rtia"
+    found = beside if beside.is_file() else shutil.which("hlacore-rtia")
+    if not found:
+        raise FileNotFoundError(f"{beside} is missing: this hlacore was installed without its scripts")
+    return pathlib.Path(found)
+
+
 def cflags() -> list[str]:
     """The compiler flags of a federate using the HLA 1.3 C++ API."""
     return [f"-I{include_dir()}"]
@@ -64,14 +76,16 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     for option, what in [("--cflags", "compiler flags"), ("--libs", "linker flags"),
                          ("--include-dir", "the headers' folder"), ("--lib-dir", "the libraries' folder"),
                          ("--cmake-dir", "the CMake package config's folder (hlacore_DIR)"),
-                         ("--pkg-config-dir", "hlacore.pc's folder (PKG_CONFIG_PATH)")]:
+                         ("--pkg-config-dir", "hlacore.pc's folder (PKG_CONFIG_PATH)"),
+                         ("--rtia", "hlacore-rtia, for CERTI_RTIA (docs/certi.md)")]:
         parser.add_argument(option, dest="wanted", action="append_const", const=option, help=what)
     wanted = parser.parse_args(argv).wanted
     if not wanted:
-        parser.error("say what to print: --cflags, --libs, --include-dir, --lib-dir, --cmake-dir or --pkg-config-dir")
+        parser.error("say what to print: --cflags, --libs, --include-dir, --lib-dir, --cmake-dir, --pkg-config-dir "
+                     "or --rtia")
     answers = {"--cflags": cflags, "--libs": libs, "--include-dir": lambda: [str(include_dir())],
                "--lib-dir": lambda: [str(lib_dir())], "--cmake-dir": lambda: [str(cmake_dir())],
-               "--pkg-config-dir": lambda: [str(pkg_config_dir())]}
+               "--pkg-config-dir": lambda: [str(pkg_config_dir())], "--rtia": lambda: [str(rtia())]}
     try:
         print(" ".join(word for option in wanted for word in answers[option]()))
     except FileNotFoundError as e:

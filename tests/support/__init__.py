@@ -44,6 +44,12 @@ def rtig_executable() -> str:
     return os.environ.get("HLACORE_TEST_RTIG") or rtig_beside_python()
 
 
+def rtia_executable() -> str:
+    """hlacore-rtia under test: $HLACORE_TEST_RTIA (the sanitizer build), else the one installed beside Python."""
+    beside = pathlib.Path(sys.executable).parent / "hlacore-rtia"
+    return os.environ.get("HLACORE_TEST_RTIA") or str(beside)
+
+
 def status_client() -> str:
     """The rtig that asks a gateway for its status (``rtig --status``): the one under test, which needs no federate
     side for it (cpp/rti/net/status_query.cpp)."""

@@ -11,6 +11,7 @@ but rtig_main.cpp, ``rti/wire/``,   included (``rti/net/``)
 ``rti/client/``                     the shared parts and the FOM; never the gateway side
 ``rti/rtig_main.cpp``               the gateway side, never the federate side
 ``hla13/``                          the federate side, never the gateway side
+``certi/``                          the federate side, never the gateway side (hlacore-rtia)
 ``bindings/``                       anything: the Python module runs a gateway in-process too
 ==================================  ==========================================================================
 
@@ -47,6 +48,8 @@ def layer_of(relative: str) -> str:
         return "shared"
     if relative.startswith("hla13/"):
         return "hla13"
+    if relative.startswith("certi/"):
+        return "certi"
     return "free"  # bindings/, fuzz/: above both sides
 
 
@@ -58,6 +61,7 @@ FORBIDDEN = {
     "client": (("rti/server/",), "the federate side never includes the gateway side"),
     "rtig": (("rti/client/",), "rtig is the gateway: --status needs no federate side (rti/net/)"),
     "hla13": (("rti/server/",), "the HLA 1.3 API runs over the federate side only"),
+    "certi": (("rti/server/",), "hlacore-rtia runs over the federate side only"),
 }
 
 

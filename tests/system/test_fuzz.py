@@ -1,5 +1,5 @@
 """Short runs of the libFuzzer targets of cpp/fuzz (the wire decoder, the .fed parser, a gateway session, the
-gateway's datagram port), and replays of their seed corpus and of the inputs that once failed
+gateway's datagram port, hlacore-rtia's decoder of CERTI's protocol), and replays of their seed corpus and of the inputs that once failed
 (cpp/fuzz/regressions/).
 
 scripts/test.sh builds the targets (`scripts/fuzz.sh --build-only`, which installs clang when missing) and
@@ -25,8 +25,9 @@ SEEDS = {
     "fed": [FED_DATA / "good", FED_DATA / "bad"],
     "gateway": [FUZZ / "corpus" / "wire"],
     "datagram": [FUZZ / "corpus" / "wire"],
+    "certi": [FUZZ / "corpus" / "certi"],
 }
-OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"], "gateway": [], "datagram": []}
+OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"], "gateway": [], "datagram": [], "certi": []}
 TARGETS = list(SEEDS)
 FAILURE = re.compile(r"ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|deadly signal|SUMMARY:")
 
@@ -45,7 +46,7 @@ def fuzzer(target: str) -> pathlib.Path:
 def seed_dirs(target: str) -> list[pathlib.Path]:
     """The committed seeds, plus for the wire targets a sample frame of every message, which
     scripts/fuzz.sh has wire_seeds write next to the fuzzers."""
-    if target == "fed":
+    if target in ("fed", "certi"):
         return SEEDS[target]
     return [*SEEDS[target], fuzzer(target).parent / "seeds-wire"]
 

@@ -94,6 +94,9 @@ def test_wheel_installs_and_runs_the_main_job_without_a_compiler(tmp_path: pathl
     rtig = shutil.which("rtig", path=env["PATH"])
     assert rtig == str(bin_dir / "rtig")
     assert "usage: rtig" in run([rtig, "--help"], cwd=tmp_path, env=env, timeout=30)
+    rtia = run([python, "-m", "hlacore.config", "--rtia"], cwd=tmp_path, env=env, timeout=30).strip()
+    assert rtia == str(bin_dir / "hlacore-rtia")  # beside rtig, for CERTI_RTIA (docs/certi.md)
+    assert "usage: hlacore-rtia" in run([rtia, "--help"], cwd=tmp_path, env=env, timeout=30)
 
     # The main job, on 5 of the path's 15 control cycles: its verdict and its outputs.
     out = tmp_path / "job"

@@ -196,7 +196,12 @@ PYBIND11_MODULE(_core, m) {
     using hlacore::AdvanceKind;
     using hlacore::TimeManager;
     py::class_<TimeManager>(m, "_TimeManager")
-        .def(py::init<>())
+        .def(py::init([](const std::string& semantics) {
+                 TimeManager tm;
+                 tm.set_semantics(hlacore::time_semantics(semantics));
+                 return tm;
+             }),
+             py::arg("semantics") = "exact")
         .def("add_federate", &TimeManager::add_federate)
         .def("remove_federate", &TimeManager::remove_federate)
         .def("enable_regulation", &TimeManager::enable_regulation)

@@ -1,4 +1,4 @@
-// CERTI's federate protocol: the layouts as data, one walk over them for both directions.
+// CERTI's federate protocol: the layouts as data, each message written and read by walking its layout.
 #include "certi/protocol.hpp"
 
 #include <cstring>

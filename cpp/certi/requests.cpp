@@ -59,6 +59,8 @@ Message Rtia::serve(const Message& q) {
         a.version_minor = std::min(q.version_minor, kVersionMinor);
         if (!client_) {
             ClientSettings s = client_settings({});
+            // Federations created through the rtia keep CERTI's time rules unless $HLACORE_TIME_SEMANTICS says.
+            if (s.options.time_semantics == TimeSemantics::Default) s.options.time_semantics = TimeSemantics::Certi;
             client_.emplace(s.host, s.port, std::move(s.options));
         }
         return a;

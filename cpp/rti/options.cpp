@@ -98,4 +98,10 @@ std::uint32_t busy_poll_micros(const std::string& text) {
     }
 }
 
+TimeSemantics time_semantics(const std::string& text) {
+    if (text == "exact") return TimeSemantics::Exact;
+    if (text == "certi") return TimeSemantics::Certi;
+    throw OptionError("must be exact or certi (docs/time-management.md)");
+}
+
 }  // namespace hlacore

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "rti/time.hpp"
+
 namespace hlacore {
 
 // A value an option refuses; what() says what it must be ("must be at least 65536 bytes").
@@ -94,5 +96,6 @@ std::uint64_t whole_number(const std::string& text, std::uint64_t low, std::uint
 bool yes_or_no(const std::string& text);  // "1"/"true" or "0"/"false"
 const std::string& not_empty(const std::string& text);
 std::uint32_t busy_poll_micros(const std::string& text);  // rti/busy_poll.hpp's bounds
+TimeSemantics time_semantics(const std::string& text);     // "exact" or "certi" (rti/time.hpp)
 
 }  // namespace hlacore

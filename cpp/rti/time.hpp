@@ -20,6 +20,17 @@ enum class AdvanceKind : std::uint8_t {
     FlushQueueRequest = 5,
 };
 
+// Which reading of HLA 1.3's time rules a federation follows (docs/time-management.md). Exact: a federate
+// enabling regulation starts above what every constrained federate may no longer receive (just above a TAR
+// grant's time with zero lookahead). Certi: at the constrained federates' time, as CERTI does, so that a
+// federate joining a zero-lookahead TAR(now) loop is granted with it. Default (on the wire only): the
+// gateway's --time-semantics.
+enum class TimeSemantics : std::uint8_t { Default = 0, Exact = 1, Certi = 2 };
+
+inline const char* name_of(TimeSemantics s) {
+    return s == TimeSemantics::Certi ? "certi" : s == TimeSemantics::Exact ? "exact" : "default";
+}
+
 inline bool is_available(AdvanceKind kind) {
     return kind == AdvanceKind::TimeAdvanceRequestAvailable || kind == AdvanceKind::NextEventRequestAvailable;
 }

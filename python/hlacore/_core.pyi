@@ -1085,7 +1085,7 @@ class RTIAmbassadorBase:
         The gateway's "host:port" this ambassador is connected to.
         """
 class _TimeManager:
-    def __init__(self) -> None:
+    def __init__(self, semantics: str = 'exact') -> None:
         ...
     def add_federate(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
         ...

@@ -60,6 +60,7 @@ class Gateway:
         frame_timeout: float = 10.0,
         spill_dir: Optional[str | os.PathLike[str]] = None,
         disk_budget: int = 1 << 30,
+        time_semantics: str = "exact",
     ) -> None:
         given = _options.given(_core.gateway_options(), locals())
         self._secret_file = secret_file

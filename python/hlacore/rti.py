@@ -373,10 +373,11 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     def __init__(self, address: Optional[str] = None, timeout: Optional[float] = None,
                  secret_file: Optional[str | os.PathLike[str]] = None, datagrams: Optional[bool] = None,
                  federation_secret_file: Optional[str | os.PathLike[str]] = None,
-                 tls: Optional[bool | str | os.PathLike[str]] = None, busy_poll_us: Optional[int] = None) -> None:
+                 tls: Optional[bool | str | os.PathLike[str]] = None, busy_poll_us: Optional[int] = None,
+                 time_semantics: Optional[str] = None) -> None:
         super().__init__(_client_settings(address=address, timeout=timeout, secret_file=secret_file,
                                           datagrams=datagrams, federation_secret_file=federation_secret_file,
-                                          tls=tls, busy_poll_us=busy_poll_us))
+                                          tls=tls, busy_poll_us=busy_poll_us, time_semantics=time_semantics))
         self._federate_ambassador: Any = None
 
     # ---- federation management ----

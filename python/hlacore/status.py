@@ -65,7 +65,8 @@ def _raw_status(address: Optional[str], secret_file: Optional[str | os.PathLike[
 
 def format_table(report: dict[str, Any], width: int = 80) -> str:
     """The report as text at most ``width`` columns wide: one block per federation, one row per federate
-    (R/C: regulating, constrained; TSO/RO: messages queued for it in timestamp and receive order)."""
+    (R/C: regulating, constrained; TSO/RO: messages queued for it in timestamp and receive order), then who
+    waits on whom (the regulating federates that may still send at or below what a federate waits for)."""
     names = [f["name"] for fed in report["federations"] for f in fed["federates"]]
     name_width = max(8, min(max(map(len, names), default=8), width - _FIXED_COLUMNS))
     encrypted = " (TLS)" if report.get("tls") else ""
@@ -73,8 +74,8 @@ def format_table(report: dict[str, Any], width: int = 80) -> str:
              f"{len(report['federations'])} federation(s)"]
     for fed in report["federations"]:
         points = ", ".join(fed["sync_points"]) or "none"
-        lines.append(f"\nfederation {fed['name']} ({fed['fed']}): {len(fed['federates'])} federate(s), "
-                     f"{fed['objects']} object(s), sync points: {points}")
+        lines.append(f"\nfederation {fed['name']} ({fed['fed']}, {fed.get('time_semantics', 'exact')} time): "
+                     f"{len(fed['federates'])} federate(s), {fed['objects']} object(s), sync points: {points}")
         lines.append(f"  {'fed':>4} {'name':<{name_width}} {'time':>10} {'lookahd':>7} RC {'pending':<14} "
                      f"{'TSO':>5} {'RO':>5} {'LBTS':>10}")
         for f in fed["federates"]:
@@ -83,6 +84,10 @@ def format_table(report: dict[str, Any], width: int = 80) -> str:
             lines.append(f"  {f['handle']:>4} {f['name'][:name_width]:<{name_width}} {_number(f['time'], 10):>10} "
                          f"{_number(f['lookahead'], 7):>7} {switches} {pending:<14} {f['queued_tso']:>5} "
                          f"{f['queued_ro']:>5} {_number(f['lbts'], 10):>10}")
+        for f in fed["federates"]:
+            for holder in f.get("held_by", []):
+                lines.append(f"  {f['name']} waits on {holder['name']}: it may still send at "
+                             f"{_number(holder['output_bound'], 10)}")
     lines.extend(_datagram_lines(report))
     return "\n".join(line[:width] for line in "\n".join(lines).split("\n"))
 

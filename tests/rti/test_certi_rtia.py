@@ -14,6 +14,7 @@ from typing import Iterator
 import pytest
 
 import hlacore.rti as rti
+from hlacore.status import status
 from support import ROBOT_FED, RtigProcess, rtia_executable
 from support.certi import CertiError, CertiFederate, Message, encode
 
@@ -26,6 +27,7 @@ class Certi:
     def __init__(self, server: RtigProcess, tmp_path: pathlib.Path) -> None:
         host, port = server.address.rsplit(":", 1)
         self.env = {"CERTI_HOST": host, "CERTI_TCP_PORT": port, "HLACORE_RTIG": ""}  # CERTI's variables name it
+        self.address = server.address
         self.tmp_path = tmp_path
         self.started: list[CertiFederate] = []
 
@@ -93,6 +95,8 @@ def test_two_federates_in_each_byte_order_exchange_updates_and_interactions(cert
     b = certi.joined(False, "b", via)
     h = handles(a)
     assert handles(b) == h
+    # created through the rtia: CERTI's reading of the time rules (docs/time-management.md)
+    assert status(certi.address)["federations"][0]["time_semantics"] == "certi"
     a.call("PUBLISH_OBJECT_CLASS", object_class=h["robot"], handles=[h["location"]])
     a.call("PUBLISH_INTERACTION_CLASS", interaction_class=h["command"])
     b.call("SUBSCRIBE_OBJECT_CLASS_ATTRIBUTES", object_class=h["robot"], handles=[h["location"]], flag=True)
@@ -323,13 +327,17 @@ def test_a_malformed_frame_ends_that_rtia_with_one_line_and_the_federation_goes_
     assert "dropped" in rtig.log()
 
 
-def test_a_federate_that_vanishes_within_a_tick_is_dropped_and_others_go_on(certi: Certi, rtig: RtigProcess) -> None:
+@pytest.mark.parametrize("when", ["within a tick", "within a call"])
+def test_a_federate_that_vanishes_is_dropped_and_others_go_on(certi: Certi, rtig: RtigProcess, when: str) -> None:
     a = created(certi, False, "a")
     b = certi.joined(True, "b")
-    b.send(Message("TICK_REQUEST", fields={"flag": True, "min_tick": 60.0, "max_tick": 60.0}))
-    b.sock.close()  # the federate dies while its rtia waits for callbacks
+    if when == "within a tick":
+        b.send(Message("TICK_REQUEST", fields={"flag": True, "min_tick": 60.0, "max_tick": 60.0}))
+    else:
+        b.send(Message("QUERY_LBTS"))  # the federate dies before it reads the answer
+    b.sock.close()
     assert b.wait() == 1
-    assert "hung up during its tick" in b.stderr()
+    assert ("hung up during its tick" if when == "within a tick" else "leaves as a dead federate") in b.stderr()
     a.call("RESIGN_FEDERATION_EXECUTION", resign_action=3)
     a.call("DESTROY_FEDERATION_EXECUTION", federation="TestFed")  # b is no longer joined
     assert "dropped" in rtig.log()

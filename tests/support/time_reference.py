@@ -59,7 +59,8 @@ class Release:
 
 
 class ReferenceTimeManager:
-    def __init__(self) -> None:
+    def __init__(self, semantics: str = "exact") -> None:
+        self.semantics = semantics  # "certi": a newcomer starts at a constrained federate's time even after TAR
         self.feds: Dict[int, Fed] = {}
         self.bounds: Dict[int, float] = {}
 
@@ -133,15 +134,17 @@ class ReferenceTimeManager:
 
     def regulation_start(self, f: int, time: float, lookahead: float) -> float:
         """t0 = max(time, T, M - L), M over every other constrained federate's lowest receivable time and
-        every other regulating federate's promise."""
+        every other regulating federate's promise; with CERTI's semantics over the constrained federates'
+        times only."""
         self.compute_bounds()  # promises up to date
         m = -INF
         for g, o in self.feds.items():
             if g == f:
                 continue
+            exact = self.semantics == "exact"
             if o.constrained:
-                m = max(m, math.nextafter(o.time, INF) if o.strict_receive else o.time)
-            if o.regulating:
+                m = max(m, math.nextafter(o.time, INF) if exact and o.strict_receive else o.time)
+            if o.regulating and exact:
                 m = max(m, o.promise)
         start = m - lookahead
         # The document's intent ("a newcomer can never send ... below a bound others were already granted

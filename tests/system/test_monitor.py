@@ -26,11 +26,13 @@ from support import ROBOT_FED, RtigProcess, python_subprocess, secret_file
 
 
 def federate(handle: int, time_: float, *, lookahead: float = 1.0, pending: Optional[dict[str, float | str]] = None,
-             lbts: Optional[float] = None, grants: int = 0, updates: int = 0) -> dict[str, Any]:
+             lbts: Optional[float] = None, grants: int = 0, updates: int = 0,
+             held_by: tuple[int, ...] = ()) -> dict[str, Any]:
     """One federate of a status report (null for an infinite time, as on the wire)."""
     return {"handle": handle, "name": f"f{handle}", "time": time_, "lookahead": lookahead, "regulating": True,
             "constrained": True, "pending": pending, "queued_tso": 0, "queued_ro": 0, "lbts": lbts,
-            "output_bound": time_ + lookahead, "grants": grants, "updates_sent": updates, "interactions_sent": 0}
+            "output_bound": time_ + lookahead, "grants": grants, "updates_sent": updates, "interactions_sent": 0,
+            "held_by": [{"handle": h, "name": f"f{h}", "output_bound": 4.0} for h in held_by]}
 
 
 def report(federates: list[dict[str, Any]], *, events: Optional[list[dict[str, Any]]] = None, last_event: int = 0,
@@ -44,14 +46,14 @@ def report(federates: list[dict[str, Any]], *, events: Optional[list[dict[str, A
 
 # ---- the views (hlacore/monitor/state.py) ----
 
-def test_a_federate_waiting_long_enough_is_held_back_by_the_one_that_sets_its_lbts() -> None:
-    # f1 asked for 6 and waits at LBTS 4 = f2's bound (3 + 1); f3 is ahead (bound 9).
-    waiting = federate(1, 5.0, pending={"request": "TAR", "time": 6.0, "waiting": 2.5}, lbts=4.0)
+def test_a_federate_waiting_long_enough_is_held_back_by_the_ones_the_gateway_names() -> None:
+    # f1 asked for 6 and waits at LBTS 4 = f2's bound (3 + 1): the gateway says f2 holds it; f3 is ahead.
+    waiting = federate(1, 5.0, pending={"request": "TAR", "time": 6.0, "waiting": 2.5}, lbts=4.0, held_by=(2,))
     paused, ahead = federate(2, 3.0), federate(3, 8.0)
     assert holding_back([waiting, paused, ahead]) == {2: [(1, 2.5)]}
-    # Not yet for a wait shorter than the threshold, nor for a request below the LBTS (about to be granted).
+    # Not yet for a wait shorter than the threshold, nor when the gateway names nobody (about to be granted).
     assert holding_back([{**waiting, "pending": {"request": "TAR", "time": 6.0, "waiting": 0.5}}, paused]) == {}
-    assert holding_back([{**waiting, "pending": {"request": "TAR", "time": 3.5, "waiting": 9.0}}, paused]) == {}
+    assert holding_back([{**waiting, "held_by": []}, paused]) == {}
     assert holding_back([waiting, paused], hold_seconds=3.0) == {}
 
 

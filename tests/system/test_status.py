@@ -41,17 +41,19 @@ def test_status_reports_each_federates_time_state(inprocess_gateway: hlacore.Gat
     assert report["server"] == "hlacore rtig" and report["tls"] is False
     (federation,) = report["federations"]
     assert federation["name"] == "TestFed" and federation["fed"] == ROBOT_FED
+    assert federation["time_semantics"] == "exact"
     alpha, beta = federation["federates"]
     waited = alpha["pending"].pop("waiting")  # seconds since the request
     assert 0 <= waited < 5
     assert alpha == {
         "handle": 1, "name": "alpha", "time": 0.0, "lookahead": 1.0, "regulating": True,
         "enabling_regulation": False, "constrained": True,
-        "asynchronous_delivery": False, "pending": {"request": "TAR", "time": 3.0}, "queued_tso": 0,
+        "asynchronous_delivery": False, "pending": {"request": "TAR", "time": 3.0},
+        "held_by": [{"handle": 2, "name": "beta", "output_bound": 2.0}], "queued_tso": 0,
         "queued_ro": 0, "regions": 0, "lbts": 2.0, "output_bound": 4.0,
         "updates_sent": 0, "interactions_sent": 1, "grants": 0, "backlog": {"memory": 0, "disk": 0},
     }
-    assert beta["pending"] is None and beta["queued_tso"] == 1 and beta["lbts"] == 4.0
+    assert beta["pending"] is None and beta["held_by"] == [] and beta["queued_tso"] == 1 and beta["lbts"] == 4.0
     assert beta["output_bound"] == 2.0
     b.timeAdvanceRequest(3.0)
     assert a.await_grant(5.0) == 3.0

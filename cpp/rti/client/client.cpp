@@ -145,7 +145,9 @@ std::string Client::federation_proof(const char* action, const std::string& fede
 
 void Client::create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text) {
     const auto id = next_request();
-    call(wire::CreateFederation{id, name, fed_name, fed_text, federation_proof("create", name)}, id);
+    call(wire::CreateFederation{id, static_cast<std::uint8_t>(options_.time_semantics), name, fed_name, fed_text,
+                                federation_proof("create", name)},
+         id);
 }
 
 void Client::destroy_federation(const std::string& name) {

@@ -90,6 +90,12 @@ const Options<ClientSettings>& client_options() {
          "connected to; an untrusted certificate, a name that does not match, or a gateway without TLS raises "
          "AuthenticationFailed saying which. Under TLS the gateway offers no datagrams: best-effort messages go "
          "over the encrypted stream (docs/networking.md)"},
+        {nullptr, "time_semantics", "HLACORE_TIME_SEMANTICS", "exact|certi", false,
+         [](S& s, Text t) { s.options.time_semantics = time_semantics(t); },
+         [](const S& s) { return std::string(s.options.time_semantics == TimeSemantics::Default ? "" : name_of(s.options.time_semantics)); },
+         "the time rules of the federations this ambassador creates: exact (HLA 1.3's to the last double) or "
+         "certi (CERTI's: a federate enabling regulation may start at a zero-lookahead TAR grant's time); by "
+         "default the gateway's (rtig --time-semantics, docs/time-management.md)"},
         {nullptr, "busy_poll_us", "HLACORE_BUSY_POLL_US", "US", false,
          [](S& s, Text t) { s.options.busy_poll_us = busy_poll_micros(t); },
          [](const S& s) { return std::to_string(s.options.busy_poll_us); },

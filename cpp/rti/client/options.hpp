@@ -33,6 +33,8 @@ struct ClientOptions {
     // kMaxBusyPollUs. With a wait_host, a wait that spun sleeps in slices of 100 ms after it, each ended as if
     // interrupted, so that the host looks at signals the spin may have taken without a poll seeing them.
     std::uint32_t busy_poll_us = 0;
+    // The time rules of the federations this client creates (rti/time.hpp); Default: the gateway's.
+    TimeSemantics time_semantics = TimeSemantics::Default;
 };
 
 // Where a client connects and how.

@@ -80,6 +80,9 @@ public:
     // ---- save/restore (HLA 1.3 §4.11-4.22; cpp/rti/server/save_restore.cpp, docs/save-restore.md) ----
     // Where saves are written as files ("" keeps them in memory only).
     void set_save_dir(std::string dir) { save_restore_.dir = std::move(dir); }
+    // The reading of the time rules it follows (rti/time.hpp), chosen at its creation.
+    void set_time_semantics(TimeSemantics semantics) { time_.set_semantics(semantics); }
+    TimeSemantics time_semantics() const { return time_.semantics(); }
     // requestFederationSave: throws SaveInProgress, RestoreInProgress, FederationTimeAlreadyPassed,
     // InvalidFederationTime.
     void request_save(FederateHandle federate, const std::string& label, const wire::OptionalTime& time);

@@ -55,6 +55,10 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
         auto& entry = federations_[m.federation] =
             std::make_unique<FederationEntry>(*this, m.federation, std::move(fom), m.fed_name, std::move(text));
         entry->federation.set_save_dir(options_.save_dir);
+        const auto asked = static_cast<TimeSemantics>(m.time_semantics);
+        if (asked != TimeSemantics::Default && asked != TimeSemantics::Exact && asked != TimeSemantics::Certi)
+            throw RtiError(ErrorCode::RTIinternalError, "time semantics " + std::to_string(m.time_semantics));
+        entry->federation.set_time_semantics(asked == TimeSemantics::Default ? options_.time_semantics : asked);
         if (recorder_) {
             record_federation(*entry);
             recorder_->created(entry->federation);

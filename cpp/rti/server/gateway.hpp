@@ -72,6 +72,8 @@ struct GatewayOptions {
     std::uint64_t disk_budget = std::uint64_t{1} << 30;
     std::uint32_t max_frame_bytes = wire::kMaxFrameBytes;  // announced in the Welcome; larger frames are refused
     std::string save_dir;  // federation saves are written here as files ("": kept in memory only)
+    // The time semantics of a federation whose creator does not ask for one (rti/time.hpp).
+    TimeSemantics time_semantics = TimeSemantics::Exact;
     // Non-empty: every client proves it knows this secret (challenge-response, rti/auth.hpp) before anything
     // else; docs/networking.md.
     std::string secret;

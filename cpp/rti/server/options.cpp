@@ -91,6 +91,12 @@ const Options<GatewayOptions>& gateway_options() {
          "and the key of --tls-key; clients without TLS are refused. No datagrams are then offered: best-effort "
          "messages go over the encrypted TCP stream (docs/networking.md)"),
         text_option<&O::tls_key>("--tls-key", "tls_key", "FILE", "the private key of --tls-cert, a PEM file readable by its owner only"),
+        {"--time-semantics", "time_semantics", nullptr, "exact|certi", false,
+         [](O& o, Text t) { o.time_semantics = time_semantics(t); },
+         [](const O& o) { return std::string(name_of(o.time_semantics)); },
+         "the time rules of a federation whose creator asks for none: exact, HLA 1.3's to the last double, or "
+         "certi, CERTI's, where a federate enabling regulation may start at a zero-lookahead TAR grant's time "
+         "(docs/time-management.md); federations created through hlacore-rtia ask for certi"},
         text_option<&O::save_dir>("--save-dir", "save_dir", "DIR",
          "write federation saves to DIR (created if missing) and restore from there, also after a restart; "
          "without it saves live in memory only (docs/save-restore.md)"),

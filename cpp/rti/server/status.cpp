@@ -36,6 +36,7 @@ void Federation::write_status(std::string& out, bool instances,
     json_string(out, name_);
     out += ",\"fed\":";
     json_string(out, fed_name_);
+    out += std::string(",\"time_semantics\":\"") + name_of(time_.semantics()) + '"';
     out += ",\"objects\":" + std::to_string(objects_.size());
     out += ",\"sync_points\":";
     sync_points_.write_status(out);
@@ -63,6 +64,14 @@ void Federation::write_status(std::string& out, bool instances,
         } else {
             out += "null";
         }
+        out += ",\"held_by\":";  // who keeps it waiting: each may still send at or below what it waits for
+        json_array(out, t.held_by, [&](std::uint32_t g) {
+            out += "{\"handle\":" + std::to_string(g) + ",\"name\":";
+            json_string(out, federates_.at(g).name);
+            out += ",\"output_bound\":";
+            json_number(out, time_.output_bound(g));
+            out += '}';
+        });
         out += ",\"queued_tso\":" + std::to_string(t.queued_tso);
         out += ",\"queued_ro\":" + std::to_string(t.queued_ro);
         out += ",\"regions\":" + std::to_string(f.ddm.regions.size());  // data distribution management

@@ -54,7 +54,8 @@ void TimeManager::remove_federate(std::uint32_t f) {
 }
 
 // HLA 1.3 §8.2 enableTimeRegulation: start where no message can fall into a constrained federate's past
-// nor below a bound the others were already granted on.
+// nor below a bound the others were already granted on; with CERTI's semantics, no earlier than the
+// constrained federates' times (a strict grant to one does not lift it, nor do the others' bounds).
 Time TimeManager::enable_regulation(std::uint32_t f, Time time, Time lookahead) {
     State& s = state(f);
     if (s.regulating || s.pending != AdvanceKind::None)
@@ -64,9 +65,10 @@ Time TimeManager::enable_regulation(std::uint32_t f, Time time, Time lookahead) 
     Time highest = -kInfinity;
     for (const auto& [h, other] : federates_) {
         if (h == f) continue;
+        const bool exact = semantics_ == TimeSemantics::Exact;
         if (other.constrained)
-            highest = std::max(highest, other.receives_above_time ? std::nextafter(other.time, kInfinity) : other.time);
-        if (other.regulating) highest = std::max(highest, other.promise);
+            highest = std::max(highest, exact && other.receives_above_time ? std::nextafter(other.time, kInfinity) : other.time);
+        if (other.regulating && exact) highest = std::max(highest, other.promise);
     }
     Time start = std::max(time, s.time);
     if (highest > -kInfinity) {
@@ -408,6 +410,28 @@ std::vector<TimeManager::Release> TimeManager::release() {
     return nonempty;
 }
 
+// The grant rules of docs/time-management.md read backwards: who keeps LBTS from allowing what f waits for.
+std::vector<std::uint32_t> TimeManager::held_by(std::uint32_t f, const State& s) const {
+    std::vector<std::uint32_t> out;
+    if (!s.constrained && !s.constrained_pending) return out;
+    Time wanted = kInfinity;
+    bool strict = false;  // granted when LBTS > wanted (else >=)
+    if (s.constrained_pending) {
+        wanted = s.time;
+    } else if (s.enabling && *s.enabling > s.time) {
+        wanted = *s.enabling;
+    } else if (s.pending != AdvanceKind::None && s.pending != AdvanceKind::FlushQueueRequest) {
+        const bool next_event = s.pending == AdvanceKind::NextEventRequest || s.pending == AdvanceKind::NextEventRequestAvailable;
+        wanted = next_event ? std::min(s.pending_time, s.earliest_tso()) : s.pending_time;
+        strict = !is_available(s.pending);
+    } else {
+        return out;
+    }
+    for (const auto& [g, other] : federates_)
+        if (g != f && other.regulating && (strict ? other.bound <= wanted : other.bound < wanted)) out.push_back(g);
+    return out;
+}
+
 std::vector<TimeFederateStatus> TimeManager::status() {
     compute_bounds();
     std::vector<TimeFederateStatus> out;
@@ -422,6 +446,7 @@ std::vector<TimeFederateStatus> TimeManager::status() {
         st.enabling_regulation = s.enabling.has_value();
         st.lbts = lbts_from_bounds(f);
         st.output_bound = s.regulating ? s.bound : kInfinity;
+        st.held_by = held_by(f, s);
         out.push_back(st);
     }
     return out;

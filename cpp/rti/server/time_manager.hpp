@@ -50,6 +50,9 @@ struct TimeFederateStatus : wire::SavedTime {
     bool enabling_regulation = false;  // timeRegulationEnabled not released yet
     Time lbts = kInfinity;
     Time output_bound = kInfinity;  // infinity when not regulating
+    // While a constrained federate waits (a request, an enable): the regulating federates whose output bound
+    // keeps it waiting, those that may still send at or below what it waits for (docs/time-management.md).
+    std::vector<std::uint32_t> held_by;
 };
 
 // Where a federate's held messages go while it holds more than a threshold of them in memory (the gateway's
@@ -80,6 +83,9 @@ public:
     };
 
     void add_federate(std::uint32_t f);
+    // The federation's reading of the rules (rti/time.hpp); Exact until set.
+    void set_semantics(TimeSemantics semantics) { semantics_ = semantics; }
+    TimeSemantics semantics() const { return semantics_; }
     // From now on a federate's held messages beyond `park_above` bytes in memory go to `parking`.
     void attach_parking(FrameParking* parking, std::size_t park_above) {
         parking_ = parking;
@@ -233,10 +239,12 @@ private:
     static Time bound_after(Time t, Time lookahead, AdvanceKind kind);
     void compute_bounds();
     Time lbts_from_bounds(std::uint32_t f) const;
+    std::vector<std::uint32_t> held_by(std::uint32_t f, const State& s) const;  // after compute_bounds()
     bool try_grant(std::uint32_t f, State& s, Release& out);
     bool try_complete_regulation(std::uint32_t f, State& s, Release& out);
 
     std::map<std::uint32_t, State> federates_;
+    TimeSemantics semantics_ = TimeSemantics::Exact;
     // federates_ by handle, for the lookups of every routed message (walking the map was 7 % of the rtig's
     // CPU in a 32-federate lockstep); handles from kIndexedHandles on are looked up in the map.
     static constexpr std::uint32_t kIndexedHandles = 1u << 16;

@@ -15,8 +15,9 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // token and size limit, DatagramHello and DatagramPath; 8: Welcome's nonce, the federation proofs of
 // CreateFederation, DestroyFederation and JoinFederation; 9: a typed answer per request with a result
 // (FederationJoined ... TimeQueried), Reply only for the others and for refusals; 10: StartRecording,
-// RecordedTopic and Recorded; 11: QueryStatus's events_after and instances
-constexpr std::uint16_t kProtocolVersion = 11;
+// RecordedTopic and Recorded; 11: QueryStatus's events_after and instances; 12: CreateFederation's
+// time_semantics
+constexpr std::uint16_t kProtocolVersion = 12;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;

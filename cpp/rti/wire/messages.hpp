@@ -122,11 +122,12 @@ struct Pong {
 struct CreateFederation {
     HLACORE_TYPE(CreateFederation)
     std::uint32_t request = 0;
+    std::uint8_t time_semantics = 0;  // TimeSemantics (rti/time.hpp); 0: the gateway's --time-semantics
     std::string federation;
     std::string fed_name;  // as given by the caller
     std::string fed_text;  // empty: the gateway looks fed_name up in its --fom-path
     std::string proof;     // auth::federation_proof(secret, nonce, "create", federation); empty: none
-    HLACORE_FIELDS(request, federation, fed_name, fed_text, proof)
+    HLACORE_FIELDS(request, federation, fed_name, fed_text, proof, time_semantics)
 };
 struct DestroyFederation {
     HLACORE_TYPE(DestroyFederation)

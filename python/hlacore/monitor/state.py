@@ -9,7 +9,6 @@ history of every federate's logical time for the chart and the gateway's members
 from __future__ import annotations
 
 import collections
-import math
 from dataclasses import dataclass, field
 from typing import Any, Deque, Optional
 
@@ -24,11 +23,6 @@ EVENTS_KEPT = 1000
 RATE_SECONDS = 5.0
 
 
-def _bound(value: Optional[float]) -> float:
-    """A time of the report: ``None`` (JSON's null) is infinity."""
-    return math.inf if value is None else float(value)
-
-
 def federate_key(federation: str, handle: int) -> str:
     """The name a federate goes by in the view and on the page: handles repeat across federations."""
     return f"{federation}/{handle}"
@@ -38,24 +32,18 @@ def holding_back(federates: list[dict[str, Any]],
                  hold_seconds: float = HOLD_SECONDS) -> dict[int, list[tuple[int, float]]]:
     """Federate handle -> (handle, seconds waited) of each federate it holds back.
 
-    A federate waits when its time advance request has been pending for ``hold_seconds`` or more at or beyond
-    its LBTS. What it waits for is the regulating federates whose output bound is that LBTS (the gateway
-    computes the LBTS as the least output bound of the others, so the two are the same double).
+    A federate is held back when its time advance request has been pending for ``hold_seconds`` or more; the
+    gateway names who holds it (``held_by``: the regulating federates that may still send at or below what it
+    waits for, docs/time-management.md).
     """
     held: dict[int, list[tuple[int, float]]] = {}
     for waiting in federates:
         pending = waiting.get("pending")
         if not pending or pending.get("waiting", 0.0) < hold_seconds:
             continue
-        lbts = _bound(waiting.get("lbts"))
-        if math.isinf(lbts) or pending["time"] < lbts:
-            continue
-        for other in federates:
-            if other is not waiting and other["regulating"] and _bound(other.get("output_bound")) == lbts:
-                held.setdefault(other["handle"], []).append((waiting["handle"], pending["waiting"]))
+        for other in waiting.get("held_by", []):
+            held.setdefault(other["handle"], []).append((waiting["handle"], pending["waiting"]))
     return held
-
-
 
 
 @dataclass

@@ -46,14 +46,17 @@ install_hlacore() {
     mv "$stamp.new" "$stamp"
 }
 
-# The headers and link libraries of the C++ core's two system libraries: OpenSSL (Debian's libssl-dev):
+# The headers and link libraries of the C++ core's system libraries: OpenSSL (Debian's libssl-dev):
 # libcrypto for the shared secret's HMAC (cpp/rti/auth.cpp), libssl for the optional TLS (cpp/rti/tls.cpp);
-# zlib (zlib1g-dev) for the recordings' CRC (cpp/rti/record/mcap.cpp).
+# zlib (zlib1g-dev) for the recordings' CRC (cpp/rti/record/mcap.cpp); expat (libexpat1-dev) for the XML of
+# FOM modules (cpp/fed_parser/omt.cpp).
 require_build_headers() {
     [ -e /usr/include/openssl/ssl.h ] \
         || debian_install "hlacore's C++ core compiles against OpenSSL (libcrypto for the shared secret, libssl for TLS)" libssl-dev
     [ -e /usr/include/zlib.h ] \
         || debian_install "hlacore's C++ core computes the recordings' checksums with zlib" zlib1g-dev
+    [ -e /usr/include/expat.h ] \
+        || debian_install "hlacore's C++ core reads FOM modules in OMT XML with expat" libexpat1-dev
 }
 
 # Builds TARGETS in the configured CMake build directory DIR, saying so (LABEL) and showing the compiler's

@@ -4,6 +4,8 @@
 #   fuzz_wire  next_frame + decode of arbitrary bytes (seeds: cpp/fuzz/corpus/wire/ from make_wire_seeds.py,
 #              and a sample frame of every message written by wire_seeds into build/fuzz/seeds-wire/)
 #   fuzz_fed   fom::parse_fed of arbitrary text (seeds: tests/data/fed/good and bad, dictionary fed.dict)
+#   fuzz_omt   fom::parse_omt of arbitrary bytes as an OMT XML FOM module, alone and after a valid one (seeds:
+#              cpp/fuzz/corpus/omt/)
 #   fuzz_gateway  a joined federate's arbitrary bytes to a real in-process Gateway (seeds: the wire corpus)
 #   fuzz_datagram  a joined federate's arbitrary datagrams to the Gateway's UDP port (seeds: the wire corpus)
 #   fuzz_certi  hlacore-rtia's decoder of CERTI's federate protocol (seeds: cpp/fuzz/corpus/certi/, frames of
@@ -55,13 +57,13 @@ mkdir -p build/fuzz
 .venv/bin/cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
     -DHLACORE_FUZZ=ON -DHLACORE_PYTHON=OFF -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" \
     >build/fuzz-configure.log 2>&1 || { cat build/fuzz-configure.log; exit 1; }
-cmake_build build/fuzz "the libFuzzer targets" fuzz_wire fuzz_fed fuzz_gateway fuzz_datagram fuzz_certi wire_seeds
+cmake_build build/fuzz "the libFuzzer targets" fuzz_wire fuzz_fed fuzz_omt fuzz_gateway fuzz_datagram fuzz_certi wire_seeds
 # A sample frame of every message (the committed seeds are hand-written and may lag the message list).
 rm -rf build/fuzz/seeds-wire && mkdir -p build/fuzz/seeds-wire && build/fuzz/wire_seeds build/fuzz/seeds-wire
 [ "$build_only" = 1 ] && exit 0
 
 status=0
-for target in wire fed gateway datagram certi; do
+for target in wire fed omt gateway datagram certi; do
     bin=build/fuzz/fuzz_$target
     # Replay the inputs that once failed (each file run once).
     regressions=(cpp/fuzz/regressions/$target/*)
@@ -75,6 +77,7 @@ for target in wire fed gateway datagram certi; do
         wire | gateway | datagram) inputs=(cpp/fuzz/corpus/wire build/fuzz/seeds-wire) ;;
         fed) inputs=(-dict=cpp/fuzz/fed.dict tests/data/fed/good tests/data/fed/bad) ;;
         certi) inputs=(cpp/fuzz/corpus/certi) ;;
+        omt) inputs=(cpp/fuzz/corpus/omt) ;;
     esac
     log=build/fuzz/run-$target.log
     if "$bin" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \

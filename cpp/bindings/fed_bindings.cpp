@@ -1,4 +1,4 @@
-// hlacore._core.parse_fed(text, file_name): the whole Fom as plain Python data, turned into dataclasses by
+// hlacore._core.parse_fed(text, file_name) and parse_fom_modules(modules): the whole Fom as plain Python data, turned into dataclasses by
 // hlacore.fed. FedError is deliberately not caught here: module.cpp translates it to ErrorReadingFED.
 //
 // Returned shape (handles are ints, a missing space is None, parent 0 becomes None):
@@ -10,12 +10,13 @@
 //                             [(handle, name), ...]), ...]}
 // where transport is "reliable" | "best_effort" and order is "timestamp" | "receive".
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "fed_parser/fom.hpp"
+#include "fed_parser/omt.hpp"
 
 namespace py = pybind11;
 using namespace hlacore::fom;
@@ -81,11 +82,28 @@ void bind_fed(py::module_& m) {
             Fom fom;
             {
                 py::gil_scoped_release release;
-                fom = parse_fed(text, file_name);
+                fom = parse_fom(text, file_name);
             }
             return to_python(fom);
         },
         py::arg("text"), py::arg("file_name"),
-        "Parse the text of an HLA 1.3 .fed file; raises ErrorReadingFED (\"FILE:LINE:COL: message\") on the first "
-        "error. Returns plain data (see hlacore.fed for the typed form).");
+        "Parse a FOM: the text of an HLA 1.3 .fed file or of an OMT XML FOM module (by what the text is); raises "
+        "ErrorReadingFED (\"FILE:LINE:COL: message\") on the first error. Returns plain data (see hlacore.fed for "
+        "the typed form).");
+    m.def(
+        "parse_fom_modules",
+        [](const std::vector<std::pair<std::string, std::string>>& modules) {
+            std::vector<FomModule> list;
+            for (const auto& [text, file_name] : modules) list.push_back({text, file_name});
+            Fom fom;
+            {
+                py::gil_scoped_release release;
+                fom = parse_omt(list);
+            }
+            return to_python(fom);
+        },
+        py::arg("modules"),
+        "Parse OMT XML FOM modules, (text, file name) pairs merged in order (a class may appear in several); "
+        "raises ErrorReadingFED (\"FILE:LINE:COL: message\") on the first error or conflict. Returns plain data "
+        "as parse_fed does.");
 }

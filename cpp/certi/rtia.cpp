@@ -12,7 +12,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "fed_parser/fom.hpp"
+#include "fed_parser/omt.hpp"
 
 namespace hlacore::certi {
 
@@ -213,15 +213,13 @@ std::string find_fed(const std::string& fed, std::string& path_found) {
         }
         if (const char* home = std::getenv("CERTI_HOME")) candidates.push_back(std::string(home) + "/share/federations/" + fed);
     }
-    if (fed.size() >= 4 && fed.compare(fed.size() - 4, 4, ".xml") == 0)
-        raise(ErrorCode::CouldNotOpenFED, fed + ": an XML FOM; hlacore reads HLA 1.3 .fed files (docs/certi.md)");
     for (const std::string& path : candidates) {
         std::ifstream file(path, std::ios::binary);
         if (!file) continue;
         std::ostringstream text;
         text << file.rdbuf();
         try {
-            fom::parse_fed(text.str(), path);  // its FILE:LINE:COL here, at the federate's call
+            fom::parse_fom(text.str(), path);  // its FILE:LINE:COL here, at the federate's call
         } catch (const fom::FedError& e) {
             raise(ErrorCode::ErrorReadingFED, e.what());
         }

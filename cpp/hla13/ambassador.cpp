@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "ambassador.hpp"
-#include "fed_parser/fom.hpp"
+#include "fed_parser/omt.hpp"
 
 using namespace hlacore;
 using hlacore::hla13::guarded;
@@ -51,7 +51,7 @@ void RTI::RTIambassador::createFederationExecution(const char* executionName, co
             contents << file.rdbuf();
             fed_text = contents.str();
             try {
-                fom::parse_fed(fed_text, fed);
+                fom::parse_fom(fed_text, fed);
             } catch (const fom::FedError& e) {
                 throw RTI::ErrorReadingFED(e.what());
             }

@@ -1159,7 +1159,11 @@ def gateway_options() -> list[tuple[str, str | None, str | None, bool, str, str]
     """
 def parse_fed(text: str, file_name: str) -> dict:
     """
-    Parse the text of an HLA 1.3 .fed file; raises ErrorReadingFED ("FILE:LINE:COL: message") on the first error. Returns plain data (see hlacore.fed for the typed form).
+    Parse a FOM: the text of an HLA 1.3 .fed file or of an OMT XML FOM module (by what the text is); raises ErrorReadingFED ("FILE:LINE:COL: message") on the first error. Returns plain data (see hlacore.fed for the typed form).
+    """
+def parse_fom_modules(modules: collections.abc.Sequence[tuple[str, str]]) -> dict:
+    """
+    Parse OMT XML FOM modules, (text, file name) pairs merged in order (a class may appear in several); raises ErrorReadingFED ("FILE:LINE:COL: message") on the first error or conflict. Returns plain data as parse_fed does.
     """
 CALLBACKS: tuple = ('synchronizationPointRegistrationSucceeded', 'synchronizationPointRegistrationFailed', 'announceSynchronizationPoint', 'federationSynchronized', 'initiateFederateSave', 'federationSaved', 'federationNotSaved', 'requestFederationRestoreSucceeded', 'requestFederationRestoreFailed', 'federationRestoreBegun', 'initiateFederateRestore', 'federationRestored', 'federationNotRestored', 'startRegistrationForObjectClass', 'stopRegistrationForObjectClass', 'turnInteractionsOn', 'turnInteractionsOff', 'discoverObjectInstance', 'reflectAttributeValues', 'receiveInteraction', 'removeObjectInstance', 'attributesInScope', 'attributesOutOfScope', 'provideAttributeValueUpdate', 'turnUpdatesOnForObjectInstance', 'turnUpdatesOffForObjectInstance', 'requestAttributeOwnershipAssumption', 'attributeOwnershipDivestitureNotification', 'attributeOwnershipAcquisitionNotification', 'attributeOwnershipUnavailable', 'requestAttributeOwnershipRelease', 'confirmAttributeOwnershipAcquisitionCancellation', 'informAttributeOwnership', 'attributeIsNotOwned', 'attributeOwnedByRTI', 'timeRegulationEnabled', 'timeConstrainedEnabled', 'timeAdvanceGrant', 'requestRetraction')
 MAX_BUSY_POLL_US: int = 100000

@@ -383,7 +383,8 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
     # ---- federation management ----
 
     def createFederationExecution(self, executionName: str, FED: str) -> None:
-        """Create a federation execution from a ``.fed`` file (HLA 1.3 §4.2).
+        """Create a federation execution from a ``.fed`` file or an OMT XML FOM module (HLA 1.3 §4.2;
+        docs/fom-modules.md).
 
         The file is read and checked here, so a malformed file raises :class:`ErrorReadingFED` in the
         caller with its ``FILE:LINE:COL:`` position. A path this process cannot open is looked up by

@@ -3,6 +3,7 @@
 // are client/<group>.cpp.
 #include "rti/client/client.hpp"
 
+#include "fed_parser/omt.hpp"
 #include "rti/auth.hpp"
 
 #include <algorithm>
@@ -163,7 +164,7 @@ std::uint32_t Client::join(const std::string& federate, const std::string& feder
     const auto id = next_request();
     auto joined = call<wire::FederationJoined>(
         wire::JoinFederation{id, federate, federation, federation_proof("join", federation)}, id);
-    auto parsed = std::make_unique<fom::Fom>(fom::parse_fed(joined.fed_text, joined.fed_name));
+    auto parsed = std::make_unique<fom::Fom>(fom::parse_fom(joined.fed_text, joined.fed_name));
     {
         auto sending = lock_send();
         member_ = true;

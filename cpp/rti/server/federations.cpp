@@ -3,6 +3,7 @@
 // response, a time query, save and restore requests, a recording).
 #include "rti/server/gateway.hpp"
 #include "rti/server/gateway_internal.hpp"
+#include "fed_parser/omt.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -48,7 +49,7 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
         }
         fom::Fom fom;
         try {
-            fom = fom::parse_fed(text, m.fed_name);
+            fom = fom::parse_fom(text, m.fed_name);
         } catch (const fom::FedError& e) {
             throw RtiError(ErrorCode::ErrorReadingFED, e.what());
         }

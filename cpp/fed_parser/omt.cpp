@@ -1,0 +1,332 @@
+// OMT XML FOM modules: expat reads each module into a small element tree (with each element's line and
+// column), the modules' class trees merge, then the merged tree is numbered into a Fom as parse_fed numbers
+// a .fed (classes in preorder, a class's inherited members first).
+#include "fed_parser/omt.hpp"
+
+#include <expat.h>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <optional>
+#include <utility>
+
+namespace hlacore::fom {
+
+namespace {
+
+constexpr int kMaxDepth = 256 + 8;  // the .fed parser's class depth, and the objectModel around the classes
+
+struct Element {
+    std::string name;  // without a namespace prefix
+    std::vector<std::pair<std::string, std::string>> attributes;
+    std::string text;
+    std::vector<Element> children;
+    int line = 1, column = 1;
+
+    const Element* child(std::string_view n) const {
+        for (const Element& c : children)
+            if (c.name == n) return &c;
+        return nullptr;
+    }
+    // An XML attribute (1516.2-2000) or a child element's text (1516.2-2010), trimmed; "" when absent.
+    std::string value(std::string_view key) const {
+        for (const auto& [k, v] : attributes)
+            if (k == key) return trim(v);
+        const Element* c = child(key);
+        return c ? trim(c->text) : std::string();
+    }
+    static std::string trim(const std::string& s) {
+        const auto b = s.find_first_not_of(" \t\r\n");
+        if (b == std::string::npos) return {};
+        return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+    }
+};
+
+std::string local(const char* name) {
+    std::string n(name);
+    const auto colon = n.rfind(':');
+    return colon == std::string::npos ? n : n.substr(colon + 1);
+}
+
+// expat's callbacks build the tree; `path` holds the open elements.
+struct TreeBuilder {
+    XML_Parser parser;
+    Element root;  // a document node: the module's element is its only child
+    std::vector<Element*> path{&root};
+    bool too_deep = false;
+
+    static void start(void* data, const XML_Char* name, const XML_Char** attributes) {
+        auto* b = static_cast<TreeBuilder*>(data);
+        if (b->path.size() > kMaxDepth) {
+            b->too_deep = true;
+            XML_StopParser(b->parser, XML_FALSE);
+            return;
+        }
+        Element e;
+        e.name = local(name);
+        for (int i = 0; attributes[i]; i += 2) e.attributes.emplace_back(local(attributes[i]), attributes[i + 1]);
+        e.line = static_cast<int>(XML_GetCurrentLineNumber(b->parser));
+        e.column = static_cast<int>(XML_GetCurrentColumnNumber(b->parser)) + 1;
+        b->path.back()->children.push_back(std::move(e));
+        b->path.push_back(&b->path.back()->children.back());
+    }
+    static void end(void* data, const XML_Char*) { static_cast<TreeBuilder*>(data)->path.pop_back(); }
+    static void text(void* data, const XML_Char* s, int length) {
+        auto* b = static_cast<TreeBuilder*>(data);
+        if (b->path.size() > 1) b->path.back()->text.append(s, static_cast<std::size_t>(length));
+    }
+};
+
+Element read_xml(const FomModule& m) {
+    if (m.text.size() > kMaxFedBytes)
+        throw FedError(m.file_name, 1, 1, "the FOM module is " + std::to_string(m.text.size()) +
+                                              " bytes, more than the limit of " + std::to_string(kMaxFedBytes));
+    std::unique_ptr<std::remove_pointer_t<XML_Parser>, decltype(&XML_ParserFree)> parser(XML_ParserCreate(nullptr),
+                                                                                       &XML_ParserFree);
+    if (!parser) throw std::bad_alloc();
+    TreeBuilder b{parser.get(), {}, {}, false};
+    b.path = {&b.root};
+    XML_SetUserData(parser.get(), &b);
+    XML_SetElementHandler(parser.get(), &TreeBuilder::start, &TreeBuilder::end);
+    XML_SetCharacterDataHandler(parser.get(), &TreeBuilder::text);
+    if (XML_Parse(parser.get(), m.text.data(), static_cast<int>(m.text.size()), XML_TRUE) != XML_STATUS_OK) {
+        const int line = static_cast<int>(XML_GetCurrentLineNumber(parser.get()));
+        const int column = static_cast<int>(XML_GetCurrentColumnNumber(parser.get())) + 1;
+        throw FedError(m.file_name, line, column,
+                       b.too_deep ? "elements nested more than " + std::to_string(kMaxDepth) + " deep"
+                                  : std::string("not well-formed XML: ") + XML_ErrorString(XML_GetErrorCode(parser.get())));
+    }
+    return std::move(b.root);
+}
+
+// ---- the merged class trees ----
+
+struct Delivery {
+    Transport transport = Transport::Reliable;
+    Order order = Order::Receive;
+};
+
+struct Place {
+    std::string file;
+    int line = 0, column = 0;
+    std::string text() const { return file + ":" + std::to_string(line) + ":" + std::to_string(column); }
+};
+
+struct Member {
+    std::string name;
+    Delivery delivery;
+    Place where;
+};
+
+struct ClassTree {
+    std::string name;
+    Place where;
+    std::optional<Delivery> delivery;  // an interaction class's own, once a module gives it
+    Place delivery_where;
+    std::vector<Member> members;
+    std::vector<ClassTree> children;
+};
+
+// What differs between the two class trees of a module.
+struct Family {
+    const char* root;         // "HLAobjectRoot"
+    const char* root_13;      // "ObjectRoot", HLA 1.3's name, accepted too
+    const char* kind;         // "object class"
+    const char* member;       // "attribute": the member element
+    bool member_delivery;     // an attribute has a delivery of its own; an interaction class has one
+};
+constexpr Family kObjects{"HLAobjectRoot", "ObjectRoot", "object class", "attribute", true};
+constexpr Family kInteractions{"HLAinteractionRoot", "InteractionRoot", "interaction class", "parameter", false};
+
+class Merger {
+public:
+    explicit Merger(const FomModule& m) : module_(m) {}
+
+    // The classes of a module's <objects> or <interactions> into the merged tree `root`. A top class that is
+    // not the root (CERTI's XML for HLA 1.3 leaves the root out) is a subclass of it.
+    void classes(const Element& list, const char* element, const Family& family, ClassTree& root) {
+        for (const Element& e : list.children) {
+            if (e.name != element) continue;
+            const std::string name = e.value("name");
+            if (name.empty()) fail(e, std::string("an ") + family.kind + " without a name");
+            if (name == family.root || name == family.root_13) merge(e, root, family, 1);
+            else merge(e, child_named(root, name), family, 2);
+        }
+    }
+
+private:
+    [[noreturn]] void fail(const Element& e, const std::string& message) const {
+        throw FedError(module_.file_name, e.line, e.column, message);
+    }
+    Place place(const Element& e) const { return {module_.file_name, e.line, e.column}; }
+
+    std::optional<Delivery> delivery(const Element& e, const std::string& what) const {
+        const std::string t = e.value("transportation"), o = e.value("order");
+        const auto absent = [](const std::string& v) { return v.empty() || v == "NA"; };
+        if (absent(t) && absent(o)) return std::nullopt;
+        Delivery d;
+        if (t == "HLAbestEffort") d.transport = Transport::BestEffort;
+        else if (!absent(t) && t != "HLAreliable")
+            fail(e, "unknown transportation '" + t + "' of " + what + " (HLAreliable, HLAbestEffort)");
+        if (o == "TimeStamp") d.order = Order::Timestamp;
+        else if (!absent(o) && o != "Receive") fail(e, "unknown order '" + o + "' of " + what + " (Receive, TimeStamp)");
+        return d;
+    }
+
+    // Element `e`, a class of this module, into `node`: the same class, new or from an earlier module.
+    void merge(const Element& e, ClassTree& node, const Family& family, int depth) {
+        if (depth > 256) fail(e, std::string(family.kind) + "es nested more than 256 deep");
+        if (node.where.file.empty()) node.where = place(e);
+        const std::string what = std::string(family.kind) + " '" + node.name + "'";
+        if (!family.member_delivery) {
+            if (const auto d = delivery(e, what)) {
+                if (node.delivery && (node.delivery->transport != d->transport || node.delivery->order != d->order))
+                    fail(e, what + " has another transportation or order at " + node.delivery_where.text());
+                node.delivery = d;
+                node.delivery_where = place(e);
+            }
+        }
+        for (const Element& c : e.children) {
+            const std::string name = c.value("name");
+            if (c.name == family.member) {
+                if (name.empty()) fail(c, std::string("an ") + family.member + " of " + what + " without a name");
+                const Delivery d = family.member_delivery ? delivery(c, family.member + (" '" + name + "'")).value_or(Delivery{})
+                                                          : Delivery{};
+                const auto same = std::find_if(node.members.begin(), node.members.end(),
+                                               [&](const Member& m) { return m.name == name; });
+                if (same == node.members.end()) {
+                    node.members.push_back({name, d, place(c)});
+                } else if (name != "HLAprivilegeToDeleteObject" &&  // the MIM's, declared again as it likes
+                           (same->delivery.transport != d.transport || same->delivery.order != d.order)) {
+                    fail(c, std::string(family.member) + " '" + name + "' of " + what + " is declared otherwise at " +
+                                same->where.text());
+                }
+            } else if (c.name == e.name) {
+                if (name.empty()) fail(c, "a subclass of " + what + " without a name");
+                merge(c, child_named(node, name), family, depth + 1);
+            }
+        }
+    }
+
+    static ClassTree& child_named(ClassTree& node, const std::string& name) {
+        for (ClassTree& k : node.children)
+            if (k.name == name) return k;
+        node.children.push_back({});
+        node.children.back().name = name;
+        return node.children.back();
+    }
+
+    const FomModule& module_;
+};
+
+// ---- numbering, as parse_fed does ----
+
+// What numbering one class tree keeps track of: the qualified names so far (a root's subclass named like the
+// root, or a name with a dot in it, could otherwise name two classes) and the members counted.
+struct Numbering {
+    std::map<std::string, Place> qualified;
+    std::size_t total = 0;
+};
+
+// `node` and its subclasses into `out`, in preorder; `inherited` are the places of the parent's members, for
+// the error when a class declares again a member it inherits.
+template <class Cls, class M>
+void number(const ClassTree& node, Handle parent, std::vector<Cls>& out, std::vector<M> Cls::*members,
+            std::vector<const Member*> inherited, Numbering& n) {
+    Cls cls;
+    cls.handle = static_cast<Handle>(out.size() + 1);
+    cls.name = node.name;
+    cls.qualified_name = parent <= 1 ? node.name : out[parent - 1].qualified_name + "." + node.name;
+    cls.parent = parent;
+    if (const auto [first, added] = n.qualified.emplace(cls.qualified_name, node.where); !added)
+        throw FedError(node.where.file, node.where.line, node.where.column,
+                       "a second class named '" + cls.qualified_name + "' (the first at " + first->second.text() + ")");
+    if (parent) cls.*members = out[parent - 1].*members;
+    for (const Member& m : node.members) {
+        const auto clash = std::find_if(inherited.begin(), inherited.end(), [&](const Member* i) { return i->name == m.name; });
+        if (clash != inherited.end()) {
+            if (m.name == "HLAprivilegeToDeleteObject") continue;  // the MIM's, declared again
+            throw FedError(m.where.file, m.where.line, m.where.column,
+                           "'" + m.name + "' of '" + cls.qualified_name + "' is inherited from " + (*clash)->where.text());
+        }
+        M member;
+        member.handle = static_cast<Handle>((cls.*members).size() + 1);
+        member.name = m.name;
+        if constexpr (std::is_same_v<M, Attribute>) {
+            member.transport = m.delivery.transport;
+            member.order = m.delivery.order;
+        }
+        (cls.*members).push_back(std::move(member));
+        inherited.push_back(&m);
+    }
+    if constexpr (std::is_same_v<Cls, InteractionClass>) {
+        const Delivery d = node.delivery.value_or(parent ? Delivery{out[parent - 1].transport, out[parent - 1].order} : Delivery{});
+        cls.transport = d.transport;
+        cls.order = d.order;
+    }
+    n.total += (cls.*members).size();
+    if (n.total > kMaxClassMembers)
+        throw FedError(node.where.file, node.where.line, node.where.column,
+                       "too many attributes and parameters: more than " + std::to_string(kMaxClassMembers) +
+                           ", counting the inherited ones in each subclass");
+    const Handle h = cls.handle;
+    if (parent) out[parent - 1].children.push_back(h);
+    out.push_back(std::move(cls));
+    for (const ClassTree& child : node.children) number(child, h, out, members, inherited, n);
+}
+
+ClassTree root(const char* name, std::optional<Member> mim) {
+    ClassTree t;
+    t.name = name;
+    if (mim) t.members.push_back(*mim);
+    return t;
+}
+
+}  // namespace
+
+bool is_xml(std::string_view text) {
+    const auto first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+    return first != std::string_view::npos && text[first] == '<';
+}
+
+Fom parse_omt(const std::vector<FomModule>& modules) {
+    // The MIM: the roots, and the privilege to delete an object, reliable and timestamped as IEEE 1516 has it.
+    ClassTree objects = root("HLAobjectRoot", Member{"HLAprivilegeToDeleteObject", {Transport::Reliable, Order::Timestamp},
+                                                     {"the MIM", 0, 0}});
+    ClassTree interactions = root("HLAinteractionRoot", std::nullopt);
+    Fom fom;
+    for (const FomModule& m : modules) {
+        const Element document = read_xml(m);
+        const Element* model = document.children.empty() ? nullptr : &document.children.front();
+        if (!model || model->name != "objectModel")
+            throw FedError(m.file_name, model ? model->line : 1, model ? model->column : 1,
+                           "not an OMT FOM module: the document element is '" + (model ? model->name : "") +
+                               "', not objectModel");
+        if (fom.source_name.empty()) fom.source_name = m.file_name;
+        if (fom.federation_name.empty()) {
+            const Element* id = model->child("modelIdentification");
+            fom.federation_name = id ? id->value("name") : model->value("name");
+        }
+        Merger merger(m);
+        if (const Element* o = model->child("objects")) merger.classes(*o, "objectClass", kObjects, objects);
+        if (const Element* i = model->child("interactions")) merger.classes(*i, "interactionClass", kInteractions, interactions);
+    }
+    fom.fed_version = "IEEE 1516-2010";
+    Numbering objects_numbered, interactions_numbered;
+    number(objects, 0, fom.object_classes, &ObjectClass::attributes, {}, objects_numbered);
+    interactions_numbered.total = objects_numbered.total;  // one bound for both, as parse_fed counts
+    number(interactions, 0, fom.interaction_classes, &InteractionClass::parameters, {}, interactions_numbered);
+    fom.reindex();
+    return fom;
+}
+
+Fom parse_omt(std::string_view text, std::string_view file_name) {
+    return parse_omt(std::vector<FomModule>{{std::string(text), std::string(file_name)}});
+}
+
+Fom parse_fom(std::string_view text, std::string_view file_name) {
+    return is_xml(text) ? parse_omt(text, file_name) : parse_fed(text, file_name);
+}
+
+}  // namespace hlacore::fom

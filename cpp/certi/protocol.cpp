@@ -170,6 +170,15 @@ void write_field(Writer& w, const Message& m, Field f) {
             w.u64(r.serial);
             break;
         }
+        case RtiVersion: w.u8(m.rti_version); break;
+        case FederateType: w.bytes(m.federate_type); break;
+        case OptionalMim:
+        case OptionalTimeName: {
+            const std::optional<std::string>& text = f == OptionalMim ? m.mim : m.time_name;
+            w.boolean(text.has_value());
+            if (text) w.bytes(*text);
+            break;
+        }
     }
 }
 
@@ -225,6 +234,10 @@ void read_field(Reader& r, Message& m, Field f) {
             m.retraction = e;
             break;
         }
+        case RtiVersion: m.rti_version = r.u8(); break;
+        case FederateType: m.federate_type = r.bytes(); break;
+        case OptionalMim: if (r.boolean()) m.mim = r.bytes(); break;
+        case OptionalTimeName: if (r.boolean()) m.time_name = r.bytes(); break;
     }
 }
 
@@ -303,7 +316,8 @@ Message decode(std::string_view frame, bool* big_endian) {
     } catch (const ProtocolError& e) {
         throw ProtocolError(std::string(layout->name) + ": " + e.what());
     }
-    if (r.left() != 0) throw ProtocolError(std::string(layout->name) + ": " + std::to_string(r.left()) + " bytes left over");
+    // Bytes after the last field are ignored, as CERTI's own readers ignore them: JCERTI's IEEE 1516-2010
+    // update writes a stray count there. The frame's length keeps the stream in step.
     return m;
 }
 

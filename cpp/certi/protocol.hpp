@@ -36,11 +36,14 @@ enum Field : std::uint8_t {
     OptionalRetraction,              // bool, then Retraction when true
     Retraction,                      // u32 federate, u64 serial
     ExtentCount,                     // u32: CERTI 3.5.1 writes an extent set's size only, never its extents
+    RtiVersion,                      // u8: 1 HLA 1.3, 2 IEEE 1516-2000, 3 IEEE 1516-2010
+    FederateType,                    // string
+    OptionalMim, OptionalTimeName,   // bool, then a string when true
 };
 }  // namespace fields
 using fields::Field;
 
-// The message types, in CERTI 3.5.1's numbering (from 1), each with its fields.
+// The message types, in CERTI 3.5.1's numbering (from 1), each with its fields; then the two JCERTI adds.
 #define HLACORE_CERTI_MESSAGES(X)                                                                           \
     X(OPEN_CONNEXION, VersionMajor, VersionMinor)                                                           \
     X(CLOSE_CONNEXION)                                                                                      \
@@ -188,7 +191,10 @@ using fields::Field;
     X(TICK_REQUEST_STOP)                                                                                   \
     X(RESERVE_OBJECT_INSTANCE_NAME, Name)                                                                  \
     X(RESERVE_OBJECT_INSTANCE_NAME_SUCCEEDED, Name)                                                        \
-    X(RESERVE_OBJECT_INSTANCE_NAME_FAILED, Name)
+    X(RESERVE_OBJECT_INSTANCE_NAME_FAILED, Name)                                                          \
+    /* JCERTI's IEEE 1516-2010 ambassador: create and join with FOM modules (Values: their paths) */         \
+    X(CREATE_FEDERATION_EXECUTION_V4, FederationName, RtiVersion, Values, OptionalMim, OptionalTimeName)   \
+    X(JOIN_FEDERATION_EXECUTION_V4, Federate, OptionalName, FederateType, RtiVersion, FederationName, Values)
 
 #define HLACORE_CERTI_TYPE(name, ...) name,
 enum class Type : std::int32_t { NOT_USED = 0, HLACORE_CERTI_MESSAGES(HLACORE_CERTI_TYPE) LAST };
@@ -257,7 +263,9 @@ struct Message {
     std::optional<std::string> label, tag;
 
     std::uint32_t version_major = 0, version_minor = 0;
-    std::string federation_name, fed_id, federate_name, name, restore_reason;
+    std::string federation_name, fed_id, federate_name, name, restore_reason, federate_type;
+    std::uint8_t rti_version = 0;
+    std::optional<std::string> mim, time_name;
     std::uint32_t federate = 0, object_class = 0, interaction_class = 0, object = 0, attribute = 0, parameter = 0,
                   space = 0, dimension = 0, region = 0, extent_count = 0;
     std::uint16_t resign_action = 0;
@@ -289,7 +297,8 @@ std::string encode(const Message& m, bool big_endian);
 // The length a frame says it has, from its first kFrameHeader bytes (ProtocolError: a bad byte-order flag,
 // a length shorter than the header or above kMaxFrame).
 std::uint32_t frame_length(std::string_view header);
-// The message of a whole frame (ProtocolError: an unknown type, a truncated field, bytes left over).
+// The message of a whole frame (ProtocolError: an unknown type, a truncated field); bytes after the last
+// field are ignored, as CERTI does.
 // `big_endian` is set to the frame's byte order, which the answer keeps.
 Message decode(std::string_view frame, bool* big_endian = nullptr);
 

@@ -1,5 +1,7 @@
 // The federate's requests: each CERTI message as the call of hlacore's client, and the answer CERTI's libRTI
 // reads from it (the same type; a handle, a name, a date or a retraction where the service returns one).
+#include <unistd.h>
+
 #include <algorithm>
 
 #include "certi/rtia.hpp"
@@ -30,8 +32,24 @@ wire::HandleValueViews values_of(const Message& m) {
     return views;
 }
 
-[[noreturn]] void unimplemented(const Message& m, const char* why) {
+[[noreturn]] void unimplemented(const Message& m, const std::string& why) {
     raise(ErrorCode::RTIinternalError, std::string(type_name(m.type)) + ": " + why);
+}
+
+// createFederationExecution: the FED file or FOM module found as CERTI finds it, sent to the gateway.
+void create(Client& c, const std::string& federation, const std::string& fed) {
+    std::string path;
+    const std::string text = find_fed(fed, path);
+    c.create_federation(federation, path.empty() ? fed : path, text);
+}
+
+// A FOM module JCERTI names by URL (file:/path).
+std::string file_path(const std::string& module) {
+    const std::string scheme = "file:";
+    if (module.compare(0, scheme.size(), scheme) != 0) return module;
+    std::string path = module.substr(scheme.size());
+    while (path.size() > 1 && path[0] == '/' && path[1] == '/') path.erase(0, 1);  // file:///p, file://p
+    return path;
 }
 
 wire::AdvisorySwitch switch_of(Type t) {
@@ -72,14 +90,20 @@ Message Rtia::serve(const Message& q) {
     Client& c = client();
     switch (q.type) {
         // ---- federation management ----
-        case Type::CREATE_FEDERATION_EXECUTION: {
-            std::string path;
-            const std::string text = find_fed(q.fed_id, path);
-            c.create_federation(q.federation_name, path.empty() ? q.fed_id : path, text);
-            a.federation_name = q.federation_name;
-            a.fed_id = q.fed_id;
+        case Type::CREATE_FEDERATION_EXECUTION:
+            create(c, q.federation_name, q.fed_id);
             break;
-        }
+        case Type::CREATE_FEDERATION_EXECUTION_V4:  // JCERTI's IEEE 1516-2010 create: it sends one FOM module
+            if (q.values.size() != 1)
+                unimplemented(q, std::to_string(q.values.size()) + " FOM modules: hlacore-rtia creates from one yet");
+            create(c, q.federation_name, file_path(q.values.front()));
+            break;
+        case Type::JOIN_FEDERATION_EXECUTION_V4:
+            if (!q.values.empty()) unimplemented(q, "additional FOM modules at join: not served yet");
+            // IEEE 1516-2010 lets the RTI name a federate that gives no name: its type and the rtia's pid.
+            a.federate = c.join(q.has_name ? q.name : q.federate_type + "-" + std::to_string(::getpid()), q.federation_name);
+            joined_ = true;
+            break;
         case Type::DESTROY_FEDERATION_EXECUTION:
             c.destroy_federation(q.federation_name);
             a.federation_name = q.federation_name;

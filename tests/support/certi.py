@@ -19,7 +19,8 @@ import time
 from dataclasses import dataclass, field
 from typing import Any, Callable, Optional
 
-# Each message type, in CERTI's numbering from 1, with its fields: name:kind.
+# Each message type, in CERTI's numbering from 1, with its fields: name:kind; the last two are JCERTI's
+# (its IEEE 1516-2010 ambassador's create and join, with FOM modules).
 SPEC = """
 OPEN_CONNEXION version_major:u32 version_minor:u32
 CLOSE_CONNEXION
@@ -168,6 +169,8 @@ TICK_REQUEST_STOP
 RESERVE_OBJECT_INSTANCE_NAME name:str
 RESERVE_OBJECT_INSTANCE_NAME_SUCCEEDED name:str
 RESERVE_OBJECT_INSTANCE_NAME_FAILED name:str
+CREATE_FEDERATION_EXECUTION_V4 federation:str rti_version:u8 values:bytes mim:optstr time_name:optstr
+JOIN_FEDERATION_EXECUTION_V4 federate:u32 name:optstr federate_type:str rti_version:u8 federation:str values:bytes
 """
 LAYOUTS: dict[str, list[tuple[str, str]]] = {}
 CODES: dict[str, int] = {}

@@ -5,7 +5,6 @@
 #include <algorithm>
 
 #include "certi/rtia.hpp"
-#include "fed_parser/fom.hpp"
 
 namespace hlacore::certi {
 
@@ -115,9 +114,7 @@ Message Rtia::serve(const Message& q) {
             joined_ = true;
             break;
         case Type::RESIGN_FEDERATION_EXECUTION:
-            if (q.resign_action < 1 || q.resign_action > 4)
-                raise(ErrorCode::InvalidResignAction, "resign action " + std::to_string(q.resign_action));
-            c.resign(static_cast<std::uint8_t>(q.resign_action));
+            c.resign(q.resign_action > 0xFF ? 0 : static_cast<std::uint8_t>(q.resign_action));  // it refuses not 1-4
             joined_ = false;
             break;
         case Type::REGISTER_FEDERATION_SYNCHRONIZATION_POINT:
@@ -247,27 +244,10 @@ Message Rtia::serve(const Message& q) {
         case Type::GET_DIMENSION_NAME: a.name = c.dimension_name(q.dimension, q.space); break;
         case Type::GET_ATTRIBUTE_SPACE_HANDLE: a.space = c.attribute_routing_space(q.attribute, q.object_class); break;
         case Type::GET_INTERACTION_SPACE_HANDLE: a.space = c.interaction_routing_space(q.interaction_class); break;
-        // Transportation and ordering: CERTI's handles, which are fom::Transport's and fom::Order's.
-        case Type::GET_TRANSPORTATION_HANDLE:
-            if (q.name == "HLAreliable") a.transport = static_cast<std::uint8_t>(fom::Transport::Reliable);
-            else if (q.name == "HLAbestEffort") a.transport = static_cast<std::uint8_t>(fom::Transport::BestEffort);
-            else raise(ErrorCode::NameNotFound, "no transportation type " + q.name + " (HLAreliable, HLAbestEffort)");
-            break;
-        case Type::GET_TRANSPORTATION_NAME:
-            if (q.transport == static_cast<std::uint8_t>(fom::Transport::Reliable)) a.name = "HLAreliable";
-            else if (q.transport == static_cast<std::uint8_t>(fom::Transport::BestEffort)) a.name = "HLAbestEffort";
-            else raise(ErrorCode::InvalidTransportationHandle, "transportation handle " + std::to_string(q.transport));
-            break;
-        case Type::GET_ORDERING_HANDLE:
-            if (q.name == "Receive") a.order = static_cast<std::uint8_t>(fom::Order::Receive);
-            else if (q.name == "Timestamp") a.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
-            else raise(ErrorCode::NameNotFound, "no ordering type " + q.name + " (Receive, Timestamp)");
-            break;
-        case Type::GET_ORDERING_NAME:
-            if (q.order == static_cast<std::uint8_t>(fom::Order::Receive)) a.name = "Receive";
-            else if (q.order == static_cast<std::uint8_t>(fom::Order::Timestamp)) a.name = "Timestamp";
-            else raise(ErrorCode::InvalidOrderingHandle, "ordering handle " + std::to_string(q.order));
-            break;
+        case Type::GET_TRANSPORTATION_HANDLE: a.transport = Client::transportation_handle(q.name); break;
+        case Type::GET_TRANSPORTATION_NAME: a.name = Client::transportation_name(q.transport); break;
+        case Type::GET_ORDERING_HANDLE: a.order = Client::ordering_handle(q.name); break;
+        case Type::GET_ORDERING_NAME: a.name = Client::ordering_name(q.order); break;
         case Type::ENABLE_CLASS_RELEVANCE_ADVISORY_SWITCH:
         case Type::ENABLE_ATTRIBUTE_RELEVANCE_ADVISORY_SWITCH:
         case Type::ENABLE_ATTRIBUTE_SCOPE_ADVISORY_SWITCH:

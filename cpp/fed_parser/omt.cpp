@@ -15,7 +15,9 @@ namespace hlacore::fom {
 
 namespace {
 
-constexpr int kMaxDepth = 256 + 8;  // the .fed parser's class depth, and the objectModel around the classes
+// Elements nested deeper are refused: the .fed parser's class depth and a few around the classes (it also
+// bounds the recursion that merges and numbers the classes).
+constexpr int kMaxDepth = 256 + 8;
 
 struct Element {
     std::string name;  // without a namespace prefix
@@ -150,8 +152,8 @@ public:
             if (e.name != element) continue;
             const std::string name = e.value("name");
             if (name.empty()) fail(e, std::string("an ") + family.kind + " without a name");
-            if (name == family.root || name == family.root_13) merge(e, root, family, 1);
-            else merge(e, child_named(root, name), family, 2);
+            if (name == family.root || name == family.root_13) merge(e, root, family);
+            else merge(e, child_named(root, name), family);
         }
     }
 
@@ -175,8 +177,7 @@ private:
     }
 
     // Element `e`, a class of this module, into `node`: the same class, new or from an earlier module.
-    void merge(const Element& e, ClassTree& node, const Family& family, int depth) {
-        if (depth > 256) fail(e, std::string(family.kind) + "es nested more than 256 deep");
+    void merge(const Element& e, ClassTree& node, const Family& family) {
         if (node.where.file.empty()) node.where = place(e);
         const std::string what = std::string(family.kind) + " '" + node.name + "'";
         if (!family.member_delivery) {
@@ -204,7 +205,7 @@ private:
                 }
             } else if (c.name == e.name) {
                 if (name.empty()) fail(c, "a subclass of " + what + " without a name");
-                merge(c, child_named(node, name), family, depth + 1);
+                merge(c, child_named(node, name), family);
             }
         }
     }
@@ -313,10 +314,10 @@ Fom parse_omt(const std::vector<FomModule>& modules) {
         if (const Element* i = model->child("interactions")) merger.classes(*i, "interactionClass", kInteractions, interactions);
     }
     fom.fed_version = "IEEE 1516-2010";
-    Numbering objects_numbered, interactions_numbered;
-    number(objects, 0, fom.object_classes, &ObjectClass::attributes, {}, objects_numbered);
-    interactions_numbered.total = objects_numbered.total;  // one bound for both, as parse_fed counts
-    number(interactions, 0, fom.interaction_classes, &InteractionClass::parameters, {}, interactions_numbered);
+    Numbering n;  // one bound on the members of both trees, as parse_fed counts them
+    number(objects, 0, fom.object_classes, &ObjectClass::attributes, {}, n);
+    n.qualified.clear();  // the two trees' names are apart
+    number(interactions, 0, fom.interaction_classes, &InteractionClass::parameters, {}, n);
     fom.reindex();
     return fom;
 }

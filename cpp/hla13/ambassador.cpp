@@ -244,31 +244,21 @@ RTI::SpaceHandle RTI::RTIambassador::getInteractionRoutingSpaceHandle(Interactio
     return guarded([&] { return static_cast<SpaceHandle>(privateRefs->client.interaction_routing_space(h32(theHandle))); });
 }
 
-// Transportation and ordering: the names hlacore.rti answers, with CERTI's handles (fom::Transport, fom::Order).
+// Transportation and ordering: the names hlacore.rti answers, with CERTI's handles (Client's support services).
 RTI::TransportationHandle RTI::RTIambassador::getTransportationHandle(const char* theName) {
-    const std::string name = text(theName);
-    if (name == "HLAreliable") return static_cast<TransportationHandle>(fom::Transport::Reliable);
-    if (name == "HLAbestEffort") return static_cast<TransportationHandle>(fom::Transport::BestEffort);
-    throw RTI::NameNotFound(("no transportation type " + name + " (HLAreliable, HLAbestEffort)").c_str());
+    return guarded([&] { return TransportationHandle{Client::transportation_handle(text(theName))}; });
 }
 
 char* RTI::RTIambassador::getTransportationName(TransportationHandle theHandle) {
-    if (theHandle == static_cast<TransportationHandle>(fom::Transport::Reliable)) return name_copy("HLAreliable");
-    if (theHandle == static_cast<TransportationHandle>(fom::Transport::BestEffort)) return name_copy("HLAbestEffort");
-    throw RTI::InvalidTransportationHandle(("transportation handle " + std::to_string(theHandle)).c_str());
+    return guarded([&] { return name_copy(Client::transportation_name(theHandle)); });
 }
 
 RTI::OrderingHandle RTI::RTIambassador::getOrderingHandle(const char* theName) {
-    const std::string name = text(theName);
-    if (name == "Receive") return static_cast<OrderingHandle>(fom::Order::Receive);
-    if (name == "Timestamp") return static_cast<OrderingHandle>(fom::Order::Timestamp);
-    throw RTI::NameNotFound(("no ordering type " + name + " (Receive, Timestamp)").c_str());
+    return guarded([&] { return OrderingHandle{Client::ordering_handle(text(theName))}; });
 }
 
 char* RTI::RTIambassador::getOrderingName(OrderingHandle theHandle) {
-    if (theHandle == static_cast<OrderingHandle>(fom::Order::Receive)) return name_copy("Receive");
-    if (theHandle == static_cast<OrderingHandle>(fom::Order::Timestamp)) return name_copy("Timestamp");
-    throw RTI::InvalidOrderingHandle(("ordering handle " + std::to_string(theHandle)).c_str());
+    return guarded([&] { return name_copy(Client::ordering_name(theHandle)); });
 }
 
 namespace {

@@ -9,13 +9,13 @@ import pathlib
 import subprocess
 import sys
 import threading
-from typing import Iterator
+from typing import Iterator, Optional
 
 import pytest
 
 import hlacore.rti as rti
 from hlacore.status import status
-from support import ROBOT_FED, RtigProcess, rtia_executable
+from support import DATA, ROBOT_FED, RtigProcess, rtia_executable
 from support.certi import CertiError, CertiFederate, Message, encode
 
 ORDERS = [pytest.param(True, id="big-endian"), pytest.param(False, id="little-endian")]
@@ -31,8 +31,9 @@ class Certi:
         self.tmp_path = tmp_path
         self.started: list[CertiFederate] = []
 
-    def federate(self, big_endian: bool, via: str = "socketpair", open: bool = True) -> CertiFederate:
-        f = CertiFederate(rtia_executable(), big_endian, self.env, via=via,
+    def federate(self, big_endian: bool, via: str = "socketpair", open: bool = True,
+                 env: Optional[dict[str, str]] = None) -> CertiFederate:
+        f = CertiFederate(rtia_executable(), big_endian, {**self.env, **(env or {})}, via=via,
                           stderr=self.tmp_path / f"rtia-{len(self.started)}.log")
         self.started.append(f)
         if open:
@@ -264,11 +265,22 @@ def test_exceptions_come_back_by_certi_name(certi: Certi) -> None:
     with pytest.raises(CertiError) as e:
         a.call("UPDATE_ATTRIBUTE_VALUES", object=12345, handles=[1], values=[b"v"])
     assert e.value.name == "ObjectNotKnown"
+    assert a.call("GET_TRANSPORTATION_HANDLE", name="HLAbestEffort").transport == 2
+    assert a.call("GET_ORDERING_NAME", order=2).name == "Timestamp"
+    with pytest.raises(CertiError) as e:
+        a.call("GET_TRANSPORTATION_HANDLE", name="fast")
+    assert e.value.name == "NameNotFound"
+    with pytest.raises(CertiError) as e:
+        a.call("GET_ORDERING_NAME", order=9)
+    assert e.value.name == "InvalidOrderingHandle"
     with pytest.raises(CertiError) as e:
         a.call("DDM_CREATE_REGION", space=1, extent_count=1)
     assert e.value.name == "RTIinternalError" and "DDM" in e.value.reason
     with pytest.raises(CertiError) as e:
         a.call("RESIGN_FEDERATION_EXECUTION", resign_action=9)
+    assert e.value.name == "InvalidResignAction"
+    with pytest.raises(CertiError) as e:
+        a.call("RESIGN_FEDERATION_EXECUTION", resign_action=257)  # not 1 once cut to a byte
     assert e.value.name == "InvalidResignAction"
     other = certi.federate(True)
     with pytest.raises(CertiError) as e:
@@ -383,3 +395,35 @@ def test_jcertis_1516_create_and_join_with_an_xml_fom_module(certi: Certi, tmp_p
         f.call("CREATE_FEDERATION_EXECUTION_V4", federation="Two", rti_version=3, values=[b"a.xml", b"b.xml"])
     f.call("RESIGN_FEDERATION_EXECUTION", resign_action=3)
     assert f.close() == 0
+
+
+@pytest.mark.parametrize("where", ["CERTI_FOM_PATH", "CERTI_HOME"])
+def test_the_fed_file_is_found_as_certi_finds_it(certi: Certi, tmp_path: pathlib.Path, where: str) -> None:
+    """A bare name: the federate's directory, then each directory of $CERTI_FOM_PATH, then
+    $CERTI_HOME/share/federations; the rtia reads it and the gateway gets its text."""
+    if where == "CERTI_FOM_PATH":
+        env = {"CERTI_FOM_PATH": f"{tmp_path / 'nowhere'}:{DATA}"}
+    else:
+        (tmp_path / "share" / "federations").mkdir(parents=True)
+        (tmp_path / "share" / "federations" / "robot.fed").write_text(pathlib.Path(ROBOT_FED).read_text())
+        env = {"CERTI_HOME": str(tmp_path)}
+    f = certi.federate(False, env=env)
+    f.call("CREATE_FEDERATION_EXECUTION", federation="Found", fed="robot.fed")
+    federation = status(certi.address)["federations"][0]
+    assert federation["fed"].endswith("/robot.fed") and federation["fed"] != "robot.fed"
+    f.call("DESTROY_FEDERATION_EXECUTION", federation="Found")
+    assert f.close() == 0
+
+
+@pytest.mark.parametrize("trace", ["1", "counts"])
+def test_the_trace_names_each_message_or_counts_them(certi: Certi, trace: str) -> None:
+    f = certi.federate(True, env={"HLACORE_RTIA_TRACE": trace})
+    with pytest.raises(CertiError):
+        f.call("GET_OBJECT_CLASS_HANDLE", name="robot")  # not joined
+    assert f.close() == 0
+    log = f.stderr()
+    if trace == "1":
+        assert "hlacore-rtia: <- OPEN_CONNEXION\nhlacore-rtia: -> OPEN_CONNEXION\n" in log
+        assert "hlacore-rtia: -> GET_OBJECT_CLASS_HANDLE FederateNotExecutionMember: " in log
+    else:
+        assert log.strip() == "hlacore-rtia: received OPEN_CONNEXION 1 CLOSE_CONNEXION 1 GET_OBJECT_CLASS_HANDLE 1"

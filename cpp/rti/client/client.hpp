@@ -205,6 +205,13 @@ public:
     std::string dimension_name(fom::Handle dimension, fom::Handle space) const;
     fom::Handle attribute_routing_space(fom::Handle attribute, fom::Handle cls) const;
     fom::Handle interaction_routing_space(fom::Handle cls) const;
+    // The transportation and ordering types by name ("HLAreliable", "HLAbestEffort"; "Receive", "Timestamp")
+    // and back, with CERTI's handles (fom::Transport, fom::Order); NameNotFound, InvalidTransportationHandle,
+    // InvalidOrderingHandle.
+    static std::uint8_t transportation_handle(const std::string& name);
+    static std::string transportation_name(std::uint64_t handle);
+    static std::uint8_t ordering_handle(const std::string& name);
+    static std::string ordering_name(std::uint64_t handle);
     std::uint32_t federate_handle() const;
 
     // Messages sent and write system calls made so far (tests/transport/test_coalescing.py): a long run of sends

@@ -141,4 +141,28 @@ std::uint32_t Client::federate_handle() const {
     return federate_;
 }
 
+std::uint8_t Client::transportation_handle(const std::string& name) {
+    if (name == "HLAreliable") return static_cast<std::uint8_t>(fom::Transport::Reliable);
+    if (name == "HLAbestEffort") return static_cast<std::uint8_t>(fom::Transport::BestEffort);
+    raise(ErrorCode::NameNotFound, "no transportation type " + name + " (HLAreliable, HLAbestEffort)");
+}
+
+std::string Client::transportation_name(std::uint64_t handle) {
+    if (handle == static_cast<std::uint8_t>(fom::Transport::Reliable)) return "HLAreliable";
+    if (handle == static_cast<std::uint8_t>(fom::Transport::BestEffort)) return "HLAbestEffort";
+    raise(ErrorCode::InvalidTransportationHandle, "transportation handle " + std::to_string(handle));
+}
+
+std::uint8_t Client::ordering_handle(const std::string& name) {
+    if (name == "Receive") return static_cast<std::uint8_t>(fom::Order::Receive);
+    if (name == "Timestamp") return static_cast<std::uint8_t>(fom::Order::Timestamp);
+    raise(ErrorCode::NameNotFound, "no ordering type " + name + " (Receive, Timestamp)");
+}
+
+std::string Client::ordering_name(std::uint64_t handle) {
+    if (handle == static_cast<std::uint8_t>(fom::Order::Receive)) return "Receive";
+    if (handle == static_cast<std::uint8_t>(fom::Order::Timestamp)) return "Timestamp";
+    raise(ErrorCode::InvalidOrderingHandle, "ordering handle " + std::to_string(handle));
+}
+
 }  // namespace hlacore

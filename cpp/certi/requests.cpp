@@ -63,6 +63,11 @@ wire::AdvisorySwitch switch_of(Type t) {
     }
 }
 
+bool enables(Type t) {
+    return t == Type::ENABLE_CLASS_RELEVANCE_ADVISORY_SWITCH || t == Type::ENABLE_ATTRIBUTE_RELEVANCE_ADVISORY_SWITCH ||
+           t == Type::ENABLE_ATTRIBUTE_SCOPE_ADVISORY_SWITCH || t == Type::ENABLE_INTERACTION_RELEVANCE_ADVISORY_SWITCH;
+}
+
 }  // namespace
 
 Message Rtia::serve(const Message& q) {
@@ -252,13 +257,11 @@ Message Rtia::serve(const Message& q) {
         case Type::ENABLE_ATTRIBUTE_RELEVANCE_ADVISORY_SWITCH:
         case Type::ENABLE_ATTRIBUTE_SCOPE_ADVISORY_SWITCH:
         case Type::ENABLE_INTERACTION_RELEVANCE_ADVISORY_SWITCH:
-            c.request(wire::SetAdvisorySwitch{static_cast<std::uint8_t>(switch_of(q.type)), true});
-            break;
         case Type::DISABLE_CLASS_RELEVANCE_ADVISORY_SWITCH:
         case Type::DISABLE_ATTRIBUTE_RELEVANCE_ADVISORY_SWITCH:
         case Type::DISABLE_ATTRIBUTE_SCOPE_ADVISORY_SWITCH:
         case Type::DISABLE_INTERACTION_RELEVANCE_ADVISORY_SWITCH:
-            c.request(wire::SetAdvisorySwitch{static_cast<std::uint8_t>(switch_of(q.type)), false});
+            c.request(wire::SetAdvisorySwitch{static_cast<std::uint8_t>(switch_of(q.type)), enables(q.type)});
             break;
 
         // ---- data distribution management: hlacore serves it, this door not yet ----

@@ -134,27 +134,18 @@ DDM_UNSUBSCRIBE_ATTRIBUTES object_class:u32 region:u32
 DDM_SUBSCRIBE_INTERACTION interaction_class:u32 region:u32 flag:bool
 DDM_UNSUBSCRIBE_INTERACTION interaction_class:u32 region:u32 flag:bool
 DDM_REQUEST_UPDATE object_class:u32 region:u32 handles:u32s
-GET_OBJECT_CLASS_HANDLE object_class:u32 name:str
-GET_OBJECT_CLASS_NAME object_class:u32 name:str
-GET_ATTRIBUTE_HANDLE object_class:u32 name:str attribute:u32
-GET_ATTRIBUTE_NAME object_class:u32 name:str attribute:u32
-GET_INTERACTION_CLASS_HANDLE interaction_class:u32 name:str
-GET_INTERACTION_CLASS_NAME interaction_class:u32 name:str
-GET_PARAMETER_HANDLE interaction_class:u32 name:str parameter:u32
-GET_PARAMETER_NAME interaction_class:u32 name:str parameter:u32
-GET_OBJECT_INSTANCE_HANDLE object:u32 name:str
-GET_OBJECT_INSTANCE_NAME object:u32 name:str
-GET_SPACE_HANDLE name:str space:u32
-GET_SPACE_NAME name:str space:u32
-GET_DIMENSION_HANDLE name:str space:u32 dimension:u32
-GET_DIMENSION_NAME name:str space:u32 dimension:u32
+GET_OBJECT_CLASS_{HANDLE,NAME} object_class:u32 name:str
+GET_ATTRIBUTE_{HANDLE,NAME} object_class:u32 name:str attribute:u32
+GET_INTERACTION_CLASS_{HANDLE,NAME} interaction_class:u32 name:str
+GET_PARAMETER_{HANDLE,NAME} interaction_class:u32 name:str parameter:u32
+GET_OBJECT_INSTANCE_{HANDLE,NAME} object:u32 name:str
+GET_SPACE_{HANDLE,NAME} name:str space:u32
+GET_DIMENSION_{HANDLE,NAME} name:str space:u32 dimension:u32
 GET_ATTRIBUTE_SPACE_HANDLE object_class:u32 attribute:u32 space:u32
 GET_OBJECT_CLASS object_class:u32 object:u32
 GET_INTERACTION_SPACE_HANDLE interaction_class:u32 space:u32
-GET_TRANSPORTATION_HANDLE name:str transport:u8
-GET_TRANSPORTATION_NAME name:str transport:u8
-GET_ORDERING_HANDLE name:str order:u8
-GET_ORDERING_NAME name:str order:u8
+GET_TRANSPORTATION_{HANDLE,NAME} name:str transport:u8
+GET_ORDERING_{HANDLE,NAME} name:str order:u8
 ENABLE_CLASS_RELEVANCE_ADVISORY_SWITCH
 DISABLE_CLASS_RELEVANCE_ADVISORY_SWITCH
 ENABLE_ATTRIBUTE_RELEVANCE_ADVISORY_SWITCH
@@ -174,10 +165,12 @@ JOIN_FEDERATION_EXECUTION_V4 federate:u32 name:optstr federate_type:str rti_vers
 """
 LAYOUTS: dict[str, list[tuple[str, str]]] = {}
 CODES: dict[str, int] = {}
-for _code, _line in enumerate(SPEC.split("\n")[1:-1], start=1):
+for _line in SPEC.split("\n")[1:-1]:
     _name, *_fields = _line.split()
-    CODES[_name] = _code
-    LAYOUTS[_name] = [(f.split(":")[0], f.split(":")[1]) for f in _fields]
+    # GET_X_{HANDLE,NAME}: the two lookups of X, one code after the other, share a layout
+    for _each in [_name.replace("{HANDLE,NAME}", w) for w in ("HANDLE", "NAME")] if "{" in _name else [_name]:
+        CODES[_each] = len(CODES) + 1
+        LAYOUTS[_each] = [(f.split(":")[0], f.split(":")[1]) for f in _fields]
 NAMES = {code: name for name, code in CODES.items()}
 
 # CERTI's exception codes from 1 (0: none).

@@ -8,6 +8,7 @@ import pathlib
 import subprocess
 import sys
 import time
+from contextlib import closing
 
 import pytest
 
@@ -29,18 +30,12 @@ from hlacore.status import status
 
 
 def test_python_floors_echo_and_count() -> None:
-    echo = PyEcho(1024)
-    try:
+    with closing(PyEcho(1024)) as echo:
         for _ in range(3):
             echo.round_trip()
-    finally:
-        echo.close()
-    sink = PySink(100)
-    try:
+    with closing(PySink(100)) as sink:
         sink.burst()
         sink.burst()
-    finally:
-        sink.close()
 
 
 def tcp_floor_binary() -> str:
@@ -79,66 +74,48 @@ def test_cpp_floor_program_over_a_unix_socket_pair_and_polling(mode: str) -> Non
 
 @pytest.mark.parametrize("federates", [2, 3])
 def test_lockstep_federation_steps_and_stops(rtig, federates: int) -> None:
-    federation = Lockstep(rtig.address, federates, max_steps=10)
-    try:
+    with closing(Lockstep(rtig.address, federates, max_steps=10)) as federation:
         for _ in range(5):
             federation.step()
         federation.finish()  # checks every federate got every update of every step
-    finally:
-        federation.close()
     assert federation.time == 6
 
 
 def test_pure_grant_federation_steps_and_stops(rtig) -> None:
-    federation = Lockstep(rtig.address, 3, max_steps=10, updates=False)
-    try:
+    with closing(Lockstep(rtig.address, 3, max_steps=10, updates=False)) as federation:
         for _ in range(5):
             federation.step()
         federation.finish()  # the peers run to 10 steps by themselves, receiving nothing
-    finally:
-        federation.close()
     assert federation.time == 5
 
 
 def test_lockstep_on_the_in_process_gateway(inprocess_gateway) -> None:
-    federation = Lockstep(inprocess_gateway.address, 2, max_steps=10)
-    try:
+    with closing(Lockstep(inprocess_gateway.address, 2, max_steps=10)) as federation:
         federation.step()
         federation.finish()
-    finally:
-        federation.close()
 
 
 @pytest.mark.parametrize("order", ["ro", "tso"])
 def test_update_ping_pong(rtig, order: str) -> None:
-    pingpong = PingPong(rtig.address, order, 1024)
-    try:
+    with closing(PingPong(rtig.address, order, 1024)) as pingpong:
         for _ in range(3):
             pingpong.round_trip()
         pingpong.finish()  # checks the echo count and the bytes echoed
-    finally:
-        pingpong.close()
     assert pingpong.time == (6.0 if order == "tso" else 0.0)  # TSO: granted t+2 per round trip
 
 
 def test_fanout_counts_every_update_at_every_subscriber(rtig) -> None:
-    fanout = Fanout(rtig.address, 2, 50)
-    try:
+    with closing(Fanout(rtig.address, 2, 50)) as fanout:
         fanout.burst()
         fanout.burst()
         fanout.finish()
-    finally:
-        fanout.close()
 
 
 def test_large_updates_arrive_whole_and_counted(rtig) -> None:
     """bench/test_large.py's body at two 1 MiB updates per burst."""
-    fanout = Fanout(rtig.address, 1, 2, payload=bytes(1 << 20))
-    try:
+    with closing(Fanout(rtig.address, 1, 2, payload=bytes(1 << 20))) as fanout:
         fanout.burst()
         fanout.finish()
-    finally:
-        fanout.close()
 
 
 def test_cpu_seconds_reads_a_processs_cpu_clock() -> None:
@@ -285,11 +262,8 @@ def test_three_rti_program_on_hlacore(monkeypatch: pytest.MonkeyPatch, workload:
     and exit 0."""
     if busy:
         monkeypatch.setenv("HLACORE_BUSY_POLL_US", BUSY_POLL_US)
-    server = Server("hlacore", *(["--busy-poll", BUSY_POLL_US] if busy else []))
-    try:
+    with closing(Server("hlacore", *(["--busy-poll", BUSY_POLL_US] if busy else []))) as server:
         result = run(server, workload, federates, n, m, timeout=60.0, binary=cpp_federate("hla13_bench"))
-    finally:
-        server.close()
     if workload == "throughput":
         assert len(result["rates"]) == m and all(rate > 0 for rate in result["rates"])
     else:
@@ -324,10 +298,7 @@ def test_lossy_stream_body(datagrams: bool) -> None:
 
 
 def test_save_restore_body(inprocess_gateway) -> None:
-    bench = SaveRestore(inprocess_gateway.address, 20)
-    try:
+    with closing(SaveRestore(inprocess_gateway.address, 20)) as bench:
         bench.save()
         bench.restore()
         bench.restore()
-    finally:
-        bench.close()

@@ -141,28 +141,41 @@ std::uint32_t Client::federate_handle() const {
     return federate_;
 }
 
-std::uint8_t Client::transportation_handle(const std::string& name) {
-    if (name == "HLAreliable") return static_cast<std::uint8_t>(fom::Transport::Reliable);
-    if (name == "HLAbestEffort") return static_cast<std::uint8_t>(fom::Transport::BestEffort);
-    raise(ErrorCode::NameNotFound, "no transportation type " + name + " (HLAreliable, HLAbestEffort)");
-}
+namespace {
 
-std::string Client::transportation_name(std::uint64_t handle) {
-    if (handle == static_cast<std::uint8_t>(fom::Transport::Reliable)) return "HLAreliable";
-    if (handle == static_cast<std::uint8_t>(fom::Transport::BestEffort)) return "HLAbestEffort";
-    raise(ErrorCode::InvalidTransportationHandle, "transportation handle " + std::to_string(handle));
-}
+// HLA 1.3's names of the transportation and ordering types, and the messages for a name or handle it lacks.
+struct NamedTypes {
+    const char* what;
+    std::pair<const char*, std::uint8_t> types[2];
+    ErrorCode bad_handle;
 
-std::uint8_t Client::ordering_handle(const std::string& name) {
-    if (name == "Receive") return static_cast<std::uint8_t>(fom::Order::Receive);
-    if (name == "Timestamp") return static_cast<std::uint8_t>(fom::Order::Timestamp);
-    raise(ErrorCode::NameNotFound, "no ordering type " + name + " (Receive, Timestamp)");
-}
+    std::uint8_t handle(const std::string& name) const {
+        for (const auto& [n, h] : types)
+            if (name == n) return h;
+        raise(ErrorCode::NameNotFound, std::string("no ") + what + " type " + name + " (" + types[0].first + ", " +
+                                           types[1].first + ")");
+    }
+    std::string name(std::uint64_t handle) const {
+        for (const auto& [n, h] : types)
+            if (handle == h) return n;
+        raise(bad_handle, std::string(what) + " handle " + std::to_string(handle));
+    }
+};
 
-std::string Client::ordering_name(std::uint64_t handle) {
-    if (handle == static_cast<std::uint8_t>(fom::Order::Receive)) return "Receive";
-    if (handle == static_cast<std::uint8_t>(fom::Order::Timestamp)) return "Timestamp";
-    raise(ErrorCode::InvalidOrderingHandle, "ordering handle " + std::to_string(handle));
-}
+const NamedTypes kTransportations{"transportation",
+                                  {{"HLAreliable", static_cast<std::uint8_t>(fom::Transport::Reliable)},
+                                   {"HLAbestEffort", static_cast<std::uint8_t>(fom::Transport::BestEffort)}},
+                                  ErrorCode::InvalidTransportationHandle};
+const NamedTypes kOrderings{"ordering",
+                            {{"Receive", static_cast<std::uint8_t>(fom::Order::Receive)},
+                             {"Timestamp", static_cast<std::uint8_t>(fom::Order::Timestamp)}},
+                            ErrorCode::InvalidOrderingHandle};
+
+}  // namespace
+
+std::uint8_t Client::transportation_handle(const std::string& name) { return kTransportations.handle(name); }
+std::string Client::transportation_name(std::uint64_t handle) { return kTransportations.name(handle); }
+std::uint8_t Client::ordering_handle(const std::string& name) { return kOrderings.handle(name); }
+std::string Client::ordering_name(std::uint64_t handle) { return kOrderings.name(handle); }
 
 }  // namespace hlacore

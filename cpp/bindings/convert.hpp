@@ -162,7 +162,9 @@ void bind_handle(py::module_& m, const char* name) {
         .def("__hash__", [](const H& h) { return handle_hash(h); })
         .def("__int__", [](const H& h) { return h.value; })
         .def("__index__", [](const H& h) { return h.value; })
-        .def("__repr__", [repr_prefix](const H& h) { return repr_prefix + std::to_string(h.value) + ">"; });
+        .def("__repr__", [repr_prefix](const H& h) { return repr_prefix + std::to_string(h.value) + ">"; })
+        .def_static("_from_int", [](std::uint32_t value) { return H{value}; },
+                    "The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).");
     auto* slots = reinterpret_cast<PyTypeObject*>(type.ptr());
     HandleSlots<H>::ordering = slots->tp_richcompare;
     slots->tp_hash = &HandleSlots<H>::hash;

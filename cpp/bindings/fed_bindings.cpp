@@ -73,6 +73,13 @@ py::dict to_python(const Fom& fom) {
     return out;
 }
 
+// (text, file name) pairs as Python gives them.
+std::vector<FomModule> modules_of(const std::vector<std::pair<std::string, std::string>>& pairs) {
+    std::vector<FomModule> modules;
+    for (const auto& [text, file_name] : pairs) modules.push_back({text, file_name});
+    return modules;
+}
+
 }  // namespace
 
 void bind_fed(py::module_& m) {
@@ -93,8 +100,7 @@ void bind_fed(py::module_& m) {
     m.def(
         "parse_fom_modules",
         [](const std::vector<std::pair<std::string, std::string>>& modules) {
-            std::vector<FomModule> list;
-            for (const auto& [text, file_name] : modules) list.push_back({text, file_name});
+            const auto list = modules_of(modules);
             Fom fom;
             {
                 py::gil_scoped_release release;
@@ -106,4 +112,10 @@ void bind_fed(py::module_& m) {
         "Parse OMT XML FOM modules, (text, file name) pairs merged in order (a class may appear in several); "
         "raises ErrorReadingFED (\"FILE:LINE:COL: message\") on the first error or conflict. Returns plain data "
         "as parse_fed does.");
+    m.def(
+        "fom_bundle",
+        [](const std::vector<std::pair<std::string, std::string>>& modules) { return py::bytes(bundle(modules_of(modules))); },
+        py::arg("modules"),
+        "Several FOM modules, (text, file name) pairs, as the one text a federation is created from (a bundle: "
+        "cpp/fed_parser/omt.hpp); parse_fed reads it back.");
 }

@@ -15,7 +15,16 @@ const Doc kDocs[] = {
 
 void bind_federation(Ambassador& rtia) {
     Documented(rtia, kDocs)
-        .def("_create", &Client::create_federation, py::call_guard<py::gil_scoped_release>())
+        .def("_create",
+             [](Client& c, const std::string& name, const std::string& fed_name, const std::string& fed_text,
+                int time_type) {
+                 if (time_type < 0 || time_type > static_cast<int>(TimeType::Integer64))
+                     throw RtiError(ErrorCode::RTIinternalError, "time type " + std::to_string(time_type));
+                 py::gil_scoped_release release;
+                 c.create_federation(name, fed_name, fed_text, static_cast<TimeType>(time_type));
+             },
+             py::arg("name"), py::arg("fed_name"), py::arg("fed_text"), py::arg("time_type") = 0)
+        .def("_time_type", [](const Client& c) { return static_cast<int>(c.time_type()); })
         .def("destroyFederationExecution", &Client::destroy_federation,
              py::arg("executionName"), py::call_guard<py::gil_scoped_release>())
         .def("_join", [](Client& c, const std::string& federate, const std::string& federation) {

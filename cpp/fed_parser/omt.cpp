@@ -326,7 +326,43 @@ Fom parse_omt(std::string_view text, std::string_view file_name) {
     return parse_omt(std::vector<FomModule>{{std::string(text), std::string(file_name)}});
 }
 
+std::string bundle(const std::vector<FomModule>& modules) {
+    std::string out(kBundleMagic);
+    for (const FomModule& m : modules)
+        out += std::to_string(m.file_name.size()) + ' ' + std::to_string(m.text.size()) + '\n' + m.file_name + m.text;
+    return out;
+}
+
+std::vector<FomModule> unbundle(std::string_view text, std::string_view file_name) {
+    auto fail = [&](const std::string& why) -> FedError {
+        return FedError(std::string(file_name), 1, 1, "malformed bundle of FOM modules: " + why);
+    };
+    auto number = [&](std::string_view& rest, char end) {
+        std::size_t value = 0, digits = 0;
+        for (; digits < rest.size() && rest[digits] >= '0' && rest[digits] <= '9'; ++digits) {
+            if (value > (kMaxFedBytes - (rest[digits] - '0')) / 10) throw fail("a length beyond the limit");
+            value = value * 10 + static_cast<std::size_t>(rest[digits] - '0');
+        }
+        if (digits == 0 || digits == rest.size() || rest[digits] != end) throw fail("a length expected");
+        rest.remove_prefix(digits + 1);
+        return value;
+    };
+    if (text.substr(0, kBundleMagic.size()) != kBundleMagic) throw fail("it does not begin as one");
+    std::string_view rest = text.substr(kBundleMagic.size());
+    std::vector<FomModule> modules;
+    while (!rest.empty()) {
+        const std::size_t name_size = number(rest, ' ');
+        const std::size_t text_size = number(rest, '\n');
+        if (rest.size() < name_size || rest.size() - name_size < text_size) throw fail("a module cut short");
+        modules.push_back({std::string(rest.substr(name_size, text_size)), std::string(rest.substr(0, name_size))});
+        rest.remove_prefix(name_size + text_size);
+    }
+    if (modules.empty()) throw fail("no module");
+    return modules;
+}
+
 Fom parse_fom(std::string_view text, std::string_view file_name) {
+    if (text.substr(0, kBundleMagic.size()) == kBundleMagic) return parse_omt(unbundle(text, file_name));
     return is_xml(text) ? parse_omt(text, file_name) : parse_fed(text, file_name);
 }
 

@@ -29,7 +29,14 @@ bool is_xml(std::string_view text);
 Fom parse_omt(const std::vector<FomModule>& modules);
 Fom parse_omt(std::string_view text, std::string_view file_name);
 
-// A FOM from one text, a `.fed` or an OMT XML module by what the text is.
+// Several modules as one text, the form in which the wire and the gateway carry a FOM given as modules:
+// kBundleMagic, then each module as "<name length> <text length>\n<name><text>" (lengths in bytes, decimal).
+inline constexpr std::string_view kBundleMagic = "hlacore FOM modules\n";
+std::string bundle(const std::vector<FomModule>& modules);
+// The modules of a bundle; FedError at `file_name` for one that is cut short or malformed.
+std::vector<FomModule> unbundle(std::string_view text, std::string_view file_name);
+
+// A FOM from one text: a `.fed`, an OMT XML module or a bundle of modules, by what the text is.
 Fom parse_fom(std::string_view text, std::string_view file_name);
 
 }  // namespace hlacore::fom

@@ -88,7 +88,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     });
     if (!welcomed || token == 0) die("no Welcome with a datagram token");
     out.clear();
-    wire::encode(out, wire::CreateFederation{1, 0, "F", "gateway.fed", fixture.fed_text, ""});
+    wire::encode(out, wire::CreateFederation{1, 0, 0, "F", "gateway.fed", fixture.fed_text, ""});
     wire::encode(out, wire::JoinFederation{2, "d" + std::to_string(counter++), "F", ""});
     send_all(stream, out);
     bool joined = false;

@@ -32,7 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     std::string out;
     wire::encode(out, wire::Hello{});
-    wire::encode(out, wire::CreateFederation{1, 0, "F", "gateway.fed", fixture.fed_text, ""});
+    wire::encode(out, wire::CreateFederation{1, 0, 0, "F", "gateway.fed", fixture.fed_text, ""});
     wire::encode(out, wire::JoinFederation{2, "f" + std::to_string(counter++), "F", ""});
     out.append(reinterpret_cast<const char*>(data), size);
     wire::encode(out, wire::QueryStatus{3});

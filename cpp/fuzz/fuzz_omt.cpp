@@ -1,5 +1,5 @@
 // libFuzzer target for the OMT XML reader (cpp/fed_parser/omt.hpp): arbitrary bytes as a FOM module, alone
-// and as the second module after a valid one.
+// and as the second module after a valid one, and as a text that may be a bundle of modules.
 //
 // The only exception allowed out of parse_omt is FedError, with a position inside the text (line and column
 // from 1) or the MIM's. A FOM that parses is consistent as fuzz_fed checks it: handle h at index h - 1, parents
@@ -48,6 +48,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         } catch (const FedError& e) {
             check((e.file() == "fuzz.xml" && e.line() >= 1 && e.column() >= 1) || e.file() == "first.xml");
         }
+    }
+    // The same bytes as one text read by what it is: a .fed, a module or a bundle of modules, whose errors
+    // name the bundle's own module names.
+    try {
+        check_fom(parse_fom(text, "fuzz.xml"));
+    } catch (const FedError& e) {
+        check(e.line() >= 1 && e.column() >= 1);
     }
     return 0;
 }

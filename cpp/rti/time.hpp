@@ -31,6 +31,12 @@ inline const char* name_of(TimeSemantics s) {
     return s == TimeSemantics::Certi ? "certi" : s == TimeSemantics::Exact ? "exact" : "default";
 }
 
+// A federation's logical time type (IEEE 1516-2010 §12.1's two standard ones): the time travels as a double
+// either way, an integer time being a whole number of units; HLA 1.3 federates see it as a double.
+enum class TimeType : std::uint8_t { Float64 = 0, Integer64 = 1 };
+
+inline const char* name_of(TimeType t) { return t == TimeType::Integer64 ? "HLAinteger64Time" : "HLAfloat64Time"; }
+
 inline bool is_available(AdvanceKind kind) {
     return kind == AdvanceKind::TimeAdvanceRequestAvailable || kind == AdvanceKind::NextEventRequestAvailable;
 }

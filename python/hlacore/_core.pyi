@@ -5,7 +5,7 @@ hlacore native core: gateway, client connection, FED parser
 from __future__ import annotations
 import collections.abc
 import typing
-__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ClientSettings', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'client_options', 'client_settings', 'gateway_options', 'parse_fed']
+__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ClientSettings', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'client_options', 'client_settings', 'fom_bundle', 'gateway_options', 'parse_fed', 'parse_fom_modules']
 class RTIexception(Exception):
     """
     Base of every HLA 1.3 exception raised by hlacore.
@@ -338,6 +338,11 @@ class ObjectClassHandle:
     """
     An HLA ObjectClassHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> ObjectClassHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: ObjectClassHandle) -> bool:
@@ -362,6 +367,11 @@ class AttributeHandle:
     """
     An HLA AttributeHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> AttributeHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: AttributeHandle) -> bool:
@@ -386,6 +396,11 @@ class InteractionClassHandle:
     """
     An HLA InteractionClassHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> InteractionClassHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: InteractionClassHandle) -> bool:
@@ -410,6 +425,11 @@ class ParameterHandle:
     """
     An HLA ParameterHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> ParameterHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: ParameterHandle) -> bool:
@@ -434,6 +454,11 @@ class ObjectHandle:
     """
     An HLA ObjectHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> ObjectHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: ObjectHandle) -> bool:
@@ -458,6 +483,11 @@ class FederateHandle:
     """
     An HLA FederateHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> FederateHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: FederateHandle) -> bool:
@@ -482,6 +512,11 @@ class OrderingHandle:
     """
     An HLA OrderingHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> OrderingHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: OrderingHandle) -> bool:
@@ -506,6 +541,11 @@ class TransportationHandle:
     """
     An HLA TransportationHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> TransportationHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: TransportationHandle) -> bool:
@@ -530,6 +570,11 @@ class SpaceHandle:
     """
     An HLA SpaceHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> SpaceHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: SpaceHandle) -> bool:
@@ -554,6 +599,11 @@ class DimensionHandle:
     """
     An HLA DimensionHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> DimensionHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: DimensionHandle) -> bool:
@@ -578,6 +628,11 @@ class RegionHandle:
     """
     An HLA RegionHandle; obtained from the RTI, never constructed.
     """
+    @staticmethod
+    def _from_int(arg0: typing.SupportsInt | typing.SupportsIndex) -> RegionHandle:
+        """
+        The handle numbered `value` (hlacore.rti1516e's decoding of an encoded handle).
+        """
     def __eq__(self, other: object) -> bool:
         ...
     def __ge__(self, arg0: RegionHandle) -> bool:
@@ -602,21 +657,37 @@ class EventRetractionHandle:
     """
     Names a timestamped message so that its sender can retract it.
     """
-    def __eq__(self, other: object) -> bool:
-        ...
-    def __hash__(self) -> int:
-        ...
-    def __repr__(self) -> str:
-        ...
-    @property
-    def sendingFederate(self) -> int:
+    def __eq__(self, value):
         """
-        The handle of the federate that sent the message, as an int.
+        Return self==value.
         """
-    @property
-    def serial(self) -> int:
+    def __ge__(self, value):
         """
-        The message's serial number at its sender.
+        Return self>=value.
+        """
+    def __gt__(self, value):
+        """
+        Return self>value.
+        """
+    def __hash__(self):
+        """
+        Return hash(self).
+        """
+    def __le__(self, value):
+        """
+        Return self<=value.
+        """
+    def __lt__(self, value):
+        """
+        Return self<value.
+        """
+    def __ne__(self, value):
+        """
+        Return self!=value.
+        """
+    def __repr__(self):
+        """
+        Return repr(self).
         """
 class ClientSettings:
     """
@@ -665,13 +736,19 @@ class RTIAmbassadorBase:
         """
         What `with rtia.batch():` enters (RTIAmbassadorBase.batch).
         """
-        def __enter__(self) -> None:
-            ...
-        def __exit__(self, *args: typing.Any) -> None:
-            ...
+        @staticmethod
+        def __enter__(*args, **kwargs):
+            """
+            Hold the federate's messages (Client::hold_sends).
+            """
+        @staticmethod
+        def __exit__(*args, **kwargs):
+            """
+            Write what the block held, unless an outer block still holds.
+            """
     def __init__(self, settings: ClientSettings) -> None:
         ...
-    def _create(self, arg0: str, arg1: str, arg2: str) -> None:
+    def _create(self, name: str, fed_name: str, fed_text: str, time_type: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
         ...
     def _datagram_fileno(self) -> int:
         ...
@@ -701,6 +778,8 @@ class RTIAmbassadorBase:
         ...
     def _time_advance_pending(self) -> bool:
         ...
+    def _time_type(self) -> int:
+        ...
     def _wait(self, timeout: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         ...
     def advance_to(self, time: typing.SupportsFloat | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
@@ -710,10 +789,6 @@ class RTIAmbassadorBase:
     def associateRegionForUpdates(self, region: RegionHandle, object: ObjectHandle, attributes: collections.abc.Sequence[AttributeHandle]) -> None:
         """
         This federate's updates of these attributes of the object reach only the subscribers whose regions overlap `region` (HLA 1.3 §9.6); replaces the attribute's previous update region. Raises ObjectNotKnown, AttributeNotDefined, RegionNotKnown, InvalidRegionContext (an attribute of another routing space).
-        """
-    def await_grant(self, timeout: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
-        """
-        Deliver callbacks until the pending time advance is granted; returns the federate's new time. For a request made with any of the five PyHLA calls. Raises TimeAdvanceWasNotInProgress when no request is pending and TimeoutError when timeout seconds pass first.
         """
     def attributeOwnershipAcquisition(self, object: ObjectHandle, attributes: collections.abc.Sequence[AttributeHandle], tag: typing.Any) -> None:
         """
@@ -726,6 +801,14 @@ class RTIAmbassadorBase:
     def attributeOwnershipReleaseResponse(self, object: ObjectHandle, attributes: collections.abc.Sequence[AttributeHandle]) -> tuple:
         """
         Release attributes this federate was asked for by requestAttributeOwnershipRelease (HLA 1.3 §7.11); returns the tuple of AttributeHandles actually released (those a federate still waits for), the others stay owned. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, FederateWasNotAskedToReleaseAttribute.
+        """
+    def await_grant(self, timeout: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+        """
+        Deliver callbacks until the pending time advance is granted; returns the federate's new time. For a request made with any of the five PyHLA calls. Raises TimeAdvanceWasNotInProgress when no request is pending and TimeoutError when timeout seconds pass first.
+        """
+    def batch(self) -> typing.Any:
+        """
+        Hold this federate's messages while a `with rtia.batch():` block runs and write them together, in one system call, when it ends, or before the first call inside it that waits for the gateway (tick, advance_to, a service that returns an answer), whichever comes first. Opt-in, for a step that sends several messages and then waits: around the updates and the time advance request after them, one write and one read of the gateway instead of one each. That pays where the gateway polls (rtig --busy-poll); where it sleeps, an update written at once wakes it while the request is still being made, and a batch measured slower (docs/performance.md has both). Best-effort updates that travel as datagrams (docs/networking.md) are not held. Outside a batch every message is written when it is sent. While a batch is open, other threads' messages are held too, in the order sent; batches nest, and the outermost one's end writes. A batch of more than 64 KiB is written at once.
         """
     def cancelAttributeOwnershipAcquisition(self, object: ObjectHandle, attributes: collections.abc.Sequence[AttributeHandle]) -> None:
         """
@@ -750,10 +833,6 @@ class RTIAmbassadorBase:
     def changeInteractionTransportationType(self, interactionClass: InteractionClassHandle, transportationHandle: TransportationHandle) -> None:
         """
         Change the transportation of this federate's later interactions of a published class (HLA 1.3 §6.20), until it unpublishes the class; receiveInteraction reports it. Raises InteractionClassNotDefined, InteractionClassNotPublished, InvalidTransportationHandle.
-        """
-    def batch(self) -> RTIAmbassadorBase.Batch:
-        """
-        Hold this federate's messages while a `with rtia.batch():` block runs and write them together, in one system call, when it ends, or before the first call inside it that waits for the gateway (tick, advance_to, a service that returns an answer), whichever comes first. Opt-in, for a step that sends several messages and then waits: around the updates and the time advance request after them, one write and one read of the gateway instead of one each. That pays where the gateway polls (rtig --busy-poll); where it sleeps, an update written at once wakes it while the request is still being made, and a batch measured slower (docs/performance.md has both). Best-effort updates that travel as datagrams (docs/networking.md) are not held. Outside a batch every message is written when it is sent. While a batch is open, other threads' messages are held too, in the order sent; batches nest, and the outermost one's end writes. A batch of more than 64 KiB is written at once.
         """
     def clock_offset(self, max_age: typing.SupportsFloat | typing.SupportsIndex = 10.0) -> tuple[float, float]:
         """
@@ -923,10 +1002,6 @@ class RTIAmbassadorBase:
         """
         Offer owned attributes (HLA 1.3 §7.3): the federates publishing them get requestAttributeOwnershipAssumption; this federate owns them until attributeOwnershipDivestitureNotification. Raises ObjectNotKnown, AttributeNotDefined, AttributeNotOwned, AttributeAlreadyBeingDivested.
         """
-    def next_event(self, time: typing.SupportsFloat | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
-        """
-        nextEventRequest(time), then deliver callbacks until granted; returns the grant time (the earliest of time and the next timestamped message). timeout as in advance_to.
-        """
     def nextEventRequest(self, theTime: typing.SupportsFloat | typing.SupportsIndex) -> None:
         """
         Advance to the next timestamped message or theTime, whichever comes first (HLA 1.3 §8.10); the messages at the grant time are delivered, then timeAdvanceGrant(grant). Same exceptions as timeAdvanceRequest.
@@ -934,6 +1009,10 @@ class RTIAmbassadorBase:
     def nextEventRequestAvailable(self, theTime: typing.SupportsFloat | typing.SupportsIndex) -> None:
         """
         Like nextEventRequest, but further messages at the grant time may arrive after the grant (HLA 1.3 §8.11).
+        """
+    def next_event(self, time: typing.SupportsFloat | typing.SupportsIndex, timeout: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+        """
+        nextEventRequest(time), then deliver callbacks until granted; returns the grant time (the earliest of time and the next timestamped message). timeout as in advance_to.
         """
     def notifyAboutRegionModification(self, region: RegionHandle, extent: collections.abc.Sequence[tuple[DimensionHandle, tuple[typing.SupportsInt | typing.SupportsIndex, typing.SupportsInt | typing.SupportsIndex]]] | None = None) -> None:
         """
@@ -1145,7 +1224,7 @@ def _ordering_handle(arg0: typing.SupportsInt | typing.SupportsIndex) -> Orderin
     ...
 def _transportation_handle(arg0: typing.SupportsInt | typing.SupportsIndex) -> TransportationHandle:
     ...
-def client_options() -> list[tuple[str, str | None, str | None, bool, str, str]]:
+def client_options() -> list:
     """
     The client's options (client/options.cpp): (keyword, environment variable, placeholder, repeated, default as text, help) each.
     """
@@ -1153,7 +1232,11 @@ def client_settings(given: collections.abc.Mapping[str, str]) -> ClientSettings:
     """
     The client's settings from the options given (keyword: text), else the environment, else the defaults; RTIinternalError naming a value refused.
     """
-def gateway_options() -> list[tuple[str, str | None, str | None, bool, str, str]]:
+def fom_bundle(modules: collections.abc.Sequence[tuple[str, str]]) -> bytes:
+    """
+    Several FOM modules, (text, file name) pairs, as the one text a federation is created from (a bundle: cpp/fed_parser/omt.hpp); parse_fed reads it back.
+    """
+def gateway_options() -> list:
     """
     The gateway's options (server/options.cpp): (keyword, rtig flag, placeholder or None for a switch, repeated, default as text, help) each.
     """

@@ -434,7 +434,7 @@ def test_fed_name_naming_a_fifo_does_not_freeze_the_gateway(
     try:
         with raw_client(rtig.address) as hostile, raw_client(rtig.address) as bystander:
             hostile.handshake()
-            hostile.send(frame("CreateFederation", u32(1) + string("Trap") + string(str(fifo)) + string("") + string("") + u8(0)))
+            hostile.send(frame("CreateFederation", u32(1) + string("Trap") + string(str(fifo)) + string("") + string("") + u8(0) + u8(0)))
             # Another client must still get its handshake answered...
             try:
                 bystander.handshake()

@@ -144,9 +144,11 @@ std::string Client::federation_proof(const char* action, const std::string& fede
     return auth::federation_proof(options_.federation_secret, nonce_, action, federation);
 }
 
-void Client::create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text) {
+void Client::create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text,
+                               TimeType time_type) {
     const auto id = next_request();
-    call(wire::CreateFederation{id, static_cast<std::uint8_t>(options_.time_semantics), name, fed_name, fed_text,
+    call(wire::CreateFederation{id, static_cast<std::uint8_t>(options_.time_semantics),
+                                static_cast<std::uint8_t>(time_type), name, fed_name, fed_text,
                                 federation_proof("create", name)},
          id);
 }
@@ -172,6 +174,7 @@ std::uint32_t Client::join(const std::string& federate, const std::string& feder
     std::lock_guard<std::mutex> lock(mu_);
     fom_ = std::move(parsed);
     federate_ = joined.federate;
+    time_type_ = static_cast<TimeType>(joined.time_type);
     return joined.federate;
 }
 

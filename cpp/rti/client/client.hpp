@@ -88,7 +88,8 @@ public:
     }
 
     // ---- federation management ----
-    void create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text);
+    void create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text,
+                           TimeType time_type = TimeType::Float64);
     void destroy_federation(const std::string& name);
     std::uint32_t join(const std::string& federate, const std::string& federation);
     void resign(std::uint8_t action);
@@ -213,6 +214,7 @@ public:
     static std::uint8_t ordering_handle(const std::string& name);
     static std::string ordering_name(std::uint64_t handle);
     std::uint32_t federate_handle() const;
+    TimeType time_type() const;  // the joined federation's
 
     // Messages sent and write system calls made so far (tests/transport/test_coalescing.py): a long run of sends
     // takes fewer writes than messages.
@@ -642,6 +644,7 @@ private:
     // Federate state, under mu_.
     std::unique_ptr<fom::Fom> fom_;
     std::uint32_t federate_ = 0;
+    TimeType time_type_ = TimeType::Float64;
     // One piece of state per service group, each changed in client/<group>.cpp.
     std::set<std::string> announced_;  // sync_points: the labels announced and not yet synchronized
     std::unique_ptr<mcap::Writer> recording_;  // written as Recorded messages come, under mu_

@@ -141,6 +141,12 @@ std::uint32_t Client::federate_handle() const {
     return federate_;
 }
 
+TimeType Client::time_type() const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    return time_type_;
+}
+
 namespace {
 
 // HLA 1.3's names of the transportation and ordering types, and the messages for a name or handle it lacks.

@@ -83,6 +83,8 @@ public:
     // The reading of the time rules it follows (rti/time.hpp), chosen at its creation.
     void set_time_semantics(TimeSemantics semantics) { time_.set_semantics(semantics); }
     TimeSemantics time_semantics() const { return time_.semantics(); }
+    void set_time_type(TimeType type) { time_type_ = type; }
+    TimeType time_type() const { return time_type_; }
     // requestFederationSave: throws SaveInProgress, RestoreInProgress, FederationTimeAlreadyPassed,
     // InvalidFederationTime.
     void request_save(FederateHandle federate, const std::string& label, const wire::OptionalTime& time);
@@ -251,6 +253,7 @@ private:
     fom::Fom fom_;
     std::string fed_name_;
     std::string fed_text_;
+    TimeType time_type_ = TimeType::Float64;
     Outbox& outbox_;
     FederateHandle next_federate_ = 1;
     ObjectHandle next_object_ = 1;

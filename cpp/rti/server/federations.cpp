@@ -60,6 +60,9 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
         if (asked != TimeSemantics::Default && asked != TimeSemantics::Exact && asked != TimeSemantics::Certi)
             throw RtiError(ErrorCode::RTIinternalError, "time semantics " + std::to_string(m.time_semantics));
         entry->federation.set_time_semantics(asked == TimeSemantics::Default ? options_.time_semantics : asked);
+        if (m.time_type > static_cast<std::uint8_t>(TimeType::Integer64))
+            throw RtiError(ErrorCode::RTIinternalError, "time type " + std::to_string(m.time_type));
+        entry->federation.set_time_type(static_cast<TimeType>(m.time_type));
         if (recorder_) {
             record_federation(*entry);
             recorder_->created(entry->federation);
@@ -101,7 +104,8 @@ void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
         c.federation = entered = &entry;
         c.federate = h;
         entry.outbox.peers_[h] = &c;
-        return wire::FederationJoined{m.request, h, entry.federation.fed_text(), entry.federation.fed_name()};
+        return wire::FederationJoined{m.request, h, static_cast<std::uint8_t>(entry.federation.time_type()),
+                                      entry.federation.fed_text(), entry.federation.fed_name()};
     });
     if (!entered) return;
     if (recorder_) recorder_->joined(entered->federation, c.federate);

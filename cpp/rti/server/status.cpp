@@ -37,6 +37,7 @@ void Federation::write_status(std::string& out, bool instances,
     out += ",\"fed\":";
     json_string(out, fed_name_);
     out += std::string(",\"time_semantics\":\"") + name_of(time_.semantics()) + '"';
+    out += std::string(",\"time_type\":\"") + name_of(time_type_) + '"';
     out += ",\"objects\":" + std::to_string(objects_.size());
     out += ",\"sync_points\":";
     sync_points_.write_status(out);

@@ -17,7 +17,7 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // (FederationJoined ... TimeQueried), Reply only for the others and for refusals; 10: StartRecording,
 // RecordedTopic and Recorded; 11: QueryStatus's events_after and instances; 12: CreateFederation's
 // time_semantics
-constexpr std::uint16_t kProtocolVersion = 12;
+constexpr std::uint16_t kProtocolVersion = 13;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;

@@ -123,11 +123,12 @@ struct CreateFederation {
     HLACORE_TYPE(CreateFederation)
     std::uint32_t request = 0;
     std::uint8_t time_semantics = 0;  // TimeSemantics (rti/time.hpp); 0: the gateway's --time-semantics
+    std::uint8_t time_type = 0;       // TimeType (rti/time.hpp)
     std::string federation;
     std::string fed_name;  // as given by the caller
-    std::string fed_text;  // empty: the gateway looks fed_name up in its --fom-path
+    std::string fed_text;  // a .fed, an XML module or a bundle of modules; empty: the gateway looks fed_name up
     std::string proof;     // auth::federation_proof(secret, nonce, "create", federation); empty: none
-    HLACORE_FIELDS(request, federation, fed_name, fed_text, proof, time_semantics)
+    HLACORE_FIELDS(request, federation, fed_name, fed_text, proof, time_semantics, time_type)
 };
 struct DestroyFederation {
     HLACORE_TYPE(DestroyFederation)
@@ -342,9 +343,10 @@ struct FederationJoined {  // JoinFederation
     HLACORE_TYPE(FederationJoined)
     std::uint32_t request = 0;
     std::uint32_t federate = 0;  // the joined federate's handle
-    std::string fed_text;        // the federation's FED file, which the client parses
+    std::uint8_t time_type = 0;  // the federation's TimeType
+    std::string fed_text;        // the federation's FOM (a .fed, an XML module or a bundle), which the client parses
     std::string fed_name;        // its name, as given at creation
-    HLACORE_FIELDS(request, federate, fed_text, fed_name)
+    HLACORE_FIELDS(request, federate, fed_text, fed_name, time_type)
 };
 struct ObjectRegistered {  // RegisterObject, RegisterObjectWithRegion
     HLACORE_TYPE(ObjectRegistered)

@@ -1,0 +1,309 @@
+"""IEEE 1516-2010 in Python (hlacore.rti1516e, docs/rti1516e.md): OpenRTI's module's shape over hlacore's core,
+through rtig: FOM modules merged at creation, both time types, the 1516-2010 callbacks with their fixed
+positional arguments, exceptions named as in C++, and 1516-2010 and HLA 1.3 federates in one federation."""
+
+from __future__ import annotations
+
+import time
+from typing import Any, Callable, Iterator
+
+import pytest
+
+import hlacore.rti as rti
+import hlacore.rti1516e as rti1516e
+from hlacore import _core
+from support import ROOT
+
+DATA = ROOT / "tests" / "data" / "rti1516e"
+VEHICLES, CARS = str(DATA / "vehicles.xml"), str(DATA / "cars.xml")
+
+
+class Recorder:
+    """A federate ambassador that records every callback: (name, args) in order."""
+
+    def __init__(self) -> None:
+        self.calls: list[tuple[str, tuple[Any, ...]]] = []
+
+    def __getattr__(self, name: str) -> Callable[..., None]:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        return lambda *args: self.calls.append((name, args))
+
+    def named(self, name: str) -> list[tuple[Any, ...]]:
+        return [args for n, args in self.calls if n == name]
+
+
+class Federate:
+    """A connected 1516-2010 ambassador and its recorder."""
+
+    def __init__(self, address: str) -> None:
+        self.amb = Recorder()
+        self.rtia = rti1516e.RTIambassador()
+        self.rtia.connect(self.amb, "HLA_EVOKED", address)
+
+    def until(self, done: Callable[[], bool], seconds: float = 10.0) -> None:
+        deadline = time.monotonic() + seconds
+        while not done():
+            assert time.monotonic() < deadline, f"not done in {seconds} s; callbacks: {self.amb.calls[-5:]}"
+            self.rtia.evokeMultipleCallbacks(0.02, 0.1)
+
+    def close(self) -> None:
+        try:
+            self.rtia.resignFederationExecution(rti1516e.CANCEL_THEN_DELETE_THEN_DIVEST)
+        except rti1516e.FederateNotExecutionMember:
+            pass
+        self.rtia.disconnect()
+
+
+@pytest.fixture
+def federates(rtig: Any) -> Iterator[Callable[[], Federate]]:
+    made: list[Federate] = []
+
+    def make() -> Federate:
+        made.append(Federate(rtig.address))
+        return made[-1]
+    yield make
+    for f in reversed(made):
+        f.close()
+
+
+def joined(federates: Callable[[], Federate], name: str, time_type: str = "HLAfloat64Time") -> Federate:
+    f = federates()
+    try:
+        f.rtia.createFederationExecution("Vehicles", [VEHICLES, CARS], time_type)
+    except rti1516e.FederationExecutionAlreadyExists:
+        pass
+    f.rtia.joinFederationExecution(name, "test", "Vehicles")
+    return f
+
+
+def test_handles_enumerations_and_exceptions_have_the_standards_shape() -> None:
+    empty = rti1516e.ObjectClassHandle()
+    assert not empty.isValid() and repr(empty) == "rti1516e::ObjectClassHandle(Invalid)" and empty.encode() == b""
+    assert empty == rti1516e.ObjectClassHandle() and empty != rti1516e.AttributeHandle()
+    assert len({empty, rti1516e.ObjectClassHandle()}) == 1
+    assert (rti1516e.RECEIVE, rti1516e.TIMESTAMP, rti1516e.RELIABLE, rti1516e.BEST_EFFORT) == (1, 2, 1, 2)
+    assert rti1516e.NO_ACTION == 5 and rti1516e.CANCEL_THEN_DELETE_THEN_DIVEST == 4
+    assert issubclass(rti1516e.NameNotFound, rti1516e.Exception) and issubclass(rti1516e.Exception, Exception)
+    assert len(rti1516e._exceptions.NAMES) == 120
+    moved = rti1516e._exceptions.translate(_core.ObjectNotKnown("object 7"))
+    assert type(moved) is rti1516e.ObjectInstanceNotKnown and str(moved) == "ObjectInstanceNotKnown: object 7"
+    assert type(rti1516e._exceptions.translate(_core.GatewayNotResponding("gone"))) is rti1516e.NotConnected
+
+
+def test_connect_create_from_two_modules_join_and_list(federates: Callable[[], Federate], rtig: Any) -> None:
+    a = federates()
+    with pytest.raises(rti1516e.FederateNotExecutionMember):
+        a.rtia.getObjectClassHandle("Vehicle")
+    with pytest.raises(rti1516e.CouldNotCreateLogicalTimeFactory):
+        a.rtia.createFederationExecution("Vehicles", [VEHICLES], "HLAfloat32Time")
+    a.rtia.createFederationExecution("Vehicles", [VEHICLES, CARS], "HLAinteger64Time")
+    with pytest.raises(rti1516e.FederationExecutionAlreadyExists):
+        a.rtia.createFederationExecution("Vehicles", VEHICLES)
+    me = a.rtia.joinFederationExecution("a", "test", "Vehicles")
+    assert me.isValid() and a.rtia.getTimeFactory() == "HLAinteger64Time"
+    car = a.rtia.getObjectClassHandle("HLAobjectRoot.Vehicle.Car")  # from the second module
+    assert a.rtia.getObjectClassName(car).endswith("Car")
+    doors = a.rtia.getAttributeHandle(car, "doors")
+    assert a.rtia.getAttributeName(car, doors) == "doors"
+    assert a.rtia.getAttributeHandle(car, "position").isValid()  # inherited from the first
+    b = federates()
+    anonymous = b.rtia.joinFederationExecution("test", "Vehicles")  # no name: a unique one
+    assert anonymous != me and b.rtia.getFederateName(anonymous).startswith("test-")
+    assert a.rtia.getFederateHandle("a") == me and a.rtia.getFederateName(me) == "a"
+    with pytest.raises(rti1516e.FederateNameAlreadyInUse):
+        federates().rtia.joinFederationExecution("a", "test", "Vehicles")
+    a.rtia.listFederationExecutions()
+    a.until(lambda: bool(a.amb.named("reportFederationExecutions")))
+    assert a.amb.named("reportFederationExecutions")[0][0] == [
+        {"federationExecutionName": "Vehicles", "logicalTimeImplementationName": "HLAinteger64Time"}]
+
+
+def test_a_bad_module_is_refused_at_the_caller_with_its_place(federates: Callable[[], Federate], tmp_path: Any) -> None:
+    bad = tmp_path / "bad.xml"
+    bad.write_text("<objectModel><objects><objectClass><name>HLAobjectRoot</name></objects></objectModel>")
+    f = federates()
+    with pytest.raises(rti1516e.ErrorReadingFDD, match=r"bad\.xml:1:"):
+        f.rtia.createFederationExecution("Bad", [VEHICLES, str(bad)])
+    with pytest.raises(rti1516e.CouldNotOpenFDD):
+        f.rtia.createFederationExecution("Bad", [VEHICLES, str(tmp_path / "missing.xml")])
+
+
+def test_the_callback_model_and_the_connection_are_checked(rtig: Any) -> None:
+    rtia = rti1516e.RTIambassador()
+    with pytest.raises(rti1516e.NotConnected):
+        rtia.createFederationExecution("X", VEHICLES)
+    with pytest.raises(rti1516e.UnsupportedCallbackModel):
+        rtia.connect(Recorder(), "HLA_IMMEDIATE", rtig.address)
+    rtia.connect(Recorder(), "HLA_EVOKED", "rti://" + rtig.address)
+    with pytest.raises(rti1516e.AlreadyConnected):
+        rtia.connect(Recorder(), "HLA_EVOKED", rtig.address)
+    rtia.disconnect()
+    with pytest.raises(rti1516e.ConnectionFailed):
+        rti1516e.RTIambassador(timeout=0.5).connect(Recorder(), "HLA_EVOKED", "127.0.0.1:1")
+
+
+def test_objects_and_interactions_arrive_with_the_standards_arguments(federates: Callable[[], Federate]) -> None:
+    a, b = joined(federates, "a"), joined(federates, "b")
+    vehicle = a.rtia.getObjectClassHandle("Vehicle")
+    speed = a.rtia.getAttributeHandle(vehicle, "speed")
+    command = a.rtia.getInteractionClassHandle("Command")
+    verb = a.rtia.getParameterHandle(command, "verb")
+    a.rtia.publishObjectClassAttributes(vehicle, [speed])
+    a.rtia.publishInteractionClass(command)
+    b.rtia.subscribeObjectClassAttributes(vehicle, {speed})
+    b.rtia.subscribeInteractionClass(command)
+    obj = a.rtia.registerObjectInstance(vehicle, "v1")
+    assert a.rtia.getObjectInstanceName(obj) == "v1"
+    b.until(lambda: bool(b.amb.named("discoverObjectInstance")))
+    assert b.amb.named("discoverObjectInstance")[0] == (obj, vehicle, "v1")
+    assert a.rtia.updateAttributeValues(obj, {speed: b"\x00\x07"}, b"tag") is None
+    a.rtia.sendInteraction(command, {verb: b"stop"}, b"")
+    b.until(lambda: bool(b.amb.named("reflectAttributeValues")) and bool(b.amb.named("receiveInteraction")))
+    reflected = b.amb.named("reflectAttributeValues")[0]
+    assert len(reflected) == 9 and reflected[:8] == (obj, {speed: b"\x00\x07"}, b"tag", rti1516e.RECEIVE,
+                                                     rti1516e.RELIABLE, None, None, None)
+    assert reflected[8]["hasProducingFederate"] is False and reflected[8]["sentRegions"] == set()
+    received = b.amb.named("receiveInteraction")[0]
+    assert len(received) == 9 and received[:2] == (command, {verb: b"stop"}) and received[5:8] == (None, None, None)
+    assert b.rtia.getKnownObjectClassHandle(obj) == vehicle and b.rtia.getObjectInstanceHandle("v1") == obj
+    a.rtia.deleteObjectInstance(obj, b"bye")
+    b.until(lambda: bool(b.amb.named("removeObjectInstance")))
+    removed = b.amb.named("removeObjectInstance")[0]
+    assert len(removed) == 7 and removed[:3] == (obj, b"bye", rti1516e.RECEIVE)
+    with pytest.raises(TypeError):
+        a.rtia.updateAttributeValues(obj, {speed: "text"}, b"")  # values are bytes
+    with pytest.raises(rti1516e.ObjectClassNotDefined):
+        a.rtia.registerObjectInstance(rti1516e.ObjectClassHandle())
+    with pytest.raises(rti1516e.ObjectInstanceNotKnown):
+        a.rtia.updateAttributeValues(obj, {speed: b""}, b"")
+
+
+def test_publications_add_up_and_unpublish_removes_some(federates: Callable[[], Federate]) -> None:
+    a = joined(federates, "a")
+    vehicle = a.rtia.getObjectClassHandle("Vehicle")
+    position, speed = (a.rtia.getAttributeHandle(vehicle, n) for n in ("position", "speed"))
+    a.rtia.publishObjectClassAttributes(vehicle, [position])
+    a.rtia.publishObjectClassAttributes(vehicle, [speed])
+    obj = a.rtia.registerObjectInstance(vehicle)
+    a.rtia.updateAttributeValues(obj, {position: b"p", speed: b"s"}, b"")
+    a.rtia.unpublishObjectClassAttributes(vehicle, [position])
+    assert a.rtia.isAttributeOwnedByFederate(obj, speed)
+    a.rtia.registerObjectInstance(vehicle)  # speed is still published
+    a.rtia.unpublishObjectClassAttributes(vehicle, [speed])
+    with pytest.raises(rti1516e.ObjectClassNotPublished):
+        a.rtia.registerObjectInstance(vehicle)
+
+
+def test_an_integer_time_lockstep_with_retraction_handles(federates: Callable[[], Federate]) -> None:
+    a, b = joined(federates, "a", "HLAinteger64Time"), joined(federates, "b", "HLAinteger64Time")
+    vehicle = a.rtia.getObjectClassHandle("Vehicle")
+    position = a.rtia.getAttributeHandle(vehicle, "position")
+    a.rtia.publishObjectClassAttributes(vehicle, [position])
+    b.rtia.subscribeObjectClassAttributes(vehicle, [position])
+    for f in (a, b):
+        f.rtia.enableTimeRegulation(1)
+        f.rtia.enableTimeConstrained()
+    for f in (a, b):
+        f.until(lambda: bool(f.amb.named("timeRegulationEnabled")) and bool(f.amb.named("timeConstrainedEnabled")))
+    assert a.amb.named("timeRegulationEnabled")[0] == (0,) and a.rtia.queryLookahead() == 1
+    obj = a.rtia.registerObjectInstance(vehicle)
+    b.until(lambda: bool(b.amb.named("discoverObjectInstance")))
+    for step in range(1, 21):
+        handle = a.rtia.updateAttributeValues(obj, {position: step.to_bytes(4, "big")}, b"", step)
+        assert isinstance(handle, rti1516e.MessageRetractionHandle) and handle.isValid()
+        for f in (a, b):
+            f.rtia.timeAdvanceRequest(step)
+        for f in (a, b):
+            f.until(lambda: (step,) in f.amb.named("timeAdvanceGrant"))
+        reflected = b.amb.named("reflectAttributeValues")
+        assert len(reflected) == step, "every update before its grant"
+        assert reflected[-1][5] == step and type(reflected[-1][5]) is int and reflected[-1][6] == rti1516e.TIMESTAMP
+        assert isinstance(reflected[-1][7], rti1516e.MessageRetractionHandle)
+        assert reflected[-1][8]["hasProducingFederate"] and reflected[-1][8]["producingFederate"] == \
+            a.rtia.getFederateHandle("a")
+    assert a.rtia.queryLogicalTime() == 20 and type(a.rtia.queryLogicalTime()) is int
+    assert a.rtia.queryGALT() == 21 and b.rtia.queryLITS() is not None
+
+
+def test_a_1516e_federate_and_an_hla13_federate_share_a_federation(federates: Callable[[], Federate],
+                                                                   rtig: Any) -> None:
+    a = joined(federates, "new")
+    old_amb = Recorder()
+    old = rti.RTIAmbassador(rtig.address)
+    old.joinFederationExecution("old", "Vehicles", old_amb)  # type: ignore[arg-type]
+    try:
+        vehicle = old.getObjectClassHandle("Vehicle")
+        speed = old.getAttributeHandle("speed", vehicle)
+        old.subscribeObjectClassAttributes(vehicle, [speed])
+        cls = a.rtia.getObjectClassHandle("Vehicle")
+        attribute = a.rtia.getAttributeHandle(cls, "speed")
+        a.rtia.publishObjectClassAttributes(cls, [attribute])
+        obj = a.rtia.registerObjectInstance(cls, "shared")
+        a.rtia.updateAttributeValues(obj, {attribute: b"fast"}, b"1516e")
+        deadline = time.monotonic() + 10
+        while not old_amb.named("reflectAttributeValues") and time.monotonic() < deadline:
+            old.tick(0.02, 0.1)
+        values = old_amb.named("reflectAttributeValues")[0][1]
+        assert list(values.values()) == [b"fast"] and old_amb.named("discoverObjectInstance")[0][2] == "shared"
+    finally:
+        old.resignFederationExecution(rti.ResignAction.NoAction)
+
+
+def test_synchronization_points_with_a_set_and_the_failure_reason(federates: Callable[[], Federate]) -> None:
+    a, b = joined(federates, "a"), joined(federates, "b")
+    b_handle = a.rtia.getFederateHandle("b")
+    a.rtia.registerFederationSynchronizationPoint("ready", b"t", [b_handle])
+    b.until(lambda: bool(b.amb.named("announceSynchronizationPoint")))
+    assert b.amb.named("announceSynchronizationPoint")[0] == ("ready", b"t")
+    b.rtia.synchronizationPointAchieved("ready")
+    b.until(lambda: bool(b.amb.named("federationSynchronized")))
+    assert b.amb.named("federationSynchronized") == [("ready", set())]
+    a.until(lambda: bool(a.amb.named("synchronizationPointRegistrationSucceeded")))
+    assert a.amb.named("synchronizationPointRegistrationSucceeded") == [("ready",)]
+    assert not a.amb.named("announceSynchronizationPoint")
+    a.rtia.registerFederationSynchronizationPoint("all", b"")
+    a.rtia.registerFederationSynchronizationPoint("all", b"")
+    a.until(lambda: bool(a.amb.named("synchronizationPointRegistrationFailed")))
+    assert a.amb.named("synchronizationPointRegistrationFailed") == [("all", rti1516e.SYNCHRONIZATION_POINT_LABEL_NOT_UNIQUE)]
+
+
+def test_negotiated_divestiture_asks_for_confirmation(federates: Callable[[], Federate]) -> None:
+    a, b = joined(federates, "a"), joined(federates, "b")
+    vehicle = a.rtia.getObjectClassHandle("Vehicle")
+    speed = a.rtia.getAttributeHandle(vehicle, "speed")
+    for f in (a, b):
+        f.rtia.publishObjectClassAttributes(vehicle, [speed])
+        f.rtia.subscribeObjectClassAttributes(vehicle, [speed])
+    obj = a.rtia.registerObjectInstance(vehicle)
+    b.until(lambda: bool(b.amb.named("discoverObjectInstance")))
+    with pytest.raises(rti1516e.AttributeDivestitureWasNotRequested):
+        a.rtia.confirmDivestiture(obj, [speed], b"")
+    a.rtia.negotiatedAttributeOwnershipDivestiture(obj, [speed], b"take it")
+    b.until(lambda: bool(b.amb.named("requestAttributeOwnershipAssumption")))
+    assert b.amb.named("requestAttributeOwnershipAssumption")[0] == (obj, {speed}, b"take it")
+    b.rtia.attributeOwnershipAcquisition(obj, [speed], b"")
+    a.until(lambda: bool(a.amb.named("requestDivestitureConfirmation")))
+    a.rtia.confirmDivestiture(obj, [speed], b"")
+    b.until(lambda: bool(b.amb.named("attributeOwnershipAcquisitionNotification")))
+    assert b.rtia.isAttributeOwnedByFederate(obj, speed) and not a.rtia.isAttributeOwnedByFederate(obj, speed)
+    b.rtia.queryAttributeOwnership(obj, speed)
+    b.until(lambda: bool(b.amb.named("informAttributeOwnership")))
+    assert b.amb.named("informAttributeOwnership")[0] == (obj, speed, b.rtia.getFederateHandle("b"))
+
+
+def test_what_is_not_served_yet_says_so(federates: Callable[[], Federate]) -> None:
+    a = joined(federates, "a")
+    for call in (lambda: a.rtia.reserveObjectInstanceName("x"), lambda: a.rtia.createRegion(set()),
+                 lambda: a.rtia.joinFederationExecution("t", "Vehicles", [CARS]),
+                 lambda: a.rtia.queryFederationSaveStatus()):
+        with pytest.raises(rti1516e.RTIinternalError, match="hlacore does not serve"):
+            call()
+
+
+def test_encoded_handles_decode_to_equal_handles(federates: Callable[[], Federate]) -> None:
+    a = joined(federates, "a")
+    vehicle = a.rtia.getObjectClassHandle("Vehicle")
+    assert a.rtia.decodeObjectClassHandle(vehicle.encode()) == vehicle
+    with pytest.raises(rti1516e.CouldNotDecode):
+        a.rtia.decodeObjectClassHandle(b"\x01")

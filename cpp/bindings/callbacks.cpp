@@ -105,6 +105,16 @@ struct ToCallback {
     Named operator()(const wire::RemoveObject& m) const {
         return timed(C::removeObjectInstance, m, handle_of<ObjectHandle>(m.object), to_str(m.tag));
     }
+    Named operator()(const wire::ObjectNamesReserved& m) const {
+        if (m.multiple) {
+            py::tuple names(m.names.size());
+            for (std::size_t i = 0; i < m.names.size(); ++i) names[i] = to_str(m.names[i]);
+            return named(m.success ? C::multipleObjectInstanceNameReservationSucceeded
+                                   : C::multipleObjectInstanceNameReservationFailed, std::move(names));
+        }
+        return named(m.success ? C::objectInstanceNameReservationSucceeded : C::objectInstanceNameReservationFailed,
+                     to_str(m.names.empty() ? std::string() : m.names.front()));
+    }
     Named operator()(const wire::TimeRegulationEnabled& m) const { return named(C::timeRegulationEnabled, m.time); }
     Named operator()(const wire::TimeConstrainedEnabled& m) const { return named(C::timeConstrainedEnabled, m.time); }
     Named operator()(const wire::TimeAdvanceGrant& m) const { return named(C::timeAdvanceGrant, m.time); }

@@ -309,6 +309,7 @@ std::vector<std::uint32_t> raw(const std::vector<Handle<Kind>>& handles) {
 }
 inline std::string raw(const py::handle& tag) { return to_bytes(tag, "tag"); }
 inline const std::string& raw(const std::string& name) { return name; }
+inline const std::vector<std::string>& raw(const std::vector<std::string>& names) { return names; }
 inline bool raw(bool flag) { return flag; }
 inline std::uint8_t raw(std::uint8_t value) { return value; }
 

@@ -188,9 +188,9 @@ PYBIND11_MODULE(_core, m) {
     bind_regions(rtia);
     bind_support(rtia);
     bind_callbacks(rtia);
-    // The callbacks an ambassador may define, in their one declaration's order (wire/callbacks.hpp).
-    m.attr("CALLBACKS") = py::tuple(py::cast(std::vector<std::string>(std::begin(hlacore::wire::kCallbackNames),
-                                                                      std::end(hlacore::wire::kCallbackNames))));
+    // The callbacks an HLA 1.3 ambassador may define, in their one declaration's order (wire/callbacks.hpp).
+    m.attr("CALLBACKS") = py::tuple(py::cast(std::vector<std::string>(
+        std::begin(hlacore::wire::kCallbackNames), std::begin(hlacore::wire::kCallbackNames) + hlacore::wire::kHla13Callbacks)));
 
     // The pure time manager, exposed for the property tests (tests/rti/test_time_manager_properties.py).
     using hlacore::AdvanceKind;

@@ -51,6 +51,10 @@ void bind_objects(Ambassador& rtia) {
              py::arg("object"), py::arg("attributes"))
         .def("requestClassAttributeValueUpdate", request<wire::RequestClassUpdate, ObjectClassHandle, std::vector<AttributeHandle>>(),
              py::arg("objectClass"), py::arg("attributes"))
+        // object instance names (IEEE 1516-2010 §6.2-6.7, for hlacore.rti1516e)
+        .def("_reserve_names", request<wire::ReserveObjectNames, bool, std::vector<std::string>>(), py::arg("multiple"),
+             py::arg("names"))
+        .def("_release_names", request<wire::ReleaseObjectNames, std::vector<std::string>>(), py::arg("names"))
         // transport and order changes (HLA 1.3 §6.19-6.22)
         .def("changeAttributeTransportationType", forward<ObjectHandle, std::vector<AttributeHandle>, TransportationHandle>(&Client::change_attribute_transportation),
              py::arg("object"), py::arg("attributes"), py::arg("transportationHandle"))

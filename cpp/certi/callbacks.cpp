@@ -138,6 +138,11 @@ struct ToMessage {
     Message operator()(wire::TimeRegulationEnabled& m) { return timed(Type::TIME_REGULATION_ENABLED, m.time); }
     Message operator()(wire::TimeConstrainedEnabled& m) { return timed(Type::TIME_CONSTRAINED_ENABLED, m.time); }
     Message operator()(wire::TimeAdvanceGrant& m) { return timed(Type::TIME_ADVANCE_GRANT, m.time); }
+    Message operator()(wire::ObjectNamesReserved& m) {  // the rtia asks for one name at a time
+        Message out(m.success ? Type::RESERVE_OBJECT_INSTANCE_NAME_SUCCEEDED : Type::RESERVE_OBJECT_INSTANCE_NAME_FAILED);
+        out.name = m.names.empty() ? std::string() : m.names.front();
+        return out;
+    }
     Message operator()(wire::RequestRetraction& m) {
         Message out(Type::REQUEST_RETRACTION);
         out.retraction = EventRetraction{m.sender, m.serial};

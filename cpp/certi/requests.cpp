@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "certi/rtia.hpp"
+#include "fed_parser/omt.hpp"
 
 namespace hlacore::certi {
 
@@ -49,6 +50,26 @@ std::string file_path(const std::string& module) {
     std::string path = module.substr(scheme.size());
     while (path.size() > 1 && path[0] == '/' && path[1] == '/') path.erase(0, 1);  // file:///p, file://p
     return path;
+}
+
+// Several modules, each found here, merged here (errors at the federate's call) and sent as one bundle.
+void create_from_modules(Client& c, const std::string& federation, const std::vector<std::string>& names) {
+    if (names.empty()) raise(ErrorCode::CouldNotOpenFED, "no FOM module given");
+    std::vector<fom::FomModule> modules;
+    std::string paths;
+    for (const auto& name : names) {
+        std::string path;
+        std::string text = find_fed(file_path(name), path);
+        if (path.empty()) raise(ErrorCode::CouldNotOpenFED, "FOM module '" + name + "' was not found");
+        paths += (paths.empty() ? "" : ", ") + path;
+        modules.push_back({std::move(text), path});
+    }
+    try {
+        fom::parse_omt(modules);
+    } catch (const fom::FedError& e) {
+        raise(ErrorCode::ErrorReadingFED, e.what());
+    }
+    c.create_federation(federation, paths, fom::bundle(modules));
 }
 
 wire::AdvisorySwitch switch_of(Type t) {
@@ -97,10 +118,11 @@ Message Rtia::serve(const Message& q) {
         case Type::CREATE_FEDERATION_EXECUTION:
             create(c, q.federation_name, q.fed_id);
             break;
-        case Type::CREATE_FEDERATION_EXECUTION_V4:  // JCERTI's IEEE 1516-2010 create: it sends one FOM module
-            if (q.values.size() != 1)
-                unimplemented(q, std::to_string(q.values.size()) + " FOM modules: hlacore-rtia creates from one yet");
-            create(c, q.federation_name, file_path(q.values.front()));
+        case Type::CREATE_FEDERATION_EXECUTION_V4:  // JCERTI's IEEE 1516-2010 create: FOM modules by path or URL
+            if (q.values.size() == 1)
+                create(c, q.federation_name, file_path(q.values.front()));
+            else
+                create_from_modules(c, q.federation_name, q.values);
             break;
         case Type::JOIN_FEDERATION_EXECUTION_V4:
             if (!q.values.empty()) unimplemented(q, "additional FOM modules at join: not served yet");
@@ -277,8 +299,7 @@ Message Rtia::serve(const Message& q) {
         case Type::DDM_UNSUBSCRIBE_INTERACTION:
         case Type::DDM_REQUEST_UPDATE:
             unimplemented(q, "hlacore-rtia serves no DDM yet (CERTI 3.5.1's messages carry no extents)");
-        case Type::RESERVE_OBJECT_INSTANCE_NAME:
-            unimplemented(q, "name reservation is an IEEE 1516 service; hlacore-rtia serves HLA 1.3");
+        case Type::RESERVE_OBJECT_INSTANCE_NAME: c.request(wire::ReserveObjectNames{false, {q.name}}); break;
         default:
             // A callback's type, or a tick's out of place: not a request.
             raise(ErrorCode::RTIinternalError, std::string(type_name(q.type)) + " is not a request a federate sends");

@@ -129,6 +129,9 @@ MESSAGES = {
     "RecordedTopic": s("/TestFed/hlacore/grants") + s("hlacore.Grant") + s('{"type":"object"}'),
     "Recorded": s("/TestFed/hlacore/grants") + u32(3) + u64(1_700_000_000_000_000_000)
                 + s('{"federate":"robot","handle":1,"federate_time":0,"time":1}'),
+    "ReserveObjectNames": b(True) + u32(2) + s("r1") + s("r2"),
+    "ReleaseObjectNames": u32(1) + s("r1"),
+    "ObjectNamesReserved": b(False) + b(True) + u32(1) + s("r1"),
 }
 STREAMS = {
     "stream-join-publish-update": ["Hello", "JoinFederation", "PublishObjectClass", "RegisterObject", "UpdateAttributes"],

@@ -764,6 +764,10 @@ class RTIAmbassadorBase:
         ...
     def _poll(self) -> None:
         ...
+    def _release_names(self, names: collections.abc.Sequence[str]) -> None:
+        ...
+    def _reserve_names(self, multiple: bool, names: collections.abc.Sequence[str]) -> None:
+        ...
     def _resign(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
         ...
     def _send_counts(self) -> tuple[int, int]:
@@ -1248,7 +1252,7 @@ def parse_fom_modules(modules: collections.abc.Sequence[tuple[str, str]]) -> dic
     """
     Parse OMT XML FOM modules, (text, file name) pairs merged in order (a class may appear in several); raises ErrorReadingFED ("FILE:LINE:COL: message") on the first error or conflict. Returns plain data as parse_fed does.
     """
-CALLBACKS: tuple = ('synchronizationPointRegistrationSucceeded', 'synchronizationPointRegistrationFailed', 'announceSynchronizationPoint', 'federationSynchronized', 'initiateFederateSave', 'federationSaved', 'federationNotSaved', 'requestFederationRestoreSucceeded', 'requestFederationRestoreFailed', 'federationRestoreBegun', 'initiateFederateRestore', 'federationRestored', 'federationNotRestored', 'startRegistrationForObjectClass', 'stopRegistrationForObjectClass', 'turnInteractionsOn', 'turnInteractionsOff', 'discoverObjectInstance', 'reflectAttributeValues', 'receiveInteraction', 'removeObjectInstance', 'attributesInScope', 'attributesOutOfScope', 'provideAttributeValueUpdate', 'turnUpdatesOnForObjectInstance', 'turnUpdatesOffForObjectInstance', 'requestAttributeOwnershipAssumption', 'attributeOwnershipDivestitureNotification', 'attributeOwnershipAcquisitionNotification', 'attributeOwnershipUnavailable', 'requestAttributeOwnershipRelease', 'confirmAttributeOwnershipAcquisitionCancellation', 'informAttributeOwnership', 'attributeIsNotOwned', 'attributeOwnedByRTI', 'timeRegulationEnabled', 'timeConstrainedEnabled', 'timeAdvanceGrant', 'requestRetraction')
+CALLBACKS: tuple = ('synchronizationPointRegistrationSucceeded', 'synchronizationPointRegistrationFailed', 'announceSynchronizationPoint', 'federationSynchronized', 'initiateFederateSave', 'federationSaved', 'federationNotSaved', 'requestFederationRestoreSucceeded', 'requestFederationRestoreFailed', 'federationRestoreBegun', 'initiateFederateRestore', 'federationRestored', 'federationNotRestored', 'startRegistrationForObjectClass', 'stopRegistrationForObjectClass', 'turnInteractionsOn', 'turnInteractionsOff', 'discoverObjectInstance', 'reflectAttributeValues', 'receiveInteraction', 'removeObjectInstance', 'attributesInScope', 'attributesOutOfScope', 'provideAttributeValueUpdate', 'turnUpdatesOnForObjectInstance', 'turnUpdatesOffForObjectInstance', 'objectInstanceNameReservationSucceeded', 'objectInstanceNameReservationFailed', 'multipleObjectInstanceNameReservationSucceeded', 'multipleObjectInstanceNameReservationFailed', 'requestAttributeOwnershipAssumption', 'attributeOwnershipDivestitureNotification', 'attributeOwnershipAcquisitionNotification', 'attributeOwnershipUnavailable', 'requestAttributeOwnershipRelease', 'confirmAttributeOwnershipAcquisitionCancellation', 'informAttributeOwnership', 'attributeIsNotOwned', 'attributeOwnedByRTI', 'timeRegulationEnabled', 'timeConstrainedEnabled', 'timeAdvanceGrant', 'requestRetraction')
 MAX_BUSY_POLL_US: int = 100000
 MAX_DATAGRAM_RANGE: tuple = (256, 65507)
 MAX_EXTENT: int = 4294967295

@@ -368,8 +368,8 @@ def test_the_installed_rtia_is_named_by_hlacore_config() -> None:
 
 
 def test_jcertis_1516_create_and_join_with_an_xml_fom_module(certi: Certi, tmp_path: pathlib.Path) -> None:
-    """JCERTI's IEEE 1516-2010 ambassador creates from one FOM module named by URL and joins by federate type;
-    more modules are refused saying so."""
+    """JCERTI's IEEE 1516-2010 ambassador creates from FOM modules named by URL (one, or several merged), joins
+    by federate type, and reserves object instance names."""
     module = tmp_path / "robots.xml"
     module.write_text("""<objectModel><objects><objectClass><name>HLAobjectRoot</name><objectClass><name>robot</name>
 <attribute><name>location</name><transportation>HLAreliable</transportation><order>TimeStamp</order></attribute>
@@ -391,8 +391,20 @@ def test_jcertis_1516_create_and_join_with_an_xml_fom_module(certi: Certi, tmp_p
     f.send_raw(update[:1] + (len(update) + 4).to_bytes(4, "big") + update[5:] + (1).to_bytes(4, "big"))
     answer = f.receive()
     assert answer.type == "UPDATE_ATTRIBUTE_VALUES" and not answer.exception, answer.reason
-    with pytest.raises(CertiError, match="2 FOM modules"):
-        f.call("CREATE_FEDERATION_EXECUTION_V4", federation="Two", rti_version=3, values=[b"a.xml", b"b.xml"])
+    f.call("RESERVE_OBJECT_INSTANCE_NAME", name="r")  # held by the object: refused
+    f.call("RESERVE_OBJECT_INSTANCE_NAME", name="r2")
+    reserved = f.tick_until(lambda s: len([m for m in s if m.type.startswith("RESERVE_OBJECT_INSTANCE_NAME_")]) == 2)
+    assert [(m.type, m.name) for m in reserved if m.type.startswith("RESERVE")] == [
+        ("RESERVE_OBJECT_INSTANCE_NAME_FAILED", "r"), ("RESERVE_OBJECT_INSTANCE_NAME_SUCCEEDED", "r2")]
+    cars = tmp_path / "cars.xml"
+    cars.write_text("""<objectModel><objects><objectClass><name>HLAobjectRoot</name><objectClass><name>robot</name>
+<objectClass><name>car</name></objectClass></objectClass></objectClass></objects></objectModel>""")
+    f.call("CREATE_FEDERATION_EXECUTION_V4", federation="Two", rti_version=3,
+           values=[f"file://{module}".encode(), str(cars).encode()])
+    assert [fed["fed"] for fed in status(certi.address)["federations"] if fed["name"] == "Two"] == [f"{module}, {cars}"]
+    with pytest.raises(CertiError, match="CouldNotOpenFED.*missing.xml"):
+        f.call("CREATE_FEDERATION_EXECUTION_V4", federation="Three", rti_version=3,
+               values=[str(module).encode(), b"missing.xml"])
     f.call("RESIGN_FEDERATION_EXECUTION", resign_action=3)
     assert f.close() == 0
 

@@ -77,6 +77,11 @@ def joined(federates: Callable[[], Federate], name: str, time_type: str = "HLAfl
     return f
 
 
+def reserve(f: Federate, name: str) -> None:
+    f.rtia.reserveObjectInstanceName(name)
+    f.until(lambda: (name,) in f.amb.named("objectInstanceNameReservationSucceeded"))
+
+
 def test_handles_enumerations_and_exceptions_have_the_standards_shape() -> None:
     empty = rti1516e.ObjectClassHandle()
     assert not empty.isValid() and repr(empty) == "rti1516e::ObjectClassHandle(Invalid)" and empty.encode() == b""
@@ -153,6 +158,7 @@ def test_objects_and_interactions_arrive_with_the_standards_arguments(federates:
     a.rtia.publishInteractionClass(command)
     b.rtia.subscribeObjectClassAttributes(vehicle, {speed})
     b.rtia.subscribeInteractionClass(command)
+    reserve(a, "v1")
     obj = a.rtia.registerObjectInstance(vehicle, "v1")
     assert a.rtia.getObjectInstanceName(obj) == "v1"
     b.until(lambda: bool(b.amb.named("discoverObjectInstance")))
@@ -239,6 +245,7 @@ def test_a_1516e_federate_and_an_hla13_federate_share_a_federation(federates: Ca
         cls = a.rtia.getObjectClassHandle("Vehicle")
         attribute = a.rtia.getAttributeHandle(cls, "speed")
         a.rtia.publishObjectClassAttributes(cls, [attribute])
+        reserve(a, "shared")
         obj = a.rtia.registerObjectInstance(cls, "shared")
         a.rtia.updateAttributeValues(obj, {attribute: b"fast"}, b"1516e")
         deadline = time.monotonic() + 10
@@ -294,7 +301,7 @@ def test_negotiated_divestiture_asks_for_confirmation(federates: Callable[[], Fe
 
 def test_what_is_not_served_yet_says_so(federates: Callable[[], Federate]) -> None:
     a = joined(federates, "a")
-    for call in (lambda: a.rtia.reserveObjectInstanceName("x"), lambda: a.rtia.createRegion(set()),
+    for call in (lambda: a.rtia.createRegion(set()),
                  lambda: a.rtia.joinFederationExecution("t", "Vehicles", [CARS]),
                  lambda: a.rtia.queryFederationSaveStatus()):
         with pytest.raises(rti1516e.RTIinternalError, match="hlacore does not serve"):
@@ -307,3 +314,47 @@ def test_encoded_handles_decode_to_equal_handles(federates: Callable[[], Federat
     assert a.rtia.decodeObjectClassHandle(vehicle.encode()) == vehicle
     with pytest.raises(rti1516e.CouldNotDecode):
         a.rtia.decodeObjectClassHandle(b"\x01")
+
+
+def test_object_instance_names_are_reserved_before_registration(federates: Callable[[], Federate], rtig: Any) -> None:
+    a, b = joined(federates, "a"), joined(federates, "b")
+    vehicle = a.rtia.getObjectClassHandle("Vehicle")
+    speed = a.rtia.getAttributeHandle(vehicle, "speed")
+    for f in (a, b):
+        f.rtia.publishObjectClassAttributes(vehicle, [speed])
+    with pytest.raises(rti1516e.ObjectInstanceNameNotReserved):
+        a.rtia.registerObjectInstance(vehicle, "one")
+    with pytest.raises(rti1516e.IllegalName):
+        a.rtia.reserveObjectInstanceName("HLAone")
+    with pytest.raises(rti1516e.NameSetWasEmpty):
+        a.rtia.reserveMultipleObjectInstanceName([])
+    reserve(a, "one")
+    b.rtia.reserveObjectInstanceName("one")
+    b.until(lambda: bool(b.amb.named("objectInstanceNameReservationFailed")))
+    assert b.amb.named("objectInstanceNameReservationFailed") == [("one",)]
+    with pytest.raises(rti1516e.ObjectInstanceNameNotReserved):
+        b.rtia.registerObjectInstance(vehicle, "one")
+    assert a.rtia.getObjectInstanceName(a.rtia.registerObjectInstance(vehicle, "one")) == "one"
+    with pytest.raises(rti1516e.ObjectInstanceNameNotReserved):  # used up by the registration
+        a.rtia.releaseObjectInstanceName("one")
+
+    a.rtia.reserveMultipleObjectInstanceName(["m1", "m2"])
+    a.until(lambda: bool(a.amb.named("multipleObjectInstanceNameReservationSucceeded")))
+    assert a.amb.named("multipleObjectInstanceNameReservationSucceeded") == [({"m1", "m2"},)]
+    b.rtia.reserveMultipleObjectInstanceName(["m2", "m3"])  # all or none
+    b.until(lambda: bool(b.amb.named("multipleObjectInstanceNameReservationFailed")))
+    assert b.amb.named("multipleObjectInstanceNameReservationFailed") == [({"m2", "m3"},)]
+    reserve(b, "m3")
+    a.rtia.releaseMultipleObjectInstanceName(["m1"])
+    reserve(b, "m1")  # free again
+
+    old = rti.RTIAmbassador(rtig.address)  # an HLA 1.3 federate cannot take a reserved name
+    old.joinFederationExecution("old", "Vehicles", Recorder())  # type: ignore[arg-type]
+    try:
+        old.publishObjectClass(old.getObjectClassHandle("Vehicle"), [old.getAttributeHandle("speed", old.getObjectClassHandle("Vehicle"))])
+        with pytest.raises(rti.ObjectAlreadyRegistered, match="reserved by federate"):
+            old.registerObjectInstance(old.getObjectClassHandle("Vehicle"), "m2")
+    finally:
+        old.resignFederationExecution(rti.ResignAction.NoAction)
+    b.rtia.resignFederationExecution(rti1516e.NO_ACTION)  # its reservations go with it
+    reserve(a, "m3")

@@ -111,6 +111,15 @@ void Client::check(const wire::RequestClassUpdate& m) {
     check_attributes(defined_object_class(m.object_class), m.attributes);
 }
 
+// ---- object instance names (IEEE 1516-2010 §6.2-6.7): the gateway answers the reservation ----
+
+void Client::check(const wire::ReserveObjectNames& m) {
+    require_joined();
+    if (m.names.empty()) raise(ErrorCode::NameNotFound, "no name to reserve");
+}
+
+void Client::check(const wire::ReleaseObjectNames&) { require_joined(); }
+
 // ---- transport and order changes (HLA 1.3 §6.19-6.22) ----
 
 namespace {

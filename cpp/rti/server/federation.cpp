@@ -104,6 +104,7 @@ void Federation::resign(FederateHandle h, wire::ResignAction action) {
     time_.remove_federate(h);
     routed_.erase(h);
     sync_points_.departed(h);
+    reservations_.departed(h);
     save_restore_departed(h);
     update_advisories();
     count_scope_watchers();

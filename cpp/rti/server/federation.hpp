@@ -17,6 +17,7 @@
 #include "fed_parser/fom.hpp"
 #include "rti/exceptions.hpp"
 #include "rti/server/declarations.hpp"
+#include "rti/server/name_reservations.hpp"
 #include "rti/server/objects.hpp"
 #include "rti/server/outbox.hpp"
 #include "rti/server/regions.hpp"
@@ -261,6 +262,7 @@ private:
     std::map<ObjectHandle, ObjectInstance> objects_;
     std::unordered_map<std::string, ObjectHandle> object_names_;
     SyncPoints sync_points_{outbox_};
+    NameReservations reservations_{outbox_};
     std::size_t scope_watchers_ = 0;  // federates with the attribute scope or relevance switch on
 
     TimeManager time_;

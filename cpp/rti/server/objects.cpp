@@ -42,6 +42,8 @@ std::pair<ObjectHandle, std::string> Federation::register_object(FederateHandle 
             name = "HLAobject_" + std::to_string(oh) + "_" + std::to_string(suffix);
     } else if (object_names_.count(name)) {
         throw RtiError(ErrorCode::ObjectAlreadyRegistered, "an object named '" + name + "' already exists");
+    } else {
+        reservations_.registering(h, name);
     }
     ++next_object_;
     ObjectInstance& obj = objects_[oh];
@@ -318,6 +320,16 @@ void Federation::on(FederateHandle from, const wire::LocalDeleteObject& m) {
     OwnershipNotices notices;
     for (fom::Handle attr : owned) release_attribute(obj, attr, notices);
     send_notices(m.object, notices);
+}
+
+void Federation::on(FederateHandle from, const wire::ReserveObjectNames& m) {
+    federate(from);
+    reservations_.on(from, m, object_names_);
+}
+
+void Federation::on(FederateHandle from, const wire::ReleaseObjectNames& m) {
+    federate(from);
+    reservations_.on(from, m);
 }
 
 void Federation::on(FederateHandle from, const wire::RequestObjectUpdate& m) {

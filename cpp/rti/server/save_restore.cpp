@@ -550,6 +550,7 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
     objects_.clear();
     object_names_.clear();
     sync_points_.clear();  // their members' handles are gone
+    reservations_.clear();
     routed_.clear();
     time_ = TimeManager{};
     save_restore_.restore = SaveRestore::Run{};

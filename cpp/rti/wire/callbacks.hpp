@@ -34,18 +34,26 @@ namespace hlacore::wire {
     /* time management (§8) */                                                                           \
     X(timeRegulationEnabled) X(timeConstrainedEnabled) X(timeAdvanceGrant) X(requestRetraction)
 
+// The callbacks only IEEE 1516-2010 has, which no HLA 1.3 federate asks for: the object instance names
+// (§6.3, §6.6), delivered to hlacore.rti1516e's adapter by the binding.
+#define HLACORE_CALLBACKS_1516(X)                                                                        \
+    X(objectInstanceNameReservationSucceeded) X(objectInstanceNameReservationFailed)                     \
+    X(multipleObjectInstanceNameReservationSucceeded) X(multipleObjectInstanceNameReservationFailed)
+
 enum class Callback : std::size_t {
 #define HLACORE_X(name) name,
-    HLACORE_CALLBACKS(HLACORE_X)
+    HLACORE_CALLBACKS(HLACORE_X) HLACORE_CALLBACKS_1516(HLACORE_X)
 #undef HLACORE_X
         Count
 };
 
 constexpr const char* kCallbackNames[] = {
 #define HLACORE_X(name) #name,
-    HLACORE_CALLBACKS(HLACORE_X)
+    HLACORE_CALLBACKS(HLACORE_X) HLACORE_CALLBACKS_1516(HLACORE_X)
 #undef HLACORE_X
 };
+// The HLA 1.3 callbacks come first: this many.
+constexpr std::size_t kHla13Callbacks = static_cast<std::size_t>(Callback::objectInstanceNameReservationSucceeded);
 
 constexpr const char* callback_name(Callback c) { return kCallbackNames[static_cast<std::size_t>(c)]; }
 
@@ -58,6 +66,7 @@ constexpr const char* callback_name(Callback c) { return kCallbackNames[static_c
     X(StartRegistration) X(StopRegistration) X(TurnInteractionsOn) X(TurnInteractionsOff)              \
     X(DiscoverObject) X(ReflectAttributes) X(ReceiveInteraction) X(RemoveObject) X(AttributesInScope)  \
     X(AttributesOutOfScope) X(ProvideAttributeValueUpdate) X(TurnUpdatesOn) X(TurnUpdatesOff)          \
+    X(ObjectNamesReserved)                                                                             \
     X(RequestOwnershipAssumption) X(DivestitureNotification) X(AcquisitionNotification)                \
     X(OwnershipUnavailable) X(RequestOwnershipRelease) X(ConfirmAcquisitionCancellation)               \
     X(OwnershipInformation)                                                                            \

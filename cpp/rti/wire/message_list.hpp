@@ -16,7 +16,8 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // CreateFederation, DestroyFederation and JoinFederation; 9: a typed answer per request with a result
 // (FederationJoined ... TimeQueried), Reply only for the others and for refusals; 10: StartRecording,
 // RecordedTopic and Recorded; 11: QueryStatus's events_after and instances; 12: CreateFederation's
-// time_semantics
+// time_semantics; 13: CreateFederation's and FederationJoined's time_type, the object instance names'
+// ReserveObjectNames, ReleaseObjectNames and ObjectNamesReserved
 constexpr std::uint16_t kProtocolVersion = 13;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
@@ -152,7 +153,11 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     /* the recorder federate (python -m hlacore.record): federate -> gateway, then the records */ \
     X(StartRecording)                \
     X(RecordedTopic)                 \
-    X(Recorded)
+    X(Recorded)                      \
+    /* object instance names (IEEE 1516-2010 §6.2-6.7): federate -> gateway, and the answer */ \
+    X(ReserveObjectNames)            \
+    X(ReleaseObjectNames)            \
+    X(ObjectNamesReserved)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply or a result. Each has a `Gateway::serve(Connection&, const M&)` in
@@ -181,6 +186,7 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     /* objects */                                                                                      \
     X(UpdateAttributes) X(SendInteraction) X(DeleteObject) X(LocalDeleteObject) X(RequestObjectUpdate) \
     X(RequestClassUpdate) X(ChangeAttributeDelivery) X(ChangeInteractionDelivery)                      \
+    X(ReserveObjectNames) X(ReleaseObjectNames)                                                        \
     /* ownership */                                                                                    \
     X(UnconditionalDivestiture) X(NegotiatedDivestiture) X(CancelNegotiatedDivestiture)                \
     X(OwnershipAcquisition) X(OwnershipAcquisitionIfAvailable) X(CancelOwnershipAcquisition)           \
@@ -206,7 +212,8 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     X(UnpublishInteractionClass) X(SubscribeInteractionClass) X(UnsubscribeInteractionClass)           \
     X(SetAdvisorySwitch)                                                                               \
     /* objects */                                                                                      \
-    X(LocalDeleteObject) X(RequestObjectUpdate) X(RequestClassUpdate)                                  \
+    X(LocalDeleteObject) X(RequestObjectUpdate) X(RequestClassUpdate) X(ReserveObjectNames)            \
+    X(ReleaseObjectNames)                                                                              \
     /* ownership */                                                                                    \
     X(CancelNegotiatedDivestiture) X(CancelOwnershipAcquisition) X(QueryOwnership)                     \
     /* regions */                                                                                      \

@@ -338,6 +338,26 @@ struct Reply {
     std::string message;      // the exception's reason when error != 0
     HLACORE_FIELDS(request, error, message)
 };
+// Object instance names (IEEE 1516-2010 §6.2-6.7): reserved for the asking federate until it registers an
+// object with one, releases it or leaves.
+struct ReserveObjectNames {
+    HLACORE_TYPE(ReserveObjectNames)
+    bool multiple = false;  // reserveMultipleObjectInstanceName: all of them or none
+    std::vector<std::string> names;
+    HLACORE_FIELDS(multiple, names)
+};
+struct ReleaseObjectNames {
+    HLACORE_TYPE(ReleaseObjectNames)
+    std::vector<std::string> names;
+    HLACORE_FIELDS(names)
+};
+struct ObjectNamesReserved {  // the answer, a callback
+    HLACORE_TYPE(ObjectNamesReserved)
+    bool multiple = false;
+    bool success = false;
+    std::vector<std::string> names;
+    HLACORE_FIELDS(multiple, success, names)
+};
 // The results of requests, one message each.
 struct FederationJoined {  // JoinFederation
     HLACORE_TYPE(FederationJoined)

@@ -66,6 +66,16 @@ def _tag(tag: Any) -> bytes:
     return bytes(tag)
 
 
+def _legal_name(name: Any) -> str:
+    if isinstance(name, bytes):
+        name = name.decode("latin-1")
+    if not isinstance(name, str):
+        raise TypeError(f"an object instance name is a str, not {type(name).__name__}")
+    if not name or name.startswith("HLA"):
+        raise x.IllegalName(f"IllegalName: {name!r} (names beginning with HLA are the RTI's)")
+    return name
+
+
 def _module_text(module: Any) -> Tuple[str, str]:
     """A FOM module given as a path or file: URL: (its name, its text; "" when this process cannot read it)."""
     if isinstance(module, bytes):
@@ -230,6 +240,8 @@ class RTIambassador:
         action = e.enum_value(resignAction, e.RESIGN_ACTIONS, x.InvalidResignAction, "resign action")
         self._inner().resignFederationExecution(_RESIGN[action])
         self._joined = False
+        assert self._adapter is not None
+        self._adapter.reserved.clear()  # the gateway dropped them
         self._published.clear()
         self._subscribed.clear()
 
@@ -324,10 +336,48 @@ class RTIambassador:
         self._inner().unsubscribeInteractionClass(core(InteractionClassHandle, theClass))
 
     # ---- object management (§6) ----
+    def reserveObjectInstanceName(self, theObjectInstanceName: str) -> None:
+        """Reserve a name for an object this federate will register: ``objectInstanceNameReservationSucceeded``
+        or ``objectInstanceNameReservationFailed`` (the name is held or reserved) follows."""
+        self._inner()._reserve_names(False, [_legal_name(theObjectInstanceName)])
+
+    def reserveMultipleObjectInstanceName(self, theObjectInstanceNames: Iterable[str]) -> None:
+        """Reserve all of these names or none: ``multipleObjectInstanceNameReservationSucceeded`` or
+        ``...Failed`` follows with the set."""
+        if isinstance(theObjectInstanceNames, (str, bytes)):
+            raise TypeError("a collection of names, not one name")
+        names = [_legal_name(n) for n in theObjectInstanceNames]
+        if not names:
+            raise x.NameSetWasEmpty("NameSetWasEmpty: no name to reserve")
+        self._inner()._reserve_names(True, names)
+
+    def releaseObjectInstanceName(self, theObjectInstanceName: str) -> None:
+        """Give back a name this federate reserved and has not used."""
+        self._release([theObjectInstanceName])
+
+    def releaseMultipleObjectInstanceName(self, theObjectInstanceNames: Iterable[str]) -> None:
+        """Give back names this federate reserved and has not used."""
+        self._release(list(theObjectInstanceNames))
+
+    def _release(self, names: List[str]) -> None:
+        inner, adapter = self._inner(), self._adapter
+        assert adapter is not None
+        missing = [n for n in names if n not in adapter.reserved]
+        if missing:
+            raise x.ObjectInstanceNameNotReserved(f"ObjectInstanceNameNotReserved: {missing[0]!r}")
+        inner._release_names(names)
+        adapter.reserved.difference_update(names)
+
     def registerObjectInstance(self, theClass: Any, theObjectName: Optional[str] = None) -> ObjectInstanceHandle:
-        """Register an object of the class, named or given a unique name; returns its handle."""
-        return ObjectInstanceHandle.wrap(self._inner().registerObjectInstance(core(ObjectClassHandle, theClass),
-                                                                              theObjectName))
+        """Register an object of the class, with a name this federate reserved or a unique one; returns its
+        handle."""
+        inner, adapter = self._inner(), self._adapter
+        assert adapter is not None
+        if theObjectName is not None and theObjectName not in adapter.reserved:
+            raise x.ObjectInstanceNameNotReserved(f"ObjectInstanceNameNotReserved: {theObjectName!r} (reserve it first)")
+        handle = inner.registerObjectInstance(core(ObjectClassHandle, theClass), theObjectName)
+        adapter.reserved.discard(theObjectName or "")
+        return ObjectInstanceHandle.wrap(handle)
 
     def updateAttributeValues(self, theObject: Any, theAttributeValues: Mapping[Any, Any], theUserSuppliedTag: Any,
                               theTime: Any = None) -> Optional[MessageRetractionHandle]:
@@ -720,9 +770,6 @@ _NOT_SERVED = {
     "the core does not report another federate's transportation": (
         "queryAttributeTransportationType", "queryInteractionTransportationType"),
     "the FOM's update rates are not read yet": ("getUpdateRateValue", "getUpdateRateValueForAttribute"),
-    "the gateway does not reserve names yet; register the object with its name": (
-        "reserveObjectInstanceName", "releaseObjectInstanceName", "reserveMultipleObjectInstanceName",
-        "releaseMultipleObjectInstanceName"),
 }
 for _name, _doc in _PASSED.items():
     setattr(RTIambassador, _name, _passed(_name, _doc))

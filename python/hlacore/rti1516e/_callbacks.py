@@ -56,6 +56,7 @@ _PLAIN: Dict[str, Tuple[str, Sequence[Convert], Tuple[Any, ...]]] = {
     "turnInteractionsOn": ("turnInteractionsOn", (_INTERACTION,), ()),
     "turnInteractionsOff": ("turnInteractionsOff", (_INTERACTION,), ()),
     "discoverObjectInstance": ("discoverObjectInstance", (_OBJ, _CLASS, _SAME), ()),
+    "objectInstanceNameReservationFailed": ("objectInstanceNameReservationFailed", (_SAME,), ()),
     "provideAttributeValueUpdate": ("provideAttributeValueUpdate", (_OBJ, _ATTRS), (b"",)),
     "attributesInScope": ("attributesInScope", (_OBJ, _ATTRS), ()),
     "attributesOutOfScope": ("attributesOutOfScope", (_OBJ, _ATTRS), ()),
@@ -88,6 +89,7 @@ class Adapter:
         self.local: Deque[Tuple[str, Tuple[Any, ...]]] = deque()
         self.divesting: Dict[Any, Set[Any]] = {}  # object -> attributes told to confirm their divestiture
         self.sync_sets: Dict[str, bool] = {}      # label -> registered with a federate set
+        self.reserved: Set[str] = set()           # object instance names reserved and not used yet
         self.federate_name = ""
 
     def convert_time(self, time: float) -> Any:
@@ -124,6 +126,20 @@ class Adapter:
         with_set = self.sync_sets.pop(label, False)
         self.call("synchronizationPointRegistrationFailed", label,
                   e.SYNCHRONIZATION_SET_MEMBER_NOT_JOINED if with_set else e.SYNCHRONIZATION_POINT_LABEL_NOT_UNIQUE)
+
+    def objectInstanceNameReservationSucceeded(self, name: str) -> None:
+        """The name is this federate's to register an object with."""
+        self.reserved.add(name)
+        self.call("objectInstanceNameReservationSucceeded", name)
+
+    def multipleObjectInstanceNameReservationSucceeded(self, names: Tuple[str, ...]) -> None:
+        """The names are this federate's, a set."""
+        self.reserved.update(names)
+        self.call("multipleObjectInstanceNameReservationSucceeded", set(names))
+
+    def multipleObjectInstanceNameReservationFailed(self, names: Tuple[str, ...]) -> None:
+        """None of the names was reserved, a set."""
+        self.call("multipleObjectInstanceNameReservationFailed", set(names))
 
     def initiateFederateSave(self, label: str, time: Optional[float] = None) -> None:
         """With the save's time when it has one."""

@@ -391,11 +391,11 @@ def test_jcertis_1516_create_and_join_with_an_xml_fom_module(certi: Certi, tmp_p
     f.send_raw(update[:1] + (len(update) + 4).to_bytes(4, "big") + update[5:] + (1).to_bytes(4, "big"))
     answer = f.receive()
     assert answer.type == "UPDATE_ATTRIBUTE_VALUES" and not answer.exception, answer.reason
-    f.call("RESERVE_OBJECT_INSTANCE_NAME", name="r")  # held by the object: refused
-    f.call("RESERVE_OBJECT_INSTANCE_NAME", name="r2")
-    reserved = f.tick_until(lambda s: len([m for m in s if m.type.startswith("RESERVE_OBJECT_INSTANCE_NAME_")]) == 2)
-    assert [(m.type, m.name) for m in reserved if m.type.startswith("RESERVE")] == [
-        ("RESERVE_OBJECT_INSTANCE_NAME_FAILED", "r"), ("RESERVE_OBJECT_INSTANCE_NAME_SUCCEEDED", "r2")]
+    for name in ("r", "HLAobject_9", "r2"):  # held by the object, the RTI's, free
+        f.call("RESERVE_OBJECT_INSTANCE_NAME", name=name)
+    reserved = f.tick_until(lambda s: len([m for m in s if m.type.startswith("RESERVE_OBJECT_INSTANCE_NAME_")]) == 3)
+    assert [(m.type[len("RESERVE_OBJECT_INSTANCE_NAME_"):], m.name) for m in reserved if m.type.startswith("RESERVE")] == [
+        ("FAILED", "r"), ("FAILED", "HLAobject_9"), ("SUCCEEDED", "r2")]
     cars = tmp_path / "cars.xml"
     cars.write_text("""<objectModel><objects><objectClass><name>HLAobjectRoot</name><objectClass><name>robot</name>
 <objectClass><name>car</name></objectClass></objectClass></objectClass></objects></objectModel>""")

@@ -6,7 +6,10 @@
 namespace hlacore {
 
 void NameReservations::on(FederateHandle from, const wire::ReserveObjectNames& m, const ObjectNames& objects) {
-    auto taken = [&](const std::string& name) { return objects.count(name) || reserved_.count(name); };
+    // Names beginning with HLA are the RTI's (IEEE 1516-2010 §6.2; the gateway names objects HLAobject_<n>).
+    auto taken = [&](const std::string& name) {
+        return name.empty() || name.compare(0, 3, "HLA") == 0 || objects.count(name) || reserved_.count(name);
+    };
     if (m.multiple) {
         bool free = !m.names.empty();
         for (const auto& name : m.names) free = free && !taken(name);

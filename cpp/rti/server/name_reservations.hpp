@@ -16,8 +16,8 @@ public:
 
     explicit NameReservations(Outbox& outbox) : outbox_(outbox) {}
 
-    // reserve(Multiple)ObjectInstanceName, answered with ObjectNamesReserved: a name an object holds or one
-    // already reserved fails (all the names of a multiple reservation).
+    // reserve(Multiple)ObjectInstanceName, answered with ObjectNamesReserved: a name an object holds, one
+    // already reserved, or one of the RTI's (beginning with HLA) fails (all the names of a multiple one).
     void on(FederateHandle from, const wire::ReserveObjectNames& m, const ObjectNames& objects);
     // Names this federate reserved go back; others are left alone.
     void on(FederateHandle from, const wire::ReleaseObjectNames& m);

@@ -90,9 +90,11 @@ def test_the_space_reference_fom_merges_from_its_six_modules() -> None:
     assert {c[2] for c in fom["interaction_classes"]} >= {"HLAinteractionRoot", "ModeTransitionRequest"}
 
 
-def test_trickhlas_encoder_test_fom_loads() -> None:
-    fom = _core.parse_fom_modules(shared_modules("trickhla/Encoders_Test_FOM.xml"))
-    assert "STCTest" in classes(fom)
+def test_trickhlas_test_foms_load() -> None:
+    assert "STCTest" in classes(_core.parse_fom_modules(shared_modules("trickhla/Encoders_Test_FOM.xml")))
+    for name in ("trickhla/FixedRecordTest.xml", "trickhla/Sine_FOM.xml"):
+        fom = _core.parse_fom_modules(shared_modules(name))
+        assert len(fom["object_classes"]) > 1, name  # a class of its own beside the root
 
 
 def test_the_2000_and_2010_forms_read_the_same() -> None:

@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import math
 import struct
+import xml.etree.ElementTree as ElementTree
+from typing import Any
 
 import pytest
 
 import hlacore.omt as omt
 
-from support import TESTS
+from support import ROOT, TESTS
 
 DATA = TESTS / "data" / "omt"
 ROBOT = DATA / "robot-2010.xml"
@@ -521,3 +523,61 @@ def test_unknown_discriminant_and_missing_fields(fom, tmp_path):
             {"sequence": 1, "tolerance": 0, "pose": {"x": 0, "y": 0, "theta": "north"}}]})
     with pytest.raises(ValueError, match=r"LidarRanges: 2049 elements exceed the cardinality"):
         fom.LidarRanges.pack([1.0] * 2049)
+
+
+SHARED_FOMS = ROOT.parent / "shared" / "foms"
+# In an order where every module finds the types it uses among those loaded before it.
+SHARED_MODULES = ["space-fom/SISO_SpaceFOM_datatypes.xml", "space-fom/SISO_SpaceFOM_switches.xml",
+                  "space-fom/SISO_SpaceFOM_environment.xml", "space-fom/SISO_SpaceFOM_management.xml",
+                  "space-fom/SISO_SpaceFOM_management2.xml", "space-fom/SISO_SpaceFOM_entity.xml",
+                  "trickhla/FixedRecordTest.xml", "trickhla/Encoders_Test_FOM.xml", "trickhla/Sine_FOM.xml"]
+
+
+def _sample(t: Any) -> Any:
+    """A value of data type `t` (not its zero where one is easy to get wrong)."""
+    if isinstance(t, omt.HLAfixedRecord):
+        return {name: _sample(field) for name, field in t.fields}
+    if isinstance(t, omt.HLAvariantRecord):
+        enumerators, name, alternative = next((a for a in t.alternatives if a[0] != (None,)), t.alternatives[0])
+        chosen = enumerators[0]
+        if chosen is None or isinstance(chosen, slice):  # HLAother or a range: an enumerator it covers
+            chosen = next(iter(t.discriminantType.enumerators.values())) if chosen is None else chosen.start
+        value = {t.discriminantName: chosen}
+        if name is not None and alternative is not None:
+            value[name] = _sample(alternative)
+        return value
+    if isinstance(t, omt.HLAenumerated):
+        return list(t.enumerators.values())[-1]
+    if isinstance(t, omt.HLAfixedArray):
+        return [_sample(t.elementType)] * t.cardinality
+    if isinstance(t, omt.HLAvariableArray):
+        return [_sample(t.elementType)] * min(3, t.cardinality or 3)
+    for value in (7, 1.5, True, "Ab", b"\x07", b"\x00\x01\x02"):
+        try:
+            t.pack(value)
+        except (TypeError, ValueError):
+            continue
+        return value
+    raise AssertionError(f"no sample value for {t.name}")
+
+
+def test_every_data_type_of_the_shared_fom_modules_round_trips(fom: Any) -> None:
+    """../shared/foms (the Space Reference FOM's six modules, TrickHLA's test FOMs) load unchanged, and each
+    data type they declare encodes a value, decodes it whole and encodes the decoded value to the same bytes."""
+    paths = [SHARED_FOMS / name for name in SHARED_MODULES]
+    assert all(p.is_file() for p in paths), f"the FOM modules of ../shared/foms are missing under {SHARED_FOMS}"
+    checked = 0
+    for path in paths:
+        for name, data_type in fom.HLAuse(path).items():
+            value = _sample(data_type)
+            data = data_type.pack(value)
+            back, size = data_type.unpack(data)
+            assert size == len(data) and data_type.pack(back) == data, (path.name, name, value, back)
+            checked += 1
+    assert checked == sum(_declared_types(p) for p in paths)
+
+
+def _declared_types(path: Any) -> int:
+    """How many data types a module declares (its dataTypes' elements of the six kinds)."""
+    kinds = {"basicData", "simpleData", "enumeratedData", "arrayData", "fixedRecordData", "variantRecordData"}
+    return sum(1 for e in ElementTree.parse(path).iter() if e.tag.rsplit("}", 1)[-1] in kinds)

@@ -55,6 +55,9 @@ void bind_support(Ambassador& rtia) {
         .def("getRoutingSpaceName", query<std::string, SpaceHandle>(&Client::routing_space_name), py::arg("space"))
         .def("getDimensionHandle", query<DimensionHandle, std::string, SpaceHandle>(&Client::dimension_handle),
              py::arg("name"), py::arg("space"))
+        .def("_dimension_upper_bound", [](const Client& c, DimensionHandle d, SpaceHandle s) {
+            return c.dimension_upper_bound(d.value, s.value);
+        })
         .def("getDimensionName", query<std::string, DimensionHandle, SpaceHandle>(&Client::dimension_name),
              py::arg("dimension"), py::arg("space"))
         .def("getAttributeRoutingSpaceHandle", query<SpaceHandle, AttributeHandle, ObjectClassHandle>(&Client::attribute_routing_space),

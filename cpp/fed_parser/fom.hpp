@@ -48,13 +48,21 @@ struct ObjectClass {
     const Attribute* privilege_to_delete() const;
 };
 
-// A parameter of an interaction class or a dimension of a routing space: nothing but a handle and a name.
+// A parameter of an interaction class: nothing but a handle and a name.
 struct NamedHandle {
     Handle handle = 0;
     std::string name;
 };
 using Parameter = NamedHandle;
-using Dimension = NamedHandle;
+
+// A dimension of a routing space. An OMT module's dimensions (IEEE 1516-2010 DDM) are one routing space,
+// kOmtSpace, and declare an upper bound: a range's bounds lie in [0, upper_bound]. A .fed's have none (0).
+struct Dimension {
+    Handle handle = 0;
+    std::string name;
+    std::uint64_t upper_bound = 0;
+};
+inline constexpr const char* kOmtSpace = "HLAdimensions";
 
 struct InteractionClass {
     Handle handle = 0;

@@ -6,6 +6,7 @@
 #include <expat.h>
 
 #include <algorithm>
+#include <charconv>
 #include <map>
 #include <memory>
 #include <optional>
@@ -119,13 +120,24 @@ struct Member {
     std::string name;
     Delivery delivery;
     Place where;
+    bool dimensions = false;  // it names dimensions: its space is kOmtSpace
 };
+
+// Whether a class or an attribute names dimensions: 1516.2-2010's <dimensions><dimension>, 2000's
+// dimensions="A B".
+bool names_dimensions(const Element& e) {
+    const std::string listed = e.value("dimensions");
+    if (!listed.empty() && listed != "NA") return true;
+    const Element* d = e.child("dimensions");
+    return d && std::any_of(d->children.begin(), d->children.end(), [](const Element& c) { return c.name == "dimension"; });
+}
 
 struct ClassTree {
     std::string name;
     Place where;
     std::optional<Delivery> delivery;  // an interaction class's own, once a module gives it
     Place delivery_where;
+    bool dimensions = false;           // an interaction class that names dimensions
     std::vector<Member> members;
     std::vector<ClassTree> children;
 };
@@ -157,6 +169,25 @@ public:
         }
     }
 
+    // The dimensions a module declares, added to `out` (handles in order from 1); one declared again must
+    // have the same upper bound.
+    void dimensions(const Element& list, std::vector<std::pair<Dimension, Place>>& out) {
+        for (const Element& e : list.children) {
+            if (e.name != "dimension") continue;
+            const std::string name = e.value("name"), bound = e.value("upperBound");
+            if (name.empty()) fail(e, "a dimension without a name");
+            std::uint64_t upper = 0;
+            const auto [end, error] = std::from_chars(bound.data(), bound.data() + bound.size(), upper);
+            if (bound.empty() || error != std::errc() || end != bound.data() + bound.size() || upper == 0 ||
+                upper > 0xFFFFFFFFull)
+                fail(e, "dimension '" + name + "' has no upper bound in 1.." + std::to_string(0xFFFFFFFFull) + " ('" + bound + "')");
+            const auto same = std::find_if(out.begin(), out.end(), [&](const auto& d) { return d.first.name == name; });
+            if (same == out.end()) out.push_back({Dimension{static_cast<Handle>(out.size() + 1), name, upper}, place(e)});
+            else if (same->first.upper_bound != upper)
+                fail(e, "dimension '" + name + "' has another upper bound at " + same->second.text());
+        }
+    }
+
 private:
     [[noreturn]] void fail(const Element& e, const std::string& message) const {
         throw FedError(module_.file_name, e.line, e.column, message);
@@ -181,6 +212,7 @@ private:
         if (node.where.file.empty()) node.where = place(e);
         const std::string what = std::string(family.kind) + " '" + node.name + "'";
         if (!family.member_delivery) {
+            node.dimensions = node.dimensions || names_dimensions(e);
             if (const auto d = delivery(e, what)) {
                 if (node.delivery && (node.delivery->transport != d->transport || node.delivery->order != d->order))
                     fail(e, what + " has another transportation or order at " + node.delivery_where.text());
@@ -197,7 +229,7 @@ private:
                 const auto same = std::find_if(node.members.begin(), node.members.end(),
                                                [&](const Member& m) { return m.name == name; });
                 if (same == node.members.end()) {
-                    node.members.push_back({name, d, place(c)});
+                    node.members.push_back({name, d, place(c), names_dimensions(c)});
                 } else if (name != "HLAprivilegeToDeleteObject" &&  // the MIM's, declared again as it likes
                            (same->delivery.transport != d.transport || same->delivery.order != d.order)) {
                     fail(c, std::string(family.member) + " '" + name + "' of " + what + " is declared otherwise at " +
@@ -257,6 +289,7 @@ void number(const ClassTree& node, Handle parent, std::vector<Cls>& out, std::ve
         if constexpr (std::is_same_v<M, Attribute>) {
             member.transport = m.delivery.transport;
             member.order = m.delivery.order;
+            if (m.dimensions) member.space = kOmtSpace;
         }
         (cls.*members).push_back(std::move(member));
         inherited.push_back(&m);
@@ -265,6 +298,7 @@ void number(const ClassTree& node, Handle parent, std::vector<Cls>& out, std::ve
         const Delivery d = node.delivery.value_or(parent ? Delivery{out[parent - 1].transport, out[parent - 1].order} : Delivery{});
         cls.transport = d.transport;
         cls.order = d.order;
+        cls.space = node.dimensions ? kOmtSpace : parent ? out[parent - 1].space : std::string();
     }
     n.total += (cls.*members).size();
     if (n.total > kMaxClassMembers)
@@ -296,6 +330,7 @@ Fom parse_omt(const std::vector<FomModule>& modules) {
     ClassTree objects = root("HLAobjectRoot", Member{"HLAprivilegeToDeleteObject", {Transport::Reliable, Order::Timestamp},
                                                      {"the MIM", 0, 0}});
     ClassTree interactions = root("HLAinteractionRoot", std::nullopt);
+    std::vector<std::pair<Dimension, Place>> dimensions;
     Fom fom;
     for (const FomModule& m : modules) {
         const Element document = read_xml(m);
@@ -310,10 +345,18 @@ Fom parse_omt(const std::vector<FomModule>& modules) {
             fom.federation_name = id ? id->value("name") : model->value("name");
         }
         Merger merger(m);
+        if (const Element* d = model->child("dimensions")) merger.dimensions(*d, dimensions);
         if (const Element* o = model->child("objects")) merger.classes(*o, "objectClass", kObjects, objects);
         if (const Element* i = model->child("interactions")) merger.classes(*i, "interactionClass", kInteractions, interactions);
     }
     fom.fed_version = "IEEE 1516-2010";
+    if (!dimensions.empty()) {
+        RoutingSpace space;
+        space.handle = 1;
+        space.name = kOmtSpace;
+        for (auto& [d, where] : dimensions) space.dimensions.push_back(std::move(d));
+        fom.spaces.push_back(std::move(space));
+    }
     Numbering n;  // one bound on the members of both trees, as parse_fed counts them
     number(objects, 0, fom.object_classes, &ObjectClass::attributes, {}, n);
     n.qualified.clear();  // the two trees' names are apart

@@ -752,6 +752,8 @@ class RTIAmbassadorBase:
         ...
     def _datagram_fileno(self) -> int:
         ...
+    def _dimension_upper_bound(self, arg0: DimensionHandle, arg1: SpaceHandle) -> int:
+        ...
     def _dispatch(self, ambassador: typing.Any, stop_after_grant: bool, max_seconds: typing.SupportsFloat | typing.SupportsIndex) -> int:
         ...
     def _federate_handle(self) -> FederateHandle:
@@ -1252,7 +1254,7 @@ def parse_fom_modules(modules: collections.abc.Sequence[tuple[str, str]]) -> dic
     """
     Parse OMT XML FOM modules, (text, file name) pairs merged in order (a class may appear in several); raises ErrorReadingFED ("FILE:LINE:COL: message") on the first error or conflict. Returns plain data as parse_fed does.
     """
-CALLBACKS: tuple = ('synchronizationPointRegistrationSucceeded', 'synchronizationPointRegistrationFailed', 'announceSynchronizationPoint', 'federationSynchronized', 'initiateFederateSave', 'federationSaved', 'federationNotSaved', 'requestFederationRestoreSucceeded', 'requestFederationRestoreFailed', 'federationRestoreBegun', 'initiateFederateRestore', 'federationRestored', 'federationNotRestored', 'startRegistrationForObjectClass', 'stopRegistrationForObjectClass', 'turnInteractionsOn', 'turnInteractionsOff', 'discoverObjectInstance', 'reflectAttributeValues', 'receiveInteraction', 'removeObjectInstance', 'attributesInScope', 'attributesOutOfScope', 'provideAttributeValueUpdate', 'turnUpdatesOnForObjectInstance', 'turnUpdatesOffForObjectInstance', 'objectInstanceNameReservationSucceeded', 'objectInstanceNameReservationFailed', 'multipleObjectInstanceNameReservationSucceeded', 'multipleObjectInstanceNameReservationFailed', 'requestAttributeOwnershipAssumption', 'attributeOwnershipDivestitureNotification', 'attributeOwnershipAcquisitionNotification', 'attributeOwnershipUnavailable', 'requestAttributeOwnershipRelease', 'confirmAttributeOwnershipAcquisitionCancellation', 'informAttributeOwnership', 'attributeIsNotOwned', 'attributeOwnedByRTI', 'timeRegulationEnabled', 'timeConstrainedEnabled', 'timeAdvanceGrant', 'requestRetraction')
+CALLBACKS: tuple = ('synchronizationPointRegistrationSucceeded', 'synchronizationPointRegistrationFailed', 'announceSynchronizationPoint', 'federationSynchronized', 'initiateFederateSave', 'federationSaved', 'federationNotSaved', 'requestFederationRestoreSucceeded', 'requestFederationRestoreFailed', 'federationRestoreBegun', 'initiateFederateRestore', 'federationRestored', 'federationNotRestored', 'startRegistrationForObjectClass', 'stopRegistrationForObjectClass', 'turnInteractionsOn', 'turnInteractionsOff', 'discoverObjectInstance', 'reflectAttributeValues', 'receiveInteraction', 'removeObjectInstance', 'attributesInScope', 'attributesOutOfScope', 'provideAttributeValueUpdate', 'turnUpdatesOnForObjectInstance', 'turnUpdatesOffForObjectInstance', 'requestAttributeOwnershipAssumption', 'attributeOwnershipDivestitureNotification', 'attributeOwnershipAcquisitionNotification', 'attributeOwnershipUnavailable', 'requestAttributeOwnershipRelease', 'confirmAttributeOwnershipAcquisitionCancellation', 'informAttributeOwnership', 'attributeIsNotOwned', 'attributeOwnedByRTI', 'timeRegulationEnabled', 'timeConstrainedEnabled', 'timeAdvanceGrant', 'requestRetraction')
 MAX_BUSY_POLL_US: int = 100000
 MAX_DATAGRAM_RANGE: tuple = (256, 65507)
 MAX_EXTENT: int = 4294967295

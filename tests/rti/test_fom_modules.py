@@ -173,3 +173,28 @@ def test_a_federation_from_an_xml_module_serves_python_and_certi_federates(rtig:
         assert certi.close() == 0
     watcher.resignFederationExecution(rti.ResignAction.NoAction)
     creator.destroyFederationExecution("Roads")
+
+
+DIMENSIONS = """<objectModel><objects><objectClass><name>HLAobjectRoot</name><objectClass><name>Car</name>
+<attribute><name>at</name><dimensions><dimension>X</dimension></dimensions></attribute><attribute><name>colour</name>
+</attribute></objectClass></objectClass></objects><interactions><interactionClass><name>HLAinteractionRoot</name>
+<interactionClass><name>Honk</name><dimensions><dimension>X</dimension></dimensions><interactionClass><name>Loud</name>
+</interactionClass></interactionClass></interactionClass></interactions>
+<dimensions><dimension><name>X</name><upperBound>100</upperBound></dimension></dimensions></objectModel>"""
+
+
+def test_dimensions_are_one_routing_space_of_the_attributes_and_classes_that_name_them() -> None:
+    more = "<objectModel><dimensions><dimension name='Y' upperBound='7'/></dimensions></objectModel>"  # 2000's form
+    fom = _core.parse_fom_modules([(DIMENSIONS, "cars.xml"), (more, "y.xml")])
+    assert fom["spaces"] == [(1, "HLAdimensions", [(1, "X"), (2, "Y")])]
+    car = next(c for c in fom["object_classes"] if c[1] == "Car")
+    assert [(a[1], a[4]) for a in car[5]] == [("HLAprivilegeToDeleteObject", None), ("at", "HLAdimensions"),
+                                              ("colour", None)]
+    spaces = {c[1]: c[7] for c in fom["interaction_classes"]}
+    assert spaces["Honk"] == spaces["Loud"] == "HLAdimensions" and spaces["HLAinteractionRoot"] is None
+    assert _core.parse_fom_modules([(DIMENSIONS, "a.xml"), (DIMENSIONS, "b.xml")])["spaces"][0][2] == [(1, "X")]
+    other = DIMENSIONS.replace("<upperBound>100<", "<upperBound>5<")
+    with pytest.raises(_core.ErrorReadingFED, match=r"b\.xml:\d+:\d+: dimension 'X' has another upper bound at a\.xml:"):
+        _core.parse_fom_modules([(DIMENSIONS, "a.xml"), (other, "b.xml")])
+    with pytest.raises(_core.ErrorReadingFED, match=r"c\.xml:\d+:\d+: dimension 'X' has no upper bound"):
+        _core.parse_fom_modules([(DIMENSIONS.replace("<upperBound>100</upperBound>", ""), "c.xml")])

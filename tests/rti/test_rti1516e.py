@@ -301,7 +301,7 @@ def test_negotiated_divestiture_asks_for_confirmation(federates: Callable[[], Fe
 
 def test_what_is_not_served_yet_says_so(federates: Callable[[], Federate]) -> None:
     a = joined(federates, "a")
-    for call in (lambda: a.rtia.createRegion(set()),
+    for call in (lambda: a.rtia.queryFederationRestoreStatus(),
                  lambda: a.rtia.joinFederationExecution("t", "Vehicles", [CARS]),
                  lambda: a.rtia.queryFederationSaveStatus()):
         with pytest.raises(rti1516e.RTIinternalError, match="hlacore does not serve"):
@@ -346,6 +346,7 @@ def test_object_instance_names_are_reserved_before_registration(federates: Calla
     assert b.amb.named("multipleObjectInstanceNameReservationFailed") == [({"m2", "m3"},)]
     reserve(b, "m3")
     a.rtia.releaseMultipleObjectInstanceName(["m1"])
+    a.rtia.getFederateHandle("a")  # a round trip on a's connection: the gateway has taken the release
     reserve(b, "m1")  # free again
 
     old = rti.RTIAmbassador(rtig.address)  # an HLA 1.3 federate cannot take a reserved name
@@ -358,3 +359,112 @@ def test_object_instance_names_are_reserved_before_registration(federates: Calla
         old.resignFederationExecution(rti.ResignAction.NoAction)
     b.rtia.resignFederationExecution(rti1516e.NO_ACTION)  # its reservations go with it
     reserve(a, "m3")
+
+
+def test_a_1000_step_lockstep_of_a_1516e_and_an_hla13_federate(federates: Callable[[], Federate], rtig: Any) -> None:
+    """Both regulating and constrained with lookahead 1, each updating its vehicle's position at t before
+    asking for t: every grant, on both sides, comes after the other's update at its time."""
+    steps = 1000
+    new = joined(federates, "new")
+    old_amb = Recorder()
+    old = rti.RTIAmbassador(rtig.address)
+    old.joinFederationExecution("old", "Vehicles", old_amb)  # type: ignore[arg-type]
+    try:
+        vehicle = new.rtia.getObjectClassHandle("Vehicle")
+        position = new.rtia.getAttributeHandle(vehicle, "position")
+        new.rtia.publishObjectClassAttributes(vehicle, [position])
+        new.rtia.subscribeObjectClassAttributes(vehicle, [position])
+        old_vehicle = old.getObjectClassHandle("Vehicle")
+        old_position = old.getAttributeHandle("position", old_vehicle)
+        old.publishObjectClass(old_vehicle, [old_position])
+        old.subscribeObjectClassAttributes(old_vehicle, [old_position])
+        old.enable_time_management(1.0)
+        new.rtia.enableTimeRegulation(1.0)
+        new.rtia.enableTimeConstrained()
+        new.until(lambda: bool(new.amb.named("timeRegulationEnabled")) and bool(new.amb.named("timeConstrainedEnabled")))
+        reserve(new, "new-vehicle")
+        mine = new.rtia.registerObjectInstance(vehicle, "new-vehicle")
+        theirs = old.registerObjectInstance(old_vehicle, "old-vehicle")
+        start = new.rtia.queryLogicalTime()
+        assert old.queryFederateTime() == start
+        for step in range(1, steps + 1):
+            t = start + step
+            new.rtia.updateAttributeValues(mine, {position: b"new %d" % step}, b"", t)
+            old.updateAttributeValues(theirs, {old_position: b"old %d" % step}, "", t)
+            new.rtia.timeAdvanceRequest(t)
+            old.timeAdvanceRequest(t)
+            deadline = time.monotonic() + 30
+            while not ((t,) in new.amb.named("timeAdvanceGrant") and old_amb.named("timeAdvanceGrant")[-1:] == [(t,)]):
+                assert time.monotonic() < deadline, f"step {step} not granted"
+                new.rtia.evokeMultipleCallbacks(0.0, 0.05)
+                old.tick(0.0, 0.05)
+    finally:
+        old.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+    for calls, peer in ((new.amb.calls, b"old"), (old_amb.calls, b"new")):
+        last, grants = None, 0
+        for name, args in calls:
+            if name == "reflectAttributeValues" and len(args) > 5 and args[5] is not None:
+                last = (bytes(next(iter(args[1].values()))), args[5])
+            elif name == "timeAdvanceGrant" and args[0] > start:
+                grants += 1
+                assert last == (peer + b" %d" % (args[0] - start), args[0]), f"grant {args[0]} after {last}"
+        assert grants == steps
+
+
+def test_regions_over_the_modules_dimensions(federates: Callable[[], Federate]) -> None:
+    """Ranges are half-open, [lower, upper); a dimension a region does not name spans its axis."""
+    a, b = joined(federates, "a"), joined(federates, "b")
+    x, y = a.rtia.getDimensionHandle("X"), a.rtia.getDimensionHandle("Y")
+    assert (a.rtia.getDimensionName(x), a.rtia.getDimensionUpperBound(x), a.rtia.getDimensionUpperBound(y)) == ("X", 1000, 500)
+    vehicle = a.rtia.getObjectClassHandle("Vehicle")
+    position, speed = (a.rtia.getAttributeHandle(vehicle, n) for n in ("position", "speed"))
+    command = a.rtia.getInteractionClassHandle("Command")
+    verb = a.rtia.getParameterHandle(command, "verb")
+    assert a.rtia.getAvailableDimensionsForClassAttribute(vehicle, position) == {x, y}
+    assert a.rtia.getAvailableDimensionsForClassAttribute(vehicle, speed) == set()
+    assert a.rtia.getAvailableDimensionsForInteractionClass(command) == {x, y}
+
+    wanted = b.rtia.createRegion({x})
+    assert b.rtia.getDimensionHandleSet(wanted) == {x} and b.rtia.getRangeBounds(wanted, x) == (0, 1000)
+    b.rtia.setRangeBounds(wanted, x, (0, 100))
+    b.rtia.commitRegionModifications({wanted})
+    with pytest.raises(rti1516e.InvalidRangeBound):
+        b.rtia.setRangeBounds(wanted, x, (10, 1001))
+    with pytest.raises(rti1516e.RegionDoesNotContainSpecifiedDimension):
+        b.rtia.getRangeBounds(wanted, y)
+    with pytest.raises(rti1516e.RegionNotCreatedByThisFederate):
+        a.rtia.getRangeBounds(wanted, x)
+    b.rtia.subscribeObjectClassAttributesWithRegions(vehicle, [({position}, {wanted})])
+    b.rtia.subscribeInteractionClassWithRegions(command, {wanted})
+
+    a.rtia.publishObjectClassAttributes(vehicle, [position])
+    a.rtia.publishInteractionClass(command)
+    at = a.rtia.createRegion({x, y})
+    a.rtia.setRangeBounds(at, x, (500, 600))
+    a.rtia.commitRegionModifications([at])
+    reserve(a, "v")
+    v = a.rtia.registerObjectInstanceWithRegions(vehicle, [({position}, {at})], "v")
+    a.rtia.updateAttributeValues(v, {position: b"far"}, b"")
+    a.rtia.sendInteractionWithRegions(command, {verb: b"far"}, {at}, b"")
+    a.rtia.setRangeBounds(at, x, (99, 100))  # [99, 100) meets [0, 100) at 99
+    a.rtia.commitRegionModifications([at])
+    a.rtia.updateAttributeValues(v, {position: b"near"}, b"")
+    a.rtia.sendInteractionWithRegions(command, {verb: b"near"}, {at}, b"")
+    a.rtia.setRangeBounds(at, x, (100, 200))  # [100, 200) does not
+    a.rtia.commitRegionModifications([at])
+    a.rtia.updateAttributeValues(v, {position: b"edge"}, b"")
+    a.rtia.sendInteractionWithRegions(command, {verb: b"edge"}, {at}, b"")
+    a.rtia.setRangeBounds(at, x, (0, 1))
+    a.rtia.commitRegionModifications([at])
+    a.rtia.updateAttributeValues(v, {position: b"back"}, b"")
+    a.rtia.sendInteractionWithRegions(command, {verb: b"back"}, {at}, b"")
+    b.until(lambda: len(b.amb.named("reflectAttributeValues")) == 2 and len(b.amb.named("receiveInteraction")) == 2)
+    assert [args[1][position] for args in b.amb.named("reflectAttributeValues")] == [b"near", b"back"]
+    assert [args[1][verb] for args in b.amb.named("receiveInteraction")] == [b"near", b"back"]
+    with pytest.raises(rti1516e.RTIinternalError, match="hlacore does not serve"):
+        a.rtia.sendInteractionWithRegions(command, {verb: b""}, {at, a.rtia.createRegion({y})}, b"")
+    b.rtia.unsubscribeObjectClassAttributesWithRegions(vehicle, [({position}, {wanted})])
+    b.rtia.unsubscribeInteractionClassWithRegions(command, {wanted})
+    b.rtia.deleteRegion(wanted)
+    with pytest.raises(rti1516e.RegionNotCreatedByThisFederate):
+        b.rtia.deleteRegion(wanted)

@@ -204,6 +204,8 @@ public:
     std::string routing_space_name(fom::Handle space) const;
     fom::Handle dimension_handle(const std::string& name, fom::Handle space) const;
     std::string dimension_name(fom::Handle dimension, fom::Handle space) const;
+    // An OMT module's dimension's upper bound (IEEE 1516-2010); 0 for a .fed's.
+    std::uint64_t dimension_upper_bound(fom::Handle dimension, fom::Handle space) const;
     fom::Handle attribute_routing_space(fom::Handle attribute, fom::Handle cls) const;
     fom::Handle interaction_routing_space(fom::Handle cls) const;
     // The transportation and ordering types by name ("HLAreliable", "HLAbestEffort"; "Receive", "Timestamp")
@@ -476,6 +478,7 @@ private:
     }
     [[noreturn]] void too_long(const char* service, std::size_t length) const;
     const fom::ObjectClass& defined_object_class(fom::Handle cls) const;
+    const fom::Dimension& defined_dimension(fom::Handle dimension, fom::Handle space) const;
     // AttributeNotDefined for a handle the class does not have.
     static void check_attributes(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes);
     // What sendInteraction checks before the time: the class is defined and published, the parameters defined.

@@ -109,14 +109,23 @@ fom::Handle Client::dimension_handle(const std::string& name, fom::Handle space)
     raise(ErrorCode::NameNotFound, "routing space '" + s->name + "' has no dimension named '" + name + "'");
 }
 
-std::string Client::dimension_name(fom::Handle dimension, fom::Handle space) const {
-    std::lock_guard<std::mutex> lock(mu_);
+const fom::Dimension& Client::defined_dimension(fom::Handle dimension, fom::Handle space) const {
     require_joined();
     const auto* s = fom_->space(space);
     if (!s) raise(ErrorCode::SpaceNotDefined, "routing space handle " + std::to_string(space) + " is not defined");
-    if (const auto* d = s->dimension(dimension)) return d->name;
+    if (const auto* d = s->dimension(dimension)) return *d;
     raise(ErrorCode::DimensionNotDefined, "dimension handle " + std::to_string(dimension) + " is not defined in '" +
                                               s->name + "'");
+}
+
+std::string Client::dimension_name(fom::Handle dimension, fom::Handle space) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    return defined_dimension(dimension, space).name;
+}
+
+std::uint64_t Client::dimension_upper_bound(fom::Handle dimension, fom::Handle space) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    return defined_dimension(dimension, space).upper_bound;
 }
 
 fom::Handle Client::attribute_routing_space(fom::Handle attribute, fom::Handle cls) const {

@@ -3,22 +3,20 @@
 
 from __future__ import annotations
 
-import functools
 import json
-import os
 import uuid
-from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Set, Tuple, Type, TypeVar
+from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Set, Tuple, Type
 
 from .. import _core
 from .. import rti as _rti13
 from . import _enums as e
 from . import _exceptions as x
 from ._callbacks import Adapter
-from ._handles import (CORE_TYPES, AttributeHandle, DimensionHandle, FederateHandle, Handle, InteractionClassHandle,
-                       MessageRetractionHandle, ObjectClassHandle, ObjectInstanceHandle, ParameterHandle,
-                       RegionHandle, core, cores, decode, wrap_set)
-
-F = TypeVar("F", bound=Callable[..., Any])
+from ._regions import Regions
+from ._support import legal_name, module_text, not_served, services, tag_of, translating, values_of
+from ._handles import (CORE_TYPES, AttributeHandle, FederateHandle, Handle, InteractionClassHandle,
+                       MessageRetractionHandle, ObjectClassHandle, ObjectInstanceHandle, ParameterHandle, core, cores,
+                       decode, wrap_set)
 
 TIME_TYPES = {"HLAfloat64Time": 0, "HLAinteger64Time": 1}
 # IEEE 1516-2010's resign actions as the core's HLA 1.3 ones (rti.ResignAction). The core cancels a resigning
@@ -27,74 +25,9 @@ _RESIGN = {e.UNCONDITIONALLY_DIVEST_ATTRIBUTES: 1, e.DELETE_OBJECTS: 2, e.CANCEL
            e.DELETE_OBJECTS_THEN_DIVEST: 3, e.CANCEL_THEN_DELETE_THEN_DIVEST: 3, e.NO_ACTION: 4}
 
 
-def _translating(method: F) -> F:
-    @functools.wraps(method)
-    def call(*args: Any, **kwargs: Any) -> Any:
-        try:
-            return method(*args, **kwargs)
-        except _core.RTIexception as error:
-            raise x.translate(error) from None
-    return call  # type: ignore[return-value]
 
-
-def _services(cls: Any) -> Any:
-    """Every public method of `cls` raises IEEE 1516-2010's exceptions for the core's."""
-    for name, value in list(vars(cls).items()):
-        if callable(value) and not name.startswith("_"):
-            setattr(cls, name, _translating(value))
-    return cls
-
-
-def _not_served(service: str, why: str) -> x.Exception:
-    return x.RTIinternalError(f"RTIinternalError: hlacore does not serve {service} yet: {why}")
-
-
-def _values(handle_type: type, values: Mapping[Any, Any]) -> Dict[Any, bytes]:
-    if not hasattr(values, "items"):
-        raise TypeError(f"a dict of {handle_type.__name__} to bytes was expected, not {type(values).__name__}")
-    out = {}
-    for h, v in values.items():
-        if isinstance(v, str) or v is None:
-            raise TypeError(f"the value of {h!r} must be bytes-like, not {type(v).__name__}")
-        out[core(handle_type, h)] = bytes(v)
-    return out
-
-
-def _tag(tag: Any) -> bytes:
-    if isinstance(tag, str) or tag is None:
-        raise TypeError(f"a tag is bytes-like, not {type(tag).__name__}")
-    return bytes(tag)
-
-
-def _legal_name(name: Any) -> str:
-    if isinstance(name, bytes):
-        name = name.decode("latin-1")
-    if not isinstance(name, str):
-        raise TypeError(f"an object instance name is a str, not {type(name).__name__}")
-    if not name or name.startswith("HLA"):
-        raise x.IllegalName(f"IllegalName: {name!r} (names beginning with HLA are the RTI's)")
-    return name
-
-
-def _module_text(module: Any) -> Tuple[str, str]:
-    """A FOM module given as a path or file: URL: (its name, its text; "" when this process cannot read it)."""
-    if isinstance(module, bytes):
-        module = module.decode("utf-8", "surrogateescape")
-    if not isinstance(module, str):
-        raise TypeError(f"a FOM module is given by its path or URL, not {type(module).__name__}")
-    path = module[len("file://"):] if module.startswith("file://") else module[len("file:"):] \
-        if module.startswith("file:") else module
-    if not os.path.isfile(path):
-        return module, ""
-    try:
-        with open(path, "r", encoding="utf-8", errors="surrogateescape") as f:
-            return module, f.read()
-    except OSError as error:
-        raise x.CouldNotOpenFDD(f"CouldNotOpenFDD: cannot read {module!r}: {error.strerror}") from None
-
-
-@_services
-class RTIambassador:
+@services
+class RTIambassador(Regions):
     """A federate's connection to the RTI with IEEE 1516-2010's services (OpenRTI's Python module's shape).
 
     ``RTIambassador(**settings)``: the keywords of :class:`hlacore.rti.RTIAmbassador` (``timeout``,
@@ -114,6 +47,7 @@ class RTIambassador:
         self._resign_directive = e.CANCEL_THEN_DELETE_THEN_DIVEST
         self._published: Dict[Any, Set[Any]] = {}   # object class -> attributes (1516-2010 publishes add up)
         self._subscribed: Dict[Any, Set[Any]] = {}
+        self._regions: Dict[int, Dict[Any, Tuple[int, int]]] = {}  # region -> dimension -> [lower, upper)
 
     # ---- the inner ambassador, times and enumerations ----
     def _inner(self) -> _rti13.RTIAmbassador:
@@ -185,7 +119,7 @@ class RTIambassador:
                                                      f"{', '.join(TIME_TYPES)})")
         if not modules:
             raise x.CouldNotOpenFDD("CouldNotOpenFDD: no FOM module given")
-        read = [_module_text(m) for m in modules]
+        read = [module_text(m) for m in modules]
         unread = [n for n, text in read if not text]
         if unread and len(read) > 1:
             raise x.CouldNotOpenFDD(f"CouldNotOpenFDD: cannot open {unread[0]!r}")
@@ -214,7 +148,7 @@ class RTIambassador:
         """``(federateType, federationName)``, ``(federateName, federateType, federationName)``, either with
         a list of additional FOM modules last. Without a name the federate gets a unique one."""
         if len(args) == 4 or (len(args) == 3 and not isinstance(args[2], (str, bytes))):
-            raise _not_served("additional FOM modules at join", "give every module to createFederationExecution")
+            raise not_served("additional FOM modules at join", "give every module to createFederationExecution")
         if len(args) == 2:
             federate_type, federation = args
             name = f"{federate_type}-{uuid.uuid4().hex[:12]}"
@@ -244,6 +178,7 @@ class RTIambassador:
         self._adapter.reserved.clear()  # the gateway dropped them
         self._published.clear()
         self._subscribed.clear()
+        self._regions.clear()  # the gateway deleted them
 
     def registerFederationSynchronizationPoint(self, synchronizationPointLabel: str, userSuppliedTag: Any,
                                                synchronizationSet: Optional[Iterable[Any]] = None) -> None:
@@ -251,12 +186,12 @@ class RTIambassador:
         federates = cores(FederateHandle, synchronizationSet) if synchronizationSet else None
         assert self._adapter is not None
         self._adapter.sync_sets[synchronizationPointLabel] = bool(federates)
-        self._inner().registerFederationSynchronizationPoint(synchronizationPointLabel, _tag(userSuppliedTag), federates)
+        self._inner().registerFederationSynchronizationPoint(synchronizationPointLabel, tag_of(userSuppliedTag), federates)
 
     def synchronizationPointAchieved(self, synchronizationPointLabel: str, successful: Any = True) -> None:
         """This federate reached the point (``successful=False`` is not served: the core has no failed set)."""
         if not successful:
-            raise _not_served("an unsuccessful synchronizationPointAchieved", "the core has no failed set")
+            raise not_served("an unsuccessful synchronizationPointAchieved", "the core has no failed set")
         self._inner().synchronizationPointAchieved(synchronizationPointLabel)
 
     def requestFederationSave(self, label: str, time: Any = None) -> None:
@@ -312,7 +247,7 @@ class RTIambassador:
                                        updateRateDesignator: str = "") -> None:
         """Subscribe to these attributes of the class (added to those subscribed before)."""
         if updateRateDesignator:
-            raise _not_served("update rates", "the FOM's update rates are not read yet")
+            raise not_served("update rates", "the FOM's update rates are not read yet")
         inner = self._inner()
         self._declare(self._subscribed, theClass, attributeList, True,
                       lambda c, a: inner.subscribeObjectClassAttributes(c, a, bool(active)), inner.unsubscribeObjectClass)
@@ -339,14 +274,14 @@ class RTIambassador:
     def reserveObjectInstanceName(self, theObjectInstanceName: str) -> None:
         """Reserve a name for an object this federate will register: ``objectInstanceNameReservationSucceeded``
         or ``objectInstanceNameReservationFailed`` (the name is held or reserved) follows."""
-        self._inner()._reserve_names(False, [_legal_name(theObjectInstanceName)])
+        self._inner()._reserve_names(False, [legal_name(theObjectInstanceName)])
 
     def reserveMultipleObjectInstanceName(self, theObjectInstanceNames: Iterable[str]) -> None:
         """Reserve all of these names or none: ``multipleObjectInstanceNameReservationSucceeded`` or
         ``...Failed`` follows with the set."""
         if isinstance(theObjectInstanceNames, (str, bytes)):
             raise TypeError("a collection of names, not one name")
-        names = [_legal_name(n) for n in theObjectInstanceNames]
+        names = [legal_name(n) for n in theObjectInstanceNames]
         if not names:
             raise x.NameSetWasEmpty("NameSetWasEmpty: no name to reserve")
         self._inner()._reserve_names(True, names)
@@ -383,21 +318,21 @@ class RTIambassador:
                               theTime: Any = None) -> Optional[MessageRetractionHandle]:
         """Send new values; with a time, timestamped, returning its retraction handle."""
         return self._timed(self._inner().updateAttributeValues(
-            core(ObjectInstanceHandle, theObject), _values(AttributeHandle, theAttributeValues),
-            _tag(theUserSuppliedTag), None if theTime is None else self._time_in(theTime)))
+            core(ObjectInstanceHandle, theObject), values_of(AttributeHandle, theAttributeValues),
+            tag_of(theUserSuppliedTag), None if theTime is None else self._time_in(theTime)))
 
     def sendInteraction(self, theInteraction: Any, theParameterValues: Mapping[Any, Any], theUserSuppliedTag: Any,
                         theTime: Any = None) -> Optional[MessageRetractionHandle]:
         """Send an interaction; with a time, timestamped, returning its retraction handle."""
         return self._timed(self._inner().sendInteraction(
-            core(InteractionClassHandle, theInteraction), _values(ParameterHandle, theParameterValues),
-            _tag(theUserSuppliedTag), None if theTime is None else self._time_in(theTime)))
+            core(InteractionClassHandle, theInteraction), values_of(ParameterHandle, theParameterValues),
+            tag_of(theUserSuppliedTag), None if theTime is None else self._time_in(theTime)))
 
     def deleteObjectInstance(self, objectHandle: Any, theUserSuppliedTag: Any,
                              theTime: Any = None) -> Optional[MessageRetractionHandle]:
         """Delete an object; with a time, timestamped, returning its retraction handle."""
         return self._timed(self._inner().deleteObjectInstance(
-            core(ObjectInstanceHandle, objectHandle), _tag(theUserSuppliedTag),
+            core(ObjectInstanceHandle, objectHandle), tag_of(theUserSuppliedTag),
             None if theTime is None else self._time_in(theTime)))
 
     def localDeleteObjectInstance(self, objectHandle: Any) -> None:
@@ -406,7 +341,7 @@ class RTIambassador:
 
     def requestAttributeValueUpdate(self, theObjectOrClass: Any, theAttributes: Iterable[Any], theUserSuppliedTag: Any) -> None:
         """Ask the owners of an object's attributes, or of every object of a class, to provide them."""
-        _tag(theUserSuppliedTag)  # the core's request carries no tag
+        tag_of(theUserSuppliedTag)  # the core's request carries no tag
         attributes = cores(AttributeHandle, theAttributes)
         if isinstance(theObjectOrClass, ObjectClassHandle):
             self._inner().requestClassAttributeValueUpdate(core(ObjectClassHandle, theObjectOrClass), attributes)
@@ -439,7 +374,7 @@ class RTIambassador:
     def negotiatedAttributeOwnershipDivestiture(self, theObject: Any, theAttributes: Iterable[Any], theUserSuppliedTag: Any) -> None:
         """Offer these attributes to a federate that takes them (``requestDivestitureConfirmation`` then)."""
         self._inner().negotiatedAttributeOwnershipDivestiture(core(ObjectInstanceHandle, theObject),
-                                                              cores(AttributeHandle, theAttributes), _tag(theUserSuppliedTag))
+                                                              cores(AttributeHandle, theAttributes), tag_of(theUserSuppliedTag))
 
     def confirmDivestiture(self, theObject: Any, theAttributes: Iterable[Any], theUserSuppliedTag: Any) -> None:
         """Confirm the divestiture ``requestDivestitureConfirmation`` asked for. The core, following HLA 1.3,
@@ -455,7 +390,7 @@ class RTIambassador:
     def attributeOwnershipAcquisition(self, theObject: Any, desiredAttributes: Iterable[Any], theUserSuppliedTag: Any) -> None:
         """Acquire these attributes, asking their owners to release them."""
         self._inner().attributeOwnershipAcquisition(core(ObjectInstanceHandle, theObject),
-                                                    cores(AttributeHandle, desiredAttributes), _tag(theUserSuppliedTag))
+                                                    cores(AttributeHandle, desiredAttributes), tag_of(theUserSuppliedTag))
 
     def attributeOwnershipAcquisitionIfAvailable(self, theObject: Any, desiredAttributes: Iterable[Any]) -> None:
         """Acquire those of these attributes nobody owns."""
@@ -562,7 +497,7 @@ class RTIambassador:
         the federate may delete and releases the rest: CANCEL_THEN_DELETE_THEN_DIVEST)."""
         action = e.enum_value(resignAction, e.RESIGN_ACTIONS, x.InvalidResignAction, "resign action")
         if action != e.CANCEL_THEN_DELETE_THEN_DIVEST:
-            raise _not_served("another automatic resign action", "the gateway deletes and divests a vanished federate")
+            raise not_served("another automatic resign action", "the gateway deletes and divests a vanished federate")
         self._resign_directive = action
 
     def _federates(self) -> List[Dict[str, Any]]:
@@ -659,20 +594,6 @@ class RTIambassador:
         """Hold callbacks back until :meth:`enableCallbacks`."""
         self._callbacks_enabled = False
 
-    # ---- data distribution management (§9): regions over the FOM's dimensions ----
-    def _ddm(self, *args: Any) -> Any:
-        raise _not_served("IEEE 1516-2010 data distribution management",
-                          "the FOM modules' dimensions are not read yet (hlacore.rti serves HLA 1.3's)")
-
-    createRegion = commitRegionModifications = deleteRegion = _ddm
-    registerObjectInstanceWithRegions = associateRegionsForUpdates = unassociateRegionsForUpdates = _ddm
-    subscribeObjectClassAttributesWithRegions = unsubscribeObjectClassAttributesWithRegions = _ddm
-    subscribeInteractionClassWithRegions = unsubscribeInteractionClassWithRegions = _ddm
-    sendInteractionWithRegions = requestAttributeValueUpdateWithRegions = _ddm
-    getDimensionHandle = getDimensionName = getDimensionUpperBound = getDimensionHandleSet = _ddm
-    getAvailableDimensionsForClassAttribute = getAvailableDimensionsForInteractionClass = _ddm
-    getRangeBounds = setRangeBounds = _ddm
-
     def getTimeFactory(self) -> str:
         """The federation's time type's name (``"HLAfloat64Time"`` or ``"HLAinteger64Time"``): times are
         Python floats or ints, so no factory object is needed."""
@@ -685,7 +606,7 @@ def _decoder(kind: Type[Handle]) -> Callable[[RTIambassador, Any], Any]:
         return decode(kind, encodedValue, CORE_TYPES[kind])
     decode_handle.__name__ = f"decode{kind.__name__}"
     decode_handle.__doc__ = f"The {kind.__name__} ``encode()`` gave these bytes for; raises ``CouldNotDecode``."
-    return _translating(decode_handle)
+    return translating(decode_handle)
 
 
 def _switch(switch: str, core_name: str, on: bool) -> Callable[[RTIambassador], None]:
@@ -693,7 +614,7 @@ def _switch(switch: str, core_name: str, on: bool) -> Callable[[RTIambassador], 
         getattr(self._inner(), ("enable" if on else "disable") + core_name)()
     set_switch.__name__ = ("enable" if on else "disable") + switch
     set_switch.__doc__ = f"Turn the {switch[:-len('AdvisorySwitch')]} advisory switch {'on' if on else 'off'}."
-    return _translating(set_switch)
+    return translating(set_switch)
 
 
 def _lookup(core_name: str, result: type, kinds: Tuple[type, ...], doc: str) -> Callable[..., Any]:
@@ -705,7 +626,7 @@ def _lookup(core_name: str, result: type, kinds: Tuple[type, ...], doc: str) -> 
         return found if result is str else result.wrap(found)  # type: ignore[attr-defined]
     name = core_name if core_name != "getObjectClass" else "getKnownObjectClassHandle"
     look_up.__name__, look_up.__doc__ = name, doc
-    return _translating(look_up)
+    return translating(look_up)
 
 
 # 1516-2010's lookups: the core's service (which takes the arguments in the reverse order), what it gives, the
@@ -740,12 +661,12 @@ def _passed(name: str, doc: str) -> Callable[[RTIambassador], None]:
     def service(self: RTIambassador) -> None:
         getattr(self._inner(), name)()
     service.__name__, service.__doc__ = name, doc
-    return _translating(service)
+    return translating(service)
 
 
 def _refused(name: str, why: str) -> Callable[..., Any]:
     def refuse(self: RTIambassador, *args: Any) -> Any:
-        raise _not_served(name, why)
+        raise not_served(name, why)
     refuse.__name__, refuse.__doc__ = name, f"Not served yet: raises ``RTIinternalError`` ({why})."
     return refuse
 

@@ -357,6 +357,7 @@ void bind_callbacks(Ambassador& rtia) {
         .def("_poll", &Client::poll_now, py::call_guard<py::gil_scoped_release>())
         .def("_wait", &wait_for_callback, py::arg("timeout"))
         .def("_has_callbacks", &Client::has_callbacks)
+        .def("_lost", &Client::lost)
         .def("await_grant", &await_grant, py::arg("timeout") = py::none())
         .def("advance_to", &advance_and_await<AdvanceKind::TimeAdvanceRequest>, py::arg("time"),
              py::arg("timeout") = py::none())

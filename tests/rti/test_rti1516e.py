@@ -12,7 +12,7 @@ import pytest
 import hlacore.rti as rti
 import hlacore.rti1516e as rti1516e
 from hlacore import _core
-from support import ROOT
+from support import ROOT, RtigProcess
 
 DATA = ROOT / "tests" / "data" / "rti1516e"
 VEHICLES, CARS = str(DATA / "vehicles.xml"), str(DATA / "cars.xml")
@@ -139,7 +139,7 @@ def test_the_callback_model_and_the_connection_are_checked(rtig: Any) -> None:
     with pytest.raises(rti1516e.NotConnected):
         rtia.createFederationExecution("X", VEHICLES)
     with pytest.raises(rti1516e.UnsupportedCallbackModel):
-        rtia.connect(Recorder(), "HLA_IMMEDIATE", rtig.address)
+        rtia.connect(Recorder(), "HLA_LATER", rtig.address)
     rtia.connect(Recorder(), "HLA_EVOKED", "rti://" + rtig.address)
     with pytest.raises(rti1516e.AlreadyConnected):
         rtia.connect(Recorder(), "HLA_EVOKED", rtig.address)
@@ -468,3 +468,59 @@ def test_regions_over_the_modules_dimensions(federates: Callable[[], Federate]) 
     b.rtia.deleteRegion(wanted)
     with pytest.raises(rti1516e.RegionNotCreatedByThisFederate):
         b.rtia.deleteRegion(wanted)
+
+
+def wait_for(done: Callable[[], bool], seconds: float = 10.0) -> None:
+    deadline = time.monotonic() + seconds
+    while not done():
+        assert time.monotonic() < deadline, f"not done in {seconds} s"
+        time.sleep(0.01)
+
+
+def test_the_immediate_model_delivers_callbacks_on_its_own_thread(federates: Callable[[], Federate], rtig: Any) -> None:
+    a = joined(federates, "a")
+    amb = Recorder()
+    b = rti1516e.RTIambassador()
+    b.connect(amb, "HLA_IMMEDIATE", rtig.address)
+    b.joinFederationExecution("b", "test", "Vehicles")
+    try:
+        command = a.rtia.getInteractionClassHandle("Command")
+        verb = a.rtia.getParameterHandle(command, "verb")
+        a.rtia.publishInteractionClass(command)
+        b.subscribeInteractionClass(b.getInteractionClassHandle("Command"))
+        a.rtia.getFederateHandle("b")  # a round trip: the gateway has b's subscription
+        a.rtia.sendInteraction(command, {verb: b"first"}, b"")
+        wait_for(lambda: len(amb.named("receiveInteraction")) == 1)  # nobody evokes
+        assert b.evokeCallback(0.0) is False  # nothing left for the caller
+        b.disableCallbacks()
+        a.rtia.sendInteraction(command, {verb: b"held"}, b"")
+        time.sleep(0.3)
+        assert len(amb.named("receiveInteraction")) == 1
+        b.enableCallbacks()
+        wait_for(lambda: len(amb.named("receiveInteraction")) == 2)
+        assert [args[1][verb] for args in amb.named("receiveInteraction")] == [b"first", b"held"]
+    finally:
+        b.resignFederationExecution(rti1516e.NO_ACTION)
+        b.disconnect()
+
+
+@pytest.mark.parametrize("model", ["HLA_EVOKED", "HLA_IMMEDIATE"])
+def test_a_lost_connection_is_told_once_by_connection_lost(tmp_path: Any, model: str) -> None:
+    server = RtigProcess(tmp_path)
+    amb = Recorder()
+    rtia = rti1516e.RTIambassador()
+    rtia.connect(amb, model, server.address)
+    rtia.createFederationExecution("Vehicles", VEHICLES)
+    rtia.joinFederationExecution("a", "test", "Vehicles")
+    server.proc.kill()
+    server.stop()
+    if model == "HLA_EVOKED":
+        wait_for(lambda: rtia.evokeMultipleCallbacks(0.05, 0.1) is False and bool(amb.named("connectionLost")))
+    else:
+        wait_for(lambda: bool(amb.named("connectionLost")))
+    assert len(amb.named("connectionLost")) == 1 and "lost" in amb.named("connectionLost")[0][0]
+    with pytest.raises(rti1516e.NotConnected):
+        rtia.evokeCallback(0.0)
+    with pytest.raises(rti1516e.NotConnected):
+        rtia.getObjectClassHandle("Vehicle")
+    rtia.disconnect()

@@ -93,6 +93,12 @@ void Client::connection_lost() const {
     raise(closed_code_, "connection to rtig at " + address_ + " lost: " + closed_reason_);
 }
 
+std::optional<std::string> Client::lost() const {
+    std::lock_guard<std::mutex> lock(mu_);
+    if (!closed_) return std::nullopt;
+    return "connection to rtig at " + address_ + " lost: " + closed_reason_;
+}
+
 // ---- checks ----
 
 void Client::require_joined() const {

@@ -216,6 +216,8 @@ public:
     static std::uint8_t ordering_handle(const std::string& name);
     static std::string ordering_name(std::uint64_t handle);
     std::uint32_t federate_handle() const;
+    // Why the connection is gone (IEEE 1516-2010's connectionLost); nullopt while it is up.
+    std::optional<std::string> lost() const;
     TimeType time_type() const;  // the joined federation's
 
     // Messages sent and write system calls made so far (tests/transport/test_coalescing.py): a long run of sends

@@ -12,6 +12,7 @@ from .. import rti as _rti13
 from . import _enums as e
 from . import _exceptions as x
 from ._callbacks import Adapter
+from ._delivery import Delivery
 from ._regions import Regions
 from ._support import legal_name, module_text, not_served, services, tag_of, translating, values_of
 from ._handles import (CORE_TYPES, AttributeHandle, FederateHandle, Handle, InteractionClassHandle,
@@ -43,7 +44,7 @@ class RTIambassador(Regions):
         self._adapter: Optional[Adapter] = None
         self._integer_time = False
         self._joined = False
-        self._callbacks_enabled = True
+        self._delivery: Optional[Delivery] = None
         self._resign_directive = e.CANCEL_THEN_DELETE_THEN_DIVEST
         self._published: Dict[Any, Set[Any]] = {}   # object class -> attributes (1516-2010 publishes add up)
         self._subscribed: Dict[Any, Set[Any]] = {}
@@ -76,13 +77,13 @@ class RTIambassador(Regions):
     # ---- federation management (IEEE 1516.1-2010 §4) ----
     def connect(self, federateAmbassador: Any, callbackModel: Any = "HLA_EVOKED", localSettingsDesignator: str = "") -> None:
         """Connect to the gateway named by ``localSettingsDesignator`` (``"host:port"``, ``"rti://host:port"``;
-        empty: ``$HLACORE_RTIG`` or 127.0.0.1:60400). Only ``"HLA_EVOKED"`` is served: callbacks arrive in
-        :meth:`evokeCallback` and :meth:`evokeMultipleCallbacks`."""
+        empty: ``$HLACORE_RTIG`` or 127.0.0.1:60400). With ``"HLA_EVOKED"`` callbacks arrive in
+        :meth:`evokeCallback` and :meth:`evokeMultipleCallbacks`; with ``"HLA_IMMEDIATE"`` a thread of this
+        ambassador's delivers them as they arrive (a callback that raises is reported on stderr)."""
         if self._rti is not None:
             raise x.AlreadyConnected("AlreadyConnected: this ambassador is connected")
-        if callbackModel != "HLA_EVOKED":
-            raise x.UnsupportedCallbackModel(f"UnsupportedCallbackModel: {callbackModel!r}: hlacore delivers callbacks "
-                                             "when evoked (HLA_EVOKED)")
+        if callbackModel not in ("HLA_EVOKED", "HLA_IMMEDIATE"):
+            raise x.UnsupportedCallbackModel(f"UnsupportedCallbackModel: {callbackModel!r} (HLA_EVOKED, HLA_IMMEDIATE)")
         if not isinstance(localSettingsDesignator, str):
             raise TypeError("the local settings designator is a str")
         address = localSettingsDesignator.strip()
@@ -92,12 +93,19 @@ class RTIambassador(Regions):
         except _core.RTIinternalError as error:  # nothing answers, the secret is refused, a setting is wrong
             raise x.ConnectionFailed(f"ConnectionFailed: {error}") from None
         self._adapter = Adapter(federateAmbassador, self._time_out)
+        self._delivery = Delivery(self._rti, self._adapter, callbackModel == "HLA_IMMEDIATE", self._connection_lost)
+
+    def _connection_lost(self) -> None:
+        self._joined = False
+        self._rti = None
 
     def disconnect(self) -> None:
         """Close the connection; raises ``FederateIsExecutionMember`` while joined."""
         if self._joined:
             raise x.FederateIsExecutionMember("FederateIsExecutionMember: resign first")
-        self._rti = self._adapter = None  # the inner ambassador closes its connection as it goes
+        if self._delivery is not None:
+            self._delivery.stop()
+        self._rti = self._adapter = self._delivery = None  # the inner ambassador closes its connection as it goes
 
     def createFederationExecution(self, federationName: str, fomModules: Any,
                                   logicalTimeImplementationName: str = "HLAfloat64Time") -> None:
@@ -565,34 +573,27 @@ class RTIambassador(Regions):
         raise x.CouldNotDecode("CouldNotDecode: hlacore does not decode retraction handles yet")
 
     # ---- callbacks ----
+    def _deliveries(self) -> Delivery:
+        self._inner()
+        assert self._delivery is not None
+        return self._delivery
+
     def evokeCallback(self, approximateMinimumTimeInSeconds: Any) -> bool:
-        """Deliver one callback, waiting up to the time given for one; returns whether more are pending."""
-        inner, adapter = self._inner(), self._adapter
-        assert adapter is not None
-        if self._callbacks_enabled and not adapter.deliver_local():
-            if inner._wait(float(approximateMinimumTimeInSeconds)):
-                inner._dispatch(adapter, False, 0.0)
-        return bool(adapter.local) or inner._has_callbacks()
+        """Deliver one callback, waiting up to the time given for one; returns whether more are pending
+        (HLA_IMMEDIATE: delivers none, the ambassador's thread does)."""
+        return self._deliveries().one(float(approximateMinimumTimeInSeconds))
 
     def evokeMultipleCallbacks(self, approximateMinimumTimeInSeconds: Any, approximateMaximumTimeInSeconds: Any) -> bool:
         """Deliver callbacks: wait up to the minimum time for the first, then deliver for up to the maximum."""
-        inner, adapter = self._inner(), self._adapter
-        assert adapter is not None
-        if not self._callbacks_enabled:
-            return bool(adapter.local) or inner._has_callbacks()
-        while adapter.deliver_local():
-            pass
-        inner._federate_ambassador = adapter
-        return bool(inner.tick(float(approximateMinimumTimeInSeconds), float(approximateMaximumTimeInSeconds))) \
-            or bool(adapter.local)
+        return self._deliveries().many(float(approximateMinimumTimeInSeconds), float(approximateMaximumTimeInSeconds))
 
     def enableCallbacks(self) -> None:
-        """Let :meth:`evokeCallback` deliver callbacks again."""
-        self._callbacks_enabled = True
+        """Deliver callbacks again."""
+        self._deliveries().set_enabled(True)
 
     def disableCallbacks(self) -> None:
         """Hold callbacks back until :meth:`enableCallbacks`."""
-        self._callbacks_enabled = False
+        self._deliveries().set_enabled(False)
 
     def getTimeFactory(self) -> str:
         """The federation's time type's name (``"HLAfloat64Time"`` or ``"HLAinteger64Time"``): times are

@@ -26,7 +26,6 @@ _RESIGN = {e.UNCONDITIONALLY_DIVEST_ATTRIBUTES: 1, e.DELETE_OBJECTS: 2, e.CANCEL
            e.DELETE_OBJECTS_THEN_DIVEST: 3, e.CANCEL_THEN_DELETE_THEN_DIVEST: 3, e.NO_ACTION: 4}
 
 
-
 @services
 class RTIambassador(Regions):
     """A federate's connection to the RTI with IEEE 1516-2010's services (OpenRTI's Python module's shape).

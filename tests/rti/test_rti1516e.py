@@ -301,9 +301,9 @@ def test_negotiated_divestiture_asks_for_confirmation(federates: Callable[[], Fe
 
 def test_what_is_not_served_yet_says_so(federates: Callable[[], Federate]) -> None:
     a = joined(federates, "a")
-    for call in (lambda: a.rtia.queryFederationRestoreStatus(),
+    for call in (lambda: a.rtia.abortFederationSave(),
                  lambda: a.rtia.joinFederationExecution("t", "Vehicles", [CARS]),
-                 lambda: a.rtia.queryFederationSaveStatus()):
+                 lambda: a.rtia.queryAttributeTransportationType(rti1516e.ObjectInstanceHandle(), rti1516e.AttributeHandle())):
         with pytest.raises(rti1516e.RTIinternalError, match="hlacore does not serve"):
             call()
 
@@ -524,3 +524,40 @@ def test_a_lost_connection_is_told_once_by_connection_lost(tmp_path: Any, model:
     with pytest.raises(rti1516e.NotConnected):
         rtia.getObjectClassHandle("Vehicle")
     rtia.disconnect()
+
+
+def test_the_save_and_restore_status_of_each_federate(federates: Callable[[], Federate]) -> None:
+    a, b = joined(federates, "a"), joined(federates, "b")
+    ha, hb = a.rtia.getFederateHandle("a"), a.rtia.getFederateHandle("b")
+
+    def statuses(f: Federate, query: str) -> Any:
+        getattr(f.rtia, "queryFederation%sStatus" % query)()
+        callback = "federation%sStatusResponse" % query
+        f.until(lambda: bool(f.amb.named(callback)))
+        return dict((s[0], s[-1]) for s in f.amb.calls.pop()[1][0])
+
+    assert statuses(a, "Save") == {ha: rti1516e.NO_SAVE_IN_PROGRESS, hb: rti1516e.NO_SAVE_IN_PROGRESS}
+    a.rtia.requestFederationSave("s1")
+    for f in (a, b):
+        f.until(lambda: bool(f.amb.named("initiateFederateSave")))
+    a.rtia.federateSaveBegun()
+    assert statuses(a, "Save") == {ha: rti1516e.FEDERATE_SAVING, hb: rti1516e.FEDERATE_INSTRUCTED_TO_SAVE}
+    a.rtia.federateSaveComplete()
+    assert statuses(a, "Save") == {ha: rti1516e.FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE,
+                                   hb: rti1516e.FEDERATE_INSTRUCTED_TO_SAVE}
+    b.rtia.federateSaveBegun()
+    b.rtia.federateSaveComplete()
+    for f in (a, b):
+        f.until(lambda: bool(f.amb.named("federationSaved")))
+    assert statuses(b, "Save") == {ha: rti1516e.NO_SAVE_IN_PROGRESS, hb: rti1516e.NO_SAVE_IN_PROGRESS}
+
+    a.rtia.requestFederationRestore("s1")
+    for f in (a, b):
+        f.until(lambda: bool(f.amb.named("initiateFederateRestore")))
+    a.rtia.federateRestoreComplete()
+    restoring = statuses(a, "Restore")
+    assert restoring == {ha: rti1516e.FEDERATE_WAITING_FOR_FEDERATION_TO_RESTORE, hb: rti1516e.FEDERATE_RESTORING}
+    b.rtia.federateRestoreComplete()
+    for f in (a, b):
+        f.until(lambda: bool(f.amb.named("federationRestored")))
+    assert statuses(a, "Restore") == {ha: rti1516e.NO_RESTORE_IN_PROGRESS, hb: rti1516e.NO_RESTORE_IN_PROGRESS}

@@ -44,6 +44,7 @@ class RTIambassador(Regions):
         self._integer_time = False
         self._joined = False
         self._delivery: Optional[Delivery] = None
+        self._saving = False  # federateSaveBegun called, the save not over (queryFederationSaveStatus)
         self._resign_directive = e.CANCEL_THEN_DELETE_THEN_DIVEST
         self._published: Dict[Any, Set[Any]] = {}   # object class -> attributes (1516-2010 publishes add up)
         self._subscribed: Dict[Any, Set[Any]] = {}
@@ -204,6 +205,21 @@ class RTIambassador(Regions):
     def requestFederationSave(self, label: str, time: Any = None) -> None:
         """Save the federation now, or at ``time``."""
         self._inner().requestFederationSave(label, None if time is None else self._time_in(time))
+
+    def federateSaveBegun(self) -> None:
+        """This federate began saving its state."""
+        self._inner().federateSaveBegun()
+        self._saving = True
+
+    def federateSaveComplete(self) -> None:
+        """This federate saved its state."""
+        self._inner().federateSaveComplete()
+        self._saving = False
+
+    def federateSaveNotComplete(self) -> None:
+        """This federate could not save its state."""
+        self._inner().federateSaveNotComplete()
+        self._saving = False
 
     def requestFederationRestore(self, label: str) -> None:
         """Restore the federation saved as ``label``."""
@@ -507,14 +523,56 @@ class RTIambassador(Regions):
             raise not_served("another automatic resign action", "the gateway deletes and divests a vanished federate")
         self._resign_directive = action
 
-    def _federates(self) -> List[Dict[str, Any]]:
+    def _federation(self) -> Dict[str, Any]:
+        """This federate's federation in the gateway's status report (asked on this connection, so after
+        everything sent before)."""
         report = json.loads(self._inner()._status(0, False))
         me = self._inner()._federate_handle()
         for federation in report["federations"]:
             if any(f["handle"] == int(me) and f["name"] == (self._adapter.federate_name if self._adapter else "")
                    for f in federation["federates"]):
-                return list(federation["federates"])
-        return []
+                return dict(federation)
+        raise x.FederateNotExecutionMember("FederateNotExecutionMember: not in the gateway's report")
+
+    def _federates(self) -> List[Dict[str, Any]]:
+        return list(self._federation()["federates"])
+
+    def queryFederationSaveStatus(self) -> None:
+        """Ask each federate's save status: ``federationSaveStatusResponse([(FederateHandle, status)])``,
+        from the gateway's record: NO_SAVE_IN_PROGRESS, FEDERATE_INSTRUCTED_TO_SAVE (this federate:
+        FEDERATE_SAVING after federateSaveBegun), FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE once it completed."""
+        federation = self._federation()
+        save = federation["save_restore"]
+        told, answered = set(save.get("told", ())), set(save.get("answered", ()))
+        me = int(self._inner()._federate_handle())
+        statuses = []
+        for f in federation["federates"]:
+            h = f["handle"]
+            if save["state"] not in ("saving", "waiting for the save time") or h not in told:
+                status = e.NO_SAVE_IN_PROGRESS
+            elif h in answered:
+                status = e.FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE
+            else:
+                status = e.FEDERATE_SAVING if h == me and self._saving else e.FEDERATE_INSTRUCTED_TO_SAVE
+            statuses.append((FederateHandle.wrap(_core._federate_handle_of(h)), status))
+        assert self._adapter is not None
+        self._adapter.local.append(("federationSaveStatusResponse", (statuses,)))
+
+    def queryFederationRestoreStatus(self) -> None:
+        """Ask each federate's restore status: ``federationRestoreStatusResponse([(handle before, handle
+        after, status)])`` (the core keeps each federate's handle): NO_RESTORE_IN_PROGRESS, FEDERATE_RESTORING,
+        FEDERATE_WAITING_FOR_FEDERATION_TO_RESTORE once it completed."""
+        federation = self._federation()
+        restore = federation["save_restore"]
+        answered = set(restore.get("answered", ()))
+        statuses = []
+        for f in federation["federates"]:
+            h = FederateHandle.wrap(_core._federate_handle_of(f["handle"]))
+            status = (e.NO_RESTORE_IN_PROGRESS if restore["state"] != "restoring" else
+                      e.FEDERATE_WAITING_FOR_FEDERATION_TO_RESTORE if f["handle"] in answered else e.FEDERATE_RESTORING)
+            statuses.append((h, h, status))
+        assert self._adapter is not None
+        self._adapter.local.append(("federationRestoreStatusResponse", (statuses,)))
 
     def getFederateHandle(self, theName: str) -> FederateHandle:
         """The handle of the joined federate named ``theName``."""
@@ -673,9 +731,6 @@ def _refused(name: str, why: str) -> Callable[..., Any]:
 
 # The services without arguments that are the core's own: name -> docstring.
 _PASSED = {
-    "federateSaveBegun": "This federate began saving its state.",
-    "federateSaveComplete": "This federate saved its state.",
-    "federateSaveNotComplete": "This federate could not save its state.",
     "federateRestoreComplete": "This federate restored its state.",
     "federateRestoreNotComplete": "This federate could not restore its state.",
     "disableTimeRegulation": "Stop being time-regulating.",
@@ -686,8 +741,7 @@ _PASSED = {
 }
 # The services not served yet, by the reason.
 _NOT_SERVED = {
-    "the core's save and restore run to their end and report no federate's status": (
-        "abortFederationSave", "queryFederationSaveStatus", "abortFederationRestore", "queryFederationRestoreStatus"),
+    "the core's save and restore run to their end": ("abortFederationSave", "abortFederationRestore"),
     "the core does not report another federate's transportation": (
         "queryAttributeTransportationType", "queryInteractionTransportationType"),
     "the FOM's update rates are not read yet": ("getUpdateRateValue", "getUpdateRateValueForAttribute"),

@@ -4,7 +4,7 @@ their bytes and ``RTIambassador.decode<Kind>Handle`` takes them back. Each wraps
 
 from __future__ import annotations
 
-from typing import Any, Iterable, List, Optional, Set, Type, TypeVar
+from typing import Any, Iterable, List, Set, Type, TypeVar
 
 from .. import _core
 from . import _exceptions as x
@@ -134,11 +134,6 @@ def decode(cls: Type[H], data: Any, core_type: Any) -> H:
     if len(raw) != 4:
         raise x.CouldNotDecode(f"CouldNotDecode: a {cls.__name__} is 4 bytes, not {len(raw)}")
     return cls.wrap(core_type._from_int(int.from_bytes(raw, "big")))
-
-
-def optional_core(cls: Type[Handle], h: Optional[object]) -> Any:
-    """`core(cls, h)`, or None for None."""
-    return None if h is None else core(cls, h)
 
 
 CORE_TYPES = {

@@ -59,7 +59,7 @@ void create_from_modules(Client& c, const std::string& federation, const std::ve
     std::string paths;
     for (const auto& name : names) {
         std::string path;
-        std::string text = find_fed(file_path(name), path);
+        std::string text = find_file(file_path(name), path);  // checked once, merged, below
         if (path.empty()) raise(ErrorCode::CouldNotOpenFED, "FOM module '" + name + "' was not found");
         paths += (paths.empty() ? "" : ", ") + path;
         modules.push_back({std::move(text), path});

@@ -203,7 +203,7 @@ bool Rtia::await_acknowledgement() {
     }
 }
 
-std::string find_fed(const std::string& fed, std::string& path_found) {
+std::string find_file(const std::string& fed, std::string& path_found) {
     std::vector<std::string> candidates{fed};
     if (fed.find('/') != 0) {
         if (const char* dirs = std::getenv("CERTI_FOM_PATH")) {
@@ -218,15 +218,21 @@ std::string find_fed(const std::string& fed, std::string& path_found) {
         if (!file) continue;
         std::ostringstream text;
         text << file.rdbuf();
-        try {
-            fom::parse_fom(text.str(), path);  // its FILE:LINE:COL here, at the federate's call
-        } catch (const fom::FedError& e) {
-            raise(ErrorCode::ErrorReadingFED, e.what());
-        }
         path_found = path;
         return text.str();
     }
     return {};
+}
+
+std::string find_fed(const std::string& fed, std::string& path_found) {
+    std::string text = find_file(fed, path_found);
+    if (path_found.empty()) return text;
+    try {
+        fom::parse_fom(text, path_found);  // its FILE:LINE:COL here, at the federate's call
+    } catch (const fom::FedError& e) {
+        raise(ErrorCode::ErrorReadingFED, e.what());
+    }
+    return text;
 }
 
 }  // namespace hlacore::certi

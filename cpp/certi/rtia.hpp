@@ -74,6 +74,8 @@ private:
 
 // The FED file a CERTI federate names, found as CERTI finds it: the path as given, then each directory of
 // $CERTI_FOM_PATH, then $CERTI_HOME/share/federations. Its text, empty when not found here (the gateway looks it up in its --fom-path then).
+std::string find_file(const std::string& fed, std::string& path_found);
+// The same, checked (ErrorReadingFED with FILE:LINE:COL at the federate's call).
 std::string find_fed(const std::string& fed, std::string& path_found);
 
 }  // namespace hlacore::certi

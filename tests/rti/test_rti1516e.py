@@ -561,3 +561,69 @@ def test_the_save_and_restore_status_of_each_federate(federates: Callable[[], Fe
     for f in (a, b):
         f.until(lambda: bool(f.amb.named("federationRestored")))
     assert statuses(a, "Restore") == {ha: rti1516e.NO_RESTORE_IN_PROGRESS, hb: rti1516e.NO_RESTORE_IN_PROGRESS}
+
+
+def test_the_other_object_ownership_and_time_services(federates: Callable[[], Federate]) -> None:
+    """The services no other test calls, each with its outcome."""
+    a, b = joined(federates, "a"), joined(federates, "b")
+    vehicle = a.rtia.getObjectClassHandle("Vehicle")
+    speed, position = (a.rtia.getAttributeHandle(vehicle, n) for n in ("speed", "position"))
+    command = a.rtia.getInteractionClassHandle("Command")
+    for f in (a, b):
+        f.rtia.publishObjectClassAttributes(vehicle, [speed, position])
+        f.rtia.subscribeObjectClassAttributes(vehicle, [speed])
+    obj = a.rtia.registerObjectInstance(vehicle)
+    b.until(lambda: bool(b.amb.named("discoverObjectInstance")))
+    # transportation and order: confirmed by callback, by name or constant
+    a.rtia.requestAttributeTransportationTypeChange(obj, [speed], "BEST_EFFORT")
+    a.rtia.publishInteractionClass(command)
+    a.rtia.requestInteractionTransportationTypeChange(command, rti1516e.RELIABLE)
+    a.until(lambda: bool(a.amb.named("confirmInteractionTransportationTypeChange")))
+    assert a.amb.named("confirmAttributeTransportationTypeChange") == [(obj, {speed}, rti1516e.BEST_EFFORT)]
+    assert a.amb.named("confirmInteractionTransportationTypeChange") == [(command, rti1516e.RELIABLE)]
+    assert a.rtia.getTransportationName(rti1516e.BEST_EFFORT) == "HLAbestEffort"
+    assert a.rtia.getTransportationType("HLAreliable") == rti1516e.RELIABLE
+    assert (a.rtia.getOrderType("TimeStamp"), a.rtia.getOrderName(rti1516e.RECEIVE)) == (rti1516e.TIMESTAMP, "Receive")
+    a.rtia.changeAttributeOrderType(obj, [speed], rti1516e.RECEIVE)
+    a.rtia.changeInteractionOrderType(command, "RECEIVE")
+    with pytest.raises(rti1516e.InvalidTransportationType):
+        a.rtia.requestInteractionTransportationTypeChange(command, 7)
+    # requestAttributeValueUpdate of an object and of a class: the owner is asked to provide
+    b.rtia.requestAttributeValueUpdate(obj, [speed], b"")
+    b.rtia.requestAttributeValueUpdate(vehicle, [speed], b"")
+    a.until(lambda: len(a.amb.named("provideAttributeValueUpdate")) == 2)
+    assert a.amb.named("provideAttributeValueUpdate")[0] == (obj, {speed}, b"")
+    # ownership: b asks for speed, a gives what is wanted; then unconditionally position, b takes it
+    b.rtia.attributeOwnershipAcquisition(obj, [speed], b"mine")
+    a.until(lambda: bool(a.amb.named("requestAttributeOwnershipRelease")))
+    assert a.rtia.attributeOwnershipDivestitureIfWanted(obj, [speed, position]) == {speed}
+    b.until(lambda: bool(b.amb.named("attributeOwnershipAcquisitionNotification")))
+    a.rtia.unconditionalAttributeOwnershipDivestiture(obj, [position])
+    b.rtia.attributeOwnershipAcquisitionIfAvailable(obj, [position])
+    b.until(lambda: len(b.amb.named("attributeOwnershipAcquisitionNotification")) == 2)
+    assert b.rtia.isAttributeOwnedByFederate(obj, position) and b.rtia.isAttributeOwnedByFederate(obj, speed)
+    c = joined(federates, "c")  # knows the object, owns none of it: may forget it here
+    c.rtia.subscribeObjectClassAttributes(vehicle, [speed])
+    c.until(lambda: bool(c.amb.named("discoverObjectInstance")))
+    c.rtia.localDeleteObjectInstance(obj)
+    with pytest.raises(rti1516e.ObjectInstanceNotKnown):
+        c.rtia.getObjectInstanceName(obj)
+    # time: each advance service granted, lookahead changed, asynchronous delivery switched
+    a.rtia.enableTimeRegulation(2.0)
+    a.until(lambda: bool(a.amb.named("timeRegulationEnabled")))
+    a.rtia.modifyLookahead(0.5)
+    assert a.rtia.queryLookahead() == 0.5
+    a.rtia.enableTimeConstrained()
+    a.until(lambda: bool(a.amb.named("timeConstrainedEnabled")))
+    a.rtia.enableAsynchronousDelivery()
+    a.rtia.disableAsynchronousDelivery()
+    for advance, t in (("timeAdvanceRequestAvailable", 1.0), ("nextMessageRequest", 2.0),
+                       ("nextMessageRequestAvailable", 3.0), ("flushQueueRequest", 4.0)):
+        getattr(a.rtia, advance)(t)
+        a.until(lambda: (t,) in a.amb.named("timeAdvanceGrant"))
+    handle = a.rtia.sendInteraction(command, {}, b"", 10.0)
+    a.rtia.retract(handle)  # the first time: retracted
+    with pytest.raises(rti1516e.InvalidMessageRetractionHandle):
+        a.rtia.retract(handle)
+    a.rtia.disableTimeRegulation()
+    a.rtia.disableTimeConstrained()

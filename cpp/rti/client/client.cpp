@@ -89,14 +89,14 @@ bool Client::arrived(wire::Recorded& r) {
 }
 
 
-void Client::connection_lost() const {
-    raise(closed_code_, "connection to rtig at " + address_ + " lost: " + closed_reason_);
-}
+void Client::connection_lost() const { raise(closed_code_, lost_text()); }
+
+std::string Client::lost_text() const { return "connection to rtig at " + address_ + " lost: " + closed_reason_; }
 
 std::optional<std::string> Client::lost() const {
     std::lock_guard<std::mutex> lock(mu_);
     if (!closed_) return std::nullopt;
-    return "connection to rtig at " + address_ + " lost: " + closed_reason_;
+    return lost_text();
 }
 
 // ---- checks ----

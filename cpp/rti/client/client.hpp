@@ -518,6 +518,7 @@ private:
     // no longer published are divested unconditionally (HLA 1.3 §5.2-5.3); returns the messages to send.
     std::vector<wire::UnconditionalDivestiture> divest_unpublished(fom::Handle cls);
     [[noreturn]] void connection_lost() const;
+    std::string lost_text() const;  // why, for connection_lost and lost()
     // Save/restore (client/save_restore.cpp; callers hold mu_): refuses `service` during a save or restore, and
     // applies the save/restore callbacks when popped (initiateFederateRestore replaces the mirrored state).
     void check_not_saving_or_restoring(const char* service) const;

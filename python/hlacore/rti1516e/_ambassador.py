@@ -144,11 +144,14 @@ class RTIambassador(Regions):
         """Destroy a federation no federate is joined to."""
         self._inner().destroyFederationExecution(federationName)
 
+    def _report(self) -> Dict[str, Any]:
+        """The gateway's status report, asked on this connection: after everything sent before."""
+        return dict(json.loads(self._inner()._status(0, False)))
+
     def listFederationExecutions(self) -> None:
         """Ask for the federations: ``reportFederationExecutions`` with their names and time types."""
-        report = json.loads(self._inner()._status(0, False))
         infos = [{"federationExecutionName": f["name"], "logicalTimeImplementationName": f.get("time_type", "")}
-                 for f in report["federations"]]
+                 for f in self._report()["federations"]]
         assert self._adapter is not None
         self._adapter.local.append(("reportFederationExecutions", (infos,)))
 
@@ -374,19 +377,18 @@ class RTIambassador(Regions):
     def requestAttributeTransportationTypeChange(self, theObject: Any, theAttributes: Iterable[Any],
                                                  theType: Any) -> None:
         """Send these attributes of the object with another transportation; confirmed by callback."""
-        attributes = cores(AttributeHandle, theAttributes)
-        self._inner().changeAttributeTransportationType(core(ObjectInstanceHandle, theObject), attributes,
-                                                        self._transport(theType))
+        attributes, transport = cores(AttributeHandle, theAttributes), self._transport(theType)
+        self._inner().changeAttributeTransportationType(core(ObjectInstanceHandle, theObject), attributes, transport)
         assert self._adapter is not None
         self._adapter.local.append(("confirmAttributeTransportationTypeChange",
-                                    (theObject, wrap_set(AttributeHandle, attributes), int(self._transport(theType)))))
+                                    (theObject, wrap_set(AttributeHandle, attributes), int(transport))))
 
     def requestInteractionTransportationTypeChange(self, theClass: Any, theType: Any) -> None:
         """Send the interaction class with another transportation; confirmed by callback."""
-        self._inner().changeInteractionTransportationType(core(InteractionClassHandle, theClass), self._transport(theType))
+        transport = self._transport(theType)
+        self._inner().changeInteractionTransportationType(core(InteractionClassHandle, theClass), transport)
         assert self._adapter is not None
-        self._adapter.local.append(("confirmInteractionTransportationTypeChange",
-                                    (theClass, int(self._transport(theType)))))
+        self._adapter.local.append(("confirmInteractionTransportationTypeChange", (theClass, int(transport))))
 
     # ---- ownership management (§7) ----
     def unconditionalAttributeOwnershipDivestiture(self, theObject: Any, theAttributes: Iterable[Any]) -> None:
@@ -426,9 +428,16 @@ class RTIambassador(Regions):
         cores(AttributeHandle, theAttributes)
 
     def attributeOwnershipDivestitureIfWanted(self, theObject: Any, theAttributes: Iterable[Any]) -> Set[AttributeHandle]:
-        """Give those of these attributes another federate is acquiring; returns them."""
-        return wrap_set(AttributeHandle, self._inner().attributeOwnershipReleaseResponse(
-            core(ObjectInstanceHandle, theObject), cores(AttributeHandle, theAttributes)))
+        """Give those of these attributes another federate asked for; returns them."""
+        assert self._adapter is not None
+        obj = core(ObjectInstanceHandle, theObject)
+        asked = self._adapter.release_asked.get(obj, set())
+        wanted = [a for a in cores(AttributeHandle, theAttributes) if a in asked]
+        if not wanted:
+            return set()
+        given = self._inner().attributeOwnershipReleaseResponse(obj, wanted)
+        asked.difference_update(wanted)
+        return wrap_set(AttributeHandle, given)
 
     def cancelNegotiatedAttributeOwnershipDivestiture(self, theObject: Any, theAttributes: Iterable[Any]) -> None:
         """Withdraw the offer of these attributes."""
@@ -524,11 +533,9 @@ class RTIambassador(Regions):
         self._resign_directive = action
 
     def _federation(self) -> Dict[str, Any]:
-        """This federate's federation in the gateway's status report (asked on this connection, so after
-        everything sent before)."""
-        report = json.loads(self._inner()._status(0, False))
+        """This federate's federation in the gateway's status report."""
         me = self._inner()._federate_handle()
-        for federation in report["federations"]:
+        for federation in self._report()["federations"]:
             if any(f["handle"] == int(me) and f["name"] == (self._adapter.federate_name if self._adapter else "")
                    for f in federation["federates"]):
                 return dict(federation)

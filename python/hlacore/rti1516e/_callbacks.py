@@ -65,7 +65,6 @@ _PLAIN: Dict[str, Tuple[str, Sequence[Convert], Tuple[Any, ...]]] = {
     "requestAttributeOwnershipAssumption": ("requestAttributeOwnershipAssumption", (_OBJ, _ATTRS, _TAG), ()),
     "attributeOwnershipAcquisitionNotification": ("attributeOwnershipAcquisitionNotification", (_OBJ, _ATTRS), (b"",)),
     "attributeOwnershipUnavailable": ("attributeOwnershipUnavailable", (_OBJ, _ATTRS), ()),
-    "requestAttributeOwnershipRelease": ("requestAttributeOwnershipRelease", (_OBJ, _ATTRS, _TAG), ()),
     "confirmAttributeOwnershipAcquisitionCancellation": ("confirmAttributeOwnershipAcquisitionCancellation",
                                                          (_OBJ, _ATTRS), ()),
     "informAttributeOwnership": ("informAttributeOwnership", (_OBJ, _ATTR, _FED), ()),
@@ -90,6 +89,7 @@ class Adapter:
         self.divesting: Dict[Any, Set[Any]] = {}  # object -> attributes told to confirm their divestiture
         self.sync_sets: Dict[str, bool] = {}      # label -> registered with a federate set
         self.reserved: Set[str] = set()           # object instance names reserved and not used yet
+        self.release_asked: Dict[Any, Set[Any]] = {}  # object -> attributes another federate asked for
         self.federate_name = ""
 
     def convert_time(self, time: float) -> Any:
@@ -177,6 +177,12 @@ class Adapter:
         del info["hasSentRegions"], info["sentRegions"]
         self.call("removeObjectInstance", ObjectInstanceHandle.wrap(obj), _tag(tag), order,
                   *self._timed(time, order, retraction), info)
+
+    def requestAttributeOwnershipRelease(self, obj: Any, attributes: Any, tag: Any) -> None:
+        """As 1516-2010's; attributeOwnershipDivestitureIfWanted gives what was asked for."""
+        self.release_asked.setdefault(obj, set()).update(attributes)
+        self.call("requestAttributeOwnershipRelease", ObjectInstanceHandle.wrap(obj), wrap_set(AttributeHandle, attributes),
+                  _tag(tag))
 
     def attributeOwnershipDivestitureNotification(self, obj: Any, attributes: Any) -> None:
         """requestDivestitureConfirmation: the core has already given the attributes to the acquirer (HLA

@@ -1,0 +1,291 @@
+// Data distribution management (IEEE 1516.1-2010 §9) on the core's HLA 1.3 routing spaces, as
+// hlacore.rti1516e serves it: the FOM modules' dimensions are one space (fom::kOmtSpace), a region's range
+// [lower, upper) is the core's closed [lower, upper - 1], and a dimension a region does not name spans its
+// whole axis. The core associates one region with an attribute of an object and sends an interaction
+// through one region; more raises saying so.
+#include "ambassador.hpp"
+#include "fed_parser/fom.hpp"
+
+namespace hlacore::rti1516e {
+
+namespace {
+std::uint32_t one_region(RegionHandleSet const& regions) {
+    if (regions.size() != 1)
+        raise("RTIinternalError", std::to_string(regions.size()) + " regions are not served yet: the core sends an "
+                                                                   "interaction through one region");
+    return core(*regions.begin());
+}
+}  // namespace
+
+std::uint32_t Ambassador::space() const {
+    try {
+        return client().routing_space_handle(fom::kOmtSpace);
+    } catch (const RtiError&) {
+        raise("InvalidDimensionHandle", "the FOM modules declare no dimension");
+    }
+}
+
+std::map<std::uint32_t, RangeBounds>& Ambassador::region(RegionHandle const& r) {
+    const auto it = regions_.find(core(r));
+    if (it == regions_.end()) raise("RegionNotCreatedByThisFederate", utf8(r.toString()));
+    return it->second;
+}
+
+Client::Extent Ambassador::extent(std::map<std::uint32_t, RangeBounds> const& ranges) const {
+    Client::Extent out;
+    for (const auto& [d, b] : ranges)
+        out.push_back({d, static_cast<std::int64_t>(b.getLowerBound()), static_cast<std::int64_t>(b.getUpperBound()) - 1});
+    return out;
+}
+
+std::vector<std::pair<wire::Handles, std::uint32_t>> Ambassador::one_region_each(
+    AttributeHandleSetRegionHandleSetPairVector const& pairs) {
+    std::vector<std::pair<wire::Handles, std::uint32_t>> out;
+    for (const auto& [attributes, regions] : pairs) {
+        if (regions.size() != 1)
+            raise("RTIinternalError", std::to_string(regions.size()) + " regions for attributes are not served yet: "
+                                      "the core associates one region with an attribute of an object");
+        region(*regions.begin());
+        out.emplace_back(cores(attributes), core(*regions.begin()));
+    }
+    return out;
+}
+
+DimensionHandleSet Ambassador::dimensions_of(std::uint32_t space_handle) const {
+    DimensionHandleSet found;
+    if (space_handle == 0) return found;
+    try {
+        if (space_handle != space()) return found;
+    } catch (const Exception&) {
+        return found;
+    }
+    for (std::uint32_t d = 1;; ++d) {
+        try {
+            client().dimension_name(d, space_handle);
+        } catch (const RtiError&) {
+            return found;
+        }
+        found.insert(handle<DimensionHandle>(d));
+    }
+}
+
+DimensionHandle Ambassador::getDimensionHandle(std::wstring const& name) {
+    return guarded([&] { return handle<DimensionHandle>(client().dimension_handle(utf8(name), space())); });
+}
+
+std::wstring Ambassador::getDimensionName(DimensionHandle d) {
+    return guarded([&] { return wide(client().dimension_name(core(d), space())); });
+}
+
+unsigned long Ambassador::getDimensionUpperBound(DimensionHandle d) {
+    return guarded([&] { return static_cast<unsigned long>(client().dimension_upper_bound(core(d), space())); });
+}
+
+DimensionHandleSet Ambassador::getAvailableDimensionsForClassAttribute(ObjectClassHandle cls, AttributeHandle a) {
+    return guarded([&] { return dimensions_of(client().attribute_routing_space(core(a), core(cls))); });
+}
+
+DimensionHandleSet Ambassador::getAvailableDimensionsForInteractionClass(InteractionClassHandle cls) {
+    return guarded([&] { return dimensions_of(client().interaction_routing_space(core(cls))); });
+}
+
+RegionHandle Ambassador::createRegion(DimensionHandleSet const& dimensions) {
+    return guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        const std::uint32_t s = space();
+        std::map<std::uint32_t, RangeBounds> ranges;
+        for (const auto& d : dimensions)  // each range its whole axis until set
+            ranges[core(d)] = RangeBounds(0, static_cast<unsigned long>(client().dimension_upper_bound(core(d), s)));
+        const std::uint32_t r = client().create_region(s, extent(ranges));
+        regions_[r] = std::move(ranges);
+        return handle<RegionHandle>(r);
+    });
+}
+
+void Ambassador::commitRegionModifications(RegionHandleSet const& regions) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        for (const auto& r : regions) client().modify_region(core(r), extent(region(r)));
+    });
+}
+
+void Ambassador::deleteRegion(RegionHandle const& r) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        region(r);
+        client().delete_region(core(r));
+        regions_.erase(core(r));
+    });
+}
+
+DimensionHandleSet Ambassador::getDimensionHandleSet(RegionHandle r) {
+    return guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        DimensionHandleSet out;
+        for (const auto& [d, b] : region(r)) out.insert(handle<DimensionHandle>(d));
+        return out;
+    });
+}
+
+RangeBounds Ambassador::getRangeBounds(RegionHandle r, DimensionHandle d) {
+    return guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        const auto& ranges = region(r);
+        const auto it = ranges.find(core(d));
+        if (it == ranges.end()) raise("RegionDoesNotContainSpecifiedDimension", utf8(d.toString()));
+        return it->second;
+    });
+}
+
+void Ambassador::setRangeBounds(RegionHandle r, DimensionHandle d, RangeBounds const& bounds) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        getRangeBounds(r, d);
+        const unsigned long upper = getDimensionUpperBound(d);
+        if (!(bounds.getLowerBound() < bounds.getUpperBound() && bounds.getUpperBound() <= upper))
+            raise("InvalidRangeBound", "[" + std::to_string(bounds.getLowerBound()) + ", " +
+                                           std::to_string(bounds.getUpperBound()) + ") is not within [0, " +
+                                           std::to_string(upper) + ") with lower < upper");
+        region(r)[core(d)] = bounds;  // sent by commitRegionModifications
+    });
+}
+
+ObjectInstanceHandle Ambassador::registerObjectInstanceWithRegions(ObjectClassHandle cls,
+                                                                   AttributeHandleSetRegionHandleSetPairVector const& regions) {
+    return guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        std::vector<std::pair<fom::Handle, std::uint32_t>> associated;
+        for (const auto& [attributes, r] : one_region_each(regions))
+            for (auto a : attributes) associated.emplace_back(a, r);
+        return handle<ObjectInstanceHandle>(client().register_object_with_region(core(cls), associated, ""));
+    });
+}
+
+ObjectInstanceHandle Ambassador::registerObjectInstanceWithRegions(ObjectClassHandle cls,
+                                                                   AttributeHandleSetRegionHandleSetPairVector const& regions,
+                                                                   std::wstring const& name) {
+    return guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        require_reserved(name);
+        std::vector<std::pair<fom::Handle, std::uint32_t>> associated;
+        for (const auto& [attributes, r] : one_region_each(regions))
+            for (auto a : attributes) associated.emplace_back(a, r);
+        const auto object = client().register_object_with_region(core(cls), associated, utf8(name));
+        reserved_.erase(name);
+        return handle<ObjectInstanceHandle>(object);
+    });
+}
+
+void Ambassador::associateRegionsForUpdates(ObjectInstanceHandle object,
+                                            AttributeHandleSetRegionHandleSetPairVector const& regions) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        for (const auto& [attributes, r] : one_region_each(regions))
+            client().request(wire::AssociateRegion{r, core(object), attributes});
+    });
+}
+
+// The core drops a region's attributes of an object all together.
+void Ambassador::unassociateRegionsForUpdates(ObjectInstanceHandle object,
+                                              AttributeHandleSetRegionHandleSetPairVector const& regions) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        for (const auto& [attributes, r] : one_region_each(regions))
+            client().request(wire::UnassociateRegion{r, core(object)});
+    });
+}
+
+void Ambassador::subscribeObjectClassAttributesWithRegions(ObjectClassHandle cls,
+                                                           AttributeHandleSetRegionHandleSetPairVector const& regions,
+                                                           bool active, std::wstring const& rate) {
+    guarded([&] {
+        if (!rate.empty()) raise("RTIinternalError", "update rates are not served yet: the FOM's are not read");
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        for (const auto& [attributes, set] : regions)
+            for (const auto& r : set) {
+                region(r);
+                client().request(wire::SubscribeObjectClassWithRegion{core(cls), core(r), cores(attributes), active});
+            }
+    });
+}
+
+// The core drops a region's attributes of a class all together.
+void Ambassador::unsubscribeObjectClassAttributesWithRegions(ObjectClassHandle cls,
+                                                             AttributeHandleSetRegionHandleSetPairVector const& regions) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        for (const auto& [attributes, set] : regions)
+            for (const auto& r : set) {
+                region(r);
+                client().request(wire::UnsubscribeObjectClassWithRegion{core(cls), core(r)});
+            }
+    });
+}
+
+void Ambassador::subscribeInteractionClassWithRegions(InteractionClassHandle cls, RegionHandleSet const& regions,
+                                                      bool active) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        for (const auto& r : regions) {
+            region(r);
+            client().request(wire::SubscribeInteractionClassWithRegion{core(cls), core(r), active});
+        }
+    });
+}
+
+void Ambassador::unsubscribeInteractionClassWithRegions(InteractionClassHandle cls, RegionHandleSet const& regions) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        for (const auto& r : regions) {
+            region(r);
+            client().request(wire::UnsubscribeInteractionClassWithRegion{core(cls), core(r)});
+        }
+    });
+}
+
+namespace {
+wire::HandleValues copies(ParameterHandleValueMap const& values) {
+    wire::HandleValues out;
+    for (const auto& [p, v] : values) out.emplace_back(core(p), std::string(static_cast<const char*>(v.data()), v.size()));
+    return out;
+}
+}  // namespace
+
+void Ambassador::sendInteractionWithRegions(InteractionClassHandle cls, ParameterHandleValueMap const& values,
+                                            RegionHandleSet const& regions, VariableLengthData const& tag) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        const std::uint32_t r = one_region(regions);
+        region(*regions.begin());
+        client().send_interaction_with_region(core(cls), copies(values), r, bytes(tag), std::nullopt);
+    });
+}
+
+MessageRetractionHandle Ambassador::sendInteractionWithRegions(InteractionClassHandle cls,
+                                                               ParameterHandleValueMap const& values,
+                                                               RegionHandleSet const& regions,
+                                                               VariableLengthData const& tag, LogicalTime const& time) {
+    return guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        const std::uint32_t r = one_region(regions);
+        region(*regions.begin());
+        Client& c = client();
+        return retraction(c.federate_handle(),
+                          c.send_interaction_with_region(core(cls), copies(values), r, bytes(tag), time_in(time)));
+    });
+}
+
+void Ambassador::requestAttributeValueUpdateWithRegions(ObjectClassHandle cls,
+                                                        AttributeHandleSetRegionHandleSetPairVector const& regions,
+                                                        VariableLengthData const&) {
+    guarded([&] {
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        for (const auto& [attributes, set] : regions)
+            for (const auto& r : set) {
+                region(r);
+                client().request(wire::RequestClassUpdateWithRegion{core(cls), cores(attributes), core(r)});
+            }
+    });
+}
+
+}  // namespace hlacore::rti1516e

@@ -1,0 +1,206 @@
+// Support services (IEEE 1516.1-2010 §10): names and handles, the advisory switches, handle decoding,
+// and the services the core does not serve yet (each raises saying why).
+#include <algorithm>
+#include <cctype>
+
+#include "ambassador.hpp"
+
+namespace hlacore::rti1516e {
+
+namespace {
+[[noreturn]] void not_served(const char* service, const char* why) {
+    raise("RTIinternalError", std::string(service) + " is not served yet: " + why);
+}
+
+void set_switch(Client& c, wire::AdvisorySwitch which, bool on) {
+    c.request(wire::SetAdvisorySwitch{static_cast<std::uint8_t>(which), on});
+}
+
+std::string lower(std::wstring const& name) {
+    std::string s = utf8(name);
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    return s;
+}
+
+// A handle's encoding: 4 bytes big-endian (a retraction handle 12: the sender's 4, the serial's 8).
+unsigned long long number(VariableLengthData const& encoded, size_t length) {
+    if (encoded.size() != length)
+        raise("CouldNotDecode", std::to_string(encoded.size()) + " bytes, not " + std::to_string(length));
+    const auto* in = static_cast<const unsigned char*>(encoded.data());
+    unsigned long long v = 0;
+    for (size_t i = 0; i < length; ++i) v = (v << 8) | in[i];
+    return v;
+}
+}  // namespace
+
+// ---- the services the core does not serve yet ----
+
+void Ambassador::abortFederationSave() {
+    guarded([] { not_served("abortFederationSave", "the core's saves run to their end"); });
+}
+void Ambassador::abortFederationRestore() {
+    guarded([] { not_served("abortFederationRestore", "the core's restores run to their end"); });
+}
+void Ambassador::queryAttributeTransportationType(ObjectInstanceHandle, AttributeHandle) {
+    guarded([] { not_served("queryAttributeTransportationType", "the core does not report another's transportation"); });
+}
+void Ambassador::queryInteractionTransportationType(FederateHandle, InteractionClassHandle) {
+    guarded([] { not_served("queryInteractionTransportationType", "the core does not report another's transportation"); });
+}
+double Ambassador::getUpdateRateValue(std::wstring const&) {
+    return guarded([]() -> double { not_served("getUpdateRateValue", "the FOM's update rates are not read yet"); });
+}
+double Ambassador::getUpdateRateValueForAttribute(ObjectInstanceHandle, AttributeHandle) {
+    return guarded([]() -> double { not_served("getUpdateRateValueForAttribute", "the FOM's update rates are not read yet"); });
+}
+// These read the gateway's status report, which hlacore.rti1516e serves and this library does not read yet.
+void Ambassador::listFederationExecutions() {
+    guarded([] { not_served("listFederationExecutions", "in C++ (hlacore.rti1516e serves it)"); });
+}
+void Ambassador::queryFederationSaveStatus() {
+    guarded([] { not_served("queryFederationSaveStatus", "in C++ (hlacore.rti1516e serves it)"); });
+}
+void Ambassador::queryFederationRestoreStatus() {
+    guarded([] { not_served("queryFederationRestoreStatus", "in C++ (hlacore.rti1516e serves it)"); });
+}
+FederateHandle Ambassador::getFederateHandle(std::wstring const&) {
+    return guarded([]() -> FederateHandle { not_served("getFederateHandle", "in C++ (hlacore.rti1516e serves it)"); });
+}
+std::wstring Ambassador::getFederateName(FederateHandle) {
+    return guarded([]() -> std::wstring { not_served("getFederateName", "in C++ (hlacore.rti1516e serves it)"); });
+}
+
+// ---- automatic resign: the gateway deletes what a vanished federate may delete and divests the rest ----
+
+ResignAction Ambassador::getAutomaticResignDirective() {
+    return guarded([&] {
+        client();
+        return resign_directive_;
+    });
+}
+
+void Ambassador::setAutomaticResignDirective(ResignAction action) {
+    guarded([&] {
+        client();
+        if (action < UNCONDITIONALLY_DIVEST_ATTRIBUTES || action > NO_ACTION)
+            raise("InvalidResignAction", std::to_string(static_cast<int>(action)));
+        if (action != CANCEL_THEN_DELETE_THEN_DIVEST)
+            not_served("another automatic resign action", "the gateway deletes and divests a vanished federate");
+        resign_directive_ = action;
+    });
+}
+
+// ---- names and handles ----
+
+ObjectClassHandle Ambassador::getObjectClassHandle(std::wstring const& name) {
+    return guarded([&] { return handle<ObjectClassHandle>(client().object_class_handle(utf8(name))); });
+}
+std::wstring Ambassador::getObjectClassName(ObjectClassHandle h) {
+    return guarded([&] { return wide(client().object_class_name(core(h))); });
+}
+ObjectClassHandle Ambassador::getKnownObjectClassHandle(ObjectInstanceHandle object) {
+    return guarded([&] { return handle<ObjectClassHandle>(client().object_class_of(core(object))); });
+}
+ObjectInstanceHandle Ambassador::getObjectInstanceHandle(std::wstring const& name) {
+    return guarded([&] { return handle<ObjectInstanceHandle>(client().object_instance_handle(utf8(name))); });
+}
+std::wstring Ambassador::getObjectInstanceName(ObjectInstanceHandle h) {
+    return guarded([&] { return wide(client().object_instance_name(core(h))); });
+}
+AttributeHandle Ambassador::getAttributeHandle(ObjectClassHandle cls, std::wstring const& name) {
+    return guarded([&] { return handle<AttributeHandle>(client().attribute_handle(utf8(name), core(cls))); });
+}
+std::wstring Ambassador::getAttributeName(ObjectClassHandle cls, AttributeHandle h) {
+    return guarded([&] { return wide(client().attribute_name(core(h), core(cls))); });
+}
+InteractionClassHandle Ambassador::getInteractionClassHandle(std::wstring const& name) {
+    return guarded([&] { return handle<InteractionClassHandle>(client().interaction_class_handle(utf8(name))); });
+}
+std::wstring Ambassador::getInteractionClassName(InteractionClassHandle h) {
+    return guarded([&] { return wide(client().interaction_class_name(core(h))); });
+}
+ParameterHandle Ambassador::getParameterHandle(InteractionClassHandle cls, std::wstring const& name) {
+    return guarded([&] { return handle<ParameterHandle>(client().parameter_handle(utf8(name), core(cls))); });
+}
+std::wstring Ambassador::getParameterName(InteractionClassHandle cls, ParameterHandle h) {
+    return guarded([&] { return wide(client().parameter_name(core(h), core(cls))); });
+}
+
+OrderType Ambassador::getOrderType(std::wstring const& name) {
+    return guarded([&] {
+        const std::string n = lower(name);
+        if (n == "receive") return RECEIVE;
+        if (n == "timestamp") return TIMESTAMP;
+        raise("InvalidOrderName", "'" + utf8(name) + "' (Receive, TimeStamp)");
+    });
+}
+std::wstring Ambassador::getOrderName(OrderType type) {
+    return guarded([&]() -> std::wstring {
+        if (type == RECEIVE) return L"Receive";
+        if (type == TIMESTAMP) return L"TimeStamp";
+        raise("InvalidOrderType", std::to_string(static_cast<int>(type)));
+    });
+}
+TransportationType Ambassador::getTransportationType(std::wstring const& name) {
+    return guarded([&] {
+        try {
+            return static_cast<TransportationType>(Client::transportation_handle(utf8(name)));
+        } catch (const RtiError& e) {
+            raise("InvalidTransportationName", e.what());
+        }
+    });
+}
+std::wstring Ambassador::getTransportationName(TransportationType type) {
+    return guarded([&] { return wide(Client::transportation_name(type)); });
+}
+
+unsigned long Ambassador::normalizeFederateHandle(FederateHandle federate) {
+    return guarded([&] {
+        if (!federate.isValid()) raise("InvalidFederateHandle", "an invalid handle");
+        return static_cast<unsigned long>(core(federate));
+    });
+}
+unsigned long Ambassador::normalizeServiceGroup(ServiceGroup group) {
+    return guarded([&] {
+        if (group < FEDERATION_MANAGEMENT || group > SUPPORT_SERVICES)
+            raise("InvalidServiceGroup", std::to_string(static_cast<int>(group)));
+        return static_cast<unsigned long>(group);
+    });
+}
+
+// ---- the advisory switches ----
+
+#define HLACORE_SWITCH(Name, Which)                                                                     \
+    void Ambassador::enable##Name##AdvisorySwitch() {                                                   \
+        guarded([&] { set_switch(client(), wire::AdvisorySwitch::Which, true); });                      \
+    }                                                                                                   \
+    void Ambassador::disable##Name##AdvisorySwitch() {                                                  \
+        guarded([&] { set_switch(client(), wire::AdvisorySwitch::Which, false); });                     \
+    }
+HLACORE_SWITCH(ObjectClassRelevance, ClassRelevance)
+HLACORE_SWITCH(AttributeRelevance, AttributeRelevance)
+HLACORE_SWITCH(AttributeScope, AttributeScope)
+HLACORE_SWITCH(InteractionRelevance, InteractionRelevance)
+#undef HLACORE_SWITCH
+
+// ---- decoding handles ----
+
+#define HLACORE_X(Kind)                                                                                   \
+    Kind Ambassador::decode##Kind(VariableLengthData const& encoded) const {                             \
+        return guarded([&] { return handle<Kind>(number(encoded, 4)); });                                \
+    }
+HLACORE_X(FederateHandle) HLACORE_X(ObjectClassHandle) HLACORE_X(InteractionClassHandle)
+HLACORE_X(ObjectInstanceHandle) HLACORE_X(AttributeHandle) HLACORE_X(ParameterHandle) HLACORE_X(DimensionHandle)
+HLACORE_X(RegionHandle)
+#undef HLACORE_X
+
+MessageRetractionHandle Ambassador::decodeMessageRetractionHandle(VariableLengthData const& encoded) const {
+    return guarded([&] {
+        if (encoded.size() != 12) raise("CouldNotDecode", std::to_string(encoded.size()) + " bytes, not 12");
+        const char* in = static_cast<const char*>(encoded.data());
+        const auto sender = number(VariableLengthData(in, 4), 4);
+        return retraction(static_cast<std::uint32_t>(sender), number(VariableLengthData(in + 4, 8), 8));
+    });
+}
+
+}  // namespace hlacore::rti1516e

@@ -1,0 +1,159 @@
+// Time management (IEEE 1516.1-2010 §8) over the core's, whose times are doubles: an HLAinteger64Time
+// federation's times are whole numbers of them (exact up to 2^53).
+#include <RTI/time/HLAfloat64Interval.h>
+#include <RTI/time/HLAfloat64Time.h>
+#include <RTI/time/HLAinteger64Interval.h>
+#include <RTI/time/HLAinteger64Time.h>
+#include <RTI/time/HLAfloat64TimeFactory.h>
+#include <RTI/time/HLAinteger64TimeFactory.h>
+
+#include <cmath>
+#include <limits>
+
+#include "ambassador.hpp"
+
+namespace hlacore::rti1516e {
+
+double Ambassador::time_in(LogicalTime const& time) const {
+    if (auto t = dynamic_cast<HLAfloat64Time const*>(&time)) {
+        if (integer_time_) raise("InvalidLogicalTime", "an HLAfloat64Time in an HLAinteger64Time federation");
+        return t->getTime();
+    }
+    if (auto t = dynamic_cast<HLAinteger64Time const*>(&time)) {
+        if (joined_ && !integer_time_) raise("InvalidLogicalTime", "an HLAinteger64Time in an HLAfloat64Time federation");
+        return static_cast<double>(t->getTime());
+    }
+    raise("InvalidLogicalTime", "hlacore serves HLAfloat64Time and HLAinteger64Time, not " + utf8(time.implementationName()));
+}
+
+double Ambassador::interval_in(LogicalTimeInterval const& interval) const {
+    if (auto i = dynamic_cast<HLAfloat64Interval const*>(&interval)) {
+        if (integer_time_) raise("InvalidLookahead", "an HLAfloat64Interval in an HLAinteger64Time federation");
+        return i->getInterval();
+    }
+    if (auto i = dynamic_cast<HLAinteger64Interval const*>(&interval)) {
+        if (joined_ && !integer_time_) raise("InvalidLookahead", "an HLAinteger64Interval in an HLAfloat64Time federation");
+        return static_cast<double>(i->getInterval());
+    }
+    raise("InvalidLookahead", "hlacore serves HLAfloat64Interval and HLAinteger64Interval, not " +
+                                  utf8(interval.implementationName()));
+}
+
+RTI_UNIQUE_PTR<LogicalTime> Ambassador::time_out(double time) const {
+    if (!integer_time_) return RTI_UNIQUE_PTR<LogicalTime>(new HLAfloat64Time(time));
+    const double whole = std::isinf(time) ? (time > 0 ? 9.2e18 : -9.2e18) : time;
+    return RTI_UNIQUE_PTR<LogicalTime>(new HLAinteger64Time(static_cast<Integer64>(whole)));
+}
+
+namespace {
+// Into a time given by the caller, which must be of the federation's type.
+void assign(LogicalTime& into, LogicalTime const& from) {
+    if (into.implementationName() != from.implementationName())
+        raise("InvalidLogicalTime", "the federation's times are " + utf8(from.implementationName()));
+    into = from;
+}
+}  // namespace
+
+void Ambassador::enableTimeRegulation(LogicalTimeInterval const& lookahead) {
+    guarded([&] {
+        Client& c = client();
+        c.enable_time_regulation(c.query_federate_time(), interval_in(lookahead));
+    });
+}
+
+void Ambassador::disableTimeRegulation() {
+    guarded([&] { client().disable_time_regulation(); });
+}
+
+void Ambassador::enableTimeConstrained() {
+    guarded([&] { client().enable_time_constrained(); });
+}
+
+void Ambassador::disableTimeConstrained() {
+    guarded([&] { client().disable_time_constrained(); });
+}
+
+void Ambassador::timeAdvanceRequest(LogicalTime const& time) {
+    guarded([&] { client().time_advance(AdvanceKind::TimeAdvanceRequest, time_in(time)); });
+}
+
+void Ambassador::timeAdvanceRequestAvailable(LogicalTime const& time) {
+    guarded([&] { client().time_advance(AdvanceKind::TimeAdvanceRequestAvailable, time_in(time)); });
+}
+
+void Ambassador::nextMessageRequest(LogicalTime const& time) {
+    guarded([&] { client().time_advance(AdvanceKind::NextEventRequest, time_in(time)); });
+}
+
+void Ambassador::nextMessageRequestAvailable(LogicalTime const& time) {
+    guarded([&] { client().time_advance(AdvanceKind::NextEventRequestAvailable, time_in(time)); });
+}
+
+void Ambassador::flushQueueRequest(LogicalTime const& time) {
+    guarded([&] { client().time_advance(AdvanceKind::FlushQueueRequest, time_in(time)); });
+}
+
+void Ambassador::enableAsynchronousDelivery() {
+    guarded([&] { client().set_asynchronous_delivery(true); });
+}
+
+void Ambassador::disableAsynchronousDelivery() {
+    guarded([&] { client().set_asynchronous_delivery(false); });
+}
+
+bool Ambassador::queryGALT(LogicalTime& time) {
+    return guarded([&] {
+        const double galt = client().query_lbts();
+        if (std::isinf(galt)) return false;  // nothing holds this federate back
+        assign(time, *time_out(galt));
+        return true;
+    });
+}
+
+void Ambassador::queryLogicalTime(LogicalTime& time) {
+    guarded([&] { assign(time, *time_out(client().query_federate_time())); });
+}
+
+bool Ambassador::queryLITS(LogicalTime& time) {
+    return guarded([&] {
+        const double lits = client().query_min_next_event_time();
+        if (std::isinf(lits)) return false;  // no message can come
+        assign(time, *time_out(lits));
+        return true;
+    });
+}
+
+void Ambassador::modifyLookahead(LogicalTimeInterval const& lookahead) {
+    guarded([&] { client().modify_lookahead(interval_in(lookahead)); });
+}
+
+void Ambassador::queryLookahead(LogicalTimeInterval& lookahead) {
+    guarded([&] {
+        const double l = client().query_lookahead();
+        if (integer_time_) {
+            if (!dynamic_cast<HLAinteger64Interval*>(&lookahead)) raise("InvalidLookahead", "an HLAinteger64Interval is wanted");
+            lookahead = HLAinteger64Interval(static_cast<Integer64>(l));
+        } else {
+            if (!dynamic_cast<HLAfloat64Interval*>(&lookahead)) raise("InvalidLookahead", "an HLAfloat64Interval is wanted");
+            lookahead = HLAfloat64Interval(l);
+        }
+    });
+}
+
+void Ambassador::retract(MessageRetractionHandle handle) {
+    guarded([&] {
+        if (!handle.isValid()) raise("InvalidMessageRetractionHandle", "an invalid handle");
+        client().retract(static_cast<std::uint32_t>(MessageRetractionHandleFriend::sender(handle)),
+                         MessageRetractionHandleFriend::value(handle));
+    });
+}
+
+RTI_UNIQUE_PTR<LogicalTimeFactory> Ambassador::getTimeFactory() const {
+    return guarded([&]() -> RTI_UNIQUE_PTR<LogicalTimeFactory> {
+        client();
+        if (integer_time_) return RTI_UNIQUE_PTR<LogicalTimeFactory>(new HLAinteger64TimeFactory());
+        return RTI_UNIQUE_PTR<LogicalTimeFactory>(new HLAfloat64TimeFactory());
+    });
+}
+
+}  // namespace hlacore::rti1516e

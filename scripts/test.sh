@@ -25,12 +25,17 @@ mkdir -p build
     || { cat build/asan-configure.log; exit 1; }
 cmake_build build/asan "the ASan+UBSan rtig and hlacore-rtia the tests run against" rtig hlacore-rtia tcp_floor \
     state_types_test
-# The C++ test federates of the HLA 1.3 API (tests/cpp/hla13), against the installed package's CMake config.
-hla13_dir=$(.venv/bin/python -m hlacore.config --cmake-dir) || exit 1
-.venv/bin/cmake -S tests/cpp/hla13 -B build/hla13-tests -G Ninja -Dhlacore_DIR="$hla13_dir" \
+# The C++ test federates of the HLA 1.3 API (tests/cpp/hla13), against the installed package's CMake config ...
+api_dir=$(.venv/bin/python -m hlacore.config --cmake-dir) || exit 1
+.venv/bin/cmake -S tests/cpp/hla13 -B build/hla13-tests -G Ninja -Dhlacore_DIR="$api_dir" \
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/hla13-tests-configure.log 2>&1 \
     || { cat build/hla13-tests-configure.log; exit 1; }
 cmake_build build/hla13-tests "the C++ test federates of the HLA 1.3 API" all
+# ... and the C++ test programs of the IEEE 1516-2010 API (tests/cpp/rti1516e), the same way.
+.venv/bin/cmake -S tests/cpp/rti1516e -B build/rti1516e-tests -G Ninja -Dhlacore_DIR="$api_dir" \
+    -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/rti1516e-tests-configure.log 2>&1 \
+    || { cat build/rti1516e-tests-configure.log; exit 1; }
+cmake_build build/rti1516e-tests "the C++ test programs of the IEEE 1516-2010 API" all
 if ./scripts/fuzz.sh --build-only; then
     export HLACORE_TEST_FUZZERS="$PWD/build/fuzz"
 elif [ "${CI:-}" = true ]; then

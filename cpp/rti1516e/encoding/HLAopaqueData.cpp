@@ -54,7 +54,8 @@ void HLAopaqueData::store(Octet const* inData, size_t dataSize) {
     if (_buffer && dataSize <= _bufferSize) {
         if (dataSize) std::memmove(_buffer, inData, dataSize);
     } else {
-        _own.assign(inData, inData + dataSize);
+        std::vector<Octet> copy(inData, inData + dataSize);  // inData may be in _own
+        _own.swap(copy);
         _buffer = nullptr;
     }
     _dataSize = dataSize;

@@ -11,6 +11,7 @@ but rtig_main.cpp, ``rti/wire/``,   included (``rti/net/``)
 ``rti/client/``                     the shared parts and the FOM; never the gateway side
 ``rti/rtig_main.cpp``               the gateway side, never the federate side
 ``hla13/``                          the federate side, never the gateway side
+``rti1516e/``                       the federate side, never the gateway side (IEEE 1516-2010's API)
 ``certi/``                          the federate side, never the gateway side (hlacore-rtia)
 ``bindings/``                       anything: the Python module runs a gateway in-process too
 ==================================  ==========================================================================
@@ -48,6 +49,8 @@ def layer_of(relative: str) -> str:
         return "shared"
     if relative.startswith("hla13/"):
         return "hla13"
+    if relative.startswith("rti1516e/"):
+        return "rti1516e"
     if relative.startswith("certi/"):
         return "certi"
     return "free"  # bindings/, fuzz/: above both sides
@@ -61,6 +64,7 @@ FORBIDDEN = {
     "client": (("rti/server/",), "the federate side never includes the gateway side"),
     "rtig": (("rti/client/",), "rtig is the gateway: --status needs no federate side (rti/net/)"),
     "hla13": (("rti/server/",), "the HLA 1.3 API runs over the federate side only"),
+    "rti1516e": (("rti/server/",), "the IEEE 1516-2010 API runs over the federate side only"),
     "certi": (("rti/server/",), "hlacore-rtia runs over the federate side only"),
 }
 

@@ -12,6 +12,7 @@
 
 #include "RTI.hh"
 #include "rti/client/client.hpp"
+#include "rti/client/guarded.hpp"
 
 namespace hlacore::hla13 {
 
@@ -30,11 +31,7 @@ double time_of(const RTI::FedTime& time);
 // Runs a service, its failures turned into HLA 1.3 exceptions.
 template <class F>
 auto guarded(F&& service) -> decltype(service()) {
-    try {
-        return service();
-    } catch (...) {
-        rethrow_as_hla();
-    }
+    return guarded_by(rethrow_as_hla, std::forward<F>(service));
 }
 
 // ---- the sets ----

@@ -16,9 +16,11 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "rti/client/client.hpp"
+#include "rti/client/guarded.hpp"
 
 // What the library knows of a handle: the friend each handle class names.
 #define HLACORE_HANDLE_FRIEND(Kind)                                                                   \
@@ -95,11 +97,7 @@ std::string bytes(api::VariableLengthData const& data);  // a tag
 
 template <class F>
 auto guarded(F&& service) -> decltype(service()) {
-    try {
-        return service();
-    } catch (...) {
-        rethrow_as_1516e();
-    }
+    return guarded_by(rethrow_as_1516e, std::forward<F>(service));
 }
 
 class Ambassador final : public api::RTIambassador {

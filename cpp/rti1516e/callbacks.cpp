@@ -37,6 +37,19 @@ struct Deliver {
     std::function<RTI_UNIQUE_PTR<LogicalTime>(double)> time;
 
     static AttributeHandleSet attrs(wire::Handles const& a) { return handles<AttributeHandle>(a); }
+    // A reflection or an interaction: `call` gets the values, the tag, how they were sent, and with a timestamp
+    // the time, the order received and the retraction handle, then the supplemental information.
+    template <class ValueHandle, class Info, class M, class Call>
+    void values_to(M& m, Call call) {
+        const auto values = received<ValueHandle>(m.values);
+        const Info info(handle<FederateHandle>(m.sender));
+        const auto order = static_cast<OrderType>(m.order);
+        const auto transport = static_cast<TransportationType>(m.transport);
+        if (m.time)
+            call(values, tag_of(m.tag), order, transport, *time(*m.time), order, retraction(m.sender, m.serial), info);
+        else
+            call(values, tag_of(m.tag), order, transport, info);
+    }
 
     void operator()(wire::SyncPointRegistrationSucceeded& m) {
         sync_sets.erase(m.label);
@@ -77,28 +90,12 @@ struct Deliver {
                                   wide(m.name));
     }
     void operator()(wire::ReflectAttributes& m) {
-        const auto values = received<AttributeHandle>(m.values);
         const auto object = handle<ObjectInstanceHandle>(m.object);
-        const SupplementalReflectInfo info(handle<FederateHandle>(m.sender));
-        const auto order = static_cast<OrderType>(m.order);
-        const auto transport = static_cast<TransportationType>(m.transport);
-        if (m.time)
-            fa.reflectAttributeValues(object, values, tag_of(m.tag), order, transport, *time(*m.time), order,
-                                      retraction(m.sender, m.serial), info);
-        else
-            fa.reflectAttributeValues(object, values, tag_of(m.tag), order, transport, info);
+        values_to<AttributeHandle, SupplementalReflectInfo>(m, [&](auto const&... a) { fa.reflectAttributeValues(object, a...); });
     }
     void operator()(wire::ReceiveInteraction& m) {
-        const auto values = received<ParameterHandle>(m.values);
         const auto cls = handle<InteractionClassHandle>(m.interaction_class);
-        const SupplementalReceiveInfo info(handle<FederateHandle>(m.sender));
-        const auto order = static_cast<OrderType>(m.order);
-        const auto transport = static_cast<TransportationType>(m.transport);
-        if (m.time)
-            fa.receiveInteraction(cls, values, tag_of(m.tag), order, transport, *time(*m.time), order,
-                                  retraction(m.sender, m.serial), info);
-        else
-            fa.receiveInteraction(cls, values, tag_of(m.tag), order, transport, info);
+        values_to<ParameterHandle, SupplementalReceiveInfo>(m, [&](auto const&... a) { fa.receiveInteraction(cls, a...); });
     }
     void operator()(wire::RemoveObject& m) {
         const auto object = handle<ObjectInstanceHandle>(m.object);

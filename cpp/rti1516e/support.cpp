@@ -92,39 +92,27 @@ void Ambassador::setAutomaticResignDirective(ResignAction action) {
 
 // ---- names and handles ----
 
-ObjectClassHandle Ambassador::getObjectClassHandle(std::wstring const& name) {
-    return guarded([&] { return handle<ObjectClassHandle>(client().object_class_handle(utf8(name))); });
-}
-std::wstring Ambassador::getObjectClassName(ObjectClassHandle h) {
-    return guarded([&] { return wide(client().object_class_name(core(h))); });
-}
-ObjectClassHandle Ambassador::getKnownObjectClassHandle(ObjectInstanceHandle object) {
-    return guarded([&] { return handle<ObjectClassHandle>(client().object_class_of(core(object))); });
-}
-ObjectInstanceHandle Ambassador::getObjectInstanceHandle(std::wstring const& name) {
-    return guarded([&] { return handle<ObjectInstanceHandle>(client().object_instance_handle(utf8(name))); });
-}
-std::wstring Ambassador::getObjectInstanceName(ObjectInstanceHandle h) {
-    return guarded([&] { return wide(client().object_instance_name(core(h))); });
-}
-AttributeHandle Ambassador::getAttributeHandle(ObjectClassHandle cls, std::wstring const& name) {
-    return guarded([&] { return handle<AttributeHandle>(client().attribute_handle(utf8(name), core(cls))); });
-}
-std::wstring Ambassador::getAttributeName(ObjectClassHandle cls, AttributeHandle h) {
-    return guarded([&] { return wide(client().attribute_name(core(h), core(cls))); });
-}
-InteractionClassHandle Ambassador::getInteractionClassHandle(std::wstring const& name) {
-    return guarded([&] { return handle<InteractionClassHandle>(client().interaction_class_handle(utf8(name))); });
-}
-std::wstring Ambassador::getInteractionClassName(InteractionClassHandle h) {
-    return guarded([&] { return wide(client().interaction_class_name(core(h))); });
-}
-ParameterHandle Ambassador::getParameterHandle(InteractionClassHandle cls, std::wstring const& name) {
-    return guarded([&] { return handle<ParameterHandle>(client().parameter_handle(utf8(name), core(cls))); });
-}
-std::wstring Ambassador::getParameterName(InteractionClassHandle cls, ParameterHandle h) {
-    return guarded([&] { return wide(client().parameter_name(core(h), core(cls))); });
-}
+// Each lookup, one line: the service, what it gives (a handle kind, or a name), its parameters, the client's call.
+#define HLACORE_HANDLE(Service, Kind, params, call) \
+    Kind Ambassador::Service params { return guarded([&] { return handle<Kind>(client().call); }); }
+#define HLACORE_NAME(Service, params, call) \
+    std::wstring Ambassador::Service params { return guarded([&] { return wide(client().call); }); }
+HLACORE_HANDLE(getObjectClassHandle, ObjectClassHandle, (std::wstring const& name), object_class_handle(utf8(name)))
+HLACORE_NAME(getObjectClassName, (ObjectClassHandle h), object_class_name(core(h)))
+HLACORE_HANDLE(getKnownObjectClassHandle, ObjectClassHandle, (ObjectInstanceHandle object), object_class_of(core(object)))
+HLACORE_HANDLE(getObjectInstanceHandle, ObjectInstanceHandle, (std::wstring const& name), object_instance_handle(utf8(name)))
+HLACORE_NAME(getObjectInstanceName, (ObjectInstanceHandle h), object_instance_name(core(h)))
+HLACORE_HANDLE(getAttributeHandle, AttributeHandle, (ObjectClassHandle cls, std::wstring const& name),
+               attribute_handle(utf8(name), core(cls)))
+HLACORE_NAME(getAttributeName, (ObjectClassHandle cls, AttributeHandle h), attribute_name(core(h), core(cls)))
+HLACORE_HANDLE(getInteractionClassHandle, InteractionClassHandle, (std::wstring const& name),
+               interaction_class_handle(utf8(name)))
+HLACORE_NAME(getInteractionClassName, (InteractionClassHandle h), interaction_class_name(core(h)))
+HLACORE_HANDLE(getParameterHandle, ParameterHandle, (InteractionClassHandle cls, std::wstring const& name),
+               parameter_handle(utf8(name), core(cls)))
+HLACORE_NAME(getParameterName, (InteractionClassHandle cls, ParameterHandle h), parameter_name(core(h), core(cls)))
+#undef HLACORE_HANDLE
+#undef HLACORE_NAME
 
 OrderType Ambassador::getOrderType(std::wstring const& name) {
     return guarded([&] {

@@ -14,29 +14,28 @@
 
 namespace hlacore::rti1516e {
 
+namespace {
+// A time or an interval of the federation's type as the core's double (`error` for another type).
+template <class Float, class Integer, class Base>
+double value_in(Base const& given, bool integer_federation, bool joined, const char* error) {
+    if (auto f = dynamic_cast<Float const*>(&given)) {
+        if (integer_federation) raise(error, "an HLAfloat64 time or interval in an HLAinteger64Time federation");
+        return static_cast<double>(*f);
+    }
+    if (auto i = dynamic_cast<Integer const*>(&given)) {
+        if (joined && !integer_federation) raise(error, "an HLAinteger64 time or interval in an HLAfloat64Time federation");
+        return static_cast<double>(static_cast<Integer64>(*i));
+    }
+    raise(error, "hlacore serves the HLAfloat64Time and HLAinteger64Time types, not " + utf8(given.implementationName()));
+}
+}  // namespace
+
 double Ambassador::time_in(LogicalTime const& time) const {
-    if (auto t = dynamic_cast<HLAfloat64Time const*>(&time)) {
-        if (integer_time_) raise("InvalidLogicalTime", "an HLAfloat64Time in an HLAinteger64Time federation");
-        return t->getTime();
-    }
-    if (auto t = dynamic_cast<HLAinteger64Time const*>(&time)) {
-        if (joined_ && !integer_time_) raise("InvalidLogicalTime", "an HLAinteger64Time in an HLAfloat64Time federation");
-        return static_cast<double>(t->getTime());
-    }
-    raise("InvalidLogicalTime", "hlacore serves HLAfloat64Time and HLAinteger64Time, not " + utf8(time.implementationName()));
+    return value_in<HLAfloat64Time, HLAinteger64Time>(time, integer_time_, joined_, "InvalidLogicalTime");
 }
 
 double Ambassador::interval_in(LogicalTimeInterval const& interval) const {
-    if (auto i = dynamic_cast<HLAfloat64Interval const*>(&interval)) {
-        if (integer_time_) raise("InvalidLookahead", "an HLAfloat64Interval in an HLAinteger64Time federation");
-        return i->getInterval();
-    }
-    if (auto i = dynamic_cast<HLAinteger64Interval const*>(&interval)) {
-        if (joined_ && !integer_time_) raise("InvalidLookahead", "an HLAinteger64Interval in an HLAfloat64Time federation");
-        return static_cast<double>(i->getInterval());
-    }
-    raise("InvalidLookahead", "hlacore serves HLAfloat64Interval and HLAinteger64Interval, not " +
-                                  utf8(interval.implementationName()));
+    return value_in<HLAfloat64Interval, HLAinteger64Interval>(interval, integer_time_, joined_, "InvalidLookahead");
 }
 
 RTI_UNIQUE_PTR<LogicalTime> Ambassador::time_out(double time) const {

@@ -31,28 +31,39 @@ namespace hlacore::rti1516e {
 namespace {
 // The core's exceptions that IEEE 1516-2010 names otherwise (hlacore.rti1516e translates by the same table);
 // the others keep their names, and those with no 1516-2010 counterpart become RTIinternalError.
-#define HLACORE_RENAMED(X)                                                                                      \
-    X(AttributeNotKnown, AttributeNotDefined) X(ConcurrentAccessAttempted, CallNotAllowedFromWithinCallback)      \
-    X(CouldNotOpenFED, CouldNotOpenFDD) X(CouldNotRestore, CouldNotInitiateRestore)                               \
-    X(DimensionNotDefined, InvalidDimensionHandle) X(EnableTimeConstrainedPending, RequestForTimeConstrainedPending) \
-    X(EnableTimeConstrainedWasNotPending, NoRequestToEnableTimeConstrainedWasPending)                             \
-    X(EnableTimeRegulationPending, RequestForTimeRegulationPending)                                               \
-    X(EnableTimeRegulationWasNotPending, NoRequestToEnableTimeRegulationWasPending)                               \
-    X(ErrorReadingFED, ErrorReadingFDD) X(EventNotKnown, MessageCanNoLongerBeRetracted)                           \
-    X(FederateLoggingServiceCalls, FederateServiceInvocationsAreBeingReportedViaMOM)                              \
-    X(FederateWasNotAskedToReleaseAttribute, AttributeDivestitureWasNotRequested)                                 \
-    X(FederationTimeAlreadyPassed, LogicalTimeAlreadyPassed) X(InteractionClassNotKnown, InteractionClassNotRecognized) \
-    X(InteractionParameterNotKnown, InteractionParameterNotRecognized) X(InvalidExtents, InvalidRangeBound)        \
-    X(InvalidFederationTime, InvalidLogicalTime) X(InvalidOrderingHandle, InvalidOrderType)                       \
-    X(InvalidRetractionHandle, InvalidMessageRetractionHandle)                                                    \
-    X(InvalidTransportationHandle, InvalidTransportationType) X(ObjectAlreadyRegistered, ObjectInstanceNameInUse) \
-    X(ObjectNotKnown, ObjectInstanceNotKnown) X(RegionInUse, RegionInUseForUpdateOrSubscription)                  \
-    X(RegionNotKnown, InvalidRegion) X(SpaceNotDefined, InvalidDimensionHandle)                                   \
-    X(SynchronizationPointLabelWasNotAnnounced, SynchronizationPointLabelNotAnnounced)                            \
-    X(TimeAdvanceAlreadyInProgress, InTimeAdvancingState)                                                         \
-    X(TimeAdvanceWasNotInProgress, JoinedFederateIsNotInTimeAdvancingState)                                       \
-    X(TimeConstrainedWasNotEnabled, TimeConstrainedIsNotEnabled)                                                  \
-    X(TimeRegulationWasNotEnabled, TimeRegulationIsNotEnabled) X(GatewayNotResponding, NotConnected)
+#define HLACORE_RENAMED(X) \
+    X(AttributeNotKnown, AttributeNotDefined) \
+    X(ConcurrentAccessAttempted, CallNotAllowedFromWithinCallback) \
+    X(CouldNotOpenFED, CouldNotOpenFDD) \
+    X(CouldNotRestore, CouldNotInitiateRestore) \
+    X(DimensionNotDefined, InvalidDimensionHandle) \
+    X(EnableTimeConstrainedPending, RequestForTimeConstrainedPending) \
+    X(EnableTimeConstrainedWasNotPending, NoRequestToEnableTimeConstrainedWasPending) \
+    X(EnableTimeRegulationPending, RequestForTimeRegulationPending) \
+    X(EnableTimeRegulationWasNotPending, NoRequestToEnableTimeRegulationWasPending) \
+    X(ErrorReadingFED, ErrorReadingFDD) \
+    X(EventNotKnown, MessageCanNoLongerBeRetracted) \
+    X(FederateLoggingServiceCalls, FederateServiceInvocationsAreBeingReportedViaMOM) \
+    X(FederateWasNotAskedToReleaseAttribute, AttributeDivestitureWasNotRequested) \
+    X(FederationTimeAlreadyPassed, LogicalTimeAlreadyPassed) \
+    X(InteractionClassNotKnown, InteractionClassNotRecognized) \
+    X(InteractionParameterNotKnown, InteractionParameterNotRecognized) \
+    X(InvalidExtents, InvalidRangeBound) \
+    X(InvalidFederationTime, InvalidLogicalTime) \
+    X(InvalidOrderingHandle, InvalidOrderType) \
+    X(InvalidRetractionHandle, InvalidMessageRetractionHandle) \
+    X(InvalidTransportationHandle, InvalidTransportationType) \
+    X(ObjectAlreadyRegistered, ObjectInstanceNameInUse) \
+    X(ObjectNotKnown, ObjectInstanceNotKnown) \
+    X(RegionInUse, RegionInUseForUpdateOrSubscription) \
+    X(RegionNotKnown, InvalidRegion) \
+    X(SpaceNotDefined, InvalidDimensionHandle) \
+    X(SynchronizationPointLabelWasNotAnnounced, SynchronizationPointLabelNotAnnounced) \
+    X(TimeAdvanceAlreadyInProgress, InTimeAdvancingState) \
+    X(TimeAdvanceWasNotInProgress, JoinedFederateIsNotInTimeAdvancingState) \
+    X(TimeConstrainedWasNotEnabled, TimeConstrainedIsNotEnabled) \
+    X(TimeRegulationWasNotEnabled, TimeRegulationIsNotEnabled) \
+    X(GatewayNotResponding, NotConnected)
 
 std::string renamed(std::string const& name) {
 #define HLACORE_X(from, to) \
@@ -75,15 +86,13 @@ void raise(std::string const& name, std::string const& reason) {
 void rethrow_as_1516e() {
     try {
         throw;
-    } catch (const api::Exception&) {
-        throw;
-    } catch (const RtiError& e) {
+    } catch (const RtiError& e) {  // the core's, by name
         raise(renamed(error_name(e.code())), e.what());
     } catch (const std::bad_alloc&) {
         throw api::RTIinternalError(L"RTIinternalError: out of memory");
     } catch (const std::exception& e) {
         raise("RTIinternalError", e.what());
-    }
+    }  // and one of the API's goes through unchanged
 }
 
 std::string utf8(std::wstring const& text) {

@@ -33,6 +33,7 @@ INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
 
 SIDES = ("rti/server/", "rti/client/")
 SHARED_DIRS = ("rti/wire/", "rti/record/", "rti/net/")
+FRONT_ENDS = ("hla13", "rti1516e", "certi")  # the C++ front ends over the federate side, each a directory
 
 
 def layer_of(relative: str) -> str:
@@ -47,13 +48,8 @@ def layer_of(relative: str) -> str:
         return "rtig"
     if relative.startswith(SHARED_DIRS) or (relative.startswith("rti/") and relative.count("/") == 1):
         return "shared"
-    if relative.startswith("hla13/"):
-        return "hla13"
-    if relative.startswith("rti1516e/"):
-        return "rti1516e"
-    if relative.startswith("certi/"):
-        return "certi"
-    return "free"  # bindings/, fuzz/: above both sides
+    front_end = relative.split("/", 1)[0]
+    return front_end if front_end in FRONT_ENDS else "free"  # bindings/, fuzz/: above both sides
 
 
 #: For each layer, the include prefixes it must not use, and why.

@@ -11,11 +11,7 @@ class HLAfixedArrayImplementation : public hlacore_rti1516e::Array {
 
 HLAfixedArray::HLAfixedArray(DataElement const& protoType, size_t length)
     : _impl(new HLAfixedArrayImplementation(protoType, length)) {}
-HLAfixedArray::HLAfixedArray(HLAfixedArray const& rhs) : DataElement(), _impl(new HLAfixedArrayImplementation(*rhs._impl)) {}
-HLAfixedArray::~HLAfixedArray() {}
-
-RTI_UNIQUE_PTR<DataElement> HLAfixedArray::clone() const { return RTI_UNIQUE_PTR<DataElement>(new HLAfixedArray(*this)); }
-HLACORE_WHOLE_ENCODING(HLAfixedArray)
+HLACORE_COMPOSITE_MEMBERS(HLAfixedArray)
 void HLAfixedArray::encodeInto(std::vector<Octet>& buffer) const { _impl->elements.encodeInto(buffer, buffer.size()); }
 size_t HLAfixedArray::decodeFrom(std::vector<Octet> const& buffer, size_t index) {
     return _impl->elements.decodeFrom(buffer, index, index);

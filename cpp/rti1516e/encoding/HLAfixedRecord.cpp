@@ -10,11 +10,7 @@ class HLAfixedRecordImplementation : public hlacore_rti1516e::ElementList {
 };
 
 HLAfixedRecord::HLAfixedRecord() : _impl(new HLAfixedRecordImplementation()) {}
-HLAfixedRecord::HLAfixedRecord(HLAfixedRecord const& rhs) : DataElement(), _impl(new HLAfixedRecordImplementation(*rhs._impl)) {}
-HLAfixedRecord::~HLAfixedRecord() {}
-
-RTI_UNIQUE_PTR<DataElement> HLAfixedRecord::clone() const { return RTI_UNIQUE_PTR<DataElement>(new HLAfixedRecord(*this)); }
-HLACORE_WHOLE_ENCODING(HLAfixedRecord)
+HLACORE_COMPOSITE_MEMBERS(HLAfixedRecord)
 void HLAfixedRecord::encodeInto(std::vector<Octet>& buffer) const { _impl->encodeInto(buffer, buffer.size()); }
 size_t HLAfixedRecord::decodeFrom(std::vector<Octet> const& buffer, size_t index) {
     return _impl->decodeFrom(buffer, index, index);

@@ -13,14 +13,7 @@ class HLAvariableArrayImplementation : public hlacore_rti1516e::Array {
 };
 
 HLAvariableArray::HLAvariableArray(DataElement const& prototype) : _impl(new HLAvariableArrayImplementation(prototype, 0)) {}
-HLAvariableArray::HLAvariableArray(HLAvariableArray const& rhs)
-    : DataElement(), _impl(new HLAvariableArrayImplementation(*rhs._impl)) {}
-HLAvariableArray::~HLAvariableArray() {}
-
-RTI_UNIQUE_PTR<DataElement> HLAvariableArray::clone() const {
-    return RTI_UNIQUE_PTR<DataElement>(new HLAvariableArray(*this));
-}
-HLACORE_WHOLE_ENCODING(HLAvariableArray)
+HLACORE_COMPOSITE_MEMBERS(HLAvariableArray)
 
 void HLAvariableArray::encodeInto(std::vector<Octet>& buffer) const {
     size_t start = buffer.size();

@@ -66,14 +66,7 @@ public:
 
 HLAvariantRecord::HLAvariantRecord(DataElement const& discriminantPrototype)
     : _impl(new HLAvariantRecordImplementation(discriminantPrototype)) {}
-HLAvariantRecord::HLAvariantRecord(HLAvariantRecord const& rhs)
-    : DataElement(), _impl(new HLAvariantRecordImplementation(*rhs._impl)) {}
-HLAvariantRecord::~HLAvariantRecord() {}
-
-RTI_UNIQUE_PTR<DataElement> HLAvariantRecord::clone() const {
-    return RTI_UNIQUE_PTR<DataElement>(new HLAvariantRecord(*this));
-}
-HLACORE_WHOLE_ENCODING(HLAvariantRecord)
+HLACORE_COMPOSITE_MEMBERS(HLAvariantRecord)
 
 void HLAvariantRecord::encodeInto(std::vector<Octet>& buffer) const {
     size_t start = buffer.size();

@@ -49,4 +49,12 @@ void decodeWhole(DataElement& element, rti1516e::VariableLengthData const& data)
     void Class::encode(rti1516e::VariableLengthData& inData) const { hlacore_rti1516e::encodeWhole(*this, inData); } \
     void Class::decode(rti1516e::VariableLengthData const& inData) { hlacore_rti1516e::decodeWhole(*this, inData); }
 
+// A composite's copy (its implementation copied: the copy owns copies of the members), destructor, clone and
+// whole encodings.
+#define HLACORE_COMPOSITE_MEMBERS(Class)                                                                        \
+    Class::Class(Class const& rhs) : DataElement(), _impl(new Class##Implementation(*rhs._impl)) {}             \
+    Class::~Class() {}                                                                                          \
+    RTI_UNIQUE_PTR<DataElement> Class::clone() const { return RTI_UNIQUE_PTR<DataElement>(new Class(*this)); } \
+    HLACORE_WHOLE_ENCODING(Class)
+
 #endif

@@ -9,7 +9,7 @@
 
 namespace rti1516e {
 
-HLACORE_TIME_TYPE(HLAfloat64Time, HLAfloat64Interval, HLAfloat64TimeFactory, double, double const&,
+HLACORE_TIME_TYPE(HLAfloat64Time, HLAfloat64Interval, HLAfloat64TimeFactory, double,
                   HLAfloat64TimeName,
                   std::numeric_limits<double>::infinity(), std::numeric_limits<double>::denorm_min())
 

@@ -8,7 +8,7 @@
 
 namespace rti1516e {
 
-HLACORE_TIME_TYPE(HLAinteger64Time, HLAinteger64Interval, HLAinteger64TimeFactory, Integer64, Integer64,
+HLACORE_TIME_TYPE(HLAinteger64Time, HLAinteger64Interval, HLAinteger64TimeFactory, Integer64,
                   HLAinteger64TimeName, std::numeric_limits<Integer64>::max(), 1)
 
 }  // namespace rti1516e

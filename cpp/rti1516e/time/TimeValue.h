@@ -83,8 +83,27 @@ std::wstring text(V value) {
 }  // namespace hlacore_rti1516e
 
 // The members of a time or interval class alike in all four: Base is LogicalTime or LogicalTimeInterval, Error
-// what an operand of another class throws, Name the time type's name.
-#define HLACORE_TIME_MEMBERS(Class, Base, Error, Name)                                                            \
+// what an operand of another class throws, Name the time type's name, V the value, Interval the type's interval
+// class; get/set its accessors, setZero/isZero and setOne/isOne its two named values (0 and One: initial and
+// final, or zero and epsilon).
+#define HLACORE_TIME_MEMBERS(Class, Base, Error, Name, V, Interval, get, set, setZero, isZero, setOne, isOne, One)   \
+    Class::Class() : _value(0) {}                                                                                 \
+    Class::Class(V value) : _value(value) {}                                                                      \
+    void Class::setZero() { _value = 0; }                                                                         \
+    bool Class::isZero() const { return _value == 0; }                                                            \
+    void Class::setOne() { _value = One; }                                                                        \
+    bool Class::isOne() const { return _value == One; }                                                           \
+    Base& Class::operator+=(LogicalTimeInterval const& addend) {                                                  \
+        _value = hlacore_rti1516e::add(_value, Interval(addend).getInterval());                                   \
+        return *this;                                                                                             \
+    }                                                                                                             \
+    Base& Class::operator-=(LogicalTimeInterval const& subtrahend) {                                              \
+        _value = hlacore_rti1516e::subtract(_value, Interval(subtrahend).getInterval());                          \
+        return *this;                                                                                             \
+    }                                                                                                             \
+    V Class::get() const { return _value; }                                                                       \
+    void Class::set(V value) { _value = value; }                                                                  \
+    Class::operator V() const { return _value; }                                                                  \
     Class::Class(Base const& value) : _value(hlacore_rti1516e::as<Class, Error>(value, Name)._value) {}           \
     Class::Class(Class const& value) : Base(), _value(value._value) {}                                           \
     Class::~Class() {}                                                                                            \
@@ -118,49 +137,25 @@ std::wstring text(V value) {
     std::wstring Class::toString() const { return hlacore_rti1516e::text(_value); }                              \
     std::wstring Class::implementationName() const { return Name; }
 
-// The time class Time, its interval class Interval and their factory Factory, holding V (Time's constructor
-// takes a TimeArg), named Name, with the values Final and Epsilon. Operands of another type are turned away by the converting constructors.
-#define HLACORE_TIME_TYPE(Time, Interval, Factory, V, TimeArg, Name, Final, Epsilon)                              \
-    HLACORE_TIME_MEMBERS(Time, LogicalTime, InvalidLogicalTime, Name)                                              \
-    Time::Time() : _value(0) {}                                                                                    \
-    Time::Time(TimeArg value) : _value(value) {}                                                                   \
-    void Time::setInitial() { _value = 0; }                                                                        \
-    bool Time::isInitial() const { return _value == 0; }                                                           \
-    void Time::setFinal() { _value = Final; }                                                                      \
-    bool Time::isFinal() const { return _value == Final; }                                                         \
-    LogicalTime& Time::operator+=(LogicalTimeInterval const& addend) {                                             \
-        _value = hlacore_rti1516e::add(_value, Interval(addend).getInterval());                                    \
-        return *this;                                                                                              \
-    }                                                                                                              \
-    LogicalTime& Time::operator-=(LogicalTimeInterval const& subtrahend) {                                         \
-        _value = hlacore_rti1516e::subtract(_value, Interval(subtrahend).getInterval());                           \
-        return *this;                                                                                              \
-    }                                                                                                              \
-    V Time::getTime() const { return _value; }                                                                     \
-    void Time::setTime(V value) { _value = value; }                                                                \
-    Time::operator V() const { return _value; }                                                                    \
-                                                                                                                   \
-    HLACORE_TIME_MEMBERS(Interval, LogicalTimeInterval, InvalidLogicalTimeInterval, Name)                          \
-    Interval::Interval() : _value(0) {}                                                                            \
-    Interval::Interval(V value) : _value(value) {}                                                                 \
-    void Interval::setZero() { _value = 0; }                                                                       \
-    bool Interval::isZero() const { return _value == 0; }                                                          \
-    void Interval::setEpsilon() { _value = Epsilon; }                                                              \
-    bool Interval::isEpsilon() const { return _value == Epsilon; }                                                 \
-    LogicalTimeInterval& Interval::operator+=(LogicalTimeInterval const& addend) {                                 \
-        _value = hlacore_rti1516e::add(_value, Interval(addend)._value);                                           \
-        return *this;                                                                                              \
-    }                                                                                                              \
-    LogicalTimeInterval& Interval::operator-=(LogicalTimeInterval const& subtrahend) {                             \
-        _value = hlacore_rti1516e::subtract(_value, Interval(subtrahend)._value);                                  \
-        return *this;                                                                                              \
-    }                                                                                                              \
+// A factory's two decoders of Result (a Class): from VariableLengthData, and from a buffer.
+#define HLACORE_FACTORY_DECODE(Factory, V, decoder, Result, Class)                                                 \
+    RTI_UNIQUE_PTR<Result> Factory::decoder(VariableLengthData const& encoded) {                                  \
+        return decoder(const_cast<void*>(encoded.data()), encoded.size());                                        \
+    }                                                                                                             \
+    RTI_UNIQUE_PTR<Result> Factory::decoder(void* buffer, size_t bufferSize) {                                    \
+        return RTI_UNIQUE_PTR<Result>(new Class(hlacore_rti1516e::decode8<V>(buffer, bufferSize)));               \
+    }
+
+// The time class Time, its interval class Interval and their factory Factory, holding V, named Name, with the
+// values Final and Epsilon. Operands of another type are turned away by the converting constructors.
+#define HLACORE_TIME_TYPE(Time, Interval, Factory, V, Name, Final, Epsilon)                                        \
+    HLACORE_TIME_MEMBERS(Time, LogicalTime, InvalidLogicalTime, Name, V, Interval, getTime, setTime, setInitial,      \
+                         isInitial, setFinal, isFinal, Final)                                                        \
+    HLACORE_TIME_MEMBERS(Interval, LogicalTimeInterval, InvalidLogicalTimeInterval, Name, V, Interval, getInterval,  \
+                         setInterval, setZero, isZero, setEpsilon, isEpsilon, Epsilon)                               \
     void Interval::setToDifference(LogicalTime const& minuend, LogicalTime const& subtrahend) {                    \
         _value = hlacore_rti1516e::subtract(Time(minuend).getTime(), Time(subtrahend).getTime());                  \
     }                                                                                                              \
-    V Interval::getInterval() const { return _value; }                                                             \
-    void Interval::setInterval(V value) { _value = value; }                                                        \
-    Interval::operator V() const { return _value; }                                                                \
                                                                                                                    \
     Factory::Factory() {}                                                                                          \
     Factory::~Factory() {}                                                                                         \
@@ -174,18 +169,8 @@ std::wstring text(V value) {
     RTI_UNIQUE_PTR<LogicalTimeInterval> Factory::makeEpsilon() {                                                   \
         return RTI_UNIQUE_PTR<LogicalTimeInterval>(new Interval(Epsilon));                                         \
     }                                                                                                              \
-    RTI_UNIQUE_PTR<LogicalTime> Factory::decodeLogicalTime(VariableLengthData const& encodedLogicalTime) {         \
-        return decodeLogicalTime(const_cast<void*>(encodedLogicalTime.data()), encodedLogicalTime.size());         \
-    }                                                                                                              \
-    RTI_UNIQUE_PTR<LogicalTime> Factory::decodeLogicalTime(void* buffer, size_t bufferSize) {                      \
-        return RTI_UNIQUE_PTR<LogicalTime>(new Time(hlacore_rti1516e::decode8<V>(buffer, bufferSize)));            \
-    }                                                                                                              \
-    RTI_UNIQUE_PTR<LogicalTimeInterval> Factory::decodeLogicalTimeInterval(VariableLengthData const& encodedValue) { \
-        return decodeLogicalTimeInterval(const_cast<void*>(encodedValue.data()), encodedValue.size());             \
-    }                                                                                                              \
-    RTI_UNIQUE_PTR<LogicalTimeInterval> Factory::decodeLogicalTimeInterval(void* buffer, size_t bufferSize) {      \
-        return RTI_UNIQUE_PTR<LogicalTimeInterval>(new Interval(hlacore_rti1516e::decode8<V>(buffer, bufferSize))); \
-    }                                                                                                              \
+    HLACORE_FACTORY_DECODE(Factory, V, decodeLogicalTime, LogicalTime, Time)                                      \
+    HLACORE_FACTORY_DECODE(Factory, V, decodeLogicalTimeInterval, LogicalTimeInterval, Interval)                  \
     std::wstring Factory::getName() const { return Name; }
 
 #endif

@@ -1,5 +1,5 @@
-// What the C++ test federates share: CHECK, a FederateAmbassador that records every callback, and ticking
-// until a condition holds (bounded).
+// What the C++ test federates of HLA 1.3 share: CHECK (../check.hh), a FederateAmbassador that records every
+// callback, and ticking until a condition holds (bounded).
 #pragma once
 
 #include <chrono>
@@ -13,17 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "../check.hh"
 #include "NullFederateAmbassador.hh"
 #include "RTI.hh"
 #include "fedtime.hh"
 
-#define CHECK(condition)                                                                     \
-    do {                                                                                     \
-        if (!(condition)) {                                                                  \
-            std::fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #condition); \
-            std::exit(1);                                                                    \
-        }                                                                                    \
-    } while (0)
 
 // One callback: its name and what it carried.
 struct Event {

@@ -18,15 +18,10 @@
 #include <memory>
 #include <string>
 
+#include "../check.hh"
+
 using namespace rti1516e;
 
-#define CHECK(condition)                                                                     \
-    do {                                                                                     \
-        if (!(condition)) {                                                                  \
-            std::fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #condition); \
-            std::exit(1);                                                                    \
-        }                                                                                    \
-    } while (0)
 
 namespace {
 
@@ -89,15 +84,12 @@ bool raises(std::function<void()> call) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 5) {
-        std::cerr << "usage: rti1516e_federate ADDRESS NAME STEPS PEERS\n";
-        return 2;
-    }
+    if (argc != 5) return std::fprintf(stderr, "usage: rti1516e_federate ADDRESS NAME STEPS PEERS\n"), 2;
     const std::string name = argv[2];
     const int steps = std::stoi(argv[3]);
+    Federate fed;
+    fed.peers = std::stoi(argv[4]);
     try {
-        Federate fed;
-        fed.peers = std::stoi(argv[4]);
         RTIambassadorFactory factory;
         std::unique_ptr<RTIambassador> rti = factory.createRTIambassador();
         rti->connect(fed, HLA_EVOKED, wide(argv[1]));

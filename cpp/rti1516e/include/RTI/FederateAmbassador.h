@@ -18,6 +18,17 @@
 
 namespace rti1516e {
 
+// The three overloads of a callback that delivers values (reflectAttributeValues, receiveInteraction): in
+// receive order, and timestamped without and with a retraction handle.
+#define RTI1516E_VALUES_CALLBACKS(X, name, target, Values, Info) \
+    X(void, name, (target, Values const& values, VariableLengthData const& tag, OrderType sentOrder, \
+          TransportationType type, Info info), ) \
+    X(void, name, (target, Values const& values, VariableLengthData const& tag, OrderType sentOrder, \
+          TransportationType type, LogicalTime const& time, OrderType receivedOrder, Info info), ) \
+    X(void, name, (target, Values const& values, VariableLengthData const& tag, OrderType sentOrder, \
+          TransportationType type, LogicalTime const& time, OrderType receivedOrder, MessageRetractionHandle handle, \
+          Info info), )
+
 #define RTI1516E_CALLBACKS(X) \
     X(void, connectionLost, (std::wstring const& fault), ) \
     X(void, reportFederationExecutions, (FederationExecutionInformationVector const& federations), ) \
@@ -50,24 +61,10 @@ namespace rti1516e {
           ) \
     X(void, discoverObjectInstance, (ObjectInstanceHandle object, ObjectClassHandle cls, std::wstring const& name, \
           FederateHandle producer), ) \
-    X(void, reflectAttributeValues, (ObjectInstanceHandle object, AttributeHandleValueMap const& values, \
-          VariableLengthData const& tag, OrderType sentOrder, TransportationType type, \
-          SupplementalReflectInfo info), ) \
-    X(void, reflectAttributeValues, (ObjectInstanceHandle object, AttributeHandleValueMap const& values, \
-          VariableLengthData const& tag, OrderType sentOrder, TransportationType type, LogicalTime const& time, \
-          OrderType receivedOrder, SupplementalReflectInfo info), ) \
-    X(void, reflectAttributeValues, (ObjectInstanceHandle object, AttributeHandleValueMap const& values, \
-          VariableLengthData const& tag, OrderType sentOrder, TransportationType type, LogicalTime const& time, \
-          OrderType receivedOrder, MessageRetractionHandle handle, SupplementalReflectInfo info), ) \
-    X(void, receiveInteraction, (InteractionClassHandle cls, ParameterHandleValueMap const& values, \
-          VariableLengthData const& tag, OrderType sentOrder, TransportationType type, \
-          SupplementalReceiveInfo info), ) \
-    X(void, receiveInteraction, (InteractionClassHandle cls, ParameterHandleValueMap const& values, \
-          VariableLengthData const& tag, OrderType sentOrder, TransportationType type, LogicalTime const& time, \
-          OrderType receivedOrder, SupplementalReceiveInfo info), ) \
-    X(void, receiveInteraction, (InteractionClassHandle cls, ParameterHandleValueMap const& values, \
-          VariableLengthData const& tag, OrderType sentOrder, TransportationType type, LogicalTime const& time, \
-          OrderType receivedOrder, MessageRetractionHandle handle, SupplementalReceiveInfo info), ) \
+    RTI1516E_VALUES_CALLBACKS(X, reflectAttributeValues, ObjectInstanceHandle object, AttributeHandleValueMap, \
+                              SupplementalReflectInfo) \
+    RTI1516E_VALUES_CALLBACKS(X, receiveInteraction, InteractionClassHandle cls, ParameterHandleValueMap, \
+                              SupplementalReceiveInfo) \
     X(void, removeObjectInstance, (ObjectInstanceHandle object, VariableLengthData const& tag, OrderType sentOrder, \
           SupplementalRemoveInfo info), ) \
     X(void, removeObjectInstance, (ObjectInstanceHandle object, VariableLengthData const& tag, OrderType sentOrder, \

@@ -19,18 +19,9 @@ namespace rti1516e {
         explicit Name(Value const& inData);                                           \
         /* Null: the element holds its own value. */                                  \
         explicit Name(Value* inData);                                                 \
-        Name(Name const& rhs);                                                        \
-        ~Name() override;                                                             \
+        RTI_DATA_ELEMENT_MEMBERS(Name)                                                \
         /* Copies the value, into the caller's variable if it refers to one. */       \
         Name& operator=(Name const& rhs);                                             \
-        RTI_UNIQUE_PTR<DataElement> clone() const override;                           \
-        VariableLengthData encode() const override;                                   \
-        void encode(VariableLengthData& inData) const override;                       \
-        void encodeInto(std::vector<Octet>& buffer) const override;                   \
-        void decode(VariableLengthData const& inData) override;                       \
-        size_t decodeFrom(std::vector<Octet> const& buffer, size_t index) override;   \
-        size_t getEncodedLength() const override;                                     \
-        unsigned int getOctetBoundary() const override;                               \
         Integer64 hash() const override;                                              \
         /* Null throws EncoderException. */                                           \
         virtual void setDataPointer(Value* inData);                                   \

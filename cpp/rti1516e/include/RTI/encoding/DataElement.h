@@ -34,6 +34,37 @@ public:
     virtual Integer64 hash() const;
 };
 
+// What each concrete element declares of DataElement: its copy, its encoding and decoding, its octet boundary.
+#define RTI_DATA_ELEMENT_MEMBERS(Class)                                        \
+    Class(Class const& rhs);                                                   \
+    ~Class() override;                                                         \
+    RTI_UNIQUE_PTR<DataElement> clone() const override;                        \
+    VariableLengthData encode() const override;                                \
+    void encode(VariableLengthData& inData) const override;                    \
+    void encodeInto(std::vector<Octet>& buffer) const override;                \
+    void decode(VariableLengthData const& inData) override;                    \
+    size_t decodeFrom(std::vector<Octet> const& buffer, size_t index) override; \
+    size_t getEncodedLength() const override;                                  \
+    unsigned int getOctetBoundary() const override;
+
+// What the arrays and the fixed record declare of their members, by index; these throw EncoderException for an
+// index out of range or an element not of the type wanted there.
+#define RTI_ELEMENT_LIST_MEMBERS                                                \
+    virtual size_t size() const;                                               \
+    virtual void set(size_t index, DataElement const& dataElement);            \
+    virtual void setElementPointer(size_t index, DataElement* dataElement);    \
+    virtual DataElement const& get(size_t index) const;                        \
+    DataElement const& operator[](size_t index) const;
+
+// A composite's end: its type test (its members' types too), it is not assigned (its members may be the
+// caller's), and it holds its implementation.
+#define RTI_COMPOSITE_IMPLEMENTATION(Class)                                     \
+    bool isSameTypeAs(DataElement const& inData) const override;               \
+    Class& operator=(Class const& rhs) = delete;                               \
+                                                                               \
+protected:                                                                     \
+    std::unique_ptr<Class##Implementation> _impl;
+
 }  // namespace rti1516e
 
 #endif

@@ -16,30 +16,12 @@ class HLAfixedArrayImplementation;
 class RTI_EXPORT HLAfixedArray : public DataElement {
 public:
     explicit HLAfixedArray(DataElement const& protoType, size_t length);
-    HLAfixedArray(HLAfixedArray const& rhs);
-    ~HLAfixedArray() override;
-    RTI_UNIQUE_PTR<DataElement> clone() const override;
-    VariableLengthData encode() const override;
-    void encode(VariableLengthData& inData) const override;
-    void encodeInto(std::vector<Octet>& buffer) const override;
-    void decode(VariableLengthData const& inData) override;
-    size_t decodeFrom(std::vector<Octet> const& buffer, size_t index) override;
-    size_t getEncodedLength() const override;
-    unsigned int getOctetBoundary() const override;
-    bool isSameTypeAs(DataElement const& inData) const override;
+    RTI_DATA_ELEMENT_MEMBERS(HLAfixedArray)
     virtual bool hasPrototypeSameTypeAs(DataElement const& dataElement) const;
-    virtual size_t size() const;
-    // These throw EncoderException for an index out of range or an element not of the prototype's type.
-    virtual void set(size_t index, DataElement const& dataElement);
-    virtual void setElementPointer(size_t index, DataElement* dataElement);
-    virtual DataElement const& get(size_t index) const;
-    DataElement const& operator[](size_t index) const;
+    RTI_ELEMENT_LIST_MEMBERS
 
     HLAfixedArray() = delete;
-    HLAfixedArray& operator=(HLAfixedArray const& rhs) = delete;
-
-protected:
-    std::unique_ptr<HLAfixedArrayImplementation> _impl;
+    RTI_COMPOSITE_IMPLEMENTATION(HLAfixedArray)
 };
 
 }  // namespace rti1516e

@@ -16,31 +16,13 @@ class HLAfixedRecordImplementation;
 class RTI_EXPORT HLAfixedRecord : public DataElement {
 public:
     HLAfixedRecord();
-    HLAfixedRecord(HLAfixedRecord const& rhs);
-    ~HLAfixedRecord() override;
-    RTI_UNIQUE_PTR<DataElement> clone() const override;
-    VariableLengthData encode() const override;
-    void encode(VariableLengthData& inData) const override;
-    void encodeInto(std::vector<Octet>& buffer) const override;
-    void decode(VariableLengthData const& inData) override;
-    size_t decodeFrom(std::vector<Octet> const& buffer, size_t index) override;
-    size_t getEncodedLength() const override;
-    unsigned int getOctetBoundary() const override;
-    bool isSameTypeAs(DataElement const& inData) const override;
+    RTI_DATA_ELEMENT_MEMBERS(HLAfixedRecord)
     virtual bool hasElementSameTypeAs(size_t index, DataElement const& inData) const;
-    virtual size_t size() const;
     virtual void appendElement(DataElement const& dataElement);
     virtual void appendElementPointer(DataElement* dataElement);
-    // These throw EncoderException for an index out of range or a field of another type than the one there.
-    virtual void set(size_t index, DataElement const& dataElement);
-    virtual void setElementPointer(size_t index, DataElement* dataElement);
-    virtual DataElement const& get(size_t index) const;
-    DataElement const& operator[](size_t index) const;
+    RTI_ELEMENT_LIST_MEMBERS
 
-    HLAfixedRecord& operator=(HLAfixedRecord const& rhs) = delete;
-
-protected:
-    std::unique_ptr<HLAfixedRecordImplementation> _impl;
+    RTI_COMPOSITE_IMPLEMENTATION(HLAfixedRecord)
 };
 
 }  // namespace rti1516e

@@ -18,16 +18,7 @@ public:
     HLAopaqueData(Octet const* inData, size_t dataSize);
     // EncoderException if dataSize is more than bufferSize or the buffer is null.
     HLAopaqueData(Octet** inData, size_t bufferSize, size_t dataSize);
-    HLAopaqueData(HLAopaqueData const& rhs);
-    ~HLAopaqueData() override;
-    RTI_UNIQUE_PTR<DataElement> clone() const override;
-    VariableLengthData encode() const override;
-    void encode(VariableLengthData& inData) const override;
-    void encodeInto(std::vector<Octet>& buffer) const override;
-    void decode(VariableLengthData const& inData) override;
-    size_t decodeFrom(std::vector<Octet> const& buffer, size_t index) override;
-    size_t getEncodedLength() const override;
-    unsigned int getOctetBoundary() const override;
+    RTI_DATA_ELEMENT_MEMBERS(HLAopaqueData)
     virtual size_t bufferLength() const;
     virtual size_t dataLength() const;
     virtual void setDataPointer(Octet** inData, size_t bufferSize, size_t dataSize);

@@ -17,17 +17,7 @@ class HLAvariantRecordImplementation;
 class RTI_EXPORT HLAvariantRecord : public DataElement {
 public:
     explicit HLAvariantRecord(DataElement const& discriminantPrototype);
-    HLAvariantRecord(HLAvariantRecord const& rhs);
-    ~HLAvariantRecord() override;
-    RTI_UNIQUE_PTR<DataElement> clone() const override;
-    VariableLengthData encode() const override;
-    void encode(VariableLengthData& inData) const override;
-    void encodeInto(std::vector<Octet>& buffer) const override;
-    void decode(VariableLengthData const& inData) override;
-    size_t decodeFrom(std::vector<Octet> const& buffer, size_t index) override;
-    size_t getEncodedLength() const override;
-    unsigned int getOctetBoundary() const override;
-    bool isSameTypeAs(DataElement const& inData) const override;
+    RTI_DATA_ELEMENT_MEMBERS(HLAvariantRecord)
     // Whether the variant of discriminant is of inData's type; EncoderException if there is none.
     virtual bool isSameTypeAs(DataElement const& discriminant, DataElement const& inData) const;
     virtual bool hasMatchingDiscriminantTypeAs(DataElement const& dataElement) const;
@@ -42,10 +32,7 @@ public:
     virtual DataElement const& getVariant() const;
 
     HLAvariantRecord() = delete;
-    HLAvariantRecord& operator=(HLAvariantRecord const& rhs) = delete;
-
-protected:
-    std::unique_ptr<HLAvariantRecordImplementation> _impl;
+    RTI_COMPOSITE_IMPLEMENTATION(HLAvariantRecord)
 };
 
 }  // namespace rti1516e

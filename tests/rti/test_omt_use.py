@@ -222,6 +222,28 @@ def test_enumerations(fom):
     assert [e.name for e in fom.BumperStateEnum32] == ["Released", "Pressed", "Fault"]
 
 
+RPR_EMITTER = """
+<enumeratedDataTypes><enumeratedData><name>EmitterTypeEnum16</name><representation>HLAinteger16BE</representation>
+  <enumerator><name>Other</name><value>0</value></enumerator>
+  <enumerator><name>AN_APG_63</name><value>32805</value></enumerator>
+  <enumerator><name>AN_APG_66</name><value>32806</value></enumerator></enumeratedData></enumeratedDataTypes>
+"""
+
+
+def test_an_enumerator_beyond_a_signed_representation_reads_as_its_bit_pattern(fom, tmp_path):
+    """As the RPR FOM 2.0's EmitterTypeEnum16 (32805 in an HLAinteger16BE), read as tools in the field read it:
+    the representation's bit pattern, 0x8025 on the wire, said once for the type; a value beyond the width
+    stays an error."""
+    with pytest.warns(UserWarning, match=r"EmitterTypeEnum16: .*bit pattern: 32805 as -32731, 32806 as -32730") as caught:
+        fom.HLAuse(_write(tmp_path, RPR_EMITTER))
+    assert len(caught) == 1
+    emitter = fom.EmitterTypeEnum16
+    assert emitter.AN_APG_63 == -32731 and emitter.pack("AN_APG_63") == b"\x80\x25"
+    assert emitter.unpack(b"\x80\x26") == (emitter.AN_APG_66, 2)
+    with pytest.raises(ValueError, match="out of range"):
+        omt.HLAenumerated("Wide", omt.HLAinteger16BE, {"Big": 65536}).pack("Big")
+
+
 # --------------------------------------------------------------------------
 # byte layouts written out by hand from IEEE 1516.2's rules
 # --------------------------------------------------------------------------

@@ -1,7 +1,8 @@
 """IEEE 1516-2010 in C++ (librti1516e, docs/rti1516e.md): a federate built against the installed headers and
 libraries through the CMake package (tests/cpp/rti1516e, built by ./scripts/test.sh), in one federation with
-a Python 1516-2010 federate and a Python HLA 1.3 one: the services whose answers it knows, then a 1 000-step
-timestamped lockstep of the three; and the flags of ``python -m hlacore.config --api 1516e`` and pkg-config."""
+a Python 1516-2010 federate, a Python HLA 1.3 one and a C++ HLA 1.3 one (tests/cpp/hla13): the services whose
+answers it knows, then a 1 000-step timestamped lockstep of the four; and the flags of
+``python -m hlacore.config --api 1516e`` and pkg-config."""
 
 from __future__ import annotations
 
@@ -18,7 +19,7 @@ import hlacore.rti1516e as rti1516e
 from hlacore import config
 from hlacore.processes import Child
 
-from support import ROOT, RtigProcess
+from support import ROOT, RtigProcess, cpp_federate
 
 DATA = ROOT / "tests" / "data" / "rti1516e"
 VEHICLES, CARS = str(DATA / "vehicles.xml"), str(DATA / "cars.xml")
@@ -47,9 +48,10 @@ class Recorder:
         return next((args for n, args in reversed(self.calls) if n == name), None)
 
 
-def test_a_cpp_federate_in_a_1000_step_lockstep_with_python_federates(rtig: RtigProcess) -> None:
-    """Three federates, each regulating and constrained with lookahead 1, each updating its vehicle's position
-    at t before asking for t: every grant of each comes after both others' updates at its time."""
+def test_four_federates_of_both_apis_and_languages_in_a_1000_step_lockstep(rtig: RtigProcess) -> None:
+    """1516-2010 and HLA 1.3, Python and C++: four federates, each regulating and constrained with lookahead 1,
+    each updating its vehicle's position at t before asking for t: every grant of each comes after the three
+    others' updates at its time."""
     steps = 1000
     amb = Recorder()
     new = rti1516e.RTIambassador()
@@ -59,10 +61,13 @@ def test_a_cpp_federate_in_a_1000_step_lockstep_with_python_federates(rtig: Rtig
     old_amb = Recorder()
     old = rti.RTIAmbassador(rtig.address)
     old.joinFederationExecution("python-13", "Vehicles", old_amb)  # type: ignore[arg-type]
-    with Child([program("rti1516e_federate"), rtig.address, "cpp", str(steps), "2"]) as cpp:
+    with Child([program("rti1516e_federate"), rtig.address, "cpp", str(steps), "3"]) as cpp, \
+            Child([cpp_federate("hla13_lockstep_federate"), "Vehicles", "cpp-13", str(steps), "3"],
+                  env={**os.environ, "HLACORE_RTIG": rtig.address}) as cpp13:
         try:
             ready = cpp.read_json(timeout=60)
             assert ready == {"ready": True, "time": 0}, cpp.stderr()
+            assert cpp13.read_json(timeout=60) == {"ready": True}, cpp13.stderr()
             vehicle = new.getObjectClassHandle("Vehicle")
             position = new.getAttributeHandle(vehicle, "position")
             new.publishObjectClassAttributes(vehicle, [position])
@@ -100,23 +105,25 @@ def test_a_cpp_federate_in_a_1000_step_lockstep_with_python_federates(rtig: Rtig
                 old.timeAdvanceRequest(t)
                 pump(lambda: amb.last("timeAdvanceGrant") == (t,) and old_amb.last("timeAdvanceGrant") == (t,),
                      f"step {step}")
-            summary = cpp.read_json(timeout=60)
+            summaries = [cpp.read_json(timeout=60), cpp13.read_json(timeout=60)]
             assert cpp.wait(timeout=30) == 0, cpp.stderr()
+            assert cpp13.wait(timeout=30) == 0, cpp13.stderr()
         finally:
             old.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
             new.resignFederationExecution(rti1516e.CANCEL_THEN_DELETE_THEN_DIVEST)
             new.disconnect()
-    assert summary == {"steps": steps, "reflections": 2 * steps, "late": 0}
-    # This side, in the order delivered: each grant at t after the C++ federate's update at t.
-    last = None
-    grants = 0
-    for name, args in amb.calls:
-        if name == "reflectAttributeValues" and args[5] is not None and bytes(next(iter(args[1].values()))).startswith(b"cpp"):
-            last = args[5]
-        elif name == "timeAdvanceGrant" and args[0] > 0:
-            grants += 1
-            assert last == args[0], f"grant {args[0]} after the C++ federate's update at {last}"
-    assert grants == steps
+    assert summaries == [{"steps": steps, "reflections": 3 * steps, "late": 0}] * 2
+    # The Python sides, in the order delivered: each grant at t after the three others' updates at t.
+    for calls, time_of in ((amb.calls, 5), (old_amb.calls, 5)):
+        at: dict[float, int] = {}
+        grants = 0
+        for name, args in calls:
+            if name == "reflectAttributeValues" and len(args) > time_of and args[time_of] is not None:
+                at[args[time_of]] = at.get(args[time_of], 0) + 1
+            elif name == "timeAdvanceGrant" and args[0] > 0:
+                grants += 1
+                assert at.get(args[0]) == 3, f"grant {args[0]} after {at.get(args[0])} updates at its time"
+        assert grants == steps
 
 
 def test_the_flags_of_hlacore_config_and_pkg_config_build_a_1516e_federate(tmp_path: pathlib.Path) -> None:

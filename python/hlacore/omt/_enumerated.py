@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import operator
+import warnings
 from collections.abc import Iterable, Mapping
 from typing import Any
 
@@ -69,10 +70,39 @@ class HLAenumerated(_Composite):
         return (self.representation,)
 
     def _compute_layout(self) -> tuple[int, int | None]:
-        for number in self._by_value:
-            self.representation.pack(number)  # check the range
         representation = self.representation
+        wrapped = {}
+        for number in self._by_value:
+            try:
+                representation.pack(number)  # check the range
+            except ValueError:
+                wrapped[number] = self._bit_pattern(number)
+        if wrapped:
+            self._rewrap(wrapped)
         return representation.octetBoundary, representation.fixed_size
+
+    def _bit_pattern(self, number: int) -> int:
+        """``number``, beyond a signed representation's range but within its width, as the value of its bit
+        pattern: tools in the field read the RPR FOM's ``EmitterTypeEnum16`` (32805 in an ``HLAinteger16BE``)
+        so; anything else out of range is refused."""
+        low = getattr(self.representation, "_min", 0)
+        high = getattr(self.representation, "_max", 0)
+        if low < 0 and high < number <= 2 * high + 1:
+            return number - 2 * (high + 1)
+        self.representation.pack(number)  # raises, naming the range
+        raise AssertionError("unreachable")
+
+    def _rewrap(self, wrapped: Mapping[int, int]) -> None:
+        """The enumerators whose values are read as their bit pattern, said once for the type."""
+        for name, enumerator in list(self.enumerators.items()):
+            if int(enumerator) in wrapped:
+                self.enumerators[name] = HLAenumerator(self.name, name, wrapped[int(enumerator)])
+        self._by_value = {}
+        for enumerator in self.enumerators.values():
+            self._by_value.setdefault(int(enumerator), enumerator)
+        shown = ", ".join(f"{n} as {w}" for n, w in wrapped.items())
+        warnings.warn(f"{self.name}: enumerator values beyond {self.representation.name}'s range are read as its "
+                      f"bit pattern: {shown}", stacklevel=2)
 
     def __getattr__(self, attribute: str) -> HLAenumerator:
         """Return the enumerator called ``attribute``."""

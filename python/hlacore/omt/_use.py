@@ -38,7 +38,10 @@ def HLAuse(filename: str | os.PathLike[str]) -> dict[str, HLAdataType]:
     * ``simpleData``: its representation (the name is an alias of the same
       object);
     * ``enumeratedData``: an :class:`HLAenumerated`; an enumerator with
-      several values takes the first, and the others decode to it;
+      several values takes the first, and the others decode to it; a value
+      beyond a signed representation's range but within its width (the RPR
+      FOM's ``EmitterTypeEnum16`` has 32805 in an ``HLAinteger16BE``) is read
+      as its bit pattern (-32731), with one warning for the type;
     * ``arrayData``: an :class:`HLAfixedArray` or :class:`HLAvariableArray`
       of cardinality ``Dynamic``, a number or a range ``[1..10]`` (its upper
       bound is the maximum); a multi-dimensional cardinality ``2,3`` nests

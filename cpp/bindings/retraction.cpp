@@ -80,6 +80,10 @@ void bind_retraction(py::module_& m) {
     retraction_type = reinterpret_cast<PyTypeObject*>(PyType_FromSpec(&spec));
     if (!retraction_type) throw py::error_already_set();
     m.attr("EventRetractionHandle") = py::handle(reinterpret_cast<PyObject*>(retraction_type));
+    // The handle an encoding names (hlacore.rti1516e's decodeMessageRetractionHandle); only the RTI makes others.
+    m.def("_retraction_handle", [](std::uint32_t sender, std::uint64_t serial) {
+        return make_retraction(EventRetractionHandle{sender, serial});
+    }, py::arg("sender"), py::arg("serial"), "The EventRetractionHandle of `sender`'s message `serial` (for decoding one).");
 }
 
 }  // namespace hlacore::bindings

@@ -94,6 +94,8 @@ std::string bytes(api::VariableLengthData const& data);  // a tag
 [[noreturn]] void rethrow_as_1516e();
 // The exception named `name` (RTI1516E_EXCEPTIONS), carrying `reason`.
 [[noreturn]] void raise(std::string const& name, std::string const& reason);
+// The RTIinternalError of what hlacore does not serve yet, saying why (as hlacore.rti1516e words it).
+[[noreturn]] void not_served(std::string const& what, std::string const& why);
 
 template <class F>
 auto guarded(F&& service) -> decltype(service()) {

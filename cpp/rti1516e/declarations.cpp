@@ -6,7 +6,7 @@ namespace hlacore::rti1516e {
 
 namespace {
 void not_rates(std::wstring const& rate) {
-    if (!rate.empty()) raise("RTIinternalError", "update rates are not served yet: the FOM's are not read");
+    if (!rate.empty()) not_served("update rates", "the FOM's are not read");
 }
 }  // namespace
 

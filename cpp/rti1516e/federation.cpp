@@ -149,8 +149,7 @@ FederateHandle Ambassador::joinFederationExecution(std::wstring const& name, std
                                                    std::vector<std::wstring> const& modules) {
     return guarded([&] {
         if (!modules.empty())
-            raise("RTIinternalError", "additional FOM modules at join are not served yet: give every module to "
-                                      "createFederationExecution");
+            not_served("additional FOM modules at join", "give every module to createFederationExecution");
         std::lock_guard<std::recursive_mutex> lock(mu_);
         std::uint32_t handle = 0;
         try {
@@ -204,8 +203,7 @@ void Ambassador::registerFederationSynchronizationPoint(std::wstring const& labe
 void Ambassador::synchronizationPointAchieved(std::wstring const& label, bool successfully) {
     guarded([&] {
         if (!successfully)
-            raise("RTIinternalError", "an unsuccessful synchronizationPointAchieved is not served yet: the core has "
-                                      "no failed set");
+            not_served("an unsuccessful synchronizationPointAchieved", "the core has no failed set");
         client().request(wire::SyncPointAchieved{utf8(label)});
     });
 }

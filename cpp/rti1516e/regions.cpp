@@ -11,8 +11,8 @@ namespace hlacore::rti1516e {
 namespace {
 std::uint32_t one_region(RegionHandleSet const& regions) {
     if (regions.size() != 1)
-        raise("RTIinternalError", std::to_string(regions.size()) + " regions are not served yet: the core sends an "
-                                                                   "interaction through one region");
+        not_served(std::to_string(regions.size()) + " regions for an interaction",
+                   "the core sends one through one region");
     return core(*regions.begin());
 }
 }  // namespace
@@ -43,8 +43,8 @@ std::vector<std::pair<wire::Handles, std::uint32_t>> Ambassador::one_region_each
     std::vector<std::pair<wire::Handles, std::uint32_t>> out;
     for (const auto& [attributes, regions] : pairs) {
         if (regions.size() != 1)
-            raise("RTIinternalError", std::to_string(regions.size()) + " regions for attributes are not served yet: "
-                                      "the core associates one region with an attribute of an object");
+            not_served(std::to_string(regions.size()) + " regions for attributes",
+                       "the core associates one region with an attribute of an object");
         region(*regions.begin());
         out.emplace_back(cores(attributes), core(*regions.begin()));
     }
@@ -199,7 +199,7 @@ void Ambassador::subscribeObjectClassAttributesWithRegions(ObjectClassHandle cls
                                                            AttributeHandleSetRegionHandleSetPairVector const& regions,
                                                            bool active, std::wstring const& rate) {
     guarded([&] {
-        if (!rate.empty()) raise("RTIinternalError", "update rates are not served yet: the FOM's are not read");
+        if (!rate.empty()) not_served("update rates", "the FOM's are not read");
         std::lock_guard<std::recursive_mutex> lock(mu_);
         for (const auto& [attributes, set] : regions)
             for (const auto& r : set) {

@@ -8,10 +8,6 @@
 namespace hlacore::rti1516e {
 
 namespace {
-[[noreturn]] void not_served(const char* service, const char* why) {
-    raise("RTIinternalError", std::string(service) + " is not served yet: " + why);
-}
-
 void set_switch(Client& c, wire::AdvisorySwitch which, bool on) {
     c.request(wire::SetAdvisorySwitch{static_cast<std::uint8_t>(which), on});
 }

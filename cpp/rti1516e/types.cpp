@@ -83,6 +83,10 @@ void raise(std::string const& name, std::string const& reason) {
     throw api::RTIinternalError(wide("RTIinternalError: " + name + ": " + reason));
 }
 
+void not_served(std::string const& what, std::string const& why) {
+    raise("RTIinternalError", "hlacore does not serve " + what + " yet: " + why);
+}
+
 void rethrow_as_1516e() {
     try {
         throw;

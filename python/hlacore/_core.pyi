@@ -1230,6 +1230,10 @@ def _message_names() -> list[str]:
     ...
 def _ordering_handle(arg0: typing.SupportsInt | typing.SupportsIndex) -> OrderingHandle:
     ...
+def _retraction_handle(sender: typing.SupportsInt | typing.SupportsIndex, serial: typing.SupportsInt | typing.SupportsIndex) -> typing.Any:
+    """
+    The EventRetractionHandle of `sender`'s message `serial` (for decoding one).
+    """
 def _transportation_handle(arg0: typing.SupportsInt | typing.SupportsIndex) -> TransportationHandle:
     ...
 def client_options() -> list:

@@ -314,6 +314,11 @@ def test_encoded_handles_decode_to_equal_handles(federates: Callable[[], Federat
     assert a.rtia.decodeObjectClassHandle(vehicle.encode()) == vehicle
     with pytest.raises(rti1516e.CouldNotDecode):
         a.rtia.decodeObjectClassHandle(b"\x01")
+    encoded = (3).to_bytes(4, "big") + (70).to_bytes(8, "big")  # federate 3's message 70
+    retraction = a.rtia.decodeMessageRetractionHandle(encoded)
+    assert bytes(retraction.encode()) == encoded and retraction.isValid()
+    with pytest.raises(rti1516e.CouldNotDecode):
+        a.rtia.decodeMessageRetractionHandle(encoded[:4])
 
 
 def test_object_instance_names_are_reserved_before_registration(federates: Callable[[], Federate], rtig: Any) -> None:

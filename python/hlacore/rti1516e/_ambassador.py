@@ -633,8 +633,12 @@ class RTIambassador(Regions):
 
     # ---- decoding handles: decode<Kind>Handle for each kind, added after the class ----
     def decodeMessageRetractionHandle(self, encodedValue: Any) -> MessageRetractionHandle:
-        """Not served yet (raises CouldNotDecode): a retraction handle is used where it was given."""
-        raise x.CouldNotDecode("CouldNotDecode: hlacore does not decode retraction handles yet")
+        """The MessageRetractionHandle ``encode()`` gave these 12 bytes for (the sender's 4, the serial's 8)."""
+        raw = bytes(encodedValue)
+        if len(raw) != 12:
+            raise x.CouldNotDecode(f"CouldNotDecode: a MessageRetractionHandle is 12 bytes, not {len(raw)}")
+        sender, serial = int.from_bytes(raw[:4], "big"), int.from_bytes(raw[4:], "big")
+        return MessageRetractionHandle.wrap(_core._retraction_handle(sender, serial))
 
     # ---- callbacks ----
     def _deliveries(self) -> Delivery:

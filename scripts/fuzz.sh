@@ -57,7 +57,7 @@ mkdir -p build/fuzz
 .venv/bin/cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
     -DHLACORE_FUZZ=ON -DHLACORE_PYTHON=OFF -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" \
     >build/fuzz-configure.log 2>&1 || { cat build/fuzz-configure.log; exit 1; }
-cmake_build build/fuzz "the libFuzzer targets" fuzz_wire fuzz_fed fuzz_omt fuzz_gateway fuzz_datagram fuzz_certi wire_seeds
+cmake_build build/fuzz "the libFuzzer targets" fuzz_wire fuzz_fed fuzz_omt fuzz_json fuzz_gateway fuzz_datagram fuzz_certi wire_seeds
 # A sample frame of every message (the committed seeds are hand-written and may lag the message list).
 rm -rf build/fuzz/seeds-wire && mkdir -p build/fuzz/seeds-wire && build/fuzz/wire_seeds build/fuzz/seeds-wire
 [ "$build_only" = 1 ] && exit 0

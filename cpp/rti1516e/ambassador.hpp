@@ -21,6 +21,7 @@
 
 #include "rti/client/client.hpp"
 #include "rti/client/guarded.hpp"
+#include "rti/wire/json_value.hpp"
 
 // What the library knows of a handle: the friend each handle class names.
 #define HLACORE_HANDLE_FRIEND(Kind)                                                                   \
@@ -123,6 +124,9 @@ private:
     void declare(Declared& table, api::ObjectClassHandle cls, api::AttributeHandleSet const& attributes, bool adding,
                  bool publishing, bool active = true);
     void require_reserved(std::wstring const& name) const;  // ObjectInstanceNameNotReserved
+    // The gateway's status report (support.cpp), and this federate's federation in it.
+    JsonValue report() const;
+    JsonValue federation() const;
     void stop_immediate();
     void deliver(wire::Message& message);
 

@@ -59,13 +59,20 @@ void Ambassador::connect(FederateAmbassador& federate, CallbackModel model, std:
         if (client_) raise("AlreadyConnected", "this ambassador is connected");
         if (model != HLA_EVOKED && model != HLA_IMMEDIATE)
             raise("UnsupportedCallbackModel", std::to_string(static_cast<int>(model)));
-        // "host:port" or "rti://host:port"; empty: $HLACORE_RTIG, else 127.0.0.1:60400 (as hlacore.rti1516e).
+        // "host:port", "rti://host:port" or "rti://host:port/"; empty: $HLACORE_RTIG, else 127.0.0.1:60400 (as
+        // hlacore.rti1516e). A designator that names no address is InvalidLocalSettingsDesignator.
         std::string address = utf8(settings);
         if (address.rfind("rti://", 0) == 0) address = address.substr(6);
+        if (!address.empty() && address.back() == '/') address.pop_back();
         std::map<std::string, std::string> given;
         if (!address.empty()) given["address"] = address;
+        ClientSettings c;
         try {
-            ClientSettings c = client_settings(given);
+            c = client_settings(given);
+        } catch (const RtiError& e) {
+            raise("InvalidLocalSettingsDesignator", e.what());
+        }
+        try {
             client_ = std::make_unique<Client>(c.host, c.port, std::move(c.options));
         } catch (const RtiError& e) {
             raise("ConnectionFailed", e.what());

@@ -49,21 +49,96 @@ double Ambassador::getUpdateRateValue(std::wstring const&) {
 double Ambassador::getUpdateRateValueForAttribute(ObjectInstanceHandle, AttributeHandle) {
     return guarded([]() -> double { not_served("getUpdateRateValueForAttribute", "the FOM's update rates are not read yet"); });
 }
-// These read the gateway's status report, which hlacore.rti1516e serves and this library does not read yet.
+// ---- what the gateway's status report says (asked on this connection: after everything sent before) ----
+
+namespace {
+std::vector<JsonValue> const& list(JsonValue const& v, const char* key) { return v.at(key).items; }
+bool contains(JsonValue const* numbers, double n) {
+    if (!numbers) return false;
+    for (const auto& item : numbers->items)
+        if (item.number == n) return true;
+    return false;
+}
+}  // namespace
+
+JsonValue Ambassador::report() const { return parse_json(client().query_status(0, false)); }
+
+JsonValue Ambassador::federation() const {
+    const double me = client().federate_handle();
+    for (const auto& f : list(report(), "federations"))
+        for (const auto& member : list(f, "federates"))
+            if (member.at("handle").number == me && member.at("name").text == federate_name_) return f;
+    raise("FederateNotExecutionMember", "not in the gateway's report");
+}
+
 void Ambassador::listFederationExecutions() {
-    guarded([] { not_served("listFederationExecutions", "in C++ (hlacore.rti1516e serves it)"); });
+    guarded([&] {
+        FederationExecutionInformationVector found;
+        for (const auto& f : list(report(), "federations")) {
+            const JsonValue* type = f.find("time_type");
+            found.emplace_back(wide(f.at("name").text), wide(type ? type->text : ""));
+        }
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        local_.push_back([found](FederateAmbassador& fa) { fa.reportFederationExecutions(found); });
+    });
 }
+
+// From the gateway's record of the save: NO_SAVE_IN_PROGRESS, FEDERATE_INSTRUCTED_TO_SAVE (this federate:
+// FEDERATE_SAVING after federateSaveBegun), FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE once it completed.
 void Ambassador::queryFederationSaveStatus() {
-    guarded([] { not_served("queryFederationSaveStatus", "in C++ (hlacore.rti1516e serves it)"); });
+    guarded([&] {
+        const JsonValue f = federation();
+        const JsonValue& save = f.at("save_restore");
+        const bool on = save.at("state").text == "saving" || save.at("state").text == "waiting for the save time";
+        const double me = client().federate_handle();
+        FederateHandleSaveStatusPairVector statuses;
+        for (const auto& member : list(f, "federates")) {
+            const double h = member.at("handle").number;
+            SaveStatus status = NO_SAVE_IN_PROGRESS;
+            if (on && contains(save.find("answered"), h)) status = FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE;
+            else if (on && contains(save.find("told"), h)) status = h == me && saving_ ? FEDERATE_SAVING : FEDERATE_INSTRUCTED_TO_SAVE;
+            statuses.emplace_back(handle<FederateHandle>(static_cast<unsigned long long>(h)), status);
+        }
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        local_.push_back([statuses](FederateAmbassador& fa) { fa.federationSaveStatusResponse(statuses); });
+    });
 }
+
+// NO_RESTORE_IN_PROGRESS, FEDERATE_RESTORING, FEDERATE_WAITING_FOR_FEDERATION_TO_RESTORE once it completed; the
+// core keeps each federate's handle across a restore.
 void Ambassador::queryFederationRestoreStatus() {
-    guarded([] { not_served("queryFederationRestoreStatus", "in C++ (hlacore.rti1516e serves it)"); });
+    guarded([&] {
+        const JsonValue f = federation();
+        const JsonValue& restore = f.at("save_restore");
+        FederateRestoreStatusVector statuses;
+        for (const auto& member : list(f, "federates")) {
+            const double h = member.at("handle").number;
+            const auto federate = handle<FederateHandle>(static_cast<unsigned long long>(h));
+            const RestoreStatus status = restore.at("state").text != "restoring" ? NO_RESTORE_IN_PROGRESS
+                                         : contains(restore.find("answered"), h) ? FEDERATE_WAITING_FOR_FEDERATION_TO_RESTORE
+                                                                                 : FEDERATE_RESTORING;
+            statuses.emplace_back(federate, federate, status);
+        }
+        std::lock_guard<std::recursive_mutex> lock(mu_);
+        local_.push_back([statuses](FederateAmbassador& fa) { fa.federationRestoreStatusResponse(statuses); });
+    });
 }
-FederateHandle Ambassador::getFederateHandle(std::wstring const&) {
-    return guarded([]() -> FederateHandle { not_served("getFederateHandle", "in C++ (hlacore.rti1516e serves it)"); });
+
+FederateHandle Ambassador::getFederateHandle(std::wstring const& name) {
+    return guarded([&] {
+        for (const auto& member : list(federation(), "federates"))
+            if (member.at("name").text == utf8(name))
+                return handle<FederateHandle>(static_cast<unsigned long long>(member.at("handle").number));
+        raise("NameNotFound", "no federate named '" + utf8(name) + "' is joined");
+    });
 }
-std::wstring Ambassador::getFederateName(FederateHandle) {
-    return guarded([]() -> std::wstring { not_served("getFederateName", "in C++ (hlacore.rti1516e serves it)"); });
+
+std::wstring Ambassador::getFederateName(FederateHandle federate) {
+    return guarded([&] {
+        for (const auto& member : list(federation(), "federates"))
+            if (member.at("handle").number == core(federate)) return wide(member.at("name").text);
+        raise("FederateHandleNotKnown", "no federate " + std::to_string(core(federate)) + " is joined");
+    });
 }
 
 // ---- automatic resign: the gateway deletes what a vanished federate may delete and divests the rest ----

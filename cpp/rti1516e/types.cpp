@@ -1,6 +1,7 @@
 // The API's value types: the exceptions, variable-length data, the handles, the abstract bases' destructors,
 // and the factory; the core's errors translated into the standard's exceptions.
 #include <RTI/NullFederateAmbassador.h>
+#include <RTI/RTI1516.h>
 #include <RTI/RTIambassadorFactory.h>
 
 #include <codecvt>
@@ -217,7 +218,10 @@ size_t encode_handle(H const& h, bool retraction, unsigned long long value, unsi
 RTI1516E_HANDLE_KINDS(HLACORE_X)
 #undef HLACORE_X
 
-// ---- the abstract bases and the factory ----
+// ---- the RTI's name, the abstract bases and the factory ----
+
+std::wstring api::rtiName() { return L"hlacore"; }
+std::wstring api::rtiVersion() { return L"IEEE 1516.1-2010, hlacore " HLACORE_VERSION; }
 
 api::RTIambassador::~RTIambassador() = default;
 api::FederateAmbassador::~FederateAmbassador() = default;

@@ -90,7 +90,7 @@ def test_handles_enumerations_and_exceptions_have_the_standards_shape() -> None:
     assert (rti1516e.RECEIVE, rti1516e.TIMESTAMP, rti1516e.RELIABLE, rti1516e.BEST_EFFORT) == (1, 2, 1, 2)
     assert rti1516e.NO_ACTION == 5 and rti1516e.CANCEL_THEN_DELETE_THEN_DIVEST == 4
     assert issubclass(rti1516e.NameNotFound, rti1516e.Exception) and issubclass(rti1516e.Exception, Exception)
-    assert len(rti1516e._exceptions.NAMES) == 120
+    assert len(rti1516e._exceptions.NAMES) == 121
     moved = rti1516e._exceptions.translate(_core.ObjectNotKnown("object 7"))
     assert type(moved) is rti1516e.ObjectInstanceNotKnown and str(moved) == "ObjectInstanceNotKnown: object 7"
     assert type(rti1516e._exceptions.translate(_core.GatewayNotResponding("gone"))) is rti1516e.NotConnected

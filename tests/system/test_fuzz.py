@@ -1,5 +1,5 @@
-"""Short runs of the libFuzzer targets of cpp/fuzz (the wire decoder, the .fed parser, the OMT XML reader, a
-gateway session, the gateway's datagram port, hlacore-rtia's decoder of CERTI's protocol), and replays of their seed corpus and of the inputs that once failed
+"""Short runs of the libFuzzer targets of cpp/fuzz (the wire decoder, the .fed parser, the OMT XML reader, the
+JSON reader of the status report, a gateway session, the gateway's datagram port, hlacore-rtia's decoder of CERTI's protocol), and replays of their seed corpus and of the inputs that once failed
 (cpp/fuzz/regressions/).
 
 scripts/test.sh builds the targets (`scripts/fuzz.sh --build-only`, which installs clang when missing) and
@@ -24,11 +24,13 @@ SEEDS = {
     "wire": [FUZZ / "corpus" / "wire"],
     "fed": [FED_DATA / "good", FED_DATA / "bad"],
     "omt": [FUZZ / "corpus" / "omt"],
+    "json": [FUZZ / "corpus" / "json"],
     "gateway": [FUZZ / "corpus" / "wire"],
     "datagram": [FUZZ / "corpus" / "wire"],
     "certi": [FUZZ / "corpus" / "certi"],
 }
-OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"], "omt": [], "gateway": [], "datagram": [], "certi": []}
+OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"], "omt": [], "json": [], "gateway": [], "datagram": [],
+           "certi": []}
 TARGETS = list(SEEDS)
 FAILURE = re.compile(r"ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|deadly signal|SUMMARY:")
 
@@ -47,7 +49,7 @@ def fuzzer(target: str) -> pathlib.Path:
 def seed_dirs(target: str) -> list[pathlib.Path]:
     """The committed seeds, plus for the wire targets a sample frame of every message, which
     scripts/fuzz.sh has wire_seeds write next to the fuzzers."""
-    if target in ("fed", "omt", "certi"):
+    if target in ("fed", "omt", "json", "certi"):
         return SEEDS[target]
     return [*SEEDS[target], fuzzer(target).parent / "seeds-wire"]
 

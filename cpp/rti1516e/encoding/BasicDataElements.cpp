@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <cwchar>
 #include <type_traits>
 
 #include "Octets.h"
@@ -70,7 +71,11 @@ struct UnicodeChar {
     static size_t length(wchar_t) { return 2; }
     static void put(Octets& buffer, wchar_t value) {
         auto code = static_cast<std::uint32_t>(value);
-        if (code > 0xffff) fail(L"HLAunicodeChar: U+" + std::to_wstring(code) + L" is not one UTF-16 unit");
+        if (code > 0xffff) {
+            wchar_t hex[16];
+            std::swprintf(hex, 16, L"%X", static_cast<unsigned>(code));
+            fail(L"HLAunicodeChar: U+" + std::wstring(hex) + L" is not one UTF-16 unit");
+        }
         putBits(buffer, code, 2, true);
     }
     static size_t get(Octets const& buffer, size_t index, wchar_t& value) {

@@ -1,5 +1,5 @@
 // The standard time types' implementation (internal to librti1516e), written once for both: the other operand
-// checked to be of the same class, arithmetic that refuses a result out of range, the 8-byte big-endian
+// checked to be of the same class, the arithmetic, the 8-byte big-endian
 // encoding, and the members of the time, interval and factory classes (HLACORE_TIME_TYPE), which
 // HLAfloat64.cpp and HLAinteger64.cpp instantiate.
 #ifndef HLACORE_RTI1516E_TIME_TIMEVALUE_H
@@ -29,14 +29,28 @@ inline double checked(double result) {
     if (std::isnan(result)) throw rti1516e::IllegalTimeArithmetic(L"the result is not a number");
     return result;
 }
-inline double add(double a, double b) { return checked(a + b); }
-inline double subtract(double a, double b) { return checked(a - b); }
+// A time or an interval moved by an interval. A double that the move would leave where it is (t + i rounds to
+// t) goes to the next double, so that t + i > t for every positive i, as the standard's axioms have it; an
+// integer that would overflow stays at the end of the range (final plus anything is final), as OpenRTI's.
+inline double add(double a, double b) {
+    const double sum = checked(a + b);
+    if (sum != a || b == 0 || !std::isfinite(a)) return sum;
+    return std::nextafter(a, b > 0 ? HUGE_VAL : -HUGE_VAL);
+}
+inline double subtract(double a, double b) { return add(a, -b); }
 inline long long add(long long a, long long b) {
     long long result;
-    if (__builtin_add_overflow(a, b, &result)) throw rti1516e::IllegalTimeArithmetic(L"the sum overflows");
+    if (__builtin_add_overflow(a, b, &result)) return b > 0 ? INT64_MAX : INT64_MIN;
     return result;
 }
 inline long long subtract(long long a, long long b) {
+    long long result;
+    if (__builtin_sub_overflow(a, b, &result)) return b < 0 ? INT64_MAX : INT64_MIN;
+    return result;
+}
+// The interval between two times (setToDifference): one that does not fit is refused.
+inline double difference(double a, double b) { return checked(a - b); }
+inline long long difference(long long a, long long b) {
     long long result;
     if (__builtin_sub_overflow(a, b, &result)) throw rti1516e::IllegalTimeArithmetic(L"the difference overflows");
     return result;
@@ -154,7 +168,7 @@ std::wstring text(V value) {
     HLACORE_TIME_MEMBERS(Interval, LogicalTimeInterval, InvalidLogicalTimeInterval, Name, V, Interval, getInterval,  \
                          setInterval, setZero, isZero, setEpsilon, isEpsilon, Epsilon)                               \
     void Interval::setToDifference(LogicalTime const& minuend, LogicalTime const& subtrahend) {                    \
-        _value = hlacore_rti1516e::subtract(Time(minuend).getTime(), Time(subtrahend).getTime());                  \
+        _value = hlacore_rti1516e::difference(Time(minuend).getTime(), Time(subtrahend).getTime());                  \
     }                                                                                                              \
                                                                                                                    \
     Factory::Factory() {}                                                                                          \

@@ -76,8 +76,8 @@ class RTIambassador(Regions):
 
     # ---- federation management (IEEE 1516.1-2010 §4) ----
     def connect(self, federateAmbassador: Any, callbackModel: Any = "HLA_EVOKED", localSettingsDesignator: str = "") -> None:
-        """Connect to the gateway named by ``localSettingsDesignator`` (``"host:port"``, ``"rti://host:port"``;
-        empty: ``$HLACORE_RTIG`` or 127.0.0.1:60400). With ``"HLA_EVOKED"`` callbacks arrive in
+        """Connect to the gateway named by ``localSettingsDesignator`` (``"host:port"``, ``"rti://host:port"``,
+        ``"rti://host:port/"``; empty: ``$HLACORE_RTIG`` or 127.0.0.1:60400). With ``"HLA_EVOKED"`` callbacks arrive in
         :meth:`evokeCallback` and :meth:`evokeMultipleCallbacks`; with ``"HLA_IMMEDIATE"`` a thread of this
         ambassador's delivers them as they arrive (a callback that raises is reported on stderr)."""
         if self._rti is not None:
@@ -88,6 +88,7 @@ class RTIambassador(Regions):
             raise TypeError("the local settings designator is a str")
         address = localSettingsDesignator.strip()
         address = address[len("rti://"):] if address.startswith("rti://") else address
+        address = address[:-1] if address.endswith("/") else address
         try:
             self._rti = _rti13.RTIAmbassador(address or None, **self._settings)
         except _core.RTIinternalError as error:  # nothing answers, the secret is refused, a setting is wrong

@@ -36,10 +36,14 @@ struct Federate : NullFederateAmbassador {
     int peers = 0;
     int reflections = 0;
     std::wstring reserved;
+    std::map<std::wstring, std::wstring> listed;  // reportFederationExecutions: name -> time type
 
     void announceSynchronizationPoint(std::wstring const&, VariableLengthData const&) override { ++counts["announce"]; }
     void federationSynchronized(std::wstring const&, FederateHandleSet const&) override { ++counts["synchronized"]; }
     void objectInstanceNameReservationSucceeded(std::wstring const& name) override { reserved = name; }
+    void reportFederationExecutions(FederationExecutionInformationVector const& federations) override {
+        for (const auto& f : federations) listed[f.federationExecutionName] = f.logicalTimeImplementationName;
+    }
     void discoverObjectInstance(ObjectInstanceHandle, ObjectClassHandle, std::wstring const&) override {
         ++counts["discover"];
     }
@@ -92,8 +96,10 @@ int main(int argc, char** argv) {
     try {
         RTIambassadorFactory factory;
         std::unique_ptr<RTIambassador> rti = factory.createRTIambassador();
-        rti->connect(fed, HLA_EVOKED, wide(argv[1]));
+        CHECK(raises<InvalidLocalSettingsDesignator>([&] { rti->connect(fed, HLA_EVOKED, L"no address"); }));
+        rti->connect(fed, HLA_EVOKED, L"rti://" + wide(argv[1]) + L"/");
         CHECK(raises<AlreadyConnected>([&] { rti->connect(fed, HLA_EVOKED, wide(argv[1])); }));
+        CHECK(rtiName() == L"hlacore" && rtiVersion().find(L"1516") != std::wstring::npos);
         rti->joinFederationExecution(wide(name), L"test", L"Vehicles");
 
         // Lookups, the standard's exceptions, encodings, times.
@@ -106,10 +112,18 @@ int main(int argc, char** argv) {
         CHECK(rti->decodeAttributeHandle(position.encode()) == position);
         CHECK(raises<CouldNotDecode>([&] { rti->decodeObjectClassHandle(VariableLengthData("ab", 2)); }));
         CHECK(!AttributeHandle().isValid() && position.isValid());
+        const SupplementalReceiveInfo from_handle = rti->getFederateHandle(wide(name));  // implicit, as standard
+        const NameNotFound from_text = std::wstring(L"why");
+        CHECK(from_handle.hasProducingFederate && from_text.what() == L"why");
         CHECK(rti->getTimeFactory()->getName() == L"HLAfloat64Time");
         CHECK(rti->getOrderType(L"TimeStamp") == TIMESTAMP && rti->getTransportationName(RELIABLE) == L"HLAreliable");
         const DimensionHandleSet dims = rti->getAvailableDimensionsForClassAttribute(vehicle, position);
         CHECK(dims.size() == 2 && rti->getDimensionUpperBound(rti->getDimensionHandle(L"X")) == 1000);
+        CHECK(rti->getFederateName(rti->getFederateHandle(wide(name))) == wide(name));
+        CHECK(raises<NameNotFound>([&] { rti->getFederateHandle(L"nobody"); }));
+        rti->listFederationExecutions();
+        until(*rti, [&] { return fed.listed.count(L"Vehicles") > 0; }, "the federations listed");
+        CHECK(fed.listed[L"Vehicles"] == L"HLAfloat64Time");
         CHECK(raises<ObjectInstanceNameNotReserved>([&] { rti->registerObjectInstance(vehicle, wide(name + "-vehicle")); }));
 
         AttributeHandleSet attributes{position};

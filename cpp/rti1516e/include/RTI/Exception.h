@@ -58,6 +58,7 @@ RTI_EXPORT std::wostream& operator<<(std::wostream& stream, Exception const& e);
     X(NoRequestToEnableTimeConstrainedWasPending) \
     X(RequestForTimeRegulationPending) \
     X(NoRequestToEnableTimeRegulationWasPending) \
+    X(NoFederateWillingToAcquireAttribute) \
     X(ErrorReadingFDD) \
     X(FederateAlreadyExecutionMember) \
     X(FederateHasNotBegunSave) \
@@ -146,7 +147,7 @@ RTI_EXPORT std::wostream& operator<<(std::wostream& stream, Exception const& e);
 #define RTI_EXCEPTION(A)                                            \
     class RTI_EXPORT A : public Exception {                          \
     public:                                                         \
-        explicit A(std::wstring const& message) noexcept;           \
+        A(std::wstring const& message) noexcept;                    \
         std::wstring what() const noexcept override;                \
                                                                     \
     private:                                                        \

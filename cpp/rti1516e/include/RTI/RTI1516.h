@@ -17,4 +17,11 @@
 #include <RTI/Typedefs.h>
 #include <RTI/VariableLengthData.h>
 
+#include <string>
+
+namespace rti1516e {
+RTI_EXPORT std::wstring rtiName();     // L"hlacore"
+RTI_EXPORT std::wstring rtiVersion();  // the standard and hlacore's version
+}  // namespace rti1516e
+
 #endif

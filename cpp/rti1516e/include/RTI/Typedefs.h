@@ -48,32 +48,30 @@ public:
 };
 typedef std::vector<FederationExecutionInformation> FederationExecutionInformationVector;
 
-// What a reflection (an interaction: SupplementalReceiveInfo) says of its sender and of the regions it was sent with.
-class RTI_EXPORT SupplementalReflectInfo {
-public:
-    SupplementalReflectInfo() = default;
-    explicit SupplementalReflectInfo(FederateHandle const& theFederateHandle)
-        : hasProducingFederate(true), producingFederate(theFederateHandle) {}
-    explicit SupplementalReflectInfo(RegionHandleSet const& theRegionHandleSet)
-        : hasSentRegions(true), sentRegions(theRegionHandleSet) {}
-    SupplementalReflectInfo(FederateHandle const& theFederateHandle, RegionHandleSet const& theRegionHandleSet)
-        : hasProducingFederate(true), hasSentRegions(true), producingFederate(theFederateHandle),
-          sentRegions(theRegionHandleSet) {}
-    bool hasProducingFederate = false;
-    bool hasSentRegions = false;
-    FederateHandle producingFederate;
-    RegionHandleSet sentRegions;
-};
-class RTI_EXPORT SupplementalReceiveInfo : public SupplementalReflectInfo {
-public:
-    using SupplementalReflectInfo::SupplementalReflectInfo;
-    SupplementalReceiveInfo() = default;
-};
+// What a reflection (SupplementalReflectInfo) or an interaction (SupplementalReceiveInfo) says of its sender
+// and of the regions it was sent with.
+#define RTI1516E_SUPPLEMENTAL_INFO(Class)                                                                     \
+    class RTI_EXPORT Class {                                                                                  \
+    public:                                                                                                   \
+        Class() = default;                                                                                    \
+        Class(FederateHandle const& theFederateHandle)                                                        \
+            : hasProducingFederate(true), producingFederate(theFederateHandle) {}                             \
+        Class(RegionHandleSet const& theRegionHandleSet) : hasSentRegions(true), sentRegions(theRegionHandleSet) {} \
+        Class(FederateHandle const& theFederateHandle, RegionHandleSet const& theRegionHandleSet)             \
+            : hasProducingFederate(true), hasSentRegions(true), producingFederate(theFederateHandle),          \
+              sentRegions(theRegionHandleSet) {}                                                              \
+        bool hasProducingFederate = false;                                                                    \
+        bool hasSentRegions = false;                                                                          \
+        FederateHandle producingFederate;                                                                     \
+        RegionHandleSet sentRegions;                                                                          \
+    };
+RTI1516E_SUPPLEMENTAL_INFO(SupplementalReflectInfo)
+RTI1516E_SUPPLEMENTAL_INFO(SupplementalReceiveInfo)
 
 class RTI_EXPORT SupplementalRemoveInfo {
 public:
     SupplementalRemoveInfo() = default;
-    explicit SupplementalRemoveInfo(FederateHandle const& theFederateHandle)
+    SupplementalRemoveInfo(FederateHandle const& theFederateHandle)
         : hasProducingFederate(true), producingFederate(theFederateHandle) {}
     bool hasProducingFederate = false;
     FederateHandle producingFederate;

@@ -13,7 +13,7 @@ namespace rti1516e {
 
 class RTI_EXPORT EncoderException : public Exception {
 public:
-    explicit EncoderException(std::wstring const& message) noexcept;
+    EncoderException(std::wstring const& message) noexcept;
     std::wstring what() const noexcept override;
 
 private:

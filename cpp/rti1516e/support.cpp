@@ -65,7 +65,8 @@ JsonValue Ambassador::report() const { return parse_json(client().query_status(0
 
 JsonValue Ambassador::federation() const {
     const double me = client().federate_handle();
-    for (const auto& f : list(report(), "federations"))
+    const JsonValue all = report();  // kept: the loops below look into it
+    for (const auto& f : list(all, "federations"))
         for (const auto& member : list(f, "federates"))
             if (member.at("handle").number == me && member.at("name").text == federate_name_) return f;
     raise("FederateNotExecutionMember", "not in the gateway's report");
@@ -74,7 +75,8 @@ JsonValue Ambassador::federation() const {
 void Ambassador::listFederationExecutions() {
     guarded([&] {
         FederationExecutionInformationVector found;
-        for (const auto& f : list(report(), "federations")) {
+        const JsonValue all = report();
+        for (const auto& f : list(all, "federations")) {
             const JsonValue* type = f.find("time_type");
             found.emplace_back(wide(f.at("name").text), wide(type ? type->text : ""));
         }
@@ -126,7 +128,8 @@ void Ambassador::queryFederationRestoreStatus() {
 
 FederateHandle Ambassador::getFederateHandle(std::wstring const& name) {
     return guarded([&] {
-        for (const auto& member : list(federation(), "federates"))
+        const JsonValue f = federation();
+        for (const auto& member : list(f, "federates"))
             if (member.at("name").text == utf8(name))
                 return handle<FederateHandle>(static_cast<unsigned long long>(member.at("handle").number));
         raise("NameNotFound", "no federate named '" + utf8(name) + "' is joined");
@@ -135,7 +138,8 @@ FederateHandle Ambassador::getFederateHandle(std::wstring const& name) {
 
 std::wstring Ambassador::getFederateName(FederateHandle federate) {
     return guarded([&] {
-        for (const auto& member : list(federation(), "federates"))
+        const JsonValue f = federation();
+        for (const auto& member : list(f, "federates"))
             if (member.at("handle").number == core(federate)) return wide(member.at("name").text);
         raise("FederateHandleNotKnown", "no federate " + std::to_string(core(federate)) + " is joined");
     });

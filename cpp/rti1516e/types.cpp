@@ -221,7 +221,7 @@ RTI1516E_HANDLE_KINDS(HLACORE_X)
 // ---- the RTI's name, the abstract bases and the factory ----
 
 std::wstring api::rtiName() { return L"hlacore"; }
-std::wstring api::rtiVersion() { return L"IEEE 1516.1-2010, hlacore " HLACORE_VERSION; }
+std::wstring api::rtiVersion() { return hlacore::rti1516e::wide("IEEE 1516.1-2010, hlacore " HLACORE_VERSION); }
 
 api::RTIambassador::~RTIambassador() = default;
 api::FederateAmbassador::~FederateAmbassador() = default;

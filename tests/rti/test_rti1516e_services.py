@@ -123,9 +123,9 @@ class World:
 def support(a: Federate, b: Federate) -> World:
     w = World(a)
     c = a.call
-    assert c.getObjectClassName(w.vehicle) == "HLAobjectRoot.Vehicle"
+    assert c.getObjectClassName(w.vehicle) == "Vehicle"
     assert c.getAttributeName(w.vehicle, w.speed) == "speed"
-    assert c.getInteractionClassName(w.command) == "HLAinteractionRoot.Command"
+    assert c.getInteractionClassName(w.command) == "Command"
     assert c.getParameterName(w.command, w.verb) == "verb"
     with pytest.raises(rti1516e.NameNotFound):
         c.getObjectClassHandle("Spaceship")
@@ -190,11 +190,13 @@ def objects(a: Federate, b: Federate, w: World) -> None:
     a.rtia.reserveObjectInstanceName("spare")
     a.wait("objectInstanceNameReservationSucceeded", "spare")
     a.call.releaseObjectInstanceName("spare")
+    a.settle()  # the gateway has the release before b asks
     b.rtia.reserveObjectInstanceName("spare")
     b.wait("objectInstanceNameReservationSucceeded", "spare")
     a.call.reserveMultipleObjectInstanceName(["m1", "m2"])
     a.wait("multipleObjectInstanceNameReservationSucceeded", {"m1", "m2"})
     a.call.releaseMultipleObjectInstanceName(["m1", "m2"])
+    a.settle()
     b.rtia.reserveMultipleObjectInstanceName(["m1", "m2"])
     b.wait("multipleObjectInstanceNameReservationSucceeded", {"m1", "m2"})
 
@@ -203,6 +205,7 @@ def objects(a: Federate, b: Federate, w: World) -> None:
     assert a.call.sendInteraction(w.command, {w.verb: b"go"}, b"t2") is None
     b.wait("receiveInteraction", w.command, {w.verb: b"go"}, b"t2", rti1516e.RECEIVE, rti1516e.RELIABLE)
     b.call.unsubscribeObjectClassAttributes(w.vehicle, [w.speed])
+    b.settle()  # the gateway has it before a's update
     a.rtia.updateAttributeValues(v1, {w.speed: b"hidden", w.position: b"shown"}, b"")
     b.wait("reflectAttributeValues", v1, {w.position: b"shown"})
     b.rtia.subscribeObjectClassAttributes(w.vehicle, [w.speed])
@@ -274,6 +277,7 @@ def time_management(a: Federate, b: Federate, w: World) -> None:
     assert (b.call.queryGALT(), b.call.queryLogicalTime(), b.call.queryLITS()) == (8.0, 7.0, 8.0)
 
     h9 = a.rtia.updateAttributeValues(v1, {w.position: b"p9"}, b"", 9.0)
+    a.settle()  # queued for b before b flushes
     b.call.flushQueueRequest(20.0)
     b.until(lambda: len(b.amb.named("timeAdvanceGrant")) == 5, "the flush's grant")
     b.wait("reflectAttributeValues", v1, {w.position: b"p9"}, b"", *tso, rti1516e.RELIABLE, 9.0, *tso, h9)
@@ -349,6 +353,7 @@ def regions(a: Federate, b: Federate, w: World) -> None:
     b.call.commitRegionModifications({wanted})
     b.call.subscribeObjectClassAttributesWithRegions(w.vehicle, [({w.position}, {wanted})])
     b.call.subscribeInteractionClassWithRegions(w.command, {wanted})
+    b.settle()  # the gateway has b's subscriptions before a's updates
 
     far, near = a.rtia.createRegion({w.x, w.y}), a.rtia.createRegion({w.x})
     a.rtia.setRangeBounds(far, w.x, (500, 600))
@@ -388,6 +393,7 @@ def regions(a: Federate, b: Federate, w: World) -> None:
     in_scope = len(b.amb.named("attributesInScope"))
     a.rtia.setRangeBounds(near, w.x, (50, 60))
     a.rtia.commitRegionModifications([near])
+    a.settle()  # the gateway has the commit before b's request
     b.call.requestAttributeValueUpdateWithRegions(w.vehicle, [({w.position}, {wanted})], b"")
     a.wait("provideAttributeValueUpdate", d2, {w.position})
     a.settle()

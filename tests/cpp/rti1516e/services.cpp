@@ -217,11 +217,9 @@ struct Federate {
     bool evoked = true;
 };
 
-std::vector<Federate*> everyone;  // for the events shown when a check fails
-bool finished = false;
+std::vector<Federate*> everyone;  // for the events shown when a check fails (CHECK exits)
 
 void show_events() {
-    if (finished) return;
     for (Federate* f : everyone) {
         std::lock_guard<std::mutex> lock(f->rec.mu);
         const auto& e = f->rec.events;
@@ -293,6 +291,10 @@ struct World {
     ObjectInstanceHandle v1, v2, v3, v4;
 };
 
+// The supplemental information of what a sent: C++ names the producing federate of every message (Python
+// only of timestamped ones).
+std::wstring from(World const& w) { return L"from " + w.ha.toString(); }
+
 // ---- federation management: connecting, creating, joining (§4.2-4.9) ----
 void connect_create_join(World& w, std::wstring const& vehicles, std::wstring const& cars) {
     Federate& a = w.a;
@@ -321,7 +323,7 @@ void connect_create_join(World& w, std::wstring const& vehicles, std::wstring co
 void support(World& w) {
     Federate& a = w.a;
     w.vehicle = CALL(a, getObjectClassHandle, L"Vehicle");
-    CHECK(CALL(a, getObjectClassName, w.vehicle) == L"HLAobjectRoot.Vehicle");
+    CHECK(CALL(a, getObjectClassName, w.vehicle) == L"Vehicle");
     w.car = a.rti->getObjectClassHandle(L"HLAobjectRoot.Vehicle.Car");  // from the second module
     CHECK(raises<NameNotFound>([&] { a.rti->getObjectClassHandle(L"Spaceship"); }));
     w.position = CALL(a, getAttributeHandle, w.vehicle, L"position");
@@ -329,7 +331,7 @@ void support(World& w) {
     w.doors = a.rti->getAttributeHandle(w.car, L"doors");
     CHECK(CALL(a, getAttributeName, w.vehicle, w.speed) == L"speed");
     w.command = CALL(a, getInteractionClassHandle, L"Command");
-    CHECK(CALL(a, getInteractionClassName, w.command) == L"HLAinteractionRoot.Command");
+    CHECK(CALL(a, getInteractionClassName, w.command) == L"Command");
     w.verb = CALL(a, getParameterHandle, w.command, L"verb");
     CHECK(CALL(a, getParameterName, w.command, w.verb) == L"verb");
     CHECK(CALL(a, getOrderType, L"TimeStamp") == TIMESTAMP && CALL(a, getOrderName, RECEIVE) == L"Receive");
@@ -411,6 +413,7 @@ void objects(World& w) {
     settle({&a});
     CHECK(a.rec.has("objectInstanceNameReservationSucceeded", L"spare"));
     CALL(a, releaseObjectInstanceName, L"spare");
+    settle({&a});  // the gateway has the release before b asks
     CHECK(raises<ObjectInstanceNameNotReserved>([&] { a.rti->registerObjectInstance(w.vehicle, L"spare"); }));
     b.rti->reserveObjectInstanceName(L"spare");
     await(b, "objectInstanceNameReservationSucceeded", L"spare");
@@ -420,18 +423,20 @@ void objects(World& w) {
     b.rti->reserveMultipleObjectInstanceName(several);
     await(b, "multipleObjectInstanceNameReservationFailed", text(several));
     CALL(a, releaseMultipleObjectInstanceName, several);
+    settle({&a});
     b.rti->reserveMultipleObjectInstanceName(several);
     await(b, "multipleObjectInstanceNameReservationSucceeded", text(several));
     CHECK(raises<NameSetWasEmpty>([&] { a.rti->reserveMultipleObjectInstanceName({}); }));
 
     // Values and interactions in receive order, with the tag; an attribute b stopped subscribing is not sent.
     CALL(a, updateAttributeValues, w.v1, AttributeHandleValueMap{{w.speed, data("fast")}}, data("t1"));
-    await(b, "reflectAttributeValues", text(w.v1, L"{" + fast + L"}", L"t1", RECEIVE, RELIABLE) + L"|-");
+    await(b, "reflectAttributeValues", text(w.v1, L"{" + fast + L"}", L"t1", RECEIVE, RELIABLE) + L"|" + from(w));
     CALL(a, sendInteraction, w.command, ParameterHandleValueMap{{w.verb, data("go")}}, data("t2"));
-    await(b, "receiveInteraction", text(w.command, L"{" + text(w.verb) + L"=go}", L"t2", RECEIVE, RELIABLE) + L"|-");
+    await(b, "receiveInteraction", text(w.command, L"{" + text(w.verb) + L"=go}", L"t2", RECEIVE, RELIABLE) + L"|" + from(w));
     CALL(b, unsubscribeObjectClassAttributes, w.vehicle, {w.speed});
+    settle({&b});  // the gateway has it before a's update
     a.rti->updateAttributeValues(w.v1, {{w.speed, data("hidden")}, {w.position, data("shown")}}, data(""));
-    await(b, "reflectAttributeValues", text(w.v1, L"{" + text(w.position) + L"=shown}", L"", RECEIVE, RELIABLE) + L"|-");
+    await(b, "reflectAttributeValues", text(w.v1, L"{" + text(w.position) + L"=shown}", L"", RECEIVE, RELIABLE) + L"|" + from(w));
     b.rti->subscribeObjectClassAttributes(w.vehicle, {w.speed});
 
     // Update requests, of an object and of a class, reach the owner.
@@ -444,7 +449,7 @@ void objects(World& w) {
     CALL(a, requestAttributeTransportationTypeChange, w.v1, AttributeHandleSet{w.speed}, BEST_EFFORT);
     await(a, "confirmAttributeTransportationTypeChange", text(w.v1, AttributeHandleSet{w.speed}, BEST_EFFORT));
     a.rti->updateAttributeValues(w.v1, {{w.speed, data("fast")}}, data("t3"));
-    await(b, "reflectAttributeValues", text(w.v1, L"{" + fast + L"}", L"t3", RECEIVE, BEST_EFFORT) + L"|-");
+    await(b, "reflectAttributeValues", text(w.v1, L"{" + fast + L"}", L"t3", RECEIVE, BEST_EFFORT) + L"|" + from(w));
     CALL(a, requestInteractionTransportationTypeChange, w.command, RELIABLE);
     await(a, "confirmInteractionTransportationTypeChange", text(w.command, RELIABLE));
     CHECK(raises<InvalidTransportationType>(
@@ -454,7 +459,7 @@ void objects(World& w) {
 
     // Deleting: everywhere with a tag, or here only.
     CALL(a, deleteObjectInstance, w.v2, data("bye"));
-    await(b, "removeObjectInstance", text(w.v2, L"bye", RECEIVE) + L"|-");
+    await(b, "removeObjectInstance", text(w.v2, L"bye", RECEIVE) + L"|" + from(w));
     CALL(b, localDeleteObjectInstance, w.v3);
     CHECK(raises<ObjectInstanceNotKnown>([&] { b.rti->getObjectInstanceName(w.v3); }));
     CHECK(a.rti->getObjectInstanceName(w.v3).size() > 0);
@@ -464,7 +469,7 @@ void objects(World& w) {
 void time_management(World& w) {
     Federate& a = w.a;
     Federate& b = w.b;
-    const auto tso = [&](double t, MessageRetractionHandle h) { return text(at(t), TIMESTAMP, h, L"from " + w.ha.toString()); };
+    const auto tso = [&](double t, MessageRetractionHandle h) { return text(at(t), TIMESTAMP, h, from(w)); };
     const auto value = [](auto h, const char* v) { return L"{" + text(h) + L"=" + wide(v) + L"}"; };
     CALL(a, enableTimeRegulation, HLAfloat64Interval(1.0));
     await(a, "timeRegulationEnabled", at(0).toString());
@@ -493,7 +498,7 @@ void time_management(World& w) {
     // Receive-order messages reach a constrained federate between advances only with asynchronous delivery.
     CALL(b, enableAsynchronousDelivery);
     CHECK(raises<AsynchronousDeliveryAlreadyEnabled>([&] { b.rti->enableAsynchronousDelivery(); }));
-    await(b, "receiveInteraction", text(w.command, value(w.verb, "ro"), L"", RECEIVE, RELIABLE, L"-"));
+    await(b, "receiveInteraction", text(w.command, value(w.verb, "ro"), L"", RECEIVE, RELIABLE, from(w)));
     CALL(b, disableAsynchronousDelivery);
     CHECK(raises<AsynchronousDeliveryAlreadyDisabled>([&] { b.rti->disableAsynchronousDelivery(); }));
 
@@ -521,6 +526,7 @@ void time_management(World& w) {
 
     // Flushing delivers what is queued (a's update at 9) at once; a's retraction then reaches b as a request.
     const auto h9 = a.rti->updateAttributeValues(w.v1, {{w.position, data("p9")}}, data(""), at(9));
+    settle({&a});  // queued for b before b flushes
     CALL(b, flushQueueRequest, at(20));
     until({&b}, [&] { return b.rec.count("timeAdvanceGrant") == 5; }, "the flush's grant");
     CHECK(b.rec.has("reflectAttributeValues", text(w.v1, value(w.position, "p9"), L"", TIMESTAMP, RELIABLE) + L"|" + tso(9, h9)));
@@ -533,7 +539,7 @@ void time_management(World& w) {
     a.rti->timeAdvanceRequest(at(9));
     b.rti->timeAdvanceRequest(at(10));
     await(b, "timeAdvanceGrant", at(10).toString());
-    CHECK(b.rec.has("removeObjectInstance", text(w.v4, L"late", TIMESTAMP, at(10), TIMESTAMP, h10, L"from " + w.ha.toString())));
+    CHECK(b.rec.has("removeObjectInstance", text(w.v4, L"late", TIMESTAMP, at(10), TIMESTAMP, h10, from(w))));
     CHECK(CALL(a, decodeMessageRetractionHandle, h10.encode()) == h10);
 
     CALL(a, disableTimeRegulation);
@@ -612,6 +618,7 @@ void regions(World& w) {
     CALL(b, commitRegionModifications, RegionHandleSet{wanted});
     CALL(b, subscribeObjectClassAttributesWithRegions, w.vehicle, in(position, {wanted}));
     CALL(b, subscribeInteractionClassWithRegions, w.command, RegionHandleSet{wanted});
+    settle({&b});  // the gateway has b's subscriptions before a's updates
 
     const RegionHandle far = a.rti->createRegion({w.x, w.y});
     const RegionHandle near = a.rti->createRegion({w.x});
@@ -651,8 +658,8 @@ void regions(World& w) {
             if (r.find(reflected(v)) != std::wstring::npos) got.push_back(wide(v));
     }
     CHECK((got == std::vector<std::wstring>{L"near-2", L"near-1", L"free"}));
-    CHECK(b.rec.has("receiveInteraction", text(w.command, L"{" + text(w.verb) + L"=near}", L"", RECEIVE, RELIABLE, L"-")));
-    CHECK(!b.rec.has("receiveInteraction", text(w.command, L"{" + text(w.verb) + L"=far}", L"", RECEIVE, RELIABLE, L"-")));
+    CHECK(b.rec.has("receiveInteraction", text(w.command, L"{" + text(w.verb) + L"=near}", L"", RECEIVE, RELIABLE, from(w))));
+    CHECK(!b.rec.has("receiveInteraction", text(w.command, L"{" + text(w.verb) + L"=far}", L"", RECEIVE, RELIABLE, from(w))));
     CHECK(b.rec.has("attributesInScope", text(d2, position)) && b.rec.has("attributesOutOfScope", text(d2, position)));
     CHECK(!a.rec.has("turnUpdatesOnForObjectInstance", text(d2, position)));
 
@@ -661,6 +668,7 @@ void regions(World& w) {
     const size_t in_scope = b.rec.count("attributesInScope");
     a.rti->setRangeBounds(near, w.x, RangeBounds(50, 60));
     a.rti->commitRegionModifications({near});
+    settle({&a});  // the gateway has the commit before b's request
     CALL(b, requestAttributeValueUpdateWithRegions, w.vehicle, in(position, {wanted}), data(""));
     await(a, "provideAttributeValueUpdate", text(d2, position, L""));
     settle({&a, &b});
@@ -849,9 +857,11 @@ int main(int argc, char** argv) {
         finish(w);
     } catch (Exception const& e) {
         std::wcerr << L"unexpected " << e.what() << std::endl;
+        show_events();
+        everyone.clear();  // w goes before the exit handlers run
         return 1;
     }
-    finished = true;
+    everyone.clear();
     for (int i = 0; i < kEntries; ++i)
         if (!called.count(i)) std::fprintf(stderr, "not called: entry %d, %s\n", i, kNames[i]);
     std::printf("called %zu services\n", called.size());

@@ -6,20 +6,10 @@ header and not called fails here)."""
 from __future__ import annotations
 
 import os
-import re
 import subprocess
 
-from support import ROOT, RtigProcess
-from test_rti1516e_cpp import CARS, VEHICLES, program
-
-HEADER = ROOT / "cpp" / "rti1516e" / "include" / "RTI" / "RTIambassador.h"
-
-
-def service_entries() -> list[str]:
-    """The name of each entry of RTI1516E_SERVICES in RTIambassador.h, overloads each once, in order."""
-    text = HEADER.read_text()
-    body = text[text.index("#define RTI1516E_SERVICES(X)"):text.index("class RTI_EXPORT RTIambassador")]
-    return re.findall(r"\bX\((?:[^,()]|<[^>]*>)+,\s*(\w+),", body)
+from support import RtigProcess
+from support.rti1516e import CARS, VEHICLES, program, service_entries
 
 
 def test_the_header_lists_151_entries_of_140_names() -> None:

@@ -13,8 +13,7 @@ import pytest
 
 import hlacore.rti1516e as rti1516e
 from support import RtigProcess
-from test_rti1516e import CARS, VEHICLES, Recorder
-from test_rti1516e_cpp_services import service_entries
+from support.rti1516e import CARS, VEHICLES, Recorder, service_entries
 
 NOT_SERVED = "hlacore does not serve"
 

@@ -12,25 +12,8 @@ import pytest
 import hlacore.rti as rti
 import hlacore.rti1516e as rti1516e
 from hlacore import _core
-from support import ROOT, RtigProcess
-
-DATA = ROOT / "tests" / "data" / "rti1516e"
-VEHICLES, CARS = str(DATA / "vehicles.xml"), str(DATA / "cars.xml")
-
-
-class Recorder:
-    """A federate ambassador that records every callback: (name, args) in order."""
-
-    def __init__(self) -> None:
-        self.calls: list[tuple[str, tuple[Any, ...]]] = []
-
-    def __getattr__(self, name: str) -> Callable[..., None]:
-        if name.startswith("_"):
-            raise AttributeError(name)
-        return lambda *args: self.calls.append((name, args))
-
-    def named(self, name: str) -> list[tuple[Any, ...]]:
-        return [args for n, args in self.calls if n == name]
+from support import RtigProcess
+from support.rti1516e import CARS, VEHICLES, Recorder
 
 
 class Federate:

@@ -1,0 +1,44 @@
+"""What the IEEE 1516-2010 service tests share: the FOM modules of tests/data/rti1516e, the C++ test programs
+of tests/cpp/rti1516e, the service entries of the C++ header, and a recording federate ambassador."""
+
+from __future__ import annotations
+
+import os
+import pathlib
+import re
+from typing import Any, Callable
+
+from . import ROOT
+
+DATA = ROOT / "tests" / "data" / "rti1516e"
+VEHICLES, CARS = str(DATA / "vehicles.xml"), str(DATA / "cars.xml")
+HEADER = ROOT / "cpp" / "rti1516e" / "include" / "RTI" / "RTIambassador.h"
+
+
+def program(name: str) -> str:
+    """A C++ test program of tests/cpp/rti1516e ($HLACORE_TEST_RTI1516E_DIR, else build/rti1516e-tests)."""
+    folder = pathlib.Path(os.environ.get("HLACORE_TEST_RTI1516E_DIR", ROOT / "build" / "rti1516e-tests"))
+    assert (folder / name).exists(), f"{folder / name} is missing: ./scripts/test.sh builds it"
+    return str(folder / name)
+
+
+def service_entries() -> list[str]:
+    """The name of each entry of RTI1516E_SERVICES in RTIambassador.h, overloads each once, in order."""
+    text = HEADER.read_text()
+    body = text[text.index("#define RTI1516E_SERVICES(X)"):text.index("class RTI_EXPORT RTIambassador")]
+    return re.findall(r"\bX\((?:[^,()]|<[^>]*>)+,\s*(\w+),", body)
+
+
+class Recorder:
+    """A federate ambassador that records every callback: (name, args) in order."""
+
+    def __init__(self) -> None:
+        self.calls: list[tuple[str, tuple[Any, ...]]] = []
+
+    def __getattr__(self, name: str) -> Callable[..., None]:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        return lambda *args: self.calls.append((name, args))
+
+    def named(self, name: str) -> list[tuple[Any, ...]]:
+        return [args for n, args in self.calls if n == name]

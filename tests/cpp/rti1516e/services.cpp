@@ -1,7 +1,7 @@
 // Every service of the IEEE 1516-2010 C++ API (each entry of RTI1516E_SERVICES, overloads apart) called at
 // least once through a gateway, each with an asserted outcome: the callbacks it brings with their arguments,
 // what it returns, a state seen later, or the exception it must raise (a bad argument's, or RTIinternalError
-// "not served yet" for what hlacore does not serve). Two evoked federates in an HLAfloat64Time federation,
+// "hlacore does not serve ... yet" for what it does not serve). Two evoked federates in an HLAfloat64Time federation,
 // and an HLA_IMMEDIATE one in an HLAinteger64Time federation.
 // Usage: rti1516e_services VEHICLES_XML CARS_XML [ADDRESS] (no address: $HLACORE_RTIG). Prints
 // "called N services", N the entries called; tests/rti/test_rti1516e_cpp_services.py runs it.
@@ -88,11 +88,26 @@ std::wstring show(std::map<K, VariableLengthData> const& values) {
     for (auto const& [h, v] : values) out += (out.size() > 1 ? L"," : L"") + show(h) + L"=" + show(v);
     return out + L"}";
 }
-std::wstring show(SupplementalReflectInfo const& info) {
+template <class Info>  // the supplemental information of a reflection, an interaction or a removal
+auto show(Info const& info) -> decltype(info.producingFederate, std::wstring()) {
     return info.hasProducingFederate ? L"from " + info.producingFederate.toString() : L"-";
 }
-std::wstring show(SupplementalRemoveInfo const& info) {
-    return info.hasProducingFederate ? L"from " + info.producingFederate.toString() : L"-";
+// The status services' answers: each federation's name and time type; each federate's save or restore status.
+std::wstring show(FederationExecutionInformationVector const& federations) {
+    std::wstring out;
+    for (auto const& f : federations) out += f.federationExecutionName + L":" + f.logicalTimeImplementationName + L";";
+    return out;
+}
+std::wstring show(FederateHandleSaveStatusPairVector const& statuses) {
+    std::wstring out;
+    for (auto const& [h, status] : statuses) out += h.toString() + L"=" + std::to_wstring(status) + L";";
+    return out;
+}
+std::wstring show(FederateRestoreStatusVector const& statuses) {
+    std::wstring out;
+    for (auto const& s : statuses)
+        out += s.preRestoreHandle.toString() + L">" + s.postRestoreHandle.toString() + L"=" + std::to_wstring(s.status) + L";";
+    return out;
 }
 template <class... A>
 std::wstring text(A const&... args) {
@@ -142,6 +157,9 @@ struct Recorder : NullFederateAmbassador {
 #define RECORD(name, params, ...) \
     void name params override { note(#name, __VA_ARGS__); }
     RECORD(connectionLost, (std::wstring const& fault), fault)
+    RECORD(reportFederationExecutions, (FederationExecutionInformationVector const& federations), federations)
+    RECORD(federationSaveStatusResponse, (FederateHandleSaveStatusPairVector const& statuses), statuses)
+    RECORD(federationRestoreStatusResponse, (FederateRestoreStatusVector const& statuses), statuses)
     RECORD(synchronizationPointRegistrationSucceeded, (std::wstring const& label), label)
     RECORD(synchronizationPointRegistrationFailed, (std::wstring const& label, SynchronizationPointFailureReason r),
            label, r)
@@ -259,7 +277,7 @@ bool raises(std::function<void()> call, std::wstring const& says = L"") {
     }
     return false;
 }
-bool not_served(std::function<void()> call) { return raises<RTIinternalError>(call, L"not served yet"); }
+bool not_served(std::function<void()> call) { return raises<RTIinternalError>(call, L"hlacore does not serve"); }
 
 // Everything the gateway had sent to each federate before now, delivered: a round trip each (a request
 // with an answer, whose answer comes after what the gateway sent before it), in order, then its callbacks.
@@ -312,7 +330,8 @@ void connect_create_join(World& w, std::wstring const& vehicles, std::wstring co
     CHECK(raises<FederationExecutionAlreadyExists>([&] { a.rti->createFederationExecution(L"WithMIM", cars); }));
     CALL(a, destroyFederationExecution, L"WithMIM");
     CHECK(raises<FederationExecutionDoesNotExist>([&] { a.rti->destroyFederationExecution(L"WithMIM"); }));
-    CHECK(not_served([&] { CALL(a, listFederationExecutions); }));
+    CALL(a, listFederationExecutions);
+    await(a, "reportFederationExecutions", L"Services:HLAfloat64Time;");
     w.ha = CALL(a, joinFederationExecution, L"a", L"test", L"Services");
     w.hb = b.rti->joinFederationExecution(L"b", L"test", L"Services");
     CHECK(w.ha.isValid() && w.hb.isValid() && w.ha != w.hb);
@@ -357,8 +376,10 @@ void support(World& w) {
     CHECK(a.rti->getAutomaticResignDirective() == CANCEL_THEN_DELETE_THEN_DIVEST);
     CHECK(not_served([&] { CALL(a, getUpdateRateValue, L"HLAfast"); }));
     CHECK(not_served([&] { CALL(a, getUpdateRateValueForAttribute, ObjectInstanceHandle(), w.speed); }));
-    CHECK(not_served([&] { CALL(a, getFederateHandle, L"b"); }));
-    CHECK(not_served([&] { CALL(a, getFederateName, w.hb); }));
+    CHECK(CALL(a, getFederateHandle, L"b") == w.hb && CALL(a, getFederateName, w.hb) == L"b");
+    CHECK(raises<NameNotFound>([&] { a.rti->getFederateHandle(L"nobody"); }));
+    const FederateHandle absent = a.rti->decodeFederateHandle(VariableLengthData("\0\0\0\x63", 4));
+    CHECK(raises<FederateHandleNotKnown>([&] { a.rti->getFederateName(absent); }));
     auto factory = CALL(a, getTimeFactory);
     CHECK(factory->getName() == L"HLAfloat64Time" && factory->makeInitial()->toString() == at(0).toString());
 }
@@ -723,11 +744,13 @@ void sync_save_restore(World& w) {
     }
     both("federationSaved", L"");
     CHECK(not_served([&] { CALL(a, abortFederationSave); }));
-    CHECK(not_served([&] { CALL(a, queryFederationSaveStatus); }));
     CALL(a, requestFederationSave, L"s2", at(50));
     both("initiateFederateSave", L"s2");
     a.rti->federateSaveBegun();
     a.rti->federateSaveComplete();
+    CALL(a, queryFederationSaveStatus);  // a has saved, b is told to
+    await(a, "federationSaveStatusResponse", w.ha.toString() + L"=" + std::to_wstring(FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE) +
+                                                 L";" + w.hb.toString() + L"=" + std::to_wstring(FEDERATE_INSTRUCTED_TO_SAVE) + L";");
     b.rti->federateSaveBegun();
     CALL(b, federateSaveNotComplete);
     both("federationNotSaved", text(RTI_UNABLE_TO_SAVE));
@@ -744,11 +767,15 @@ void sync_save_restore(World& w) {
     b.rti->federateRestoreComplete();
     both("federationRestored", L"");
     CHECK(not_served([&] { CALL(a, abortFederationRestore); }));
-    CHECK(not_served([&] { CALL(a, queryFederationRestoreStatus); }));
     a.rti->requestFederationRestore(L"s1");
     until({&a, &b}, [&] { return a.rec.count("initiateFederateRestore") == 2 && b.rec.count("initiateFederateRestore") == 2; },
           "the second restore");
     a.rti->federateRestoreComplete();
+    CALL(a, queryFederationRestoreStatus);  // a has restored, b is restoring
+    const std::wstring ha = w.ha.toString(), hb = w.hb.toString();
+    await(a, "federationRestoreStatusResponse",
+          ha + L">" + ha + L"=" + std::to_wstring(FEDERATE_WAITING_FOR_FEDERATION_TO_RESTORE) + L";" + hb + L">" + hb +
+              L"=" + std::to_wstring(FEDERATE_RESTORING) + L";");
     CALL(b, federateRestoreNotComplete);
     both("federationNotRestored", text(RTI_UNABLE_TO_RESTORE));
 }

@@ -127,6 +127,8 @@ private:
     // The gateway's status report (support.cpp), and this federate's federation in it.
     JsonValue report() const;
     JsonValue federation() const;
+    template <class Status, class Answer>
+    void answer_statuses(Status status, Answer answer);
     void stop_immediate();
     void deliver(wire::Message& message);
 

@@ -85,24 +85,35 @@ void Ambassador::listFederationExecutions() {
     });
 }
 
-// From the gateway's record of the save: NO_SAVE_IN_PROGRESS, FEDERATE_INSTRUCTED_TO_SAVE (this federate:
-// FEDERATE_SAVING after federateSaveBegun), FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE once it completed.
+// Each federate's save or restore status, `status(h)` from the gateway's record of the run (`run`): the answer
+// the ambassador gets, as a callback of this layer's own.
+template <class Status, class Answer>
+void Ambassador::answer_statuses(Status status, Answer answer) {
+    const JsonValue f = federation();
+    const JsonValue& run = f.at("save_restore");
+    std::vector<decltype(status(run, 0.0))> statuses;
+    for (const auto& member : list(f, "federates")) statuses.push_back(status(run, member.at("handle").number));
+    std::lock_guard<std::recursive_mutex> lock(mu_);
+    local_.push_back([statuses, answer](FederateAmbassador& fa) { answer(fa, statuses); });
+}
+
+// NO_SAVE_IN_PROGRESS, FEDERATE_INSTRUCTED_TO_SAVE (this federate: FEDERATE_SAVING after federateSaveBegun),
+// FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE once it completed.
 void Ambassador::queryFederationSaveStatus() {
     guarded([&] {
-        const JsonValue f = federation();
-        const JsonValue& save = f.at("save_restore");
-        const bool on = save.at("state").text == "saving" || save.at("state").text == "waiting for the save time";
         const double me = client().federate_handle();
-        FederateHandleSaveStatusPairVector statuses;
-        for (const auto& member : list(f, "federates")) {
-            const double h = member.at("handle").number;
-            SaveStatus status = NO_SAVE_IN_PROGRESS;
-            if (on && contains(save.find("answered"), h)) status = FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE;
-            else if (on && contains(save.find("told"), h)) status = h == me && saving_ ? FEDERATE_SAVING : FEDERATE_INSTRUCTED_TO_SAVE;
-            statuses.emplace_back(handle<FederateHandle>(static_cast<unsigned long long>(h)), status);
-        }
-        std::lock_guard<std::recursive_mutex> lock(mu_);
-        local_.push_back([statuses](FederateAmbassador& fa) { fa.federationSaveStatusResponse(statuses); });
+        answer_statuses(
+            [&](JsonValue const& save, double h) {
+                const auto state = save.at("state").text;
+                SaveStatus status = NO_SAVE_IN_PROGRESS;
+                if (state == "saving" || state == "waiting for the save time") {
+                    if (contains(save.find("answered"), h)) status = FEDERATE_WAITING_FOR_FEDERATION_TO_SAVE;
+                    else if (contains(save.find("told"), h))
+                        status = h == me && saving_ ? FEDERATE_SAVING : FEDERATE_INSTRUCTED_TO_SAVE;
+                }
+                return FederateHandleSaveStatusPair(handle<FederateHandle>(static_cast<unsigned long long>(h)), status);
+            },
+            [](FederateAmbassador& fa, FederateHandleSaveStatusPairVector const& s) { fa.federationSaveStatusResponse(s); });
     });
 }
 
@@ -110,19 +121,16 @@ void Ambassador::queryFederationSaveStatus() {
 // core keeps each federate's handle across a restore.
 void Ambassador::queryFederationRestoreStatus() {
     guarded([&] {
-        const JsonValue f = federation();
-        const JsonValue& restore = f.at("save_restore");
-        FederateRestoreStatusVector statuses;
-        for (const auto& member : list(f, "federates")) {
-            const double h = member.at("handle").number;
-            const auto federate = handle<FederateHandle>(static_cast<unsigned long long>(h));
-            const RestoreStatus status = restore.at("state").text != "restoring" ? NO_RESTORE_IN_PROGRESS
-                                         : contains(restore.find("answered"), h) ? FEDERATE_WAITING_FOR_FEDERATION_TO_RESTORE
-                                                                                 : FEDERATE_RESTORING;
-            statuses.emplace_back(federate, federate, status);
-        }
-        std::lock_guard<std::recursive_mutex> lock(mu_);
-        local_.push_back([statuses](FederateAmbassador& fa) { fa.federationRestoreStatusResponse(statuses); });
+        answer_statuses(
+            [](JsonValue const& restore, double h) {
+                const auto federate = handle<FederateHandle>(static_cast<unsigned long long>(h));
+                const RestoreStatus status = restore.at("state").text != "restoring" ? NO_RESTORE_IN_PROGRESS
+                                             : contains(restore.find("answered"), h)
+                                                 ? FEDERATE_WAITING_FOR_FEDERATION_TO_RESTORE
+                                                 : FEDERATE_RESTORING;
+                return FederateRestoreStatus(federate, federate, status);
+            },
+            [](FederateAmbassador& fa, FederateRestoreStatusVector const& s) { fa.federationRestoreStatusResponse(s); });
     });
 }
 

@@ -8,7 +8,7 @@ the classes at different depths."""
 from __future__ import annotations
 
 import time
-from typing import Any, Callable
+from typing import Any
 
 import pytest
 
@@ -17,6 +17,7 @@ import hlacore.rti as rti
 import hlacore.rti1516e as rti1516e
 from hlacore import _core
 from support import ROOT, RtigProcess
+from support.rti1516e import Recorder
 
 FLEET = ROOT / "tests" / "data" / "rti1516e" / "fleet"
 MODULES = ["fleet-types.xml", "fleet-vessels.xml", "fleet-boats.xml"]
@@ -80,21 +81,6 @@ def test_every_declared_data_type_packs_to_its_bytes_and_back(fleet_types: dict[
         decoded, used = fleet_types[name].unpack(data)
         assert used == len(data)
         assert fleet_types[name].pack(decoded) == data, name
-
-
-class Recorder:
-    """A 1516-2010 federate ambassador that records the calls: (name, args)."""
-
-    def __init__(self) -> None:
-        self.calls: list[tuple[str, tuple[Any, ...]]] = []
-
-    def __getattr__(self, name: str) -> Callable[..., None]:
-        if name.startswith("_"):
-            raise AttributeError(name)
-        return lambda *args: self.calls.append((name, args))
-
-    def named(self, name: str) -> list[tuple[Any, ...]]:
-        return [args for n, args in self.calls if n == name]
 
 
 def test_a_federation_of_the_three_modules_serves_each_class_at_its_depth(rtig: RtigProcess,

@@ -20,32 +20,7 @@ from hlacore import config
 from hlacore.processes import Child
 
 from support import ROOT, RtigProcess, cpp_federate
-
-DATA = ROOT / "tests" / "data" / "rti1516e"
-VEHICLES, CARS = str(DATA / "vehicles.xml"), str(DATA / "cars.xml")
-
-
-def program(name: str) -> str:
-    """A C++ test program of tests/cpp/rti1516e ($HLACORE_TEST_RTI1516E_DIR, else build/rti1516e-tests)."""
-    folder = pathlib.Path(os.environ.get("HLACORE_TEST_RTI1516E_DIR", ROOT / "build" / "rti1516e-tests"))
-    assert (folder / name).exists(), f"{folder / name} is missing: ./scripts/test.sh builds it"
-    return str(folder / name)
-
-
-class Recorder:
-    """A 1516-2010 federate ambassador that records the calls: (name, args)."""
-
-    def __init__(self) -> None:
-        self.calls: list[tuple[str, tuple[Any, ...]]] = []
-
-    def __getattr__(self, name: str) -> Any:
-        if name.startswith("_"):
-            raise AttributeError(name)
-        return lambda *args: self.calls.append((name, args))
-
-    def last(self, name: str) -> tuple[Any, ...] | None:
-        """The arguments of the latest call of `name`."""
-        return next((args for n, args in reversed(self.calls) if n == name), None)
+from support.rti1516e import CARS, VEHICLES, Recorder, program
 
 
 def test_four_federates_of_both_apis_and_languages_in_a_1000_step_lockstep(rtig: RtigProcess) -> None:

@@ -42,3 +42,7 @@ class Recorder:
 
     def named(self, name: str) -> list[tuple[Any, ...]]:
         return [args for n, args in self.calls if n == name]
+
+    def last(self, name: str) -> tuple[Any, ...] | None:
+        """The arguments of the latest call of `name`."""
+        return next((args for n, args in reversed(self.calls) if n == name), None)

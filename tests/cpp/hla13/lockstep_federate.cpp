@@ -15,23 +15,22 @@ int main(int argc, char** argv) {
     const int steps = std::stoi(argv[3]);
     const int peers = std::stoi(argv[4]);
     try {
-        RTI::RTIambassador rtia;
-        Recorder amb;
-        rtia.joinFederationExecution(name.c_str(), argv[1], &amb);
-        const auto until = [&](const std::function<bool()>& p, const char* what) { tick_until(p, {&rtia}, what, 60.0); };
+        TestFederate f(name, argv[1]);
+        RTI::RTIambassador& rtia = f.rtia;
         const auto vehicle = rtia.getObjectClassHandle("Vehicle");
         const auto position = rtia.getAttributeHandle("position", vehicle);
         rtia.publishObjectClass(vehicle, *attribute_set({position}));
         rtia.subscribeObjectClassAttributes(vehicle, *attribute_set({position}));
         rtia.enableTimeRegulation(RTIfedTime(0.0), RTIfedTime(1.0));
         rtia.enableTimeConstrained();
-        until([&] { return amb.count("timeRegulationEnabled") && amb.count("timeConstrainedEnabled"); }, "time management");
+        f.until([&] { return f.amb.count("timeRegulationEnabled") && f.amb.count("timeConstrainedEnabled"); },
+                "time management");
         const auto object = rtia.registerObjectInstance(vehicle, (name + "-vehicle").c_str());
         std::cout << "{\"ready\": true}" << std::endl;
 
-        until([&] { return amb.count("announceSynchronizationPoint") > 0; }, "go announced");
+        f.until([&] { return f.amb.count("announceSynchronizationPoint") > 0; }, "go announced");
         rtia.synchronizationPointAchieved("go");
-        until([&] { return amb.count("federationSynchronized") > 0; }, "go synchronized");
+        f.until([&] { return f.amb.count("federationSynchronized") > 0; }, "go synchronized");
         std::map<double, int> reflected_at;  // the timestamped reflections by time, counted as they are delivered
         int late = 0, reflections = 0;
         std::size_t seen = 0;
@@ -40,10 +39,13 @@ int main(int argc, char** argv) {
             rtia.updateAttributeValues(object, *attribute_values(position, name + " " + std::to_string(step)), t, "");
             rtia.timeAdvanceRequest(t);
             bool granted = false;
-            until([&] {
-                for (; seen < amb.events.size() && !granted; ++seen) {
-                    const Event& e = amb.events[seen];
-                    if (e.name == "reflectAttributeValues" && !std::isnan(e.time)) ++reflected_at[e.time], ++reflections;
+            f.until([&] {
+                for (; seen < f.amb.events.size() && !granted; ++seen) {
+                    const Event& e = f.amb.events[seen];
+                    if (e.name == "reflectAttributeValues" && !std::isnan(e.time)) {
+                        ++reflected_at[e.time];
+                        ++reflections;
+                    }
                     if (e.name == "timeAdvanceGrant") {
                         granted = e.time == step;
                         late += reflected_at[e.time] != peers;
@@ -53,11 +55,10 @@ int main(int argc, char** argv) {
             }, "the grant");
         }
         rtia.resignFederationExecution(RTI::DELETE_OBJECTS_AND_RELEASE_ATTRIBUTES);
-        std::cout << "{\"steps\": " << steps << ", \"reflections\": " << reflections << ", \"late\": " << late << "}"
-                  << std::endl;
+        print_lockstep_summary(steps, reflections, late);
+        return 0;
     } catch (RTI::Exception& e) {
         std::cerr << "lockstep_federate: " << e << "\n";
         return 1;
     }
-    return 0;
 }

@@ -87,8 +87,7 @@ int main(int argc, char** argv) {
             }
         }
         rtia.resignFederationExecution(RTI::DELETE_OBJECTS_AND_RELEASE_ATTRIBUTES);
-        std::cout << "{\"steps\": " << steps << ", \"reflections\": " << reflections << ", \"late\": " << late << "}"
-                  << std::endl;
+        print_lockstep_summary(steps, reflections, late);
     } catch (RTI::Exception& e) {
         std::cerr << "mixed_federate: " << e << "\n";
         return 1;

@@ -225,3 +225,19 @@ inline RTI_UNIQUE_PTR<RTI::AttributeHandleSet> attribute_set(std::initializer_li
     for (auto h : handles) set->add(h);
     return set;
 }
+
+// A test federate joined to `federation` as `name`, recording its callbacks, ticked until a condition holds.
+struct TestFederate {
+    RTI::RTIambassador rtia;
+    Recorder amb;
+    TestFederate(const std::string& name, const char* federation) {
+        rtia.joinFederationExecution(name.c_str(), federation, &amb);
+    }
+    void until(const std::function<bool()>& done, const char* what) { tick_until(done, {&rtia}, what, 60.0); }
+};
+
+// The last line of a lockstep program: its steps, the timestamped reflections, the grants that came too early.
+inline void print_lockstep_summary(int steps, int reflections, int late) {
+    std::printf("{\"steps\": %d, \"reflections\": %d, \"late\": %d}\n", steps, reflections, late);
+    std::fflush(stdout);
+}

@@ -18,17 +18,10 @@ import hlacore.rti1516e as rti1516e
 from hlacore import config
 from hlacore.processes import Child
 
-from support import ROOT, RtigProcess
+from support import ROOT, RtigProcess, rti1516e_program as program
 
 DATA = ROOT / "tests" / "data" / "rti1516e"
 VEHICLES, CARS = str(DATA / "vehicles.xml"), str(DATA / "cars.xml")
-
-
-def program(name: str) -> str:
-    """A C++ test program of tests/cpp/rti1516e ($HLACORE_TEST_RTI1516E_DIR, else build/rti1516e-tests)."""
-    folder = pathlib.Path(os.environ.get("HLACORE_TEST_RTI1516E_DIR", ROOT / "build" / "rti1516e-tests"))
-    assert (folder / name).exists(), f"{folder / name} is missing: ./scripts/test.sh builds it"
-    return str(folder / name)
 
 
 class Recorder:

@@ -1,6 +1,7 @@
 """The three-RTI benchmark's moving parts: each RTI's server (hlacore's rtig, OpenRTI's rtinode, CERTI's rtig
-with an rtia per federate), and one workload of bench/rtis/hla13_bench.cpp run as a federation of processes
-against it.
+with an rtia per federate), and one workload of a benchmark program of bench/rtis run as a federation of
+processes against it: hla13_bench.cpp on the HLA 1.3 C++ API, or its twin rti1516e_bench.cpp on the IEEE
+1516-2010 one (the same workloads, workloads.hh).
 
 hlacore is always there. OpenRTI and CERTI are not built here: point the bench at your installs, each by the
 prefix it was installed into.
@@ -8,15 +9,17 @@ prefix it was installed into.
     HLACORE_BENCH_OPENRTI=PREFIX   OpenRTI: PREFIX/include/RTI13/ (RTI.hh, fedtime.hh, NullFederateAmbassador.hh),
                                    PREFIX/lib/ or lib64/ (libRTI-NG.so, libFedTime.so), PREFIX/bin/rtinode
                                    (started as `rtinode -i 127.0.0.1:PORT`, the federation named
-                                   rti://127.0.0.1:PORT/Bench)
+                                   rti://127.0.0.1:PORT/Bench); for the 1516-2010 program also
+                                   PREFIX/include/rti1516e/ (RTI/RTI1516.h) and librti1516e.so, libfedtime1516e.so
     HLACORE_BENCH_CERTI=PREFIX     CERTI 3.5.1: PREFIX/include/hla13/ (the same headers), PREFIX/lib/ or lib64/
                                    (libRTI-NG.so, libFedTime.so), PREFIX/bin/rtig and PREFIX/bin/rtia (started as
                                    `rtig -l 127.0.0.1` with CERTI_HOME=PREFIX, CERTI_HOST, CERTI_TCP_PORT and
-                                   PREFIX/bin first on PATH, whence each federate starts its rtia)
+                                   PREFIX/bin first on PATH, whence each federate starts its rtia); the HLA 1.3
+                                   program only
 
-hla13_bench.cpp is compiled against each RTI that is there (hlacore's from the installed package,
-hlacore.config) into build/hla13_bench/hla13_bench-<rti>, again whenever the program or the RTI's library is
-newer than the binary or the prefix changed."""
+Each program is compiled against each RTI that is there (hlacore's from the installed package, hlacore.config)
+into build/hla13_bench/hla13_bench-<rti> and build/rti1516e_bench/rti1516e_bench-<rti>, again whenever the
+program or the RTI's library is newer than the binary or the prefix changed."""
 
 from __future__ import annotations
 
@@ -40,21 +43,46 @@ RTIS = ("hlacore", "openrti", "certi")
 VARIABLES = {"openrti": "HLACORE_BENCH_OPENRTI", "certi": "HLACORE_BENCH_CERTI"}  # the other RTIs' prefixes
 NOT_INSTALLED = ("no other RTI installed: set HLACORE_BENCH_OPENRTI / HLACORE_BENCH_CERTI to their install "
                  "prefixes (docs/performance.md, \"Three RTIs\")")
-SOURCE = pathlib.Path(__file__).parent / "rtis" / "hla13_bench.cpp"
-BINARIES = ROOT / "build" / "hla13_bench"
-# Where each RTI keeps its HLA 1.3 headers under its prefix, and the executables its server needs.
-_HEADERS = {"openrti": "include/RTI13", "certi": "include/hla13"}
+RTIS_DIR = pathlib.Path(__file__).parent / "rtis"
+HEADER = RTIS_DIR / "workloads.hh"  # the programs' shared part
+
+
+@dataclass(frozen=True)
+class Api:
+    """A C++ API the benchmark has a program for: the program, its FOM, the libraries it links, the folder of
+    the headers under each other RTI's prefix (the RTIs it runs on besides hlacore), the headers there and
+    the compiler's standard."""
+
+    name: str
+    source: pathlib.Path
+    fom: str
+    libraries: tuple[str, ...]
+    include: dict[str, str]
+    headers: tuple[str, ...]
+    std: str
+
+
+APIS = {
+    # C++14 and no deprecation warnings: CERTI's headers keep dynamic exception specifications.
+    "hla13": Api("hla13", RTIS_DIR / "hla13_bench.cpp", FOM, ("RTI-NG", "FedTime"),
+                 {"openrti": "include/RTI13", "certi": "include/hla13"},
+                 ("RTI.hh", "fedtime.hh", "NullFederateAmbassador.hh"), "gnu++14"),
+    "1516e": Api("1516e", RTIS_DIR / "rti1516e_bench.cpp", str(RTIS_DIR / "robot.xml"), ("rti1516e", "fedtime1516e"),
+                 {"openrti": "include/rti1516e"}, ("RTI/RTI1516.h",), "c++17"),
+}
+# The executables each RTI's server needs.
 _EXECUTABLES = {"openrti": ("rtinode",), "certi": ("rtig", "rtia")}
 
 
 @dataclass(frozen=True)
 class Install:
-    """An RTI's HLA 1.3 API and server: the headers' and libraries' folders, the prefix (hlacore's: none)."""
+    """An RTI's C++ API (`api`) and server: the headers' and libraries' folders, the prefix (hlacore's: none)."""
 
     rti: str
     include: pathlib.Path
     lib: pathlib.Path
     prefix: Optional[pathlib.Path] = None
+    api: str = "hla13"
 
 
 def installed() -> tuple[str, ...]:
@@ -62,45 +90,60 @@ def installed() -> tuple[str, ...]:
     return tuple(rti for rti in RTIS[1:] if os.environ.get(VARIABLES[rti]))
 
 
-def install(rti: str) -> Install:
-    """Where `rti` is: hlacore's installed package, or the prefix in $HLACORE_BENCH_OPENRTI / $HLACORE_BENCH_CERTI.
-    AssertionError naming the variable and the missing file when the prefix is not set or lacks part of it."""
+def programs() -> tuple[tuple[str, str], ...]:
+    """The (RTI, API) pairs the C++ programs run on, each RTI's beside each other: hlacore's two APIs, then each
+    other RTI installed with the APIs the benchmark has for it (OpenRTI both, CERTI HLA 1.3)."""
+    return tuple((rti, api) for rti in ("hlacore", *installed()) for api in APIS
+                 if rti == "hlacore" or rti in APIS[api].include)
+
+
+def column(rti: str, api: str) -> str:
+    """The report's name of `rti` through `api` (rtis.<column>.<figure>): the RTI's for HLA 1.3, with
+    "-1516e" for the 1516-2010 program."""
+    return rti if api == "hla13" else f"{rti}-{api}"
+
+
+def install(rti: str, api: str = "hla13") -> Install:
+    """Where `rti` is, with its `api`: hlacore's installed package, or the prefix in $HLACORE_BENCH_OPENRTI /
+    $HLACORE_BENCH_CERTI. AssertionError naming the variable and the missing file when the prefix is not set or
+    lacks part of it."""
     if rti == "hlacore":
-        return Install(rti, config.include_dir(), config.lib_dir())
+        return Install(rti, config.include_dir(api), config.lib_dir(api), api=api)
     variable = VARIABLES[rti]
     value = os.environ.get(variable)
     assert value, f"${variable} is not set: {NOT_INSTALLED}"
     prefix = pathlib.Path(value).expanduser().resolve()
-    include = prefix / _HEADERS[rti]
+    spec = APIS[api]
+    assert rti in spec.include, f"the benchmark has no {api} program for {rti}"
+    include = prefix / spec.include[rti]
     libs = [prefix / "lib", prefix / "lib64"]
-    lib = next((d for d in libs if (d / "libRTI-NG.so").exists()), libs[0])
-    wanted = [*(include / name for name in ("RTI.hh", "fedtime.hh", "NullFederateAmbassador.hh")),
-              lib / "libRTI-NG.so", lib / "libFedTime.so",
+    lib = next((d for d in libs if (d / f"lib{spec.libraries[0]}.so").exists()), libs[0])
+    wanted = [*(include / name for name in spec.headers), *(lib / f"lib{name}.so" for name in spec.libraries),
               *(prefix / "bin" / name for name in _EXECUTABLES[rti])]
     missing = [str(path) for path in wanted if not path.exists()]
     assert not missing, f"${variable}={value} is not an install prefix of {rti}: missing {', '.join(missing)}"
-    return Install(rti, include, lib, prefix)
+    return Install(rti, include, lib, prefix, api)
 
 
-def bench_binary(rti: str) -> str:
-    """hla13_bench compiled against `rti` (install(rti)) into build/hla13_bench/, unless the binary there was
-    compiled by the same command (the same install) and is newer than the program and the RTI's library;
-    AssertionError with the compiler's output if compiling fails."""
-    where = install(rti)
-    target = BINARIES / f"hla13_bench-{rti}"
+def bench_binary(rti: str, api: str = "hla13") -> str:
+    """The `api` program compiled against `rti` (install(rti, api)) into build/<program>/, unless the binary
+    there was compiled by the same command (the same install) and is newer than the program, workloads.hh and
+    the RTI's library; AssertionError with the compiler's output if compiling fails."""
+    where, spec = install(rti, api), APIS[api]
+    target = ROOT / "build" / spec.source.stem / f"{spec.source.stem}-{rti}"
     stamp = target.with_name(target.name + ".command")  # the command that compiled it
-    # C++14 and no deprecation warnings: CERTI's headers keep dynamic exception specifications.
-    command = ["g++", "-std=gnu++14", "-O2", "-Wno-deprecated", "-DRTI_USES_STD_FSTREAM", str(SOURCE),
+    command = ["g++", f"-std={spec.std}", "-O2", "-Wno-deprecated", "-DRTI_USES_STD_FSTREAM", str(spec.source),
                f"-I{where.include}", f"-L{where.lib}", f"-Wl,-rpath,{where.lib}", f"-Wl,-rpath-link,{where.lib}",
-               "-lRTI-NG", "-lFedTime", "-o", str(target)]
-    library = where.lib / "libRTI-NG.so"
+               *(f"-l{name}" for name in spec.libraries), "-o", str(target)]
+    library = where.lib / f"lib{spec.libraries[0]}.so"
     if (target.exists() and stamp.exists() and stamp.read_text() == " ".join(command)
-            and all(target.stat().st_mtime > p.stat().st_mtime for p in (SOURCE, library))):
+            and all(target.stat().st_mtime > p.stat().st_mtime for p in (spec.source, HEADER, library))):
         return str(target)
-    BINARIES.mkdir(parents=True, exist_ok=True)
+    target.parent.mkdir(parents=True, exist_ok=True)
     stamp.unlink(missing_ok=True)
     done = subprocess.run(command, stdin=subprocess.DEVNULL, capture_output=True, text=True)
-    assert done.returncode == 0, f"compiling {SOURCE.name} against {rti} failed:\n{' '.join(command)}\n{done.stderr[-4000:]}"
+    assert done.returncode == 0, (f"compiling {spec.source.name} against {rti} failed:\n{' '.join(command)}\n"
+                                  f"{done.stderr[-4000:]}")
     stamp.write_text(" ".join(command))
     return str(target)
 
@@ -185,12 +228,12 @@ class Server:
 
 
 def run(server: Server, workload: str, federates: int, n: int, m: int, timeout: float = 300.0,
-        binary: Optional[str] = None) -> dict[str, Any]:
-    """One run of `workload` with `federates` processes of hla13_bench (`binary`, else the one compiled
+        binary: Optional[str] = None, api: str = "hla13") -> dict[str, Any]:
+    """One run of `workload` with `federates` processes of the `api` program (`binary`, else the one compiled
     against the server's RTI) against `server`; the creator's JSON result. Every process must exit 0 (each
     checks what it received); AssertionError otherwise."""
-    binary = binary or bench_binary(server.rti)
-    args = [workload, server.federation, FOM]
+    binary = binary or bench_binary(server.rti, api)
+    args = [workload, server.federation, APIS[api].fom]
     creator = Child([binary, *args, "create", "f0", str(federates), str(n), str(m)], env=server.env)
     others = [Child([binary, *args, "join", f"f{i}", str(federates), str(n), str(m)], env=server.env)
               for i in range(1, federates)]

@@ -19,8 +19,8 @@ import hlacore.rti1516e as rti1516e
 from hlacore import config
 from hlacore.processes import Child
 
-from support import ROOT, RtigProcess, cpp_federate
-from support.rti1516e import CARS, VEHICLES, Recorder, program
+from support import ROOT, RtigProcess, cpp_federate, rti1516e_program as program
+from support.rti1516e import CARS, VEHICLES, Recorder
 
 
 def test_four_federates_of_both_apis_and_languages_in_a_1000_step_lockstep(rtig: RtigProcess) -> None:

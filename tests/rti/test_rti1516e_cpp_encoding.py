@@ -5,15 +5,13 @@ pad as the Python ones do."""
 
 from __future__ import annotations
 
-import os
 import subprocess
-from pathlib import Path
 from typing import Any
 
 import pytest
 
 from hlacore import omt
-from support import ROOT
+from support import rti1516e_program
 
 CASES = ["roundtrip", "time_float_arithmetic", "time_integer_arithmetic", "time_encoding", "time_wrong_length",
          "time_wrong_type", "time_overflow", "time_factories", "time_text", "basic_external_memory",
@@ -72,10 +70,7 @@ EXPECTED: dict[str, tuple[omt.HLAdataType, Any]] = {
 @pytest.fixture(scope="module")
 def output() -> subprocess.CompletedProcess[str]:
     """One run of the program."""
-    default = ROOT / "build" / "rti1516e-tests"
-    binary = Path(os.environ.get("HLACORE_TEST_RTI1516E_DIR", default)) / "rti1516e_encoding"
-    assert binary.exists(), f"{binary} is missing: ./scripts/test.sh builds it"
-    return subprocess.run([str(binary)], capture_output=True, text=True, timeout=60)
+    return subprocess.run([rti1516e_program("rti1516e_encoding")], capture_output=True, text=True, timeout=60)
 
 
 def encodings(run: subprocess.CompletedProcess[str]) -> dict[str, bytes]:

@@ -9,7 +9,8 @@ import os
 import subprocess
 
 from support import RtigProcess
-from support.rti1516e import CARS, VEHICLES, program, service_entries
+from support import rti1516e_program as program
+from support.rti1516e import CARS, VEHICLES, service_entries
 
 
 def test_the_header_lists_151_entries_of_140_names() -> None:

@@ -65,6 +65,14 @@ def cpp_federate(name: str) -> str:
     return str(binary)
 
 
+def rti1516e_program(name: str) -> str:
+    """A C++ program of tests/cpp/rti1516e, built by ./scripts/test.sh against the installed package's IEEE
+    1516-2010 API ($HLACORE_TEST_RTI1516E_DIR, else build/rti1516e-tests)."""
+    folder = pathlib.Path(os.environ.get("HLACORE_TEST_RTI1516E_DIR", ROOT / "build" / "rti1516e-tests"))
+    assert (folder / name).exists(), f"{folder / name} is missing: ./scripts/test.sh builds it"
+    return str(folder / name)
+
+
 class RtigProcess(Rtig):
     """The rtig under test on port 0, its log in the test's tmp_path."""
 

@@ -1,10 +1,8 @@
-"""What the IEEE 1516-2010 service tests share: the FOM modules of tests/data/rti1516e, the C++ test programs
-of tests/cpp/rti1516e, the service entries of the C++ header, and a recording federate ambassador."""
+"""What the IEEE 1516-2010 tests share: the FOM modules of tests/data/rti1516e, the service entries of the C++
+header, and a recording federate ambassador (the C++ test programs: support.rti1516e_program)."""
 
 from __future__ import annotations
 
-import os
-import pathlib
 import re
 from typing import Any, Callable
 
@@ -13,13 +11,6 @@ from . import ROOT
 DATA = ROOT / "tests" / "data" / "rti1516e"
 VEHICLES, CARS = str(DATA / "vehicles.xml"), str(DATA / "cars.xml")
 HEADER = ROOT / "cpp" / "rti1516e" / "include" / "RTI" / "RTIambassador.h"
-
-
-def program(name: str) -> str:
-    """A C++ test program of tests/cpp/rti1516e ($HLACORE_TEST_RTI1516E_DIR, else build/rti1516e-tests)."""
-    folder = pathlib.Path(os.environ.get("HLACORE_TEST_RTI1516E_DIR", ROOT / "build" / "rti1516e-tests"))
-    assert (folder / name).exists(), f"{folder / name} is missing: ./scripts/test.sh builds it"
-    return str(folder / name)
 
 
 def service_entries() -> list[str]:

@@ -24,7 +24,7 @@ from bench.report import Report, expected_keys, three_rtis_keys
 from bench.three_rtis import Server, run
 from bench.save_restore import SaveRestore
 from bench.throughput import Fanout
-from support import cpp_federate, rtig_executable
+from support import cpp_federate, rti1516e_program, rtig_executable
 from hlacore import _core
 from hlacore.status import status
 
@@ -255,15 +255,17 @@ def test_the_monitor_cost_bench_watches_with_a_connected_page(rtig) -> None:
 @pytest.mark.parametrize("workload, federates, n, m", [("lockstep", 3, 20, 2), ("pingpong", 2, 20, 2),
                                                       ("throughput", 2, 500, 2)])
 @pytest.mark.parametrize("busy", [False, True], ids=["sleeping", "polling"])
+@pytest.mark.parametrize("api", ["hla13", "1516e"])
 def test_three_rti_program_on_hlacore(monkeypatch: pytest.MonkeyPatch, workload: str, federates: int, n: int, m: int,
-                                      busy: bool) -> None:
-    """bench/rtis/hla13_bench.cpp (built by ./scripts/test.sh against the installed hlacore) on each workload,
-    and with every process polling as bench/test_busy_poll.py runs it; its federates check what they receive
-    and exit 0."""
+                                      busy: bool, api: str) -> None:
+    """bench/rtis/hla13_bench.cpp and its IEEE 1516-2010 twin rti1516e_bench.cpp (built by ./scripts/test.sh
+    against the installed hlacore's two C++ APIs) on each workload, and with every process polling as
+    bench/test_busy_poll.py runs it; their federates check what they receive and exit 0."""
     if busy:
         monkeypatch.setenv("HLACORE_BUSY_POLL_US", BUSY_POLL_US)
+    binary = cpp_federate("hla13_bench") if api == "hla13" else rti1516e_program("rti1516e_bench")
     with closing(Server("hlacore", *(["--busy-poll", BUSY_POLL_US] if busy else []))) as server:
-        result = run(server, workload, federates, n, m, timeout=60.0, binary=cpp_federate("hla13_bench"))
+        result = run(server, workload, federates, n, m, timeout=60.0, binary=binary, api=api)
     if workload == "throughput":
         assert len(result["rates"]) == m and all(rate > 0 for rate in result["rates"])
     else:
@@ -277,12 +279,24 @@ def test_report_renders_the_three_rti_table() -> None:
         report.add(key, [4e5 if rate else 5e-5])
     report.add("rtis.openrti.lockstep.2", [1.5e-4], extend=False)
     report.add("rtis.openrti.throughput", [1e5])
+    report.add("rtis.hlacore-1516e.pingpong", [6e-5], extend=False)
     assert report.three_rtis_complete()
     text = report.three_rtis_markdown()
-    assert "| lockstep K = 2, µs per step | 50 = 1.0× | 50 = 1.0× | 150 = 3.0× | 50 = 1.0× |" in text
+    assert ("| figure | hlacore, C++ | hlacore, C++ 1516e | hlacore, Python | OpenRTI, C++ | OpenRTI, C++ 1516e | "
+            "CERTI 3.5.1, C++ | targets |") in text
+    assert "| lockstep K = 2, µs per step | 50 = 1.0× | 50 = 1.0× | 50 = 1.0× | 150 = 3.0× | 50 = 1.0× | 50 = 1.0× |" in text
+    assert "| update ping-pong round trip, 8 B, µs | 50 = 1.0× | 60 = 1.2× | 50 = 1.0× |" in text
     assert "C++ ≥ 2× OpenRTI: met (3.00×); Python faster than OpenRTI C++: met (3.00×)" in text
     assert "C++ ≥ 2× OpenRTI: missed (1.00×)" in text  # K = 4
     assert "400.0 k/s = 1.00 of the floor" in text and "C++ ≥ 3× OpenRTI: met (4.00×)" in text
+    alone = Report()
+    for key in three_rtis_keys():
+        if key.startswith(("rtis.floor", "rtis.hlacore", "rtis.python")):
+            alone.add(key, [5e-5])
+    assert not alone.three_rtis_complete()
+    text = alone.three_rtis_markdown()
+    assert "| figure | hlacore, C++ | hlacore, C++ 1516e | hlacore, Python | targets |" in text
+    assert "Not measured in this run: OpenRTI, CERTI 3.5.1 (no install given" in text
 
 
 @pytest.mark.parametrize("datagrams", [pytest.param(True, marks=pytest.mark.slow), False], ids=["udp", "tcp"])

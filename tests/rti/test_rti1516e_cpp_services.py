@@ -8,8 +8,7 @@ from __future__ import annotations
 import os
 import subprocess
 
-from support import RtigProcess
-from support import rti1516e_program as program
+from support import RtigProcess, rti1516e_program as program
 from support.rti1516e import CARS, VEHICLES, service_entries
 
 

@@ -19,12 +19,13 @@ command -v pkg-config >/dev/null 2>&1 \
 install_hlacore test
 [ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build
-# The gateway, and hlacore-rtia over the federate side (it decodes what CERTI federates send: sanitized too).
+# The gateway, and hlacore-rtia over the federate side (it decodes what CERTI federates send: sanitized too), and
+# the IEEE 1516-2010 C++ API's test programs against the tree's libraries, sanitized.
 .venv/bin/cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHLACORE_SANITIZE=ON -DHLACORE_PYTHON=OFF -DHLACORE_BENCH=ON \
     -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" >build/asan-configure.log 2>&1 \
     || { cat build/asan-configure.log; exit 1; }
-cmake_build build/asan "the ASan+UBSan rtig and hlacore-rtia the tests run against" rtig hlacore-rtia tcp_floor \
-    state_types_test
+cmake_build build/asan "the ASan+UBSan rtig, hlacore-rtia and 1516-2010 test programs the tests run" rtig \
+    hlacore-rtia tcp_floor state_types_test rti1516e_federate rti1516e_encoding rti1516e_services rti1516e_bench
 # The C++ test federates of the HLA 1.3 API (tests/cpp/hla13), against the installed package's CMake config ...
 api_dir=$(.venv/bin/python -m hlacore.config --cmake-dir) || exit 1
 .venv/bin/cmake -S tests/cpp/hla13 -B build/hla13-tests -G Ninja -Dhlacore_DIR="$api_dir" \

@@ -8,6 +8,8 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <cstring>
+#include <type_traits>
 #include <deque>
 #include <functional>
 #include <map>
@@ -83,6 +85,15 @@ std::set<H> handles(Numbers const& numbers) {
 }
 inline api::MessageRetractionHandle retraction(std::uint32_t sender, std::uint64_t serial) {
     return api::MessageRetractionHandleFriend::make(serial, sender);
+}
+
+// An enumeration's value as the federate gave it, read without assuming it is one of the enumerators: any number
+// may be cast to the type, and loading one outside its range as the enumeration is undefined behaviour.
+template <class E>
+long long raw(E const& e) {
+    std::underlying_type_t<E> v;
+    std::memcpy(&v, &e, sizeof v);
+    return static_cast<long long>(v);
 }
 
 // Text across the API (std::wstring) and the core (UTF-8).

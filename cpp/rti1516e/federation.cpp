@@ -57,8 +57,8 @@ Client& Ambassador::client() const {
 void Ambassador::connect(FederateAmbassador& federate, CallbackModel model, std::wstring const& settings) {
     guarded([&] {
         if (client_) raise("AlreadyConnected", "this ambassador is connected");
-        if (model != HLA_EVOKED && model != HLA_IMMEDIATE)
-            raise("UnsupportedCallbackModel", std::to_string(static_cast<int>(model)));
+        if (raw(model) != HLA_EVOKED && raw(model) != HLA_IMMEDIATE)
+            raise("UnsupportedCallbackModel", std::to_string(raw(model)));
         // "host:port", "rti://host:port" or "rti://host:port/"; empty: $HLACORE_RTIG, else 127.0.0.1:60400 (as
         // hlacore.rti1516e). A designator that names no address is InvalidLocalSettingsDesignator.
         std::string address = utf8(settings);
@@ -78,7 +78,7 @@ void Ambassador::connect(FederateAmbassador& federate, CallbackModel model, std:
             raise("ConnectionFailed", e.what());
         }
         federate_ = &federate;
-        immediate_ = model == HLA_IMMEDIATE;
+        immediate_ = raw(model) == HLA_IMMEDIATE;
         if (immediate_) {
             stop_ = false;
             immediate_thread_ = std::thread([this] {
@@ -175,15 +175,15 @@ FederateHandle Ambassador::joinFederationExecution(std::wstring const& name, std
 void Ambassador::resignFederationExecution(ResignAction action) {
     guarded([&] {
         // 1516-2010's actions as HLA 1.3's (wire::ResignAction, PyHLA's values).
-        static const std::map<ResignAction, wire::ResignAction> kActions{
+        static const std::map<long long, wire::ResignAction> kActions{
             {UNCONDITIONALLY_DIVEST_ATTRIBUTES, wire::ResignAction::ReleaseAttributes},
             {DELETE_OBJECTS, wire::ResignAction::DeleteObjects},
             {CANCEL_PENDING_OWNERSHIP_ACQUISITIONS, wire::ResignAction::NoAction},
             {DELETE_OBJECTS_THEN_DIVEST, wire::ResignAction::DeleteObjectsAndReleaseAttributes},
             {CANCEL_THEN_DELETE_THEN_DIVEST, wire::ResignAction::DeleteObjectsAndReleaseAttributes},
             {NO_ACTION, wire::ResignAction::NoAction}};
-        const auto it = kActions.find(action);
-        if (it == kActions.end()) raise("InvalidResignAction", std::to_string(static_cast<int>(action)));
+        const auto it = kActions.find(raw(action));
+        if (it == kActions.end()) raise("InvalidResignAction", std::to_string(raw(action)));
         std::lock_guard<std::recursive_mutex> lock(mu_);
         client().resign(static_cast<std::uint8_t>(it->second));
         joined_ = false;

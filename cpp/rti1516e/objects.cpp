@@ -23,14 +23,14 @@ std::vector<std::string> names_of(std::set<std::wstring> const& names) {
     return out;
 }
 
-std::uint8_t transport_of(TransportationType type) {
-    if (type != RELIABLE && type != BEST_EFFORT) raise("InvalidTransportationType", std::to_string(type));
-    return static_cast<std::uint8_t>(type);  // HLAreliable 1, HLAbestEffort 2: the core's numbers too
+std::uint8_t transport_of(TransportationType const& type) {  // by reference: see raw()
+    if (raw(type) != RELIABLE && raw(type) != BEST_EFFORT) raise("InvalidTransportationType", std::to_string(raw(type)));
+    return static_cast<std::uint8_t>(raw(type));  // HLAreliable 1, HLAbestEffort 2: the core's numbers too
 }
 
-std::uint8_t order_of(OrderType type) {
-    if (type != RECEIVE && type != TIMESTAMP) raise("InvalidOrderType", std::to_string(type));
-    return static_cast<std::uint8_t>(type);
+std::uint8_t order_of(OrderType const& type) {
+    if (raw(type) != RECEIVE && raw(type) != TIMESTAMP) raise("InvalidOrderType", std::to_string(raw(type)));
+    return static_cast<std::uint8_t>(raw(type));
 }
 
 }  // namespace

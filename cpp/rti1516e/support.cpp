@@ -165,9 +165,9 @@ ResignAction Ambassador::getAutomaticResignDirective() {
 void Ambassador::setAutomaticResignDirective(ResignAction action) {
     guarded([&] {
         client();
-        if (action < UNCONDITIONALLY_DIVEST_ATTRIBUTES || action > NO_ACTION)
-            raise("InvalidResignAction", std::to_string(static_cast<int>(action)));
-        if (action != CANCEL_THEN_DELETE_THEN_DIVEST)
+        if (raw(action) < UNCONDITIONALLY_DIVEST_ATTRIBUTES || raw(action) > NO_ACTION)
+            raise("InvalidResignAction", std::to_string(raw(action)));
+        if (raw(action) != CANCEL_THEN_DELETE_THEN_DIVEST)
             not_served("another automatic resign action", "the gateway deletes and divests a vanished federate");
         resign_directive_ = action;
     });
@@ -207,9 +207,9 @@ OrderType Ambassador::getOrderType(std::wstring const& name) {
 }
 std::wstring Ambassador::getOrderName(OrderType type) {
     return guarded([&]() -> std::wstring {
-        if (type == RECEIVE) return L"Receive";
-        if (type == TIMESTAMP) return L"TimeStamp";
-        raise("InvalidOrderType", std::to_string(static_cast<int>(type)));
+        if (raw(type) == RECEIVE) return L"Receive";
+        if (raw(type) == TIMESTAMP) return L"TimeStamp";
+        raise("InvalidOrderType", std::to_string(raw(type)));
     });
 }
 TransportationType Ambassador::getTransportationType(std::wstring const& name) {
@@ -222,7 +222,7 @@ TransportationType Ambassador::getTransportationType(std::wstring const& name) {
     });
 }
 std::wstring Ambassador::getTransportationName(TransportationType type) {
-    return guarded([&] { return wide(Client::transportation_name(type)); });
+    return guarded([&] { return wide(Client::transportation_name(static_cast<std::uint64_t>(raw(type)))); });
 }
 
 unsigned long Ambassador::normalizeFederateHandle(FederateHandle federate) {
@@ -233,9 +233,9 @@ unsigned long Ambassador::normalizeFederateHandle(FederateHandle federate) {
 }
 unsigned long Ambassador::normalizeServiceGroup(ServiceGroup group) {
     return guarded([&] {
-        if (group < FEDERATION_MANAGEMENT || group > SUPPORT_SERVICES)
-            raise("InvalidServiceGroup", std::to_string(static_cast<int>(group)));
-        return static_cast<unsigned long>(group);
+        if (raw(group) < FEDERATION_MANAGEMENT || raw(group) > SUPPORT_SERVICES)
+            raise("InvalidServiceGroup", std::to_string(raw(group)));
+        return static_cast<unsigned long>(raw(group));
     });
 }
 

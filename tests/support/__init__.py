@@ -66,9 +66,9 @@ def cpp_federate(name: str) -> str:
 
 
 def rti1516e_program(name: str) -> str:
-    """A C++ program of tests/cpp/rti1516e, built by ./scripts/test.sh against the installed package's IEEE
-    1516-2010 API ($HLACORE_TEST_RTI1516E_DIR, else build/rti1516e-tests)."""
-    folder = pathlib.Path(os.environ.get("HLACORE_TEST_RTI1516E_DIR", ROOT / "build" / "rti1516e-tests"))
+    """A C++ program of tests/cpp/rti1516e, built by ./scripts/test.sh with the sanitizers against the source
+    tree's IEEE 1516-2010 API ($HLACORE_TEST_RTI1516E_DIR, else build/asan/rti1516e-tests)."""
+    folder = pathlib.Path(os.environ.get("HLACORE_TEST_RTI1516E_DIR", ROOT / "build" / "asan" / "rti1516e-tests"))
     assert (folder / name).exists(), f"{folder / name} is missing: ./scripts/test.sh builds it"
     return str(folder / name)
 

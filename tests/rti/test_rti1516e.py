@@ -123,7 +123,9 @@ def test_the_callback_model_and_the_connection_are_checked(rtig: Any) -> None:
         rtia.createFederationExecution("X", VEHICLES)
     with pytest.raises(rti1516e.UnsupportedCallbackModel):
         rtia.connect(Recorder(), "HLA_LATER", rtig.address)
-    rtia.connect(Recorder(), "HLA_EVOKED", "rti://" + rtig.address)
+    with pytest.raises(rti1516e.InvalidLocalSettingsDesignator):
+        rtia.connect(Recorder(), "HLA_EVOKED", "no address")
+    rtia.connect(Recorder(), "HLA_EVOKED", "rti://" + rtig.address + "/")
     with pytest.raises(rti1516e.AlreadyConnected):
         rtia.connect(Recorder(), "HLA_EVOKED", rtig.address)
     rtia.disconnect()

@@ -89,6 +89,11 @@ class RTIambassador(Regions):
         address = localSettingsDesignator.strip()
         address = address[len("rti://"):] if address.startswith("rti://") else address
         address = address[:-1] if address.endswith("/") else address
+        if address:
+            try:
+                _core.client_settings({"address": address})
+            except _core.RTIinternalError as error:  # names no gateway
+                raise x.InvalidLocalSettingsDesignator(f"InvalidLocalSettingsDesignator: {error}") from None
         try:
             self._rti = _rti13.RTIAmbassador(address or None, **self._settings)
         except _core.RTIinternalError as error:  # nothing answers, the secret is refused, a setting is wrong

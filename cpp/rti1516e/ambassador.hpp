@@ -5,6 +5,7 @@
 
 #include <RTI/FederateAmbassador.h>
 #include <RTI/RTIambassador.h>
+#include <RTI/time/HLAtimeTypes.h>
 
 #include <atomic>
 #include <condition_variable>
@@ -114,6 +115,19 @@ auto guarded(F&& service) -> decltype(service()) {
     return guarded_by(rethrow_as_1516e, std::forward<F>(service));
 }
 
+// The core's time as the federation's time type, made where it is used (a callback's time costs no
+// allocation): an HLAinteger64Time federation's times are whole numbers of the core's doubles.
+class TimeOut {
+public:
+    explicit TimeOut(bool integer) : integer_(integer) {}
+    api::LogicalTime const& operator()(double time);
+
+private:
+    bool integer_;
+    api::HLAfloat64Time float_;
+    api::HLAinteger64Time integer_time_;
+};
+
 class Ambassador final : public api::RTIambassador {
 public:
     Ambassador() = default;
@@ -129,7 +143,6 @@ private:
     Client& client() const;  // NotConnected
     double time_in(api::LogicalTime const& time) const;  // InvalidLogicalTime for another type
     double interval_in(api::LogicalTimeInterval const& interval) const;
-    RTI_UNIQUE_PTR<api::LogicalTime> time_out(double time) const;
     // Publications and subscriptions add up in 1516-2010, and replace each other in the core.
     using Declared = std::map<std::uint32_t, std::set<std::uint32_t>>;
     void declare(Declared& table, api::ObjectClassHandle cls, api::AttributeHandleSet const& attributes, bool adding,

@@ -50,7 +50,7 @@ Ambassador::~Ambassador() { stop_immediate(); }
 
 Client& Ambassador::client() const {
     if (!client_) raise("NotConnected", "connect first");
-    if (auto lost = client_->lost()) raise("NotConnected", *lost);
+    if (client_->closed()) raise("NotConnected", client_->lost().value_or("the connection is closed"));
     return *client_;
 }
 
@@ -83,7 +83,7 @@ void Ambassador::connect(FederateAmbassador& federate, CallbackModel model, std:
             stop_ = false;
             immediate_thread_ = std::thread([this] {
                 while (!stop_) {
-                    if (client_->lost()) break;
+                    if (client_->closed()) break;
                     const auto status = client_->wait_for_callback(Client::Clock::now() + std::chrono::milliseconds(100));
                     if (status == Client::WaitStatus::Ready) deliver_one();
                 }

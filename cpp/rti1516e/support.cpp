@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "ambassador.hpp"
+#include "encoding/Octets.h"
 
 namespace hlacore::rti1516e {
 
@@ -22,10 +23,7 @@ std::string lower(std::wstring const& name) {
 unsigned long long number(VariableLengthData const& encoded, size_t length) {
     if (encoded.size() != length)
         raise("CouldNotDecode", std::to_string(encoded.size()) + " bytes, not " + std::to_string(length));
-    const auto* in = static_cast<const unsigned char*>(encoded.data());
-    unsigned long long v = 0;
-    for (size_t i = 0; i < length; ++i) v = (v << 8) | in[i];
-    return v;
+    return hlacore_rti1516e::loadBigEndian(encoded.data(), length);
 }
 }  // namespace
 

@@ -38,12 +38,15 @@ double Ambassador::interval_in(LogicalTimeInterval const& interval) const {
     return value_in<HLAfloat64Interval, HLAinteger64Interval>(interval, integer_time_, joined_, "InvalidLookahead");
 }
 
-RTI_UNIQUE_PTR<LogicalTime> Ambassador::time_out(double time) const {
-    if (!integer_time_) return RTI_UNIQUE_PTR<LogicalTime>(new HLAfloat64Time(time));
+LogicalTime const& TimeOut::operator()(double time) {
+    if (!integer_) {
+        float_.setTime(time);
+        return float_;
+    }
     const double whole = std::isinf(time) ? (time > 0 ? 9.2e18 : -9.2e18) : time;
-    return RTI_UNIQUE_PTR<LogicalTime>(new HLAinteger64Time(static_cast<Integer64>(whole)));
+    integer_time_.setTime(static_cast<Integer64>(whole));
+    return integer_time_;
 }
-
 namespace {
 // Into a time given by the caller, which must be of the federation's type.
 void assign(LogicalTime& into, LogicalTime const& from) {
@@ -104,20 +107,20 @@ bool Ambassador::queryGALT(LogicalTime& time) {
     return guarded([&] {
         const double galt = client().query_lbts();
         if (std::isinf(galt)) return false;  // nothing holds this federate back
-        assign(time, *time_out(galt));
+        assign(time, TimeOut(integer_time_)(galt));
         return true;
     });
 }
 
 void Ambassador::queryLogicalTime(LogicalTime& time) {
-    guarded([&] { assign(time, *time_out(client().query_federate_time())); });
+    guarded([&] { assign(time, TimeOut(integer_time_)(client().query_federate_time())); });
 }
 
 bool Ambassador::queryLITS(LogicalTime& time) {
     return guarded([&] {
         const double lits = client().query_min_next_event_time();
         if (std::isinf(lits)) return false;  // no message can come
-        assign(time, *time_out(lits));
+        assign(time, TimeOut(integer_time_)(lits));
         return true;
     });
 }

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "ambassador.hpp"
+#include "encoding/Octets.h"
 
 namespace api = ::rti1516e;
 
@@ -176,16 +177,11 @@ size_t encode_handle(H const& h, bool retraction, unsigned long long value, unsi
                      size_t size) {
     const size_t length = h.encodedLength();
     if (size < length) throw api::CouldNotEncode(L"CouldNotEncode: the buffer is too small for the handle");
-    unsigned char* out = static_cast<unsigned char*>(buffer);
-    size_t at = 0;
-    auto put = [&](unsigned long long v, int n) {
-        for (int i = n - 1; i >= 0; --i) out[at++] = static_cast<unsigned char>(v >> (8 * i));
-    };
     if (retraction) {
-        put(sender, 4);
-        put(value, 8);
+        hlacore_rti1516e::storeBigEndian(buffer, sender, 4);
+        hlacore_rti1516e::storeBigEndian(static_cast<char*>(buffer) + 4, value, 8);
     } else {
-        put(value, 4);
+        hlacore_rti1516e::storeBigEndian(buffer, value, 4);
     }
     return length;
 }

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -21,6 +22,17 @@ from hlacore.processes import Child
 
 from support import ROOT, RtigProcess, cpp_federate, rti1516e_program as program
 from support.rti1516e import CARS, VEHICLES, Recorder
+
+
+def test_the_exceptions_and_their_renaming_are_the_same_in_python_and_cpp() -> None:
+    """The two APIs name the same exceptions, and rename the core's the same way: the Python module's lists held
+    to the C++ header's RTI1516E_EXCEPTIONS and cpp/rti1516e/types.cpp's HLACORE_RENAMED."""
+    header = (ROOT / "cpp" / "rti1516e" / "include" / "RTI" / "Exception.h").read_text()
+    listed = header[header.index("#define RTI1516E_EXCEPTIONS(X)"):header.index("#define RTI_EXCEPTION(A)")]
+    assert re.findall(r"X\((\w+)\)", listed) == list(rti1516e._exceptions.NAMES)
+    types = (ROOT / "cpp" / "rti1516e" / "types.cpp").read_text()
+    renamed = types[types.index("#define HLACORE_RENAMED(X)"):types.index("std::string renamed(")]
+    assert dict(re.findall(r"X\((\w+), (\w+)\)", renamed)) == rti1516e._exceptions._RENAMED
 
 
 def test_four_federates_of_both_apis_and_languages_in_a_1000_step_lockstep(rtig: RtigProcess) -> None:

@@ -218,6 +218,7 @@ public:
     std::uint32_t federate_handle() const;
     // Why the connection is gone (IEEE 1516-2010's connectionLost); nullopt while it is up.
     std::optional<std::string> lost() const;
+    bool closed() const { return closed_.load(); }  // lost() without its text: no lock, for every call
     TimeType time_type() const;  // the joined federation's
 
     // Messages sent and write system calls made so far (tests/transport/test_coalescing.py): a long run of sends

@@ -17,6 +17,17 @@ using rti1516e::Octet;
 using Octets = std::vector<Octet>;
 
 [[noreturn]] void fail(std::wstring const& message);
+// size bytes of bits at out, most significant first, and back (the handles' and times' encodings).
+inline void storeBigEndian(void* out, std::uint64_t bits, size_t size) {
+    auto* bytes = static_cast<unsigned char*>(out);
+    for (size_t i = 0; i < size; ++i) bytes[i] = static_cast<unsigned char>(bits >> (8 * (size - 1 - i)));
+}
+inline std::uint64_t loadBigEndian(void const* in, size_t size) {
+    auto const* bytes = static_cast<unsigned char const*>(in);
+    std::uint64_t bits = 0;
+    for (size_t i = 0; i < size; ++i) bits = bits << 8 | bytes[i];
+    return bits;
+}
 // Throws unless buffer holds size bytes from index.
 void need(Octets const& buffer, size_t index, size_t size);
 // Appends the size low bytes of bits, most significant first when bigEndian.

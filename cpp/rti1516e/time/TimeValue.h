@@ -8,6 +8,8 @@
 #include <RTI/Exception.h>
 #include <RTI/VariableLengthData.h>
 
+#include "../encoding/Octets.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -63,8 +65,7 @@ size_t encode8(V value, void* buffer, size_t bufferSize) {
     if (bufferSize < 8) throw rti1516e::CouldNotEncode(L"a logical time needs 8 bytes");
     std::uint64_t bits;
     std::memcpy(&bits, &value, 8);
-    auto* out = static_cast<unsigned char*>(buffer);
-    for (int i = 0; i < 8; ++i) out[i] = static_cast<unsigned char>(bits >> (56 - 8 * i));
+    storeBigEndian(buffer, bits, 8);
     return 8;
 }
 
@@ -79,9 +80,7 @@ template <class V>
 V decode8(void const* buffer, size_t bufferSize) {
     if (bufferSize != 8)
         throw rti1516e::CouldNotDecode(L"a logical time is 8 bytes, not " + std::to_wstring(bufferSize));
-    auto const* in = static_cast<unsigned char const*>(buffer);
-    std::uint64_t bits = 0;
-    for (int i = 0; i < 8; ++i) bits = bits << 8 | in[i];
+    const std::uint64_t bits = loadBigEndian(buffer, 8);
     V value;
     std::memcpy(&value, &bits, 8);
     return value;

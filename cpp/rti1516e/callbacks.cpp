@@ -34,7 +34,9 @@ struct Deliver {
     std::map<std::uint32_t, std::set<std::uint32_t>>& divesting;
     std::map<std::uint32_t, std::set<std::uint32_t>>& release_asked;
     std::string const& federate_name;
-    TimeOut time;
+    bool integer_time;
+    // A timestamped callback's time, made only where there is one.
+    TimeOut time() const { return TimeOut(integer_time); }
 
     static AttributeHandleSet attrs(wire::Handles const& a) { return handles<AttributeHandle>(a); }
     // A reflection or an interaction: `call` gets the values, the tag, how they were sent, and with a timestamp
@@ -46,7 +48,7 @@ struct Deliver {
         const auto order = static_cast<OrderType>(m.order);
         const auto transport = static_cast<TransportationType>(m.transport);
         if (m.time)
-            call(values, tag_of(m.tag), order, transport, time(*m.time), order, retraction(m.sender, m.serial), info);
+            call(values, tag_of(m.tag), order, transport, time()(*m.time), order, retraction(m.sender, m.serial), info);
         else
             call(values, tag_of(m.tag), order, transport, info);
     }
@@ -101,7 +103,7 @@ struct Deliver {
         const auto object = handle<ObjectInstanceHandle>(m.object);
         const SupplementalRemoveInfo info(handle<FederateHandle>(m.sender));
         if (m.time)
-            fa.removeObjectInstance(object, tag_of(m.tag), TIMESTAMP, time(*m.time), TIMESTAMP,
+            fa.removeObjectInstance(object, tag_of(m.tag), TIMESTAMP, time()(*m.time), TIMESTAMP,
                                     retraction(m.sender, m.serial), info);
         else
             fa.removeObjectInstance(object, tag_of(m.tag), RECEIVE, info);
@@ -163,16 +165,16 @@ struct Deliver {
             default: fa.attributeIsNotOwned(object, attribute); break;
         }
     }
-    void operator()(wire::TimeRegulationEnabled& m) { fa.timeRegulationEnabled(time(m.time)); }
-    void operator()(wire::TimeConstrainedEnabled& m) { fa.timeConstrainedEnabled(time(m.time)); }
-    void operator()(wire::TimeAdvanceGrant& m) { fa.timeAdvanceGrant(time(m.time)); }
+    void operator()(wire::TimeRegulationEnabled& m) { fa.timeRegulationEnabled(time()(m.time)); }
+    void operator()(wire::TimeConstrainedEnabled& m) { fa.timeConstrainedEnabled(time()(m.time)); }
+    void operator()(wire::TimeAdvanceGrant& m) { fa.timeAdvanceGrant(time()(m.time)); }
     void operator()(wire::RequestRetraction& m) { fa.requestRetraction(retraction(m.sender, m.serial)); }
     void unexpected() { raise("RTIinternalError", "unexpected message from the gateway"); }
 };
 
 void Ambassador::deliver(wire::Message& message) {
     Deliver d{*federate_, sync_sets_, reserved_, divesting_, release_asked_, federate_name_,
-              TimeOut(integer_time_)};
+              integer_time_};
     wire::dispatch_callback<void>(message, d);
 }
 

@@ -115,6 +115,14 @@ struct ToCallback {
         return named(m.success ? C::objectInstanceNameReservationSucceeded : C::objectInstanceNameReservationFailed,
                      to_str(m.names.empty() ? std::string() : m.names.front()));
     }
+    Named operator()(const wire::AttributeTransportationReported& m) const {
+        return named(C::reportAttributeTransportationType, ObjectHandle{m.object}, AttributeHandle{m.attribute},
+                     TransportationHandle{m.transport});
+    }
+    Named operator()(const wire::InteractionTransportationReported& m) const {
+        return named(C::reportInteractionTransportationType, FederateHandle{m.federate},
+                     InteractionClassHandle{m.interaction_class}, TransportationHandle{m.transport});
+    }
     Named operator()(const wire::TimeRegulationEnabled& m) const { return named(C::timeRegulationEnabled, m.time); }
     Named operator()(const wire::TimeConstrainedEnabled& m) const { return named(C::timeConstrainedEnabled, m.time); }
     Named operator()(const wire::TimeAdvanceGrant& m) const { return named(C::timeAdvanceGrant, m.time); }

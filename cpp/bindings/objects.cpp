@@ -63,7 +63,11 @@ void bind_objects(Ambassador& rtia) {
         .def("changeAttributeOrderType", forward<ObjectHandle, std::vector<AttributeHandle>, OrderingHandle>(&Client::change_attribute_order),
              py::arg("object"), py::arg("attributes"), py::arg("orderingHandle"))
         .def("changeInteractionOrderType", forward<InteractionClassHandle, OrderingHandle>(&Client::change_interaction_order),
-             py::arg("interactionClass"), py::arg("orderingHandle"));
+             py::arg("interactionClass"), py::arg("orderingHandle"))
+        // IEEE 1516-2010's transportation queries, for hlacore.rti1516e
+        .def("_query_attribute_transportation", request<wire::QueryAttributeTransportation, ObjectHandle, AttributeHandle>())
+        .def("_query_interaction_transportation",
+             request<wire::QueryInteractionTransportation, FederateHandle, InteractionClassHandle>());
 }
 
 }  // namespace hlacore::bindings

@@ -36,7 +36,11 @@ void bind_save_restore(Ambassador& rtia) {
                  c.request_federation_restore(l);
              }, py::arg("label"))
         .def("federateRestoreComplete", [](Client& c) { c.federate_restore_complete(true); })
-        .def("federateRestoreNotComplete", [](Client& c) { c.federate_restore_complete(false); });
+        .def("federateRestoreNotComplete", [](Client& c) { c.federate_restore_complete(false); })
+        // IEEE 1516-2010's, for hlacore.rti1516e.
+        .def("_abort_save", &Client::abort_federation_save, py::call_guard<py::gil_scoped_release>())
+        .def("_abort_restore", &Client::abort_federation_restore, py::call_guard<py::gil_scoped_release>())
+        .def("_failure_reason", &Client::last_failure_reason);
 }
 
 }  // namespace hlacore::bindings

@@ -148,6 +148,9 @@ struct ToMessage {
         out.retraction = EventRetraction{m.sender, m.serial};
         return out;
     }
+    // CERTI's protocol has no transportation queries: the rtia never asks.
+    Message operator()(wire::AttributeTransportationReported&) { return unexpected(); }
+    Message operator()(wire::InteractionTransportationReported&) { return unexpected(); }
     Message unexpected() { raise(ErrorCode::RTIinternalError, "unexpected message from the gateway"); }
 
 private:

@@ -109,7 +109,7 @@ MESSAGES = {
     "RequestFederationRestore": u32(10) + s("snap"),
     "FederateRestoreComplete": b(False),
     "InitiateFederateSave": s("snap"),
-    "FederationSaved": b(True),
+    "FederationSaved": b(False) + u8(5),
     "RestoreRequestAnswer": s("snap") + b(False) + s("no save labelled 'snap'"),
     "FederationRestoreBegun": b"",
     # SavedTime: time, lookahead, regulating, constrained, asynchronous, strict, receives above time, promise.
@@ -119,7 +119,7 @@ MESSAGES = {
     # DDM: region 3 in space 1, subscribed for class 2 and interaction 4, associated with object 7's attribute 1.
     + u32(1) + u32(3) + u32(1) + hs([10, 20, 0, 100]) + u32(1) + u32(2) + u32(3) + hs([1])
     + u32(1) + u32(4) + u32(3) + u32(1) + u32(7) + u32(1) + u32(3) + u32(3),
-    "FederationRestored": b(True),
+    "FederationRestored": b(False) + u8(1),
     "FederationJoined": u32(3) + u32(2) + s(FED) + s("robot.fed") + u8(0),
     "ObjectRegistered": u32(5) + u32(7) + s("robot-1"),
     "AttributesReleased": u32(6) + hs([1, 2]),
@@ -132,6 +132,12 @@ MESSAGES = {
     "ReserveObjectNames": b(True) + u32(2) + s("r1") + s("r2"),
     "ReleaseObjectNames": u32(1) + s("r1"),
     "ObjectNamesReserved": b(False) + b(True) + u32(1) + s("r1"),
+    "AbortFederationSave": u32(11),
+    "AbortFederationRestore": u32(12),
+    "QueryAttributeTransportation": u32(7) + u32(1),
+    "QueryInteractionTransportation": u32(2) + u32(4),
+    "AttributeTransportationReported": u32(7) + u32(1) + u8(2),
+    "InteractionTransportationReported": u32(2) + u32(4) + u8(1),
 }
 STREAMS = {
     "stream-join-publish-update": ["Hello", "JoinFederation", "PublishObjectClass", "RegisterObject", "UpdateAttributes"],

@@ -59,7 +59,10 @@ struct Deliver {
     void operator()(wire::TimeConstrainedEnabled& m) { fa.timeConstrainedEnabled(RTIfedTime(m.time)); }
     void operator()(wire::TimeAdvanceGrant& m) { fa.timeAdvanceGrant(RTIfedTime(m.time)); }
     void operator()(wire::RequestRetraction& m) { fa.requestRetraction(retraction(m.sender, m.serial)); }
-    void operator()(wire::ObjectNamesReserved&) {}  // HLA 1.3 has no name reservation: never asked for
+    // HLA 1.3 has no name reservation nor transportation queries: never asked for.
+    void operator()(wire::ObjectNamesReserved&) {}
+    void operator()(wire::AttributeTransportationReported&) {}
+    void operator()(wire::InteractionTransportationReported&) {}
 #define HLACORE_X(message, callback) \
     void operator()(wire::message& m) { fa.callback(m.object, AttributeHandles(std::move(m.attributes))); }
     HLACORE_OBJECT_ATTRIBUTE_CALLBACKS(HLACORE_X)

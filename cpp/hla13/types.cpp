@@ -51,6 +51,8 @@ namespace {
 struct Exceptions : RTI {
     using GatewayNotResponding = RTIinternalError;
     using AuthenticationFailed = RTIinternalError;
+    using SaveNotInProgress = RTIinternalError;
+    using RestoreNotInProgress = RTIinternalError;
 };
 }  // namespace
 

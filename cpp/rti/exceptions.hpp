@@ -90,7 +90,10 @@
     X(ValueLengthExceeded)                      \
     /* hlacore's own, each a subclass of RTIinternalError in Python (PyHLA code catching that still works) */ \
     X(GatewayNotResponding)                     \
-    X(AuthenticationFailed)
+    X(AuthenticationFailed)                     \
+    /* IEEE 1516-2010's aborts with no save or restore under way */ \
+    X(SaveNotInProgress)                        \
+    X(RestoreNotInProgress)
 
 namespace hlacore {
 

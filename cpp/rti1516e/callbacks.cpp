@@ -69,7 +69,7 @@ struct Deliver {
     void operator()(wire::InitiateFederateSave& m) { fa.initiateFederateSave(wide(m.label)); }
     void operator()(wire::FederationSaved& m) {
         if (m.success) fa.federationSaved();
-        else fa.federationNotSaved(RTI_UNABLE_TO_SAVE);  // the core does not say why
+        else fa.federationNotSaved(static_cast<SaveFailureReason>(m.reason));  // numbered alike (wire/messages.hpp)
     }
     void operator()(wire::RestoreRequestAnswer& m) {
         if (m.succeeded) fa.requestFederationRestoreSucceeded(wide(m.label));
@@ -81,7 +81,7 @@ struct Deliver {
     }
     void operator()(wire::FederationRestored& m) {
         if (m.success) fa.federationRestored();
-        else fa.federationNotRestored(RTI_UNABLE_TO_RESTORE);
+        else fa.federationNotRestored(static_cast<RestoreFailureReason>(m.reason));
     }
     void operator()(wire::StartRegistration& m) { fa.startRegistrationForObjectClass(handle<ObjectClassHandle>(m.object_class)); }
     void operator()(wire::StopRegistration& m) { fa.stopRegistrationForObjectClass(handle<ObjectClassHandle>(m.object_class)); }
@@ -120,6 +120,15 @@ struct Deliver {
     }
     void operator()(wire::TurnUpdatesOff& m) {
         fa.turnUpdatesOffForObjectInstance(handle<ObjectInstanceHandle>(m.object), attrs(m.attributes));
+    }
+    void operator()(wire::AttributeTransportationReported& m) {
+        fa.reportAttributeTransportationType(handle<ObjectInstanceHandle>(m.object), handle<AttributeHandle>(m.attribute),
+                                             static_cast<TransportationType>(m.transport));
+    }
+    void operator()(wire::InteractionTransportationReported& m) {
+        fa.reportInteractionTransportationType(handle<FederateHandle>(m.federate),
+                                               handle<InteractionClassHandle>(m.interaction_class),
+                                               static_cast<TransportationType>(m.transport));
     }
     void operator()(wire::ObjectNamesReserved& m) {
         std::set<std::wstring> names;

@@ -244,6 +244,10 @@ void Ambassador::federateSaveNotComplete() {
     });
 }
 
+void Ambassador::abortFederationSave() {
+    guarded([&] { client().abort_federation_save(); });
+}
+
 void Ambassador::requestFederationRestore(std::wstring const& label) {
     guarded([&] { client().request_federation_restore(utf8(label)); });
 }
@@ -254,6 +258,10 @@ void Ambassador::federateRestoreComplete() {
 
 void Ambassador::federateRestoreNotComplete() {
     guarded([&] { client().federate_restore_complete(false); });
+}
+
+void Ambassador::abortFederationRestore() {
+    guarded([&] { client().abort_federation_restore(); });
 }
 
 }  // namespace hlacore::rti1516e

@@ -146,6 +146,14 @@ void Ambassador::requestInteractionTransportationTypeChange(InteractionClassHand
     });
 }
 
+void Ambassador::queryAttributeTransportationType(ObjectInstanceHandle object, AttributeHandle attribute) {
+    guarded([&] { client().request(wire::QueryAttributeTransportation{core(object), core(attribute)}); });
+}
+
+void Ambassador::queryInteractionTransportationType(FederateHandle federate, InteractionClassHandle cls) {
+    guarded([&] { client().request(wire::QueryInteractionTransportation{core(federate), core(cls)}); });
+}
+
 void Ambassador::changeAttributeOrderType(ObjectInstanceHandle object, AttributeHandleSet const& attributes,
                                           OrderType type) {
     guarded([&] { client().change_attribute_order(core(object), cores(attributes), order_of(type)); });

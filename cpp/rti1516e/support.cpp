@@ -29,18 +29,6 @@ unsigned long long number(VariableLengthData const& encoded, size_t length) {
 
 // ---- the services the core does not serve yet ----
 
-void Ambassador::abortFederationSave() {
-    guarded([] { not_served("abortFederationSave", "the core's saves run to their end"); });
-}
-void Ambassador::abortFederationRestore() {
-    guarded([] { not_served("abortFederationRestore", "the core's restores run to their end"); });
-}
-void Ambassador::queryAttributeTransportationType(ObjectInstanceHandle, AttributeHandle) {
-    guarded([] { not_served("queryAttributeTransportationType", "the core does not report another's transportation"); });
-}
-void Ambassador::queryInteractionTransportationType(FederateHandle, InteractionClassHandle) {
-    guarded([] { not_served("queryInteractionTransportationType", "the core does not report another's transportation"); });
-}
 double Ambassador::getUpdateRateValue(std::wstring const&) {
     return guarded([]() -> double { not_served("getUpdateRateValue", "the FOM's update rates are not read yet"); });
 }

@@ -5,7 +5,7 @@ hlacore native core: gateway, client connection, FED parser
 from __future__ import annotations
 import collections.abc
 import typing
-__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ClientSettings', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'client_options', 'client_settings', 'fom_bundle', 'gateway_options', 'parse_fed', 'parse_fom_modules']
+__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ClientSettings', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'client_options', 'client_settings', 'fom_bundle', 'gateway_options', 'parse_fed', 'parse_fom_modules']
 class RTIexception(Exception):
     """
     Base of every HLA 1.3 exception raised by hlacore.
@@ -333,6 +333,14 @@ class GatewayNotResponding(RTIinternalError):
 class AuthenticationFailed(RTIinternalError):
     """
     hlacore's exception AuthenticationFailed, a kind of RTIinternalError.
+    """
+class SaveNotInProgress(RTIinternalError):
+    """
+    hlacore's exception SaveNotInProgress, a kind of RTIinternalError.
+    """
+class RestoreNotInProgress(RTIinternalError):
+    """
+    hlacore's exception RestoreNotInProgress, a kind of RTIinternalError.
     """
 class ObjectClassHandle:
     """
@@ -748,6 +756,10 @@ class RTIAmbassadorBase:
             """
     def __init__(self, settings: ClientSettings) -> None:
         ...
+    def _abort_restore(self) -> None:
+        ...
+    def _abort_save(self) -> None:
+        ...
     def _create(self, name: str, fed_name: str, fed_text: str, time_type: typing.SupportsInt | typing.SupportsIndex = 0) -> None:
         ...
     def _datagram_fileno(self) -> int:
@@ -755,6 +767,8 @@ class RTIAmbassadorBase:
     def _dimension_upper_bound(self, arg0: DimensionHandle, arg1: SpaceHandle) -> int:
         ...
     def _dispatch(self, ambassador: typing.Any, stop_after_grant: bool, max_seconds: typing.SupportsFloat | typing.SupportsIndex) -> int:
+        ...
+    def _failure_reason(self) -> int:
         ...
     def _federate_handle(self) -> FederateHandle:
         ...
@@ -767,6 +781,10 @@ class RTIAmbassadorBase:
     def _lowest_sendable_time(self) -> float:
         ...
     def _poll(self) -> None:
+        ...
+    def _query_attribute_transportation(self, arg0: ObjectHandle, arg1: AttributeHandle) -> None:
+        ...
+    def _query_interaction_transportation(self, arg0: FederateHandle, arg1: InteractionClassHandle) -> None:
         ...
     def _release_names(self, names: collections.abc.Sequence[str]) -> None:
         ...

@@ -5,8 +5,9 @@ them and the same classes are reachable as ``hlacore.rti.<Name>``. The list is d
 (``HLACORE_EXCEPTIONS`` in ``cpp/rti/exceptions.hpp``, where the position is the wire code); this module
 names the classes statically so that type checkers and readers see them (tests/rti/test_exceptions.py checks
 that it matches the C++ list exactly). ``ErrorReadingFED`` carries ``file``, ``line`` and ``column`` of a
-``.fed`` error. hlacore's own exceptions (``GatewayNotResponding``, ``AuthenticationFailed``) are subclasses
-of :class:`~hlacore.rti.RTIinternalError`, so code written for PyHLA that catches that still catches them.
+``.fed`` error. hlacore's own exceptions (``GatewayNotResponding``, ``AuthenticationFailed``, and
+``SaveNotInProgress`` and ``RestoreNotInProgress`` of IEEE 1516-2010's aborts) are subclasses of
+:class:`~hlacore.rti.RTIinternalError`, so code written for PyHLA that catches that still catches them.
 """
 
 from __future__ import annotations
@@ -97,6 +98,8 @@ ValueLengthExceeded = _core.ValueLengthExceeded
 # hlacore's own, each a subclass of RTIinternalError
 GatewayNotResponding = _core.GatewayNotResponding
 AuthenticationFailed = _core.AuthenticationFailed
+SaveNotInProgress = _core.SaveNotInProgress
+RestoreNotInProgress = _core.RestoreNotInProgress
 
 __all__ = [
     "RTIexception",
@@ -181,4 +184,6 @@ __all__ = [
     "ValueLengthExceeded",
     "GatewayNotResponding",
     "AuthenticationFailed",
+    "SaveNotInProgress",
+    "RestoreNotInProgress",
 ]

@@ -217,12 +217,23 @@ def objects(a: Federate, b: Federate, w: World) -> None:
     a.wait("confirmAttributeTransportationTypeChange", v1, {w.speed}, rti1516e.BEST_EFFORT)
     a.rtia.updateAttributeValues(v1, {w.speed: b"fast"}, b"t3")
     b.wait("reflectAttributeValues", v1, {w.speed: b"fast"}, b"t3", rti1516e.RECEIVE, rti1516e.BEST_EFFORT)
+    # Reported to another federate asking: as changed, else the FOM's.
+    b.call.queryAttributeTransportationType(v1, w.speed)
+    b.wait("reportAttributeTransportationType", v1, w.speed, rti1516e.BEST_EFFORT)
+    b.rtia.queryAttributeTransportationType(v1, w.position)
+    b.wait("reportAttributeTransportationType", v1, w.position, rti1516e.RELIABLE)
+    a.rtia.requestInteractionTransportationTypeChange(w.command, rti1516e.BEST_EFFORT)
+    a.settle()  # the gateway has the change before b asks
+    b.call.queryInteractionTransportationType(w.ha, w.command)
+    b.wait("reportInteractionTransportationType", w.ha, w.command, rti1516e.BEST_EFFORT)
     a.call.requestInteractionTransportationTypeChange(w.command, rti1516e.RELIABLE)
     a.wait("confirmInteractionTransportationTypeChange", w.command, rti1516e.RELIABLE)
-    for refused in (lambda: a.call.queryAttributeTransportationType(v1, w.speed),
-                    lambda: a.call.queryInteractionTransportationType(w.hb, w.command)):
-        with pytest.raises(rti1516e.RTIinternalError, match=NOT_SERVED):
-            refused()
+    a.settle()
+    b.rtia.queryInteractionTransportationType(w.ha, w.command)
+    b.until(lambda: len(b.amb.named("reportInteractionTransportationType")) == 2)
+    assert b.amb.last("reportInteractionTransportationType") == (w.ha, w.command, rti1516e.RELIABLE)
+    with pytest.raises(rti1516e.ObjectInstanceNotKnown):
+        b.rtia.queryAttributeTransportationType(rti1516e.ObjectInstanceHandle(), w.speed)
 
     a.call.deleteObjectInstance(v2, b"bye")
     b.wait("removeObjectInstance", v2, b"bye", rti1516e.RECEIVE)
@@ -443,7 +454,7 @@ def sync_save_restore(a: Federate, b: Federate, w: World) -> None:
     b.rtia.federateSaveBegun()
     b.rtia.federateSaveComplete()
     both("federationSaved")
-    with pytest.raises(rti1516e.RTIinternalError, match=NOT_SERVED):
+    with pytest.raises(rti1516e.SaveNotInProgress):
         a.call.abortFederationSave()
     a.call.requestFederationSave("s2", 50.0)
     both("initiateFederateSave", "s2")
@@ -451,7 +462,14 @@ def sync_save_restore(a: Federate, b: Federate, w: World) -> None:
     a.rtia.federateSaveComplete()
     b.rtia.federateSaveBegun()
     b.call.federateSaveNotComplete()
-    both("federationNotSaved", rti1516e.RTI_UNABLE_TO_SAVE)
+    both("federationNotSaved", rti1516e.FEDERATE_REPORTED_FAILURE_DURING_SAVE)
+    # A save aborted by b while a has answered: both hear it was aborted.
+    a.rtia.requestFederationSave("s3")
+    both("initiateFederateSave", "s3")
+    a.rtia.federateSaveBegun()
+    a.rtia.federateSaveComplete()
+    b.rtia.abortFederationSave()
+    both("federationNotSaved", rti1516e.SAVE_ABORTED)
 
     a.call.requestFederationRestore("nothing")
     a.wait("requestFederationRestoreFailed", "nothing")
@@ -465,14 +483,20 @@ def sync_save_restore(a: Federate, b: Federate, w: World) -> None:
                                    w.hb: rti1516e.FEDERATE_RESTORING}
     b.rtia.federateRestoreComplete()
     both("federationRestored")
-    with pytest.raises(rti1516e.RTIinternalError, match=NOT_SERVED):
+    with pytest.raises(rti1516e.RestoreNotInProgress):
         a.call.abortFederationRestore()
-    a.rtia.requestFederationRestore("s1")
-    for f in (a, b):
-        f.until(lambda: len(f.amb.named("initiateFederateRestore")) == 2)
-    a.rtia.federateRestoreComplete()
-    b.call.federateRestoreNotComplete()
-    both("federationNotRestored", rti1516e.RTI_UNABLE_TO_RESTORE)
+
+    def restore_again(restores: int, b_ends: Callable[[], None]) -> None:
+        """s1 restored again, a answering, then b ending it."""
+        a.rtia.requestFederationRestore("s1")
+        for f in (a, b):
+            f.until(lambda: len(f.amb.named("initiateFederateRestore")) == restores)
+        a.rtia.federateRestoreComplete()
+        b_ends()
+    restore_again(2, b.call.federateRestoreNotComplete)
+    both("federationNotRestored", rti1516e.FEDERATE_REPORTED_FAILURE_DURING_RESTORE)
+    restore_again(3, b.rtia.abortFederationRestore)  # aborted by b while a has answered
+    both("federationNotRestored", rti1516e.RESTORE_ABORTED)
 
 
 def callbacks(a: Federate, w: World) -> None:

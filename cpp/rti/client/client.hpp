@@ -187,6 +187,13 @@ public:
     void federate_save_complete(bool success);
     void request_federation_restore(const std::string& label);
     void federate_restore_complete(bool success);
+    // IEEE 1516-2010: end the save or restore under way; every federate gets federationNotSaved or
+    // federationNotRestored, aborted. The gateway raises SaveNotInProgress, RestoreNotInProgress.
+    void abort_federation_save();
+    void abort_federation_restore();
+    // Why the last save or restore delivered failed (wire::SaveFailure, wire::RestoreFailure): for a front
+    // end whose callback says why, as IEEE 1516-2010's do.
+    std::uint8_t last_failure_reason() const;
 
     // ---- support services (local: answered from the FOM and what this federate knows) ----
     fom::Handle object_class_handle(const std::string& name) const;
@@ -275,6 +282,7 @@ private:
         SavePhase save = SavePhase::None;
         RestorePhase restore = RestorePhase::None;
         std::string label;  // of the save under way
+        std::uint8_t failure = 0;  // why the last federationNotSaved or federationNotRestored delivered failed
     };
     using SavePhase = SaveRestoreState::SavePhase;
     using RestorePhase = SaveRestoreState::RestorePhase;

@@ -208,6 +208,10 @@ void Client::change_interaction_delivery(fom::Handle cls, std::uint8_t order, st
     send(wire::ChangeInteractionDelivery{cls, order, transport});
 }
 
+// IEEE 1516-2010's transportation queries, answered by a report callback.
+void Client::check(const wire::QueryAttributeTransportation& m) { ownership_object(m.object, {m.attribute}); }
+void Client::check(const wire::QueryInteractionTransportation& m) { defined_interaction_class(m.interaction_class); }
+
 // Discoveries and removals count at once, before tick() delivers them: later calls check against them.
 bool Client::arrived(wire::DiscoverObject& d) {
     objects_[d.object] = make_local_object(d.object_class, d.name);

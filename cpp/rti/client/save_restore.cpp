@@ -93,19 +93,48 @@ void Client::federate_restore_complete(bool success) {
     send(wire::FederateRestoreComplete{success});
 }
 
+void Client::abort_federation_save() {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    const auto id = next_request();
+    call(wire::AbortFederationSave{id}, id);
+}
+
+void Client::abort_federation_restore() {
+    {
+        std::lock_guard<std::mutex> lock(mu_);
+        require_joined();
+    }
+    const auto id = next_request();
+    call(wire::AbortFederationRestore{id}, id);
+}
+
+std::uint8_t Client::last_failure_reason() const {
+    std::lock_guard<std::mutex> lock(mu_);
+    return save_restore_.failure;
+}
+
 void Client::delivered(const wire::InitiateFederateSave& m) {
     save_restore_.save = SavePhase::Initiated;
     save_restore_.label = m.label;
 }
 
-void Client::delivered(const wire::FederationSaved&) { save_restore_.save = SavePhase::None; }
+void Client::delivered(const wire::FederationSaved& m) {
+    save_restore_.save = SavePhase::None;
+    save_restore_.failure = m.reason;
+}
 
 void Client::delivered(const wire::FederationRestoreBegun&) {
     save_restore_.restore = RestorePhase::Begun;
     save_restore_.save = SavePhase::None;
 }
 
-void Client::delivered(const wire::FederationRestored&) { save_restore_.restore = RestorePhase::None; }
+void Client::delivered(const wire::FederationRestored& m) {
+    save_restore_.restore = RestorePhase::None;
+    save_restore_.failure = m.reason;
+}
 
 void Client::delivered(const wire::InitiateFederateRestore& m) {
     save_restore_.restore = RestorePhase::Initiated;

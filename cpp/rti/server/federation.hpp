@@ -92,6 +92,10 @@ public:
     // requestFederationRestore: throws SaveInProgress, RestoreInProgress; a save that is missing, corrupt
     // or does not fit the joined federates is answered with requestFederationRestoreFailed.
     void request_restore(FederateHandle federate, const std::string& label);
+    // IEEE 1516-2010's abortFederationSave and abortFederationRestore: every federate is told the save or
+    // restore failed, aborted. Throw SaveNotInProgress, RestoreNotInProgress.
+    void abort_save(FederateHandle federate);
+    void abort_restore(FederateHandle federate);
     // Joining and resigning are refused during a save or a restore (SaveInProgress, RestoreInProgress).
     void check_membership_change(const char* service) const;
 
@@ -239,6 +243,8 @@ private:
     void cap_requests_at_save_time();
     void finish_save_if_answered();
     void finish_restore_if_answered();
+    void finish_save(const wire::FederationSaved& done);
+    void finish_restore(const wire::FederationRestored& done);
     std::string encode_snapshot() const;
     Snapshot decode_snapshot(const std::string& bytes) const;  // throws wire::WireError
     // Hooks into the rest of the federation: grants and deliveries wait while every federate saves or

@@ -159,6 +159,14 @@ void Gateway::serve(Connection& c, const wire::RequestFederationRestore& m) {
     });
 }
 
+void Gateway::serve(Connection& c, const wire::AbortFederationSave& m) {
+    answer(c, m.request, [&] { joined(c).abort_save(c.federate); });
+}
+
+void Gateway::serve(Connection& c, const wire::AbortFederationRestore& m) {
+    answer(c, m.request, [&] { joined(c).abort_restore(c.federate); });
+}
+
 void Gateway::serve(Connection& c, const wire::ReleaseResponse& m) {
     answer(c, m.request, [&] {
         return wire::AttributesReleased{m.request, joined(c).release_response(c.federate, m)};

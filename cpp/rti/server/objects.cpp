@@ -412,4 +412,32 @@ void Federation::on(FederateHandle from, const wire::ChangeInteractionDelivery& 
     if (transport) f.interaction_transport[m.interaction_class] = *transport;
 }
 
+// IEEE 1516-2010's transportation queries: what an attribute's updates travel by (its owner's change, else
+// the FOM's), and a federate's interactions of a class (its change, else the FOM's; the FOM's for a federate
+// not joined).
+void Federation::on(FederateHandle from, const wire::QueryAttributeTransportation& m) {
+    federate(from);
+    const ObjectInstance* obj = object(m.object);
+    if (!obj) return;  // deleted meanwhile
+    const auto& cls = object_class(obj->object_class);
+    const fom::Attribute* attr = cls.attribute(m.attribute);
+    if (!attr)
+        throw WireError("attribute handle " + std::to_string(m.attribute) + " is not defined for class '" +
+                        cls.qualified_name + "'");
+    const auto changed = obj->transport.find(m.attribute);
+    const fom::Transport transport = changed != obj->transport.end() ? changed->second : attr->transport;
+    outbox_.send(from, wire::AttributeTransportationReported{m.object, m.attribute, static_cast<std::uint8_t>(transport)});
+}
+
+void Federation::on(FederateHandle from, const wire::QueryInteractionTransportation& m) {
+    federate(from);
+    fom::Transport transport = interaction_class(m.interaction_class).transport;
+    if (const auto f = federates_.find(m.federate); f != federates_.end()) {
+        const auto changed = f->second.interaction_transport.find(m.interaction_class);
+        if (changed != f->second.interaction_transport.end()) transport = changed->second;
+    }
+    outbox_.send(from, wire::InteractionTransportationReported{m.federate, m.interaction_class,
+                                                               static_cast<std::uint8_t>(transport)});
+}
+
 }  // namespace hlacore

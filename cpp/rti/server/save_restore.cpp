@@ -201,6 +201,14 @@ void SaveRestore::check_idle(const char* service) const {
                        std::string(service) + " refused: the federation restore '" + restore.label + "' is in progress");
 }
 
+void SaveRestore::check_saving() const {
+    if (!save.active) throw RtiError(ErrorCode::SaveNotInProgress, "no federation save is in progress");
+}
+
+void SaveRestore::check_restoring() const {
+    if (!restore.active) throw RtiError(ErrorCode::RestoreNotInProgress, "no federation restore is in progress");
+}
+
 void SaveRestore::check_not_restoring() const {
     if (restore.active)
         throw RtiError(ErrorCode::RestoreInProgress, "the federation restore '" + restore.label + "' is in progress");
@@ -290,13 +298,19 @@ void Federation::on(FederateHandle from, const wire::FederateSaveComplete& m) {
     finish_save_if_answered();
 }
 
-// §4.16: federationSaved once every federate saved, federationNotSaved if one did not (or left).
+// §4.16: federationSaved once every federate saved, federationNotSaved if one did not (or left), or the
+// gateway could not keep the save.
 void Federation::finish_save_if_answered() {
     const auto answered = outcome(save_restore_.save);
     if (!answered) return;
-    bool success = *answered;
-    if (success) success = save_restore_.keep(name_, save_restore_.save.label, encode_snapshot());
-    end_run(save_restore_.save, wire::FederationSaved{success});
+    if (!*answered) return finish_save({false, save_restore_.save.reason()});
+    if (!save_restore_.keep(name_, save_restore_.save.label, encode_snapshot()))
+        return finish_save({false, static_cast<std::uint8_t>(wire::SaveFailure::RtiUnable)});
+    finish_save({});
+}
+
+void Federation::finish_save(const wire::FederationSaved& done) {
+    end_run(save_restore_.save, done);
     release_time();
 }
 
@@ -649,11 +663,29 @@ void Federation::on(FederateHandle from, const wire::FederateRestoreComplete& m)
 void Federation::finish_restore_if_answered() {
     const auto answered = outcome(save_restore_.restore);
     if (!answered) return;
-    end_run(save_restore_.restore, wire::FederationRestored{*answered});
+    finish_restore({*answered, *answered ? std::uint8_t{0} : save_restore_.restore.reason()});
+}
+
+void Federation::finish_restore(const wire::FederationRestored& done) {
+    end_run(save_restore_.restore, done);
     update_advisories();
     count_scope_watchers();
     refresh_scope();  // from the scope and relevance already announced in the save
     release_time();
+}
+
+// ---- IEEE 1516-2010's aborts (an aborted restore leaves the gateway's state the save's, as a failed one does) ----
+
+void Federation::abort_save(FederateHandle from) {
+    federate(from);
+    save_restore_.check_saving();
+    finish_save({false, static_cast<std::uint8_t>(wire::SaveFailure::Aborted)});
+}
+
+void Federation::abort_restore(FederateHandle from) {
+    federate(from);
+    save_restore_.check_restoring();
+    finish_restore({false, static_cast<std::uint8_t>(wire::RestoreFailure::Aborted)});
 }
 
 // ---- introspection ----

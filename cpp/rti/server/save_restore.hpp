@@ -28,6 +28,10 @@ public:
             held.erase(federate);
             failed = true;
         }
+        // Why it did not succeed: a federate left, else one reported a failure (numbered alike for a restore).
+        std::uint8_t reason() const {
+            return static_cast<std::uint8_t>(failed ? wire::SaveFailure::FederateResigned : wire::SaveFailure::FederateReported);
+        }
     };
     struct SaveRun : Run {
         wire::OptionalTime time;        // a timed save
@@ -40,6 +44,9 @@ public:
     std::map<std::string, std::string> saves;  // label -> encoded save, this gateway's run
     std::string error;                         // why the gateway could not keep the last save, if it could not
 
+    // SaveNotInProgress or RestoreNotInProgress unless one runs (IEEE 1516-2010's aborts).
+    void check_saving() const;
+    void check_restoring() const;
     // SaveInProgress or RestoreInProgress, naming `service`, while a save or a restore runs.
     void check_idle(const char* service) const;
     // RestoreInProgress while a restore runs (registering an object: the restore replaces the objects).

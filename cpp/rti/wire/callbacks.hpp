@@ -35,10 +35,11 @@ namespace hlacore::wire {
     X(timeRegulationEnabled) X(timeConstrainedEnabled) X(timeAdvanceGrant) X(requestRetraction)
 
 // The callbacks only IEEE 1516-2010 has, which no HLA 1.3 federate asks for: the object instance names
-// (§6.3, §6.6), delivered to hlacore.rti1516e's adapter by the binding.
+// (§6.3, §6.6) and the transportation reports, delivered to hlacore.rti1516e's adapter by the binding.
 #define HLACORE_CALLBACKS_1516(X)                                                                        \
     X(objectInstanceNameReservationSucceeded) X(objectInstanceNameReservationFailed)                     \
-    X(multipleObjectInstanceNameReservationSucceeded) X(multipleObjectInstanceNameReservationFailed)
+    X(multipleObjectInstanceNameReservationSucceeded) X(multipleObjectInstanceNameReservationFailed)     \
+    X(reportAttributeTransportationType) X(reportInteractionTransportationType)
 
 enum class Callback : std::size_t {
 #define HLACORE_X(name) name,
@@ -66,7 +67,7 @@ constexpr const char* callback_name(Callback c) { return kCallbackNames[static_c
     X(StartRegistration) X(StopRegistration) X(TurnInteractionsOn) X(TurnInteractionsOff)              \
     X(DiscoverObject) X(ReflectAttributes) X(ReceiveInteraction) X(RemoveObject) X(AttributesInScope)  \
     X(AttributesOutOfScope) X(ProvideAttributeValueUpdate) X(TurnUpdatesOn) X(TurnUpdatesOff)          \
-    X(ObjectNamesReserved)                                                                             \
+    X(ObjectNamesReserved) X(AttributeTransportationReported) X(InteractionTransportationReported)     \
     X(RequestOwnershipAssumption) X(DivestitureNotification) X(AcquisitionNotification)                \
     X(OwnershipUnavailable) X(RequestOwnershipRelease) X(ConfirmAcquisitionCancellation)               \
     X(OwnershipInformation)                                                                            \

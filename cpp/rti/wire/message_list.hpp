@@ -17,8 +17,9 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // (FederationJoined ... TimeQueried), Reply only for the others and for refusals; 10: StartRecording,
 // RecordedTopic and Recorded; 11: QueryStatus's events_after and instances; 12: CreateFederation's
 // time_semantics; 13: CreateFederation's and FederationJoined's time_type, the object instance names'
-// ReserveObjectNames, ReleaseObjectNames and ObjectNamesReserved
-constexpr std::uint16_t kProtocolVersion = 13;
+// ReserveObjectNames, ReleaseObjectNames and ObjectNamesReserved; 14: FederationSaved's and FederationRestored's
+// reason, AbortFederationSave, AbortFederationRestore and the transportation queries and reports
+constexpr std::uint16_t kProtocolVersion = 14;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -157,7 +158,15 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     /* object instance names (IEEE 1516-2010 §6.2-6.7): federate -> gateway, and the answer */ \
     X(ReserveObjectNames)            \
     X(ReleaseObjectNames)            \
-    X(ObjectNamesReserved)
+    X(ObjectNamesReserved)           \
+    /* IEEE 1516-2010's aborts of a save or a restore: federate -> gateway */ \
+    X(AbortFederationSave)           \
+    X(AbortFederationRestore)        \
+    /* IEEE 1516-2010's transportation queries: federate -> gateway, and the reports */ \
+    X(QueryAttributeTransportation)  \
+    X(QueryInteractionTransportation) \
+    X(AttributeTransportationReported) \
+    X(InteractionTransportationReported)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply or a result. Each has a `Gateway::serve(Connection&, const M&)` in
@@ -165,7 +174,8 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
 #define HLACORE_GATEWAY_SERVICES(X)                                                                    \
     X(CreateFederation) X(DestroyFederation) X(JoinFederation) X(ResignFederation) X(RegisterObject)   \
     X(RegisterObjectWithRegion) X(RequestFederationSave) X(RequestFederationRestore) X(ReleaseResponse) \
-    X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate) X(ClockProbe) X(DatagramPath) X(StartRecording)
+    X(QueryStatus) X(QueryTime) X(Ping) X(Authenticate) X(ClockProbe) X(DatagramPath) X(StartRecording) \
+    X(AbortFederationSave) X(AbortFederationRestore)
 
 // The gateway's answers to requests, each echoing the request's id in `request`: a Reply, or the result of a
 // request that has one. The client files them apart from callbacks, for the caller waiting on that id.
@@ -186,7 +196,8 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     /* objects */                                                                                      \
     X(UpdateAttributes) X(SendInteraction) X(DeleteObject) X(LocalDeleteObject) X(RequestObjectUpdate) \
     X(RequestClassUpdate) X(ChangeAttributeDelivery) X(ChangeInteractionDelivery)                      \
-    X(ReserveObjectNames) X(ReleaseObjectNames)                                                        \
+    X(ReserveObjectNames) X(ReleaseObjectNames) X(QueryAttributeTransportation)                        \
+    X(QueryInteractionTransportation)                                                                  \
     /* ownership */                                                                                    \
     X(UnconditionalDivestiture) X(NegotiatedDivestiture) X(CancelNegotiatedDivestiture)                \
     X(OwnershipAcquisition) X(OwnershipAcquisitionIfAvailable) X(CancelOwnershipAcquisition)           \
@@ -213,7 +224,7 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     X(SetAdvisorySwitch)                                                                               \
     /* objects */                                                                                      \
     X(LocalDeleteObject) X(RequestObjectUpdate) X(RequestClassUpdate) X(ReserveObjectNames)            \
-    X(ReleaseObjectNames)                                                                              \
+    X(ReleaseObjectNames) X(QueryAttributeTransportation) X(QueryInteractionTransportation)            \
     /* ownership */                                                                                    \
     X(CancelNegotiatedDivestiture) X(CancelOwnershipAcquisition) X(QueryOwnership)                     \
     /* regions */                                                                                      \

@@ -663,6 +663,35 @@ struct ChangeInteractionDelivery {
     std::uint8_t transport = 0;
     HLACORE_FIELDS(interaction_class, order, transport)
 };
+// IEEE 1516-2010's queries of the transportation in use: an attribute of an object (its owner's change, else
+// the FOM's), a federate's interactions of a class (that federate's change, else the FOM's). Each is
+// answered by its report, a callback.
+struct QueryAttributeTransportation {
+    HLACORE_TYPE(QueryAttributeTransportation)
+    std::uint32_t object = 0;
+    std::uint32_t attribute = 0;
+    HLACORE_FIELDS(object, attribute)
+};
+struct QueryInteractionTransportation {
+    HLACORE_TYPE(QueryInteractionTransportation)
+    std::uint32_t federate = 0;
+    std::uint32_t interaction_class = 0;
+    HLACORE_FIELDS(federate, interaction_class)
+};
+struct AttributeTransportationReported {  // reportAttributeTransportationType
+    HLACORE_TYPE(AttributeTransportationReported)
+    std::uint32_t object = 0;
+    std::uint32_t attribute = 0;
+    std::uint8_t transport = 0;
+    HLACORE_FIELDS(object, attribute, transport)
+};
+struct InteractionTransportationReported {  // reportInteractionTransportationType
+    HLACORE_TYPE(InteractionTransportationReported)
+    std::uint32_t federate = 0;
+    std::uint32_t interaction_class = 0;
+    std::uint8_t transport = 0;
+    HLACORE_FIELDS(federate, interaction_class, transport)
+};
 
 // ---- save/restore (HLA 1.3 §4.11-4.22; docs/save-restore.md) ----
 // Federate -> gateway. The two requests are answered with a Reply (SaveInProgress, RestoreInProgress,
@@ -691,16 +720,39 @@ struct FederateRestoreComplete {  // federateRestoreComplete, or federateRestore
     HLACORE_FIELDS(success)
 };
 
+// IEEE 1516-2010: ends the save or restore under way, federationNotSaved or federationNotRestored with the
+// reason Aborted at every federate; answered with a Reply (SaveNotInProgress, RestoreNotInProgress).
+struct AbortFederationSave {
+    HLACORE_TYPE(AbortFederationSave)
+    std::uint32_t request = 0;
+    HLACORE_FIELDS(request)
+};
+struct AbortFederationRestore {
+    HLACORE_TYPE(AbortFederationRestore)
+    std::uint32_t request = 0;
+    HLACORE_FIELDS(request)
+};
+
 // Gateway -> federate.
 struct InitiateFederateSave {
     HLACORE_TYPE(InitiateFederateSave)
     std::string label;
     HLACORE_FIELDS(label)
 };
-struct FederationSaved {  // federationSaved, or federationNotSaved when !success
+// Why a save or a restore failed, numbered as IEEE 1516-2010's SaveFailureReason and RestoreFailureReason
+// (HLA 1.3's federationNotSaved and federationNotRestored do not say).
+enum class SaveFailure : std::uint8_t {
+    RtiUnable = 0, FederateReported = 1, FederateResigned = 2, RtiDetected = 3, TimeCannotBeHonored = 4, Aborted = 5
+};
+enum class RestoreFailure : std::uint8_t { RtiUnable = 0, FederateReported = 1, FederateResigned = 2, RtiDetected = 3, Aborted = 4 };
+static_assert(static_cast<int>(SaveFailure::FederateResigned) == static_cast<int>(RestoreFailure::FederateResigned) &&
+              static_cast<int>(SaveFailure::FederateReported) == static_cast<int>(RestoreFailure::FederateReported));
+
+struct FederationSaved {  // federationSaved, or federationNotSaved(reason) when !success
     HLACORE_TYPE(FederationSaved)
     bool success = true;
-    HLACORE_FIELDS(success)
+    std::uint8_t reason = 0;  // SaveFailure
+    HLACORE_FIELDS(success, reason)
 };
 // requestFederationRestoreSucceeded(label), or requestFederationRestoreFailed(label, reason).
 struct RestoreRequestAnswer {
@@ -810,10 +862,11 @@ struct InitiateFederateRestore {
     Boxed<RestoredState> state;
     HLACORE_FIELDS(label, federate, state)
 };
-struct FederationRestored {  // federationRestored, or federationNotRestored when !success
+struct FederationRestored {  // federationRestored, or federationNotRestored(reason) when !success
     HLACORE_TYPE(FederationRestored)
     bool success = true;
-    HLACORE_FIELDS(success)
+    std::uint8_t reason = 0;  // RestoreFailure
+    HLACORE_FIELDS(success, reason)
 };
 
 // ---- data distribution management (HLA 1.3 §9) ----

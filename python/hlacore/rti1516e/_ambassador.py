@@ -98,7 +98,7 @@ class RTIambassador(Regions):
             self._rti = _rti13.RTIAmbassador(address or None, **self._settings)
         except _core.RTIinternalError as error:  # nothing answers, the secret is refused, a setting is wrong
             raise x.ConnectionFailed(f"ConnectionFailed: {error}") from None
-        self._adapter = Adapter(federateAmbassador, self._time_out)
+        self._adapter = Adapter(federateAmbassador, self._time_out, self._rti._failure_reason)
         self._delivery = Delivery(self._rti, self._adapter, callbackModel == "HLA_IMMEDIATE", self._connection_lost)
 
     def _connection_lost(self) -> None:
@@ -230,9 +230,17 @@ class RTIambassador(Regions):
         self._inner().federateSaveNotComplete()
         self._saving = False
 
+    def abortFederationSave(self) -> None:
+        """End the save under way: every federate gets ``federationNotSaved(SAVE_ABORTED)``."""
+        self._inner()._abort_save()
+
     def requestFederationRestore(self, label: str) -> None:
         """Restore the federation saved as ``label``."""
         self._inner().requestFederationRestore(label)
+
+    def abortFederationRestore(self) -> None:
+        """End the restore under way: every federate gets ``federationNotRestored(RESTORE_ABORTED)``."""
+        self._inner()._abort_restore()
 
     # ---- declaration management (§5) ----
     def _declare(self, table: Dict[Any, Set[Any]], theClass: Any, attributeList: Iterable[Any], adding: bool,
@@ -395,6 +403,16 @@ class RTIambassador(Regions):
         self._inner().changeInteractionTransportationType(core(InteractionClassHandle, theClass), transport)
         assert self._adapter is not None
         self._adapter.local.append(("confirmInteractionTransportationTypeChange", (theClass, int(transport))))
+
+    def queryAttributeTransportationType(self, theObject: Any, theAttribute: Any) -> None:
+        """Ask how the attribute's updates travel: ``reportAttributeTransportationType`` answers."""
+        self._inner()._query_attribute_transportation(core(ObjectInstanceHandle, theObject), core(AttributeHandle, theAttribute))
+
+    def queryInteractionTransportationType(self, theFederate: Any, theInteraction: Any) -> None:
+        """Ask how that federate's interactions of the class travel: ``reportInteractionTransportationType``
+        answers."""
+        self._inner()._query_interaction_transportation(core(FederateHandle, theFederate),
+                                                        core(InteractionClassHandle, theInteraction))
 
     # ---- ownership management (§7) ----
     def unconditionalAttributeOwnershipDivestiture(self, theObject: Any, theAttributes: Iterable[Any]) -> None:
@@ -758,9 +776,6 @@ _PASSED = {
 }
 # The services not served yet, by the reason.
 _NOT_SERVED = {
-    "the core's save and restore run to their end": ("abortFederationSave", "abortFederationRestore"),
-    "the core does not report another federate's transportation": (
-        "queryAttributeTransportationType", "queryInteractionTransportationType"),
     "the FOM's update rates are not read yet": ("getUpdateRateValue", "getUpdateRateValueForAttribute"),
 }
 for _name, _doc in _PASSED.items():

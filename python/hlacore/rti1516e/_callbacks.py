@@ -38,6 +38,7 @@ _FED: Convert = lambda a, v: FederateHandle.wrap(v)  # noqa: E731
 _TAG: Convert = lambda a, v: _tag(v)  # noqa: E731
 _TIME: Convert = lambda a, v: a.convert_time(v)  # noqa: E731
 _RETRACTION: Convert = lambda a, v: MessageRetractionHandle.wrap(v)  # noqa: E731
+_INT: Convert = lambda a, v: int(v)  # noqa: E731
 
 # The callbacks that are HLA 1.3's with other handles: HLA 1.3 name -> (the 1516-2010 name, a converter per
 # argument kept (the others are dropped), the arguments 1516-2010 adds after them).
@@ -45,12 +46,10 @@ _PLAIN: Dict[str, Tuple[str, Sequence[Convert], Tuple[Any, ...]]] = {
     "announceSynchronizationPoint": ("announceSynchronizationPoint", (_SAME, _TAG), ()),
     "federationSynchronized": ("federationSynchronized", (_SAME,), (frozenset(),)),  # no failed set in the core
     "federationSaved": ("federationSaved", (), ()),
-    "federationNotSaved": ("federationNotSaved", (), (e.RTI_UNABLE_TO_SAVE,)),  # the core does not say why
     "requestFederationRestoreSucceeded": ("requestFederationRestoreSucceeded", (_SAME,), ()),
     "requestFederationRestoreFailed": ("requestFederationRestoreFailed", (_SAME,), ()),
     "federationRestoreBegun": ("federationRestoreBegun", (), ()),
     "federationRestored": ("federationRestored", (), ()),
-    "federationNotRestored": ("federationNotRestored", (), (e.RTI_UNABLE_TO_RESTORE,)),
     "startRegistrationForObjectClass": ("startRegistrationForObjectClass", (_CLASS,), ()),
     "stopRegistrationForObjectClass": ("stopRegistrationForObjectClass", (_CLASS,), ()),
     "turnInteractionsOn": ("turnInteractionsOn", (_INTERACTION,), ()),
@@ -67,6 +66,8 @@ _PLAIN: Dict[str, Tuple[str, Sequence[Convert], Tuple[Any, ...]]] = {
     "attributeOwnershipUnavailable": ("attributeOwnershipUnavailable", (_OBJ, _ATTRS), ()),
     "confirmAttributeOwnershipAcquisitionCancellation": ("confirmAttributeOwnershipAcquisitionCancellation",
                                                          (_OBJ, _ATTRS), ()),
+    "reportAttributeTransportationType": ("reportAttributeTransportationType", (_OBJ, _ATTR, _INT), ()),
+    "reportInteractionTransportationType": ("reportInteractionTransportationType", (_FED, _INTERACTION, _INT), ()),
     "informAttributeOwnership": ("informAttributeOwnership", (_OBJ, _ATTR, _FED), ()),
     "attributeIsNotOwned": ("attributeIsNotOwned", (_OBJ, _ATTR), ()),
     "attributeOwnedByRTI": ("attributeIsOwnedByRTI", (_OBJ, _ATTR), ()),
@@ -79,12 +80,14 @@ _PLAIN: Dict[str, Tuple[str, Sequence[Convert], Tuple[Any, ...]]] = {
 
 class Adapter:
     """The inner ambassador's federate ambassador. ``user`` is the 1516-2010 federate ambassador (any object);
-    ``time_out`` turns the core's float time into the federation's time type; ``local`` holds callbacks the
-    1516-2010 layer makes itself (confirmations, reports), delivered before the core's."""
+    ``time_out`` turns the core's float time into the federation's time type; ``failure_reason`` says why the
+    last save or restore delivered failed; ``local`` holds callbacks the 1516-2010 layer makes itself
+    (confirmations, reports), delivered before the core's."""
 
-    def __init__(self, user: Any, time_out: Callable[[float], Any]) -> None:
+    def __init__(self, user: Any, time_out: Callable[[float], Any], failure_reason: Callable[[], int]) -> None:
         self.user = user
         self.time_out = time_out
+        self.failure_reason = failure_reason
         self.local: Deque[Tuple[str, Tuple[Any, ...]]] = deque()
         self.divesting: Dict[Any, Set[Any]] = {}  # object -> attributes told to confirm their divestiture
         self.sync_sets: Dict[str, bool] = {}      # label -> registered with a federate set
@@ -115,6 +118,14 @@ class Adapter:
         name, args = self.local.popleft()
         self.call(name, *args)
         return True
+
+    def federationNotSaved(self) -> None:
+        """With the reason the gateway gave (SaveFailureReason)."""
+        self.call("federationNotSaved", self.failure_reason())
+
+    def federationNotRestored(self) -> None:
+        """With the reason the gateway gave (RestoreFailureReason)."""
+        self.call("federationNotRestored", self.failure_reason())
 
     def synchronizationPointRegistrationSucceeded(self, label: str) -> None:
         """As 1516-2010's."""

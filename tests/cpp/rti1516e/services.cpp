@@ -209,6 +209,8 @@ struct Recorder : NullFederateAmbassador {
     RECORD(confirmAttributeTransportationTypeChange, (ObjectInstanceHandle o, AttributeHandleSet a,
            TransportationType t), o, a, t)
     RECORD(confirmInteractionTransportationTypeChange, (InteractionClassHandle c, TransportationType t), c, t)
+    RECORD(reportAttributeTransportationType, (ObjectInstanceHandle o, AttributeHandle a, TransportationType t), o, a, t)
+    RECORD(reportInteractionTransportationType, (FederateHandle f, InteractionClassHandle c, TransportationType t), f, c, t)
     RECORD(requestAttributeOwnershipAssumption, (ObjectInstanceHandle o, AttributeHandleSet const& a,
            VariableLengthData const& tag), o, a, tag)
     RECORD(requestDivestitureConfirmation, (ObjectInstanceHandle o, AttributeHandleSet const& a), o, a)
@@ -466,17 +468,29 @@ void objects(World& w) {
     CALL(b, requestAttributeValueUpdate, w.vehicle, AttributeHandleSet{w.position}, data(""));
     await(a, "provideAttributeValueUpdate", text(w.v2, AttributeHandleSet{w.position}, L""));
 
-    // Transportation: confirmed by callback, the next update sent best effort; another's is not reported yet.
+    // Transportation: confirmed by callback, the next update sent best effort; reported to another federate
+    // asking, as changed, else the FOM's.
     CALL(a, requestAttributeTransportationTypeChange, w.v1, AttributeHandleSet{w.speed}, BEST_EFFORT);
     await(a, "confirmAttributeTransportationTypeChange", text(w.v1, AttributeHandleSet{w.speed}, BEST_EFFORT));
     a.rti->updateAttributeValues(w.v1, {{w.speed, data("fast")}}, data("t3"));
     await(b, "reflectAttributeValues", text(w.v1, L"{" + fast + L"}", L"t3", RECEIVE, BEST_EFFORT) + L"|" + from(w));
+    CALL(b, queryAttributeTransportationType, w.v1, w.speed);
+    await(b, "reportAttributeTransportationType", text(w.v1, w.speed, BEST_EFFORT));
+    b.rti->queryAttributeTransportationType(w.v1, w.position);
+    await(b, "reportAttributeTransportationType", text(w.v1, w.position, RELIABLE));
+    a.rti->requestInteractionTransportationTypeChange(w.command, BEST_EFFORT);
+    settle({&a});  // the gateway has the change before b asks
+    CALL(b, queryInteractionTransportationType, w.ha, w.command);
+    await(b, "reportInteractionTransportationType", text(w.ha, w.command, BEST_EFFORT));
     CALL(a, requestInteractionTransportationTypeChange, w.command, RELIABLE);
     await(a, "confirmInteractionTransportationTypeChange", text(w.command, RELIABLE));
+    settle({&a});
+    b.rti->queryInteractionTransportationType(w.ha, w.command);
+    await(b, "reportInteractionTransportationType", text(w.ha, w.command, RELIABLE));
+    CHECK(b.rec.count("reportInteractionTransportationType") == 2);
     CHECK(raises<InvalidTransportationType>(
         [&] { a.rti->requestInteractionTransportationTypeChange(w.command, static_cast<TransportationType>(7)); }));
-    CHECK(not_served([&] { CALL(a, queryAttributeTransportationType, w.v1, w.speed); }));
-    CHECK(not_served([&] { CALL(a, queryInteractionTransportationType, w.hb, w.command); }));
+    CHECK(raises<ObjectInstanceNotKnown>([&] { b.rti->queryAttributeTransportationType(ObjectInstanceHandle(), w.speed); }));
 
     // Deleting: everywhere with a tag, or here only.
     CALL(a, deleteObjectInstance, w.v2, data("bye"));
@@ -743,7 +757,7 @@ void sync_save_restore(World& w) {
         CALL(*f, federateSaveComplete);
     }
     both("federationSaved", L"");
-    CHECK(not_served([&] { CALL(a, abortFederationSave); }));
+    CHECK(raises<SaveNotInProgress>([&] { CALL(a, abortFederationSave); }));
     CALL(a, requestFederationSave, L"s2", at(50));
     both("initiateFederateSave", L"s2");
     a.rti->federateSaveBegun();
@@ -753,7 +767,14 @@ void sync_save_restore(World& w) {
                                                  L";" + w.hb.toString() + L"=" + std::to_wstring(FEDERATE_INSTRUCTED_TO_SAVE) + L";");
     b.rti->federateSaveBegun();
     CALL(b, federateSaveNotComplete);
-    both("federationNotSaved", text(RTI_UNABLE_TO_SAVE));
+    both("federationNotSaved", text(FEDERATE_REPORTED_FAILURE_DURING_SAVE));
+    // A save aborted by b while a has answered: both hear it was aborted.
+    a.rti->requestFederationSave(L"s3");
+    both("initiateFederateSave", L"s3");
+    a.rti->federateSaveBegun();
+    a.rti->federateSaveComplete();
+    b.rti->abortFederationSave();
+    both("federationNotSaved", text(SAVE_ABORTED));
 
     // Restores: of an unknown label, refused; of s1, both complete; again, b cannot.
     CALL(a, requestFederationRestore, L"nothing");
@@ -766,7 +787,7 @@ void sync_save_restore(World& w) {
     CALL(a, federateRestoreComplete);
     b.rti->federateRestoreComplete();
     both("federationRestored", L"");
-    CHECK(not_served([&] { CALL(a, abortFederationRestore); }));
+    CHECK(raises<RestoreNotInProgress>([&] { CALL(a, abortFederationRestore); }));
     a.rti->requestFederationRestore(L"s1");
     until({&a, &b}, [&] { return a.rec.count("initiateFederateRestore") == 2 && b.rec.count("initiateFederateRestore") == 2; },
           "the second restore");
@@ -777,7 +798,14 @@ void sync_save_restore(World& w) {
           ha + L">" + ha + L"=" + std::to_wstring(FEDERATE_WAITING_FOR_FEDERATION_TO_RESTORE) + L";" + hb + L">" + hb +
               L"=" + std::to_wstring(FEDERATE_RESTORING) + L";");
     CALL(b, federateRestoreNotComplete);
-    both("federationNotRestored", text(RTI_UNABLE_TO_RESTORE));
+    both("federationNotRestored", text(FEDERATE_REPORTED_FAILURE_DURING_RESTORE));
+    // A restore aborted by b while a has answered.
+    a.rti->requestFederationRestore(L"s1");
+    until({&a, &b}, [&] { return a.rec.count("initiateFederateRestore") == 3 && b.rec.count("initiateFederateRestore") == 3; },
+          "the third restore");
+    a.rti->federateRestoreComplete();
+    b.rti->abortFederationRestore();
+    both("federationNotRestored", text(RESTORE_ABORTED));
 }
 
 // ---- the callback services on one event (§10.41-10.44), the handles' decoding (§10.45) ----

@@ -37,7 +37,11 @@ void bind_declarations(Ambassador& rtia) {
              py::arg("interactionClass"), py::arg("active") = true)
         .def("unsubscribeInteractionClass", request<wire::UnsubscribeInteractionClass, InteractionClassHandle>(),
              py::arg("interactionClass"))
-        .def("_set_advisory_switch", request<wire::SetAdvisorySwitch, std::uint8_t, bool>());
+        .def("_set_advisory_switch", request<wire::SetAdvisorySwitch, std::uint8_t, bool>())
+        // IEEE 1516-2010's update rates, for hlacore.rti1516e
+        .def("_subscription_rate", request<wire::SubscriptionRate, ObjectClassHandle, std::string>())
+        .def("_update_rate", query<double, std::string>(&Client::update_rate))
+        .def("_update_rate_for", query<double, ObjectHandle, AttributeHandle>(&Client::update_rate_for));
 }
 
 }  // namespace hlacore::bindings

@@ -7,7 +7,8 @@
 //    "object_classes": [(handle, name, qualified_name, parent, (child, ...),
 //                        [(handle, name, transport, order, space), ...]), ...],
 //    "interaction_classes": [(handle, name, qualified_name, parent, (child, ...), transport, order, space,
-//                             [(handle, name), ...]), ...]}
+//                             [(handle, name), ...]), ...],
+//    "update_rates": [(name, rate), ...]}
 // where transport is "reliable" | "best_effort" and order is "timestamp" | "receive".
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -70,6 +71,9 @@ py::dict to_python(const Fom& fom) {
     out["spaces"] = spaces;
     out["object_classes"] = objects;
     out["interaction_classes"] = interactions;
+    py::list rates;
+    for (const UpdateRate& r : fom.update_rates) rates.append(py::make_tuple(r.name, r.rate));
+    out["update_rates"] = rates;
     return out;
 }
 

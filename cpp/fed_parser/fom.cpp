@@ -117,6 +117,12 @@ const RoutingSpace* Fom::find_space(std::string_view space_name) const {
     return by_name(spaces, space_names, space_name);
 }
 
+const UpdateRate* Fom::find_update_rate(std::string_view rate_name) const {
+    for (const auto& r : update_rates)
+        if (r.name == rate_name) return &r;
+    return nullptr;
+}
+
 void Fom::reindex() {
     index_names(spaces, space_names);
     for (auto& s : spaces) index_names(s.dimensions, s.dimension_names);

@@ -90,6 +90,13 @@ struct RoutingSpace {
     const Dimension* dimension(std::string_view dimension_name) const;
 };
 
+// An update rate an OMT module declares (IEEE 1516.2-2010's updateRates): a subscriber names it to receive an
+// attribute's receive-order updates at most `rate` times a second.
+struct UpdateRate {
+    std::string name;
+    double rate = 0;  // per second, > 0
+};
+
 struct Fom {
     std::string source_name;  // file name given to the parser, used in messages
     std::string federation_name;
@@ -97,6 +104,7 @@ struct Fom {
     std::vector<RoutingSpace> spaces;                   // spaces[h - 1] has handle h
     std::vector<ObjectClass> object_classes;            // object_classes[h - 1] has handle h
     std::vector<InteractionClass> interaction_classes;  // interaction_classes[h - 1] has handle h
+    std::vector<UpdateRate> update_rates;               // OMT modules only, in the order declared
 
     // The name indexes (the classes' own included) behind every lookup by name. parse_fed keeps them; code
     // that builds or changes a Fom by hand calls reindex() before looking anything up by name.
@@ -116,6 +124,7 @@ struct Fom {
     const ObjectClass* find_object_class(std::string_view class_name) const;
     const InteractionClass* find_interaction_class(std::string_view class_name) const;
     const RoutingSpace* find_space(std::string_view space_name) const;
+    const UpdateRate* find_update_rate(std::string_view rate_name) const;  // by its exact name
 
     // True when `cls` is `ancestor` or one of its descendants.
     bool is_object_subclass(Handle cls, Handle ancestor) const;

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <optional>
@@ -188,6 +190,22 @@ public:
         }
     }
 
+    // The update rates a module declares, added to `out`; one declared again must have the same rate.
+    void update_rates(const Element& list, std::vector<std::pair<UpdateRate, Place>>& out) {
+        for (const Element& e : list.children) {
+            if (e.name != "updateRate") continue;
+            const std::string name = e.value("name"), text = e.value("rate");
+            if (name.empty()) fail(e, "an update rate without a name");
+            char* end = nullptr;
+            const double rate = std::strtod(text.c_str(), &end);
+            if (text.empty() || end != text.c_str() + text.size() || !(rate > 0) || !std::isfinite(rate))
+                fail(e, "update rate '" + name + "' has no positive rate ('" + text + "')");
+            const auto same = std::find_if(out.begin(), out.end(), [&](const auto& r) { return r.first.name == name; });
+            if (same == out.end()) out.push_back({UpdateRate{name, rate}, place(e)});
+            else if (same->first.rate != rate) fail(e, "update rate '" + name + "' has another rate at " + same->second.text());
+        }
+    }
+
 private:
     [[noreturn]] void fail(const Element& e, const std::string& message) const {
         throw FedError(module_.file_name, e.line, e.column, message);
@@ -331,6 +349,7 @@ Fom parse_omt(const std::vector<FomModule>& modules) {
                                                      {"the MIM", 0, 0}});
     ClassTree interactions = root("HLAinteractionRoot", std::nullopt);
     std::vector<std::pair<Dimension, Place>> dimensions;
+    std::vector<std::pair<UpdateRate, Place>> rates;
     Fom fom;
     for (const FomModule& m : modules) {
         const Element document = read_xml(m);
@@ -346,10 +365,12 @@ Fom parse_omt(const std::vector<FomModule>& modules) {
         }
         Merger merger(m);
         if (const Element* d = model->child("dimensions")) merger.dimensions(*d, dimensions);
+        if (const Element* r = model->child("updateRates")) merger.update_rates(*r, rates);
         if (const Element* o = model->child("objects")) merger.classes(*o, "objectClass", kObjects, objects);
         if (const Element* i = model->child("interactions")) merger.classes(*i, "interactionClass", kInteractions, interactions);
     }
     fom.fed_version = "IEEE 1516-2010";
+    for (auto& [r, where] : rates) fom.update_rates.push_back(std::move(r));
     if (!dimensions.empty()) {
         RoutingSpace space;
         space.handle = 1;

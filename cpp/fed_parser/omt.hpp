@@ -3,8 +3,8 @@
 // HLAobjectRoot and HLAinteractionRoot, attributes and parameters with their transportation and order.
 // Several modules merge in the order given (IEEE 1516-2010 §4.1.4): a class may appear in several of them,
 // its members and subclasses joined; an attribute or parameter, or an interaction class, declared again with
-// another transportation or order is an error naming both places. Data types, dimensions and the notes are
-// not read yet.
+// another transportation or order is an error naming both places. The dimensions and the update rates are read
+// too (one declared again must agree); data types and notes are not read here.
 #pragma once
 
 #include <string>

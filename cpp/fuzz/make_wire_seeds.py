@@ -138,6 +138,7 @@ MESSAGES = {
     "QueryInteractionTransportation": u32(2) + u32(4),
     "AttributeTransportationReported": u32(7) + u32(1) + u8(2),
     "InteractionTransportationReported": u32(2) + u32(4) + u8(1),
+    "SubscriptionRate": u32(2) + s("HLAslow"),
 }
 STREAMS = {
     "stream-join-publish-update": ["Hello", "JoinFederation", "PublishObjectClass", "RegisterObject", "UpdateAttributes"],

@@ -53,6 +53,7 @@ struct Exceptions : RTI {
     using AuthenticationFailed = RTIinternalError;
     using SaveNotInProgress = RTIinternalError;
     using RestoreNotInProgress = RTIinternalError;
+    using InvalidUpdateRateDesignator = RTIinternalError;
 };
 }  // namespace
 

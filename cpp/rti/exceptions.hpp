@@ -93,7 +93,9 @@
     X(AuthenticationFailed)                     \
     /* IEEE 1516-2010's aborts with no save or restore under way */ \
     X(SaveNotInProgress)                        \
-    X(RestoreNotInProgress)
+    X(RestoreNotInProgress)                     \
+    /* IEEE 1516-2010's update rate named by no FOM module */ \
+    X(InvalidUpdateRateDesignator)
 
 namespace hlacore {
 

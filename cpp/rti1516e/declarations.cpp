@@ -4,12 +4,6 @@
 
 namespace hlacore::rti1516e {
 
-namespace {
-void not_rates(std::wstring const& rate) {
-    if (!rate.empty()) not_served("update rates", "the FOM's are not read");
-}
-}  // namespace
-
 void Ambassador::declare(Declared& table, ObjectClassHandle cls, AttributeHandleSet const& attributes, bool adding,
                          bool publishing, bool active) {
     std::lock_guard<std::recursive_mutex> lock(mu_);
@@ -59,7 +53,7 @@ void Ambassador::unpublishInteractionClass(InteractionClassHandle cls) {
 void Ambassador::subscribeObjectClassAttributes(ObjectClassHandle cls, AttributeHandleSet const& attributes,
                                                 bool active, std::wstring const& rate) {
     guarded([&] {
-        not_rates(rate);
+        client().request(wire::SubscriptionRate{core(cls), utf8(rate)});
         declare(subscribed_, cls, attributes, true, false, active);
     });
 }

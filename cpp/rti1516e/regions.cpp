@@ -199,8 +199,8 @@ void Ambassador::subscribeObjectClassAttributesWithRegions(ObjectClassHandle cls
                                                            AttributeHandleSetRegionHandleSetPairVector const& regions,
                                                            bool active, std::wstring const& rate) {
     guarded([&] {
-        if (!rate.empty()) not_served("update rates", "the FOM's are not read");
         std::lock_guard<std::recursive_mutex> lock(mu_);
+        client().request(wire::SubscriptionRate{core(cls), utf8(rate)});
         for (const auto& [attributes, set] : regions)
             for (const auto& r : set) {
                 region(r);

@@ -1,5 +1,5 @@
 // Support services (IEEE 1516.1-2010 §10): names and handles, the advisory switches, handle decoding,
-// and the services the core does not serve yet (each raises saying why).
+// and the update rates.
 #include <algorithm>
 #include <cctype>
 
@@ -27,13 +27,13 @@ unsigned long long number(VariableLengthData const& encoded, size_t length) {
 }
 }  // namespace
 
-// ---- the services the core does not serve yet ----
+// ---- update rates (the FOM's, and the one this federate's subscription asks for) ----
 
-double Ambassador::getUpdateRateValue(std::wstring const&) {
-    return guarded([]() -> double { not_served("getUpdateRateValue", "the FOM's update rates are not read yet"); });
+double Ambassador::getUpdateRateValue(std::wstring const& designator) {
+    return guarded([&] { return client().update_rate(utf8(designator)); });
 }
-double Ambassador::getUpdateRateValueForAttribute(ObjectInstanceHandle, AttributeHandle) {
-    return guarded([]() -> double { not_served("getUpdateRateValueForAttribute", "the FOM's update rates are not read yet"); });
+double Ambassador::getUpdateRateValueForAttribute(ObjectInstanceHandle object, AttributeHandle attribute) {
+    return guarded([&] { return client().update_rate_for(core(object), core(attribute)); });
 }
 // ---- what the gateway's status report says (asked on this connection: after everything sent before) ----
 

@@ -5,7 +5,7 @@ hlacore native core: gateway, client connection, FED parser
 from __future__ import annotations
 import collections.abc
 import typing
-__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ClientSettings', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'client_options', 'client_settings', 'fom_bundle', 'gateway_options', 'parse_fed', 'parse_fom_modules']
+__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ClientSettings', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'InvalidUpdateRateDesignator', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'client_options', 'client_settings', 'fom_bundle', 'gateway_options', 'parse_fed', 'parse_fom_modules']
 class RTIexception(Exception):
     """
     Base of every HLA 1.3 exception raised by hlacore.
@@ -341,6 +341,10 @@ class SaveNotInProgress(RTIinternalError):
 class RestoreNotInProgress(RTIinternalError):
     """
     hlacore's exception RestoreNotInProgress, a kind of RTIinternalError.
+    """
+class InvalidUpdateRateDesignator(RTIinternalError):
+    """
+    hlacore's exception InvalidUpdateRateDesignator, a kind of RTIinternalError.
     """
 class ObjectClassHandle:
     """
@@ -802,9 +806,15 @@ class RTIAmbassadorBase:
         ...
     def _stop_recording(self) -> int:
         ...
+    def _subscription_rate(self, arg0: ObjectClassHandle, arg1: str) -> None:
+        ...
     def _time_advance_pending(self) -> bool:
         ...
     def _time_type(self) -> int:
+        ...
+    def _update_rate(self, arg0: str) -> float:
+        ...
+    def _update_rate_for(self, arg0: ObjectHandle, arg1: AttributeHandle) -> float:
         ...
     def _wait(self, timeout: typing.SupportsFloat | typing.SupportsIndex) -> bool:
         ...

@@ -6,8 +6,9 @@ them and the same classes are reachable as ``hlacore.rti.<Name>``. The list is d
 names the classes statically so that type checkers and readers see them (tests/rti/test_exceptions.py checks
 that it matches the C++ list exactly). ``ErrorReadingFED`` carries ``file``, ``line`` and ``column`` of a
 ``.fed`` error. hlacore's own exceptions (``GatewayNotResponding``, ``AuthenticationFailed``, and
-``SaveNotInProgress`` and ``RestoreNotInProgress`` of IEEE 1516-2010's aborts) are subclasses of
-:class:`~hlacore.rti.RTIinternalError`, so code written for PyHLA that catches that still catches them.
+``SaveNotInProgress``, ``RestoreNotInProgress`` and ``InvalidUpdateRateDesignator`` of IEEE 1516-2010) are
+subclasses of :class:`~hlacore.rti.RTIinternalError`, so code written for PyHLA that catches that still
+catches them.
 """
 
 from __future__ import annotations
@@ -100,6 +101,7 @@ GatewayNotResponding = _core.GatewayNotResponding
 AuthenticationFailed = _core.AuthenticationFailed
 SaveNotInProgress = _core.SaveNotInProgress
 RestoreNotInProgress = _core.RestoreNotInProgress
+InvalidUpdateRateDesignator = _core.InvalidUpdateRateDesignator
 
 __all__ = [
     "RTIexception",
@@ -186,4 +188,5 @@ __all__ = [
     "AuthenticationFailed",
     "SaveNotInProgress",
     "RestoreNotInProgress",
+    "InvalidUpdateRateDesignator",
 ]

@@ -198,3 +198,17 @@ def test_dimensions_are_one_routing_space_of_the_attributes_and_classes_that_nam
         _core.parse_fom_modules([(DIMENSIONS, "a.xml"), (other, "b.xml")])
     with pytest.raises(_core.ErrorReadingFED, match=r"c\.xml:\d+:\d+: dimension 'X' has no upper bound"):
         _core.parse_fom_modules([(DIMENSIONS.replace("<upperBound>100</upperBound>", ""), "c.xml")])
+
+
+RATES = "<objectModel><updateRates><updateRate><name>HLAslow</name><rate>2.5</rate></updateRate></updateRates></objectModel>"
+
+
+def test_update_rates_merge_by_name_and_conflicts_name_both_places() -> None:
+    more = "<objectModel><updateRates><updateRate name='HLAfast' rate='60'/></updateRates></objectModel>"  # 2000's form
+    fom = _core.parse_fom_modules([(RATES, "a.xml"), (more, "b.xml"), (RATES, "c.xml")])
+    assert fom["update_rates"] == [("HLAslow", 2.5), ("HLAfast", 60.0)]
+    with pytest.raises(_core.ErrorReadingFED, match=r"b\.xml:1:\d+: update rate 'HLAslow' has another rate at a\.xml:1:"):
+        _core.parse_fom_modules([(RATES, "a.xml"), (RATES.replace("2.5", "3"), "b.xml")])
+    for bad in ("0", "-1", "fast", "", "inf"):
+        with pytest.raises(_core.ErrorReadingFED, match=r"d\.xml:1:\d+: update rate 'HLAslow' has no positive rate"):
+            _core.parse_fom_modules([(RATES.replace("2.5", bad), "d.xml")])

@@ -286,10 +286,56 @@ def test_negotiated_divestiture_asks_for_confirmation(federates: Callable[[], Fe
 
 def test_what_is_not_served_yet_says_so(federates: Callable[[], Federate]) -> None:
     a = joined(federates, "a")
-    for call in (lambda: a.rtia.getUpdateRateValue("HLAfast"),
+    for call in (lambda: a.rtia.synchronizationPointAchieved("x", False),
                  lambda: a.rtia.joinFederationExecution("t", "Vehicles", [CARS])):
         with pytest.raises(rti1516e.RTIinternalError, match="hlacore does not serve"):
             call()
+
+
+def test_an_update_rate_thins_receive_order_values_and_never_timestamped_ones(federates: Callable[[], Federate]) -> None:
+    a, b = joined(federates, "a"), joined(federates, "b")
+    vehicle = a.rtia.getObjectClassHandle("Vehicle")
+    position, speed = (a.rtia.getAttributeHandle(vehicle, n) for n in ("position", "speed"))  # TimeStamp, Receive
+    assert (a.rtia.getUpdateRateValue("HLAslow"), a.rtia.getUpdateRateValue("HLAfast")) == (2.0, 50.0)
+    with pytest.raises(rti1516e.InvalidUpdateRateDesignator, match="HLAwarp"):
+        b.rtia.subscribeObjectClassAttributes(vehicle, [speed], True, "HLAwarp")
+    a.rtia.publishObjectClassAttributes(vehicle, [position, speed])
+    b.rtia.subscribeObjectClassAttributes(vehicle, [position, speed], True, "HLAslow")
+    obj = a.rtia.registerObjectInstance(vehicle)
+    b.until(lambda: bool(b.amb.named("discoverObjectInstance")))
+    assert b.rtia.getUpdateRateValueForAttribute(obj, speed) == 2.0
+    assert a.rtia.getUpdateRateValueForAttribute(obj, speed) == 0.0  # a subscribes to nothing
+
+    # 2 a second: of a burst, the first; half a second later, the next.
+    started = time.monotonic()
+    for i in range(20):
+        a.rtia.updateAttributeValues(obj, {speed: b"%d" % i}, b"")
+    time.sleep(0.6)
+    a.rtia.updateAttributeValues(obj, {speed: b"last"}, b"")
+    sending = time.monotonic() - started
+    b.until(lambda: (b.amb.last("reflectAttributeValues") or ((),))[1:2] == ({speed: b"last"},))
+    got = [args[1][speed] for args in b.amb.named("reflectAttributeValues")]
+    assert got[0] == b"0" and got[-1] == b"last"
+    assert len(got) <= 3 + int(2 * sending), got
+
+    # Timestamped values all arrive, however fast they come.
+    a.rtia.enableTimeRegulation(1.0)
+    a.until(lambda: bool(a.amb.named("timeRegulationEnabled")))
+    b.rtia.enableTimeConstrained()
+    b.until(lambda: bool(b.amb.named("timeConstrainedEnabled")))
+    for i in range(20):
+        a.rtia.updateAttributeValues(obj, {position: b"%d" % i}, b"", 10.0 + i)
+    a.rtia.timeAdvanceRequest(50.0)
+    b.rtia.timeAdvanceRequest(40.0)
+    b.until(lambda: bool(b.amb.named("timeAdvanceGrant")))
+    timed = [args[1][position] for args in b.amb.named("reflectAttributeValues") if position in args[1]]
+    assert timed == [b"%d" % i for i in range(20)]
+
+    # A subscription through regions names its rate the same way.
+    region = b.rtia.createRegion({b.rtia.getDimensionHandle("X")})
+    b.rtia.commitRegionModifications({region})
+    b.rtia.subscribeObjectClassAttributesWithRegions(vehicle, [({position}, {region})], True, "HLAfast")
+    assert b.rtia.getUpdateRateValueForAttribute(obj, position) == 50.0
 
 
 def test_encoded_handles_decode_to_equal_handles(federates: Callable[[], Federate]) -> None:

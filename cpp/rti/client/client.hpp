@@ -213,6 +213,10 @@ public:
     std::string dimension_name(fom::Handle dimension, fom::Handle space) const;
     // An OMT module's dimension's upper bound (IEEE 1516-2010); 0 for a .fed's.
     std::uint64_t dimension_upper_bound(fom::Handle dimension, fom::Handle space) const;
+    // IEEE 1516-2010's update rates: the FOM's rate named `designator` (InvalidUpdateRateDesignator), and the
+    // rate this federate's subscription of a known object's class asked for (0: none).
+    double update_rate(const std::string& designator) const;
+    double update_rate_for(std::uint32_t object, fom::Handle attribute) const;
     fom::Handle attribute_routing_space(fom::Handle attribute, fom::Handle cls) const;
     fom::Handle interaction_routing_space(fom::Handle cls) const;
     // The transportation and ordering types by name ("HLAreliable", "HLAbestEffort"; "Receive", "Timestamp")
@@ -274,6 +278,7 @@ private:
         std::map<fom::Handle, std::set<fom::Handle>> subscribed;  // object class -> attributes
         std::set<fom::Handle> published_interactions;
         std::set<fom::Handle> subscribed_interactions;
+        std::map<fom::Handle, double> rates;  // object class -> the update rate its subscription asks (IEEE 1516-2010)
     };
     // Where this federate is in a federation save or restore (client/save_restore.cpp).
     struct SaveRestoreState {
@@ -489,6 +494,7 @@ private:
     }
     [[noreturn]] void too_long(const char* service, std::size_t length) const;
     const fom::ObjectClass& defined_object_class(fom::Handle cls) const;
+    const fom::UpdateRate& find_update_rate(const std::string& designator) const;  // InvalidUpdateRateDesignator
     const fom::Dimension& defined_dimension(fom::Handle dimension, fom::Handle space) const;
     // AttributeNotDefined for a handle the class does not have.
     static void check_attributes(const fom::ObjectClass& cls, const std::vector<fom::Handle>& attributes);

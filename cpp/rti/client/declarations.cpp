@@ -63,6 +63,11 @@ void Client::check(const wire::SubscribeObjectClass& m) {
     declare(declarations_.subscribed, m.object_class, m.attributes);
 }
 
+void Client::check(const wire::SubscriptionRate& m) {
+    defined_object_class(m.object_class);
+    declarations_.rates[m.object_class] = m.designator.empty() ? 0 : find_update_rate(m.designator).rate;
+}
+
 void Client::check(const wire::UnsubscribeObjectClass& m) {
     undeclare(declarations_.subscribed, defined_object_class(m.object_class), "object class", ErrorCode::ObjectClassNotSubscribed,
               "subscribed");

@@ -193,4 +193,24 @@ std::string Client::transportation_name(std::uint64_t handle) { return kTranspor
 std::uint8_t Client::ordering_handle(const std::string& name) { return kOrderings.handle(name); }
 std::string Client::ordering_name(std::uint64_t handle) { return kOrderings.name(handle); }
 
+const fom::UpdateRate& Client::find_update_rate(const std::string& designator) const {
+    const fom::UpdateRate* rate = fom_->find_update_rate(designator);
+    if (!rate) raise(ErrorCode::InvalidUpdateRateDesignator, "no FOM module declares the update rate '" + designator + "'");
+    return *rate;
+}
+
+double Client::update_rate(const std::string& designator) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    require_joined();
+    return find_update_rate(designator).rate;
+}
+
+double Client::update_rate_for(std::uint32_t object, fom::Handle attribute) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    const LocalObject& obj = known_object(object);
+    check_attributes(defined_object_class(obj.object_class), {attribute});
+    const auto rate = declarations_.rates.find(obj.object_class);
+    return rate == declarations_.rates.end() ? 0 : rate->second;
+}
+
 }  // namespace hlacore

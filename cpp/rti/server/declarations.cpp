@@ -80,6 +80,16 @@ void Federation::on(FederateHandle from, const wire::SubscribeObjectClass& m) {
     update_advisories();
 }
 
+// IEEE 1516-2010: the update rate of the federate's subscriptions of the class, from its next one on.
+void Federation::on(FederateHandle from, const wire::SubscriptionRate& m) {
+    auto& f = federate(from);
+    object_class(m.object_class);
+    const fom::UpdateRate* rate = m.designator.empty() ? nullptr : fom_.find_update_rate(m.designator);
+    if (!m.designator.empty() && !rate) throw WireError("no update rate is named '" + m.designator + "'");
+    if (rate && !f.rates) f.rates.emplace();
+    if (f.rates) f.rates->set(m.object_class, rate ? rate->rate : 0);
+}
+
 void Federation::on(FederateHandle from, const wire::UnsubscribeObjectClass& m) {
     object_class(m.object_class);
     federate(from).declarations.subscribed.erase(m.object_class);

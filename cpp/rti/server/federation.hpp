@@ -24,6 +24,7 @@
 #include "rti/server/save_restore.hpp"
 #include "rti/server/sync_points.hpp"
 #include "rti/server/time_manager.hpp"
+#include "rti/server/update_rates.hpp"
 #include "rti/wire/codec.hpp"
 
 namespace hlacore {
@@ -151,6 +152,7 @@ private:
         std::map<fom::Handle, fom::Order> interaction_order;
         std::map<fom::Handle, fom::Transport> interaction_transport;
         FederateRegions ddm;  // data distribution management (HLA 1.3 §9, server/regions.hpp)
+        std::optional<UpdateRateLimits> rates;  // once it subscribes with an update rate (IEEE 1516-2010)
         // For the status report, whose readers (hlacore.monitor) turn them into rates and waits.
         std::uint64_t updates_sent = 0, interactions_sent = 0, grants = 0;
         std::chrono::steady_clock::time_point requested_at{};  // its last time advance request

@@ -83,7 +83,9 @@ void Federation::remove_object(ObjectHandle oh, FederateHandle by, const std::st
     if (it == objects_.end()) return;
     Routed* routed = nullptr;
     for (auto& [gh, g] : federates_) {
-        if (!g.known.erase(oh) || gh == by) continue;
+        if (!g.known.erase(oh)) continue;
+        if (g.rates) g.rates->forget(oh);
+        if (gh == by) continue;
         if (time && time_.is_tso(by, gh)) {
             const wire::RemoveObject removal{oh, tag, time, by, serial};
             deliver_timestamp_order(gh, removal, by, serial, *time, routed, shared_frame(removal));
@@ -212,6 +214,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributesView& m) {
                 !region_wanted(g, known, from, m.object, pair.first))
                 continue;
             const bool timed = tso && order_of(pair.first) == fom::Order::Timestamp;
+            if (!timed && g.rates && !g.rates->due(known, m.object, pair.first, UpdateRateLimits::Clock::now())) continue;
             const int tr = transport_of(pair.first) == fom::Transport::BestEffort ? 1 : 0;
             out[timed][tr].values.push_back(&pair);
         }
@@ -304,7 +307,9 @@ void Federation::on(FederateHandle from, const wire::DeleteObject& m) {
 }
 
 void Federation::on(FederateHandle from, const wire::LocalDeleteObject& m) {
-    federate(from).known.erase(m.object);
+    auto& f = federate(from);
+    f.known.erase(m.object);
+    if (f.rates) f.rates->forget(m.object);
     // A federate that forgot the object no longer waits to acquire its attributes (HLA 1.3 §7.7), and
     // releases any it was given while its client still thought it owned none.
     auto it = objects_.find(m.object);

@@ -18,8 +18,9 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // RecordedTopic and Recorded; 11: QueryStatus's events_after and instances; 12: CreateFederation's
 // time_semantics; 13: CreateFederation's and FederationJoined's time_type, the object instance names'
 // ReserveObjectNames, ReleaseObjectNames and ObjectNamesReserved; 14: FederationSaved's and FederationRestored's
-// reason, AbortFederationSave, AbortFederationRestore and the transportation queries and reports
-constexpr std::uint16_t kProtocolVersion = 14;
+// reason, AbortFederationSave, AbortFederationRestore and the transportation queries and reports; 15:
+// SubscriptionRate
+constexpr std::uint16_t kProtocolVersion = 15;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -166,7 +167,9 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     X(QueryAttributeTransportation)  \
     X(QueryInteractionTransportation) \
     X(AttributeTransportationReported) \
-    X(InteractionTransportationReported)
+    X(InteractionTransportationReported) \
+    /* IEEE 1516-2010's update rate of a subscription: federate -> gateway */ \
+    X(SubscriptionRate)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply or a result. Each has a `Gateway::serve(Connection&, const M&)` in
@@ -192,7 +195,7 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     /* declarations */                                                                                 \
     X(PublishObjectClass) X(UnpublishObjectClass) X(SubscribeObjectClass) X(UnsubscribeObjectClass)    \
     X(PublishInteractionClass) X(UnpublishInteractionClass) X(SubscribeInteractionClass)               \
-    X(UnsubscribeInteractionClass) X(SetAdvisorySwitch)                                                \
+    X(UnsubscribeInteractionClass) X(SetAdvisorySwitch) X(SubscriptionRate)                            \
     /* objects */                                                                                      \
     X(UpdateAttributes) X(SendInteraction) X(DeleteObject) X(LocalDeleteObject) X(RequestObjectUpdate) \
     X(RequestClassUpdate) X(ChangeAttributeDelivery) X(ChangeInteractionDelivery)                      \
@@ -221,7 +224,7 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     /* declarations */                                                                                 \
     X(SubscribeObjectClass) X(UnsubscribeObjectClass) X(PublishInteractionClass)                       \
     X(UnpublishInteractionClass) X(SubscribeInteractionClass) X(UnsubscribeInteractionClass)           \
-    X(SetAdvisorySwitch)                                                                               \
+    X(SetAdvisorySwitch) X(SubscriptionRate)                                                           \
     /* objects */                                                                                      \
     X(LocalDeleteObject) X(RequestObjectUpdate) X(RequestClassUpdate) X(ReserveObjectNames)            \
     X(ReleaseObjectNames) X(QueryAttributeTransportation) X(QueryInteractionTransportation)            \

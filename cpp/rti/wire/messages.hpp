@@ -182,6 +182,14 @@ struct SubscribeObjectClass {
     bool active = true;
     HLACORE_FIELDS(object_class, attributes, active)
 };
+// IEEE 1516-2010: the update rate a class's subscription asks for, named as the FOM names it ("": none), sent
+// before the subscription; it holds for the class's attributes until the next one.
+struct SubscriptionRate {
+    HLACORE_TYPE(SubscriptionRate)
+    std::uint32_t object_class = 0;
+    std::string designator;
+    HLACORE_FIELDS(object_class, designator)
+};
 struct UnsubscribeObjectClass {
     HLACORE_TYPE(UnsubscribeObjectClass)
     std::uint32_t object_class = 0;

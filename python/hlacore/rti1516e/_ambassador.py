@@ -285,10 +285,10 @@ class RTIambassador(Regions):
 
     def subscribeObjectClassAttributes(self, theClass: Any, attributeList: Iterable[Any], active: Any = True,
                                        updateRateDesignator: str = "") -> None:
-        """Subscribe to these attributes of the class (added to those subscribed before)."""
-        if updateRateDesignator:
-            raise not_served("update rates", "the FOM's update rates are not read yet")
+        """Subscribe to these attributes of the class (added to those subscribed before); with an update rate
+        designator, receive-order values of the class's attributes come at most at that rate."""
         inner = self._inner()
+        inner._subscription_rate(core(ObjectClassHandle, theClass), updateRateDesignator)
         self._declare(self._subscribed, theClass, attributeList, True,
                       lambda c, a: inner.subscribeObjectClassAttributes(c, a, bool(active)), inner.unsubscribeObjectClass)
 
@@ -629,6 +629,14 @@ class RTIambassador(Regions):
         except _core.NameNotFound as error:
             raise x.InvalidTransportationName(f"InvalidTransportationName: {error}") from None
 
+    def getUpdateRateValue(self, updateRateDesignator: str) -> float:
+        """The rate, in updates a second, of an update rate the FOM modules declare."""
+        return float(self._inner()._update_rate(updateRateDesignator))
+
+    def getUpdateRateValueForAttribute(self, theObject: Any, theAttribute: Any) -> float:
+        """The update rate this federate's subscription of the object's class asks for (0: none)."""
+        return float(self._inner()._update_rate_for(core(ObjectInstanceHandle, theObject), core(AttributeHandle, theAttribute)))
+
     def getTransportationName(self, transportationType: Any) -> str:
         """``"HLAreliable"`` or ``"HLAbestEffort"``."""
         return self._inner().getTransportationName(self._transport(transportationType))
@@ -757,13 +765,6 @@ def _passed(name: str, doc: str) -> Callable[[RTIambassador], None]:
     return translating(service)
 
 
-def _refused(name: str, why: str) -> Callable[..., Any]:
-    def refuse(self: RTIambassador, *args: Any) -> Any:
-        raise not_served(name, why)
-    refuse.__name__, refuse.__doc__ = name, f"Not served yet: raises ``RTIinternalError`` ({why})."
-    return refuse
-
-
 # The services without arguments that are the core's own: name -> docstring.
 _PASSED = {
     "federateRestoreComplete": "This federate restored its state.",
@@ -774,12 +775,5 @@ _PASSED = {
     "enableAsynchronousDelivery": "Deliver receive-order messages while not advancing too.",
     "disableAsynchronousDelivery": "Deliver receive-order messages only while advancing.",
 }
-# The services not served yet, by the reason.
-_NOT_SERVED = {
-    "the FOM's update rates are not read yet": ("getUpdateRateValue", "getUpdateRateValueForAttribute"),
-}
 for _name, _doc in _PASSED.items():
     setattr(RTIambassador, _name, _passed(_name, _doc))
-for _why, _names in _NOT_SERVED.items():
-    for _name in _names:
-        setattr(RTIambassador, _name, _refused(_name, _why))

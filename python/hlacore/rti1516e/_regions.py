@@ -169,9 +169,9 @@ class Regions:
 
     def subscribeObjectClassAttributesWithRegions(self, theClass: Any, pairs: Iterable[Any], active: Any = True,
                                                   updateRateDesignator: str = "") -> None:
-        """Subscribe to attributes of the class in these regions."""
-        if updateRateDesignator:
-            raise not_served("update rates", "the FOM's update rates are not read yet")
+        """Subscribe to attributes of the class in these regions (with an update rate designator, as
+        subscribeObjectClassAttributes)."""
+        self._inner()._subscription_rate(core(ObjectClassHandle, theClass), updateRateDesignator)
         for attributes, regions in pairs:
             for region in regions:
                 self._inner().subscribeObjectClassAttributesWithRegion(

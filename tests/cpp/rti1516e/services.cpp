@@ -376,8 +376,9 @@ void support(World& w) {
     CHECK(not_served([&] { a.rti->setAutomaticResignDirective(NO_ACTION); }));
     CHECK(raises<InvalidResignAction>([&] { a.rti->setAutomaticResignDirective(static_cast<ResignAction>(42)); }));
     CHECK(a.rti->getAutomaticResignDirective() == CANCEL_THEN_DELETE_THEN_DIVEST);
-    CHECK(not_served([&] { CALL(a, getUpdateRateValue, L"HLAfast"); }));
-    CHECK(not_served([&] { CALL(a, getUpdateRateValueForAttribute, ObjectInstanceHandle(), w.speed); }));
+    CHECK(CALL(a, getUpdateRateValue, L"HLAfast") == 50.0);
+    CHECK(raises<InvalidUpdateRateDesignator>([&] { a.rti->getUpdateRateValue(L"HLAwarp"); }));
+    CHECK(raises<ObjectInstanceNotKnown>([&] { CALL(a, getUpdateRateValueForAttribute, ObjectInstanceHandle(), w.speed); }));
     CHECK(CALL(a, getFederateHandle, L"b") == w.hb && CALL(a, getFederateName, w.hb) == L"b");
     CHECK(raises<NameNotFound>([&] { a.rti->getFederateHandle(L"nobody"); }));
     const FederateHandle absent = a.rti->decodeFederateHandle(VariableLengthData("\0\0\0\x63", 4));
@@ -428,6 +429,7 @@ void objects(World& w) {
     await(b, "discoverObjectInstance", text(w.v1, w.vehicle, L"car-1"));
     until({&b}, [&] { return b.rec.count("discoverObjectInstance") == 4; }, "four objects discovered");
     CHECK(CALL(b, getKnownObjectClassHandle, w.v2) == w.vehicle);
+    CHECK(b.rti->getUpdateRateValueForAttribute(w.v2, w.speed) == 0.0);  // subscribed with no rate
     // b subscribes to both attributes: a, with the attribute relevance switch on, is told to update them.
     await(a, "turnUpdatesOnForObjectInstance", text(w.v1, AttributeHandleSet{w.position, w.speed}));
 

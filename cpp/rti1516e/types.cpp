@@ -4,9 +4,8 @@
 #include <RTI/RTI1516.h>
 #include <RTI/RTIambassadorFactory.h>
 
-#include <codecvt>
+#include <cstdint>
 #include <cstring>
-#include <locale>
 #include <new>
 #include <ostream>
 #include <sstream>
@@ -101,22 +100,62 @@ void rethrow_as_1516e() {
     }  // and one of the API's goes through unchanged
 }
 
-std::string utf8(std::wstring const& text) {
-    std::wstring_convert<std::codecvt_utf8<wchar_t>> convert;
-    try {
-        return convert.to_bytes(text);
-    } catch (const std::range_error&) {
-        throw api::RTIinternalError(L"RTIinternalError: a name that is not Unicode");
+// UTF-8 both ways, by hand: std::wstring_convert is deprecated since C++17. A wchar_t holds a code point.
+static_assert(sizeof(wchar_t) == 4, "a wchar_t of 32 bits, as on Linux");
+
+namespace {
+bool scalar_value(std::uint32_t c) { return c <= 0x10FFFF && (c < 0xD800 || c > 0xDFFF); }
+
+// The code point at `i` (moved past it), or false for bytes that are not UTF-8 (overlong, cut short,
+// a surrogate, beyond U+10FFFF).
+bool next_code_point(std::string const& text, std::size_t& i, std::uint32_t& c) {
+    const auto byte = [&](std::size_t k) { return static_cast<std::uint8_t>(text[k]); };
+    const std::uint8_t lead = byte(i);
+    const int more = lead < 0x80 ? 0 : lead >= 0xF0 ? 3 : lead >= 0xE0 ? 2 : lead >= 0xC0 ? 1 : -1;
+    if (more < 0 || lead > 0xF4 || i + more >= text.size()) return false;
+    c = more ? lead & (0x3F >> more) : lead;
+    for (int k = 1; k <= more; ++k) {
+        if ((byte(i + k) & 0xC0) != 0x80) return false;
+        c = c << 6 | (byte(i + k) & 0x3F);
     }
+    static constexpr std::uint32_t kLeast[] = {0, 0x80, 0x800, 0x10000};
+    i += more + 1;
+    return c >= kLeast[more] && scalar_value(c);
+}
+// Bytes that are not UTF-8, each as its code point.
+std::wstring latin1(std::string const& text) {
+    std::wstring out;
+    for (const char b : text) out += static_cast<wchar_t>(static_cast<unsigned char>(b));
+    return out;
+}
+}  // namespace
+
+std::string utf8(std::wstring const& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (const wchar_t w : text) {
+        const auto c = static_cast<std::uint32_t>(w);
+        if (!scalar_value(c)) throw api::RTIinternalError(L"RTIinternalError: a name that is not Unicode");
+        if (c < 0x80) {
+            out += static_cast<char>(c);
+            continue;
+        }
+        const int more = c < 0x800 ? 1 : c < 0x10000 ? 2 : 3;
+        out += static_cast<char>(((0xFF00 >> (more + 1)) & 0xFF) | c >> (6 * more));  // 110xxxxx, 1110xxxx, 11110xxx
+        for (int k = more - 1; k >= 0; --k) out += static_cast<char>(0x80 | (c >> (6 * k) & 0x3F));
+    }
+    return out;
 }
 
 std::wstring wide(std::string const& text) {
-    std::wstring_convert<std::codecvt_utf8<wchar_t>> convert;
-    try {
-        return convert.from_bytes(text);
-    } catch (const std::range_error&) {  // not UTF-8: each byte as its code point (Latin-1)
-        return std::wstring(text.begin(), text.end());
+    std::wstring out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        std::uint32_t c = 0;
+        if (!next_code_point(text, i, c)) return latin1(text);
+        out += static_cast<wchar_t>(c);
     }
+    return out;
 }
 
 std::string bytes(api::VariableLengthData const& data) {

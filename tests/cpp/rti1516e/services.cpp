@@ -442,6 +442,12 @@ void objects(World& w) {
     CHECK(raises<ObjectInstanceNameNotReserved>([&] { a.rti->registerObjectInstance(w.vehicle, L"spare"); }));
     b.rti->reserveObjectInstanceName(L"spare");
     await(b, "objectInstanceNameReservationSucceeded", L"spare");
+    // A name in any script goes to the gateway and back as UTF-8; one that is not Unicode is refused.
+    const std::wstring car = L"w\u00e4gen-\u20ac\U0001F697";
+    b.rti->reserveObjectInstanceName(car);
+    await(b, "objectInstanceNameReservationSucceeded", car);
+    CHECK(raises<RTIinternalError>([&] { b.rti->reserveObjectInstanceName(std::wstring(1, static_cast<wchar_t>(0xD800))); },
+                                   L"not Unicode"));
     const std::set<std::wstring> several{L"m1", L"m2"};
     CALL(a, reserveMultipleObjectInstanceName, several);
     await(a, "multipleObjectInstanceNameReservationSucceeded", text(several));

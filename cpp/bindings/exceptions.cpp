@@ -17,6 +17,15 @@ PyObject* exception_class(ErrorCode code) {
     return i < g_exceptions.size() && g_exceptions[i] ? g_exceptions[i] : g_base_exception;
 }
 
+// An exception's docstring; hlacore's own say what they mean where their name does not.
+std::string exception_doc(ErrorCode code, const char* name) {
+    if (base_of(code) == ErrorCode::None) return std::string("The HLA 1.3 exception ") + name + ".";
+    return std::string("hlacore's exception ") + name + ", a kind of RTIinternalError" +
+           (code == ErrorCode::InconsistentFDD ? ": FOM modules added at join (IEEE 1516-2010) that contradict the "
+                                                 "federation's FOM, or a federation created from a .fed."
+                                               : ".");
+}
+
 }  // namespace
 
 void register_exceptions(py::module_& m) {
@@ -25,11 +34,8 @@ void register_exceptions(py::module_& m) {
     m.add_object("RTIexception", py::handle(g_base_exception));
 #define HLACORE_X(name)                                                                                   \
     g_exceptions[static_cast<std::size_t>(ErrorCode::name)] = PyErr_NewExceptionWithDoc(                  \
-        "hlacore._core." #name,                                                                           \
-        base_of(ErrorCode::name) == ErrorCode::None ? "The HLA 1.3 exception " #name "."                  \
-                                                    : "hlacore's exception " #name ", a kind of RTIinternalError.", \
-        exception_class(base_of(ErrorCode::name)),                                                        \
-        nullptr);                                                                                         \
+        "hlacore._core." #name, exception_doc(ErrorCode::name, #name).c_str(),                            \
+        exception_class(base_of(ErrorCode::name)), nullptr);                                              \
     m.add_object(#name, py::handle(g_exceptions[static_cast<std::size_t>(ErrorCode::name)]));
     HLACORE_EXCEPTIONS(HLACORE_X)
 #undef HLACORE_X

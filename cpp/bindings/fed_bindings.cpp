@@ -118,8 +118,14 @@ void bind_fed(py::module_& m) {
         "as parse_fed does.");
     m.def(
         "fom_bundle",
-        [](const std::vector<std::pair<std::string, std::string>>& modules) { return py::bytes(bundle(modules_of(modules))); },
-        py::arg("modules"),
+        [](const std::vector<std::pair<std::string, std::string>>& modules,
+           const std::vector<std::pair<std::string, std::string>>& added) {
+            std::vector<FomModule> all = modules_of(modules);
+            for (FomModule& m : modules_of(added)) all.push_back({std::move(m.text), std::move(m.file_name), true});
+            return py::bytes(bundle(all));
+        },
+        py::arg("modules"), py::arg("added") = std::vector<std::pair<std::string, std::string>>{},
         "Several FOM modules, (text, file name) pairs, as the one text a federation is created from (a bundle: "
-        "cpp/fed_parser/omt.hpp); parse_fed reads it back.");
+        "cpp/fed_parser/omt.hpp), and those added at joins after them, in order (each numbered after the ones "
+        "before it, keeping their handles); parse_fed reads it back.");
 }

@@ -27,14 +27,15 @@ void bind_federation(Ambassador& rtia) {
         .def("_time_type", [](const Client& c) { return static_cast<int>(c.time_type()); })
         .def("destroyFederationExecution", &Client::destroy_federation,
              py::arg("executionName"), py::call_guard<py::gil_scoped_release>())
-        .def("_join", [](Client& c, const std::string& federate, const std::string& federation) {
+        .def("_join", [](Client& c, const std::string& federate, const std::string& federation,
+                         const std::string& fom_modules) {
             H32 h;
             {
                 py::gil_scoped_release release;
-                h = c.join(federate, federation);
+                h = c.join(federate, federation, fom_modules);
             }
             return FederateHandle{h};
-        })
+        }, py::arg("federate"), py::arg("federation"), py::arg("fom_modules") = "")
         .def("_resign", [](Client& c, int action) {
             if (action < 0 || action > 255) throw RtiError(ErrorCode::InvalidResignAction, "invalid resign action");
             py::gil_scoped_release release;

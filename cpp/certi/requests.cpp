@@ -52,11 +52,9 @@ std::string file_path(const std::string& module) {
     return path;
 }
 
-// Several modules, each found here, merged here (errors at the federate's call) and sent as one bundle.
-void create_from_modules(Client& c, const std::string& federation, const std::vector<std::string>& names) {
-    if (names.empty()) raise(ErrorCode::CouldNotOpenFED, "no FOM module given");
+// Modules, each found here and merged here (errors at the federate's call), as one bundle; `paths` lists them.
+std::string bundle_of(const std::vector<std::string>& names, std::string& paths) {
     std::vector<fom::FomModule> modules;
-    std::string paths;
     for (const auto& name : names) {
         std::string path;
         std::string text = find_file(file_path(name), path);  // checked once, merged, below
@@ -69,7 +67,14 @@ void create_from_modules(Client& c, const std::string& federation, const std::ve
     } catch (const fom::FedError& e) {
         raise(ErrorCode::ErrorReadingFED, e.what());
     }
-    c.create_federation(federation, paths, fom::bundle(modules));
+    return fom::bundle(modules);
+}
+
+void create_from_modules(Client& c, const std::string& federation, const std::vector<std::string>& names) {
+    if (names.empty()) raise(ErrorCode::CouldNotOpenFED, "no FOM module given");
+    std::string paths;
+    std::string modules = bundle_of(names, paths);
+    c.create_federation(federation, paths, modules);
 }
 
 wire::AdvisorySwitch switch_of(Type t) {
@@ -124,12 +129,16 @@ Message Rtia::serve(const Message& q) {
             else
                 create_from_modules(c, q.federation_name, q.values);
             break;
-        case Type::JOIN_FEDERATION_EXECUTION_V4:
-            if (!q.values.empty()) unimplemented(q, "additional FOM modules at join: not served yet");
+        case Type::JOIN_FEDERATION_EXECUTION_V4: {
+            // Modules added to the federation's FOM (IEEE 1516-2010 §4.5), as at creation.
+            std::string paths;
+            const std::string added = q.values.empty() ? "" : bundle_of(q.values, paths);
             // IEEE 1516-2010 lets the RTI name a federate that gives no name: its type and the rtia's pid.
-            a.federate = c.join(q.has_name ? q.name : q.federate_type + "-" + std::to_string(::getpid()), q.federation_name);
+            a.federate = c.join(q.has_name ? q.name : q.federate_type + "-" + std::to_string(::getpid()),
+                                q.federation_name, added);
             joined_ = true;
             break;
+        }
         case Type::DESTROY_FEDERATION_EXECUTION:
             c.destroy_federation(q.federation_name);
             a.federation_name = q.federation_name;

@@ -1,5 +1,6 @@
 #include "fed_parser/fom.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace hlacore::fom {
@@ -8,10 +9,14 @@ namespace {
 template <typename Vec>
 auto* by_handle(const Vec& items, Handle h) {
     using T = typename Vec::value_type;
-    if (h == 0 || h > items.size()) return static_cast<const T*>(nullptr);
-    const T* item = &items[h - 1];
-    if (item->handle == h) return item;
-    for (const T& candidate : items) {  // not laid out by handle (built by hand): fall back to a scan
+    if (h == 0) return static_cast<const T*>(nullptr);
+    if (h <= items.size() && items[h - 1].handle == h) return &items[h - 1];
+    // Not laid out by handle. A class's members after one was added at join skip handles but stay sorted by
+    // them (fed_parser/omt.hpp); a Fom built by hand may be in any order: then a scan.
+    const auto sorted = std::lower_bound(items.begin(), items.end(), h, [](const T& item, Handle x) { return item.handle < x; });
+    if (sorted != items.end() && sorted->handle == h) return &*sorted;
+    if (h > items.size()) return static_cast<const T*>(nullptr);  // a Fom built by hand numbers from 1, no gaps
+    for (const T& candidate : items) {
         if (candidate.handle == h) return &candidate;
     }
     return static_cast<const T*>(nullptr);

@@ -1,6 +1,7 @@
 // OMT XML FOM modules: expat reads each module into a small element tree (with each element's line and
 // column), the modules' class trees merge, then the merged tree is numbered into a Fom as parse_fed numbers
-// a .fed (classes in preorder, a class's inherited members first).
+// a .fed (classes in preorder, a class's inherited members first). Modules added at join merge into the same
+// trees afterwards, one at a time, each numbering only what it adds (omt.hpp says how).
 #include "fed_parser/omt.hpp"
 
 #include <expat.h>
@@ -123,6 +124,7 @@ struct Member {
     Delivery delivery;
     Place where;
     bool dimensions = false;  // it names dimensions: its space is kOmtSpace
+    Handle handle = 0;        // 0 until numbered
 };
 
 // Whether a class or an attribute names dimensions: 1516.2-2010's <dimensions><dimension>, 2000's
@@ -140,8 +142,11 @@ struct ClassTree {
     std::optional<Delivery> delivery;  // an interaction class's own, once a module gives it
     Place delivery_where;
     bool dimensions = false;           // an interaction class that names dimensions
+    Place dimensions_where;            // where it first did
     std::vector<Member> members;
     std::vector<ClassTree> children;
+    Handle handle = 0;                 // 0 until numbered
+    bool dirty = false;                // a module touched it or a class below it since it was numbered
 };
 
 // What differs between the two class trees of a module.
@@ -166,6 +171,7 @@ public:
             if (e.name != element) continue;
             const std::string name = e.value("name");
             if (name.empty()) fail(e, std::string("an ") + family.kind + " without a name");
+            root.dirty = true;
             if (name == family.root || name == family.root_13) merge(e, root, family);
             else merge(e, child_named(root, name), family);
         }
@@ -228,9 +234,13 @@ private:
     // Element `e`, a class of this module, into `node`: the same class, new or from an earlier module.
     void merge(const Element& e, ClassTree& node, const Family& family) {
         if (node.where.file.empty()) node.where = place(e);
+        node.dirty = true;
         const std::string what = std::string(family.kind) + " '" + node.name + "'";
         if (!family.member_delivery) {
-            node.dimensions = node.dimensions || names_dimensions(e);
+            if (!node.dimensions && names_dimensions(e)) {
+                node.dimensions = true;
+                node.dimensions_where = place(e);
+            }
             if (const auto d = delivery(e, what)) {
                 if (node.delivery && (node.delivery->transport != d->transport || node.delivery->order != d->order))
                     fail(e, what + " has another transportation or order at " + node.delivery_where.text());
@@ -271,70 +281,193 @@ private:
     const FomModule& module_;
 };
 
-// ---- numbering, as parse_fed does ----
+// ---- numbering, as parse_fed does; then, a module added at join at a time, what each adds ----
 
-// What numbering one class tree keeps track of: the qualified names so far (a root's subclass named like the
-// root, or a name with a dot in it, could otherwise name two classes) and the members counted.
+// What the numberings of one class tree keep track of: the qualified names (a root's subclass named like the
+// root, or a name with a dot in it, could otherwise name two classes) and the members counted (of both trees,
+// as parse_fed counts them).
 struct Numbering {
     std::map<std::string, Place> qualified;
-    std::size_t total = 0;
+    std::size_t* total = nullptr;
 };
 
-// `node` and its subclasses into `out`, in preorder; `inherited` are the places of the parent's members, for
-// the error when a class declares again a member it inherits.
+[[noreturn]] void fail_at(const Place& where, const std::string& message) {
+    throw FedError(where.file, where.line, where.column, message);
+}
+
+void count_members(std::size_t added, std::size_t& total, const Place& where) {
+    total += added;
+    if (total > kMaxClassMembers)
+        fail_at(where, "too many attributes and parameters: more than " + std::to_string(kMaxClassMembers) +
+                           ", counting the inherited ones in each subclass");
+}
+
+// The highest member handle of class `cls` and its subclasses: a member added to `cls` later goes above it, so
+// that no subclass has two members with one handle.
 template <class Cls, class M>
-void number(const ClassTree& node, Handle parent, std::vector<Cls>& out, std::vector<M> Cls::*members,
+Handle last_member(const std::vector<Cls>& out, std::vector<M> Cls::*members, Handle cls) {
+    const auto& own = out[cls - 1].*members;  // sorted by handle
+    Handle last = own.empty() ? 0 : own.back().handle;
+    for (Handle child : out[cls - 1].children) last = std::max(last, last_member(out, members, child));
+    return last;
+}
+
+// `member` (declared as `declared`) into the numbered class of `node` and, inherited, into its numbered
+// subclasses (the others copy it when numbered); the error names a subclass that declares it too. Returns
+// the classes it went into.
+template <class Cls, class M>
+std::size_t add_member(const ClassTree& node, std::vector<Cls>& out, std::vector<M> Cls::*members, const M& member,
+                       const Member& declared) {
+    (out[node.handle - 1].*members).push_back(member);
+    std::size_t classes = 1;
+    for (const ClassTree& child : node.children) {
+        if (!child.handle) continue;
+        const auto again = std::find_if(child.members.begin(), child.members.end(),
+                                        [&](const Member& m) { return m.name == member.name; });
+        if (again != child.members.end())
+            fail_at(declared.where, "'" + member.name + "' is declared already by the subclass '" +
+                                        out[child.handle - 1].qualified_name + "' at " + again->where.text());
+        classes += add_member(child, out, members, member, declared);
+    }
+    return classes;
+}
+
+// An interaction class's delivery and space: its own, else its parent's.
+void deliver(const ClassTree& node, const InteractionClass* parent, InteractionClass& cls) {
+    const Delivery d = node.delivery.value_or(parent ? Delivery{parent->transport, parent->order} : Delivery{});
+    cls.transport = d.transport;
+    cls.order = d.order;
+    cls.space = node.dimensions ? kOmtSpace : parent ? parent->space : std::string();
+}
+
+// What was merged into `node` and below since the last numbering, into `out`, in preorder (only down the
+// paths the modules touched): a class not numbered yet gets the next class handle; a member not numbered yet
+// the handle above every member of its class and of its subclasses (for a new class, the next after its
+// inherited ones), inherited at once by the subclasses. `inherited` are the ancestors' members, for the error
+// when a class declares again a member it inherits.
+template <class Cls, class M>
+void number(ClassTree& node, Handle parent, std::vector<Cls>& out, std::vector<M> Cls::*members,
             std::vector<const Member*> inherited, Numbering& n) {
-    Cls cls;
-    cls.handle = static_cast<Handle>(out.size() + 1);
-    cls.name = node.name;
-    cls.qualified_name = parent <= 1 ? node.name : out[parent - 1].qualified_name + "." + node.name;
-    cls.parent = parent;
-    if (const auto [first, added] = n.qualified.emplace(cls.qualified_name, node.where); !added)
-        throw FedError(node.where.file, node.where.line, node.where.column,
-                       "a second class named '" + cls.qualified_name + "' (the first at " + first->second.text() + ")");
-    if (parent) cls.*members = out[parent - 1].*members;
-    for (const Member& m : node.members) {
-        const auto clash = std::find_if(inherited.begin(), inherited.end(), [&](const Member* i) { return i->name == m.name; });
-        if (clash != inherited.end()) {
-            if (m.name == "HLAprivilegeToDeleteObject") continue;  // the MIM's, declared again
-            throw FedError(m.where.file, m.where.line, m.where.column,
-                           "'" + m.name + "' of '" + cls.qualified_name + "' is inherited from " + (*clash)->where.text());
+    if (!node.dirty) return;
+    node.dirty = false;
+    if (!node.handle) {
+        Cls cls;
+        cls.handle = static_cast<Handle>(out.size() + 1);
+        cls.name = node.name;
+        cls.qualified_name = parent <= 1 ? node.name : out[parent - 1].qualified_name + "." + node.name;
+        cls.parent = parent;
+        if (const auto [first, added] = n.qualified.emplace(cls.qualified_name, node.where); !added)
+            fail_at(node.where, "a second class named '" + cls.qualified_name + "' (the first at " + first->second.text() + ")");
+        if (parent) cls.*members = out[parent - 1].*members;
+        if constexpr (std::is_same_v<Cls, InteractionClass>) deliver(node, parent ? &out[parent - 1] : nullptr, cls);
+        node.handle = cls.handle;
+        if (parent) out[parent - 1].children.push_back(cls.handle);
+        count_members((cls.*members).size(), *n.total, node.where);
+        out.push_back(std::move(cls));
+    } else if constexpr (std::is_same_v<Cls, InteractionClass>) {
+        // A module added at join may not change how a class the federation has is delivered.
+        InteractionClass now;
+        deliver(node, parent ? &out[parent - 1] : nullptr, now);
+        const InteractionClass& cls = out[node.handle - 1];
+        if (now.transport != cls.transport || now.order != cls.order)
+            fail_at(node.delivery_where, "interaction class '" + cls.qualified_name +
+                                             "' has another transportation or order than the federation's FOM "
+                                             "gives it (declared at " + node.where.text() + ")");
+        if (now.space != cls.space)
+            fail_at(node.dimensions_where, "interaction class '" + cls.qualified_name +
+                                               "' names dimensions that the federation's FOM does not give it "
+                                               "(declared at " + node.where.text() + ")");
+    }
+    for (Member& m : node.members) {
+        if (!m.handle) {
+            const auto clash =
+                std::find_if(inherited.begin(), inherited.end(), [&](const Member* i) { return i->name == m.name; });
+            if (clash != inherited.end()) {
+                if (m.name == "HLAprivilegeToDeleteObject") continue;  // the MIM's, declared again
+                fail_at(m.where, "'" + m.name + "' of '" + out[node.handle - 1].qualified_name + "' is inherited from " +
+                                     (*clash)->where.text());
+            }
+            M member;
+            member.handle = m.handle = last_member(out, members, node.handle) + 1;
+            member.name = m.name;
+            if constexpr (std::is_same_v<M, Attribute>) {
+                member.transport = m.delivery.transport;
+                member.order = m.delivery.order;
+                if (m.dimensions) member.space = kOmtSpace;
+            }
+            count_members(add_member(node, out, members, member, m), *n.total, m.where);
         }
-        M member;
-        member.handle = static_cast<Handle>((cls.*members).size() + 1);
-        member.name = m.name;
-        if constexpr (std::is_same_v<M, Attribute>) {
-            member.transport = m.delivery.transport;
-            member.order = m.delivery.order;
-            if (m.dimensions) member.space = kOmtSpace;
-        }
-        (cls.*members).push_back(std::move(member));
         inherited.push_back(&m);
     }
-    if constexpr (std::is_same_v<Cls, InteractionClass>) {
-        const Delivery d = node.delivery.value_or(parent ? Delivery{out[parent - 1].transport, out[parent - 1].order} : Delivery{});
-        cls.transport = d.transport;
-        cls.order = d.order;
-        cls.space = node.dimensions ? kOmtSpace : parent ? out[parent - 1].space : std::string();
-    }
-    n.total += (cls.*members).size();
-    if (n.total > kMaxClassMembers)
-        throw FedError(node.where.file, node.where.line, node.where.column,
-                       "too many attributes and parameters: more than " + std::to_string(kMaxClassMembers) +
-                           ", counting the inherited ones in each subclass");
-    const Handle h = cls.handle;
-    if (parent) out[parent - 1].children.push_back(h);
-    out.push_back(std::move(cls));
-    for (const ClassTree& child : node.children) number(child, h, out, members, inherited, n);
+    for (ClassTree& child : node.children) number(child, node.handle, out, members, inherited, n);
 }
 
 ClassTree root(const char* name, std::optional<Member> mim) {
     ClassTree t;
     t.name = name;
+    t.dirty = true;  // numbered even when no module names it
     if (mim) t.members.push_back(*mim);
     return t;
 }
+
+// A FOM's merged class trees, dimensions and update rates, numbered into `fom` a layer at a time: the
+// creation's modules merged, then numbered; then each module added at join merged and numbered.
+class Model {
+public:
+    void merge(const FomModule& m) {
+        const Element document = read_xml(m);
+        const Element* model = document.children.empty() ? nullptr : &document.children.front();
+        if (!model || model->name != "objectModel")
+            throw FedError(m.file_name, model ? model->line : 1, model ? model->column : 1,
+                           "not an OMT FOM module: the document element is '" + (model ? model->name : "") +
+                               "', not objectModel");
+        if (fom_.source_name.empty()) fom_.source_name = m.file_name;
+        if (fom_.federation_name.empty()) {
+            const Element* id = model->child("modelIdentification");
+            fom_.federation_name = id ? id->value("name") : model->value("name");
+        }
+        Merger merger(m);
+        if (const Element* d = model->child("dimensions")) merger.dimensions(*d, dimensions_);
+        if (const Element* r = model->child("updateRates")) merger.update_rates(*r, rates_);
+        if (const Element* o = model->child("objects")) merger.classes(*o, "objectClass", kObjects, objects_);
+        if (const Element* i = model->child("interactions")) merger.classes(*i, "interactionClass", kInteractions, interactions_);
+    }
+
+    // Numbers what was merged since the last numbering.
+    void number_new() {
+        fom_.spaces.clear();  // the dimensions keep their handles: new ones were appended
+        if (!dimensions_.empty()) {
+            RoutingSpace space;
+            space.handle = 1;
+            space.name = kOmtSpace;
+            for (const auto& [d, where] : dimensions_) space.dimensions.push_back(d);
+            fom_.spaces.push_back(std::move(space));
+        }
+        number(objects_, 0, fom_.object_classes, &ObjectClass::attributes, {}, object_numbering_);
+        number(interactions_, 0, fom_.interaction_classes, &InteractionClass::parameters, {}, interaction_numbering_);
+    }
+
+    Fom take() {
+        fom_.fed_version = "IEEE 1516-2010";
+        for (auto& [r, where] : rates_) fom_.update_rates.push_back(std::move(r));
+        fom_.reindex();
+        return std::move(fom_);
+    }
+
+private:
+    // The MIM: the roots, and the privilege to delete an object, reliable and timestamped as IEEE 1516 has it.
+    ClassTree objects_ = root("HLAobjectRoot", Member{"HLAprivilegeToDeleteObject", {Transport::Reliable, Order::Timestamp},
+                                                      {"the MIM", 0, 0}});
+    ClassTree interactions_ = root("HLAinteractionRoot", std::nullopt);
+    std::vector<std::pair<Dimension, Place>> dimensions_;
+    std::vector<std::pair<UpdateRate, Place>> rates_;
+    Fom fom_;
+    std::size_t members_ = 0;  // of both trees: one bound, as parse_fed has
+    Numbering object_numbering_{{}, &members_}, interaction_numbering_{{}, &members_};  // the names are apart
+};
+
+// A bundle's header line of a module: "<name length> <text length>[ added]\n".
+constexpr std::string_view kAddedMark = " added\n";
 
 }  // namespace
 
@@ -344,46 +477,17 @@ bool is_xml(std::string_view text) {
 }
 
 Fom parse_omt(const std::vector<FomModule>& modules) {
-    // The MIM: the roots, and the privilege to delete an object, reliable and timestamped as IEEE 1516 has it.
-    ClassTree objects = root("HLAobjectRoot", Member{"HLAprivilegeToDeleteObject", {Transport::Reliable, Order::Timestamp},
-                                                     {"the MIM", 0, 0}});
-    ClassTree interactions = root("HLAinteractionRoot", std::nullopt);
-    std::vector<std::pair<Dimension, Place>> dimensions;
-    std::vector<std::pair<UpdateRate, Place>> rates;
-    Fom fom;
-    for (const FomModule& m : modules) {
-        const Element document = read_xml(m);
-        const Element* model = document.children.empty() ? nullptr : &document.children.front();
-        if (!model || model->name != "objectModel")
-            throw FedError(m.file_name, model ? model->line : 1, model ? model->column : 1,
-                           "not an OMT FOM module: the document element is '" + (model ? model->name : "") +
-                               "', not objectModel");
-        if (fom.source_name.empty()) fom.source_name = m.file_name;
-        if (fom.federation_name.empty()) {
-            const Element* id = model->child("modelIdentification");
-            fom.federation_name = id ? id->value("name") : model->value("name");
-        }
-        Merger merger(m);
-        if (const Element* d = model->child("dimensions")) merger.dimensions(*d, dimensions);
-        if (const Element* r = model->child("updateRates")) merger.update_rates(*r, rates);
-        if (const Element* o = model->child("objects")) merger.classes(*o, "objectClass", kObjects, objects);
-        if (const Element* i = model->child("interactions")) merger.classes(*i, "interactionClass", kInteractions, interactions);
+    Model model;
+    std::size_t i = 0;
+    for (; i < modules.size() && !modules[i].added; ++i) model.merge(modules[i]);
+    model.number_new();
+    for (; i < modules.size(); ++i) {
+        if (!modules[i].added)
+            throw FedError(modules[i].file_name, 1, 1, "a module of the federation's creation after one added at join");
+        model.merge(modules[i]);
+        model.number_new();
     }
-    fom.fed_version = "IEEE 1516-2010";
-    for (auto& [r, where] : rates) fom.update_rates.push_back(std::move(r));
-    if (!dimensions.empty()) {
-        RoutingSpace space;
-        space.handle = 1;
-        space.name = kOmtSpace;
-        for (auto& [d, where] : dimensions) space.dimensions.push_back(std::move(d));
-        fom.spaces.push_back(std::move(space));
-    }
-    Numbering n;  // one bound on the members of both trees, as parse_fed counts them
-    number(objects, 0, fom.object_classes, &ObjectClass::attributes, {}, n);
-    n.qualified.clear();  // the two trees' names are apart
-    number(interactions, 0, fom.interaction_classes, &InteractionClass::parameters, {}, n);
-    fom.reindex();
-    return fom;
+    return model.take();
 }
 
 Fom parse_omt(std::string_view text, std::string_view file_name) {
@@ -393,7 +497,8 @@ Fom parse_omt(std::string_view text, std::string_view file_name) {
 std::string bundle(const std::vector<FomModule>& modules) {
     std::string out(kBundleMagic);
     for (const FomModule& m : modules)
-        out += std::to_string(m.file_name.size()) + ' ' + std::to_string(m.text.size()) + '\n' + m.file_name + m.text;
+        out += std::to_string(m.file_name.size()) + ' ' + std::to_string(m.text.size()) +
+               std::string(m.added ? kAddedMark : "\n") + m.file_name + m.text;
     return out;
 }
 
@@ -401,33 +506,76 @@ std::vector<FomModule> unbundle(std::string_view text, std::string_view file_nam
     auto fail = [&](const std::string& why) -> FedError {
         return FedError(std::string(file_name), 1, 1, "malformed bundle of FOM modules: " + why);
     };
-    auto number = [&](std::string_view& rest, char end) {
+    auto number = [&](std::string_view& rest) {
         std::size_t value = 0, digits = 0;
         for (; digits < rest.size() && rest[digits] >= '0' && rest[digits] <= '9'; ++digits) {
             if (value > (kMaxFedBytes - (rest[digits] - '0')) / 10) throw fail("a length beyond the limit");
             value = value * 10 + static_cast<std::size_t>(rest[digits] - '0');
         }
-        if (digits == 0 || digits == rest.size() || rest[digits] != end) throw fail("a length expected");
-        rest.remove_prefix(digits + 1);
+        if (digits == 0) throw fail("a length expected");
+        rest.remove_prefix(digits);
         return value;
     };
-    if (text.substr(0, kBundleMagic.size()) != kBundleMagic) throw fail("it does not begin as one");
-    std::string_view rest = text.substr(kBundleMagic.size());
+    auto skip = [](std::string_view& rest, std::string_view what) {
+        if (rest.substr(0, what.size()) != what) return false;
+        rest.remove_prefix(what.size());
+        return true;
+    };
+    if (!skip(text, kBundleMagic)) throw fail("it does not begin as one");
     std::vector<FomModule> modules;
-    while (!rest.empty()) {
-        const std::size_t name_size = number(rest, ' ');
-        const std::size_t text_size = number(rest, '\n');
-        if (rest.size() < name_size || rest.size() - name_size < text_size) throw fail("a module cut short");
-        modules.push_back({std::string(rest.substr(name_size, text_size)), std::string(rest.substr(0, name_size))});
-        rest.remove_prefix(name_size + text_size);
+    while (!text.empty()) {
+        const std::size_t name_size = number(text);
+        if (!skip(text, " ")) throw fail("a length expected");
+        const std::size_t text_size = number(text);
+        const bool added = skip(text, kAddedMark);
+        if (!added && !skip(text, "\n")) throw fail("a length expected");
+        if (text.size() < name_size || text.size() - name_size < text_size) throw fail("a module cut short");
+        if (!added && !modules.empty() && modules.back().added) throw fail("a module of the creation after one added at join");
+        modules.push_back({std::string(text.substr(name_size, text_size)), std::string(text.substr(0, name_size)), added});
+        text.remove_prefix(name_size + text_size);
     }
     if (modules.empty()) throw fail("no module");
     return modules;
 }
 
+bool is_bundle(std::string_view text) { return text.substr(0, kBundleMagic.size()) == kBundleMagic; }
+
 Fom parse_fom(std::string_view text, std::string_view file_name) {
-    if (text.substr(0, kBundleMagic.size()) == kBundleMagic) return parse_omt(unbundle(text, file_name));
+    if (is_bundle(text)) return parse_omt(unbundle(text, file_name));
     return is_xml(text) ? parse_omt(text, file_name) : parse_fed(text, file_name);
+}
+
+std::vector<FomModule> fom_modules(std::string_view text, std::string_view file_name) {
+    if (is_bundle(text)) return unbundle(text, file_name);
+    if (!is_xml(text)) throw FedError(std::string(file_name), 1, 1, "an HLA 1.3 .fed, not FOM modules");
+    return {{std::string(text), std::string(file_name)}};
+}
+
+ExtendedFom extend_fom(std::string_view fed_text, std::string_view file_name, const std::vector<FomModule>& added) {
+    if (!is_bundle(fed_text) && !is_xml(fed_text))
+        throw FedError(std::string(file_name), 1, 1,
+                       "the federation was created from an HLA 1.3 .fed, which takes no FOM modules at join");
+    std::vector<FomModule> modules = fom_modules(fed_text, file_name);
+    for (const FomModule& m : added) modules.push_back({m.text, m.file_name, true});
+    ExtendedFom extended{parse_omt(modules), bundle(modules)};
+    return extended;
+}
+
+bool extends(std::string_view text, std::string_view base) {
+    if (text == base) return true;
+    std::vector<FomModule> ours, theirs;
+    try {
+        ours = fom_modules(text, "");
+        theirs = fom_modules(base, "");
+    } catch (const FedError&) {
+        return false;
+    }
+    if (ours.size() < theirs.size()) return false;
+    for (std::size_t i = 0; i < ours.size(); ++i) {
+        if (i < theirs.size() ? ours[i].text != theirs[i].text || ours[i].added != theirs[i].added : !ours[i].added)
+            return false;
+    }
+    return true;
 }
 
 }  // namespace hlacore::fom

@@ -34,6 +34,9 @@ def frame(name, payload=b""):
 
 
 FED = (ROOT / "tests" / "data" / "robot.fed").read_text()
+# FOM modules added at join: a bundle (cpp/fed_parser/omt.hpp) of one module.
+_CARS = (ROOT / "tests" / "data" / "rti1516e" / "cars.xml").read_text()
+MODULES = f"hlacore FOM modules\n8 {len(_CARS.encode())}\ncars.xml{_CARS}"
 MESSAGES = {
     "Hello": u32(0x484C4143) + u16(VERSION),
     "Welcome": u16(VERSION) + s("hlacore rtig") + u32(64 << 20) + s("") + u64(0x1234_5678_9ABC_DEF0) + u32(1400) + s(""),
@@ -52,8 +55,9 @@ MESSAGES = {
     "CreateFederation": u32(1) + s("TestFed") + s("robot.fed") + s(FED) + s("") + u8(0) + u8(0),
     "CreateFederation-by-name": u32(1) + s("TestFed") + s("robot.fed") + s("") + s("") + u8(2) + u8(1),
     "DestroyFederation": u32(2) + s("TestFed") + s(""),
-    "JoinFederation": u32(3) + s("alice") + s("TestFed") + s(""),
-    "JoinFederation-proof": u32(3) + s("alice") + s("TestFed") + s(bytes(32)),
+    "JoinFederation": u32(3) + s("alice") + s("TestFed") + s("") + s(""),
+    "JoinFederation-proof": u32(3) + s("alice") + s("TestFed") + s(bytes(32)) + s(""),
+    "JoinFederation-modules": u32(3) + s("alice") + s("TestFed") + s("") + s(MODULES),
     "ResignFederation": u32(4) + u8(3),
     "RegisterSyncPoint": s("start") + s("tag") + b(False) + hs([1, 2]),
     "SyncPointAchieved": s("start"),

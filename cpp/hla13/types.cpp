@@ -54,6 +54,7 @@ struct Exceptions : RTI {
     using SaveNotInProgress = RTIinternalError;
     using RestoreNotInProgress = RTIinternalError;
     using InvalidUpdateRateDesignator = RTIinternalError;
+    using InconsistentFDD = RTIinternalError;
 };
 }  // namespace
 

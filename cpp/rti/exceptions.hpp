@@ -95,7 +95,9 @@
     X(SaveNotInProgress)                        \
     X(RestoreNotInProgress)                     \
     /* IEEE 1516-2010's update rate named by no FOM module */ \
-    X(InvalidUpdateRateDesignator)
+    X(InvalidUpdateRateDesignator)              \
+    /* FOM modules added at join that contradict the federation's (IEEE 1516-2010's InconsistentFDD) */ \
+    X(InconsistentFDD)
 
 namespace hlacore {
 

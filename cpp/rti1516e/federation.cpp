@@ -20,15 +20,15 @@ std::string module_path(std::wstring const& designator) {
     return path;
 }
 
-// The modules' texts, read here (none: the gateway looks the one name up in its --fom-path).
-std::vector<fom::FomModule> read_modules(std::vector<std::wstring> const& designators) {
-    if (designators.empty()) raise("CouldNotOpenFDD", "no FOM module given");
+// The modules' texts, read here. `gateway_may_look`: one name this process cannot read gives none, for the
+// gateway to look up in its --fom-path (at creation; modules added at join are read here or not at all).
+std::vector<fom::FomModule> read_modules(std::vector<std::wstring> const& designators, bool gateway_may_look) {
     std::vector<fom::FomModule> modules;
     for (const auto& designator : designators) {
         const std::string path = module_path(designator);
         std::ifstream file{path, std::ios::binary};
         if (!file) {
-            if (designators.size() == 1) return {};
+            if (gateway_may_look && designators.size() == 1) return {};
             raise("CouldNotOpenFDD", "cannot open '" + path + "'");
         }
         std::ostringstream text;
@@ -36,6 +36,15 @@ std::vector<fom::FomModule> read_modules(std::vector<std::wstring> const& design
         modules.push_back({text.str(), path});
     }
     return modules;
+}
+
+// ErrorReadingFDD (FILE:LINE:COL) unless the modules read and merge, here at the caller.
+void check_modules(std::vector<fom::FomModule> const& modules) {
+    try {
+        fom::parse_omt(modules);
+    } catch (const fom::FedError& e) {
+        raise("ErrorReadingFDD", e.what());
+    }
 }
 
 TimeType time_type(std::wstring const& name) {
@@ -115,16 +124,13 @@ void Ambassador::createFederationExecution(std::wstring const& federation, std::
                                            std::wstring const& timeType) {
     guarded([&] {
         const TimeType type = time_type(timeType);
-        std::vector<fom::FomModule> read = read_modules(modules);
+        if (modules.empty()) raise("CouldNotOpenFDD", "no FOM module given");
+        std::vector<fom::FomModule> read = read_modules(modules, true);
         if (read.empty()) {  // one name this process cannot read: the gateway's --fom-path
             client().create_federation(utf8(federation), module_path(modules[0]), "", type);
             return;
         }
-        try {
-            fom::parse_omt(read);  // the errors here, FILE:LINE:COL
-        } catch (const fom::FedError& e) {
-            raise("ErrorReadingFDD", e.what());
-        }
+        check_modules(read);
         std::string names;
         for (const auto& m : read) names += (names.empty() ? "" : ", ") + m.file_name;
         client().create_federation(utf8(federation), names, read.size() == 1 ? read[0].text : fom::bundle(read), type);
@@ -155,12 +161,14 @@ FederateHandle Ambassador::joinFederationExecution(std::wstring const& name, std
                                                    std::wstring const& federation,
                                                    std::vector<std::wstring> const& modules) {
     return guarded([&] {
-        if (!modules.empty())
-            not_served("additional FOM modules at join", "give every module to createFederationExecution");
+        // Modules added to the federation's FOM (IEEE 1516-2010 §4.5): InconsistentFDD from the gateway for
+        // one that contradicts it.
+        const std::vector<fom::FomModule> added = read_modules(modules, false);
+        if (!added.empty()) check_modules(added);
         std::lock_guard<std::recursive_mutex> lock(mu_);
         std::uint32_t handle = 0;
         try {
-            handle = client().join(utf8(name), utf8(federation));
+            handle = client().join(utf8(name), utf8(federation), added.empty() ? "" : fom::bundle(added));
         } catch (const RtiError& e) {
             if (e.code() != ErrorCode::FederateAlreadyExecutionMember) throw;
             raise(joined_ ? "FederateAlreadyExecutionMember" : "FederateNameAlreadyInUse", e.what());

@@ -5,7 +5,7 @@ hlacore native core: gateway, client connection, FED parser
 from __future__ import annotations
 import collections.abc
 import typing
-__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ClientSettings', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'InvalidUpdateRateDesignator', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'client_options', 'client_settings', 'fom_bundle', 'gateway_options', 'parse_fed', 'parse_fom_modules']
+__all__: list[str] = ['ArrayIndexOutOfBounds', 'AsynchronousDeliveryAlreadyDisabled', 'AsynchronousDeliveryAlreadyEnabled', 'AttributeAcquisitionWasNotCanceled', 'AttributeAcquisitionWasNotRequested', 'AttributeAlreadyBeingAcquired', 'AttributeAlreadyBeingDivested', 'AttributeAlreadyOwned', 'AttributeDivestitureWasNotRequested', 'AttributeHandle', 'AttributeNotDefined', 'AttributeNotKnown', 'AttributeNotOwned', 'AttributeNotPublished', 'AuthenticationFailed', 'BackgroundGateway', 'CALLBACKS', 'ClientSettings', 'ConcurrentAccessAttempted', 'CouldNotDiscover', 'CouldNotOpenFED', 'CouldNotRestore', 'DeletePrivilegeNotHeld', 'DimensionHandle', 'DimensionNotDefined', 'EnableTimeConstrainedPending', 'EnableTimeConstrainedWasNotPending', 'EnableTimeRegulationPending', 'EnableTimeRegulationWasNotPending', 'ErrorReadingFED', 'EventNotKnown', 'EventRetractionHandle', 'FederateAlreadyExecutionMember', 'FederateHandle', 'FederateInternalError', 'FederateLoggingServiceCalls', 'FederateNotExecutionMember', 'FederateOwnsAttributes', 'FederateWasNotAskedToReleaseAttribute', 'FederatesCurrentlyJoined', 'FederationExecutionAlreadyExists', 'FederationExecutionDoesNotExist', 'FederationTimeAlreadyPassed', 'GatewayNotResponding', 'HandleValuePairMaximumExceeded', 'InconsistentFDD', 'InteractionClassHandle', 'InteractionClassNotDefined', 'InteractionClassNotKnown', 'InteractionClassNotPublished', 'InteractionClassNotSubscribed', 'InteractionParameterNotDefined', 'InteractionParameterNotKnown', 'InvalidExtents', 'InvalidFederationTime', 'InvalidHandleValuePairSetContext', 'InvalidLookahead', 'InvalidOrderingHandle', 'InvalidRegionContext', 'InvalidResignAction', 'InvalidRetractionHandle', 'InvalidTransportationHandle', 'InvalidUpdateRateDesignator', 'MAX_BUSY_POLL_US', 'MAX_DATAGRAM_RANGE', 'MAX_EXTENT', 'MAX_FRAME_RANGE', 'MIN_CLIENT_BUDGET', 'MIN_EXTENT', 'MemoryExhausted', 'NameNotFound', 'ObjectAlreadyRegistered', 'ObjectClassHandle', 'ObjectClassNotDefined', 'ObjectClassNotKnown', 'ObjectClassNotPublished', 'ObjectClassNotSubscribed', 'ObjectHandle', 'ObjectNotKnown', 'OrderingHandle', 'OwnershipAcquisitionPending', 'ParameterHandle', 'RTIAmbassadorBase', 'RTIexception', 'RTIinternalError', 'RegionHandle', 'RegionInUse', 'RegionNotKnown', 'RestoreInProgress', 'RestoreNotInProgress', 'RestoreNotRequested', 'SaveInProgress', 'SaveNotInProgress', 'SaveNotInitiated', 'SpaceHandle', 'SpaceNotDefined', 'SpecifiedSaveLabelDoesNotExist', 'SynchronizationPointLabelWasNotAnnounced', 'TimeAdvanceAlreadyInProgress', 'TimeAdvanceWasNotInProgress', 'TimeConstrainedAlreadyEnabled', 'TimeConstrainedWasNotEnabled', 'TimeRegulationAlreadyEnabled', 'TimeRegulationWasNotEnabled', 'TransportationHandle', 'UnableToPerformSave', 'ValueCountExceeded', 'ValueLengthExceeded', 'client_options', 'client_settings', 'fom_bundle', 'gateway_options', 'parse_fed', 'parse_fom_modules']
 class RTIexception(Exception):
     """
     Base of every HLA 1.3 exception raised by hlacore.
@@ -345,6 +345,10 @@ class RestoreNotInProgress(RTIinternalError):
 class InvalidUpdateRateDesignator(RTIinternalError):
     """
     hlacore's exception InvalidUpdateRateDesignator, a kind of RTIinternalError.
+    """
+class InconsistentFDD(RTIinternalError):
+    """
+    hlacore's exception InconsistentFDD, a kind of RTIinternalError: FOM modules added at join (IEEE 1516-2010) that contradict the federation's FOM, or a federation created from a .fed.
     """
 class ObjectClassHandle:
     """
@@ -778,7 +782,7 @@ class RTIAmbassadorBase:
         ...
     def _has_callbacks(self) -> bool:
         ...
-    def _join(self, arg0: str, arg1: str) -> FederateHandle:
+    def _join(self, federate: str, federation: str, fom_modules: str = '') -> FederateHandle:
         ...
     def _lost(self) -> str | None:
         ...
@@ -1272,9 +1276,9 @@ def client_settings(given: collections.abc.Mapping[str, str]) -> ClientSettings:
     """
     The client's settings from the options given (keyword: text), else the environment, else the defaults; RTIinternalError naming a value refused.
     """
-def fom_bundle(modules: collections.abc.Sequence[tuple[str, str]]) -> bytes:
+def fom_bundle(modules: collections.abc.Sequence[tuple[str, str]], added: collections.abc.Sequence[tuple[str, str]] = []) -> bytes:
     """
-    Several FOM modules, (text, file name) pairs, as the one text a federation is created from (a bundle: cpp/fed_parser/omt.hpp); parse_fed reads it back.
+    Several FOM modules, (text, file name) pairs, as the one text a federation is created from (a bundle: cpp/fed_parser/omt.hpp), and those added at joins after them, in order (each numbered after the ones before it, keeping their handles); parse_fed reads it back.
     """
 def gateway_options() -> list:
     """

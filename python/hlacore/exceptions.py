@@ -6,9 +6,9 @@ them and the same classes are reachable as ``hlacore.rti.<Name>``. The list is d
 names the classes statically so that type checkers and readers see them (tests/rti/test_exceptions.py checks
 that it matches the C++ list exactly). ``ErrorReadingFED`` carries ``file``, ``line`` and ``column`` of a
 ``.fed`` error. hlacore's own exceptions (``GatewayNotResponding``, ``AuthenticationFailed``, and
-``SaveNotInProgress``, ``RestoreNotInProgress`` and ``InvalidUpdateRateDesignator`` of IEEE 1516-2010) are
-subclasses of :class:`~hlacore.rti.RTIinternalError`, so code written for PyHLA that catches that still
-catches them.
+``SaveNotInProgress``, ``RestoreNotInProgress`` and ``InvalidUpdateRateDesignator`` of IEEE 1516-2010, and
+``InconsistentFDD`` for FOM modules added at join that contradict the federation's) are subclasses of
+:class:`~hlacore.rti.RTIinternalError`, so code written for PyHLA that catches that still catches them.
 """
 
 from __future__ import annotations
@@ -102,6 +102,7 @@ AuthenticationFailed = _core.AuthenticationFailed
 SaveNotInProgress = _core.SaveNotInProgress
 RestoreNotInProgress = _core.RestoreNotInProgress
 InvalidUpdateRateDesignator = _core.InvalidUpdateRateDesignator
+InconsistentFDD = _core.InconsistentFDD
 
 __all__ = [
     "RTIexception",
@@ -189,4 +190,5 @@ __all__ = [
     "SaveNotInProgress",
     "RestoreNotInProgress",
     "InvalidUpdateRateDesignator",
+    "InconsistentFDD",
 ]

@@ -409,8 +409,12 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         Returns the federate's :class:`FederateHandle`. Raises :class:`FederateAlreadyExecutionMember`
         (this ambassador is joined, or the name is taken) and :class:`FederationExecutionDoesNotExist`.
         """
-        handle = self._join(yourName, executionName)
-        self._federate_ambassador = federateAmbassadorReference
+        return self._join_with(yourName, executionName, federateAmbassadorReference)
+
+    def _join_with(self, name: str, execution: str, ambassador: Any, fom_modules: str = "") -> FederateHandle:
+        """joinFederationExecution, with FOM modules added to the federation's (a bundle; hlacore.rti1516e)."""
+        handle = self._join(name, execution, fom_modules)
+        self._federate_ambassador = ambassador
         return handle
 
     def resignFederationExecution(self, theAction: int) -> None:

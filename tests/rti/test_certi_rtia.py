@@ -369,7 +369,7 @@ def test_the_installed_rtia_is_named_by_hlacore_config() -> None:
 
 def test_jcertis_1516_create_and_join_with_an_xml_fom_module(certi: Certi, tmp_path: pathlib.Path) -> None:
     """JCERTI's IEEE 1516-2010 ambassador creates from FOM modules named by URL (one, or several merged), joins
-    by federate type, and reserves object instance names."""
+    by federate type (also adding a module), and reserves object instance names."""
     module = tmp_path / "robots.xml"
     module.write_text("""<objectModel><objects><objectClass><name>HLAobjectRoot</name><objectClass><name>robot</name>
 <attribute><name>location</name><transportation>HLAreliable</transportation><order>TimeStamp</order></attribute>
@@ -399,6 +399,17 @@ def test_jcertis_1516_create_and_join_with_an_xml_fom_module(certi: Certi, tmp_p
     cars = tmp_path / "cars.xml"
     cars.write_text("""<objectModel><objects><objectClass><name>HLAobjectRoot</name><objectClass><name>robot</name>
 <objectClass><name>car</name></objectClass></objectClass></objectClass></objects></objectModel>""")
+    # Another JCERTI federate joins adding the Cars module: the first finds its class once its rtia has read what
+    # the gateway sent (a tick), the classes it knew unchanged.
+    g = certi.federate(True)
+    g.call("JOIN_FEDERATION_EXECUTION_V4", name="adder", federate_type="ptolemy", rti_version=3, federation="Evolved",
+           values=[f"file:{cars}".encode()])
+    car = g.call("GET_OBJECT_CLASS_HANDLE", name="HLAobjectRoot.robot.car").object_class
+    f.tick(0.2, 0.5)
+    assert f.call("GET_OBJECT_CLASS_HANDLE", name="HLAobjectRoot.robot.car").object_class == car
+    assert f.call("GET_OBJECT_CLASS_HANDLE", name="HLAobjectRoot.robot").object_class == robot
+    g.call("RESIGN_FEDERATION_EXECUTION", resign_action=3)
+    assert g.close() == 0
     f.call("CREATE_FEDERATION_EXECUTION_V4", federation="Two", rti_version=3,
            values=[f"file://{module}".encode(), str(cars).encode()])
     assert [fed["fed"] for fed in status(certi.address)["federations"] if fed["name"] == "Two"] == [f"{module}, {cars}"]

@@ -22,7 +22,7 @@ from hlacore.status import status
 
 from support import ROBOT_FED, RtigProcess, rtig_executable, running_rtig, secret_file, status_client, wait_for_log
 from support.nethosts import NetHosts
-from support.wire import T, boolean, frame, hello, raw_client, string, u32, u64
+from support.wire import Answer, RawClient, T, boolean, frame, hello, raw_client, string, u32, u64
 
 SECRET = "correct horse battery staple"
 
@@ -232,14 +232,16 @@ def test_a_federation_proof_is_bound_to_its_connection_action_and_federation(
         first.handshake()
         second.handshake()
         assert len(first.nonce) == 32 and first.nonce != second.nonce
-        joined = first.call("JoinFederation", string("first") + string("Lab") + string(proof(first.nonce, "join")))
+        def join(client: RawClient, name: str, signed: bytes) -> Answer:  # no FOM modules added
+            return client.call("JoinFederation", string(name) + string("Lab") + string(signed) + string(""))
+
+        joined = join(first, "first", proof(first.nonce, "join"))
         assert joined.error == 0, joined.message
-        replayed = second.call("JoinFederation", string("second") + string("Lab") + string(proof(first.nonce, "join")))
+        replayed = join(second, "second", proof(first.nonce, "join"))
         assert "the secret is wrong" in replayed.message
-        other_action = second.call("JoinFederation", string("second") + string("Lab")
-                                   + string(proof(second.nonce, "destroy")))
+        other_action = join(second, "second", proof(second.nonce, "destroy"))
         assert "the secret is wrong" in other_action.message
-        right = second.call("JoinFederation", string("second") + string("Lab") + string(proof(second.nonce, "join")))
+        right = join(second, "second", proof(second.nonce, "join"))
         assert right.error == 0, right.message
 
 

@@ -164,14 +164,15 @@ void Client::destroy_federation(const std::string& name) {
     call(wire::DestroyFederation{id, name, federation_proof("destroy", name)}, id);
 }
 
-std::uint32_t Client::join(const std::string& federate, const std::string& federation) {
+std::uint32_t Client::join(const std::string& federate, const std::string& federation, const std::string& fom_modules) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         if (fom_) raise(ErrorCode::FederateAlreadyExecutionMember, "this ambassador is already joined");
+        early_fom_.reset();
     }
     const auto id = next_request();
     auto joined = call<wire::FederationJoined>(
-        wire::JoinFederation{id, federate, federation, federation_proof("join", federation)}, id);
+        wire::JoinFederation{id, federate, federation, federation_proof("join", federation), fom_modules}, id);
     auto parsed = std::make_unique<fom::Fom>(fom::parse_fom(joined.fed_text, joined.fed_name));
     {
         auto sending = lock_send();
@@ -179,9 +180,33 @@ std::uint32_t Client::join(const std::string& federate, const std::string& feder
     }
     std::lock_guard<std::mutex> lock(mu_);
     fom_ = std::move(parsed);
+    if (early_fom_) {  // another federate extended the FOM right after this one joined
+        take_fom(early_fom_->fed_text, early_fom_->fed_name);
+        early_fom_.reset();
+    }
     federate_ = joined.federate;
     time_type_ = static_cast<TimeType>(joined.time_type);
     return joined.federate;
+}
+
+// Another federate joined with FOM modules of its own (IEEE 1516-2010 §4.5): from now on lookups find what
+// they added, every handle known before meaning the same. At arrival, under mu_: the gateway sends it before
+// anything that names a new class or member.
+bool Client::arrived(wire::FomExtended& m) {
+    if (fom_) take_fom(m.fed_text, m.fed_name);
+    else early_fom_ = std::move(m);  // join() has the FederationJoined and not yet its FOM
+    return false;
+}
+
+void Client::take_fom(const std::string& fed_text, const std::string& fed_name) {
+    try {
+        fom_ = std::make_unique<fom::Fom>(fom::parse_fom(fed_text, fed_name));
+    } catch (const fom::FedError& e) {
+        close_locked(ErrorCode::RTIinternalError, std::string("protocol error from the gateway: its extended FOM "
+                                                              "does not read here: ") + e.what());
+        return;
+    }
+    widen_regions();
 }
 
 void Client::resign(std::uint8_t action) {

@@ -91,7 +91,10 @@ public:
     void create_federation(const std::string& name, const std::string& fed_name, const std::string& fed_text,
                            TimeType time_type = TimeType::Float64);
     void destroy_federation(const std::string& name);
-    std::uint32_t join(const std::string& federate, const std::string& federation);
+    // `fom_modules`: FOM modules this federate adds to the federation's (IEEE 1516-2010 §4.5), a bundle
+    // (fom::bundle), read and checked by the caller; the gateway refuses what does not fit with ErrorReadingFED
+    // or InconsistentFDD, and on success every federate joined before learns the extended FOM (FomExtended).
+    std::uint32_t join(const std::string& federate, const std::string& federation, const std::string& fom_modules = "");
     void resign(std::uint8_t action);
 
     // ---- declaration management ----
@@ -363,6 +366,11 @@ private:
     // initiateFederateRestore: the regions, region subscriptions and update associations as saved,
     // under their saved numbers (callers hold mu_).
     void restore_regions(const wire::RestoredState& saved);
+    // After the FOM gained dimensions (FomExtended): each region spans the new ones whole, as the gateway's do.
+    void widen_regions();
+    // The FOM the gateway sent, in place of this federate's (mu_ held; a text that does not read closes the
+    // connection: the gateway read it).
+    void take_fom(const std::string& fed_text, const std::string& fed_name);
     void refuse_region_change_while_restoring(const char* service) const;  // RestoreInProgress
 
     // Encodes and writes one message (writer.cpp instantiates it for every message type).
@@ -464,6 +472,7 @@ private:
     void check_liveness();
     // Closes the connection for `reason`: every later call raises `code` saying so.
     void close_connection(ErrorCode code, const std::string& reason);
+    void close_locked(ErrorCode code, const std::string& reason);  // the same, mu_ held
     // A signal interrupted a wait: the host may abandon it, then the connection is closed when `owed`.
     void on_interrupt(const char* owed);
     // Waits until `done()` (under mu_) for an answer of the handshake kind, GatewayNotResponding at `deadline`.
@@ -662,8 +671,11 @@ private:
     std::map<std::uint32_t, wire::Message> replies_;  // the answers (HLACORE_ANSWERS) by request id
     std::uint32_t last_request_ = 0;
 
-    // Federate state, under mu_.
+    // Federate state, under mu_. The FOM is replaced whole when another federate extends it at join (every
+    // reader holds mu_, so none sees it change under it).
     std::unique_ptr<fom::Fom> fom_;
+    // A FomExtended filed between this federate's FederationJoined and join() taking that FOM: the later one.
+    std::optional<wire::FomExtended> early_fom_;
     std::uint32_t federate_ = 0;
     TimeType time_type_ = TimeType::Float64;
     // One piece of state per service group, each changed in client/<group>.cpp.

@@ -121,6 +121,10 @@ void Client::on_interrupt(const char* owed) {
 
 void Client::close_connection(ErrorCode code, const std::string& reason) {
     std::lock_guard<std::mutex> lock(mu_);
+    close_locked(code, reason);
+}
+
+void Client::close_locked(ErrorCode code, const std::string& reason) {
     if (closed_) return;
     closed_ = true;
     closed_code_ = code;

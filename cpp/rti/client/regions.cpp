@@ -108,6 +108,16 @@ void Client::refuse_region_change_while_restoring(const char* service) const {
                                                                    "(until federationRestored or federationNotRestored)");
 }
 
+void Client::widen_regions() {
+    for (auto& [handle, r] : ddm_.regions) {
+        const auto* s = fom_->space(r.space);
+        while (s && r.bounds.size() < 2 * s->dimensions.size()) {
+            r.bounds.push_back(static_cast<std::uint32_t>(kMinExtent));
+            r.bounds.push_back(static_cast<std::uint32_t>(kMaxExtent));
+        }
+    }
+}
+
 void Client::restore_regions(const wire::RestoredState& saved) {
     ddm_ = DdmState{};
     for (const auto& [region, space, bounds] : saved.regions) ddm_.regions[region] = LocalRegion{space, bounds};

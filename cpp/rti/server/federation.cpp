@@ -58,6 +58,14 @@ FederateHandle Federation::join(const std::string& federate_name) {
 
 void Federation::announce_pending(FederateHandle h) { sync_points_.joined(h); }
 
+void Federation::extend_fom(fom::ExtendedFom extended, FederateHandle joining) {
+    fom_ = std::move(extended.fom);
+    fed_text_ = std::move(extended.text);
+    widen_regions();
+    for (const auto& [h, f] : federates_)
+        if (h != joining) outbox_.send(h, wire::FomExtended{fed_text_, fed_name_});
+}
+
 void Federation::resign(FederateHandle h, wire::ResignAction action) {
     using wire::ResignAction;
     if (action < ResignAction::ReleaseAttributes || action > ResignAction::NoAction)

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "fed_parser/fom.hpp"
+#include "fed_parser/omt.hpp"
 #include "rti/exceptions.hpp"
 #include "rti/server/declarations.hpp"
 #include "rti/server/name_reservations.hpp"
@@ -45,6 +46,9 @@ public:
     FederateHandle join(const std::string& federate_name);
     // Sends a new federate what it must hear first (announcements of pending synchronization points).
     void announce_pending(FederateHandle federate);
+    // A federate joined with FOM modules of its own (IEEE 1516-2010 §4.5): the FOM becomes `extended` (every
+    // handle kept), each other federate is sent it (FomExtended) and regions span the dimensions it adds.
+    void extend_fom(fom::ExtendedFom extended, FederateHandle joining);
     void resign(FederateHandle federate, wire::ResignAction action);
 
     // Returns (object handle, object name). Throws ObjectAlreadyRegistered for a name in use.
@@ -127,6 +131,8 @@ private:
     // The class a federate receives an interaction sent in `region` (null: default region) as, or 0.
     fom::Handle interaction_receiver(const FederateState& g, fom::Handle cls, const Region* region) const;
     void discover_in_scope();  // after regions, associations or subscriptions changed
+    // After the FOM gained dimensions: each region spans the new ones whole, as one that does not name them.
+    void widen_regions();
     // The known object's attributes in scope for federate `gh` (HLA 1.3 §6.13).
     std::set<fom::Handle> scope_of(FederateHandle gh, const FederateState& g, ObjectHandle object,
                                    const ObjectInstance& obj) const;

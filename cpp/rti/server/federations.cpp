@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include <sys/stat.h>
@@ -29,6 +30,24 @@ bool read_file(const std::string& path, std::string& text, std::size_t limit) {
         if (!in) break;
     }
     return !in.bad();
+}
+
+// The federation's FOM with the modules a federate adds at join (IEEE 1516-2010 §4.5): ErrorReadingFED for
+// modules that do not read on their own, InconsistentFDD for ones that contradict the federation's FOM (or
+// for a federation created from a .fed, which takes none).
+fom::ExtendedFom extended_fom(const Federation& federation, const std::string& modules) {
+    std::vector<fom::FomModule> added;
+    try {
+        added = fom::unbundle(modules, "the FOM modules added at join");
+        fom::parse_omt(added);
+    } catch (const fom::FedError& e) {
+        throw RtiError(ErrorCode::ErrorReadingFED, e.what());
+    }
+    try {
+        return fom::extend_fom(federation.fed_text(), federation.fed_name(), added);
+    } catch (const fom::FedError& e) {
+        throw RtiError(ErrorCode::InconsistentFDD, e.what());
+    }
 }
 
 }  // namespace
@@ -100,7 +119,10 @@ void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
             throw RtiError(ErrorCode::FederationExecutionDoesNotExist, "federation '" + m.federation + "' does not exist");
         FederationEntry& entry = *it->second;
         entry.federation.check_membership_change("joinFederationExecution");
+        std::optional<fom::ExtendedFom> extended;
+        if (!m.fom_modules.empty()) extended = extended_fom(entry.federation, m.fom_modules);
         const FederateHandle h = entry.federation.join(m.federate);
+        if (extended) entry.federation.extend_fom(std::move(*extended), h);
         c.federation = entered = &entry;
         c.federate = h;
         entry.outbox.peers_[h] = &c;
@@ -113,7 +135,8 @@ void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
     entered->federation.announce_pending(c.federate);  // after the reply: the client is joined by then
     if (trace_) trace_->joined(m.federation, c.federate, m.federate, c.read_ns);
     if (options_.verbose)
-        log("'" + m.federate + "' joined '" + m.federation + "' as federate " + std::to_string(c.federate));
+        log("'" + m.federate + "' joined '" + m.federation + "' as federate " + std::to_string(c.federate) +
+            (m.fom_modules.empty() ? "" : ", adding FOM modules"));
 }
 
 void Gateway::serve(Connection& c, const wire::ResignFederation& m) {

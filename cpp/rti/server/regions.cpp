@@ -11,6 +11,7 @@
 #include "rti/erase_nested.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace hlacore {
 
@@ -153,6 +154,17 @@ fom::Handle Federation::interaction_receiver(const FederateState& g, fom::Handle
     for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent)
         if (g.declarations.subscribed_interactions.count(c) || g.ddm.subscribed_interaction(c, region)) return c;
     return 0;
+}
+
+void Federation::widen_regions() {
+    for (auto& [h, f] : federates_) {
+        for (auto& [r, region] : f.ddm.regions) {
+            const auto* space = fom_.space(region.space);
+            for (auto& extent : region.extents)  // the whole axis, as the client gives a dimension not named
+                while (space && extent.size() < space->dimensions.size())
+                    extent.emplace_back(0, std::numeric_limits<std::uint32_t>::max());
+        }
+    }
 }
 
 void Federation::discover_in_scope() {

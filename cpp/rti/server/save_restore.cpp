@@ -542,7 +542,8 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
     } catch (const WireError& e) {
         return fail("the save in " + source + " is unusable: " + e.what());
     }
-    if (snap.fed_text != fed_text_) return fail("the save was made with another FOM (" + snap.fed_name + ")");
+    // The FOM may have been extended since the save (modules added at join): its handles kept their meaning.
+    if (!fom::extends(fed_text_, snap.fed_text)) return fail("the save was made with another FOM (" + snap.fed_name + ")");
     std::map<std::string, FederateHandle> joined;
     std::set<std::string> joined_names, saved_names;
     for (const auto& [h, f] : federates_) {

@@ -19,8 +19,8 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // time_semantics; 13: CreateFederation's and FederationJoined's time_type, the object instance names'
 // ReserveObjectNames, ReleaseObjectNames and ObjectNamesReserved; 14: FederationSaved's and FederationRestored's
 // reason, AbortFederationSave, AbortFederationRestore and the transportation queries and reports; 15:
-// SubscriptionRate
-constexpr std::uint16_t kProtocolVersion = 15;
+// SubscriptionRate; 16: JoinFederation's fom_modules (FOM modules added at join) and FomExtended
+constexpr std::uint16_t kProtocolVersion = 16;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -169,7 +169,9 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     X(AttributeTransportationReported) \
     X(InteractionTransportationReported) \
     /* IEEE 1516-2010's update rate of a subscription: federate -> gateway */ \
-    X(SubscriptionRate)
+    X(SubscriptionRate)              \
+    /* FOM modules added at join (IEEE 1516-2010 §4.5): gateway -> the federates joined before */ \
+    X(FomExtended)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply or a result. Each has a `Gateway::serve(Connection&, const M&)` in
@@ -243,7 +245,9 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     /* the session (client/reader.cpp) */                                                              \
     X(Welcome) X(Authenticated) X(ClockEcho) X(Pong) X(RecordedTopic) X(Recorded)                      \
     /* objects, sync_points: what later calls check against, known at once */                          \
-    X(DiscoverObject) X(RemoveObject) X(AnnounceSyncPoint) X(FederationSynchronized)
+    X(DiscoverObject) X(RemoveObject) X(AnnounceSyncPoint) X(FederationSynchronized)                   \
+    /* federation (client.cpp): the FOM that later lookups use, known at once */                       \
+    X(FomExtended)
 
 // The callbacks whose delivery changes the federate's own state (HLA 1.3: when tick() hands them over, not
 // when they arrive): each has a `void Client::delivered(const M&)` in client/<group>.cpp, declared from this

@@ -143,7 +143,10 @@ struct JoinFederation {
     std::string federate;
     std::string federation;
     std::string proof;  // as CreateFederation's, for "join"
-    HLACORE_FIELDS(request, federate, federation, proof)
+    // FOM modules this federate adds to the federation's (IEEE 1516-2010 §4.5), as a bundle of modules
+    // (fom::bundle); empty: none. The gateway refuses the join when they do not read or do not fit.
+    std::string fom_modules;
+    HLACORE_FIELDS(request, federate, federation, proof, fom_modules)
 };
 struct ResignFederation {
     HLACORE_TYPE(ResignFederation)
@@ -375,6 +378,15 @@ struct FederationJoined {  // JoinFederation
     std::string fed_text;        // the federation's FOM (a .fed, an XML module or a bundle), which the client parses
     std::string fed_name;        // its name, as given at creation
     HLACORE_FIELDS(request, federate, fed_text, fed_name, time_type)
+};
+// A federate joined with FOM modules of its own: the federation's FOM is now `fed_text` (a bundle marking the
+// added modules, fed_parser/omt.hpp), every handle of the FOM before kept. The federates joined before take it
+// in place of theirs as it arrives, before anything that uses the new classes can.
+struct FomExtended {
+    HLACORE_TYPE(FomExtended)
+    std::string fed_text;
+    std::string fed_name;  // as given at creation
+    HLACORE_FIELDS(fed_text, fed_name)
 };
 struct ObjectRegistered {  // RegisterObject, RegisterObjectWithRegion
     HLACORE_TYPE(ObjectRegistered)

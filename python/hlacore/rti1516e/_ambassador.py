@@ -14,7 +14,7 @@ from . import _exceptions as x
 from ._callbacks import Adapter
 from ._delivery import Delivery
 from ._regions import Regions
-from ._support import legal_name, module_text, not_served, services, tag_of, translating, values_of
+from ._support import added_modules, legal_name, module_text, not_served, services, tag_of, translating, values_of
 from ._handles import (CORE_TYPES, AttributeHandle, FederateHandle, Handle, InteractionClassHandle,
                        MessageRetractionHandle, ObjectClassHandle, ObjectInstanceHandle, ParameterHandle, core, cores,
                        decode, wrap_set)
@@ -163,9 +163,18 @@ class RTIambassador(Regions):
 
     def joinFederationExecution(self, *args: Any) -> FederateHandle:
         """``(federateType, federationName)``, ``(federateName, federateType, federationName)``, either with
-        a list of additional FOM modules last. Without a name the federate gets a unique one."""
+        a list of additional FOM modules last (paths or file: URLs, read here). Without a name the federate
+        gets a unique one.
+
+        The additional modules are merged into the federation's FOM, which every federate joined before learns
+        at once; every handle given out before keeps its meaning (docs/fom-modules.md). Raises
+        ``CouldNotOpenFDD`` for a module this process cannot read, ``ErrorReadingFDD`` for one that does not
+        read, ``InconsistentFDD`` for one that contradicts the federation's FOM (``FILE:LINE:COL`` naming both
+        places) or a federation created from an HLA 1.3 ``.fed``."""
+        fom_modules = ""
         if len(args) == 4 or (len(args) == 3 and not isinstance(args[2], (str, bytes))):
-            raise not_served("additional FOM modules at join", "give every module to createFederationExecution")
+            fom_modules = added_modules(args[-1])
+            args = args[:-1]
         if len(args) == 2:
             federate_type, federation = args
             name = f"{federate_type}-{uuid.uuid4().hex[:12]}"
@@ -176,7 +185,7 @@ class RTIambassador(Regions):
         inner, adapter = self._inner(), self._adapter
         assert adapter is not None
         try:
-            handle = inner.joinFederationExecution(name, federation, adapter)  # type: ignore[arg-type]
+            handle = inner._join_with(name, federation, adapter, fom_modules)
         except _core.FederateAlreadyExecutionMember as error:
             if self._joined:
                 raise x.FederateAlreadyExecutionMember(f"FederateAlreadyExecutionMember: {error}") from None

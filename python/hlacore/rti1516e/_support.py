@@ -1,5 +1,5 @@
 """What the services of hlacore.rti1516e share: exceptions translated at every service, the checks of the
-values they take, and the FOM modules read at creation."""
+values they take, and the FOM modules read at creation and at join."""
 
 from __future__ import annotations
 
@@ -82,5 +82,21 @@ def module_text(module: Any) -> Tuple[str, str]:
             return module, f.read()
     except OSError as error:
         raise x.CouldNotOpenFDD(f"CouldNotOpenFDD: cannot read {module!r}: {error.strerror}") from None
+
+
+def added_modules(modules: Any) -> str:
+    """The FOM modules a federate adds at join (paths or file: URLs), read here and checked on their own, as a
+    bundle ("" for none): CouldNotOpenFDD for one this process cannot read (the gateway does not look them up),
+    ErrorReadingFDD (FILE:LINE:COL) for one that does not read."""
+    names = [modules] if isinstance(modules, (str, bytes)) else list(modules)
+    if not names:
+        return ""
+    read = [module_text(m) for m in names]
+    unread = [n for n, text in read if not text]
+    if unread:
+        raise x.CouldNotOpenFDD(f"CouldNotOpenFDD: cannot open {unread[0]!r}")
+    pairs = [(text, n) for n, text in read]
+    _core.parse_fom_modules(pairs)  # errors at the caller, ErrorReadingFED as ErrorReadingFDD
+    return _core.fom_bundle(pairs).decode("utf-8", "surrogateescape")
 
 

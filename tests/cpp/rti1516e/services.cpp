@@ -2,7 +2,7 @@
 // least once through a gateway, each with an asserted outcome: the callbacks it brings with their arguments,
 // what it returns, a state seen later, or the exception it must raise (a bad argument's, or RTIinternalError
 // "hlacore does not serve ... yet" for what it does not serve). Two evoked federates in an HLAfloat64Time federation,
-// and an HLA_IMMEDIATE one in an HLAinteger64Time federation.
+// and an HLA_IMMEDIATE one in an HLAinteger64Time federation, which a fourth joins adding a FOM module.
 // Usage: rti1516e_services VEHICLES_XML CARS_XML [ADDRESS] (no address: $HLACORE_RTIG). Prints
 // "called N services", N the entries called; tests/rti/test_rti1516e_cpp_services.py runs it.
 #include <RTI/RTI1516.h>
@@ -844,16 +844,44 @@ void callbacks_and_decoding(World& w) {
     CHECK(raises<CouldNotDecode>([&] { a.rti->decodeMessageRetractionHandle(data("abcd")); }));
 }
 
+// ---- a FOM module added at join (§4.9): d joins with the Cars module; c, joined before, learns the extended
+// FOM as it arrives (its thread reads it), every handle it knew unchanged ----
+void module_added_at_join(World& w, std::wstring const& cars) {
+    Federate& c = w.c;
+    const ObjectClassHandle vehicle = c.rti->getObjectClassHandle(L"Vehicle");
+    const AttributeHandle position = c.rti->getAttributeHandle(vehicle, L"position");
+    CHECK(raises<NameNotFound>([&] { c.rti->getObjectClassHandle(L"Vehicle.Car"); }));
+    Federate d{"d"};
+    d.rti->connect(d.rec, HLA_EVOKED, w.address);
+    CHECK(raises<CouldNotOpenFDD>([&] { d.rti->joinFederationExecution(L"d", L"test", L"Integers", {L"missing.xml"}); }));
+    d.rti->joinFederationExecution(L"d", L"test", L"Integers", {cars});
+    const ObjectClassHandle car = d.rti->getObjectClassHandle(L"Vehicle.Car");
+    const AttributeHandle doors = d.rti->getAttributeHandle(car, L"doors");
+    ObjectClassHandle learned;
+    until({&c}, [&] {
+        try {
+            learned = c.rti->getObjectClassHandle(L"Vehicle.Car");
+            return true;
+        } catch (NameNotFound const&) {
+            return false;
+        }
+    }, "the extended FOM");
+    CHECK(learned == car && c.rti->getObjectClassHandle(L"Vehicle") == vehicle);
+    CHECK(c.rti->getAttributeHandle(car, L"position") == position && c.rti->getAttributeHandle(car, L"doors") == doors);
+    d.rti->resignFederationExecution(NO_ACTION);
+    d.rti->disconnect();
+}
+
 // ---- an HLA_IMMEDIATE federate in an HLAinteger64Time federation ----
 void immediate_integer_time(World& w, std::wstring const& vehicles, std::wstring const& cars) {
     Federate& c = w.c;
     c.evoked = false;
     CALL(c, connect, c.rec, HLA_IMMEDIATE, w.address);
     CHECK(raises<FederateNameAlreadyInUse>([&] { c.rti->joinFederationExecution(L"a", L"test", L"Services"); }));
-    CHECK(not_served([&] { c.rti->joinFederationExecution(L"c", L"test", L"Services", {cars}); }));
     c.rti->createFederationExecution(L"Integers", vehicles, L"HLAinteger64Time");
     const FederateHandle hc = CALL(c, joinFederationExecution, L"test", L"Integers");
     CHECK(hc.isValid() && c.rti->getTimeFactory()->getName() == L"HLAinteger64Time");
+    module_added_at_join(w, cars);
     c.rti->enableTimeRegulation(HLAinteger64Interval(2));
     await(c, "timeRegulationEnabled", HLAinteger64Time(0).toString());  // nobody evokes
     HLAinteger64Interval lookahead;

@@ -70,7 +70,7 @@ def test_short_fuzz_run(target: str, tmp_path: pathlib.Path) -> None:
     proc = subprocess.run(
         [str(binary), f"-max_total_time={SECONDS}", "-timeout=10", "-rss_limit_mb=2048", "-print_final_stats=1",
          f"-artifact_prefix={tmp_path}/", *OPTIONS[target], str(scratch), *map(str, seed_dirs(target))],
-        stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=SECONDS + 90,
+        stdin=subprocess.DEVNULL, capture_output=True, text=True, errors="replace", timeout=SECONDS + 90,
     )  # fmt: skip
     log = proc.stderr
     assert proc.returncode == 0 and not FAILURE.search(log), log[-5000:]
@@ -94,7 +94,7 @@ def test_seeds_and_regressions_replay(target: str) -> None:
         runs.append((regressions, {}))
     for inputs, env in runs:
         proc = subprocess.run(
-            [str(binary), *inputs], stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=120,
+            [str(binary), *inputs], stdin=subprocess.DEVNULL, capture_output=True, text=True, errors="replace", timeout=120,
             env=dict(os.environ, **env),
         )  # fmt: skip
         assert proc.returncode == 0 and not FAILURE.search(proc.stderr), proc.stderr[-5000:]

@@ -472,6 +472,7 @@ def test_regions_over_the_modules_dimensions(federates: Callable[[], Federate]) 
         a.rtia.getRangeBounds(wanted, x)
     b.rtia.subscribeObjectClassAttributesWithRegions(vehicle, [({position}, {wanted})])
     b.rtia.subscribeInteractionClassWithRegions(command, {wanted})
+    barrier(b)  # the gateway has b's subscriptions before a's interactions (lost otherwise)
 
     a.rtia.publishObjectClassAttributes(vehicle, [position])
     a.rtia.publishInteractionClass(command)

@@ -23,6 +23,21 @@ const Doc kDocs[] = {
     {"requestClassAttributeValueUpdateWithRegion", "Ask the owners to provide the attributes of instances of the class whose update region overlaps `region` (HLA 1.3 §9.13); unassociated attributes are in the whole space. Raises ObjectClassNotDefined, AttributeNotDefined, RegionNotKnown."},
 };
 
+// registerObjectInstanceWithRegion: `adds` as in Client::register_object_with_region.
+auto register_with_regions(bool adds) {
+    return [adds](Client& c, ObjectClassHandle cls, std::vector<std::pair<AttributeHandle, RegionHandle>> pairs,
+                  std::optional<std::string> name) {
+        std::vector<std::pair<H32, H32>> regions;
+        for (const auto& [a, r] : pairs) regions.emplace_back(a.value, r.value);
+        H32 h;
+        {
+            py::gil_scoped_release release;
+            h = c.register_object_with_region(cls.value, regions, name.value_or(""), adds);
+        }
+        return ObjectHandle{h};
+    };
+}
+
 }  // namespace
 
 void bind_regions(Ambassador& rtia) {
@@ -52,18 +67,19 @@ void bind_regions(Ambassador& rtia) {
                  for (auto handle : c.regions()) out.append(RegionHandle{handle});
                  return out;
              })
-        .def("registerObjectInstanceWithRegion",
-             [](Client& c, ObjectClassHandle cls, std::vector<std::pair<AttributeHandle, RegionHandle>> pairs,
-                std::optional<std::string> name) {
-                 std::vector<std::pair<H32, H32>> regions;
-                 for (const auto& [a, r] : pairs) regions.emplace_back(a.value, r.value);
-                 H32 h;
-                 {
-                     py::gil_scoped_release release;
-                     h = c.register_object_with_region(cls.value, regions, name.value_or(""));
-                 }
-                 return ObjectHandle{h};
-             }, py::arg("objectClass"), py::arg("attributes"), py::arg("objectName") = py::none())
+        .def("registerObjectInstanceWithRegion", register_with_regions(false),
+             py::arg("objectClass"), py::arg("attributes"), py::arg("objectName") = py::none())
+        // IEEE 1516-2010's several regions an attribute, for hlacore.rti1516e: an attribute named with several
+        // regions has them all, an association adds to the attribute's regions, an unassociation names its
+        // attributes, an interaction goes in any number of regions.
+        .def("_register_object_with_regions", register_with_regions(true),
+             py::arg("objectClass"), py::arg("attributes"), py::arg("objectName") = py::none())
+        .def("_associate_region",
+             [](Client& c, RegionHandle r, ObjectHandle object, std::vector<AttributeHandle> attributes) {
+                 c.request(wire::AssociateRegion{r.value, object.value, raw(attributes), true});
+             }, py::arg("region"), py::arg("object"), py::arg("attributes"))
+        .def("_unassociate_region", request<wire::UnassociateRegion, RegionHandle, ObjectHandle, std::vector<AttributeHandle>>(),
+             py::arg("region"), py::arg("object"), py::arg("attributes"))
         .def("associateRegionForUpdates", request<wire::AssociateRegion, RegionHandle, ObjectHandle, std::vector<AttributeHandle>>(),
              py::arg("region"), py::arg("object"), py::arg("attributes"))
         .def("unassociateRegionForUpdates", request<wire::UnassociateRegion, RegionHandle, ObjectHandle>(),
@@ -80,9 +96,17 @@ void bind_regions(Ambassador& rtia) {
              [](Client& c, InteractionClassHandle ic, py::handle values, RegionHandle r, py::handle tag,
                 std::optional<double> time) {
                  auto serial = c.send_interaction_with_region(
-                     ic.value, to_handle_values<ParameterHandle>(values, "ParameterHandle"), r.value, to_bytes(tag, "tag"), time);
+                     ic.value, to_handle_values<ParameterHandle>(values, "ParameterHandle"), {r.value}, to_bytes(tag, "tag"), time);
                  return serial_result(serial, time, c);
              }, py::arg("interactionClass"), py::arg("parameters"), py::arg("region"), py::arg("tag"),
+             py::arg("time") = py::none())
+        .def("_send_interaction_with_regions",
+             [](Client& c, InteractionClassHandle ic, py::handle values, std::vector<RegionHandle> regions,
+                py::handle tag, std::optional<double> time) {
+                 auto serial = c.send_interaction_with_region(
+                     ic.value, to_handle_values<ParameterHandle>(values, "ParameterHandle"), raw(regions), to_bytes(tag, "tag"), time);
+                 return serial_result(serial, time, c);
+             }, py::arg("interactionClass"), py::arg("parameters"), py::arg("regions"), py::arg("tag"),
              py::arg("time") = py::none())
         .def("requestClassAttributeValueUpdateWithRegion", request<wire::RequestClassUpdateWithRegion, ObjectClassHandle, std::vector<AttributeHandle>, RegionHandle>(),
              py::arg("objectClass"), py::arg("attributes"), py::arg("region"));

@@ -69,14 +69,16 @@ RTI::ObjectHandle RTI::RTIambassador::registerObjectInstanceWithRegion(ObjectCla
 void RTI::RTIambassador::associateRegionForUpdates(Region& theRegion, ObjectHandle theObject,
                                                    const AttributeHandleSet& theAttributes) {
     guarded([&] {
-        privateRefs->client.request(
-            wire::AssociateRegion{privateRefs->known(theRegion).handle(), h32(theObject), handles_of(theAttributes)});
+        // adds false: the region replaces the attributes' previous one (HLA 1.3 §9.6).
+        privateRefs->client.request(wire::AssociateRegion{privateRefs->known(theRegion).handle(), h32(theObject),
+                                                          handles_of(theAttributes), false});
     });
 }
 
 void RTI::RTIambassador::unassociateRegionForUpdates(Region& theRegion, ObjectHandle theObject) {
     guarded([&] {
-        privateRefs->client.request(wire::UnassociateRegion{privateRefs->known(theRegion).handle(), h32(theObject)});
+        // No attributes named: all of the object's associated with the region (HLA 1.3 §9.7).
+        privateRefs->client.request(wire::UnassociateRegion{privateRefs->known(theRegion).handle(), h32(theObject), {}});
     });
 }
 
@@ -118,7 +120,7 @@ RTI::EventRetractionHandle RTI::RTIambassador::sendInteractionWithRegion(Interac
     return guarded([&] {
         Client& c = privateRefs->client;
         const std::uint64_t serial = c.send_interaction_with_region(
-            h32(theInteraction), hla13::values_of(theParameters), privateRefs->known(theRegion).handle(), text(theTag),
+            h32(theInteraction), hla13::values_of(theParameters), {privateRefs->known(theRegion).handle()}, text(theTag),
             hla13::time_of(theTime));
         return hla13::retraction(c.federate_handle(), serial);
     });
@@ -129,7 +131,7 @@ void RTI::RTIambassador::sendInteractionWithRegion(InteractionClassHandle theInt
                                                    const Region& theRegion) {
     guarded([&] {
         privateRefs->client.send_interaction_with_region(h32(theInteraction), hla13::values_of(theParameters),
-                                                         privateRefs->known(theRegion).handle(), text(theTag),
+                                                         {privateRefs->known(theRegion).handle()}, text(theTag),
                                                          std::nullopt);
     });
 }

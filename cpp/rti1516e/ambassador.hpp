@@ -180,8 +180,10 @@ private:
     std::uint32_t space() const;  // the FOM modules' dimensions' routing space
     std::map<std::uint32_t, api::RangeBounds>& region(api::RegionHandle const& r);
     Client::Extent extent(std::map<std::uint32_t, api::RangeBounds> const& ranges) const;
-    std::vector<std::pair<wire::Handles, std::uint32_t>> one_region_each(
+    // Each (attributes, region) of the pairs, a region of this federate's (RegionNotCreatedByThisFederate).
+    std::vector<std::pair<wire::Handles, std::uint32_t>> region_pairs(
         api::AttributeHandleSetRegionHandleSetPairVector const& pairs);
+    wire::Handles regions_of(api::RegionHandleSet const& regions);  // the same for a set of regions
     api::DimensionHandleSet dimensions_of(std::uint32_t space_handle) const;
 
     // HLA_IMMEDIATE: a thread of the ambassador's delivers the callbacks as they arrive.

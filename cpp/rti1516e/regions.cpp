@@ -1,21 +1,12 @@
 // Data distribution management (IEEE 1516.1-2010 §9) on the core's HLA 1.3 routing spaces, as
 // hlacore.rti1516e serves it: the FOM modules' dimensions are one space (fom::kOmtSpace), a region's range
 // [lower, upper) is the core's closed [lower, upper - 1], and a dimension a region does not name spans its
-// whole axis. The core associates one region with an attribute of an object and sends an interaction
-// through one region; more raises saying so.
+// whole axis. An attribute of an object is updated in several regions and an interaction sent in several:
+// a subscriber receives it, once, when one of its regions overlaps one of them.
 #include "ambassador.hpp"
 #include "fed_parser/fom.hpp"
 
 namespace hlacore::rti1516e {
-
-namespace {
-std::uint32_t one_region(RegionHandleSet const& regions) {
-    if (regions.size() != 1)
-        not_served(std::to_string(regions.size()) + " regions for an interaction",
-                   "the core sends one through one region");
-    return core(*regions.begin());
-}
-}  // namespace
 
 std::uint32_t Ambassador::space() const {
     try {
@@ -38,15 +29,19 @@ Client::Extent Ambassador::extent(std::map<std::uint32_t, RangeBounds> const& ra
     return out;
 }
 
-std::vector<std::pair<wire::Handles, std::uint32_t>> Ambassador::one_region_each(
+std::vector<std::pair<wire::Handles, std::uint32_t>> Ambassador::region_pairs(
     AttributeHandleSetRegionHandleSetPairVector const& pairs) {
     std::vector<std::pair<wire::Handles, std::uint32_t>> out;
-    for (const auto& [attributes, regions] : pairs) {
-        if (regions.size() != 1)
-            not_served(std::to_string(regions.size()) + " regions for attributes",
-                       "the core associates one region with an attribute of an object");
-        region(*regions.begin());
-        out.emplace_back(cores(attributes), core(*regions.begin()));
+    for (const auto& [attributes, regions] : pairs)
+        for (auto r : regions_of(regions)) out.emplace_back(cores(attributes), r);
+    return out;
+}
+
+wire::Handles Ambassador::regions_of(RegionHandleSet const& regions) {
+    wire::Handles out;
+    for (const auto& r : regions) {
+        region(r);
+        out.push_back(core(r));
     }
     return out;
 }
@@ -155,9 +150,9 @@ ObjectInstanceHandle Ambassador::registerObjectInstanceWithRegions(ObjectClassHa
     return guarded([&] {
         std::lock_guard<std::recursive_mutex> lock(mu_);
         std::vector<std::pair<fom::Handle, std::uint32_t>> associated;
-        for (const auto& [attributes, r] : one_region_each(regions))
+        for (const auto& [attributes, r] : region_pairs(regions))
             for (auto a : attributes) associated.emplace_back(a, r);
-        return handle<ObjectInstanceHandle>(client().register_object_with_region(core(cls), associated, ""));
+        return handle<ObjectInstanceHandle>(client().register_object_with_region(core(cls), associated, "", true));
     });
 }
 
@@ -168,9 +163,9 @@ ObjectInstanceHandle Ambassador::registerObjectInstanceWithRegions(ObjectClassHa
         std::lock_guard<std::recursive_mutex> lock(mu_);
         require_reserved(name);
         std::vector<std::pair<fom::Handle, std::uint32_t>> associated;
-        for (const auto& [attributes, r] : one_region_each(regions))
+        for (const auto& [attributes, r] : region_pairs(regions))
             for (auto a : attributes) associated.emplace_back(a, r);
-        const auto object = client().register_object_with_region(core(cls), associated, utf8(name));
+        const auto object = client().register_object_with_region(core(cls), associated, utf8(name), true);
         reserved_.erase(name);
         return handle<ObjectInstanceHandle>(object);
     });
@@ -180,18 +175,18 @@ void Ambassador::associateRegionsForUpdates(ObjectInstanceHandle object,
                                             AttributeHandleSetRegionHandleSetPairVector const& regions) {
     guarded([&] {
         std::lock_guard<std::recursive_mutex> lock(mu_);
-        for (const auto& [attributes, r] : one_region_each(regions))
-            client().request(wire::AssociateRegion{r, core(object), attributes});
+        for (const auto& [attributes, r] : region_pairs(regions))  // adds: the attributes keep their other regions
+            client().request(wire::AssociateRegion{r, core(object), attributes, true});
     });
 }
 
-// The core drops a region's attributes of an object all together.
 void Ambassador::unassociateRegionsForUpdates(ObjectInstanceHandle object,
                                               AttributeHandleSetRegionHandleSetPairVector const& regions) {
     guarded([&] {
         std::lock_guard<std::recursive_mutex> lock(mu_);
-        for (const auto& [attributes, r] : one_region_each(regions))
-            client().request(wire::UnassociateRegion{r, core(object)});
+        for (const auto& [attributes, r] : region_pairs(regions))
+            if (!attributes.empty())  // no attributes on the wire would be all of them (HLA 1.3)
+                client().request(wire::UnassociateRegion{r, core(object), attributes});
     });
 }
 
@@ -255,9 +250,7 @@ void Ambassador::sendInteractionWithRegions(InteractionClassHandle cls, Paramete
                                             RegionHandleSet const& regions, VariableLengthData const& tag) {
     guarded([&] {
         std::lock_guard<std::recursive_mutex> lock(mu_);
-        const std::uint32_t r = one_region(regions);
-        region(*regions.begin());
-        client().send_interaction_with_region(core(cls), copies(values), r, bytes(tag), std::nullopt);
+        client().send_interaction_with_region(core(cls), copies(values), regions_of(regions), bytes(tag), std::nullopt);
     });
 }
 
@@ -267,11 +260,9 @@ MessageRetractionHandle Ambassador::sendInteractionWithRegions(InteractionClassH
                                                                VariableLengthData const& tag, LogicalTime const& time) {
     return guarded([&] {
         std::lock_guard<std::recursive_mutex> lock(mu_);
-        const std::uint32_t r = one_region(regions);
-        region(*regions.begin());
         Client& c = client();
-        return retraction(c.federate_handle(),
-                          c.send_interaction_with_region(core(cls), copies(values), r, bytes(tag), time_in(time)));
+        return retraction(c.federate_handle(), c.send_interaction_with_region(core(cls), copies(values), regions_of(regions),
+                                                                             bytes(tag), time_in(time)));
     });
 }
 

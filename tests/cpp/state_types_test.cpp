@@ -95,9 +95,9 @@ void federate_regions(const fom::Fom& fom) {
     const ObjectHandle object = 40;
     ddm.object_subscriptions[cls][7] = {attr};
     ddm.interaction_subscriptions[ic] = {3};
-    ddm.update_regions[object][attr] = 3;
-    CHECK(ddm.update_region(object, attr) == &ddm.at(3));
-    CHECK(ddm.update_region(object, other_attr) == nullptr);  // the default region
+    associate_region(ddm.update_regions, object, attr, 3, false);
+    CHECK(!ddm.update_regions_of(object, attr).is_default());
+    CHECK(ddm.update_regions_of(object, other_attr).is_default());
     // Subscribed through region 7: an update in the default region or an overlapping one reaches it.
     const Region near = box(fom, 5, 6, 5, 6), far = box(fom, 8, 9, 8, 9);
     CHECK(ddm.subscribed(cls, attr, nullptr) && ddm.subscribed(cls, attr, &near));
@@ -105,6 +105,25 @@ void federate_regions(const fom::Fom& fom) {
     const Region corner = box(fom, 0, 1, 0, 1);
     CHECK(ddm.subscribed_interaction(ic, &far) && !ddm.subscribed_interaction(ic, &corner));
     CHECK(ddm.subscribed_interaction(ic, nullptr) && !ddm.subscribed_interaction(ic + 1, nullptr));
+    // Region 3 (6-9) misses region 7 (0-5); with region 7 among its update regions the attribute is in scope.
+    CHECK(!ddm.subscribed(cls, attr, ddm.update_regions_of(object, attr)));
+    associate_region(ddm.update_regions, object, attr, 7, true);  // IEEE 1516-2010: adds
+    CHECK(ddm.update_regions.at(object).at(attr) == std::set<RegionHandle>({3, 7}));
+    CHECK(ddm.subscribed(cls, attr, ddm.update_regions_of(object, attr)));
+    associate_region(ddm.update_regions, object, attr, 3, false);  // HLA 1.3: replaces
+    CHECK(ddm.update_regions.at(object).at(attr) == std::set<RegionHandle>({3}));
+    associate_region(ddm.update_regions, object, attr, 7, true);
+    associate_region(ddm.update_regions, object, other_attr, 7, true);
+    CHECK(!unassociate_region(ddm.update_regions, object, 99, {}));
+    CHECK(unassociate_region(ddm.update_regions, object, 7, {attr}));  // the pair named only
+    CHECK(ddm.update_regions.at(object).at(attr) == std::set<RegionHandle>({3}));
+    CHECK(ddm.update_regions.at(object).at(other_attr) == std::set<RegionHandle>({7}));
+    CHECK(unassociate_region(ddm.update_regions, object, 7, {}));  // HLA 1.3: every attribute of the object
+    CHECK(!ddm.update_regions.at(object).count(other_attr));
+    // The sent regions of an interaction: any one overlapping a subscription region is enough.
+    const std::set<RegionHandle> sent{3, 7};
+    CHECK(ddm.subscribed_interaction(ic, SentRegions{ddm, sent}) && !ddm.subscribed_interaction(ic + 1, SentRegions{ddm, sent}));
+    CHECK(ddm.subscribed_interaction(ic, SentRegions{}));
 
     CHECK(!ddm.unsubscribe(ddm.object_subscriptions, cls, 3));  // nothing through region 3
     CHECK(throws<wire::WireError>([&] { ddm.unsubscribe(ddm.object_subscriptions, cls, 99); }, "not known"));
@@ -114,7 +133,7 @@ void federate_regions(const fom::Fom& fom) {
     ddm.object_subscriptions[cls][3] = {attr};
     ddm.erase(3);
     CHECK(!ddm.regions.count(3) && ddm.object_subscriptions.empty() && ddm.interaction_subscriptions.empty());
-    CHECK(ddm.update_regions[object].empty() && ddm.update_region(object, attr) == nullptr);
+    CHECK(!ddm.update_regions.count(object) && ddm.update_regions_of(object, attr).is_default());
     CHECK(ddm.last_region == 7);  // kept: a restored client never reuses a number
 }
 

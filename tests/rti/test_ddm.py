@@ -231,6 +231,35 @@ def test_associating_and_unassociating_an_update_region(ddm: Join) -> None:
         {h.position: b"1", h.speed: b"1"}, {h.speed: b"2"}, {h.position: b"3", h.speed: b"3"}]
 
 
+def test_an_hla13_association_replaces_the_attributes_region(ddm: Join) -> None:
+    """HLA 1.3 gives an attribute one update region: a second associateRegionForUpdates replaces the first
+    (which is then no longer associated, nor in use), and an attribute named twice at registration keeps the
+    last region (IEEE 1516-2010's several regions are its own services')."""
+    pub, west, east = ddm("pub"), ddm("west"), ddm("east")
+    h = fom_of(pub.rtia)
+    pub.rtia.publishObjectClass(h.vehicle, [h.position])
+    for fed, low in ((west, 0), (east, 100)):
+        region = fed.rtia.createRegion(h.geo, [(h.x, (low, low + 99))])
+        fed.rtia.subscribeObjectClassAttributesWithRegion(h.vehicle, region, [h.position])
+        barrier(fed.rtia)
+    at_west = pub.rtia.createRegion(h.geo, [(h.x, (42, 42))])
+    at_east = pub.rtia.createRegion(h.geo, [(h.x, (142, 142))])
+    v = pub.rtia.registerObjectInstanceWithRegion(h.vehicle, [(h.position, at_west), (h.position, at_east)], "v")
+    pub.rtia.updateAttributeValues(v, {h.position: b"1: east"}, "")
+    pub.rtia.associateRegionForUpdates(at_west, v, [h.position])
+    pub.rtia.updateAttributeValues(v, {h.position: b"2: west"}, "")
+    with pytest.raises(rti.InvalidRegionContext):  # no longer associated, nor in use
+        pub.rtia.unassociateRegionForUpdates(at_east, v)
+    pub.rtia.deleteRegion(at_east)
+    pub.rtia.unassociateRegionForUpdates(at_west, v)  # back to the default region
+    pub.rtia.updateAttributeValues(v, {h.position: b"3: both"}, "")
+    tick_until(lambda: len(reflected(west)) == 2 and len(reflected(east)) == 2, west.rtia, east.rtia)
+    barrier(pub.rtia)
+    settle(west.rtia, east.rtia)
+    assert [values[h.position] for _, values in reflected(west)] == [b"2: west", b"3: both"]
+    assert [values[h.position] for _, values in reflected(east)] == [b"1: east", b"3: both"]
+
+
 def test_attributes_without_routing_space_and_plain_subscriptions_are_unaffected(ddm: Join) -> None:
     pub, sub = ddm("pub"), ddm("sub")
     h = fom_of(pub.rtia)
@@ -579,8 +608,8 @@ def test_region_protocol_violations_drop_only_the_offender(
 ) -> None:
     with raw_client(rtig.address) as hostile:
         handle = hostile.join("hostile")
-        if payload is None:  # command, no values, empty tag, no time, serial 1, region 7
-            payload = u32(int(legit.command)) + u32(0) + u32(0) + b"\x00" + (1).to_bytes(8, "little") + u32(7)
+        if payload is None:  # command, no values, empty tag, no time, serial 1, regions [7]
+            payload = u32(int(legit.command)) + u32(0) + u32(0) + b"\x00" + (1).to_bytes(8, "little") + handles([7])
         hostile.send(frame(message, payload))
         hostile.wait_eof()
         line = dropped_line(rtig, hostile)

@@ -4,6 +4,7 @@ positional arguments, exceptions named as in C++, and 1516-2010 and HLA 1.3 fede
 
 from __future__ import annotations
 
+import struct
 import time
 from typing import Any, Callable, Iterator
 
@@ -12,7 +13,7 @@ import pytest
 import hlacore.rti as rti
 import hlacore.rti1516e as rti1516e
 from hlacore import _core
-from support import RtigProcess
+from support import RtigProcess, running_rtig
 from support.rti1516e import CARS, VEHICLES, Federate, Recorder
 
 
@@ -447,6 +448,7 @@ def test_regions_over_the_modules_dimensions(federates: Callable[[], Federate]) 
         a.rtia.getRangeBounds(wanted, x)
     b.rtia.subscribeObjectClassAttributesWithRegions(vehicle, [({position}, {wanted})])
     b.rtia.subscribeInteractionClassWithRegions(command, {wanted})
+    barrier(b)  # the gateway has b's subscriptions before a's interactions (lost otherwise)
 
     a.rtia.publishObjectClassAttributes(vehicle, [position])
     a.rtia.publishInteractionClass(command)
@@ -469,16 +471,176 @@ def test_regions_over_the_modules_dimensions(federates: Callable[[], Federate]) 
     a.rtia.commitRegionModifications([at])
     a.rtia.updateAttributeValues(v, {position: b"back"}, b"")
     a.rtia.sendInteractionWithRegions(command, {verb: b"back"}, {at}, b"")
-    b.until(lambda: len(b.amb.named("reflectAttributeValues")) == 2 and len(b.amb.named("receiveInteraction")) == 2)
+    a.rtia.sendInteractionWithRegions(command, {verb: b"two"}, {at, a.rtia.createRegion({y})}, b"")  # both overlap
+    b.until(lambda: len(b.amb.named("reflectAttributeValues")) == 2 and len(b.amb.named("receiveInteraction")) == 3)
     assert [args[1][position] for args in b.amb.named("reflectAttributeValues")] == [b"near", b"back"]
-    assert [args[1][verb] for args in b.amb.named("receiveInteraction")] == [b"near", b"back"]
-    with pytest.raises(rti1516e.RTIinternalError, match="hlacore does not serve"):
-        a.rtia.sendInteractionWithRegions(command, {verb: b""}, {at, a.rtia.createRegion({y})}, b"")
+    assert [args[1][verb] for args in b.amb.named("receiveInteraction")] == [b"near", b"back", b"two"]
     b.rtia.unsubscribeObjectClassAttributesWithRegions(vehicle, [({position}, {wanted})])
     b.rtia.unsubscribeInteractionClassWithRegions(command, {wanted})
     b.rtia.deleteRegion(wanted)
     with pytest.raises(rti1516e.RegionNotCreatedByThisFederate):
         b.rtia.deleteRegion(wanted)
+
+
+def barrier(f: Federate) -> None:
+    """A round trip: the gateway has handled everything f sent before."""
+    with pytest.raises(rti1516e.FederationExecutionDoesNotExist):
+        f.rtia.destroyFederationExecution("no-such")
+
+
+def region_in(f: Federate, x: tuple[int, int]) -> Any:
+    """A region of f's over X, its range [lower, upper) committed."""
+    dimension = f.rtia.getDimensionHandle("X")
+    region = f.rtia.createRegion({dimension})
+    f.rtia.setRangeBounds(region, dimension, x)
+    f.rtia.commitRegionModifications({region})
+    return region
+
+
+class SeveralRegions:
+    """`a` publishes Vehicle.position and Command, and has regions r1 (X in [100, 200)) and r2 (X in
+    [300, 400)); four federates subscribe to both through regions of theirs: `first` overlaps r1 only,
+    `second` r2 only, `both` has one region overlapping r1, one overlapping r2 and one overlapping both,
+    `neither` overlaps none."""
+
+    RANGES = {"first": [(100, 110)], "second": [(350, 360)], "both": [(150, 160), (390, 400), (150, 350)],
+              "neither": [(600, 700)]}
+
+    def __init__(self, federates: Callable[[], Federate]) -> None:
+        self.a = joined(federates, "a")
+        r = self.a.rtia
+        self.vehicle = r.getObjectClassHandle("Vehicle")
+        self.position = r.getAttributeHandle(self.vehicle, "position")
+        self.command = r.getInteractionClassHandle("Command")
+        self.verb = r.getParameterHandle(self.command, "verb")
+        r.publishObjectClassAttributes(self.vehicle, [self.position])
+        r.publishInteractionClass(self.command)
+        self.r1, self.r2 = region_in(self.a, (100, 200)), region_in(self.a, (300, 400))
+        self.subscribers: dict[str, Federate] = {}
+        for name, ranges in self.RANGES.items():
+            s = joined(federates, name)
+            regions = {region_in(s, x) for x in ranges}
+            s.rtia.subscribeObjectClassAttributesWithRegions(self.vehicle, [({self.position}, regions)])
+            s.rtia.subscribeInteractionClassWithRegions(self.command, regions)
+            barrier(s)
+            self.subscribers[name] = s
+        self.marker = r.registerObjectInstance(self.vehicle)  # updated in the default region: reaches everyone
+        self.rounds = 0
+
+    @property
+    def federates(self) -> list[Federate]:
+        return [self.a, *self.subscribers.values()]
+
+    def round(self) -> dict[str, list[bytes]]:
+        """What each subscriber got since the last round, in order: the position values of the updates (the
+        marker's aside) and the verbs of the interactions. `a` then updates the marker, and waits until it
+        reached each subscriber: what `a` sent before cannot still be on its way."""
+        self.rounds += 1
+        mark = {self.position: b"marker %d" % self.rounds}
+
+        def marked(s: Federate) -> bool:
+            return (self.marker, mark) in [args[:2] for args in s.amb.named("reflectAttributeValues")]
+
+        self.a.rtia.updateAttributeValues(self.marker, mark, b"")
+        got = {}
+        for name, s in self.subscribers.items():
+            s.until(lambda: marked(s))
+            got[name] = [args[1][self.verb] if callback == "receiveInteraction" else args[1][self.position]
+                         for callback, args in s.amb.calls
+                         if callback == "receiveInteraction"
+                         or (callback == "reflectAttributeValues" and args[0] != self.marker)]
+            s.amb.calls.clear()
+        return got
+
+
+def test_an_attribute_updated_in_two_regions_reaches_each_overlapping_subscriber_once(
+        federates: Callable[[], Federate]) -> None:
+    """An attribute associated with two regions is reflected by a subscriber whose regions overlap either,
+    once however many overlap; unassociating one (attribute, region) pair keeps the other."""
+    w = SeveralRegions(federates)
+    a = w.a.rtia
+    v = a.registerObjectInstanceWithRegions(w.vehicle, [({w.position}, {w.r1})])
+    a.associateRegionsForUpdates(v, [({w.position}, {w.r2})])  # adds r2 to r1
+    a.updateAttributeValues(v, {w.position: b"r1, r2"}, b"")
+    assert w.round() == {"first": [b"r1, r2"], "second": [b"r1, r2"], "both": [b"r1, r2"], "neither": []}
+    a.unassociateRegionsForUpdates(v, [({w.position}, {w.r1})])
+    a.updateAttributeValues(v, {w.position: b"r2"}, b"")
+    assert w.round() == {"first": [], "second": [b"r2"], "both": [b"r2"], "neither": []}
+    with pytest.raises(rti1516e.RegionInUseForUpdateOrSubscription):
+        a.deleteRegion(w.r2)
+    a.unassociateRegionsForUpdates(v, [({w.position}, {w.r2})])  # no region left: the default region
+    a.updateAttributeValues(v, {w.position: b"default"}, b"")
+    assert w.round() == {name: [b"default"] for name in SeveralRegions.RANGES}
+
+    v2 = a.registerObjectInstanceWithRegions(w.vehicle, [({w.position}, {w.r1, w.r2})])
+    a.updateAttributeValues(v2, {w.position: b"registered in r1, r2"}, b"")
+    assert w.round() == {"first": [b"registered in r1, r2"], "second": [b"registered in r1, r2"],
+                         "both": [b"registered in r1, r2"], "neither": []}
+    assert [args[2] for args in w.subscribers["neither"].amb.named("discoverObjectInstance")] == []
+
+
+def test_an_interaction_sent_in_two_regions_reaches_each_overlapping_subscriber_once(
+        federates: Callable[[], Federate]) -> None:
+    """An interaction sent in two regions is received by a subscriber whose regions overlap either, once;
+    sent in no region it is in the default region, which every region overlaps."""
+    w = SeveralRegions(federates)
+    a = w.a.rtia
+    a.sendInteractionWithRegions(w.command, {w.verb: b"r1, r2"}, {w.r1, w.r2}, b"")
+    a.sendInteractionWithRegions(w.command, {w.verb: b"r2"}, {w.r2}, b"")
+    assert a.sendInteractionWithRegions(w.command, {w.verb: b"timed"}, [w.r1, w.r2], b"", 5.0).isValid()
+    a.sendInteractionWithRegions(w.command, {w.verb: b"none"}, set(), b"")
+    assert w.round() == {"first": [b"r1, r2", b"timed", b"none"], "second": [b"r1, r2", b"r2", b"timed", b"none"],
+                         "both": [b"r1, r2", b"r2", b"timed", b"none"], "neither": [b"none"]}
+
+
+def test_several_update_regions_are_saved_and_restored(tmp_path: Any) -> None:
+    """A save keeps every region of an attribute: restored, the attribute is updated in both again (the
+    client holds both in use). The save file is version 3; a version 2 file, read alike, still restores."""
+    save_dir = tmp_path / "saves"
+    with running_rtig(tmp_path, "--save-dir", str(save_dir)) as server:
+        made: list[Federate] = []
+
+        def federate() -> Federate:
+            made.append(Federate(server.address))
+            return made[-1]
+
+        def both(label: str, request: str, begun: str, complete: str, done: str) -> None:
+            getattr(w.a.rtia, request)(label)
+            for f in w.federates:
+                f.until(lambda: bool(f.amb.named(begun)))
+                getattr(f.rtia, complete)()
+            for f in w.federates:
+                f.until(lambda: bool(f.amb.named(done)))
+                f.amb.calls.clear()
+
+        try:
+            w = SeveralRegions(federate)
+            a = w.a.rtia
+            v = a.registerObjectInstanceWithRegions(w.vehicle, [({w.position}, {w.r1, w.r2})])
+            both("several", "requestFederationSave", "initiateFederateSave", "federateSaveComplete", "federationSaved")
+            a.unassociateRegionsForUpdates(v, [({w.position}, {w.r2})])
+            a.updateAttributeValues(v, {w.position: b"r1"}, b"")
+            assert w.round() == {"first": [b"r1"], "second": [], "both": [b"r1"], "neither": []}
+            both("several", "requestFederationRestore", "initiateFederateRestore", "federateRestoreComplete",
+                 "federationRestored")
+            a.updateAttributeValues(v, {w.position: b"restored"}, b"")
+            assert w.round() == {"first": [b"restored"], "second": [b"restored"], "both": [b"restored"], "neither": []}
+            with pytest.raises(rti1516e.RegionInUseForUpdateOrSubscription):
+                a.deleteRegion(w.r2)
+
+            [saved] = save_dir.iterdir()
+            data = saved.read_bytes()
+            assert data[8:12] == struct.pack("<I", 3)
+            (save_dir / "Vehicles--v2.hlasave").write_bytes(data[:8] + struct.pack("<I", 2) + data[12:])
+            a.unassociateRegionsForUpdates(v, [({w.position}, {w.r1})])
+            both("v2", "requestFederationRestore", "initiateFederateRestore", "federateRestoreComplete",
+                 "federationRestored")
+            a.updateAttributeValues(v, {w.position: b"from version 2"}, b"")
+            assert w.round() == {"first": [b"from version 2"], "second": [b"from version 2"],
+                                 "both": [b"from version 2"], "neither": []}
+        finally:
+            for f in reversed(made):
+                f.close()
 
 
 def wait_for(done: Callable[[], bool], seconds: float = 10.0) -> None:

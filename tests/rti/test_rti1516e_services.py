@@ -387,7 +387,7 @@ def regions(a: Federate, b: Federate, w: World) -> None:
     a.rtia.setRangeBounds(near, w.x, (200, 300))
     a.rtia.commitRegionModifications([near])
     update(d1, b"moved")
-    a.call.unassociateRegionsForUpdates(d1, [({w.position}, {near})])
+    a.call.unassociateRegionsForUpdates(d1, [({w.position}, {far, near})])  # associating near added it to far
     update(d1, b"free")
     b.wait("reflectAttributeValues", d1, {w.position: b"free"})
     b.until(lambda: any(r[1] == {w.verb: b"timed"} for r in b.amb.named("receiveInteraction")))

@@ -34,6 +34,7 @@
 #include "rti/record/mcap.hpp"
 #include "rti/time.hpp"
 #include "rti/tls.hpp"
+#include "rti/update_regions.hpp"
 #include "rti/wire/codec.hpp"
 #include "rti/wire/datagram.hpp"
 #include "rti/wire/read_buffer.hpp"
@@ -155,10 +156,13 @@ public:
     std::pair<fom::Handle, Extent> region_extent(std::uint32_t region) const;
     // The regions this federate holds, in handle order (after a restore: the saved ones).
     std::vector<std::uint32_t> regions() const;
+    // Each (attribute, region) pair associates; an attribute named twice keeps its last region when `adds` is
+    // false (HLA 1.3: one region an attribute), all of them when true (IEEE 1516-2010).
     std::uint32_t register_object_with_region(fom::Handle cls,
                                               const std::vector<std::pair<fom::Handle, std::uint32_t>>& regions,
-                                              const std::string& name);
-    std::uint64_t send_interaction_with_region(fom::Handle cls, wire::HandleValues values, std::uint32_t region,
+                                              const std::string& name, bool adds = false);
+    // Sent in these regions (HLA 1.3: one; IEEE 1516-2010: any number, none being the default region).
+    std::uint64_t send_interaction_with_region(fom::Handle cls, wire::HandleValues values, wire::Handles regions,
                                                const std::string& tag, wire::OptionalTime time);
 
     // ---- time management (HLA 1.3 §8; the rules are in docs/time-management.md) ----
@@ -354,7 +358,7 @@ private:
         std::map<std::uint32_t, LocalRegion> regions;
         std::map<fom::Handle, std::map<std::uint32_t, std::set<fom::Handle>>> object_subscriptions;
         std::map<fom::Handle, std::set<std::uint32_t>> interaction_subscriptions;
-        std::map<std::uint32_t, std::map<fom::Handle, std::uint32_t>> update_regions;  // object -> attribute -> region
+        UpdateRegions update_regions;  // HLA 1.3: one region an attribute
     };
     const LocalRegion& known_region(std::uint32_t region) const;  // RegionNotKnown
     // RegionNotKnown, or InvalidRegionContext when the region is not in the class's routing space.

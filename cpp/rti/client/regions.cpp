@@ -91,8 +91,8 @@ bool Client::region_in_use(std::uint32_t region) const {
         if (regions.count(region)) return true;
     for (const auto& [object, associations] : ddm_.update_regions) {
         if (!objects_.count(object)) continue;
-        for (const auto& [attr, r] : associations)
-            if (r == region) return true;
+        for (const auto& [attr, regions] : associations)
+            if (regions.count(region)) return true;
     }
     return false;
 }
@@ -124,7 +124,7 @@ void Client::restore_regions(const wire::RestoredState& saved) {
     for (const auto& [cls, region, attrs] : saved.region_subscriptions)
         ddm_.object_subscriptions[cls][region] = std::set<fom::Handle>(attrs.begin(), attrs.end());
     for (const auto& [ic, region] : saved.region_interaction_subscriptions) ddm_.interaction_subscriptions[ic].insert(region);
-    for (const auto& [object, attribute, region] : saved.update_regions) ddm_.update_regions[object][attribute] = region;
+    for (const auto& [object, attribute, region] : saved.update_regions) ddm_.update_regions[object][attribute].insert(region);
     reserve_region_numbers(saved.last_region);
 }
 
@@ -169,10 +169,7 @@ void Client::delete_region(std::uint32_t region) {
         if (region_in_use(region))
             raise(ErrorCode::RegionInUse, region_text(region) + " is used by a subscription or an update association");
         ddm_.regions.erase(region);
-        for (auto& [object, associations] : ddm_.update_regions) {
-            for (auto it = associations.begin(); it != associations.end();)
-                it = it->second == region ? associations.erase(it) : std::next(it);
-        }
+        forget_region(ddm_.update_regions, region);
     }
     send(wire::DeleteRegion{region});
 }
@@ -198,7 +195,7 @@ std::vector<std::uint32_t> Client::regions() const {
 
 std::uint32_t Client::register_object_with_region(fom::Handle cls,
                                                   const std::vector<std::pair<fom::Handle, std::uint32_t>>& regions,
-                                                  const std::string& name) {
+                                                  const std::string& name, bool adds) {
     std::set<fom::Handle> owned;
     wire::Handles attributes, region_handles;
     {
@@ -214,6 +211,12 @@ std::uint32_t Client::register_object_with_region(fom::Handle cls,
                 raise(ErrorCode::AttributeNotPublished,
                       "attribute '" + c.attribute(attr)->name + "' of class '" + c.qualified_name + "' is not published");
             check_region_space(known_region(region), c, attr);
+            // HLA 1.3: an attribute named again takes this region instead.
+            const auto again = std::find(attributes.begin(), attributes.end(), attr);
+            if (!adds && again != attributes.end()) {
+                region_handles[static_cast<std::size_t>(again - attributes.begin())] = region;
+                continue;
+            }
             attributes.push_back(attr);
             region_handles.push_back(region);
         }
@@ -225,7 +228,7 @@ std::uint32_t Client::register_object_with_region(fom::Handle cls,
     std::lock_guard<std::mutex> lock(mu_);
     add_registered(registered.object, cls, registered.name, std::move(owned));
     for (std::size_t i = 0; i < attributes.size(); ++i)
-        ddm_.update_regions[registered.object][attributes[i]] = region_handles[i];
+        associate_region(ddm_.update_regions, registered.object, attributes[i], region_handles[i], true);
     return registered.object;
 }
 
@@ -236,23 +239,17 @@ void Client::check(const wire::AssociateRegion& m) {
     check_attributes(cls, m.attributes);
     const LocalRegion& r = known_region(m.region);
     for (auto attr : m.attributes) check_region_space(r, cls, attr);
-    for (auto attr : m.attributes) ddm_.update_regions[m.object][attr] = m.region;
+    for (auto attr : m.attributes) associate_region(ddm_.update_regions, m.object, attr, m.region, m.adds);
 }
 
+// HLA 1.3 (no attributes named) refuses a region the object's attributes are not associated with; IEEE
+// 1516-2010 (these attributes) has no such exception: a pair not associated is left as it is.
 void Client::check(const wire::UnassociateRegion& m) {
     refuse_region_change_while_restoring("unassociateRegionForUpdates");
     const LocalObject& obj = known_object(m.object);
+    check_attributes(*fom_->object_class(obj.object_class), m.attributes);
     known_region(m.region);
-    auto associations = ddm_.update_regions.find(m.object);
-    bool associated = false;
-    if (associations != ddm_.update_regions.end()) {
-        for (auto it = associations->second.begin(); it != associations->second.end();) {
-            associated = associated || it->second == m.region;
-            it = it->second == m.region ? associations->second.erase(it) : std::next(it);
-        }
-        if (associations->second.empty()) ddm_.update_regions.erase(associations);
-    }
-    if (!associated)
+    if (!unassociate_region(ddm_.update_regions, m.object, m.region, m.attributes) && m.attributes.empty())
         raise(ErrorCode::InvalidRegionContext,
               region_text(m.region) + " is not associated with attributes of object '" + obj.name + "'");
 }
@@ -304,13 +301,14 @@ void Client::check(const wire::UnsubscribeInteractionClassWithRegion& m) {
 
 // ---- sending and requesting through regions (HLA 1.3 §9.12-9.13) ----
 
-std::uint64_t Client::send_interaction_with_region(fom::Handle cls, wire::HandleValues values, std::uint32_t region,
+std::uint64_t Client::send_interaction_with_region(fom::Handle cls, wire::HandleValues values, wire::Handles regions,
                                                    const std::string& tag, wire::OptionalTime time) {
-    wire::SendInteractionWithRegion interaction{cls, std::move(values), tag, time, 0, region};
+    wire::SendInteractionWithRegion interaction{cls, std::move(values), tag, time, 0, std::move(regions)};
     {
         std::lock_guard<std::mutex> lock(mu_);
         check_not_saving_or_restoring("sendInteractionWithRegion");
-        check_interaction_region(check_sendable(cls, interaction.values), region);
+        const auto& c = check_sendable(cls, interaction.values);
+        for (auto region : interaction.regions) check_interaction_region(c, region);
         check_forwardable(interaction, "sendInteractionWithRegion");
         interaction.serial = next_serial(time);
     }

@@ -120,16 +120,16 @@ private:
                             const Region& region) const;
     // The federate's region `r`, which must be in the routing space of interaction class `cls` (WireError).
     const Region& interaction_region(const FederateState& f, RegionHandle r, fom::Handle cls) const;
-    // The region `owner` updates the attribute of the object in, or null for the default region.
-    const Region* update_region(FederateHandle owner, ObjectHandle object, fom::Handle attribute) const;
-    // Is the attribute subscribed at class `known` through a region overlapping the owner's update region?
+    // The regions `owner` updates the attribute of the object in (none: the default region).
+    SentRegions update_regions_of(FederateHandle owner, ObjectHandle object, fom::Handle attribute) const;
+    // Is the attribute subscribed at class `known` through a region overlapping some update region of the owner's?
     bool region_wanted(const FederateState& g, fom::Handle known, FederateHandle owner, ObjectHandle object,
                        fom::Handle attribute) const;
     // Does federate `gh` discover the object now: a plain subscription to its class (as before DDM), or
     // an owned attribute in scope through one of its subscription regions.
     bool discovers(FederateHandle gh, const FederateState& g, ObjectHandle object, const ObjectInstance& obj) const;
-    // The class a federate receives an interaction sent in `region` (null: default region) as, or 0.
-    fom::Handle interaction_receiver(const FederateState& g, fom::Handle cls, const Region* region) const;
+    // The class a federate receives an interaction sent in `sent_in` as, or 0.
+    fom::Handle interaction_receiver(const FederateState& g, fom::Handle cls, const SentRegions& sent_in) const;
     void discover_in_scope();  // after regions, associations or subscriptions changed
     // After the FOM gained dimensions: each region spans the new ones whole, as one that does not name them.
     void widen_regions();
@@ -143,7 +143,7 @@ private:
     // After a scope or relevance switch changed or a federate left: how many federates watch scope.
     void count_scope_watchers();
     void forget_update_regions(ObjectHandle object);
-    void route_interaction(FederateHandle from, const wire::SendInteractionView& m, const Region* region);
+    void route_interaction(FederateHandle from, const wire::SendInteractionView& m, const SentRegions& sent_in);
     // requestClassAttributeValueUpdate, plain (region null) or with a region (objects.cpp).
     void request_class_update(FederateHandle from, fom::Handle cls, const wire::Handles& attributes,
                               const Region* region);

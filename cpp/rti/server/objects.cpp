@@ -247,12 +247,12 @@ void Federation::on(FederateHandle from, const wire::SendInteraction& m) {
 
 void Federation::on(FederateHandle from, const wire::SendInteractionView& m) {
     ++federate(from).interactions_sent;
-    route_interaction(from, m, nullptr);
+    route_interaction(from, m, SentRegions{});
 }
 
-// `region`: the region the interaction was sent with (sendInteractionWithRegion), null for the default
+// `sent_in`: the regions the interaction was sent with (sendInteractionWithRegion), none for the default
 // region, which reaches every subscriber of the class.
-void Federation::route_interaction(FederateHandle from, const wire::SendInteractionView& m, const Region* region) {
+void Federation::route_interaction(FederateHandle from, const wire::SendInteractionView& m, const SentRegions& sent_in) {
     if (m.time) check_timestamp(from, *m.time, "interaction");
     const auto& sent_class = interaction_class(m.interaction_class);
     for (const auto& [param, value] : m.values) {
@@ -276,7 +276,7 @@ void Federation::route_interaction(FederateHandle from, const wire::SendInteract
     Routed* routed = nullptr;
     for (auto& [gh, g] : federates_) {
         if (gh == from) continue;
-        const fom::Handle as = interaction_receiver(g, m.interaction_class, region);
+        const fom::Handle as = interaction_receiver(g, m.interaction_class, sent_in);
         if (as == 0) continue;
         // Received as the subscribed superclass: only the parameters that class defines.
         const auto* received_class = fom_.interaction_class(as);
@@ -356,7 +356,7 @@ void Federation::on(FederateHandle from, const wire::RequestClassUpdate& m) {
 }
 
 // HLA 1.3 §6.16, §9.13: the owners of the attributes of the class's instances are asked to provide them;
-// with a `region`, only the owners whose update region for the attribute overlaps it.
+// with a `region`, only the owners with an update region for the attribute that overlaps it.
 void Federation::request_class_update(FederateHandle from, fom::Handle cls, const wire::Handles& attributes,
                                       const Region* region) {
     check_attributes(object_class(cls), attributes);
@@ -366,8 +366,10 @@ void Federation::request_class_update(FederateHandle from, fom::Handle cls, cons
         for (auto attr : attributes) {
             auto owner = obj.ownership.owners.find(attr);
             if (owner == obj.ownership.owners.end() || owner->second == from) continue;
-            const Region* updated_in = region ? update_region(owner->second, oh, attr) : nullptr;
-            if (!updated_in || region->overlaps(*updated_in)) by_owner[owner->second].push_back(attr);
+            const bool in_region = !region || update_regions_of(owner->second, oh, attr).any([&](const Region* in) {
+                return !in || region->overlaps(*in);
+            });
+            if (in_region) by_owner[owner->second].push_back(attr);
         }
         for (auto& [owner, attrs] : by_owner) outbox_.send(owner, wire::ProvideAttributeValueUpdate{oh, attrs});
     }

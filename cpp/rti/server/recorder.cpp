@@ -258,7 +258,7 @@ void Recorder::request(const Federation& federation, FederateHandle from, const 
     } else if constexpr (std::is_same_v<M, wire::SendInteractionView> || std::is_same_v<M, wire::SendInteraction>) {
         record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, nullptr);
     } else if constexpr (std::is_same_v<M, wire::SendInteractionWithRegion>) {
-        record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, &m.region);
+        record_interaction(federation, from, m.interaction_class, m.values, m.tag, m.time, &m.regions);
     } else if constexpr (std::is_same_v<M, wire::RegisterObject> || std::is_same_v<M, wire::RegisterObjectWithRegion>) {
         // Recorded with its outcome (answered): the object's handle and name.
     } else if constexpr (std::is_same_v<M, wire::QueryStatus> || std::is_same_v<M, wire::Ping> ||
@@ -328,7 +328,7 @@ void Recorder::record_object_event(const Federation& federation, FederateHandle 
 template <class Values>
 void Recorder::record_interaction(const Federation& federation, FederateHandle from, std::uint32_t class_handle,
                                   const Values& values, const std::string& tag,
-                                  const wire::OptionalTime& time, const std::uint32_t* region) {
+                                  const wire::OptionalTime& time, const wire::Handles* regions) {
     const fom::InteractionClass* cls = federation.fom().interaction_class(class_handle);
     if (!cls) return;  // refused as it is served; the drop is recorded
     begin(json_, federation, from);
@@ -336,9 +336,9 @@ void Recorder::record_interaction(const Federation& federation, FederateHandle f
     put_time(json_, federation, from, time);
     json_ += ",\"tag\":";
     json_text(json_, tag);
-    if (region) {
-        json_ += ",\"region\":";
-        put_uint(json_, *region);
+    if (regions) {
+        json_ += ",\"regions\":";
+        wire::JsonWriter::put(json_, *regions);
     }
     put_values(json_, "parameters", values, [&](std::uint32_t h) { return cls->parameter(h); });
     write(federation, topic(federation, TopicKind::Interaction, class_handle), json_);

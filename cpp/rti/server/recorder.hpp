@@ -105,7 +105,7 @@ private:
     void record_object_event(const Federation& federation, FederateHandle from, const M& m);
     template <class Values>  // HandleValues, or HandleValueViews into the frame being served
     void record_interaction(const Federation& federation, FederateHandle from, std::uint32_t cls, const Values& values,
-                            const std::string& tag, const wire::OptionalTime& time, const std::uint32_t* region);
+                            const std::string& tag, const wire::OptionalTime& time, const wire::Handles* regions);
     // A request, refusal or callback: `key` names the wire message, "fields" holds its fields.
     void record_message(const Federation& federation, FederateHandle federate, TopicKind kind, const char* key,
                         const wire::Message& message);

@@ -78,19 +78,14 @@ void FederateRegions::erase(RegionHandle r) {
         it->second.erase(r);
         it = it->second.empty() ? interaction_subscriptions.erase(it) : std::next(it);
     }
-    for (auto& [object, attributes] : update_regions) {
-        for (auto it = attributes.begin(); it != attributes.end();)
-            it = it->second == r ? attributes.erase(it) : std::next(it);
-    }
+    forget_region(update_regions, r);
 }
 
-const Region* FederateRegions::update_region(ObjectHandle object, fom::Handle attribute) const {
+SentRegions FederateRegions::update_regions_of(ObjectHandle object, fom::Handle attribute) const {
     auto obj = update_regions.find(object);
-    if (obj == update_regions.end()) return nullptr;
+    if (obj == update_regions.end()) return {};
     auto attr = obj->second.find(attribute);
-    if (attr == obj->second.end()) return nullptr;
-    auto region = regions.find(attr->second);
-    return region == regions.end() ? nullptr : &region->second;
+    return attr == obj->second.end() ? SentRegions{} : SentRegions{*this, attr->second};
 }
 
 bool FederateRegions::subscribed(fom::Handle known, fom::Handle attribute, const Region* updated_in) const {
@@ -126,16 +121,16 @@ void Federation::check_region_space(const fom::ObjectClass& cls, fom::Handle att
                         std::to_string(attribute));
 }
 
-const Region* Federation::update_region(FederateHandle owner, ObjectHandle object, fom::Handle attribute) const {
+SentRegions Federation::update_regions_of(FederateHandle owner, ObjectHandle object, fom::Handle attribute) const {
     auto f = federates_.find(owner);
-    return f == federates_.end() ? nullptr : f->second.ddm.update_region(object, attribute);
+    return f == federates_.end() ? SentRegions{} : f->second.ddm.update_regions_of(object, attribute);
 }
 
 bool Federation::region_wanted(const FederateState& g, fom::Handle known, FederateHandle owner, ObjectHandle object,
                                fom::Handle attribute) const {
     // Without region subscriptions (no DDM in use) this is one test, and the owner is not looked up.
     if (g.ddm.object_subscriptions.empty()) return false;
-    return g.ddm.subscribed(known, attribute, update_region(owner, object, attribute));
+    return g.ddm.subscribed(known, attribute, update_regions_of(owner, object, attribute));
 }
 
 bool Federation::discovers(FederateHandle gh, const FederateState& g, ObjectHandle object,
@@ -149,10 +144,10 @@ bool Federation::discovers(FederateHandle gh, const FederateState& g, ObjectHand
     return false;
 }
 
-fom::Handle Federation::interaction_receiver(const FederateState& g, fom::Handle cls, const Region* region) const {
+fom::Handle Federation::interaction_receiver(const FederateState& g, fom::Handle cls, const SentRegions& sent_in) const {
     // Received as the nearest class through which it is in scope.
     for (fom::Handle c = cls; c != 0; c = fom_.interaction_class(c)->parent)
-        if (g.declarations.subscribed_interactions.count(c) || g.ddm.subscribed_interaction(c, region)) return c;
+        if (g.declarations.subscribed_interactions.count(c) || g.ddm.subscribed_interaction(c, sent_in)) return c;
     return 0;
 }
 
@@ -278,10 +273,11 @@ std::pair<ObjectHandle, std::string> Federation::register_object_with_region(Fed
     const auto& cls = object_class(m.object_class);
     if (m.attributes.size() != m.regions.size()) throw WireError("as many regions as attributes are required");
     check_attributes(cls, m.attributes);
-    std::map<fom::Handle, RegionHandle> associations;
+    // An attribute named with several regions has them all (IEEE 1516-2010; HLA 1.3's clients send one).
+    AttributeRegions associations;
     for (std::size_t i = 0; i < m.attributes.size(); ++i) {
         check_region_space(cls, m.attributes[i], m.regions[i], f.ddm.at(m.regions[i]));
-        associations[m.attributes[i]] = m.regions[i];
+        associations[m.attributes[i]].insert(m.regions[i]);
     }
     // register_object discovers the instance at once: the associations must be there under the handle it
     // is about to give (handles are never reused), and go if the registration is refused.
@@ -315,7 +311,8 @@ void Federation::on(FederateHandle from, const wire::DeleteRegion& m) {
     update_advisories();
 }
 
-// §9.6: an attribute has one update region per federate; associating replaces the previous one.
+// §9.6: HLA 1.3 gives an attribute one update region per federate, so associating replaces the previous
+// one; IEEE 1516-2010 several, so associating adds (`adds`).
 void Federation::on(FederateHandle from, const wire::AssociateRegion& m) {
     auto& f = federate(from);
     const Region& region = f.ddm.at(m.region);
@@ -324,21 +321,16 @@ void Federation::on(FederateHandle from, const wire::AssociateRegion& m) {
     const auto& cls = object_class(obj->second.object_class);
     check_attributes(cls, m.attributes);
     for (auto attr : m.attributes) check_region_space(cls, attr, m.region, region);
-    auto& associations = f.ddm.update_regions[m.object];
-    for (auto attr : m.attributes) associations[attr] = m.region;
+    for (auto attr : m.attributes) associate_region(f.ddm.update_regions, m.object, attr, m.region, m.adds);
     discover_in_scope();
 }
 
-// §9.7: the object's attributes associated with this region go back to the default region.
+// §9.7: the object's attributes (those named, or all: HLA 1.3) are no longer updated in this region; one
+// left with no region is back in the default region.
 void Federation::on(FederateHandle from, const wire::UnassociateRegion& m) {
     auto& f = federate(from);
     f.ddm.at(m.region);
-    auto obj = f.ddm.update_regions.find(m.object);
-    if (obj == f.ddm.update_regions.end()) return;
-    for (auto it = obj->second.begin(); it != obj->second.end();)
-        it = it->second == m.region ? obj->second.erase(it) : std::next(it);
-    if (obj->second.empty()) f.ddm.update_regions.erase(obj);
-    discover_in_scope();
+    if (unassociate_region(f.ddm.update_regions, m.object, m.region, m.attributes)) discover_in_scope();
 }
 
 // §9.8: the attribute set replaces the previous one for this class and region; an empty one unsubscribes.
@@ -387,13 +379,15 @@ void Federation::on(FederateHandle from, const wire::UnsubscribeInteractionClass
     if (ddm.unsubscribe(ddm.interaction_subscriptions, m.interaction_class, m.region)) update_advisories();
 }
 
-// §9.12: reaches the plain subscribers and those whose subscription region overlaps `region`.
+// §9.12: reaches the plain subscribers and, once, those whose subscription regions overlap any of `regions`
+// (none: the default region).
 void Federation::on(FederateHandle from, const wire::SendInteractionWithRegion& m) {
     FederateState& f = federate(from);
     ++f.interactions_sent;
-    const Region& region = interaction_region(f, m.region, m.interaction_class);
+    for (RegionHandle r : m.regions) interaction_region(f, r, m.interaction_class);
+    const std::set<RegionHandle> regions(m.regions.begin(), m.regions.end());
     route_interaction(from, wire::SendInteractionView{m.interaction_class, wire::views_of(m.values), m.tag, m.time, m.serial},
-                      &region);
+                      SentRegions{f.ddm, regions});
 }
 
 // §9.13: the owners of attributes whose update region overlaps `region` are asked to provide them.

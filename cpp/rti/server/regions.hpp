@@ -12,6 +12,7 @@
 #include "fed_parser/fom.hpp"
 #include "rti/erase_nested.hpp"
 #include "rti/server/outbox.hpp"
+#include "rti/update_regions.hpp"
 
 namespace hlacore {
 
@@ -33,14 +34,33 @@ struct Region {
     bool overlaps(const Region& other) const;
 };
 
+struct FederateRegions;
+
+// The regions an attribute is updated in or an interaction sent in, all of one federate's: none is the
+// default region, which overlaps every region. A view: no copy on a message's path.
+class SentRegions {
+public:
+    SentRegions() = default;  // the default region
+    SentRegions(const FederateRegions& owner, const std::set<RegionHandle>& handles) : owner_(&owner), handles_(&handles) {}
+    bool is_default() const { return !handles_ || handles_->empty(); }
+    // Is f(region) true for some of them? For the default region, f(nullptr).
+    template <class F>
+    bool any(F f) const;
+
+private:
+    const FederateRegions* owner_ = nullptr;
+    const std::set<RegionHandle>* handles_ = nullptr;
+};
+
 // One federate's DDM state. Subscriptions through a region live here; the plain ones (the default region)
 // stay with the federate's declarations.
 struct FederateRegions {
     std::map<RegionHandle, Region> regions;
     std::map<fom::Handle, std::map<RegionHandle, std::set<fom::Handle>>> object_subscriptions;  // class -> region -> attributes
     std::map<fom::Handle, std::set<RegionHandle>> interaction_subscriptions;
-    // The update regions: object -> attribute -> region (absent: the default region).
-    std::map<ObjectHandle, std::map<fom::Handle, RegionHandle>> update_regions;
+    // The update regions: object -> attribute -> regions (absent: the default region). HLA 1.3 gives an
+    // attribute one, IEEE 1516-2010 several: an update reaches a subscriber when any of them overlaps.
+    UpdateRegions update_regions;
     // The attributes last reported in scope, while the attribute scope advisory switch is on.
     std::map<ObjectHandle, std::set<fom::Handle>> in_scope;
     // Owned attributes last reported relevant (turnUpdatesOn), while the relevance switch is on.
@@ -60,13 +80,29 @@ struct FederateRegions {
         at(r);
         return erase_nested(subscriptions, cls, r);
     }
-    // The region the object's attribute is updated in, null for the default region.
-    const Region* update_region(ObjectHandle object, fom::Handle attribute) const;
-    // Is the attribute subscribed at class `known` through a region overlapping `updated_in` (null: the
-    // default region)?
+    // The regions the object's attribute is updated in (none: the default region).
+    SentRegions update_regions_of(ObjectHandle object, fom::Handle attribute) const;
+    // Is the attribute subscribed at class `known` through a region overlapping some of `updated_in`?
+    bool subscribed(fom::Handle known, fom::Handle attribute, const SentRegions& updated_in) const {
+        return updated_in.any([&](const Region* in) { return subscribed(known, attribute, in); });
+    }
+    // Is interaction class `cls` subscribed through a region overlapping some of `sent_in`?
+    bool subscribed_interaction(fom::Handle cls, const SentRegions& sent_in) const {
+        return sent_in.any([&](const Region* in) { return subscribed_interaction(cls, in); });
+    }
+    // The same for one region, null for the default region.
     bool subscribed(fom::Handle known, fom::Handle attribute, const Region* updated_in) const;
-    // Is interaction class `cls` subscribed through a region overlapping `sent_in` (null: the default region)?
     bool subscribed_interaction(fom::Handle cls, const Region* sent_in) const;
 };
+
+template <class F>
+bool SentRegions::any(F f) const {
+    if (is_default()) return f(static_cast<const Region*>(nullptr));
+    for (RegionHandle h : *handles_) {
+        auto region = owner_->regions.find(h);
+        if (region != owner_->regions.end() && f(&region->second)) return true;
+    }
+    return false;
+}
 
 }  // namespace hlacore

@@ -37,8 +37,11 @@ namespace save_file {
 
 constexpr char kFileMagic[8] = {'H', 'L', 'A', 'C', 'S', 'A', 'V', 'E'};
 // Version 2 added data distribution management; version 1 files (no regions) are refused, since
-// restoring one would silently drop the regions federates hold handles to.
-constexpr std::uint32_t kFormatVersion = 2;
+// restoring one would silently drop the regions federates hold handles to. Version 3: an attribute's
+// update_regions may repeat, one record per region (IEEE 1516-2010's several); a version 2 file, one record
+// an attribute, reads the same, and a version 2 gateway refuses a version 3 file rather than keep one region.
+constexpr std::uint32_t kFormatVersion = 3;
+constexpr std::uint32_t kOldestReadableVersion = 2;
 
 using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 struct ObjectAttributes {  // an object and attributes of it
@@ -132,7 +135,8 @@ void put_ddm(const Ddm& ddm, Target& out) {
     for (const auto& [ic, regions] : ddm.interaction_subscriptions)
         for (auto region : regions) out.region_interaction_subscriptions.push_back({ic, region});
     for (const auto& [object, associations] : ddm.update_regions)
-        for (const auto& [attr, region] : associations) out.update_regions.push_back({object, attr, region});
+        for (const auto& [attr, regions] : associations)
+            for (auto region : regions) out.update_regions.push_back({object, attr, region});
     out.last_region = ddm.last_region;
 }
 
@@ -415,9 +419,9 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
     wire::Reader r(std::string_view(bytes).substr(sizeof kFileMagic), wire::MessageType::Invalid);
     std::uint32_t version = 0;
     r(version);
-    if (version != kFormatVersion)
-        throw WireError("save format version " + std::to_string(version) + " (this gateway reads version " +
-                        std::to_string(kFormatVersion) + ")");
+    if (version < kOldestReadableVersion || version > kFormatVersion)
+        throw WireError("save format version " + std::to_string(version) + " (this gateway reads versions " +
+                        std::to_string(kOldestReadableVersion) + " to " + std::to_string(kFormatVersion) + ")");
     Snapshot s;
     try {
         r(s.label, s.federation, s.fed_name, s.fed_text, s.next_federate, s.next_object, s.time);
@@ -594,7 +598,7 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         for (const auto& [cls, region, attrs] : r.region_subscriptions)
             f.ddm.object_subscriptions[cls][region] = std::set<fom::Handle>(attrs.begin(), attrs.end());
         for (const auto& [ic, region] : r.region_interaction_subscriptions) f.ddm.interaction_subscriptions[ic].insert(region);
-        for (const auto& [object, attribute, region] : r.update_regions) f.ddm.update_regions[object][attribute] = region;
+        for (const auto& [object, attribute, region] : r.update_regions) f.ddm.update_regions[object][attribute].insert(region);
         for (const auto& [object, attrs] : r.in_scope) f.ddm.in_scope[object].insert(attrs.begin(), attrs.end());
         for (const auto& [object, attrs] : r.relevant) f.ddm.relevant[object].insert(attrs.begin(), attrs.end());
         f.ddm.last_region = r.last_region;

@@ -19,8 +19,10 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // time_semantics; 13: CreateFederation's and FederationJoined's time_type, the object instance names'
 // ReserveObjectNames, ReleaseObjectNames and ObjectNamesReserved; 14: FederationSaved's and FederationRestored's
 // reason, AbortFederationSave, AbortFederationRestore and the transportation queries and reports; 15:
-// SubscriptionRate; 16: JoinFederation's fom_modules (FOM modules added at join) and FomExtended
-constexpr std::uint16_t kProtocolVersion = 16;
+// SubscriptionRate; 16: JoinFederation's fom_modules (FOM modules added at join) and FomExtended; 17: several
+// regions (IEEE 1516-2010): AssociateRegion's adds, UnassociateRegion's attributes, SendInteractionWithRegion's
+// regions
+constexpr std::uint16_t kProtocolVersion = 17;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;

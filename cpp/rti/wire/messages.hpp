@@ -837,7 +837,7 @@ struct InteractionRegion {
     std::uint32_t region = 0;
     HLACORE_FIELDS(interaction_class, region)
 };
-struct UpdateRegion {  // the region the federate updates an object's attribute in
+struct UpdateRegion {  // a region the federate updates an object's attribute in (several under IEEE 1516-2010)
     std::uint32_t object = 0;
     std::uint32_t attribute = 0;
     std::uint32_t region = 0;
@@ -930,13 +930,16 @@ struct AssociateRegion {
     std::uint32_t region = 0;
     std::uint32_t object = 0;
     Handles attributes;
-    HLACORE_FIELDS(region, object, attributes)
+    // IEEE 1516-2010: the region joins the attributes' update regions; HLA 1.3: it replaces them.
+    bool adds = false;
+    HLACORE_FIELDS(region, object, attributes, adds)
 };
 struct UnassociateRegion {
     HLACORE_TYPE(UnassociateRegion)
     std::uint32_t region = 0;
     std::uint32_t object = 0;
-    HLACORE_FIELDS(region, object)
+    Handles attributes;  // IEEE 1516-2010: these attributes; empty: all the object's (HLA 1.3)
+    HLACORE_FIELDS(region, object, attributes)
 };
 struct SubscribeObjectClassWithRegion {
     HLACORE_TYPE(SubscribeObjectClassWithRegion)
@@ -972,8 +975,8 @@ struct SendInteractionWithRegion {
     std::string tag;
     OptionalTime time;
     std::uint64_t serial = 0;
-    std::uint32_t region = 0;
-    HLACORE_FIELDS(interaction_class, values, tag, time, serial, region)
+    Handles regions;  // one under HLA 1.3, any number under IEEE 1516-2010 (none: the default region)
+    HLACORE_FIELDS(interaction_class, values, tag, time, serial, regions)
 };
 struct RequestClassUpdateWithRegion {
     HLACORE_TYPE(RequestClassUpdateWithRegion)

@@ -3,8 +3,10 @@ modules' dimensions, on the core's HLA 1.3 routing spaces.
 
 The modules' dimensions are one space (HLAdimensions), a region's range [lower, upper) is the core's closed
 [lower, upper - 1], and a dimension a region does not name spans its whole axis, so regions overlap as IEEE
-1516-2010 has it. The core associates one region with an attribute of an object and sends an interaction
-through one region: more is not served yet."""
+1516-2010 has it. An attribute of an object is updated in any number of regions (an association adds to
+them, an unassociation removes the pairs it names) and an interaction is sent in any number: a subscriber
+receives either once when one of its regions overlaps one of them; none is the default region, the whole
+space."""
 
 from __future__ import annotations
 
@@ -16,7 +18,7 @@ from . import _exceptions as x
 from ._callbacks import Adapter
 from ._handles import (AttributeHandle, DimensionHandle, InteractionClassHandle, MessageRetractionHandle,
                        ObjectClassHandle, ObjectInstanceHandle, ParameterHandle, RegionHandle, core, cores, wrap_set)
-from ._support import not_served, services, tag_of, values_of
+from ._support import services, tag_of, values_of
 
 _DIMENSIONS = "HLAdimensions"  # the routing space of the FOM modules' dimensions (cpp/fed_parser/fom.hpp)
 
@@ -133,39 +135,35 @@ class Regions:
         self._inner().deleteRegion(inner)
         del self._regions[int(inner)]
 
-    def _one_region_each(self, pairs: Iterable[Any]) -> List[Tuple[List[Any], Any]]:
-        """(attributes, regions) pairs as (core attributes, the one core region)."""
-        out = []
-        for attributes, regions in pairs:
-            found = [self._region(r)[0] for r in regions]
-            if len(found) != 1:
-                raise not_served(f"{len(found)} regions for attributes", "the core associates one region with an "
-                                  "attribute of an object")
-            out.append((cores(AttributeHandle, attributes), found[0]))
-        return out
+    def _region_pairs(self, pairs: Iterable[Any]) -> List[Tuple[List[Any], Any]]:
+        """(attributes, regions) pairs as (core attributes, core region), one for each region of each pair."""
+        return [(cores(AttributeHandle, attributes), self._region(r)[0])
+                for attributes, regions in pairs for r in regions]
 
     def registerObjectInstanceWithRegions(self, theClass: Any, pairs: Iterable[Any],
                                           theObject: Optional[str] = None) -> ObjectInstanceHandle:
-        """Register an object whose attributes update in these regions (one region an attribute)."""
+        """Register an object whose attributes update in these regions (an attribute in all the regions it is
+        paired with)."""
         inner, adapter = self._inner(), self._adapter
         assert adapter is not None
         if theObject is not None and theObject not in adapter.reserved:
             raise x.ObjectInstanceNameNotReserved(f"ObjectInstanceNameNotReserved: {theObject!r} (reserve it first)")
-        associated = [(a, region) for attributes, region in self._one_region_each(pairs) for a in attributes]
-        handle = inner.registerObjectInstanceWithRegion(core(ObjectClassHandle, theClass), associated, theObject)
+        associated = [(a, region) for attributes, region in self._region_pairs(pairs) for a in attributes]
+        handle = inner._register_object_with_regions(core(ObjectClassHandle, theClass), associated, theObject)
         adapter.reserved.discard(theObject or "")
         return ObjectInstanceHandle.wrap(handle)
 
     def associateRegionsForUpdates(self, theObject: Any, pairs: Iterable[Any]) -> None:
-        """Update these attributes of the object in these regions (one region an attribute)."""
-        for attributes, region in self._one_region_each(pairs):
-            self._inner().associateRegionForUpdates(region, core(ObjectInstanceHandle, theObject), attributes)
+        """Update these attributes of the object in these regions too: their other regions stay."""
+        for attributes, region in self._region_pairs(pairs):
+            self._inner()._associate_region(region, core(ObjectInstanceHandle, theObject), attributes)
 
     def unassociateRegionsForUpdates(self, theObject: Any, pairs: Iterable[Any]) -> None:
-        """Update the object's attributes without these regions (the core drops a region's attributes of an
-        object all together)."""
-        for _attributes, region in self._one_region_each(pairs):
-            self._inner().unassociateRegionForUpdates(region, core(ObjectInstanceHandle, theObject))
+        """Update these attributes of the object no longer in these regions; an attribute left with none is
+        updated in the default region (the whole space)."""
+        for attributes, region in self._region_pairs(pairs):
+            if attributes:  # none named on the wire would be all of the object's (HLA 1.3)
+                self._inner()._unassociate_region(region, core(ObjectInstanceHandle, theObject), attributes)
 
     def subscribeObjectClassAttributesWithRegions(self, theClass: Any, pairs: Iterable[Any], active: Any = True,
                                                   updateRateDesignator: str = "") -> None:
@@ -198,12 +196,11 @@ class Regions:
 
     def sendInteractionWithRegions(self, theInteraction: Any, theParameterValues: Mapping[Any, Any], regions: Iterable[Any],
                                    theUserSuppliedTag: Any, theTime: Any = None) -> Optional[MessageRetractionHandle]:
-        """Send an interaction in a region (one); with a time, timestamped, returning its retraction handle."""
+        """Send an interaction in these regions: a subscriber receives it once when one of its regions overlaps
+        one of them. With a time, timestamped, returning its retraction handle."""
         found = [self._region(r)[0] for r in regions]
-        if len(found) != 1:
-            raise not_served(f"an interaction sent in {len(found)} regions", "the core sends one through one region")
-        return self._timed(self._inner().sendInteractionWithRegion(
-            core(InteractionClassHandle, theInteraction), values_of(ParameterHandle, theParameterValues), found[0],
+        return self._timed(self._inner()._send_interaction_with_regions(
+            core(InteractionClassHandle, theInteraction), values_of(ParameterHandle, theParameterValues), found,
             tag_of(theUserSuppliedTag), None if theTime is None else self._time_in(theTime)))
 
     def requestAttributeValueUpdateWithRegions(self, theClass: Any, pairs: Iterable[Any], theUserSuppliedTag: Any) -> None:

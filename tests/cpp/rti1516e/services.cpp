@@ -688,7 +688,7 @@ void regions(World& w) {
     a.rti->setRangeBounds(near, w.x, RangeBounds(200, 300));
     a.rti->commitRegionModifications({near});
     update(d1, "moved");
-    CALL(a, unassociateRegionsForUpdates, d1, in(position, {near}));
+    CALL(a, unassociateRegionsForUpdates, d1, in(position, {far, near}));  // associating near added it to far
     update(d1, "free");  // the default region: the whole space
     until({&b}, [&] { return b.rec.seen("reflectAttributeValues", reflected("free")) &&
                              b.rec.seen("receiveInteraction", text(w.verb) + L"=timed}"); },
@@ -705,6 +705,31 @@ void regions(World& w) {
     CHECK(!b.rec.has("receiveInteraction", text(w.command, L"{" + text(w.verb) + L"=far}", L"", RECEIVE, RELIABLE, from(w))));
     CHECK(b.rec.has("attributesInScope", text(d2, position)) && b.rec.has("attributesOutOfScope", text(d2, position)));
     CHECK(!a.rec.has("turnUpdatesOnForObjectInstance", text(d2, position)));
+
+    // Several regions: d1's position is updated in far and in `also`, which overlaps b's region, and reflected
+    // once; an interaction sent in both is received once; unassociating (position, also) keeps far, outside.
+    const RegionHandle also = a.rti->createRegion({w.x});
+    a.rti->setRangeBounds(also, w.x, RangeBounds(10, 90));
+    a.rti->commitRegionModifications({also});
+    CALL(a, associateRegionsForUpdates, d1, in(position, {far, also}));
+    update(d1, "twice");
+    CALL(a, sendInteractionWithRegions, w.command, ParameterHandleValueMap{{w.verb, data("twice")}},
+         RegionHandleSet{far, also}, data(""));
+    CALL(a, unassociateRegionsForUpdates, d1, in(position, {also}));
+    CHECK(raises<RegionInUseForUpdateOrSubscription>([&] { a.rti->deleteRegion(far); }));
+    update(d1, "far only");
+    settle({&a, &b});
+    const auto times = [&](const char* name, std::wstring const& part) {
+        size_t n = 0;
+        for (auto const& r : b.rec.all(name)) n += r.find(part) != std::wstring::npos;
+        return n;
+    };
+    CHECK(times("reflectAttributeValues", reflected("twice")) == 1);
+    CHECK(times("receiveInteraction", text(w.verb) + L"=twice}") == 1);
+    CHECK(times("reflectAttributeValues", reflected("far only")) == 0);
+    CALL(a, unassociateRegionsForUpdates, d1, in(position, {far}));
+    a.rti->deleteRegion(also);
+    settle({&a, &b});  // d1's coming back into b's scope told before the switch goes off
 
     // Off, the scope switch keeps quiet when d2 comes back in b's region.
     CALL(b, disableAttributeScopeAdvisorySwitch);

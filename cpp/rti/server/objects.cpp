@@ -214,7 +214,7 @@ void Federation::on(FederateHandle from, const wire::UpdateAttributesView& m) {
                 !region_wanted(g, known, from, m.object, pair.first))
                 continue;
             const bool timed = tso && order_of(pair.first) == fom::Order::Timestamp;
-            if (!timed && g.rates && !g.rates->due(known, m.object, pair.first, UpdateRateLimits::Clock::now())) continue;
+            if (!timed && g.rates && !g.rates->due(known, m.object, pair.first)) continue;
             const int tr = transport_of(pair.first) == fom::Transport::BestEffort ? 1 : 0;
             out[timed][tr].values.push_back(&pair);
         }

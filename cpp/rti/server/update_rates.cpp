@@ -11,9 +11,10 @@ void UpdateRateLimits::set(fom::Handle object_class, double rate) {
         interval_.erase(object_class);
 }
 
-bool UpdateRateLimits::due(fom::Handle object_class, std::uint32_t object, fom::Handle attribute, Clock::time_point now) {
+bool UpdateRateLimits::due(fom::Handle object_class, std::uint32_t object, fom::Handle attribute) {
     const auto interval = interval_.find(object_class);
     if (interval == interval_.end()) return true;
+    const auto now = Clock::now();
     const auto [last, first] = sent_.try_emplace({object, attribute}, now);
     if (first) return true;
     if (now - last->second < interval->second) return false;

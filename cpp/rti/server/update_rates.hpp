@@ -20,9 +20,9 @@ public:
 
     // `rate` a second for the class's subscribed attributes; 0: no limit.
     void set(fom::Handle object_class, double rate);
-    // Whether a receive-order value of `attribute` of `object`, known as `object_class`, goes out at `now`
-    // (noted as sent when it does).
-    bool due(fom::Handle object_class, std::uint32_t object, fom::Handle attribute, Clock::time_point now);
+    // Whether a receive-order value of `attribute` of `object`, known as `object_class`, goes out now (noted
+    // as sent when it does); the clock is read only for a class with a rate.
+    bool due(fom::Handle object_class, std::uint32_t object, fom::Handle attribute);
     // An object the federate no longer knows: its times go.
     void forget(std::uint32_t object);
 

@@ -98,11 +98,13 @@ struct FederateRegions {
 template <class F>
 bool SentRegions::any(F f) const {
     if (is_default()) return f(static_cast<const Region*>(nullptr));
-    for (RegionHandle h : *handles_) {
-        auto region = owner_->regions.find(h);
+    // Counted rather than iterated to end(): the common single region costs no tree step.
+    auto it = handles_->begin();
+    for (std::size_t left = handles_->size();; ++it) {
+        auto region = owner_->regions.find(*it);
         if (region != owner_->regions.end() && f(&region->second)) return true;
+        if (--left == 0) return false;
     }
-    return false;
 }
 
 }  // namespace hlacore

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "bindings/convert.hpp"
+#include "fedpro/server.hpp"
 #include "rti/busy_poll.hpp"
 #include "rti/client/options.hpp"
 #include "rti/server/options.hpp"
@@ -36,10 +37,20 @@ public:
         host_ = gateway_->host();
         port_ = gateway_->port();
         thread_ = std::thread([this] { gateway_->run(); });
+        if (!options.fedpro.empty()) {
+            try {
+                fedpro_ = fedpro::open_door(options.fedpro, host_, port_);
+            } catch (...) {
+                stop();
+                throw;
+            }
+        }
     }
     ~BackgroundGateway() { stop(); }
     // Stops the loop and closes the gateway: its sockets (a Unix socket's file removed) and its recording.
     void stop() {
+        if (fedpro_) fedpro_->stop();  // its federates resign while the gateway still serves
+        fedpro_.reset();
         if (thread_.joinable()) {
             gateway_->stop();
             thread_.join();
@@ -49,9 +60,11 @@ public:
     const std::string& host() const { return host_; }
     std::uint16_t port() const { return port_; }
     bool running() const { return thread_.joinable(); }
+    std::uint16_t fedpro_port() const { return fedpro_ ? fedpro_->port() : 0; }
 
 private:
     std::unique_ptr<Gateway> gateway_;
+    std::unique_ptr<fedpro::Server> fedpro_;
     std::string host_;
     std::uint16_t port_ = 0;
     std::thread thread_;
@@ -146,7 +159,9 @@ PYBIND11_MODULE(_core, m) {
              "Stops serving and waits for the gateway's thread to end.")
         .def_property_readonly("host", &BackgroundGateway::host, "The address it listens on.")
         .def_property_readonly("port", &BackgroundGateway::port, "The TCP port it listens on (the one picked, for port 0).")
-        .def_property_readonly("running", &BackgroundGateway::running, "Whether its thread still serves.");
+        .def_property_readonly("running", &BackgroundGateway::running, "Whether its thread still serves.")
+        .def_property_readonly("fedpro_port", &BackgroundGateway::fedpro_port,
+                               "The Federate Protocol's TCP port (the one picked, for port 0); 0 without the door.");
 
     Ambassador rtia(m, "RTIAmbassadorBase",
                     "The federate's side of the connection to a gateway: the HLA 1.3 services under their PyHLA names; "

@@ -6,6 +6,7 @@
 #include <exception>
 #include <string>
 
+#include "fedpro/server.hpp"
 #include "rti/net/status_query.hpp"
 #include "rti/server/options.hpp"
 
@@ -161,11 +162,15 @@ int main(int argc, char** argv) {
         sigaction(SIGINT, &sa, nullptr);
         sigaction(SIGTERM, &sa, nullptr);
         std::signal(SIGPIPE, SIG_IGN);
-        std::printf("rtig listening on %s:%u%s\n", gateway.host().c_str(), static_cast<unsigned>(gateway.port()),
-                    options.unix_path.empty() ? "" : (" and unix:" + options.unix_path).c_str());
+        std::unique_ptr<hlacore::fedpro::Server> fedpro;
+        if (!options.fedpro.empty()) fedpro = hlacore::fedpro::open_door(options.fedpro, gateway.host(), gateway.port());
+        std::string also = options.unix_path.empty() ? "" : " and unix:" + options.unix_path;
+        if (fedpro) also += ", the Federate Protocol on " + fedpro->address();
+        std::printf("rtig listening on %s:%u%s\n", gateway.host().c_str(), static_cast<unsigned>(gateway.port()), also.c_str());
         std::fflush(stdout);
         gateway.run();
         g_gateway = nullptr;
+        if (fedpro) fedpro->stop();
         std::fprintf(stderr, "rtig: stopped\n");
         return 0;
     } catch (const std::exception& e) {

@@ -25,6 +25,7 @@
 #include "rti/client/client.hpp"
 #include "rti/client/guarded.hpp"
 #include "rti/wire/json_value.hpp"
+#include "rti1516e/text.hpp"
 
 // What the library knows of a handle: the friend each handle class names.
 #define HLACORE_HANDLE_FRIEND(Kind)                                                                   \
@@ -97,9 +98,6 @@ long long raw(E const& e) {
     return static_cast<long long>(v);
 }
 
-// Text across the API (std::wstring) and the core (UTF-8).
-std::string utf8(std::wstring const& text);
-std::wstring wide(std::string const& text);
 std::string bytes(api::VariableLengthData const& data);  // a tag
 
 // Translates the exception being handled into the IEEE 1516-2010 exception of the same meaning (the core's

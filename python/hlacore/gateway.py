@@ -61,11 +61,13 @@ class Gateway:
         spill_dir: Optional[str | os.PathLike[str]] = None,
         disk_budget: int = 1 << 30,
         time_semantics: str = "exact",
+        fedpro: Optional[str] = None,
     ) -> None:
         given = _options.given(_core.gateway_options(), locals())
         self._secret_file = secret_file
         self._tls_cert = os.fspath(tls_cert) if tls_cert is not None else None
         self._unix = os.fspath(unix) if unix is not None else None
+        self._fedpro = fedpro
         self._gateway = _core.BackgroundGateway(given)
 
     @property
@@ -88,6 +90,16 @@ class Gateway:
         """``"unix:PATH"`` when constructed with ``unix=PATH``, as :class:`hlacore.rti.RTIAmbassador` takes it;
         else None."""
         return f"unix:{self._unix}" if self._unix is not None else None
+
+    @property
+    def fedpro_address(self) -> Optional[str]:
+        """``"host:port"`` of the HLA 4 Federate Protocol's door when constructed with ``fedpro="HOST:PORT"``
+        (the port picked, for port 0), as :class:`hlacore.fedpro.RTIambassador` takes it; else None."""
+        port = int(self._gateway.fedpro_port)
+        if not port:
+            return None
+        host = self._fedpro.rpartition(":")[0] if self._fedpro and ":" in self._fedpro else ""
+        return f"{host or '127.0.0.1'}:{port}"
 
     @property
     def running(self) -> bool:

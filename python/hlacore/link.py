@@ -120,6 +120,7 @@ class Link:
         self._error: Optional[BaseException] = None
         self._server: Any = None
         self._open: set[Any] = set()  # the stream writers and datagram transports to close at the end
+        self._streams: set[tuple[asyncio.StreamWriter, asyncio.StreamWriter]] = set()  # the connections relayed now
         self._listen = listen
         self._thread = threading.Thread(target=self._run, name="hlacore-link", daemon=True)
         self._thread.start()
@@ -145,6 +146,18 @@ class Link:
         if self._dump:
             self._dump.close()
             self._dump = None
+
+    def cut(self) -> int:
+        """Break every TCP connection relayed now, as a failed link would: both ends see a reset and what the
+        link held in flight is lost. Later connections are relayed as before. Returns how many were cut."""
+        async def cut() -> int:
+            pairs = list(self._streams)
+            for pair in pairs:
+                for writer in pair:
+                    writer.transport.abort()
+            return len(pairs)
+
+        return asyncio.run_coroutine_threadsafe(cut(), self._loop).result(10)
 
     def __enter__(self) -> "Link":
         return self
@@ -205,10 +218,13 @@ class Link:
         for w in (client_writer, target_writer):
             w.get_extra_info("socket").setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
             self._open.add(w)
+        pair = (client_writer, target_writer)
+        self._streams.add(pair)
         try:
             await asyncio.gather(self._pump(client_reader, target_writer, "up"),
                                  self._pump(target_reader, client_writer, "down"), return_exceptions=True)
         finally:
+            self._streams.discard(pair)
             for w in (client_writer, target_writer):
                 self._open.discard(w)
                 w.close()

@@ -9,10 +9,13 @@ but rtig_main.cpp, ``rti/wire/``,   included (``rti/net/``)
 ``rti/record/``, ``rti/net/``)
 ``rti/server/``                     the shared parts and the FOM; never the federate side
 ``rti/client/``                     the shared parts and the FOM; never the gateway side
-``rti/rtig_main.cpp``               the gateway side, never the federate side
+``rti/rtig_main.cpp``               the gateway side, never the federate side (the Federate Protocol's door it
+                                    opens through ``fedpro/server.hpp``, which names no federate side)
 ``hla13/``                          the federate side, never the gateway side
 ``rti1516e/``                       the federate side, never the gateway side (IEEE 1516-2010's API)
 ``certi/``                          the federate side, never the gateway side (hlacore-rtia)
+``fedpro/``                         the federate side and the 1516-2010 API, never the gateway side (the HLA 4
+                                    Federate Protocol's door, whose sessions are 1516-2010 federates)
 ``bindings/``                       anything: the Python module runs a gateway in-process too
 ==================================  ==========================================================================
 
@@ -33,7 +36,7 @@ INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]+"([^"]+)"', re.M)
 
 SIDES = ("rti/server/", "rti/client/")
 SHARED_DIRS = ("rti/wire/", "rti/record/", "rti/net/")
-FRONT_ENDS = ("hla13", "rti1516e", "certi")  # the C++ front ends over the federate side, each a directory
+FRONT_ENDS = ("hla13", "rti1516e", "certi", "fedpro")  # the C++ front ends over the federate side, each a directory
 
 
 def layer_of(relative: str) -> str:
@@ -62,6 +65,7 @@ FORBIDDEN = {
     "hla13": (("rti/server/",), "the HLA 1.3 API runs over the federate side only"),
     "rti1516e": (("rti/server/",), "the IEEE 1516-2010 API runs over the federate side only"),
     "certi": (("rti/server/",), "hlacore-rtia runs over the federate side only"),
+    "fedpro": (("rti/server/",), "the Federate Protocol's sessions are federates: the federate side only"),
 }
 
 

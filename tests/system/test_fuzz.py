@@ -28,9 +28,10 @@ SEEDS = {
     "gateway": [FUZZ / "corpus" / "wire"],
     "datagram": [FUZZ / "corpus" / "wire"],
     "certi": [FUZZ / "corpus" / "certi"],
+    "fedpro": [FUZZ / "corpus" / "fedpro"],
 }
 OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"], "omt": [], "json": [], "gateway": [], "datagram": [],
-           "certi": []}
+           "certi": [], "fedpro": []}
 TARGETS = list(SEEDS)
 FAILURE = re.compile(r"ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|deadly signal|SUMMARY:")
 
@@ -49,7 +50,7 @@ def fuzzer(target: str) -> pathlib.Path:
 def seed_dirs(target: str) -> list[pathlib.Path]:
     """The committed seeds, plus for the wire targets a sample frame of every message, which
     scripts/fuzz.sh has wire_seeds write next to the fuzzers."""
-    if target in ("fed", "omt", "json", "certi"):
+    if target in ("fed", "omt", "json", "certi", "fedpro"):
         return SEEDS[target]
     return [*SEEDS[target], fuzzer(target).parent / "seeds-wire"]
 

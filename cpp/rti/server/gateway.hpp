@@ -96,6 +96,9 @@ struct GatewayOptions {
     // Non-empty: also listen on a Unix socket at this path, for federates on this host (rti/unix_socket.hpp);
     // its connections get neither TLS nor datagrams. The file is removed when the gateway ends.
     std::string unix_path;
+    // Non-empty, HOST:PORT: the HLA 4 Federate Protocol's door on this gateway (cpp/fedpro/server.hpp), opened by
+    // rtig and hlacore.Gateway, not by the Gateway class (the door is a federate side of its own).
+    std::string fedpro;
 };
 // The bounds of the options (rtig's arguments and hlacore.Gateway check them; both included). The smallest
 // max_datagram (or 0) leaves room for a header and a small message.

@@ -112,6 +112,10 @@ const Options<GatewayOptions>& gateway_options() {
          [](const O& o) { return std::to_string(o.busy_poll_us); },
          "before each wait for clients sleeps, poll for up to US µs without sleeping (0: off): a message that "
          "comes meanwhile costs no wake-up, at the price of a busy core (docs/performance.md, busy polling)"},
+        text_option<&O::fedpro>("--fedpro", "fedpro", "HOST:PORT",
+         "also serve the HLA 4 Federate Protocol (IEEE 1516.1-2025) on HOST:PORT (loopback only for now; its "
+         "default port is 15164): federates in any language join through protobuf calls and callbacks, and "
+         "resume after a dropped connection (docs/fedpro.md)"),
         {"--verbose", "verbose", nullptr, nullptr, false, [](O& o, Text t) { o.verbose = yes_or_no(t); },
          [](const O& o) { return std::string(o.verbose ? "true" : "false"); }, "log connections, joins and federations to stderr"},
     };
@@ -121,6 +125,8 @@ const Options<GatewayOptions>& gateway_options() {
 std::string gateway_options_conflict(const GatewayOptions& options, Given given) {
     if (options.tls_cert.empty() != options.tls_key.empty())
         return given == Given::Flag ? "--tls-cert and --tls-key go together" : "tls_cert and tls_key go together";
+    if (!options.fedpro.empty() && (!options.secret.empty() || !options.tls_cert.empty()))
+        return "the Federate Protocol's door does not pass the gateway's secret or TLS to its federates yet";
     return "";
 }
 

@@ -1,0 +1,19 @@
+// The HLA side of a Federate Protocol session: an IEEE 1516-2010 federate of hlacore's own (the RTIambassador of
+// cpp/rti1516e, connected to the gateway with HLA_IMMEDIATE callbacks) that makes each call the session's federate
+// sends (a CallRequest into a CallResponse: calls.cpp) and turns each callback into a CallbackRequest for it
+// (callbacks.cpp). Handles travel as their 1516-2010 encodings, times as the federation's time type encodes them.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "fedpro/session.hpp"
+
+namespace hlacore::fedpro {
+
+// `send_callback` gets each CallbackRequest's bytes, on the ambassador's callback thread.
+std::unique_ptr<Federate> make_federate(std::string const& gateway, std::function<void(std::string_view)> send_callback);
+
+}  // namespace hlacore::fedpro

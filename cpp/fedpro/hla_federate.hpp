@@ -1,0 +1,106 @@
+// The inside of fedpro/federate.hpp: the session's 1516-2010 federate and the conversions between the protocol's
+// messages and the C++ API's types. Not a public header.
+#pragma once
+
+#include <RTI/FederateAmbassador.h>
+#include <RTI/LogicalTimeFactory.h>
+#include <RTI/RTIambassador.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fedpro/proto/FederateAmbassador.pb.h"
+#include "fedpro/proto/RTIambassador.pb.h"
+#include "fedpro/proto/datatypes.pb.h"
+#include "fedpro/federate.hpp"
+#include "rti1516e/text.hpp"
+
+namespace hlacore::fedpro {
+
+namespace pb = ::rti1516_2025::fedpro;
+namespace api = ::rti1516e;
+using namespace ::rti1516e;  // RTI1516E_CALLBACKS names the API's types unqualified
+
+using rti1516e::utf8;
+using rti1516e::wide;
+
+inline api::VariableLengthData data(std::string const& bytes) { return api::VariableLengthData(bytes.data(), bytes.size()); }
+inline std::string bytes(api::VariableLengthData const& d) { return std::string(static_cast<const char*>(d.data()), d.size()); }
+
+class HlaFederate : public Federate, public api::FederateAmbassador {
+public:
+    HlaFederate(std::string gateway, std::function<void(std::string_view)> send_callback);
+    ~HlaFederate() override;
+
+    std::string call(std::string_view request) override;
+    void answered(std::string_view response) override;
+    void end() override;
+
+#define HLACORE_FEDPRO_DECLARE(ret, name, params, qualifier) ret name params qualifier override;
+    RTI1516E_CALLBACKS(HLACORE_FEDPRO_DECLARE)
+#undef HLACORE_FEDPRO_DECLARE
+
+private:
+    // calls.cpp: the call, onto the ambassador; throws the ambassador's exceptions.
+    void serve(pb::CallRequest const& request, pb::CallResponse& response);
+    void connect();
+    void joined(api::FederateHandle const& handle, pb::JoinResult* result);
+    std::vector<std::wstring> modules(pb::FomModuleSet const& set);
+    std::wstring module(pb::FomModule const& m);
+
+    // Handles, from their encodings.
+    api::FederateHandle federate(pb::FederateHandle const& h) const { return rti_->decodeFederateHandle(data(h.data())); }
+    api::ObjectClassHandle object_class(pb::ObjectClassHandle const& h) const { return rti_->decodeObjectClassHandle(data(h.data())); }
+    api::InteractionClassHandle interaction_class(pb::InteractionClassHandle const& h) const {
+        return rti_->decodeInteractionClassHandle(data(h.data()));
+    }
+    api::ObjectInstanceHandle object(pb::ObjectInstanceHandle const& h) const { return rti_->decodeObjectInstanceHandle(data(h.data())); }
+    api::AttributeHandle attribute(pb::AttributeHandle const& h) const { return rti_->decodeAttributeHandle(data(h.data())); }
+    api::ParameterHandle parameter(pb::ParameterHandle const& h) const { return rti_->decodeParameterHandle(data(h.data())); }
+    api::DimensionHandle dimension(pb::DimensionHandle const& h) const { return rti_->decodeDimensionHandle(data(h.data())); }
+    api::RegionHandle region(pb::RegionHandle const& h) const { return rti_->decodeRegionHandle(data(h.data())); }
+    api::MessageRetractionHandle retraction(pb::MessageRetractionHandle const& h) const {
+        return rti_->decodeMessageRetractionHandle(data(h.data()));
+    }
+    api::AttributeHandleSet attributes(pb::AttributeHandleSet const& s) const;
+    api::FederateHandleSet federates(pb::FederateHandleSet const& s) const;
+    api::DimensionHandleSet dimensions(pb::DimensionHandleSet const& s) const;
+    api::RegionHandleSet regions(pb::RegionHandleSet const& s) const;
+    api::AttributeHandleSetRegionHandleSetPairVector pairs(pb::AttributeSetRegionSetPairList const& l) const;
+    api::AttributeHandleValueMap values(pb::AttributeHandleValueMap const& m) const;
+    api::ParameterHandleValueMap values(pb::ParameterHandleValueMap const& m) const;
+    std::unique_ptr<api::LogicalTime> time(pb::LogicalTime const& t) const;
+    std::unique_ptr<api::LogicalTimeInterval> interval(pb::LogicalTimeInterval const& t) const;
+    api::TransportationType transportation(pb::TransportationTypeHandle const& h) const;
+    api::LogicalTimeFactory& factory() const;
+
+    // callbacks.cpp: a callback out, on the ambassador's thread.
+    void send(pb::CallbackRequest const& request);
+
+    std::string gateway_;
+    std::function<void(std::string_view)> send_callback_;
+    std::unique_ptr<api::RTIambassador> rti_;
+    std::unique_ptr<api::LogicalTimeFactory> factory_;
+    std::string modules_dir_;  // the FOM modules sent by content, as files the ambassador reads
+    bool joined_ = false;
+};
+
+// Handles and values out.
+template <class M, class H>
+void put(M* out, H const& h) {
+    out->set_data(bytes(h.encode()));
+}
+void put(pb::AttributeHandleSet* out, api::AttributeHandleSet const& s);
+void put(pb::FederateHandleSet* out, api::FederateHandleSet const& s);
+void put(pb::DimensionHandleSet* out, api::DimensionHandleSet const& s);
+void put(pb::AttributeHandleValueMap* out, api::AttributeHandleValueMap const& m);
+void put(pb::ParameterHandleValueMap* out, api::ParameterHandleValueMap const& m);
+void put(pb::LogicalTime* out, api::LogicalTime const& t);
+void put(pb::LogicalTimeInterval* out, api::LogicalTimeInterval const& t);
+void put(pb::TransportationTypeHandle* out, api::TransportationType type);
+inline pb::OrderType order(api::OrderType o) { return o == api::TIMESTAMP ? pb::TIMESTAMP : pb::RECEIVE; }
+inline api::OrderType order(pb::OrderType o) { return o == pb::TIMESTAMP ? api::TIMESTAMP : api::RECEIVE; }
+
+}  // namespace hlacore::fedpro

@@ -1,0 +1,231 @@
+#include "fedpro/server.hpp"
+
+#include <netdb.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <list>
+#include <map>
+#include <mutex>
+#include <random>
+#include <stdexcept>
+#include <thread>
+
+#include "fedpro/federate.hpp"
+
+namespace hlacore::fedpro {
+
+namespace {
+
+constexpr std::chrono::milliseconds kHandshakeIdle{10000};  // a connection that says nothing for this long is closed
+
+bool loopback(std::string const& host) {
+    return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
+}
+
+}  // namespace
+
+void parse_listen_address(std::string const& text, ServerOptions& options) {
+    const auto colon = text.rfind(':');
+    std::string host = colon == std::string::npos ? text : text.substr(0, colon);
+    if (!host.empty()) options.host = host;
+    if (colon == std::string::npos) return;
+    const std::string port = text.substr(colon + 1);
+    char* end = nullptr;
+    const long n = std::strtol(port.c_str(), &end, 10);
+    if (port.empty() || *end != '\0' || n < 0 || n > 65535)
+        throw std::invalid_argument("'" + text + "' is not HOST:PORT (the Federate Protocol's address)");
+    options.port = std::uint16_t(n);
+}
+
+std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway_host, std::uint16_t gateway_port) {
+    ServerOptions options;
+    parse_listen_address(listen, options);
+    const bool wildcard = gateway_host.empty() || gateway_host == "0.0.0.0" || gateway_host == "::";
+    options.gateway = (wildcard ? std::string("127.0.0.1") : gateway_host) + ":" + std::to_string(gateway_port);
+    return std::make_unique<Server>(options);
+}
+
+struct Server::Impl {
+    ServerOptions options;
+    int listen_fd = -1;
+    std::uint16_t port = 0;
+    std::atomic<bool> stopping{false};
+    std::thread acceptor, housekeeper;
+
+    std::mutex mutex;  // sessions, connections
+    std::map<std::uint64_t, std::shared_ptr<Session>> sessions;
+    struct Connection {
+        std::thread thread;
+        std::atomic<bool> done{false};
+    };
+    std::list<Connection> connections;
+    std::mt19937_64 ids{std::random_device{}()};
+
+    void accept_loop() {
+        while (!stopping) {
+            pollfd p{listen_fd, POLLIN, 0};
+            if (::poll(&p, 1, 200) <= 0) continue;
+            const int fd = ::accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC);
+            if (fd < 0) continue;
+            std::lock_guard<std::mutex> lock(mutex);
+            Connection& c = connections.emplace_back();
+            c.thread = std::thread([this, fd, &c] {
+                handle(fd);
+                c.done = true;
+            });
+        }
+    }
+
+    // A new connection: a new session, or a resume of one.
+    void handle(int fd) {
+        Header h;
+        std::string payload;
+        std::shared_ptr<Session> session;
+        try {
+            if (!read_message(fd, options.limits.max_message, stopping, h, payload, kHandshakeIdle)) {
+                ::close(fd);
+                return;
+            }
+            if (h.type == MessageType::NewSession) {
+                session = open(fd, payload_u32(payload, 0));
+            } else if (h.type == MessageType::ResumeRequest) {
+                session = find(h.session);
+                if (session && !session->resume(fd, payload_u32(payload, 0), payload_u32(payload, 1))) session.reset();
+                if (!session) {
+                    write_all(fd, SessionState(h.session).first_frame(MessageType::ResumeStatus, u32s({kInvalidSession, kNoSequence})),
+                              std::chrono::milliseconds(1000));
+                }
+            } else {
+                throw BadMessage(std::string("a ") + name(h.type) + " before a session");
+            }
+        } catch (BadMessage const& e) {
+            std::fprintf(stderr, "fedpro: a connection closed: %s\n", e.what());
+        } catch (std::exception const& e) {
+            std::fprintf(stderr, "fedpro: a connection closed: %s\n", e.what());
+        }
+        if (session)
+            session->serve(fd);
+        else
+            ::close(fd);
+    }
+
+    std::shared_ptr<Session> open(int fd, std::uint32_t version) {
+        std::uint64_t id = 0;
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            while (id == 0 || sessions.count(id)) id = ids();
+        }
+        SessionState status_of(id);
+        if (version != kProtocolVersion) {
+            write_all(fd, SessionState(0).first_frame(MessageType::NewSessionStatus, u32s({kUnsupportedVersion})),
+                      std::chrono::milliseconds(1000));
+            return nullptr;
+        }
+        auto session = std::make_shared<Session>(id, options.limits);
+        Session* raw = session.get();
+        session->set_federate(make_federate(options.gateway, [raw](std::string_view callback) { raw->send_callback(callback); }));
+        if (!write_all(fd, status_of.first_frame(MessageType::NewSessionStatus, u32s({kSessionOk})), std::chrono::milliseconds(1000)))
+            return nullptr;
+        std::lock_guard<std::mutex> lock(mutex);
+        sessions[id] = session;
+        return session;
+    }
+
+    std::shared_ptr<Session> find(std::uint64_t id) {
+        std::lock_guard<std::mutex> lock(mutex);
+        auto it = sessions.find(id);
+        return it == sessions.end() ? nullptr : it->second;
+    }
+
+    // Ends the sessions dropped for too long, joins the connections' finished threads.
+    void housekeeping_loop() {
+        while (!stopping) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+            const auto now = std::chrono::steady_clock::now();
+            std::vector<std::shared_ptr<Session>> expired;
+            std::list<Connection> finished;
+            {
+                std::lock_guard<std::mutex> lock(mutex);
+                for (auto it = sessions.begin(); it != sessions.end();) {
+                    if (it->second->expired(now)) {
+                        expired.push_back(it->second);
+                        it = sessions.erase(it);
+                    } else {
+                        ++it;
+                    }
+                }
+                for (auto it = connections.begin(); it != connections.end();) {
+                    auto here = it++;
+                    if (here->done) finished.splice(finished.end(), connections, here);
+                }
+            }
+            for (auto& s : expired) {
+                if (!s->ended())
+                    std::fprintf(stderr, "fedpro: session %llu not resumed in time: its federate resigns\n",
+                                 (unsigned long long)s->id());
+                s->end(false);
+            }
+            for (auto& c : finished) c.thread.join();
+        }
+    }
+};
+
+Server::Server(ServerOptions options) : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    m.options = std::move(options);
+    if (!loopback(m.options.host))
+        throw std::invalid_argument("the Federate Protocol listens on loopback only for now (" + m.options.host +
+                                    " asked): federates beyond this host need credentials, which are not checked yet");
+    if (m.options.gateway.empty()) throw std::invalid_argument("the Federate Protocol's server needs the gateway's address");
+    addrinfo hints{};
+    hints.ai_family = AF_UNSPEC;
+    hints.ai_socktype = SOCK_STREAM;
+    hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
+    addrinfo* found = nullptr;
+    const std::string port = std::to_string(m.options.port);
+    if (int rc = getaddrinfo(m.options.host.c_str(), port.c_str(), &hints, &found); rc != 0)
+        throw std::runtime_error("cannot resolve " + m.options.host + ": " + gai_strerror(rc));
+    std::unique_ptr<addrinfo, decltype(&freeaddrinfo)> guard(found, freeaddrinfo);
+    m.listen_fd = ::socket(found->ai_family, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    int one = 1;
+    ::setsockopt(m.listen_fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+    if (m.listen_fd < 0 || ::bind(m.listen_fd, found->ai_addr, found->ai_addrlen) < 0 || ::listen(m.listen_fd, 64) < 0) {
+        if (m.listen_fd >= 0) ::close(m.listen_fd);
+        throw std::runtime_error("the Federate Protocol cannot listen on " + m.options.host + ":" + port);
+    }
+    sockaddr_storage bound{};
+    socklen_t len = sizeof bound;
+    ::getsockname(m.listen_fd, reinterpret_cast<sockaddr*>(&bound), &len);
+    m.port = bound.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&bound)->sin6_port)
+                                         : ntohs(reinterpret_cast<sockaddr_in*>(&bound)->sin_port);
+    m.acceptor = std::thread([&m] { m.accept_loop(); });
+    m.housekeeper = std::thread([&m] { m.housekeeping_loop(); });
+}
+
+Server::~Server() { stop(); }
+
+std::uint16_t Server::port() const { return impl_->port; }
+std::string Server::address() const { return impl_->options.host + ":" + std::to_string(impl_->port); }
+
+void Server::stop() {
+    Impl& m = *impl_;
+    if (m.stopping.exchange(true)) return;
+    if (m.acceptor.joinable()) m.acceptor.join();
+    if (m.housekeeper.joinable()) m.housekeeper.join();
+    std::map<std::uint64_t, std::shared_ptr<Session>> sessions;
+    {
+        std::lock_guard<std::mutex> lock(m.mutex);
+        sessions.swap(m.sessions);
+    }
+    for (auto& [id, s] : sessions) s->end(true);
+    for (auto& c : m.connections) c.thread.join();  // each sees `stopping` or its session's end
+    m.connections.clear();
+    ::close(m.listen_fd);
+}
+
+}  // namespace hlacore::fedpro

@@ -49,7 +49,8 @@ install_hlacore() {
 # The headers and link libraries of the C++ core's system libraries: OpenSSL (Debian's libssl-dev):
 # libcrypto for the shared secret's HMAC (cpp/rti/auth.cpp), libssl for the optional TLS (cpp/rti/tls.cpp);
 # zlib (zlib1g-dev) for the recordings' CRC (cpp/rti/record/mcap.cpp); expat (libexpat1-dev) for the XML of
-# FOM modules (cpp/fed_parser/omt.cpp).
+# FOM modules (cpp/fed_parser/omt.cpp); protobuf (libprotobuf-dev, protobuf-compiler) for the Federate
+# Protocol's messages (cpp/fedpro/proto), compiled by protoc into C++ and into hlacore.fedpro._proto.
 require_build_headers() {
     [ -e /usr/include/openssl/ssl.h ] \
         || debian_install "hlacore's C++ core compiles against OpenSSL (libcrypto for the shared secret, libssl for TLS)" libssl-dev
@@ -57,6 +58,9 @@ require_build_headers() {
         || debian_install "hlacore's C++ core computes the recordings' checksums with zlib" zlib1g-dev
     [ -e /usr/include/expat.h ] \
         || debian_install "hlacore's C++ core reads FOM modules in OMT XML with expat" libexpat1-dev
+    { command -v protoc && [ -e /usr/include/google/protobuf/message.h ]; } >/dev/null 2>&1 \
+        || debian_install "the HLA 4 Federate Protocol's messages are protobuf: protoc generates their C++ and Python" \
+            libprotobuf-dev protobuf-compiler
 }
 
 # Builds TARGETS in the configured CMake build directory DIR, saying so (LABEL) and showing the compiler's

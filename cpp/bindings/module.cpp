@@ -39,7 +39,7 @@ public:
         thread_ = std::thread([this] { gateway_->run(); });
         if (!options.fedpro.empty()) {
             try {
-                fedpro_ = fedpro::open_door(options.fedpro, host_, port_);
+                fedpro_ = fedpro::open_door(options.fedpro, host_, port_, options.fedpro_resume_timeout_s);
             } catch (...) {
                 stop();
                 throw;

@@ -42,9 +42,11 @@ void parse_listen_address(std::string const& text, ServerOptions& options) {
     options.port = std::uint16_t(n);
 }
 
-std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway_host, std::uint16_t gateway_port) {
+std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway_host, std::uint16_t gateway_port,
+                                  double resume_timeout_s) {
     ServerOptions options;
     parse_listen_address(listen, options);
+    options.limits.resume_timeout = std::chrono::milliseconds(static_cast<long long>(resume_timeout_s * 1000));
     const bool wildcard = gateway_host.empty() || gateway_host == "0.0.0.0" || gateway_host == "::";
     options.gateway = (wildcard ? std::string("127.0.0.1") : gateway_host) + ":" + std::to_string(gateway_port);
     return std::make_unique<Server>(options);
@@ -95,11 +97,11 @@ struct Server::Impl {
                 session = open(fd, payload_u32(payload, 0));
             } else if (h.type == MessageType::ResumeRequest) {
                 session = find(h.session);
-                if (session && !session->resume(fd, payload_u32(payload, 0), payload_u32(payload, 1))) session.reset();
-                if (!session) {
+                if (!session)
                     write_all(fd, SessionState(h.session).first_frame(MessageType::ResumeStatus, u32s({kInvalidSession, kNoSequence})),
                               std::chrono::milliseconds(1000));
-                }
+                else if (!session->resume(fd, payload_u32(payload, 0), payload_u32(payload, 1)))  // it answered why
+                    session.reset();
             } else {
                 throw BadMessage(std::string("a ") + name(h.type) + " before a session");
             }

@@ -42,8 +42,9 @@ private:
 };
 
 // The door of a gateway listening at gateway_host:gateway_port (a wildcard address: its loopback), on `listen`
-// (HOST:PORT, as rtig --fedpro takes it).
-std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway_host, std::uint16_t gateway_port);
+// (HOST:PORT, as rtig --fedpro takes it), its sessions resumable for `resume_timeout_s` after a drop.
+std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway_host, std::uint16_t gateway_port,
+                                  double resume_timeout_s);
 
 // "HOST:PORT", ":PORT" or "HOST" (the default port) into `options`; std::invalid_argument saying why not.
 void parse_listen_address(std::string const& text, ServerOptions& options);

@@ -1,10 +1,13 @@
 // rtig: the hlacore gateway as a standalone server.
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
+#include <thread>
 
 #include "fedpro/server.hpp"
 #include "rti/net/status_query.hpp"
@@ -13,9 +16,14 @@
 namespace {
 
 hlacore::Gateway* g_gateway = nullptr;
+// With the Federate Protocol's door the gateway serves on a thread, and the main thread ends the door's sessions
+// (their federates resign) before it stops the gateway.
+volatile std::sig_atomic_t g_stop = 0;
+bool g_door = false;
 
 void on_signal(int) {
-    if (g_gateway) g_gateway->stop();
+    g_stop = 1;
+    if (g_gateway && !g_door) g_gateway->stop();
 }
 
 // rtig's own options, beside the gateway's: the policy beyond loopback and how --status connects.
@@ -163,14 +171,27 @@ int main(int argc, char** argv) {
         sigaction(SIGTERM, &sa, nullptr);
         std::signal(SIGPIPE, SIG_IGN);
         std::unique_ptr<hlacore::fedpro::Server> fedpro;
-        if (!options.fedpro.empty()) fedpro = hlacore::fedpro::open_door(options.fedpro, gateway.host(), gateway.port());
+        if (!options.fedpro.empty()) fedpro = hlacore::fedpro::open_door(options.fedpro, gateway.host(), gateway.port(),
+                                                                            options.fedpro_resume_timeout_s);
         std::string also = options.unix_path.empty() ? "" : " and unix:" + options.unix_path;
         if (fedpro) also += ", the Federate Protocol on " + fedpro->address();
         std::printf("rtig listening on %s:%u%s\n", gateway.host().c_str(), static_cast<unsigned>(gateway.port()), also.c_str());
         std::fflush(stdout);
-        gateway.run();
+        if (fedpro) {
+            g_door = true;
+            std::atomic<bool> served{false};
+            std::thread serving([&] {
+                gateway.run();
+                served = true;
+            });
+            while (!g_stop && !served) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            fedpro->stop();
+            gateway.stop();
+            serving.join();
+        } else {
+            gateway.run();
+        }
         g_gateway = nullptr;
-        if (fedpro) fedpro->stop();
         std::fprintf(stderr, "rtig: stopped\n");
         return 0;
     } catch (const std::exception& e) {

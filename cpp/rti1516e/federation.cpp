@@ -91,10 +91,15 @@ void Ambassador::connect(FederateAmbassador& federate, CallbackModel model, std:
         if (immediate_) {
             stop_ = false;
             immediate_thread_ = std::thread([this] {
-                while (!stop_) {
-                    if (client_->closed()) break;
-                    const auto status = client_->wait_for_callback(Client::Clock::now() + std::chrono::milliseconds(100));
-                    if (status == Client::WaitStatus::Ready) deliver_one();
+                try {
+                    while (!stop_) {
+                        if (client_->closed()) break;
+                        const auto status = client_->wait_for_callback(Client::Clock::now() + std::chrono::milliseconds(100));
+                        if (status == Client::WaitStatus::Ready) deliver_one();
+                    }
+                } catch (const RtiError& e) {  // the gateway is gone: the standard's callback says so, once
+                    std::lock_guard<std::recursive_mutex> lock(mu_);
+                    if (federate_) federate_->connectionLost(wide(e.what()));
                 }
             });
         }

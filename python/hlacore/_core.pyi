@@ -730,6 +730,11 @@ class BackgroundGateway:
         Stops serving and waits for the gateway's thread to end.
         """
     @property
+    def fedpro_port(self) -> int:
+        """
+        The Federate Protocol's TCP port (the one picked, for port 0); 0 without the door.
+        """
+    @property
     def host(self) -> str:
         """
         The address it listens on.

@@ -62,6 +62,7 @@ class Gateway:
         disk_budget: int = 1 << 30,
         time_semantics: str = "exact",
         fedpro: Optional[str] = None,
+        fedpro_resume_timeout: float = 60.0,
     ) -> None:
         given = _options.given(_core.gateway_options(), locals())
         self._secret_file = secret_file

@@ -159,13 +159,15 @@ class Rtig:
         except RuntimeError:
             self.child.close()
             raise
-        match = re.fullmatch(r"rtig listening on (\S+):(\d+)(?: and (unix:.+))?", line)
+        match = re.fullmatch(r"rtig listening on (\S+):(\d+)(?: and (unix:[^,]+))?(?:, the Federate Protocol on (\S+))?",
+                             line)
         if not match:
             self.child.close()
             raise RuntimeError(f"unexpected rtig readiness line {line!r}")
         self.host, self.port = match.group(1), int(match.group(2))
         self.address = f"{self.host}:{self.port}"
         self.unix_address: Optional[str] = match.group(3)  # with --unix PATH: "unix:PATH"
+        self.fedpro_address: Optional[str] = match.group(4)  # with --fedpro HOST:PORT: "host:port"
         self._final_log: Optional[str] = None
 
     @property

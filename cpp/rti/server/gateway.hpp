@@ -99,6 +99,7 @@ struct GatewayOptions {
     // Non-empty, HOST:PORT: the HLA 4 Federate Protocol's door on this gateway (cpp/fedpro/server.hpp), opened by
     // rtig and hlacore.Gateway, not by the Gateway class (the door is a federate side of its own).
     std::string fedpro;
+    double fedpro_resume_timeout_s = 60.0;  // a dropped Federate Protocol session not resumed within it ends
 };
 // The bounds of the options (rtig's arguments and hlacore.Gateway check them; both included). The smallest
 // max_datagram (or 0) leaves room for a header and a small message.

@@ -116,6 +116,11 @@ const Options<GatewayOptions>& gateway_options() {
          "also serve the HLA 4 Federate Protocol (IEEE 1516.1-2025) on HOST:PORT (loopback only for now; its "
          "default port is 15164): federates in any language join through protobuf calls and callbacks, and "
          "resume after a dropped connection (docs/fedpro.md)"),
+        {"--fedpro-resume-timeout", "fedpro_resume_timeout", nullptr, "S", false,
+         [](O& o, Text t) { o.fedpro_resume_timeout_s = number_above(t, 0, false, "seconds"); },
+         [](const O& o) { return text(o.fedpro_resume_timeout_s); },
+         "a Federate Protocol session whose connection dropped and is not resumed within S seconds ends: its "
+         "federate resigns (default 60)"},
         {"--verbose", "verbose", nullptr, nullptr, false, [](O& o, Text t) { o.verbose = yes_or_no(t); },
          [](const O& o) { return std::string(o.verbose ? "true" : "false"); }, "log connections, joins and federations to stderr"},
     };

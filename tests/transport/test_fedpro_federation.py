@@ -1,0 +1,183 @@
+"""Federates of the HLA 4 Federate Protocol (hlacore.fedpro, our own client) in one federation with hlacore's own
+1516-2010 and HLA 1.3 federates, through the sanitized rtig's door (rtig --fedpro): the federation created with
+FOM modules sent by content, updates and interactions both ways, a 1 000-step timestamped lockstep."""
+
+from __future__ import annotations
+
+import pathlib
+import struct
+import time
+from typing import Any, Callable, Iterator
+
+import pytest
+
+import hlacore.rti as rti13
+from hlacore import fedpro
+
+from support import running_rtig
+from support.rti1516e import VEHICLES, Federate
+
+
+@pytest.fixture
+def door(tmp_path: pathlib.Path) -> Iterator[Any]:
+    with running_rtig(tmp_path, "--fedpro", "127.0.0.1:0") as server:
+        yield server
+
+
+class Calls(fedpro.FederateAmbassador):
+    """Records every callback's message by name."""
+
+    def __init__(self) -> None:
+        self.calls: list[tuple[str, Any]] = []
+
+    def __getattr__(self, name: str) -> Callable[[Any], None]:
+        if name.startswith("_") or name not in fedpro.CALLBACKS:
+            raise AttributeError(name)
+        return lambda msg: self.calls.append((name, msg))
+
+    def named(self, name: str) -> list[Any]:
+        return [m for n, m in self.calls if n == name]
+
+
+def until(rtia: fedpro.RTIambassador, done: Callable[[], bool], seconds: float = 10.0) -> None:
+    deadline = time.monotonic() + seconds
+    while not done():
+        assert time.monotonic() < deadline, f"not done in {seconds} s"
+        rtia.evokeMultipleCallbacks(0.01, 0.1)
+
+
+def fedpro_federate(address: str, name: str, create: bool = False) -> tuple[fedpro.RTIambassador, Calls]:
+    amb = Calls()
+    rtia = fedpro.RTIambassador(address)
+    rtia.connect(amb)
+    if create:
+        rtia.createFederationExecutionWithModules(federationName="Road", fomModules=[VEHICLES])
+    joined = rtia.joinFederationExecution(federateName=name, federateType="fedpro", federationName="Road")
+    assert joined.logicalTimeImplementationName == "HLAfloat64Time" and joined.federateHandle.data
+    return rtia, amb
+
+
+def test_a_fedpro_federate_creates_joins_and_exchanges_with_hlacore_federates(door: Any) -> None:
+    rtia, amb = fedpro_federate(door.fedpro_address, "car", create=True)
+    other = Federate(door.address)
+    other.rtia.joinFederationExecution("truck", "1516e", "Road")
+    hla13 = rti13.RTIAmbassador(door.address)
+    hla13_amb = _Hla13Recorder()
+    hla13.joinFederationExecution("bus", "Road", hla13_amb)
+    try:
+        vehicle = rtia.getObjectClassHandle(objectClassName="Vehicle")
+        speed = rtia.getAttributeHandle(objectClass=vehicle, attributeName="speed")
+        command = rtia.getInteractionClassHandle(interactionClassName="Command")
+        verb = rtia.getParameterHandle(interactionClass=command, parameterName="verb")
+        # Handles are the 1516-2010 encodings: the same bytes the other federate's handles encode to.
+        assert vehicle.data == other.rtia.getObjectClassHandle("Vehicle").encode()
+
+        rtia.publishObjectClassAttributes(objectClass=vehicle, attributes=[speed])
+        rtia.publishInteractionClass(interactionClass=command)
+        rtia.subscribeInteractionClass(interactionClass=command)
+        other_vehicle, other_command = other.rtia.getObjectClassHandle("Vehicle"), other.rtia.getInteractionClassHandle("Command")
+        other.rtia.subscribeObjectClassAttributes(other_vehicle, [other.rtia.getAttributeHandle(other_vehicle, "speed")])
+        other.rtia.publishInteractionClass(other_command)
+        other.rtia.subscribeInteractionClass(other_command)
+        hla13_vehicle = hla13.getObjectClassHandle("Vehicle")
+        hla13.subscribeObjectClassAttributes(hla13_vehicle, [hla13.getAttributeHandle("speed", hla13_vehicle)])
+
+        rtia.reserveObjectInstanceName(objectInstanceName="car-1")
+        until(rtia, lambda: bool(amb.named("objectInstanceNameReservationSucceeded")))
+        obj = rtia.registerObjectInstance(objectClass=vehicle, objectInstanceName="car-1")
+        other.until(lambda: bool(other.amb.named("discoverObjectInstance")))
+        assert other.amb.named("discoverObjectInstance")[0][2] == "car-1"
+        rtia.updateAttributeValues(objectInstance=obj, attributeValues={speed.data: b"\x00\x2a"}, userSuppliedTag=b"go")
+        other.until(lambda: bool(other.amb.named("reflectAttributeValues")))
+        values = other.amb.named("reflectAttributeValues")[0][1]
+        assert list(values.values()) == [b"\x00\x2a"]
+        deadline = time.monotonic() + 10
+        while not hla13_amb.reflected and time.monotonic() < deadline:
+            hla13.tick(0.05, 0.1)
+        assert list(hla13_amb.reflected[0].values()) == [b"\x00\x2a"], "the HLA 1.3 federate sees it too"
+
+        # Interactions both ways.
+        rtia.sendInteraction(interactionClass=command, parameterValues={verb.data: b"stop"}, userSuppliedTag=b"")
+        other.until(lambda: bool(other.amb.named("receiveInteraction")))
+        other.rtia.sendInteraction(other_command, {other.rtia.getParameterHandle(other_command, "verb"): b"turn"}, b"t")
+        until(rtia, lambda: bool(amb.named("receiveInteraction")))
+        received = amb.named("receiveInteraction")[0]
+        assert fedpro.handle_values(received.parameterValues) == {verb.data: b"turn"} and received.userSuppliedTag == b"t"
+
+        # The core's exceptions arrive under the standard's names.
+        with pytest.raises(fedpro.rti_exception("NameNotFound")):
+            rtia.getObjectClassHandle(objectClassName="Boat")
+        with pytest.raises(fedpro.rti_exception("AttributeNotOwned")):
+            rtia.updateAttributeValues(objectInstance=obj,
+                                       attributeValues={rtia.getAttributeHandle(objectClass=vehicle, attributeName="position").data: b"x"},
+                                       userSuppliedTag=b"")
+    finally:
+        hla13.resignFederationExecution(rti13.ResignAction.DeleteObjectsAndReleaseAttributes)
+        other.close()
+        rtia.resignFederationExecution(resignAction="CANCEL_THEN_DELETE_THEN_DIVEST")
+        rtia.destroyFederationExecution(federationName="Road")
+        rtia.disconnect()
+        rtia.close()
+
+
+class _Hla13Recorder(rti13.FederateAmbassador):
+    def __init__(self) -> None:
+        self.reflected: list[dict[int, bytes]] = []
+
+    def discoverObjectInstance(self, *args: Any) -> None:
+        pass
+
+    def reflectAttributeValues(self, obj: int, attributes: dict[int, bytes], *args: Any) -> None:
+        self.reflected.append(attributes)
+
+
+STEPS = 1000
+
+
+@pytest.mark.slow
+def test_a_thousand_step_timestamped_lockstep_with_a_1516e_federate(door: Any) -> None:
+    rtia, amb = fedpro_federate(door.fedpro_address, "fedpro", create=True)
+    other = Federate(door.address)
+    other.rtia.joinFederationExecution("native", "1516e", "Road")
+    try:
+        vehicle = rtia.getObjectClassHandle(objectClassName="Vehicle")
+        position = rtia.getAttributeHandle(objectClass=vehicle, attributeName="position")
+        rtia.publishObjectClassAttributes(objectClass=vehicle, attributes=[position])
+        rtia.subscribeObjectClassAttributes(objectClass=vehicle, attributes=[position])
+        o_vehicle = other.rtia.getObjectClassHandle("Vehicle")
+        o_position = other.rtia.getAttributeHandle(o_vehicle, "position")
+        other.rtia.publishObjectClassAttributes(o_vehicle, [o_position])
+        other.rtia.subscribeObjectClassAttributes(o_vehicle, [o_position])
+        rtia.enableTimeRegulation(lookahead=fedpro.float64_interval(1.0))
+        rtia.enableTimeConstrained()
+        other.rtia.enableTimeRegulation(1.0)
+        other.rtia.enableTimeConstrained()
+        until(rtia, lambda: bool(amb.named("timeRegulationEnabled")) and bool(amb.named("timeConstrainedEnabled")))
+        other.until(lambda: bool(other.amb.named("timeRegulationEnabled")) and bool(other.amb.named("timeConstrainedEnabled")))
+        mine = rtia.registerObjectInstance(objectClass=vehicle)
+        theirs = other.rtia.registerObjectInstance(o_vehicle)
+        until(rtia, lambda: bool(amb.named("discoverObjectInstance")))
+        other.until(lambda: bool(other.amb.named("discoverObjectInstance")))
+
+        for step in range(1, STEPS + 1):
+            rtia.updateAttributeValues(objectInstance=mine, attributeValues={position.data: struct.pack(">I", step)},
+                                       userSuppliedTag=b"", time=fedpro.float64_time(float(step)))
+            other.rtia.updateAttributeValues(theirs, {o_position: struct.pack(">I", step)}, b"", float(step))
+            rtia.timeAdvanceRequest(time=fedpro.float64_time(float(step)))
+            other.rtia.timeAdvanceRequest(float(step))
+            until(rtia, lambda: len(amb.named("timeAdvanceGrant")) == step)
+            other.until(lambda: len(other.amb.named("timeAdvanceGrant")) == step)
+            assert fedpro.time_value(amb.named("timeAdvanceGrant")[-1].time) == step
+        reflected = amb.named("reflectAttributeValuesWithTime")
+        # Every update of the other federate, once, in order, each at its time.
+        assert [struct.unpack(">I", fedpro.handle_values(r.attributeValues)[position.data])[0] for r in reflected] == \
+            list(range(1, STEPS + 1))
+        assert [fedpro.time_value(r.time) for r in reflected] == [float(s) for s in range(1, STEPS + 1)]
+        theirs_seen = other.amb.named("reflectAttributeValues")
+        assert [struct.unpack(">I", list(args[1].values())[0])[0] for args in theirs_seen] == list(range(1, STEPS + 1))
+        assert fedpro.time_value(rtia.queryLogicalTime()) == STEPS
+    finally:
+        other.close()
+        rtia.resignFederationExecution(resignAction="CANCEL_THEN_DELETE_THEN_DIVEST")
+        rtia.destroyFederationExecution(federationName="Road")
+        rtia.close()

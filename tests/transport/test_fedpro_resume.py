@@ -1,0 +1,221 @@
+"""Federate Protocol sessions that survive, and the door's answers to bad input: a FedPro federate's connection cut
+mid-lockstep (the link emulator's cut: both ends reset, what was in flight lost) resumes with every update and
+grant delivered once; a session not resumed in time ends as a resigned federate; malformed or misplaced messages
+close their connection and nobody else notices."""
+
+from __future__ import annotations
+
+import pathlib
+import socket
+import struct
+import time
+from typing import Any, Callable, Iterator
+
+import pytest
+
+from hlacore import fedpro
+from hlacore.fedpro import MessageType, encode_message
+from hlacore.link import Link
+
+from support import running_rtig
+from support.rti1516e import VEHICLES, Federate
+
+
+@pytest.fixture
+def door(tmp_path: pathlib.Path) -> Iterator[Any]:
+    with running_rtig(tmp_path, "--fedpro", "127.0.0.1:0", "--fedpro-resume-timeout", "2") as server:
+        yield server
+
+
+class Calls(fedpro.FederateAmbassador):
+    def __init__(self) -> None:
+        self.calls: list[tuple[str, Any]] = []
+
+    def __getattr__(self, name: str) -> Callable[[Any], None]:
+        if name.startswith("_") or name not in fedpro.CALLBACKS:
+            raise AttributeError(name)
+        return lambda msg: self.calls.append((name, msg))
+
+    def named(self, name: str) -> list[Any]:
+        return [m for n, m in self.calls if n == name]
+
+
+def until(rtia: fedpro.RTIambassador, done: Callable[[], bool], seconds: float = 10.0) -> None:
+    deadline = time.monotonic() + seconds
+    while not done():
+        assert time.monotonic() < deadline, f"not done in {seconds} s"
+        rtia.evokeMultipleCallbacks(0.01, 0.1)
+
+
+def target(address: str) -> tuple[str, int]:
+    host, _, port = address.rpartition(":")
+    return host, int(port)
+
+
+STEPS = 600
+CUTS = (150, 300, 450)
+
+
+@pytest.mark.slow
+def test_a_lockstep_survives_connections_cut_under_it(door: Any) -> None:
+    with Link(("127.0.0.1", 0), target(door.fedpro_address)) as link:
+        amb = Calls()
+        rtia = fedpro.RTIambassador(link.address, resume_timeout=10.0)
+        rtia.connect(amb)
+        rtia.createFederationExecutionWithModules(federationName="Road", fomModules=[VEHICLES])
+        rtia.joinFederationExecution(federateName="remote", federateType="fedpro", federationName="Road")
+        other = Federate(door.address)
+        other.rtia.joinFederationExecution("native", "1516e", "Road")
+        try:
+            vehicle = rtia.getObjectClassHandle(objectClassName="Vehicle")
+            position = rtia.getAttributeHandle(objectClass=vehicle, attributeName="position")
+            rtia.publishObjectClassAttributes(objectClass=vehicle, attributes=[position])
+            rtia.subscribeObjectClassAttributes(objectClass=vehicle, attributes=[position])
+            o_vehicle = other.rtia.getObjectClassHandle("Vehicle")
+            o_position = other.rtia.getAttributeHandle(o_vehicle, "position")
+            other.rtia.publishObjectClassAttributes(o_vehicle, [o_position])
+            other.rtia.subscribeObjectClassAttributes(o_vehicle, [o_position])
+            rtia.enableTimeRegulation(lookahead=fedpro.float64_interval(1.0))
+            rtia.enableTimeConstrained()
+            other.rtia.enableTimeRegulation(1.0)
+            other.rtia.enableTimeConstrained()
+            until(rtia, lambda: bool(amb.named("timeConstrainedEnabled")))
+            other.until(lambda: bool(other.amb.named("timeConstrainedEnabled")))
+            mine = rtia.registerObjectInstance(objectClass=vehicle)
+            theirs = other.rtia.registerObjectInstance(o_vehicle)
+            until(rtia, lambda: bool(amb.named("discoverObjectInstance")))
+            other.until(lambda: bool(other.amb.named("discoverObjectInstance")))
+
+            for step in range(1, STEPS + 1):
+                rtia.updateAttributeValues(objectInstance=mine, attributeValues={position.data: struct.pack(">I", step)},
+                                           userSuppliedTag=b"", time=float(step))
+                other.rtia.updateAttributeValues(theirs, {o_position: struct.pack(">I", step)}, b"", float(step))
+                other.rtia.timeAdvanceRequest(float(step))
+                if step in CUTS:  # the request and the other federate's update in flight, or not yet sent
+                    assert link.cut() == 1
+                rtia.timeAdvanceRequest(time=float(step))
+                until(rtia, lambda: len(amb.named("timeAdvanceGrant")) >= step)
+                other.until(lambda: len(other.amb.named("timeAdvanceGrant")) == step)
+
+            assert rtia.session.resumes == len(CUTS)
+            grants = [fedpro.time_value(m.time) for m in amb.named("timeAdvanceGrant")]
+            assert grants == [float(s) for s in range(1, STEPS + 1)], "each grant once"
+            reflected = [struct.unpack(">I", fedpro.handle_values(m.attributeValues)[position.data])[0]
+                         for m in amb.named("reflectAttributeValuesWithTime")]
+            assert reflected == list(range(1, STEPS + 1)), "each of the other's updates once, in order"
+            theirs_seen = [struct.unpack(">I", list(args[1].values())[0])[0]
+                           for args in other.amb.named("reflectAttributeValues")]
+            assert theirs_seen == list(range(1, STEPS + 1)), "each of the FedPro federate's updates once"
+        finally:
+            other.close()
+            rtia.resignFederationExecution(resignAction="CANCEL_THEN_DELETE_THEN_DIVEST")
+            rtia.destroyFederationExecution(federationName="Road")
+            rtia.close()
+
+
+def test_a_session_not_resumed_in_time_ends_as_a_resigned_federate(door: Any) -> None:
+    other = Federate(door.address)
+    link = Link(("127.0.0.1", 0), target(door.fedpro_address))
+    rtia = fedpro.RTIambassador(link.address, resume_timeout=0.5)
+    try:
+        rtia.connect(Calls())
+        rtia.createFederationExecutionWithModules(federationName="Road", fomModules=[VEHICLES])
+        rtia.joinFederationExecution(federateName="gone", federateType="fedpro", federationName="Road")
+        other.rtia.joinFederationExecution("stays", "1516e", "Road")
+        vehicle = rtia.getObjectClassHandle(objectClassName="Vehicle")
+        rtia.publishObjectClassAttributes(objectClass=vehicle,
+                                          attributes=[rtia.getAttributeHandle(objectClass=vehicle, attributeName="speed")])
+        o_vehicle = other.rtia.getObjectClassHandle("Vehicle")
+        other.rtia.subscribeObjectClassAttributes(o_vehicle, [other.rtia.getAttributeHandle(o_vehicle, "speed")])
+        rtia.registerObjectInstance(objectClass=vehicle)
+        other.until(lambda: bool(other.amb.named("discoverObjectInstance")))
+        link.close()  # the link is gone for good: the client cannot resume
+        started = time.monotonic()
+        # After the door's resume timeout (2 s) its federate resigns, deleting its object.
+        other.until(lambda: bool(other.amb.named("removeObjectInstance")), seconds=15)
+        assert time.monotonic() - started >= 1.5
+        with pytest.raises(Exception):
+            other.rtia.getFederateHandle("gone")
+    finally:
+        rtia.close(timeout=1.0)
+        other.close()
+        link.close()
+
+
+def handshake(address: str) -> tuple[socket.socket, int]:
+    sock = socket.create_connection(target(address), timeout=5)
+    sock.sendall(encode_message(MessageType.NEW_SESSION, 0, 0, 0x80000000, struct.pack(">I", 1)))
+    header = fedpro.decode_header(recv_exact(sock, 24))
+    assert header.type == MessageType.NEW_SESSION_STATUS
+    assert recv_exact(sock, header.size - 24) == struct.pack(">I", 0)
+    return sock, header.session_id
+
+
+def recv_exact(sock: socket.socket, n: int) -> bytes:
+    data = b""
+    while len(data) < n:
+        chunk = sock.recv(n - len(data))
+        if not chunk:
+            break
+        data += chunk
+    return data
+
+
+def closed(sock: socket.socket) -> bool:
+    """Whether the peer closed the connection (within 5 s)."""
+    sock.settimeout(5)
+    try:
+        while sock.recv(4096):
+            pass
+        return True
+    except ConnectionResetError:
+        return True
+    except socket.timeout:
+        return False
+
+
+BAD_FIRST = [
+    ("a size under the header's", struct.pack(">IIQII", 20, 1, 0, 0, 20)),
+    ("an unknown type", struct.pack(">IIQII", 24, 1, 0, 0, 99)),
+    ("a call before any session", encode_message(MessageType.HLA_CALL_REQUEST, 1, 0, 0, b"")),
+    ("a size over the limit", struct.pack(">IIQII", 0x7FFFFFFF, 1, 0, 0, 20)),
+]
+
+
+@pytest.mark.parametrize("what, message", BAD_FIRST, ids=[what for what, _ in BAD_FIRST])
+def test_bad_first_messages_close_their_connection_only(door: Any, what: str, message: bytes) -> None:
+    bystander = fedpro.RTIambassador(door.fedpro_address)
+    try:
+        bystander.connect(Calls())
+        sock = socket.create_connection(target(door.fedpro_address), timeout=5)
+        sock.sendall(message)
+        assert closed(sock), what
+        sock.close()
+        # The door still serves the session that was there, and new ones.
+        assert bystander.listFederationExecutions() is None
+        fedpro.RTIambassador(door.fedpro_address).close()
+    finally:
+        bystander.close()
+
+
+def test_bad_messages_in_a_session_end_it(door: Any) -> None:
+    sock, session = handshake(door.fedpro_address)
+    # A call that does not parse as a CallRequest is answered with RTIinternalError ...
+    sock.sendall(encode_message(MessageType.HLA_CALL_REQUEST, 1, session, 0, b"\xff\xff\xff"))
+    header = fedpro.decode_header(recv_exact(sock, 24))
+    payload = recv_exact(sock, header.size - 24)
+    assert header.type == MessageType.HLA_CALL_RESPONSE and payload[:4] == struct.pack(">I", 1)
+    from hlacore.fedpro._proto import RTIambassador_pb2
+    response = RTIambassador_pb2.CallResponse.FromString(payload[4:])
+    assert response.exceptionData.exceptionName == "RTIinternalError"
+    # ... a message of another session ends the session.
+    sock.sendall(encode_message(MessageType.HEARTBEAT, 2, session + 1, 1))
+    assert closed(sock)
+    sock.close()
+    # A resume of it now is refused: the session is gone.
+    resume = socket.create_connection(target(door.fedpro_address), timeout=5)
+    resume.sendall(encode_message(MessageType.RESUME_REQUEST, 0, session, 1, struct.pack(">II", 1, 1)))
+    header = fedpro.decode_header(recv_exact(resume, 24))
+    assert header.type == MessageType.RESUME_STATUS
+    assert struct.unpack(">I", recv_exact(resume, header.size - 24)[:4])[0] == 1  # invalid session
+    resume.close()

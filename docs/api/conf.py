@@ -24,6 +24,7 @@ nitpick_ignore = [
     ("py:class", "collections.abc.Mapping"),
     ("py:class", "collections.abc.Sequence"),
     ("py:class", "os.PathLike"),
+    ("py:class", "socket.socket"),
 ]
 
 # pybind11 puts a method's signature in the first line of its docstring; autodoc reads it from there.

@@ -2,15 +2,15 @@
 
 A federate talks to an RTI over TCP with protobuf-encoded calls and callbacks (the messages of the standard's
 ``datatypes.proto``, ``RTIambassador.proto`` and ``FederateAmbassador.proto``, generated into
-:mod:`hlacore.fedpro._proto`). Nothing here uses hlacore's native module; the ``protobuf`` package is needed.
+``hlacore.fedpro._proto``). Nothing here uses hlacore's native module; the ``protobuf`` package is needed.
 
 - :class:`RTIambassador` — the HLA services by name (``rtia.joinFederationExecution(federateName=...,
   federateType=..., federationName=...)``), their results and :class:`RTIexception`\\ s; callbacks evoked
   (:meth:`RTIambassador.evokeCallback`, :meth:`RTIambassador.evokeMultipleCallbacks`) to a
   :class:`FederateAmbassador`'s methods named after them.
-- :mod:`hlacore.fedpro.messages` — protobuf messages from plain values: :func:`float64_time`,
-  :func:`time_value`, :func:`fom_module`, :func:`handle_values`, ...
-- :class:`Session` (:mod:`hlacore.fedpro.session`) — the session layer: the 24-byte header, the handshake,
+- :mod:`hlacore.fedpro.messages` — protobuf messages from plain values: :func:`~hlacore.fedpro.messages.float64_time`,
+  :func:`~hlacore.fedpro.messages.time_value`, :func:`~hlacore.fedpro.messages.fom_module`, :func:`~hlacore.fedpro.messages.handle_values`, ...
+- :class:`~hlacore.fedpro.session.Session` (:mod:`hlacore.fedpro.session`) — the session layer: the 24-byte header, the handshake,
   calls matched to responses, the callback queue, heartbeats, termination and the resume after a dropped
   connection.
 """

@@ -111,7 +111,7 @@ def rti_exception(name: str) -> Type[RTIexception]:
 
 class FederateAmbassador:
     """The federate's side of the callbacks: subclass it and define a method for each callback the federate
-    takes, named as the ``CallbackRequest`` member (:data:`CALLBACKS`) and taking its protobuf message::
+    takes, named as the ``CallbackRequest`` member (``CALLBACKS``) and taking its protobuf message::
 
         class Ambassador(FederateAmbassador):
             def reflectAttributeValues(self, msg):

@@ -28,6 +28,9 @@ messages per second (rates), keyed as the bench tests record them:
     monitor.grant.2.off / .on               grant.rtig.2 through an rtig without / with hlacore.monitor watching
     spill.throughput.1.off / .on            1 KiB updates per second to a subscriber stopped during a burst of
                                             20 000 and catching up: from memory / spilled to disk
+    fedpro.grant.2.off / .on                grant.rtig.2 with the measuring federate on hlacore.rti / on
+                                            hlacore.fedpro over the HLA 4 Federate Protocol (rtig --fedpro), alternating
+    fedpro.update.ro.8.off / .on            update.ro.8 the same way
     busy.KEY                                KEY (grant.pure.2, grant.rtig.2, update.ro.8, update.tso.8) with
                                             every process busy polling (rtig --busy-poll, $HLACORE_BUSY_POLL_US);
                                             busy.grant.batched.2, busy.update.tso-batched.8: grant.rtig.2 and
@@ -214,13 +217,20 @@ class Report:
                          _present(watched)))
         spilled = [self._cost_row("a stopped subscriber catching up on 20 000 updates of 1 KiB", "spill.throughput.1",
                                   "throughput.floor", "its backlog spilled to disk (a 1 MiB budget)", target=None)]
+        door = [self._cost_row("lockstep of 2 federates with updates", "fedpro.grant.2", "grant.floor",
+                               "the Federate Protocol (hlacore.fedpro)", target=None),
+                self._cost_row("update ping-pong, 8 B, receive order", "fedpro.update.ro.8", "update.floor",
+                               "the Federate Protocol (hlacore.fedpro)", target=None, floor_size=".8")]
+        sections.append(("The HLA 4 Federate Protocol: the measuring federate on hlacore.rti against hlacore.fedpro "
+                         "(pure Python) through rtig --fedpro, the peers the same, alternating rounds", _present(door)))
         sections.append(("Spilling: the backlog of a stopped subscriber in memory against spilled to disk "
                          "(rtig --client-budget 1048576), alternating rounds", _present(spilled)))
         return sections
 
-    def _cost_row(self, figure: str, key: str, floor: str, what: str, target: Optional[float] = 1.10) -> Optional[Row]:
+    def _cost_row(self, figure: str, key: str, floor: str, what: str, target: Optional[float] = 1.10,
+                  floor_size: str = "") -> Optional[Row]:
         """`key`.off against `key`.on: the cost of `what` (recording, monitoring) on a figure, against `target`
-        (None: none, the cost is the figure)."""
+        (None: none, the cost is the figure); `floor_size` ends the floors' keys (".8": update.floor.py.8)."""
         off, on = self.median(f"{key}.off"), self.median(f"{key}.on")
         if off is None or on is None:
             return None
@@ -228,7 +238,7 @@ class Report:
         cost = off / on if rate else on / off  # > 1: the run with `what` is slower
         show = _rate if rate else _us
         return Row(f"{figure}: without / with {what}", f"{show(off)} / {show(on)}", "",
-                   self._ratio(f"{key}.on", f"{floor}.py"), self._ratio(f"{key}.on", f"{floor}.cpp"),
+                   self._ratio(f"{key}.on", f"{floor}.py{floor_size}"), self._ratio(f"{key}.on", f"{floor}.cpp{floor_size}"),
                    f"{cost:.2f}× the time of the run without"
                    + (f": {'met' if cost <= target else 'missed'}" if target is not None else ""))
 
@@ -510,6 +520,7 @@ def expected_keys() -> list[str]:
     keys += [f"record.{figure}.{side}" for figure in ("grant.2", "throughput.1") for side in ("off", "on")]
     keys += [f"monitor.grant.2.{side}" for side in ("off", "on")]
     keys += [f"spill.throughput.1.{side}" for side in ("off", "on")]
+    keys += [f"fedpro.{figure}.{side}" for figure in ("grant.2", "update.ro.8") for side in ("off", "on")]
     keys += [f"large.{kind}{size}" for size in LARGE_SIZES for kind in ("", "floor.py.", "floor.cpp.", "floor.relay.")]
     keys += ["cpu.32.rtig", "cpu.32.federate"]
     keys += [f"busy.{key}" for key in ("grant.pure.2", "grant.rtig.2", "grant.batched.2", "grant.cpp.2", "update.ro.8",

@@ -7,7 +7,7 @@ same client library and rtig without Python."""
 
 from __future__ import annotations
 
-from typing import Iterator
+from typing import Iterator, Optional
 
 import pytest
 
@@ -63,11 +63,11 @@ def test_cpp_program_busy(report: Report, monkeypatch: pytest.MonkeyPatch, key: 
     report.add(key, [ns / 1e9 for ns in samples])
 
 
-def run_ping_pong(measure, address: str, order: str, key: str) -> None:
+def run_ping_pong(measure, address: str, order: str, key: str, rounds: Optional[int] = None, extend: bool = False) -> None:
     """The 8 B update ping-pong of test_update.py through the gateway at `address`, timed under `key`."""
     pingpong = PingPong(address, order, 8)
     try:
-        measure(key, pingpong.round_trip, UPDATE_ROUNDS[8])
+        measure(key, pingpong.round_trip, rounds or UPDATE_ROUNDS[8], extend=extend)
         pingpong.finish()
     finally:
         pingpong.close()

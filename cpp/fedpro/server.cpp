@@ -2,6 +2,7 @@
 
 #include <netdb.h>
 #include <netinet/in.h>
+#include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -74,6 +75,14 @@ struct Server::Impl {
             if (::poll(&p, 1, 200) <= 0) continue;
             const int fd = ::accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC);
             if (fd < 0) continue;
+            // Each message at once (a call's response is small and awaited); a peer gone without a word is found
+            // by keepalive while the connection is idle, and its session is then dropped, waiting for a resume.
+            int one = 1, idle = 10, interval = 5, count = 3;
+            ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+            ::setsockopt(fd, SOL_SOCKET, SO_KEEPALIVE, &one, sizeof one);
+            ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPIDLE, &idle, sizeof idle);
+            ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPINTVL, &interval, sizeof interval);
+            ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPCNT, &count, sizeof count);
             std::lock_guard<std::mutex> lock(mutex);
             Connection& c = connections.emplace_back();
             c.thread = std::thread([this, fd, &c] {

@@ -316,3 +316,19 @@ def test_save_restore_body(inprocess_gateway) -> None:
         bench.save()
         bench.restore()
         bench.restore()
+
+
+def test_the_federate_protocol_lockstep_and_ping_pong(tmp_path: pathlib.Path) -> None:
+    from bench.fedpro import FedproLockstep, FedproPingPong
+    from support import running_rtig
+
+    with running_rtig(tmp_path, "--fedpro", "127.0.0.1:0") as server:
+        with closing(FedproLockstep(server.address, server.fedpro_address, max_steps=10)) as federation:
+            for _ in range(3):
+                federation.step()
+            federation.finish()  # checks both federates got each other's update at every step
+        assert federation.time == 4
+        with closing(FedproPingPong(server.address, server.fedpro_address, 8)) as pingpong:
+            for _ in range(3):
+                pingpong.round_trip()
+            pingpong.finish()  # checks the echo count and the bytes echoed

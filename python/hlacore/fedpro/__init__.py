@@ -15,8 +15,8 @@ A federate talks to an RTI over TCP with protobuf-encoded calls and callbacks (t
   connection.
 """
 
-from .ambassador import (CALLBACKS, DEFAULT_ADDRESS, SERVICES, FederateAmbassador, RTIambassador, RTIexception,
-                         rti_exception)
+from .ambassador import (CALLBACKS, DEFAULT_ADDRESS, SERVICES, FederateAmbassador, NullFederateAmbassador,
+                         RTIambassador, RTIexception, rti_exception)
 from .messages import (float64_interval, float64_time, fom_module, handle_values, integer64_interval,
                        integer64_time, integer_time_value, time_value)
 from .session import (BadMessage, CallTimeout, Header, MessageType, Session, SessionError, SessionLost,
@@ -24,6 +24,7 @@ from .session import (BadMessage, CallTimeout, Header, MessageType, Session, Ses
 
 __all__ = [
     "BadMessage", "CALLBACKS", "CallTimeout", "DEFAULT_ADDRESS", "FederateAmbassador", "Header", "MessageType",
+    "NullFederateAmbassador",
     "RTIambassador", "RTIexception", "SERVICES", "Session", "SessionError", "SessionLost", "SessionRefused",
     "decode_header", "encode_header", "encode_message", "float64_interval", "float64_time", "fom_module",
     "handle_values", "integer64_interval", "integer64_time", "integer_time_value", "rti_exception",

@@ -127,6 +127,17 @@ class FederateAmbassador:
     """
 
 
+class NullFederateAmbassador(FederateAmbassador):
+    """A :class:`FederateAmbassador` that takes every callback it defines no method for and does nothing with
+    it (answered ``callbackSucceeded``), as 1516-2010's ``NullFederateAmbassador``: subclass it to handle only
+    the callbacks the federate cares about."""
+
+    def __getattr__(self, name: str) -> Callable[[Any], None]:
+        if name not in CALLBACKS:
+            raise AttributeError(name)
+        return lambda msg: None
+
+
 def _failure(name: str, details: str) -> bytes:
     response = _FED.CallbackResponse()
     response.callbackFailed.exceptionName = name

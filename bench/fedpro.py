@@ -94,7 +94,7 @@ class FedproLockstep:
             rtia = self.fed.rtia
             rtia.registerFederationSynchronizationPoint(synchronizationPointLabel="start", userSuppliedTag=b"")
             self.fed.until(lambda: "announceSynchronizationPoint" in self.fed.amb.seen)
-            rtia.synchronizationPointAchieved(synchronizationPointLabel="start")
+            rtia.synchronizationPointAchieved(synchronizationPointLabel="start", successfully=True)
             self.fed.until(lambda: "federationSynchronized" in self.fed.amb.seen)
         except BaseException:
             close_all(self.peers)

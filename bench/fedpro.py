@@ -63,7 +63,7 @@ class FedproFederate:
         while not done():
             if time.monotonic() > deadline:
                 raise TimeoutError(f"not done within {seconds} s")
-            self.rtia.evokeMultipleCallbacks(0.0, 1.0)
+            self.rtia.evokeCallback(1.0)  # wakes as soon as one comes
 
     def update(self, value: bytes, at: float | None = None) -> None:
         if at is None:

@@ -44,7 +44,7 @@ def until(rtia: fedpro.RTIambassador, done: Callable[[], bool], seconds: float =
     deadline = time.monotonic() + seconds
     while not done():
         assert time.monotonic() < deadline, f"not done in {seconds} s"
-        rtia.evokeMultipleCallbacks(0.01, 0.1)
+        rtia.evokeCallback(0.1)
 
 
 def target(address: str) -> tuple[str, int]:

@@ -134,7 +134,6 @@ class _Hla13Recorder(rti13.FederateAmbassador):
 STEPS = 1000
 
 
-@pytest.mark.slow
 def test_a_thousand_step_timestamped_lockstep_with_a_1516e_federate(door: Any) -> None:
     rtia, amb = fedpro_federate(door.fedpro_address, "fedpro", create=True)
     other = Federate(door.address)

@@ -56,7 +56,6 @@ STEPS = 600
 CUTS = (150, 300, 450)
 
 
-@pytest.mark.slow
 def test_a_lockstep_survives_connections_cut_under_it(door: Any) -> None:
     with Link(("127.0.0.1", 0), target(door.fedpro_address)) as link:
         amb = Calls()

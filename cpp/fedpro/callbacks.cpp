@@ -145,113 +145,79 @@ void HlaFederate::discoverObjectInstance(ObjectInstanceHandle object, ObjectClas
         put(m->mutable_producingfederate(), producer);
     });
 }
+namespace {
+
+// What a reflection, an interaction or a removal carries beside its target and values: the tag and who sent it;
+// and when timestamped, the time and the orders.
+template <class M, class Info>
+void sent(M* m, VariableLengthData const& tag, Info const& info) {
+    m->set_usersuppliedtag(bytes(tag));
+    put_producer(info, m->mutable_producingfederate());
+}
+template <class M>
+void timed(M* m, LogicalTime const& time, OrderType sent_order, OrderType received_order) {
+    put(m->mutable_time(), time);
+    m->set_sentordertype(order(sent_order));
+    m->set_receivedordertype(order(received_order));
+}
+
+}  // namespace
+
 void HlaFederate::reflectAttributeValues(ObjectInstanceHandle object, AttributeHandleValueMap const& values, VariableLengthData const& tag,
                                          OrderType, TransportationType type, SupplementalReflectInfo info) {
-    HLACORE_FEDPRO_CALLBACK(reflectattributevalues, {
-        put(m->mutable_objectinstance(), object);
-        put(m->mutable_attributevalues(), values);
-        m->set_usersuppliedtag(bytes(tag));
-        put(m->mutable_transportationtype(), type);
-        put_producer(info, m->mutable_producingfederate());
-    });
+    HLACORE_FEDPRO_CALLBACK(reflectattributevalues, put(m->mutable_objectinstance(), object);
+                            put(m->mutable_attributevalues(), values); put(m->mutable_transportationtype(), type);
+                            sent(m, tag, info));
 }
 void HlaFederate::reflectAttributeValues(ObjectInstanceHandle object, AttributeHandleValueMap const& values, VariableLengthData const& tag,
-                                         OrderType sent, TransportationType type, LogicalTime const& time, OrderType received,
-                                         SupplementalReflectInfo info) {
-    HLACORE_FEDPRO_CALLBACK(reflectattributevalueswithtime, {
-        put(m->mutable_objectinstance(), object);
-        put(m->mutable_attributevalues(), values);
-        m->set_usersuppliedtag(bytes(tag));
-        put(m->mutable_transportationtype(), type);
-        put_producer(info, m->mutable_producingfederate());
-        put(m->mutable_time(), time);
-        m->set_sentordertype(order(sent));
-        m->set_receivedordertype(order(received));
-    });
+                                         OrderType sent_order, TransportationType type, LogicalTime const& time,
+                                         OrderType received_order, SupplementalReflectInfo info) {
+    HLACORE_FEDPRO_CALLBACK(reflectattributevalueswithtime, put(m->mutable_objectinstance(), object);
+                            put(m->mutable_attributevalues(), values); put(m->mutable_transportationtype(), type);
+                            sent(m, tag, info); timed(m, time, sent_order, received_order));
 }
 void HlaFederate::reflectAttributeValues(ObjectInstanceHandle object, AttributeHandleValueMap const& values, VariableLengthData const& tag,
-                                         OrderType sent, TransportationType type, LogicalTime const& time, OrderType received,
-                                         MessageRetractionHandle handle, SupplementalReflectInfo info) {
-    HLACORE_FEDPRO_CALLBACK(reflectattributevalueswithtime, {
-        put(m->mutable_objectinstance(), object);
-        put(m->mutable_attributevalues(), values);
-        m->set_usersuppliedtag(bytes(tag));
-        put(m->mutable_transportationtype(), type);
-        put_producer(info, m->mutable_producingfederate());
-        put(m->mutable_time(), time);
-        m->set_sentordertype(order(sent));
-        m->set_receivedordertype(order(received));
-        put(m->mutable_optionalretraction(), handle);
-    });
+                                         OrderType sent_order, TransportationType type, LogicalTime const& time,
+                                         OrderType received_order, MessageRetractionHandle handle, SupplementalReflectInfo info) {
+    HLACORE_FEDPRO_CALLBACK(reflectattributevalueswithtime, put(m->mutable_objectinstance(), object);
+                            put(m->mutable_attributevalues(), values); put(m->mutable_transportationtype(), type);
+                            sent(m, tag, info); timed(m, time, sent_order, received_order);
+                            put(m->mutable_optionalretraction(), handle));
 }
 void HlaFederate::receiveInteraction(InteractionClassHandle cls, ParameterHandleValueMap const& values, VariableLengthData const& tag,
                                      OrderType, TransportationType type, SupplementalReceiveInfo info) {
-    HLACORE_FEDPRO_CALLBACK(receiveinteraction, {
-        put(m->mutable_interactionclass(), cls);
-        put(m->mutable_parametervalues(), values);
-        m->set_usersuppliedtag(bytes(tag));
-        put(m->mutable_transportationtype(), type);
-        put_producer(info, m->mutable_producingfederate());
-    });
+    HLACORE_FEDPRO_CALLBACK(receiveinteraction, put(m->mutable_interactionclass(), cls);
+                            put(m->mutable_parametervalues(), values); put(m->mutable_transportationtype(), type);
+                            sent(m, tag, info));
 }
 void HlaFederate::receiveInteraction(InteractionClassHandle cls, ParameterHandleValueMap const& values, VariableLengthData const& tag,
-                                     OrderType sent, TransportationType type, LogicalTime const& time, OrderType received,
-                                     SupplementalReceiveInfo info) {
-    HLACORE_FEDPRO_CALLBACK(receiveinteractionwithtime, {
-        put(m->mutable_interactionclass(), cls);
-        put(m->mutable_parametervalues(), values);
-        m->set_usersuppliedtag(bytes(tag));
-        put(m->mutable_transportationtype(), type);
-        put_producer(info, m->mutable_producingfederate());
-        put(m->mutable_time(), time);
-        m->set_sentordertype(order(sent));
-        m->set_receivedordertype(order(received));
-    });
+                                     OrderType sent_order, TransportationType type, LogicalTime const& time,
+                                     OrderType received_order, SupplementalReceiveInfo info) {
+    HLACORE_FEDPRO_CALLBACK(receiveinteractionwithtime, put(m->mutable_interactionclass(), cls);
+                            put(m->mutable_parametervalues(), values); put(m->mutable_transportationtype(), type);
+                            sent(m, tag, info); timed(m, time, sent_order, received_order));
 }
 void HlaFederate::receiveInteraction(InteractionClassHandle cls, ParameterHandleValueMap const& values, VariableLengthData const& tag,
-                                     OrderType sent, TransportationType type, LogicalTime const& time, OrderType received,
-                                     MessageRetractionHandle handle, SupplementalReceiveInfo info) {
-    HLACORE_FEDPRO_CALLBACK(receiveinteractionwithtime, {
-        put(m->mutable_interactionclass(), cls);
-        put(m->mutable_parametervalues(), values);
-        m->set_usersuppliedtag(bytes(tag));
-        put(m->mutable_transportationtype(), type);
-        put_producer(info, m->mutable_producingfederate());
-        put(m->mutable_time(), time);
-        m->set_sentordertype(order(sent));
-        m->set_receivedordertype(order(received));
-        put(m->mutable_optionalretraction(), handle);
-    });
+                                     OrderType sent_order, TransportationType type, LogicalTime const& time,
+                                     OrderType received_order, MessageRetractionHandle handle, SupplementalReceiveInfo info) {
+    HLACORE_FEDPRO_CALLBACK(receiveinteractionwithtime, put(m->mutable_interactionclass(), cls);
+                            put(m->mutable_parametervalues(), values); put(m->mutable_transportationtype(), type);
+                            sent(m, tag, info); timed(m, time, sent_order, received_order);
+                            put(m->mutable_optionalretraction(), handle));
 }
 void HlaFederate::removeObjectInstance(ObjectInstanceHandle object, VariableLengthData const& tag, OrderType, SupplementalRemoveInfo info) {
-    HLACORE_FEDPRO_CALLBACK(removeobjectinstance, {
-        put(m->mutable_objectinstance(), object);
-        m->set_usersuppliedtag(bytes(tag));
-        put_producer(info, m->mutable_producingfederate());
-    });
+    HLACORE_FEDPRO_CALLBACK(removeobjectinstance, put(m->mutable_objectinstance(), object); sent(m, tag, info));
 }
-void HlaFederate::removeObjectInstance(ObjectInstanceHandle object, VariableLengthData const& tag, OrderType sent, LogicalTime const& time,
-                                       OrderType received, SupplementalRemoveInfo info) {
-    HLACORE_FEDPRO_CALLBACK(removeobjectinstancewithtime, {
-        put(m->mutable_objectinstance(), object);
-        m->set_usersuppliedtag(bytes(tag));
-        put_producer(info, m->mutable_producingfederate());
-        put(m->mutable_time(), time);
-        m->set_sentordertype(order(sent));
-        m->set_receivedordertype(order(received));
-    });
+void HlaFederate::removeObjectInstance(ObjectInstanceHandle object, VariableLengthData const& tag, OrderType sent_order,
+                                       LogicalTime const& time, OrderType received_order, SupplementalRemoveInfo info) {
+    HLACORE_FEDPRO_CALLBACK(removeobjectinstancewithtime, put(m->mutable_objectinstance(), object); sent(m, tag, info);
+                            timed(m, time, sent_order, received_order));
 }
-void HlaFederate::removeObjectInstance(ObjectInstanceHandle object, VariableLengthData const& tag, OrderType sent, LogicalTime const& time,
-                                       OrderType received, MessageRetractionHandle handle, SupplementalRemoveInfo info) {
-    HLACORE_FEDPRO_CALLBACK(removeobjectinstancewithtime, {
-        put(m->mutable_objectinstance(), object);
-        m->set_usersuppliedtag(bytes(tag));
-        put_producer(info, m->mutable_producingfederate());
-        put(m->mutable_time(), time);
-        m->set_sentordertype(order(sent));
-        m->set_receivedordertype(order(received));
-        put(m->mutable_optionalretraction(), handle);
-    });
+void HlaFederate::removeObjectInstance(ObjectInstanceHandle object, VariableLengthData const& tag, OrderType sent_order,
+                                       LogicalTime const& time, OrderType received_order, MessageRetractionHandle handle,
+                                       SupplementalRemoveInfo info) {
+    HLACORE_FEDPRO_CALLBACK(removeobjectinstancewithtime, put(m->mutable_objectinstance(), object); sent(m, tag, info);
+                            timed(m, time, sent_order, received_order); put(m->mutable_optionalretraction(), handle));
 }
 
 // The callbacks of an object instance and a set of its attributes, alike in both APIs.

@@ -9,7 +9,7 @@ import pathlib
 import socket
 import struct
 import time
-from typing import Any, Callable, Iterator
+from typing import Any, Iterator
 
 import pytest
 
@@ -17,34 +17,15 @@ from hlacore import fedpro
 from hlacore.fedpro import MessageType, encode_message
 from hlacore.link import Link
 
-from support import running_rtig
+from support.fedpro import Calls, Pair, until
+from support.fedpro import door as fedpro_door
 from support.rti1516e import VEHICLES, Federate
 
 
 @pytest.fixture
 def door(tmp_path: pathlib.Path) -> Iterator[Any]:
-    with running_rtig(tmp_path, "--fedpro", "127.0.0.1:0", "--fedpro-resume-timeout", "2") as server:
+    with fedpro_door(tmp_path, "--fedpro-resume-timeout", "2") as server:
         yield server
-
-
-class Calls(fedpro.FederateAmbassador):
-    def __init__(self) -> None:
-        self.calls: list[tuple[str, Any]] = []
-
-    def __getattr__(self, name: str) -> Callable[[Any], None]:
-        if name.startswith("_") or name not in fedpro.CALLBACKS:
-            raise AttributeError(name)
-        return lambda msg: self.calls.append((name, msg))
-
-    def named(self, name: str) -> list[Any]:
-        return [m for n, m in self.calls if n == name]
-
-
-def until(rtia: fedpro.RTIambassador, done: Callable[[], bool], seconds: float = 10.0) -> None:
-    deadline = time.monotonic() + seconds
-    while not done():
-        assert time.monotonic() < deadline, f"not done in {seconds} s"
-        rtia.evokeCallback(0.1)
 
 
 def target(address: str) -> tuple[str, int]:
@@ -63,27 +44,10 @@ def test_a_lockstep_survives_connections_cut_under_it(door: Any) -> None:
         rtia.connect(amb)
         rtia.createFederationExecutionWithModules(federationName="Road", fomModules=[VEHICLES])
         rtia.joinFederationExecution(federateName="remote", federateType="fedpro", federationName="Road")
-        other = Federate(door.address)
-        other.rtia.joinFederationExecution("native", "1516e", "Road")
+        pair = Pair(rtia, amb, door.address)
+        other = pair.other
         try:
-            vehicle = rtia.getObjectClassHandle(objectClassName="Vehicle")
-            position = rtia.getAttributeHandle(objectClass=vehicle, attributeName="position")
-            rtia.publishObjectClassAttributes(objectClass=vehicle, attributes=[position])
-            rtia.subscribeObjectClassAttributes(objectClass=vehicle, attributes=[position])
-            o_vehicle = other.rtia.getObjectClassHandle("Vehicle")
-            o_position = other.rtia.getAttributeHandle(o_vehicle, "position")
-            other.rtia.publishObjectClassAttributes(o_vehicle, [o_position])
-            other.rtia.subscribeObjectClassAttributes(o_vehicle, [o_position])
-            rtia.enableTimeRegulation(lookahead=fedpro.float64_interval(1.0))
-            rtia.enableTimeConstrained()
-            other.rtia.enableTimeRegulation(1.0)
-            other.rtia.enableTimeConstrained()
-            until(rtia, lambda: bool(amb.named("timeConstrainedEnabled")))
-            other.until(lambda: bool(other.amb.named("timeConstrainedEnabled")))
-            mine = rtia.registerObjectInstance(objectClass=vehicle)
-            theirs = other.rtia.registerObjectInstance(o_vehicle)
-            until(rtia, lambda: bool(amb.named("discoverObjectInstance")))
-            other.until(lambda: bool(other.amb.named("discoverObjectInstance")))
+            position, o_position, mine, theirs = pair.position, pair.o_position, pair.mine, pair.theirs
 
             for step in range(1, STEPS + 1):
                 rtia.updateAttributeValues(objectInstance=mine, attributeValues={position.data: struct.pack(">I", step)},

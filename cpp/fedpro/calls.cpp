@@ -772,25 +772,45 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
         case C::kNormalizeInteractionClassHandleRequest:
         case C::kNormalizeObjectInstanceHandleRequest:
             not_served("normalizing class and instance handles", "an HLA 4 service the core does not have yet");
-        case C::kSetObjectClassRelevanceAdvisorySwitchRequest:
-            q.setobjectclassrelevanceadvisoryswitchrequest().value() ? rti_->enableObjectClassRelevanceAdvisorySwitch()
-                                                                     : rti_->disableObjectClassRelevanceAdvisorySwitch();
+        case C::kSetObjectClassRelevanceAdvisorySwitchRequest: {
+            const bool on = q.setobjectclassrelevanceadvisoryswitchrequest().value();
+            on ? rti_->enableObjectClassRelevanceAdvisorySwitch() : rti_->disableObjectClassRelevanceAdvisorySwitch();
+            class_relevance_ = on;
             r.mutable_setobjectclassrelevanceadvisoryswitchresponse();
             return;
-        case C::kSetAttributeRelevanceAdvisorySwitchRequest:
-            q.setattributerelevanceadvisoryswitchrequest().value() ? rti_->enableAttributeRelevanceAdvisorySwitch()
-                                                                   : rti_->disableAttributeRelevanceAdvisorySwitch();
+        }
+        case C::kSetAttributeRelevanceAdvisorySwitchRequest: {
+            const bool on = q.setattributerelevanceadvisoryswitchrequest().value();
+            on ? rti_->enableAttributeRelevanceAdvisorySwitch() : rti_->disableAttributeRelevanceAdvisorySwitch();
+            attribute_relevance_ = on;
             r.mutable_setattributerelevanceadvisoryswitchresponse();
             return;
-        case C::kSetAttributeScopeAdvisorySwitchRequest:
-            q.setattributescopeadvisoryswitchrequest().value() ? rti_->enableAttributeScopeAdvisorySwitch()
-                                                               : rti_->disableAttributeScopeAdvisorySwitch();
+        }
+        case C::kSetAttributeScopeAdvisorySwitchRequest: {
+            const bool on = q.setattributescopeadvisoryswitchrequest().value();
+            on ? rti_->enableAttributeScopeAdvisorySwitch() : rti_->disableAttributeScopeAdvisorySwitch();
+            attribute_scope_ = on;
             r.mutable_setattributescopeadvisoryswitchresponse();
             return;
-        case C::kSetInteractionRelevanceAdvisorySwitchRequest:
-            q.setinteractionrelevanceadvisoryswitchrequest().value() ? rti_->enableInteractionRelevanceAdvisorySwitch()
-                                                                     : rti_->disableInteractionRelevanceAdvisorySwitch();
+        }
+        case C::kSetInteractionRelevanceAdvisorySwitchRequest: {
+            const bool on = q.setinteractionrelevanceadvisoryswitchrequest().value();
+            on ? rti_->enableInteractionRelevanceAdvisorySwitch() : rti_->disableInteractionRelevanceAdvisorySwitch();
+            interaction_relevance_ = on;
             r.mutable_setinteractionrelevanceadvisoryswitchresponse();
+            return;
+        }
+        case C::kGetObjectClassRelevanceAdvisorySwitchRequest:
+            r.mutable_getobjectclassrelevanceadvisoryswitchresponse()->set_result(class_relevance_);
+            return;
+        case C::kGetAttributeRelevanceAdvisorySwitchRequest:
+            r.mutable_getattributerelevanceadvisoryswitchresponse()->set_result(attribute_relevance_);
+            return;
+        case C::kGetAttributeScopeAdvisorySwitchRequest:
+            r.mutable_getattributescopeadvisoryswitchresponse()->set_result(attribute_scope_);
+            return;
+        case C::kGetInteractionRelevanceAdvisorySwitchRequest:
+            r.mutable_getinteractionrelevanceadvisoryswitchresponse()->set_result(interaction_relevance_);
             return;
         case C::kGetAutomaticResignDirectiveRequest:
             r.mutable_getautomaticresigndirectiveresponse()->set_result(static_cast<pb::ResignAction>(rti_->getAutomaticResignDirective()));
@@ -800,10 +820,6 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
             r.mutable_setautomaticresigndirectiveresponse();
             return;
         case C::kListFederationExecutionMembersRequest:
-        case C::kGetObjectClassRelevanceAdvisorySwitchRequest:
-        case C::kGetAttributeRelevanceAdvisorySwitchRequest:
-        case C::kGetAttributeScopeAdvisorySwitchRequest:
-        case C::kGetInteractionRelevanceAdvisorySwitchRequest:
         case C::kGetConveyRegionDesignatorSetsSwitchRequest:
         case C::kSetConveyRegionDesignatorSetsSwitchRequest:
         case C::kGetServiceReportingSwitchRequest:

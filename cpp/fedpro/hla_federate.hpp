@@ -85,6 +85,9 @@ private:
     std::unique_ptr<api::LogicalTimeFactory> factory_;
     std::string modules_dir_;  // the FOM modules sent by content, as files the ambassador reads
     bool joined_ = false;
+    // The advisory switches as this federate set them, from the core's defaults: HLA 4's getters answer from them
+    // (Pitch's 1516-2010 adapter asks before each enable and disable).
+    bool class_relevance_ = true, attribute_relevance_ = false, attribute_scope_ = false, interaction_relevance_ = true;
 };
 
 // Handles and values out.

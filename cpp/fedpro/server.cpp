@@ -109,7 +109,7 @@ struct Server::Impl {
                 if (!session)
                     write_all(fd, SessionState(h.session).first_frame(MessageType::ResumeStatus, u32s({kInvalidSession, kNoSequence})),
                               std::chrono::milliseconds(1000));
-                else if (!session->resume(fd, payload_u32(payload, 0), payload_u32(payload, 1)))  // it answered why
+                else if (!session->resume(fd, payload_u32(payload, 0)))  // it answered why
                     session.reset();
             } else {
                 throw BadMessage(std::string("a ") + name(h.type) + " before a session");

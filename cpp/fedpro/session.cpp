@@ -147,16 +147,16 @@ void Session::drop(int fd) {
     ::close(fd);
 }
 
-bool Session::resume(int fd, std::uint32_t last_received_by_federate, std::uint32_t oldest_kept_by_federate) {
+bool Session::resume(int fd, std::uint32_t last_received_by_federate) {
     std::unique_lock<std::mutex> lock(mutex_);
     if (ended_) {
         write_all(fd, state_.first_frame(MessageType::ResumeStatus, u32s({kInvalidSession, kNoSequence})), kWriteStall);
         return false;
     }
-    SessionState::Resume r = state_.resume(last_received_by_federate, oldest_kept_by_federate);
+    SessionState::Resume r = state_.resume(last_received_by_federate);
     if (fd_ >= 0) ::shutdown(fd_, SHUT_RDWR);  // the old connection, when the federate saw the drop first
     fd_ = fd;
-    write_locked(state_.frame(MessageType::ResumeStatus, u32s({r.status, state_.last_received()})));
+    write_locked(state_.frame(MessageType::ResumeStatus, u32s({r.status, state_.last_hla_received()})));
     if (r.status != kResumeOk) {
         fd_ = -1;
         lock.unlock();

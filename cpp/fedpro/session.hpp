@@ -46,7 +46,7 @@ public:
     void serve(int fd);
     // A resume on connection `fd`: answers the federate, sends again what it lacks; false when refused (answered
     // too; `fd` is then the caller's to close).
-    bool resume(int fd, std::uint32_t last_received_by_federate, std::uint32_t oldest_kept_by_federate);
+    bool resume(int fd, std::uint32_t last_received_by_federate);
     // A callback for the federate (a CallbackRequest's bytes): numbered and kept, written when connected. Waits
     // while the kept messages are over budget, until the federate confirms some or the session ends.
     void send_callback(std::string_view request);

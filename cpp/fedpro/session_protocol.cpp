@@ -109,6 +109,7 @@ bool SessionState::receive(Header const& h) {
     if (valid_sequence(h.last_received)) release_through(h.last_received);
     if (!after(h.sequence, last_received_)) return false;
     last_received_ = h.sequence;
+    if (is_hla(h.type)) last_hla_received_ = h.sequence;
     return true;
 }
 
@@ -121,11 +122,11 @@ void SessionState::release_through(std::uint32_t n) {
     }
 }
 
-SessionState::Resume SessionState::resume(std::uint32_t last_received_by_federate, std::uint32_t oldest_kept_by_federate) {
+SessionState::Resume SessionState::resume(std::uint32_t last_received_by_federate) {
     Resume r;
-    // The federate cannot have lost what it said it had, nor kept less than what we have not received.
-    if (!valid_sequence(last_received_by_federate) || after(confirmed_, last_received_by_federate) ||
-        (valid_sequence(oldest_kept_by_federate) && after(oldest_kept_by_federate, next(last_received_)))) {
+    // The federate cannot have lost what it said it had. (The oldest message it still keeps, which it sends too,
+    // is not checked against what we lack: the numbers between may be control messages, which nobody keeps.)
+    if (!valid_sequence(last_received_by_federate) || after(confirmed_, last_received_by_federate)) {
         r.status = kNotEnoughBuffered;
         return r;
     }

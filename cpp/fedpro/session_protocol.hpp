@@ -4,10 +4,10 @@
 // them), so the decoder is fuzzed and unit-tested on its own (cpp/fuzz/fuzz_fedpro.cpp).
 //
 // The contract: each side numbers every message it sends after its first (new session, new session status)
-// from 1 in a 31-bit space that wraps, and tells in each header the last number it received. The RTI keeps
-// each HLA message it sent (call responses, callback requests) until the federate's header says it has it;
-// after a resume it sends again what the federate had not received, and ignores what the federate sends again
-// that it had.
+// from 1 in a 31-bit space that wraps, and tells in each header the last number it received. Each side keeps
+// the HLA messages it sent (the RTI: call responses, callback requests) until the other's header says it has
+// them; after a resume each sends again the HLA messages the other had not received (control messages are not
+// kept: the numbers of those lost leave gaps), and ignores what it had already received.
 #pragma once
 
 #include <cstdint>
@@ -87,14 +87,18 @@ public:
     // ignored. BadMessage for another session's id or a number outside the space. Lets go of what the header
     // says the federate has.
     bool receive(Header const& h);
-    // A resume from the federate: the status, then the kept messages it had not received.
+    // A resume from the federate: the status, then the kept messages it had not received. The federate is told
+    // last_hla_received() and sends again what it kept after it.
     struct Resume {
         std::uint32_t status = kResumeOk;
         std::vector<std::string> resend;
     };
-    Resume resume(std::uint32_t last_received_by_federate, std::uint32_t oldest_kept_by_federate);
+    Resume resume(std::uint32_t last_received_by_federate);
 
     std::uint32_t last_received() const { return last_received_; }
+    // The newest HLA message received (kNoSequence before any): what a resume reports, since a federate keeps
+    // only its HLA messages to send again (Pitch's client cannot rewind to a heartbeat's number).
+    std::uint32_t last_hla_received() const { return last_hla_received_; }
     std::size_t kept_bytes() const { return kept_bytes_; }
     std::size_t kept_messages() const { return kept_.size(); }
 
@@ -104,6 +108,7 @@ private:
     std::uint64_t id_;
     std::uint32_t next_ = 1;
     std::uint32_t last_received_ = 0;  // the federate's NewSession is its 0
+    std::uint32_t last_hla_received_ = kNoSequence;
     std::uint32_t confirmed_ = 0;      // the newest of ours the federate said it has (our status is 0)
     struct Kept {
         std::uint32_t sequence;

@@ -30,7 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const std::string_view payload = in.substr(kHeaderSize, h.size - kHeaderSize);
             in.remove_prefix(h.size);
             if (h.type == MessageType::NewSession || h.type == MessageType::ResumeRequest) {
-                const SessionState::Resume r = state.resume(payload_u32(payload, 0), payload_u32(payload, 1));
+                const SessionState::Resume r = state.resume(payload_u32(payload, 0));
                 check(r.status != kResumeOk || r.resend.size() == state.kept_messages());
                 for (auto const& bytes : r.resend) check(decode_header(bytes, 1u << 20).type == MessageType::HlaCallbackRequest);
                 continue;

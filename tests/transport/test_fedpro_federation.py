@@ -83,6 +83,12 @@ def test_a_fedpro_federate_creates_joins_and_exchanges_with_hlacore_federates(do
         received = amb.named("receiveInteraction")[0]
         assert fedpro.handle_values(received.parameterValues) == {verb.data: b"turn"} and received.userSuppliedTag == b"t"
 
+        # HLA 4's switch getters answer what the federate set (the core's defaults first).
+        assert rtia.getObjectClassRelevanceAdvisorySwitch() is True
+        rtia.setObjectClassRelevanceAdvisorySwitch(value=False)
+        assert rtia.getObjectClassRelevanceAdvisorySwitch() is False
+        assert rtia.getAttributeScopeAdvisorySwitch() is False
+
         # The core's exceptions arrive under the standard's names.
         with pytest.raises(fedpro.rti_exception("NameNotFound")):
             rtia.getObjectClassHandle(objectClassName="Boat")

@@ -182,3 +182,27 @@ def test_bad_messages_in_a_session_end_it(door: Any) -> None:
     assert header.type == MessageType.RESUME_STATUS
     assert struct.unpack(">I", recv_exact(resume, header.size - 24)[:4])[0] == 1  # invalid session
     resume.close()
+
+
+def test_a_resume_reports_the_last_hla_message_received_not_a_heartbeat(door: Any) -> None:
+    """A federate keeps only its HLA messages to send again (Pitch's client cannot rewind to a heartbeat's
+    number): the resume names the last call the door received, though a heartbeat came after it."""
+    sock, session = handshake(door.fedpro_address)
+    from hlacore.fedpro._proto import RTIambassador_pb2
+    call = RTIambassador_pb2.CallRequest(listFederationExecutionsRequest={}).SerializeToString()
+    sock.sendall(encode_message(MessageType.HLA_CALL_REQUEST, 1, session, 0, call))
+    header = fedpro.decode_header(recv_exact(sock, 24))
+    recv_exact(sock, header.size - 24)
+    sock.sendall(encode_message(MessageType.HEARTBEAT, 2, session, header.sequence))
+    header = fedpro.decode_header(recv_exact(sock, 24))
+    assert header.type == MessageType.HEARTBEAT_RESPONSE and recv_exact(sock, 4) == struct.pack(">I", 2)
+    sock.close()  # dropped: the session waits for a resume
+    resume = socket.create_connection(target(door.fedpro_address), timeout=5)
+    resume.sendall(encode_message(MessageType.RESUME_REQUEST, 0, session, header.sequence, struct.pack(">II", 1, 1)))
+    header = fedpro.decode_header(recv_exact(resume, 24))
+    assert header.type == MessageType.RESUME_STATUS
+    assert struct.unpack(">II", recv_exact(resume, header.size - 24)) == (0, 1)  # ok, the call (1), not the heartbeat
+    resume.sendall(encode_message(MessageType.TERMINATE_SESSION, 3, session, header.sequence))
+    header = fedpro.decode_header(recv_exact(resume, 24))
+    assert header.type == MessageType.SESSION_TERMINATED
+    resume.close()

@@ -847,6 +847,8 @@ void HlaFederate::connect() {
 
 void HlaFederate::joined(api::FederateHandle const& handle, pb::JoinResult* result) {
     joined_ = true;
+    class_relevance_ = interaction_relevance_ = true;  // a join starts from the core's defaults
+    attribute_relevance_ = attribute_scope_ = false;
     factory_ = rti_->getTimeFactory();
     put(result->mutable_federatehandle(), handle);
     result->set_logicaltimeimplementationname(utf8(factory_->getName()));

@@ -85,8 +85,9 @@ private:
     std::unique_ptr<api::LogicalTimeFactory> factory_;
     std::string modules_dir_;  // the FOM modules sent by content, as files the ambassador reads
     bool joined_ = false;
-    // The advisory switches as this federate set them, from the core's defaults: HLA 4's getters answer from them
-    // (Pitch's 1516-2010 adapter asks before each enable and disable).
+    // The advisory switches as this federate set them since it joined, from the core's defaults: HLA 4's getters
+    // answer from them (Pitch's 1516-2010 adapter asks before each enable and disable). A federation restore that
+    // brings back other values is not seen here.
     bool class_relevance_ = true, attribute_relevance_ = false, attribute_scope_ = false, interaction_relevance_ = true;
 };
 

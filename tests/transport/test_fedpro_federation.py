@@ -83,12 +83,6 @@ def test_a_fedpro_federate_creates_joins_and_exchanges_with_hlacore_federates(do
         received = amb.named("receiveInteraction")[0]
         assert fedpro.handle_values(received.parameterValues) == {verb.data: b"turn"} and received.userSuppliedTag == b"t"
 
-        # HLA 4's switch getters answer what the federate set (the core's defaults first).
-        assert rtia.getObjectClassRelevanceAdvisorySwitch() is True
-        rtia.setObjectClassRelevanceAdvisorySwitch(value=False)
-        assert rtia.getObjectClassRelevanceAdvisorySwitch() is False
-        assert rtia.getAttributeScopeAdvisorySwitch() is False
-
         # The core's exceptions arrive under the standard's names.
         with pytest.raises(fedpro.rti_exception("NameNotFound")):
             rtia.getObjectClassHandle(objectClassName="Boat")
@@ -96,6 +90,15 @@ def test_a_fedpro_federate_creates_joins_and_exchanges_with_hlacore_federates(do
             rtia.updateAttributeValues(objectInstance=obj,
                                        attributeValues={rtia.getAttributeHandle(objectClass=vehicle, attributeName="position").data: b"x"},
                                        userSuppliedTag=b"")
+
+        # HLA 4's switch getters answer what the federate set (the core's defaults first).
+        assert rtia.getObjectClassRelevanceAdvisorySwitch() is True
+        rtia.setObjectClassRelevanceAdvisorySwitch(value=False)
+        assert rtia.getObjectClassRelevanceAdvisorySwitch() is False
+        assert rtia.getAttributeScopeAdvisorySwitch() is False
+        rtia.resignFederationExecution(resignAction="CANCEL_THEN_DELETE_THEN_DIVEST")  # a new join: the defaults again
+        rtia.joinFederationExecution(federateName="car-again", federateType="fedpro", federationName="Road")
+        assert rtia.getObjectClassRelevanceAdvisorySwitch() is True
     finally:
         hla13.resignFederationExecution(rti13.ResignAction.DeleteObjectsAndReleaseAttributes)
         other.close()

@@ -20,6 +20,7 @@ import hlacore.rti as rti
 from hlacore.processes import Child, python_peer
 
 from support import PEERS, ROBOT_FED, RtigProcess, release_rtig, running_rtig, vm_rss
+from support.rti1516e import VEHICLES, Federate
 
 PEER = PEERS / "paused_peer.py"
 MIB = 1 << 20
@@ -164,3 +165,33 @@ def test_a_spill_that_cannot_be_written_drops_only_that_federate(tmp_path: pathl
     assert re.search(rf"not reading, and its backlog could not be spilled: .*{why}", log), log
     assert exited != 0
     assert seen["received"] == sent["sent"] and seen["in_order"], seen
+
+
+def test_large_values_to_a_paused_subscriber_stall_nobody(tmp_path: pathlib.Path) -> None:
+    """Values of 1 MiB are forwarded by reference to the sender's read blocks; once the paused subscriber's
+    stream is spilled they are copied into it, so that the blocks go back to the publisher, which is read on."""
+    updates, size = 96, 1 << 20
+    with running_rtig(tmp_path, "--client-budget", str(BUDGET), "--spill-dir", str(tmp_path)) as server:
+        publisher = Federate(server.address)
+        publisher.rtia.createFederationExecution("Road", [VEHICLES])
+        publisher.rtia.joinFederationExecution("fast", "large", "Road")
+        with python_peer(PEERS / "large_subscriber.py", server.address, updates) as slow:
+            assert slow.read_json(30) == {"ready": True}
+            vehicle = publisher.rtia.getObjectClassHandle("Vehicle")
+            speed = publisher.rtia.getAttributeHandle(vehicle, "speed")
+            publisher.rtia.publishObjectClassAttributes(vehicle, [speed])
+            obj = publisher.rtia.registerObjectInstance(vehicle)
+            slow.send_signal(signal.SIGSTOP)
+            slowest = 0.0
+            try:
+                for n in range(1, updates + 1):
+                    before = time.monotonic()
+                    publisher.rtia.updateAttributeValues(obj, {speed: n.to_bytes(4, "big") + bytes(size - 4)}, b"")
+                    slowest = max(slowest, time.monotonic() - before)
+            finally:
+                slow.send_signal(signal.SIGCONT)
+            assert slow.read_json(120) == {"received": updates, "in_order": True}
+            assert slow.wait(30) == 0, slow.stderr()
+        publisher.close()
+    # Held back until the paused one was continued, the calls would have waited for it: none did.
+    assert slowest < 5.0, slowest

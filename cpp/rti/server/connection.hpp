@@ -116,6 +116,25 @@ struct Gateway::Connection {
         message.msg_iovlen = wire::gather(out, out_offset, splices, pieces, std::size(pieces));
         return ::sendmsg(fd, &message, MSG_NOSIGNAL);
     }
+    // Writes the spliced values into `out` where they go, letting go of the senders' read blocks they pin: a
+    // client that stopped reading must not keep its senders from being read (its stream goes to a spill file).
+    void inline_splices() {
+        if (splices.empty()) return;
+        std::string flat;
+        flat.reserve(unsent());
+        std::size_t from = out_offset;
+        for (const Splice& s : splices) {
+            flat.append(out, from, s.at - from);
+            flat.append(s.bytes);
+            from = s.at;
+        }
+        flat.append(out, from, std::string::npos);
+        out = std::move(flat);
+        out_offset = 0;
+        traced = 0;  // nothing is spliced while the trace runs
+        splices.clear();
+        splice_bytes = 0;
+    }
     // Drops out[0, out_offset), which was taken.
     void drop_sent() {
         out.erase(0, out_offset);

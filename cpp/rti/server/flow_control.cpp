@@ -51,9 +51,10 @@ bool Gateway::spill(Connection& c) {
     try {
         if (!c.spill) {
             c.spill = std::make_unique<SpillFile>(spill_budget_);
+            c.inline_splices();  // large values it was sent by reference pin their senders' read blocks
             // The stream is out, backlog, spill, tail: what `out` holds beyond what the client takes next (past
-            // the splices, which point into it, and what the trace has seen) and the backlog go to the file first.
-            const std::size_t keep = std::max({c.out_offset + spill_keep(), c.splices.empty() ? 0 : c.splices.back().at, c.traced});
+            // what the trace has seen) and the backlog go to the file first.
+            const std::size_t keep = std::max({c.out_offset + spill_keep(), c.traced});
             if (keep < c.out.size()) {
                 c.spill->append(std::string_view(c.out).substr(keep));
                 c.out.resize(keep);

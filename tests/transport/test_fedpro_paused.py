@@ -1,0 +1,64 @@
+"""A Federate Protocol federate paused in a debugger stalls nobody: its process stopped (SIGSTOP) while a native
+federate publishes 96 MiB to it, more than the door keeps for a session (64 MiB): the door's kept messages stop at
+their budget, its federate stops reading the gateway, and the gateway spills the rest beyond its 8 MiB budget to
+disk (docs/robustness.md).
+The publisher sends everything at full speed; continued, the paused federate gets every update, in order."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import pathlib
+import signal
+import struct
+import time
+from typing import Any, Iterator
+
+import pytest
+
+from hlacore.processes import python_peer
+
+from support import PEERS
+from support.fedpro import door as fedpro_door
+from support.rti1516e import VEHICLES, Federate
+
+MIB = 1 << 20
+UPDATES = 96  # of 1 MiB: values the gateway forwards by reference to the sender's read blocks
+
+
+@pytest.fixture
+def door(tmp_path: pathlib.Path) -> Iterator[Any]:
+    with fedpro_door(tmp_path, "--spill-dir", str(tmp_path), "--client-budget", str(8 * MIB)) as server:
+        yield server
+
+
+@pytest.mark.slow
+def test_a_paused_fedpro_federate_stalls_nobody(door: Any) -> None:
+    publisher = Federate(door.address)
+    publisher.rtia.createFederationExecution("Road", [VEHICLES])
+    publisher.rtia.joinFederationExecution("fast", "1516e", "Road")
+    slow = python_peer(PEERS / "fedpro_subscriber.py", door.fedpro_address, UPDATES)
+    try:
+        assert slow.read_json(timeout=30) == {"ready": True}
+        vehicle = publisher.rtia.getObjectClassHandle("Vehicle")
+        speed = publisher.rtia.getAttributeHandle(vehicle, "speed")
+        publisher.rtia.publishObjectClassAttributes(vehicle, [speed])
+        obj = publisher.rtia.registerObjectInstance(vehicle)
+        os.kill(slow.pid, signal.SIGSTOP)
+        slowest = 0.0
+        for n in range(1, UPDATES + 1):
+            before = time.monotonic()
+            publisher.rtia.updateAttributeValues(obj, {speed: struct.pack(">I", n) + bytes(MIB - 4)}, b"")
+            slowest = max(slowest, time.monotonic() - before)
+        time.sleep(2)  # what was sent reaches the door, its budget, and the gateway's spill
+        os.kill(slow.pid, signal.SIGCONT)
+        assert slow.read_json(timeout=120) == {"received": UPDATES, "in_order": True}
+        assert slow.wait(timeout=30) == 0, slow.stderr()
+        # Nobody waited for the stopped federate: no call took anything like a stall (which would last until it
+        # was continued).
+        assert slowest < 5.0, slowest
+    finally:
+        with contextlib.suppress(ProcessLookupError):  # continued, whatever failed, so that it can end
+            os.kill(slow.pid, signal.SIGCONT)
+        slow.close()
+        publisher.close()

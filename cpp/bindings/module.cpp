@@ -33,13 +33,19 @@ public:
         }
         if (const std::string conflict = gateway_options_conflict(options, Given::Keyword); !conflict.empty())
             throw std::invalid_argument(conflict);
+        // The door's federates reach the gateway through a Unix socket: the one asked for, else one of their own.
+        if (!options.fedpro.empty() && options.unix_path.empty()) {
+            door_socket_ = std::make_unique<fedpro::PrivateSocket>();
+            options.unix_path = door_socket_->path();
+        }
         gateway_ = std::make_unique<Gateway>(options);
         host_ = gateway_->host();
         port_ = gateway_->port();
         thread_ = std::thread([this] { gateway_->run(); });
         if (!options.fedpro.empty()) {
             try {
-                fedpro_ = fedpro::open_door(options.fedpro, host_, port_, options.fedpro_resume_timeout_s);
+                fedpro_ = fedpro::open_door(options.fedpro, "unix:" + options.unix_path, options.secret_file,
+                                            options.fedpro_resume_timeout_s);
             } catch (...) {
                 stop();
                 throw;
@@ -56,6 +62,7 @@ public:
             thread_.join();
         }
         gateway_.reset();
+        door_socket_.reset();  // after the gateway, which removes the socket itself
     }
     const std::string& host() const { return host_; }
     std::uint16_t port() const { return port_; }
@@ -63,6 +70,7 @@ public:
     std::uint16_t fedpro_port() const { return fedpro_ ? fedpro_->port() : 0; }
 
 private:
+    std::unique_ptr<fedpro::PrivateSocket> door_socket_;
     std::unique_ptr<Gateway> gateway_;
     std::unique_ptr<fedpro::Server> fedpro_;
     std::string host_;

@@ -13,6 +13,7 @@
 
 namespace hlacore::fedpro {
 
+// `gateway`: the local settings designator its ambassador connects with (address=..., secret_file=...);
 // `send_callback` gets each CallbackRequest's bytes, on the ambassador's callback thread.
 std::unique_ptr<Federate> make_federate(std::string const& gateway, std::function<void(std::string_view)> send_callback);
 

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <cstdio>
 #include <list>
 #include <map>
@@ -43,14 +44,26 @@ void parse_listen_address(std::string const& text, ServerOptions& options) {
     options.port = std::uint16_t(n);
 }
 
-std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway_host, std::uint16_t gateway_port,
+std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway, std::string const& secret_file,
                                   double resume_timeout_s) {
     ServerOptions options;
     parse_listen_address(listen, options);
     options.limits.resume_timeout = std::chrono::milliseconds(static_cast<long long>(resume_timeout_s * 1000));
-    const bool wildcard = gateway_host.empty() || gateway_host == "0.0.0.0" || gateway_host == "::";
-    options.gateway = (wildcard ? std::string("127.0.0.1") : gateway_host) + ":" + std::to_string(gateway_port);
+    options.gateway = "address=" + gateway + (secret_file.empty() ? "" : "\nsecret_file=" + secret_file);
     return std::make_unique<Server>(options);
+}
+
+PrivateSocket::PrivateSocket() {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string dir = std::string(tmp && *tmp ? tmp : "/tmp") + "/hlacore-door-XXXXXX";
+    if (!::mkdtemp(dir.data())) throw std::runtime_error("no private directory for the door's socket in " + dir);
+    directory_ = dir;
+    path_ = dir + "/gateway.sock";
+}
+
+PrivateSocket::~PrivateSocket() {
+    ::unlink(path_.c_str());  // the gateway removes it; a gateway that failed to start may not have
+    ::rmdir(directory_.c_str());
 }
 
 struct Server::Impl {

@@ -19,7 +19,7 @@ constexpr std::uint16_t kDefaultPort = 15164;
 struct ServerOptions {
     std::string host = "127.0.0.1";
     std::uint16_t port = kDefaultPort;  // 0: any free port (Server::port() says which)
-    std::string gateway;                // the gateway the sessions' federates connect to: HOST:PORT or unix:PATH
+    std::string gateway;                // the sessions' federates' local settings designator (federate.hpp)
     SessionLimits limits;
 };
 
@@ -41,10 +41,26 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-// The door of a gateway listening at gateway_host:gateway_port (a wildcard address: its loopback), on `listen`
-// (HOST:PORT, as rtig --fedpro takes it), its sessions resumable for `resume_timeout_s` after a drop.
-std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway_host, std::uint16_t gateway_port,
+// A door on `listen` (HOST:PORT, as rtig --fedpro takes it), its federates connecting to the gateway at
+// `gateway` (unix:PATH, the gateway's private socket for the door: PrivateSocket) with `secret_file` ("": none),
+// its sessions resumable for `resume_timeout_s` after a drop.
+std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway, std::string const& secret_file,
                                   double resume_timeout_s);
+
+// A Unix socket path in a directory of its own, readable by this user only, for the gateway to listen on for its
+// door (no TLS there, and less CPU per message than TCP); the directory goes when this does. Throws
+// std::runtime_error when it cannot be made.
+class PrivateSocket {
+public:
+    PrivateSocket();
+    ~PrivateSocket();
+    PrivateSocket(PrivateSocket const&) = delete;
+    PrivateSocket& operator=(PrivateSocket const&) = delete;
+    std::string const& path() const { return path_; }
+
+private:
+    std::string directory_, path_;
+};
 
 // "HOST:PORT", ":PORT" or "HOST" (the default port) into `options`; std::invalid_argument saying why not.
 void parse_listen_address(std::string const& text, ServerOptions& options);

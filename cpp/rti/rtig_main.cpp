@@ -162,6 +162,13 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
+        // The door's federates reach the gateway through a Unix socket: the one asked for, else one of their own.
+        const std::string asked_unix = options.unix_path;
+        std::unique_ptr<hlacore::fedpro::PrivateSocket> door_socket;
+        if (!options.fedpro.empty() && options.unix_path.empty()) {
+            door_socket = std::make_unique<hlacore::fedpro::PrivateSocket>();
+            options.unix_path = door_socket->path();
+        }
         hlacore::Gateway gateway(options);
         g_gateway = &gateway;
         struct sigaction sa {};
@@ -171,9 +178,10 @@ int main(int argc, char** argv) {
         sigaction(SIGTERM, &sa, nullptr);
         std::signal(SIGPIPE, SIG_IGN);
         std::unique_ptr<hlacore::fedpro::Server> fedpro;
-        if (!options.fedpro.empty()) fedpro = hlacore::fedpro::open_door(options.fedpro, gateway.host(), gateway.port(),
-                                                                            options.fedpro_resume_timeout_s);
-        std::string also = options.unix_path.empty() ? "" : " and unix:" + options.unix_path;
+        if (!options.fedpro.empty())
+            fedpro = hlacore::fedpro::open_door(options.fedpro, "unix:" + options.unix_path, options.secret_file,
+                                                options.fedpro_resume_timeout_s);
+        std::string also = asked_unix.empty() ? "" : " and unix:" + asked_unix;
         if (fedpro) also += ", the Federate Protocol on " + fedpro->address();
         std::printf("rtig listening on %s:%u%s\n", gateway.host().c_str(), static_cast<unsigned>(gateway.port()), also.c_str());
         std::fflush(stdout);

@@ -47,6 +47,30 @@ void check_modules(std::vector<fom::FomModule> const& modules) {
     }
 }
 
+std::map<std::string, std::string> designated(std::string text) {
+    std::map<std::string, std::string> given;
+    if (text.find('=') == std::string::npos) {
+        if (text.rfind("rti://", 0) == 0) text = text.substr(6);
+        if (!text.empty() && text.back() == '/') text.pop_back();
+        if (!text.empty()) given["address"] = text;
+        return given;
+    }
+    std::size_t from = 0;
+    while (from <= text.size()) {
+        const std::size_t end = std::min(text.find_first_of(",\n", from), text.size());
+        std::string item = text.substr(from, end - from);
+        from = end + 1;
+        item.erase(0, item.find_first_not_of(" \t\r"));
+        item.erase(item.find_last_not_of(" \t\r") + 1);
+        if (item.empty()) continue;
+        const auto equals = item.find('=');
+        if (equals == std::string::npos || equals == 0) raise("InvalidLocalSettingsDesignator", "'" + item + "' is not KEY=VALUE");
+        const std::string key = item.substr(0, equals);
+        given[key == "crcAddress" ? "address" : key] = item.substr(equals + 1);
+    }
+    return given;
+}
+
 TimeType time_type(std::wstring const& name) {
     if (name.empty() || name == L"HLAfloat64Time") return TimeType::Float64;
     if (name == L"HLAinteger64Time") return TimeType::Integer64;
@@ -69,12 +93,10 @@ void Ambassador::connect(FederateAmbassador& federate, CallbackModel model, std:
         if (raw(model) != HLA_EVOKED && raw(model) != HLA_IMMEDIATE)
             raise("UnsupportedCallbackModel", std::to_string(raw(model)));
         // "host:port", "rti://host:port" or "rti://host:port/"; empty: $HLACORE_RTIG, else 127.0.0.1:60400 (as
-        // hlacore.rti1516e). A designator that names no address is InvalidLocalSettingsDesignator.
-        std::string address = utf8(settings);
-        if (address.rfind("rti://", 0) == 0) address = address.substr(6);
-        if (!address.empty() && address.back() == '/') address.pop_back();
-        std::map<std::string, std::string> given;
-        if (!address.empty()) given["address"] = address;
+        // hlacore.rti1516e). Or the client's options as KEY=VALUE, one a line or comma-separated
+        // ("address=host:port,secret_file=FILE"; Pitch's "crcAddress" names the address). A designator that
+        // names no address, or an option the client does not have, is InvalidLocalSettingsDesignator.
+        const std::map<std::string, std::string> given = designated(utf8(settings));
         ClientSettings c;
         try {
             c = client_settings(given);

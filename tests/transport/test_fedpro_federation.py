@@ -14,6 +14,7 @@ import pytest
 import hlacore.rti as rti13
 from hlacore import fedpro
 
+from support import secret_file
 from support.fedpro import Calls, Pair, until
 from support.fedpro import door as fedpro_door
 from support.rti1516e import VEHICLES, Federate
@@ -151,3 +152,20 @@ def test_a_thousand_step_timestamped_lockstep_with_a_1516e_federate(door: Any) -
         rtia.resignFederationExecution(resignAction="CANCEL_THEN_DELETE_THEN_DIVEST")
         rtia.destroyFederationExecution(federationName="Road")
         rtia.close()
+
+
+def test_the_door_of_a_gateway_with_a_secret(tmp_path: pathlib.Path) -> None:
+    """The door's federates reach a gateway that asks for a secret through a Unix socket of their own, proving
+    the secret (the local settings designator "address=unix:PATH\\nsecret_file=FILE" of the 1516-2010 API); a
+    federate of hlacore's own protocol still needs it."""
+    secret = secret_file(tmp_path, "correct horse battery staple")
+    with fedpro_door(tmp_path, "--secret-file", str(secret)) as server:
+        rtia, amb = fedpro_federate(server.fedpro_address, "inside", create=True)
+        try:
+            assert rtia.getFederateName(federate=rtia.getFederateHandle(federateName="inside")) == "inside"
+            with pytest.raises(rti13.AuthenticationFailed):
+                rti13.RTIAmbassador(server.address)
+        finally:
+            rtia.resignFederationExecution(resignAction="NO_ACTION")
+            rtia.destroyFederationExecution(federationName="Road")
+            rtia.close()

@@ -77,6 +77,7 @@ struct GatewayOptions {
     // Non-empty: every client proves it knows this secret (challenge-response, rti/auth.hpp) before anything
     // else; docs/networking.md.
     std::string secret;
+    std::string secret_file;  // where `secret` was read (the Federate Protocol's door gives it to its federates)
     // Federations with a secret of their own: creating, joining or destroying one needs a proof of it
     // (auth::federation_proof), whatever the connection's secret.
     std::map<std::string, std::string> federation_secrets;

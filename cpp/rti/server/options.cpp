@@ -74,7 +74,11 @@ const Options<GatewayOptions>& gateway_options() {
          "best effort over UDP on the same port: the largest datagram either side sends (0: none, everything "
          "over TCP); larger best-effort messages go over TCP (docs/networking.md)"},
         {"--secret-file", "secret_file", nullptr, "FILE", false,
-         [](O& o, Text t) { o.secret = auth::read_secret_file(t); }, nullptr,
+         [](O& o, Text t) {
+             o.secret = auth::read_secret_file(t);
+             o.secret_file = t;
+         },
+         nullptr,
          "clients must prove they know the secret in FILE (readable by its owner only) before anything else; "
          "rtig requires one when HOST is not a loopback address (docs/networking.md)"},
         {"--federation-secret", "federation_secrets", nullptr, "NAME=FILE", true,
@@ -113,9 +117,10 @@ const Options<GatewayOptions>& gateway_options() {
          "before each wait for clients sleeps, poll for up to US µs without sleeping (0: off): a message that "
          "comes meanwhile costs no wake-up, at the price of a busy core (docs/performance.md, busy polling)"},
         text_option<&O::fedpro>("--fedpro", "fedpro", "HOST:PORT",
-         "also serve the HLA 4 Federate Protocol (IEEE 1516.1-2025) on HOST:PORT (loopback only for now; its "
-         "default port is 15164): federates in any language join through protobuf calls and callbacks, and "
-         "resume after a dropped connection (docs/fedpro.md)"),
+         "also serve the HLA 4 Federate Protocol (IEEE 1516.1-2025) on HOST:PORT (loopback only for now, plain "
+         "TCP; its default port is 15164): federates in any language join through protobuf calls and callbacks, "
+         "and resume after a dropped connection; the door's federates reach this gateway through a Unix socket "
+         "of their own, proving its secret when it has one (docs/fedpro.md)"),
         {"--fedpro-resume-timeout", "fedpro_resume_timeout", nullptr, "S", false,
          [](O& o, Text t) { o.fedpro_resume_timeout_s = number_above(t, 0, false, "seconds"); },
          [](const O& o) { return text(o.fedpro_resume_timeout_s); },
@@ -130,8 +135,6 @@ const Options<GatewayOptions>& gateway_options() {
 std::string gateway_options_conflict(const GatewayOptions& options, Given given) {
     if (options.tls_cert.empty() != options.tls_key.empty())
         return given == Given::Flag ? "--tls-cert and --tls-key go together" : "tls_cert and tls_key go together";
-    if (!options.fedpro.empty() && (!options.secret.empty() || !options.tls_cert.empty()))
-        return "the Federate Protocol's door does not pass the gateway's secret or TLS to its federates yet";
     return "";
 }
 

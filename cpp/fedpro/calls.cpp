@@ -1,7 +1,5 @@
 // The calls: each CallRequest onto the session's RTIambassador, its result into the CallResponse. What HLA 4 adds
 // and the core does not serve is answered with the standard's exception, never dropped.
-#include <RTI/RTIambassadorFactory.h>
-
 #include "fedpro/hla_federate.hpp"
 
 namespace hlacore::fedpro {

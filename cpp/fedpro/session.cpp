@@ -125,7 +125,7 @@ void Session::on_message(Header const& h, std::string_view payload) {
             break;
         }
         case MessageType::HlaCallbackResponse:
-            payload_u32(payload, 0);
+            payload_u32(payload, 0);  // the number of the callback answered: BadMessage when it is not there
             federate_->answered(payload.substr(4));
             break;
         case MessageType::TerminateSession:

@@ -1,8 +1,5 @@
 #include "fedpro/server.hpp"
 
-#include <netdb.h>
-#include <netinet/in.h>
-#include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -18,16 +15,13 @@
 #include <thread>
 
 #include "fedpro/federate.hpp"
+#include "rti/net/listen.hpp"
 
 namespace hlacore::fedpro {
 
 namespace {
 
 constexpr std::chrono::milliseconds kHandshakeIdle{10000};  // a connection that says nothing for this long is closed
-
-bool loopback(std::string const& host) {
-    return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
-}
 
 }  // namespace
 
@@ -88,14 +82,9 @@ struct Server::Impl {
             if (::poll(&p, 1, 200) <= 0) continue;
             const int fd = ::accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC);
             if (fd < 0) continue;
-            // Each message at once (a call's response is small and awaited); a peer gone without a word is found
-            // by keepalive while the connection is idle, and its session is then dropped, waiting for a resume.
-            int one = 1, idle = 10, interval = 5, count = 3;
-            ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
-            ::setsockopt(fd, SOL_SOCKET, SO_KEEPALIVE, &one, sizeof one);
-            ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPIDLE, &idle, sizeof idle);
-            ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPINTVL, &interval, sizeof interval);
-            ::setsockopt(fd, IPPROTO_TCP, TCP_KEEPCNT, &count, sizeof count);
+            // A call's response is small and awaited; a peer gone without a word is found by keepalive, and its
+            // session is then dropped, waiting for a resume.
+            net::serve_connection(fd);
             std::lock_guard<std::mutex> lock(mutex);
             Connection& c = connections.emplace_back();
             c.thread = std::thread([this, fd, &c] {
@@ -202,31 +191,13 @@ struct Server::Impl {
 Server::Server(ServerOptions options) : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.options = std::move(options);
-    if (!loopback(m.options.host))
+    if (!net::is_loopback(m.options.host))
         throw std::invalid_argument("the Federate Protocol listens on loopback only for now (" + m.options.host +
                                     " asked): federates beyond this host need credentials, which are not checked yet");
     if (m.options.gateway.empty()) throw std::invalid_argument("the Federate Protocol's server needs the gateway's address");
-    addrinfo hints{};
-    hints.ai_family = AF_UNSPEC;
-    hints.ai_socktype = SOCK_STREAM;
-    hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
-    addrinfo* found = nullptr;
-    const std::string port = std::to_string(m.options.port);
-    if (int rc = getaddrinfo(m.options.host.c_str(), port.c_str(), &hints, &found); rc != 0)
-        throw std::runtime_error("cannot resolve " + m.options.host + ": " + gai_strerror(rc));
-    std::unique_ptr<addrinfo, decltype(&freeaddrinfo)> guard(found, freeaddrinfo);
-    m.listen_fd = ::socket(found->ai_family, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    int one = 1;
-    ::setsockopt(m.listen_fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-    if (m.listen_fd < 0 || ::bind(m.listen_fd, found->ai_addr, found->ai_addrlen) < 0 || ::listen(m.listen_fd, 64) < 0) {
-        if (m.listen_fd >= 0) ::close(m.listen_fd);
-        throw std::runtime_error("the Federate Protocol cannot listen on " + m.options.host + ":" + port);
-    }
-    sockaddr_storage bound{};
-    socklen_t len = sizeof bound;
-    ::getsockname(m.listen_fd, reinterpret_cast<sockaddr*>(&bound), &len);
-    m.port = bound.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&bound)->sin6_port)
-                                         : ntohs(reinterpret_cast<sockaddr_in*>(&bound)->sin_port);
+    const net::Listening listening = net::listen_tcp(m.options.host, m.options.port, SOCK_CLOEXEC);
+    m.listen_fd = listening.fd;
+    m.port = listening.port;
     m.acceptor = std::thread([&m] { m.accept_loop(); });
     m.housekeeper = std::thread([&m] { m.housekeeping_loop(); });
 }

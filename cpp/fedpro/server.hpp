@@ -48,7 +48,7 @@ std::unique_ptr<Server> open_door(std::string const& listen, std::string const& 
                                   double resume_timeout_s);
 
 // A Unix socket path in a directory of its own, readable by this user only, for the gateway to listen on for its
-// door (no TLS there, and less CPU per message than TCP); the directory goes when this does. Throws
+// door (no TLS there, so a gateway with --tls-cert needs nothing more for it); the directory goes when this does. Throws
 // std::runtime_error when it cannot be made.
 class PrivateSocket {
 public:

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "fedpro/server.hpp"
+#include "rti/net/listen.hpp"
 #include "rti/net/status_query.hpp"
 #include "rti/server/options.hpp"
 
@@ -72,10 +73,6 @@ int usage(int status) {
                                            "");
     std::fputs(text.c_str(), status ? stderr : stdout);
     return status;
-}
-
-bool is_loopback(const std::string& host) {
-    return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
 }
 
 // Connects to a running gateway and prints its status report.
@@ -154,7 +151,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "rtig: %s\n", conflict.c_str());
         return usage(2);
     }
-    if (options.secret.empty() && !command.no_secret && !is_loopback(options.host)) {
+    if (options.secret.empty() && !command.no_secret && !hlacore::net::is_loopback(options.host)) {
         std::fprintf(stderr,
                      "rtig: listening on %s, beyond this machine, needs --secret-file FILE (docs/networking.md), or\n"
                      "      --no-secret to let in anyone who reaches the port\n",

@@ -2,6 +2,7 @@
 // queued for each connection (flush) and closing connections.
 #include "rti/server/gateway.hpp"
 #include "rti/busy_poll.hpp"
+#include "rti/net/listen.hpp"
 #include "rti/server/gateway_internal.hpp"
 #include "rti/unix_socket.hpp"
 
@@ -107,27 +108,11 @@ Gateway::Gateway(GatewayOptions options) : options_(std::move(options)) {
     // What the constructor opened is closed again when a later step fails (a Gateway made in Python that
     // cannot listen leaks nothing).
     try {
-        addrinfo hints{};
-        hints.ai_family = AF_UNSPEC;
-        hints.ai_socktype = SOCK_STREAM;
-        hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
-        addrinfo* found = nullptr;
-        const std::string port = std::to_string(options_.port);
-        if (int rc = getaddrinfo(options_.host.c_str(), port.c_str(), &hints, &found); rc != 0)
-            throw std::runtime_error("cannot resolve " + options_.host + ": " + gai_strerror(rc));
-        std::unique_ptr<addrinfo, decltype(&freeaddrinfo)> guard(found, freeaddrinfo);
-
-        listen_fd_ = socket(found->ai_family, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
-        if (listen_fd_ < 0) fail("socket");
-        int one = 1;
-        setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-        if (bind(listen_fd_, found->ai_addr, found->ai_addrlen) < 0) fail("cannot listen on " + options_.host + ":" + port);
-        if (listen(listen_fd_, 128) < 0) fail("listen");
-        sockaddr_storage bound{};
-        socklen_t len = sizeof bound;
-        getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&bound), &len);
-        port_ = bound.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&bound)->sin6_port)
-                                            : ntohs(reinterpret_cast<sockaddr_in*>(&bound)->sin_port);
+        net::Listening listening = net::listen_tcp(options_.host, options_.port, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        listen_fd_ = listening.fd;
+        port_ = listening.port;
+        const sockaddr_storage& bound = listening.bound;
+        const socklen_t len = listening.length;
 
         wake_fd_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
         if (wake_fd_ < 0) fail("eventfd");
@@ -268,15 +253,9 @@ void Gateway::accept_all(int listen_fd) {
             unix_socket::size_send_buffer(fd);
             c->peer = describe_local_peer(fd);
         } else {
-            int one = 1;
-            setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
             // A federate that does not read may be paused (spill.hpp) or gone: keepalive tells them apart while
             // the connection is idle, its host answering for a stopped process and not for a vanished one.
-            int idle = 10, interval = 5, count = 3;
-            setsockopt(fd, SOL_SOCKET, SO_KEEPALIVE, &one, sizeof one);
-            setsockopt(fd, IPPROTO_TCP, TCP_KEEPIDLE, &idle, sizeof idle);
-            setsockopt(fd, IPPROTO_TCP, TCP_KEEPINTVL, &interval, sizeof interval);
-            setsockopt(fd, IPPROTO_TCP, TCP_KEEPCNT, &count, sizeof count);
+            net::serve_connection(fd);
             c->peer = describe_peer(addr);
         }
         if (tls_ && !c->local) {

@@ -11,6 +11,8 @@
 #   fuzz_certi  hlacore-rtia's decoder of CERTI's federate protocol (seeds: cpp/fuzz/corpus/certi/, frames of
 #              both byte orders written by tests/support/certi.py's encoder)
 #   fuzz_fedpro  the Federate Protocol's session layer: headers, numbering, resumes (seeds: cpp/fuzz/corpus/fedpro/)
+#   fuzz_websocket  the Federate Protocol's WebSocket handshake and frame headers (seeds: cpp/fuzz/corpus/websocket/)
+#   fuzz_zip   the Federate Protocol's compressed FOM modules, zip archives (seeds: cpp/fuzz/corpus/zip/)
 # and replay the committed regression inputs (cpp/fuzz/regressions/). A crash leaves its input in
 # build/fuzz/artifacts/ and makes the script fail; it then belongs in cpp/fuzz/regressions/TARGET/.
 #
@@ -58,7 +60,7 @@ mkdir -p build/fuzz
 .venv/bin/cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ \
     -DHLACORE_FUZZ=ON -DHLACORE_PYTHON=OFF -DCMAKE_MAKE_PROGRAM="$PWD/.venv/bin/ninja" \
     >build/fuzz-configure.log 2>&1 || { cat build/fuzz-configure.log; exit 1; }
-cmake_build build/fuzz "the libFuzzer targets" fuzz_wire fuzz_fed fuzz_omt fuzz_json fuzz_gateway fuzz_datagram fuzz_certi fuzz_fedpro wire_seeds
+cmake_build build/fuzz "the libFuzzer targets" fuzz_wire fuzz_fed fuzz_omt fuzz_json fuzz_gateway fuzz_datagram fuzz_certi fuzz_fedpro fuzz_websocket fuzz_zip wire_seeds
 # A sample frame of every message (the committed seeds are hand-written and may lag the message list).
 rm -rf build/fuzz/seeds-wire && mkdir -p build/fuzz/seeds-wire && build/fuzz/wire_seeds build/fuzz/seeds-wire
 [ "$build_only" = 1 ] && exit 0

@@ -28,14 +28,14 @@ void bind_federation(Ambassador& rtia) {
         .def("destroyFederationExecution", &Client::destroy_federation,
              py::arg("executionName"), py::call_guard<py::gil_scoped_release>())
         .def("_join", [](Client& c, const std::string& federate, const std::string& federation,
-                         const std::string& fom_modules) {
+                         const std::string& fom_modules, const std::string& federate_type) {
             H32 h;
             {
                 py::gil_scoped_release release;
-                h = c.join(federate, federation, fom_modules);
+                h = c.join(federate, federation, fom_modules, federate_type);
             }
             return FederateHandle{h};
-        }, py::arg("federate"), py::arg("federation"), py::arg("fom_modules") = "")
+        }, py::arg("federate"), py::arg("federation"), py::arg("fom_modules") = "", py::arg("federate_type") = "")
         .def("_resign", [](Client& c, int action) {
             if (action < 0 || action > 255) throw RtiError(ErrorCode::InvalidResignAction, "invalid resign action");
             py::gil_scoped_release release;

@@ -41,27 +41,22 @@ public:
         gateway_ = std::make_unique<Gateway>(options);
         host_ = gateway_->host();
         port_ = gateway_->port();
-        thread_ = std::thread([this] { gateway_->run(); });
         if (!options.fedpro.empty()) {
-            try {
-                fedpro_ = fedpro::open_door(options.fedpro, "unix:" + options.unix_path, options.secret_file,
-                                            options.fedpro_resume_timeout_s);
-            } catch (...) {
-                stop();
-                throw;
-            }
+            fedpro_ = fedpro::open_door(options, "unix:" + options.unix_path);  // its federates connect once it runs
+            gateway_->add_status_section([door = fedpro_.get()] { return door->status_json(); });
         }
+        thread_ = std::thread([this] { gateway_->run(); });
     }
     ~BackgroundGateway() { stop(); }
     // Stops the loop and closes the gateway: its sockets (a Unix socket's file removed) and its recording.
     void stop() {
         if (fedpro_) fedpro_->stop();  // its federates resign while the gateway still serves
-        fedpro_.reset();
         if (thread_.joinable()) {
             gateway_->stop();
             thread_.join();
         }
         gateway_.reset();
+        fedpro_.reset();  // after the gateway, whose status report reads it
         door_socket_.reset();  // after the gateway, which removes the socket itself
     }
     const std::string& host() const { return host_; }

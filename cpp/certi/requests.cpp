@@ -135,7 +135,7 @@ Message Rtia::serve(const Message& q) {
             const std::string added = q.values.empty() ? "" : bundle_of(q.values, paths);
             // IEEE 1516-2010 lets the RTI name a federate that gives no name: its type and the rtia's pid.
             a.federate = c.join(q.has_name ? q.name : q.federate_type + "-" + std::to_string(::getpid()),
-                                q.federation_name, added);
+                                q.federation_name, added, q.federate_type);
             joined_ = true;
             break;
         }

@@ -9,16 +9,6 @@ using namespace ::rti1516e;
 
 namespace {
 
-// The request with its one member `field` set (`m`), filled by the statements after it.
-#define HLACORE_FEDPRO_CALLBACK(field, ...)  \
-    do {                                     \
-        pb::CallbackRequest request;         \
-        auto* m = request.mutable_##field(); \
-        (void)m;                             \
-        __VA_ARGS__;                         \
-        send(request);                       \
-    } while (0)
-
 template <class Info>
 void put_producer(Info const& info, pb::FederateHandle* out) {
     if (info.hasProducingFederate) put(out, info.producingFederate);

@@ -1,6 +1,7 @@
 // The calls: each CallRequest onto the session's RTIambassador, its result into the CallResponse. What HLA 4 adds
 // and the core does not serve is answered with the standard's exception, never dropped.
 #include "fedpro/hla_federate.hpp"
+#include "rti1516e/ambassador.hpp"
 
 namespace hlacore::fedpro {
 
@@ -12,23 +13,57 @@ namespace {
 
 api::VariableLengthData tag(std::string const& t) { return data(t); }
 
+constexpr const char* kPlainTextPassword = "HLAplainTextPassword";
+
+// HLAplainTextPassword's data: an HLAunicodeString (a 4-byte big-endian count of UTF-16 code units, each big-endian),
+// as UTF-8. InvalidCredentials when it is not one.
+std::string password(std::string const& data) {
+    auto bad = [] { return Hla4Exception("InvalidCredentials", "HLAplainTextPassword credentials that are not an HLAunicodeString"); };
+    if (data.size() < 4) throw bad();
+    const std::uint32_t count = std::uint32_t(std::uint8_t(data[0])) << 24 | std::uint32_t(std::uint8_t(data[1])) << 16 |
+                                std::uint32_t(std::uint8_t(data[2])) << 8 | std::uint8_t(data[3]);
+    if (data.size() - 4 != std::uint64_t(count) * 2) throw bad();
+    std::wstring text;
+    for (std::size_t i = 4; i < data.size(); i += 2) {
+        const wchar_t unit = wchar_t(std::uint8_t(data[i]) << 8 | std::uint8_t(data[i + 1]));
+        if (unit >= 0xDC00 && unit < 0xE000 && !text.empty() && text.back() >= 0xD800 && text.back() < 0xDC00)
+            text.back() = 0x10000 + ((text.back() - 0xD800) << 10) + (unit - 0xDC00);  // a surrogate pair: one code point
+        else
+            text += unit;
+    }
+    return utf8(text);
+}
+
+// Compared in constant time: how long it takes says nothing of where they differ.
+bool same_secret(std::string const& a, std::string const& b) {
+    unsigned char differ = a.size() != b.size();
+    for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) differ |= static_cast<unsigned char>(a[i] ^ b[i]);
+    return differ == 0;
+}
+
 }  // namespace
 
 void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
     using C = pb::CallRequest;
     switch (q.callRequest_case()) {
         // ---- federation management ----
+        // The session's federate joins the gateway this server serves, whatever configuration it names.
         case C::kConnectRequest:
-            connect();
+            connect(nullptr);
             r.mutable_connectresponse()->mutable_configurationresult();
             return;
         case C::kConnectWithConfigurationRequest:
-            connect();  // the session's federate joins the gateway this server serves, whatever it names
+            connect(nullptr);
             r.mutable_connectwithconfigurationresponse()->mutable_configurationresult()->set_configurationused(false);
             return;
         case C::kConnectWithCredentialsRequest:
+            connect(&q.connectwithcredentialsrequest().credentials());
+            r.mutable_connectwithcredentialsresponse()->mutable_configurationresult();
+            return;
         case C::kConnectWithConfigurationAndCredentialsRequest:
-            not_served("connect with credentials", "federates on this host need none; credentials are not checked yet");
+            connect(&q.connectwithconfigurationandcredentialsrequest().credentials());
+            r.mutable_connectwithconfigurationandcredentialsresponse()->mutable_configurationresult()->set_configurationused(false);
+            return;
         case C::kDisconnectRequest:
             rti_->disconnect();
             r.mutable_disconnectresponse();
@@ -81,31 +116,31 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
         case C::kJoinFederationExecutionRequest: {
             auto const& m = q.joinfederationexecutionrequest();
             joined(rti_->joinFederationExecution(wide(m.federatetype()), wide(m.federationname())),
-                   r.mutable_joinfederationexecutionresponse()->mutable_result());
+                   m.federationname(), r.mutable_joinfederationexecutionresponse()->mutable_result());
             return;
         }
         case C::kJoinFederationExecutionWithModulesRequest: {
             auto const& m = q.joinfederationexecutionwithmodulesrequest();
             joined(rti_->joinFederationExecution(wide(m.federatetype()), wide(m.federationname()), modules(m.additionalfommodules())),
-                   r.mutable_joinfederationexecutionwithmodulesresponse()->mutable_result());
+                   m.federationname(), r.mutable_joinfederationexecutionwithmodulesresponse()->mutable_result());
             return;
         }
         case C::kJoinFederationExecutionWithNameRequest: {
             auto const& m = q.joinfederationexecutionwithnamerequest();
             joined(rti_->joinFederationExecution(wide(m.federatename()), wide(m.federatetype()), wide(m.federationname())),
-                   r.mutable_joinfederationexecutionwithnameresponse()->mutable_result());
+                   m.federationname(), r.mutable_joinfederationexecutionwithnameresponse()->mutable_result());
             return;
         }
         case C::kJoinFederationExecutionWithNameAndModulesRequest: {
             auto const& m = q.joinfederationexecutionwithnameandmodulesrequest();
             joined(rti_->joinFederationExecution(wide(m.federatename()), wide(m.federatetype()), wide(m.federationname()),
                                                  modules(m.additionalfommodules())),
-                   r.mutable_joinfederationexecutionwithnameandmodulesresponse()->mutable_result());
+                   m.federationname(), r.mutable_joinfederationexecutionwithnameandmodulesresponse()->mutable_result());
             return;
         }
         case C::kResignFederationExecutionRequest:
             rti_->resignFederationExecution(static_cast<api::ResignAction>(q.resignfederationexecutionrequest().resignaction()));
-            joined_ = false;
+            left();
             r.mutable_resignfederationexecutionresponse();
             return;
         case C::kRegisterFederationSynchronizationPointRequest: {
@@ -818,6 +853,9 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
             r.mutable_setautomaticresigndirectiveresponse();
             return;
         case C::kListFederationExecutionMembersRequest:
+            list_members(q.listfederationexecutionmembersrequest().federationname());
+            r.mutable_listfederationexecutionmembersresponse();
+            return;
         case C::kGetConveyRegionDesignatorSetsSwitchRequest:
         case C::kSetConveyRegionDesignatorSetsSwitchRequest:
         case C::kGetServiceReportingSwitchRequest:
@@ -839,17 +877,63 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
     throw api::RTIinternalError(L"RTIinternalError: a call request that names no call");
 }
 
-void HlaFederate::connect() {
+void HlaFederate::connect(pb::Credentials const* credentials) {
+    if (!password_.empty()) {
+        if (credentials && credentials->type() != kPlainTextPassword && credentials->type() != "HLAnoCredentials")
+            throw Hla4Exception("InvalidCredentials", "credentials of type '" + credentials->type() +
+                                                          "', which this RTI does not read (HLAplainTextPassword)");
+        if (!credentials || credentials->type() != kPlainTextPassword)
+            throw Hla4Exception("Unauthorized", "this RTI lets in federates with HLAplainTextPassword credentials only: the "
+                                                "gateway's secret (docs/fedpro.md)");
+        if (!same_secret(password(credentials->data()), password_))
+            throw Hla4Exception("Unauthorized", "the password is not the gateway's secret");
+    }
     rti_->connect(*this, api::HLA_IMMEDIATE, wide(gateway_));
 }
 
-void HlaFederate::joined(api::FederateHandle const& handle, pb::JoinResult* result) {
+void HlaFederate::joined(api::FederateHandle const& handle, std::string const& federation, pb::JoinResult* result) {
     joined_ = true;
+    std::string name = utf8(rti_->getFederateName(handle));  // asks the gateway, which may be asking member()
+    {
+        std::lock_guard<std::mutex> lock(member_mutex_);
+        member_ = {federation, std::move(name)};
+    }
     class_relevance_ = interaction_relevance_ = true;  // a join starts from the core's defaults
     attribute_relevance_ = attribute_scope_ = false;
     factory_ = rti_->getTimeFactory();
     put(result->mutable_federatehandle(), handle);
     result->set_logicaltimeimplementationname(utf8(factory_->getName()));
+}
+
+// HLA 4's answer is a callback: the members as the gateway's report has them (their types as they joined), or
+// that there is no such federation.
+void HlaFederate::list_members(std::string const& federation) {
+    auto* ours = dynamic_cast<rti1516e::Ambassador*>(rti_.get());
+    if (!ours) not_served("listFederationExecutionMembers", "the session's ambassador is not hlacore's");
+    std::vector<std::pair<std::wstring, std::wstring>> members;
+    if (!ours->federationMembers(wide(federation), members)) {
+        HLACORE_FEDPRO_CALLBACK(reportfederationexecutiondoesnotexist, m->set_federationname(federation));
+        return;
+    }
+    HLACORE_FEDPRO_CALLBACK(reportfederationexecutionmembers, {
+        m->set_federationname(federation);
+        for (auto const& [name, type] : members) {
+            auto* info = m->mutable_report()->add_federationexecutionmemberinformation();
+            info->set_federatename(utf8(name));
+            info->set_federatetype(utf8(type));
+        }
+    });
+}
+
+void HlaFederate::left() {
+    joined_ = false;
+    std::lock_guard<std::mutex> lock(member_mutex_);
+    member_ = {};
+}
+
+std::pair<std::string, std::string> HlaFederate::member() const {
+    std::lock_guard<std::mutex> lock(member_mutex_);
+    return member_;
 }
 
 }  // namespace hlacore::fedpro

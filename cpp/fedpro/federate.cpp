@@ -9,24 +9,45 @@
 #include <fstream>
 
 #include "fedpro/hla_federate.hpp"
+#include "fedpro/zip.hpp"
 
 namespace hlacore::fedpro {
 
-std::unique_ptr<Federate> make_federate(std::string const& gateway, std::function<void(std::string_view)> send_callback) {
-    return std::make_unique<HlaFederate>(gateway, std::move(send_callback));
+std::unique_ptr<Federate> make_federate(std::string const& gateway, std::string const& password,
+                                        std::function<void(std::string_view)> send_callback) {
+    return std::make_unique<HlaFederate>(gateway, password, std::move(send_callback));
 }
 
-HlaFederate::HlaFederate(std::string gateway, std::function<void(std::string_view)> send_callback)
-    : gateway_(std::move(gateway)), send_callback_(std::move(send_callback)), rti_(api::RTIambassadorFactory().createRTIambassador()) {}
+HlaFederate::HlaFederate(std::string gateway, std::string password, std::function<void(std::string_view)> send_callback)
+    : gateway_(std::move(gateway)), password_(std::move(password)), send_callback_(std::move(send_callback)), rti_(api::RTIambassadorFactory().createRTIambassador()) {}
 
 HlaFederate::~HlaFederate() { end(); }
+
+namespace {
+
+// The exceptions HLA 4 renamed, under their HLA 4 names: the federate's API knows those (Pitch's 1516-2010 adapter
+// maps them back).
+std::string hla4_name(std::string const& name) {
+    static const std::pair<const char*, const char*> renamed[] = {
+        {"CouldNotOpenFDD", "CouldNotOpenFOM"},
+        {"ErrorReadingFDD", "ErrorReadingFOM"},
+        {"InconsistentFDD", "InconsistentFOM"},
+        {"InvalidTransportationType", "InvalidTransportationTypeHandle"},
+        {"InvalidLocalSettingsDesignator", "ConnectionFailed"},
+    };
+    for (auto const& [old_name, new_name] : renamed)
+        if (name == old_name) return new_name;
+    return name;
+}
+
+}  // namespace
 
 std::string HlaFederate::call(std::string_view bytes_in) {
     pb::CallRequest request;
     pb::CallResponse response;
     auto fail = [&](std::string const& name, std::string const& details) {
         response.Clear();
-        response.mutable_exceptiondata()->set_exceptionname(name);
+        response.mutable_exceptiondata()->set_exceptionname(hla4_name(name));
         response.mutable_exceptiondata()->set_details(details);
     };
     if (!request.ParseFromArray(bytes_in.data(), int(bytes_in.size()))) {
@@ -34,6 +55,8 @@ std::string HlaFederate::call(std::string_view bytes_in) {
     } else {
         try {
             serve(request, response);
+        } catch (Hla4Exception const& e) {
+            fail(e.name, e.what());
         } catch (api::Exception const& e) {
             // hlacore's exceptions read "Name: what happened".
             const std::string text = utf8(e.what());
@@ -62,7 +85,7 @@ void HlaFederate::end() {
             if (joined_) rti_->resignFederationExecution(api::CANCEL_THEN_DELETE_THEN_DIVEST);
         } catch (api::Exception const&) {  // the federation is gone, or the gateway: nothing to resign from
         }
-        joined_ = false;
+        joined_ = false;  // member_ stays: the status report names the federate of an ended session
         try {
             rti_->disconnect();
         } catch (api::Exception const&) {
@@ -75,33 +98,40 @@ void HlaFederate::end() {
     }
 }
 
-// A FOM module the ambassador can read: a file's content into a file of the session's own directory (its name
-// kept, so that errors name it), a URL or path as it is.
+// A FOM module the ambassador can read: a file's content, sent as it is or compressed (a zip archive), into a file
+// of the session's own directory (its name kept, so that errors name it); a URL or path as it is.
 std::wstring HlaFederate::module(pb::FomModule const& m) {
     switch (m.fomModule_case()) {
         case pb::FomModule::kUrl:
             return wide(m.url());
-        case pb::FomModule::kFile: {
-            if (modules_dir_.empty()) {
-                std::string dir = (std::getenv("TMPDIR") ? std::string(std::getenv("TMPDIR")) : "/tmp") + "/hlacore-fedpro-XXXXXX";
-                if (!::mkdtemp(dir.data())) throw api::CouldNotOpenFDD(L"CouldNotOpenFDD: no directory for the modules sent");
-                modules_dir_ = dir;
-            }
-            std::string name = m.file().name();
-            const auto slash = name.find_last_of('/');
-            if (slash != std::string::npos) name = name.substr(slash + 1);
-            if (name.empty() || name == "." || name == "..") name = "module.xml";
-            std::string path = modules_dir_ + "/" + name;
-            for (int n = 2; ::access(path.c_str(), F_OK) == 0; ++n) path = modules_dir_ + "/" + std::to_string(n) + "-" + name;
-            std::ofstream(path, std::ios::binary) << m.file().content();
-            return wide(path);
-        }
+        case pb::FomModule::kFile:
+            return module_file(m.file().name(), m.file().content());
         case pb::FomModule::kCompressedModule:
-            throw api::CouldNotOpenFDD(L"CouldNotOpenFDD: compressed FOM modules are not read by hlacore yet; send the file");
+            try {
+                const ZippedFile file = unzip_one(m.compressedmodule(), kMaxModuleBytes);
+                return module_file(file.name, file.content);
+            } catch (BadArchive const& e) {
+                throw api::ErrorReadingFDD(wide(std::string("ErrorReadingFDD: ") + e.what()));
+            }
         case pb::FomModule::FOMMODULE_NOT_SET:
             break;
     }
     throw api::CouldNotOpenFDD(L"CouldNotOpenFDD: a FOM module that is neither a file, a URL nor compressed");
+}
+
+std::wstring HlaFederate::module_file(std::string name, std::string const& content) {
+    if (modules_dir_.empty()) {
+        std::string dir = (std::getenv("TMPDIR") ? std::string(std::getenv("TMPDIR")) : "/tmp") + "/hlacore-fedpro-XXXXXX";
+        if (!::mkdtemp(dir.data())) throw api::CouldNotOpenFDD(L"CouldNotOpenFDD: no directory for the modules sent");
+        modules_dir_ = dir;
+    }
+    const auto slash = name.find_last_of('/');
+    if (slash != std::string::npos) name = name.substr(slash + 1);
+    if (name.empty() || name == "." || name == "..") name = "module.xml";
+    std::string path = modules_dir_ + "/" + name;
+    for (int n = 2; ::access(path.c_str(), F_OK) == 0; ++n) path = modules_dir_ + "/" + std::to_string(n) + "-" + name;
+    std::ofstream(path, std::ios::binary) << content;
+    return wide(path);
 }
 
 std::vector<std::wstring> HlaFederate::modules(pb::FomModuleSet const& set) {
@@ -175,14 +205,17 @@ std::unique_ptr<api::LogicalTimeInterval> HlaFederate::interval(pb::LogicalTimeI
     }
 }
 
-// A transportation type's handle: one byte, the 1516-2010 enumerator (HLAreliable 1, HLAbestEffort 2).
+// A transportation type's handle: the 1516-2010 enumerator (HLAreliable 1, HLAbestEffort 2) as 4 big-endian bytes,
+// as Pitch's clients encode theirs (and compare ours with); one byte is taken too.
 api::TransportationType HlaFederate::transportation(pb::TransportationTypeHandle const& h) const {
-    if (h.data().size() == 1 && (h.data()[0] == api::RELIABLE || h.data()[0] == api::BEST_EFFORT))
-        return static_cast<api::TransportationType>(h.data()[0]);
+    std::string const& d = h.data();
+    const bool four = d.size() == 4 && d[0] == 0 && d[1] == 0 && d[2] == 0;
+    const char value = four ? d[3] : d.size() == 1 ? d[0] : 0;
+    if (value == api::RELIABLE || value == api::BEST_EFFORT) return static_cast<api::TransportationType>(value);
     throw api::InvalidTransportationType(L"InvalidTransportationType: not a handle of HLAreliable or HLAbestEffort");
 }
 
-void put(pb::TransportationTypeHandle* out, api::TransportationType type) { out->set_data(std::string(1, char(type))); }
+void put(pb::TransportationTypeHandle* out, api::TransportationType type) { out->set_data(std::string{0, 0, 0, char(type)}); }
 
 void put(pb::AttributeHandleSet* out, api::AttributeHandleSet const& s) {
     for (auto const& h : s) put(out->add_attributehandle(), h);

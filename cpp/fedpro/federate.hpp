@@ -14,7 +14,9 @@
 namespace hlacore::fedpro {
 
 // `gateway`: the local settings designator its ambassador connects with (address=..., secret_file=...);
+// `password`: "" or what connect's credentials must hold (HLAplainTextPassword; Unauthorized otherwise);
 // `send_callback` gets each CallbackRequest's bytes, on the ambassador's callback thread.
-std::unique_ptr<Federate> make_federate(std::string const& gateway, std::function<void(std::string_view)> send_callback);
+std::unique_ptr<Federate> make_federate(std::string const& gateway, std::string const& password,
+                                        std::function<void(std::string_view)> send_callback);
 
 }  // namespace hlacore::fedpro

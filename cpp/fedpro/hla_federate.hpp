@@ -8,6 +8,8 @@
 
 #include <functional>
 #include <memory>
+#include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -26,17 +28,24 @@ using namespace ::rti1516e;  // RTI1516E_CALLBACKS names the API's types unquali
 using rti1516e::utf8;
 using rti1516e::wide;
 
+// An exception of HLA 4 that the 1516-2010 API has no class for (Unauthorized), with the standard's name.
+struct Hla4Exception : std::runtime_error {
+    Hla4Exception(std::string name, std::string const& details) : std::runtime_error(details), name(std::move(name)) {}
+    std::string name;
+};
+
 inline api::VariableLengthData data(std::string const& bytes) { return api::VariableLengthData(bytes.data(), bytes.size()); }
 inline std::string bytes(api::VariableLengthData const& d) { return std::string(static_cast<const char*>(d.data()), d.size()); }
 
 class HlaFederate : public Federate, public api::FederateAmbassador {
 public:
-    HlaFederate(std::string gateway, std::function<void(std::string_view)> send_callback);
+    HlaFederate(std::string gateway, std::string password, std::function<void(std::string_view)> send_callback);
     ~HlaFederate() override;
 
     std::string call(std::string_view request) override;
     void answered(std::string_view response) override;
     void end() override;
+    std::pair<std::string, std::string> member() const override;
 
 #define HLACORE_FEDPRO_DECLARE(ret, name, params, qualifier) ret name params qualifier override;
     RTI1516E_CALLBACKS(HLACORE_FEDPRO_DECLARE)
@@ -45,10 +54,15 @@ public:
 private:
     // calls.cpp: the call, onto the ambassador; throws the ambassador's exceptions.
     void serve(pb::CallRequest const& request, pb::CallResponse& response);
-    void connect();
-    void joined(api::FederateHandle const& handle, pb::JoinResult* result);
+    // Connects when `credentials` (none: HLAnoCredentials) may: Unauthorized otherwise.
+    void connect(pb::Credentials const* credentials);
+    void joined(api::FederateHandle const& handle, std::string const& federation, pb::JoinResult* result);
+    void left();
+    void list_members(std::string const& federation);
     std::vector<std::wstring> modules(pb::FomModuleSet const& set);
     std::wstring module(pb::FomModule const& m);
+    std::wstring module_file(std::string name, std::string const& content);
+    static constexpr std::size_t kMaxModuleBytes = 64u << 20;  // a compressed module's file, inflated
 
     // Handles, from their encodings.
     api::FederateHandle federate(pb::FederateHandle const& h) const { return rti_->decodeFederateHandle(data(h.data())); }
@@ -79,17 +93,29 @@ private:
     // callbacks.cpp: a callback out, on the ambassador's thread.
     void send(pb::CallbackRequest const& request);
 
-    std::string gateway_;
+    std::string gateway_, password_;
     std::function<void(std::string_view)> send_callback_;
     std::unique_ptr<api::RTIambassador> rti_;
     std::unique_ptr<api::LogicalTimeFactory> factory_;
     std::string modules_dir_;  // the FOM modules sent by content, as files the ambassador reads
     bool joined_ = false;
+    mutable std::mutex member_mutex_;
+    std::pair<std::string, std::string> member_;  // the federation and the name it joined as
     // The advisory switches as this federate set them since it joined, from the core's defaults: HLA 4's getters
     // answer from them (Pitch's 1516-2010 adapter asks before each enable and disable). A federation restore that
     // brings back other values is not seen here.
     bool class_relevance_ = true, attribute_relevance_ = false, attribute_scope_ = false, interaction_relevance_ = true;
 };
+
+// A callback request of `field`, filled by the statements given (`m`: its message), sent to the federate.
+#define HLACORE_FEDPRO_CALLBACK(field, ...)  \
+    do {                                     \
+        pb::CallbackRequest request;         \
+        auto* m = request.mutable_##field(); \
+        (void)m;                             \
+        __VA_ARGS__;                         \
+        send(request);                       \
+    } while (0)
 
 // Handles and values out.
 template <class M, class H>

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <cstdio>
+#include <deque>
 #include <list>
 #include <map>
 #include <mutex>
@@ -16,16 +17,51 @@
 
 #include "fedpro/federate.hpp"
 #include "rti/net/listen.hpp"
+#include "rti/wire/json.hpp"
 
 namespace hlacore::fedpro {
 
 namespace {
 
 constexpr std::chrono::milliseconds kHandshakeIdle{10000};  // a connection that says nothing for this long is closed
+constexpr std::size_t kEndedKept = 32;
 
 }  // namespace
 
-void parse_listen_address(std::string const& text, ServerOptions& options) {
+const char* name(Transport transport) {
+    switch (transport) {
+        case Transport::Tcp: return "tcp";
+        case Transport::Tls: return "tls";
+        case Transport::WebSocket: return "websocket";
+        case Transport::WebSocketSecure: return "websocketsecure";
+    }
+    return "?";
+}
+
+std::uint16_t default_port(Transport transport) {
+    switch (transport) {
+        case Transport::Tcp: return kDefaultPort;
+        case Transport::Tls: return 15165;
+        case Transport::WebSocket: return 80;
+        case Transport::WebSocketSecure: return 443;
+    }
+    return kDefaultPort;
+}
+
+void parse_listen_address(std::string const& given, ServerOptions& options) {
+    std::string text = given;
+    options.transport = Transport::Tcp;
+    if (const auto scheme = text.find("://"); scheme != std::string::npos) {
+        const std::string protocol = text.substr(0, scheme);
+        if (protocol == "tcp") options.transport = Transport::Tcp;
+        else if (protocol == "tls") options.transport = Transport::Tls;
+        else if (protocol == "websocket" || protocol == "ws") options.transport = Transport::WebSocket;
+        else if (protocol == "websocketsecure" || protocol == "wss") options.transport = Transport::WebSocketSecure;
+        else
+            throw std::invalid_argument("'" + protocol + "' is not a transport of the Federate Protocol (tcp, tls, websocket, websocketsecure)");
+        text = text.substr(scheme + 3);
+    }
+    options.port = default_port(options.transport);
     const auto colon = text.rfind(':');
     std::string host = colon == std::string::npos ? text : text.substr(0, colon);
     if (!host.empty()) options.host = host;
@@ -34,17 +70,8 @@ void parse_listen_address(std::string const& text, ServerOptions& options) {
     char* end = nullptr;
     const long n = std::strtol(port.c_str(), &end, 10);
     if (port.empty() || *end != '\0' || n < 0 || n > 65535)
-        throw std::invalid_argument("'" + text + "' is not HOST:PORT (the Federate Protocol's address)");
+        throw std::invalid_argument("'" + given + "' is not [PROTOCOL://]HOST:PORT (the Federate Protocol's address)");
     options.port = std::uint16_t(n);
-}
-
-std::unique_ptr<Server> open_door(std::string const& listen, std::string const& gateway, std::string const& secret_file,
-                                  double resume_timeout_s) {
-    ServerOptions options;
-    parse_listen_address(listen, options);
-    options.limits.resume_timeout = std::chrono::milliseconds(static_cast<long long>(resume_timeout_s * 1000));
-    options.gateway = "address=" + gateway + (secret_file.empty() ? "" : "\nsecret_file=" + secret_file);
-    return std::make_unique<Server>(options);
 }
 
 PrivateSocket::PrivateSocket() {
@@ -62,6 +89,7 @@ PrivateSocket::~PrivateSocket() {
 
 struct Server::Impl {
     ServerOptions options;
+    tls::Context tls;  // for Tls and WebSocketSecure
     int listen_fd = -1;
     std::uint16_t port = 0;
     std::atomic<bool> stopping{false};
@@ -74,13 +102,14 @@ struct Server::Impl {
         std::atomic<bool> done{false};
     };
     std::list<Connection> connections;
+    std::deque<std::string> ended;  // the last sessions that ended, as the status report shows them
     std::mt19937_64 ids{std::random_device{}()};
 
     void accept_loop() {
         while (!stopping) {
             pollfd p{listen_fd, POLLIN, 0};
             if (::poll(&p, 1, 200) <= 0) continue;
-            const int fd = ::accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC);
+            const int fd = ::accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC | SOCK_NONBLOCK);
             if (fd < 0) continue;
             // A call's response is small and awaited; a peer gone without a word is found by keepalive, and its
             // session is then dropped, waiting for a resume.
@@ -94,24 +123,42 @@ struct Server::Impl {
         }
     }
 
+    // The connection's transport, its handshakes made; none when they failed.
+    std::shared_ptr<Stream> stream_of(int fd) {
+        const Transport t = options.transport;
+        std::unique_ptr<Stream> stream;
+        if (t == Transport::Tls || t == Transport::WebSocketSecure) {
+            auto secure = std::make_unique<TlsStream>(fd, tls.get());
+            if (!secure->handshake(stopping, kHandshakeIdle)) return nullptr;
+            stream = std::move(secure);
+        } else {
+            stream = std::make_unique<SocketStream>(fd);
+        }
+        if (t == Transport::WebSocket || t == Transport::WebSocketSecure) {
+            auto web = std::make_unique<WebSocketStream>(std::move(stream), options.limits.max_message);
+            if (!web->handshake(stopping, kHandshakeIdle)) return nullptr;
+            stream = std::move(web);
+        }
+        return stream;
+    }
+
     // A new connection: a new session, or a resume of one.
     void handle(int fd) {
         Header h;
         std::string payload;
         std::shared_ptr<Session> session;
+        std::shared_ptr<Stream> stream;
         try {
-            if (!read_message(fd, options.limits.max_message, stopping, h, payload, kHandshakeIdle)) {
-                ::close(fd);
-                return;
-            }
+            stream = stream_of(fd);
+            if (!stream || !read_message(*stream, options.limits.max_message, stopping, h, payload, kHandshakeIdle)) return;
             if (h.type == MessageType::NewSession) {
-                session = open(fd, payload_u32(payload, 0));
+                session = open(*stream, payload_u32(payload, 0));
             } else if (h.type == MessageType::ResumeRequest) {
                 session = find(h.session);
                 if (!session)
-                    write_all(fd, SessionState(h.session).first_frame(MessageType::ResumeStatus, u32s({kInvalidSession, kNoSequence})),
-                              std::chrono::milliseconds(1000));
-                else if (!session->resume(fd, payload_u32(payload, 0)))  // it answered why
+                    stream->write_all(SessionState(h.session).first_frame(MessageType::ResumeStatus, u32s({kInvalidSession, kNoSequence})),
+                                      std::chrono::milliseconds(1000));
+                else if (!session->resume(stream, payload_u32(payload, 0)))  // it answered why
                     session.reset();
             } else {
                 throw BadMessage(std::string("a ") + name(h.type) + " before a session");
@@ -121,13 +168,10 @@ struct Server::Impl {
         } catch (std::exception const& e) {
             std::fprintf(stderr, "fedpro: a connection closed: %s\n", e.what());
         }
-        if (session)
-            session->serve(fd);
-        else
-            ::close(fd);
+        if (session) session->serve(std::move(stream));
     }
 
-    std::shared_ptr<Session> open(int fd, std::uint32_t version) {
+    std::shared_ptr<Session> open(Stream& stream, std::uint32_t version) {
         std::uint64_t id = 0;
         {
             std::lock_guard<std::mutex> lock(mutex);
@@ -135,14 +179,15 @@ struct Server::Impl {
         }
         SessionState status_of(id);
         if (version != kProtocolVersion) {
-            write_all(fd, SessionState(0).first_frame(MessageType::NewSessionStatus, u32s({kUnsupportedVersion})),
-                      std::chrono::milliseconds(1000));
+            stream.write_all(SessionState(0).first_frame(MessageType::NewSessionStatus, u32s({kUnsupportedVersion})),
+                             std::chrono::milliseconds(1000));
             return nullptr;
         }
         auto session = std::make_shared<Session>(id, options.limits);
         Session* raw = session.get();
-        session->set_federate(make_federate(options.gateway, [raw](std::string_view callback) { raw->send_callback(callback); }));
-        if (!write_all(fd, status_of.first_frame(MessageType::NewSessionStatus, u32s({kSessionOk})), std::chrono::milliseconds(1000)))
+        session->set_federate(
+            make_federate(options.gateway, options.password, [raw](std::string_view callback) { raw->send_callback(callback); }));
+        if (!stream.write_all(status_of.first_frame(MessageType::NewSessionStatus, u32s({kSessionOk})), std::chrono::milliseconds(1000)))
             return nullptr;
         std::lock_guard<std::mutex> lock(mutex);
         sessions[id] = session;
@@ -155,7 +200,8 @@ struct Server::Impl {
         return it == sessions.end() ? nullptr : it->second;
     }
 
-    // Ends the sessions dropped for too long, joins the connections' finished threads.
+    // Ends the sessions dropped for too long and forgets those ended (keeping their last status), joins the
+    // connections' finished threads.
     void housekeeping_loop() {
         while (!stopping) {
             std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -164,24 +210,26 @@ struct Server::Impl {
             std::list<Connection> finished;
             {
                 std::lock_guard<std::mutex> lock(mutex);
-                for (auto it = sessions.begin(); it != sessions.end();) {
-                    if (it->second->expired(now)) {
-                        expired.push_back(it->second);
-                        it = sessions.erase(it);
-                    } else {
-                        ++it;
-                    }
-                }
+                for (auto const& [id, session] : sessions)
+                    if (session->expired(now)) expired.push_back(session);
                 for (auto it = connections.begin(); it != connections.end();) {
                     auto here = it++;
                     if (here->done) finished.splice(finished.end(), connections, here);
                 }
             }
             for (auto& s : expired) {
-                if (!s->ended())
+                if (!s->ended()) {
                     std::fprintf(stderr, "fedpro: session %llu not resumed in time: its federate resigns\n",
                                  (unsigned long long)s->id());
-                s->end(false);
+                    char why[64];
+                    std::snprintf(why, sizeof why, "not resumed within %g s",
+                                  std::chrono::duration<double>(options.limits.resume_timeout).count());
+                    s->end(false, why);
+                }
+                std::lock_guard<std::mutex> lock(mutex);  // from open to ended at once, for the status report
+                sessions.erase(s->id());
+                ended.push_back(s->status_json(now));
+                if (ended.size() > kEndedKept) ended.pop_front();
             }
             for (auto& c : finished) c.thread.join();
         }
@@ -191,10 +239,25 @@ struct Server::Impl {
 Server::Server(ServerOptions options) : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.options = std::move(options);
-    if (!net::is_loopback(m.options.host))
-        throw std::invalid_argument("the Federate Protocol listens on loopback only for now (" + m.options.host +
-                                    " asked): federates beyond this host need credentials, which are not checked yet");
-    if (m.options.gateway.empty()) throw std::invalid_argument("the Federate Protocol's server needs the gateway's address");
+    const ServerOptions& o = m.options;
+    const bool secure = o.transport == Transport::Tls || o.transport == Transport::WebSocketSecure;
+    if (!net::is_loopback(o.host) && !o.anyone_beyond_loopback) {
+        if (o.password.empty())
+            throw std::invalid_argument("the Federate Protocol's door on " + o.host + ", beyond this machine, needs the gateway's "
+                                        "secret (--secret-file FILE: federates connect with it as HLAplainTextPassword "
+                                        "credentials), or --no-secret to let in anyone who reaches the port");
+        if (!secure)
+            throw std::invalid_argument("the Federate Protocol's door on " + o.host + ", beyond this machine, takes the "
+                                        "gateway's secret as a password: over tls:// or websocketsecure:// only, so that it "
+                                        "does not cross the network in clear");
+    }
+    if (secure) {
+        if (o.tls_cert.empty())
+            throw std::invalid_argument(std::string("the Federate Protocol over ") + name(o.transport) +
+                                        " needs the gateway's certificate: --tls-cert FILE --tls-key FILE");
+        m.tls = tls::server_context(o.tls_cert, o.tls_key);  // std::runtime_error saying why not
+    }
+    if (o.gateway.empty()) throw std::invalid_argument("the Federate Protocol's server needs the gateway's address");
     const net::Listening listening = net::listen_tcp(m.options.host, m.options.port, SOCK_CLOEXEC);
     m.listen_fd = listening.fd;
     m.port = listening.port;
@@ -205,6 +268,28 @@ Server::Server(ServerOptions options) : impl_(std::make_unique<Impl>()) {
 Server::~Server() { stop(); }
 
 std::uint16_t Server::port() const { return impl_->port; }
+Transport Server::transport() const { return impl_->options.transport; }
+
+std::string Server::status_json() const {
+    Impl& m = *impl_;
+    const auto now = std::chrono::steady_clock::now();
+    std::string json = "\"fedpro\":{\"address\":";
+    json_string(json, address());
+    json += std::string(",\"transport\":\"") + name(m.options.transport) + "\",\"sessions\":[";
+    std::lock_guard<std::mutex> lock(m.mutex);
+    bool first = true;
+    for (auto const& entry : m.ended) {
+        json += first ? "" : ",";
+        json += entry;
+        first = false;
+    }
+    for (auto const& [id, session] : m.sessions) {
+        json += first ? "" : ",";
+        json += session->status_json(now);
+        first = false;
+    }
+    return json + "]}";
+}
 std::string Server::address() const { return impl_->options.host + ":" + std::to_string(impl_->port); }
 
 void Server::stop() {
@@ -217,7 +302,7 @@ void Server::stop() {
         std::lock_guard<std::mutex> lock(m.mutex);
         sessions.swap(m.sessions);
     }
-    for (auto& [id, s] : sessions) s->end(true);
+    for (auto& [id, s] : sessions) s->end(true, "the gateway stopped");
     for (auto& c : m.connections) c.thread.join();  // each sees `stopping` or its session's end
     m.connections.clear();
     ::close(m.listen_fd);

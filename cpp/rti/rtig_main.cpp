@@ -176,10 +176,13 @@ int main(int argc, char** argv) {
         std::signal(SIGPIPE, SIG_IGN);
         std::unique_ptr<hlacore::fedpro::Server> fedpro;
         if (!options.fedpro.empty())
-            fedpro = hlacore::fedpro::open_door(options.fedpro, "unix:" + options.unix_path, options.secret_file,
-                                                options.fedpro_resume_timeout_s);
+            fedpro = hlacore::fedpro::open_door(options, "unix:" + options.unix_path, command.no_secret);
         std::string also = asked_unix.empty() ? "" : " and unix:" + asked_unix;
-        if (fedpro) also += ", the Federate Protocol on " + fedpro->address();
+        if (fedpro) {
+            gateway.add_status_section([door = fedpro.get()] { return door->status_json(); });
+            also += ", the Federate Protocol on " + fedpro->address();
+            if (fedpro->transport() != hlacore::fedpro::Transport::Tcp) also += std::string(" (") + name(fedpro->transport()) + ")";
+        }
         std::printf("rtig listening on %s:%u%s\n", gateway.host().c_str(), static_cast<unsigned>(gateway.port()), also.c_str());
         std::fflush(stdout);
         if (fedpro) {

@@ -136,6 +136,9 @@ public:
 
     // Delivers one callback (callbacks.cpp): the layer's own first, then the gateway's. False when none was queued.
     bool deliver_one();
+    // Not of IEEE 1516-2010: HLA 4's listFederationExecutionMembers, for the Federate Protocol's door. Each federate
+    // of `federation` as (name, type), from the gateway's report; false when there is no such federation.
+    bool federationMembers(std::wstring const& federation, std::vector<std::pair<std::wstring, std::wstring>>& members);
 
 private:
     Client& client() const;  // NotConnected

@@ -184,7 +184,7 @@ FederateHandle Ambassador::joinFederationExecution(std::wstring const& type, std
     return joinFederationExecution(wide(name.str()), type, federation, modules);
 }
 
-FederateHandle Ambassador::joinFederationExecution(std::wstring const& name, std::wstring const& /*type*/,
+FederateHandle Ambassador::joinFederationExecution(std::wstring const& name, std::wstring const& type,
                                                    std::wstring const& federation,
                                                    std::vector<std::wstring> const& modules) {
     return guarded([&] {
@@ -195,7 +195,7 @@ FederateHandle Ambassador::joinFederationExecution(std::wstring const& name, std
         std::lock_guard<std::recursive_mutex> lock(mu_);
         std::uint32_t handle = 0;
         try {
-            handle = client().join(utf8(name), utf8(federation), added.empty() ? "" : fom::bundle(added));
+            handle = client().join(utf8(name), utf8(federation), added.empty() ? "" : fom::bundle(added), utf8(type));
         } catch (const RtiError& e) {
             if (e.code() != ErrorCode::FederateAlreadyExecutionMember) throw;
             raise(joined_ ? "FederateAlreadyExecutionMember" : "FederateNameAlreadyInUse", e.what());

@@ -58,6 +58,21 @@ JsonValue Ambassador::federation() const {
     raise("FederateNotExecutionMember", "not in the gateway's report");
 }
 
+bool Ambassador::federationMembers(std::wstring const& federation, std::vector<std::pair<std::wstring, std::wstring>>& members) {
+    return guarded([&] {
+        const JsonValue all = report();
+        for (const auto& f : list(all, "federations")) {
+            if (f.at("name").text != utf8(federation)) continue;
+            for (const auto& member : list(f, "federates")) {
+                const JsonValue* type = member.find("type");
+                members.emplace_back(wide(member.at("name").text), wide(type ? type->text : ""));
+            }
+            return true;
+        }
+        return false;
+    });
+}
+
 void Ambassador::listFederationExecutions() {
     guarded([&] {
         FederationExecutionInformationVector found;

@@ -20,6 +20,8 @@ nitpicky = True
 nitpick_ignore = [
     # The standard library's classes in annotations. Nothing documents them here: intersphinx would need
     # docs.python.org's inventory, and the build must work offline (CI has no network).
+    ("py:class", "ssl.SSLContext"),
+    ("py:class", "ssl.SSLSocket"),
     ("py:class", "collections.abc.Iterable"),
     ("py:class", "collections.abc.Mapping"),
     ("py:class", "collections.abc.Sequence"),

@@ -94,12 +94,14 @@ class Gateway:
 
     @property
     def fedpro_address(self) -> Optional[str]:
-        """``"host:port"`` of the HLA 4 Federate Protocol's door when constructed with ``fedpro="HOST:PORT"``
-        (the port picked, for port 0), as :class:`hlacore.fedpro.RTIambassador` takes it; else None."""
+        """``"host:port"`` of the HLA 4 Federate Protocol's door when constructed with
+        ``fedpro="[PROTOCOL://]HOST:PORT"`` (the port picked, for port 0), as :class:`hlacore.fedpro.RTIambassador`
+        takes it; else None."""
         port = int(self._gateway.fedpro_port)
         if not port:
             return None
-        host = self._fedpro.rpartition(":")[0] if self._fedpro and ":" in self._fedpro else ""
+        spec = (self._fedpro or "").split("://")[-1]
+        host = spec.rpartition(":")[0] if ":" in spec else spec
         return f"{host or '127.0.0.1'}:{port}"
 
     @property

@@ -159,7 +159,7 @@ class Rtig:
         except RuntimeError:
             self.child.close()
             raise
-        match = re.fullmatch(r"rtig listening on (\S+):(\d+)(?: and (unix:[^,]+))?(?:, the Federate Protocol on (\S+))?",
+        match = re.fullmatch(r"rtig listening on (\S+):(\d+)(?: and (unix:[^,]+))?(?:, the Federate Protocol on (\S+)(?: \((\w+)\))?)?",
                              line)
         if not match:
             self.child.close()
@@ -168,6 +168,8 @@ class Rtig:
         self.address = f"{self.host}:{self.port}"
         self.unix_address: Optional[str] = match.group(3)  # with --unix PATH: "unix:PATH"
         self.fedpro_address: Optional[str] = match.group(4)  # with --fedpro HOST:PORT: "host:port"
+        # With --fedpro: its transport ("tcp", "tls", "websocket", "websocketsecure").
+        self.fedpro_protocol: Optional[str] = (match.group(5) or "tcp") if match.group(4) else None
         self._final_log: Optional[str] = None
 
     @property

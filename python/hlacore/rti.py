@@ -411,9 +411,11 @@ class RTIAmbassador(_core.RTIAmbassadorBase):
         """
         return self._join_with(yourName, executionName, federateAmbassadorReference)
 
-    def _join_with(self, name: str, execution: str, ambassador: Any, fom_modules: str = "") -> FederateHandle:
-        """joinFederationExecution, with FOM modules added to the federation's (a bundle; hlacore.rti1516e)."""
-        handle = self._join(name, execution, fom_modules)
+    def _join_with(self, name: str, execution: str, ambassador: Any, fom_modules: str = "",
+                   federate_type: str = "") -> FederateHandle:
+        """joinFederationExecution, with FOM modules added to the federation's (a bundle) and the federate's type
+        (hlacore.rti1516e)."""
+        handle = self._join(name, execution, fom_modules, federate_type)
         self._federate_ambassador = ambassador
         return handle
 

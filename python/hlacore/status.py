@@ -26,22 +26,26 @@ def status(address: Optional[str] = None, secret_file: Optional[str | os.PathLik
     """The gateway's report as a dict; ``address`` as for :class:`hlacore.rti.RTIAmbassador`.
 
     ``{"server", "address", "tls", "connections", "federations": [{"name", "fed", "objects", "sync_points",
-    "federates": [{"handle", "name", "time", "lookahead", "regulating", "enabling_regulation", "constrained",
+    "federates": [{"handle", "name", "type", "time", "lookahead", "regulating", "enabling_regulation", "constrained",
     "asynchronous_delivery", "pending": None | {"request": "TAR"|"TARA"|"NER"|"NERA"|"FQR", "time"},
     "queued_tso", "queued_ro", "regions", "lbts", "output_bound", "updates_sent", "interactions_sent",
     "grants", "backlog": {"memory", "disk"}}], "save_restore", "instances"}], "spill": {"directory", "budget",
     "used"}, "datagrams": {"port" (None: no datagrams), "max_datagram",
     "stray", "federates": [{"federation", "federate", "path", "counts": {"sent", "send_failed", "oversize",
     "received", "lost", "reordered", "duplicates", "held_back", "early"}}]}, "process": {"pid", "rss_bytes",
-    "cpu_seconds"}, "events": [{"sequence", "time", "kind", "federation", "federate", "name", "reason"}],
-    "last_event"}``
-    ("tls": whether every connection is encrypted, docs/networking.md; "regions": how many the federate has,
+    "cpu_seconds"}, "fedpro": {"address", "transport", "sessions": [{"id", "federation", "federate", "state",
+    "dropped_seconds", "kept_bytes", "resumes", "reason"}]}, "events": [{"sequence", "time", "kind",
+    "federation", "federate", "name", "reason"}], "last_event"}``
+    ("tls": whether every connection is encrypted, docs/networking.md; "type": the federate type it joined with,
+    "" for an HLA 1.3 federate; "regions": how many the federate has,
     docs/ddm.md; "datagrams": best effort over UDP, docs/networking.md, sent/failed/oversize towards each
     federate and received/lost/reordered from it). On the wire infinite times are null; here they are
     ``math.inf`` (``output_bound`` is inf for a federate that is not regulating). A pending request also has
     ``"waiting"``, the seconds since it came. "backlog" is what the gateway holds for the federate in memory
     and has spilled to disk (it is not reading: paused, or slower than its publishers; docs/robustness.md),
-    "spill" the spill files' directory, disk budget and use. "process" is the gateway's process (an in-process gateway's is
+    "spill" the spill files' directory, disk budget and use. "fedpro", only for a gateway with the HLA 4 Federate
+    Protocol's door (docs/fedpro.md), lists its sessions open ("connected", or "dropped" for "dropped_seconds"
+    waiting for a resume, "kept_bytes" held to send again) and the last 32 that "ended", with their "reason". "process" is the gateway's process (an in-process gateway's is
     the program that runs it); "events" is the gateway's log of its last 256 federations "created" and
     "destroyed" and federates "joined", "resigned" and "dropped" (with the reason), numbered up to
     "last_event", with their Unix "time". A gateway with a

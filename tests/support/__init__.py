@@ -11,6 +11,7 @@ import contextlib
 import os
 import pathlib
 import re
+import subprocess
 import sys
 import time
 from typing import Any, Callable, Iterator, Optional, Sequence
@@ -338,3 +339,14 @@ def peer_says(peer: Child) -> dict[str, Any]:
 def lockstep_peers(conductor: Conductor, steps: int, count: int, *flags: str) -> dict[str, list[str]]:
     """The arguments of `count` tests/peers/lockstep.py peers, p0, p1, ..., for Conductor.start."""
     return {f"p{i}": [conductor.address, f"p{i}", str(steps), str(count), *flags] for i in range(count)}
+
+
+def make_certificate(directory: pathlib.Path, name: str, subject_alt_name: str) -> tuple[pathlib.Path, pathlib.Path]:
+    """A self-signed certificate and its key (readable by its owner only) for `subject_alt_name` ("IP:127.0.0.1"),
+    made by the `openssl` command, valid two days."""
+    cert, key = directory / f"{name}.pem", directory / f"{name}.key"
+    subprocess.run(["openssl", "req", "-x509", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes",
+                    "-keyout", str(key), "-out", str(cert), "-days", "2", "-subj", f"/CN=hlacore test {name}",
+                    "-addext", f"subjectAltName={subject_alt_name}"], check=True, capture_output=True)
+    key.chmod(0o600)
+    return cert, key

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import pathlib
+import struct
 import time
 from typing import Any, Callable, Iterator
 
@@ -16,9 +17,10 @@ from .rti1516e import Federate
 
 
 @contextlib.contextmanager
-def door(tmp_path: pathlib.Path, *args: str) -> Iterator[RtigProcess]:
-    """The rtig under test with the Federate Protocol's door on a free loopback port (`fedpro_address`)."""
-    with running_rtig(tmp_path, "--fedpro", "127.0.0.1:0", *args) as server:
+def door(tmp_path: pathlib.Path, *args: str, address: str = "127.0.0.1:0") -> Iterator[RtigProcess]:
+    """The rtig under test with the Federate Protocol's door at `address`, by default on a free loopback port
+    (`fedpro_address`)."""
+    with running_rtig(tmp_path, "--fedpro", address, *args) as server:
         yield server
 
 
@@ -72,3 +74,27 @@ class Pair:
         self.theirs = other.rtia.registerObjectInstance(o_vehicle)
         until(rtia, lambda: bool(amb.named("discoverObjectInstance")))
         other.until(lambda: bool(other.amb.named("discoverObjectInstance")))
+
+    def lockstep(self, rtia: fedpro.RTIambassador, amb: Calls, steps: int,
+                 between: Callable[[int], None] = lambda step: None) -> None:
+        """`steps` timestamped steps: at each, both update their vehicle's position (the step number) at the step's
+        time and ask to advance to it; `between(step)` runs after the native federate's request and before the
+        FedPro federate's (to cut its connection there). Then checks that the FedPro federate got each grant and
+        each of the other's updates once, in order, and the other each of its updates once."""
+        other = self.other
+        for step in range(1, steps + 1):
+            rtia.updateAttributeValues(objectInstance=self.mine, attributeValues={self.position.data: struct.pack(">I", step)},
+                                       userSuppliedTag=b"", time=float(step))
+            other.rtia.updateAttributeValues(self.theirs, {self.o_position: struct.pack(">I", step)}, b"", float(step))
+            other.rtia.timeAdvanceRequest(float(step))
+            between(step)
+            rtia.timeAdvanceRequest(time=float(step))
+            until(rtia, lambda: len(amb.named("timeAdvanceGrant")) >= step)
+            other.until(lambda: len(other.amb.named("timeAdvanceGrant")) == step)
+        grants = [fedpro.time_value(m.time) for m in amb.named("timeAdvanceGrant")]
+        assert grants == [float(s) for s in range(1, steps + 1)], "each grant once"
+        reflected = [struct.unpack(">I", fedpro.handle_values(m.attributeValues)[self.position.data])[0]
+                     for m in amb.named("reflectAttributeValuesWithTime")]
+        assert reflected == list(range(1, steps + 1)), "each of the other's updates once, in order"
+        theirs_seen = [struct.unpack(">I", list(args[1].values())[0])[0] for args in other.amb.named("reflectAttributeValues")]
+        assert theirs_seen == list(range(1, steps + 1)), "each of the FedPro federate's updates once"

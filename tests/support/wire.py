@@ -181,7 +181,7 @@ class RawClient:
 
     def join(self, federate: str, federation: str = "TestFed") -> int:
         self.handshake()
-        reply = self.call("JoinFederation", string(federate) + string(federation) + string("") + string(""))
+        reply = self.call("JoinFederation", string(federate) + string(federation) + string("") + string("") + string(""))
         assert reply.error == 0, reply.message
         return reply.handle
 

@@ -29,9 +29,11 @@ SEEDS = {
     "datagram": [FUZZ / "corpus" / "wire"],
     "certi": [FUZZ / "corpus" / "certi"],
     "fedpro": [FUZZ / "corpus" / "fedpro"],
+    "websocket": [FUZZ / "corpus" / "websocket"],
+    "zip": [FUZZ / "corpus" / "zip"],
 }
 OPTIONS = {"wire": [], "fed": [f"-dict={FUZZ / 'fed.dict'}"], "omt": [], "json": [], "gateway": [], "datagram": [],
-           "certi": [], "fedpro": []}
+           "certi": [], "fedpro": [], "websocket": [], "zip": []}
 TARGETS = list(SEEDS)
 FAILURE = re.compile(r"ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:|deadly signal|SUMMARY:")
 
@@ -50,7 +52,7 @@ def fuzzer(target: str) -> pathlib.Path:
 def seed_dirs(target: str) -> list[pathlib.Path]:
     """The committed seeds, plus for the wire targets a sample frame of every message, which
     scripts/fuzz.sh has wire_seeds write next to the fuzzers."""
-    if target in ("fed", "omt", "json", "certi", "fedpro"):
+    if target in ("fed", "omt", "json", "certi", "fedpro", "websocket", "zip"):
         return SEEDS[target]
     return [*SEEDS[target], fuzzer(target).parent / "seeds-wire"]
 

@@ -286,3 +286,37 @@ def test_the_page_keeps_up_with_two_hundred_federates(browser: Any) -> None:
             for member in members:
                 member.resignFederationExecution(rti.ResignAction.NoAction)
             creator.destroyFederationExecution("TestFed")
+
+
+def test_the_page_shows_a_federate_protocol_session_connected_dropped_then_ended(browser: Any) -> None:
+    """The door's sessions (hlacore.Gateway(fedpro=...)): a FedPro federate's session is shown connected with its
+    federate's name; its link cut for good, dropped and waiting for a resume; after the resume timeout, ended
+    with the reason, while its federate leaves the federation's table."""
+    from hlacore import fedpro
+    from hlacore.link import Link
+
+    from support.fedpro import Calls
+    from support.rti1516e import VEHICLES
+
+    with hlacore.Gateway(port=0, fedpro="127.0.0.1:0", fedpro_resume_timeout=1.0) as gateway:
+        host, _, port = str(gateway.fedpro_address).rpartition(":")
+        link = Link(("127.0.0.1", 0), (host, int(port)))
+        rtia = fedpro.RTIambassador(link.address, resume_timeout=0.5)
+        try:
+            rtia.connect(Calls())
+            rtia.createFederationExecutionWithModules(federationName="Road", fomModules=[VEHICLES])
+            rtia.joinFederationExecution(federateName="remote", federateType="fedpro", federationName="Road")
+            with gateway.monitor(interval=0.1) as monitor:
+                browser.get(monitor.url)
+                sessions = lambda: page_texts(browser, "#fedpro tbody tr")  # noqa: E731
+                row = wait_for(lambda: [r for r in sessions() if "remote of 'Road'" in r and "connected" in r], 20,
+                               "the session, connected")
+                assert "tcp on " + str(gateway.fedpro_address) in page_texts(browser, "#fedpro-door")[0], row
+                link.close()  # gone for good: the client cannot resume
+                wait_for(lambda: [r for r in sessions() if "waiting for a resume" in r], 20, "the session, dropped")
+                wait_for(lambda: [r for r in sessions() if "ended: not resumed within 1 s" in r], 20, "the session, ended")
+                wait_for(lambda: "remote" not in [row["name"] for row in federate_rows(browser)], 20,
+                         "its federate gone from the federation's table")
+        finally:
+            rtia.close(timeout=1.0)
+            link.close()

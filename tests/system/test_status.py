@@ -46,7 +46,7 @@ def test_status_reports_each_federates_time_state(inprocess_gateway: hlacore.Gat
     waited = alpha["pending"].pop("waiting")  # seconds since the request
     assert 0 <= waited < 5
     assert alpha == {
-        "handle": 1, "name": "alpha", "time": 0.0, "lookahead": 1.0, "regulating": True,
+        "handle": 1, "name": "alpha", "type": "", "time": 0.0, "lookahead": 1.0, "regulating": True,
         "enabling_regulation": False, "constrained": True,
         "asynchronous_delivery": False, "pending": {"request": "TAR", "time": 3.0},
         "held_by": [{"handle": 2, "name": "beta", "output_bound": 2.0}], "queued_tso": 0,

@@ -233,7 +233,7 @@ def test_a_federation_proof_is_bound_to_its_connection_action_and_federation(
         second.handshake()
         assert len(first.nonce) == 32 and first.nonce != second.nonce
         def join(client: RawClient, name: str, signed: bytes) -> Answer:  # no FOM modules added
-            return client.call("JoinFederation", string(name) + string("Lab") + string(signed) + string(""))
+            return client.call("JoinFederation", string(name) + string("Lab") + string(signed) + string("") + string(""))
 
         joined = join(first, "first", proof(first.nonce, "join"))
         assert joined.error == 0, joined.message

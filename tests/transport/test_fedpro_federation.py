@@ -4,17 +4,19 @@ FOM modules sent by content, updates and interactions both ways, a 1 000-step ti
 
 from __future__ import annotations
 
+import io
 import pathlib
 import struct
 import time
+import zipfile
 from typing import Any, Iterator
 
 import pytest
 
 import hlacore.rti as rti13
 from hlacore import fedpro
+from hlacore.fedpro._proto import datatypes_pb2
 
-from support import secret_file
 from support.fedpro import Calls, Pair, until
 from support.fedpro import door as fedpro_door
 from support.rti1516e import VEHICLES, Federate
@@ -154,18 +156,70 @@ def test_a_thousand_step_timestamped_lockstep_with_a_1516e_federate(door: Any) -
         rtia.close()
 
 
-def test_the_door_of_a_gateway_with_a_secret(tmp_path: pathlib.Path) -> None:
-    """The door's federates reach a gateway that asks for a secret through a Unix socket of their own, proving
-    the secret (the local settings designator "address=unix:PATH\\nsecret_file=FILE" of the 1516-2010 API); a
-    federate of hlacore's own protocol still needs it."""
-    secret = secret_file(tmp_path, "correct horse battery staple")
-    with fedpro_door(tmp_path, "--secret-file", str(secret)) as server:
-        rtia, amb = fedpro_federate(server.fedpro_address, "inside", create=True)
-        try:
-            assert rtia.getFederateName(federate=rtia.getFederateHandle(federateName="inside")) == "inside"
-            with pytest.raises(rti13.AuthenticationFailed):
-                rti13.RTIAmbassador(server.address)
-        finally:
-            rtia.resignFederationExecution(resignAction="NO_ACTION")
-            rtia.destroyFederationExecution(federationName="Road")
-            rtia.close()
+def test_list_federation_execution_members_names_each_federate_and_its_type(door: Any) -> None:
+    """HLA 4's listFederationExecutionMembers: the members of a federation as they joined, through any API (a 1.3
+    federate has no type), or that the federation does not exist; each a callback."""
+    rtia, amb = fedpro_federate(door.fedpro_address, "car", create=True)
+    other = Federate(door.address)
+    other.rtia.joinFederationExecution("truck", "Lorry", "Road")
+    hla13 = rti13.RTIAmbassador(door.address)
+    hla13.joinFederationExecution("bus", "Road", _Hla13Recorder())
+    try:
+        rtia.listFederationExecutionMembers(federationName="Road")
+        until(rtia, lambda: bool(amb.named("reportFederationExecutionMembers")))
+        [report] = amb.named("reportFederationExecutionMembers")
+        members = {(m.federateName, m.federateType) for m in report.report.federationExecutionMemberInformation}
+        assert report.federationName == "Road"
+        assert members == {("car", "fedpro"), ("truck", "Lorry"), ("bus", "")}
+        rtia.listFederationExecutionMembers(federationName="Nowhere")
+        until(rtia, lambda: bool(amb.named("reportFederationExecutionDoesNotExist")))
+        assert [m.federationName for m in amb.named("reportFederationExecutionDoesNotExist")] == ["Nowhere"]
+    finally:
+        hla13.resignFederationExecution(rti13.ResignAction.NoAction)
+        other.close()
+        rtia.resignFederationExecution(resignAction="NO_ACTION")
+        rtia.destroyFederationExecution(federationName="Road")
+        rtia.close()
+
+
+def java_style_zip(name: str, content: bytes) -> bytes:
+    """A zip archive of one deflated file written as Java's ZipOutputStream writes it, to a stream it cannot seek:
+    the sizes and CRC after the data (a data descriptor) and in the central directory only."""
+
+    class Unseekable(io.RawIOBase):
+        def __init__(self) -> None:
+            self.data = bytearray()
+
+        def writable(self) -> bool:
+            return True
+
+        def write(self, b: Any) -> int:
+            self.data += bytes(b)
+            return len(b)
+
+    out = Unseekable()
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as archive:
+        archive.writestr(name, content)
+    return bytes(out.data)
+
+
+def test_a_federation_from_a_compressed_fom_module(door: Any) -> None:
+    """HLA 4's compressed FOM modules (Pitch's clients send every module over 1 KiB so): the archive's file is the
+    module; an archive that does not read is ErrorReadingFOM (HLA 4's name), saying why."""
+    rtia = fedpro.RTIambassador(door.fedpro_address)
+    try:
+        rtia.connect(Calls())
+        packed = java_style_zip("vehicles.xml", pathlib.Path(VEHICLES).read_bytes())
+        assert packed[6] & 0x08, "sizes after the data, as Java writes them"
+        broken = packed[:40] + bytes(20) + packed[60:]
+        with pytest.raises(fedpro.rti_exception("ErrorReadingFOM"), match="does not inflate|CRC"):
+            rtia.createFederationExecutionWithModules(
+                federationName="Road", fomModules=[datatypes_pb2.FomModule(compressedModule=broken)])
+        rtia.createFederationExecutionWithModules(
+            federationName="Road", fomModules=[datatypes_pb2.FomModule(compressedModule=packed)])
+        rtia.joinFederationExecution(federateName="car", federateType="fedpro", federationName="Road")
+        assert rtia.getObjectClassHandle(objectClassName="Vehicle").data
+        rtia.resignFederationExecution(resignAction="NO_ACTION")
+        rtia.destroyFederationExecution(federationName="Road")
+    finally:
+        rtia.close()

@@ -16,7 +16,9 @@ import pytest
 from hlacore import fedpro
 from hlacore.fedpro import MessageType, encode_message
 from hlacore.link import Link
+from hlacore.status import status
 
+from support import wait_until
 from support.fedpro import Calls, Pair, until
 from support.fedpro import door as fedpro_door
 from support.rti1516e import VEHICLES, Federate
@@ -47,28 +49,12 @@ def test_a_lockstep_survives_connections_cut_under_it(door: Any) -> None:
         pair = Pair(rtia, amb, door.address)
         other = pair.other
         try:
-            position, o_position, mine, theirs = pair.position, pair.o_position, pair.mine, pair.theirs
-
-            for step in range(1, STEPS + 1):
-                rtia.updateAttributeValues(objectInstance=mine, attributeValues={position.data: struct.pack(">I", step)},
-                                           userSuppliedTag=b"", time=float(step))
-                other.rtia.updateAttributeValues(theirs, {o_position: struct.pack(">I", step)}, b"", float(step))
-                other.rtia.timeAdvanceRequest(float(step))
+            def cut(step: int) -> None:
                 if step in CUTS:  # the request and the other federate's update in flight, or not yet sent
                     assert link.cut() == 1
-                rtia.timeAdvanceRequest(time=float(step))
-                until(rtia, lambda: len(amb.named("timeAdvanceGrant")) >= step)
-                other.until(lambda: len(other.amb.named("timeAdvanceGrant")) == step)
 
+            pair.lockstep(rtia, amb, STEPS, cut)
             assert rtia.session.resumes == len(CUTS)
-            grants = [fedpro.time_value(m.time) for m in amb.named("timeAdvanceGrant")]
-            assert grants == [float(s) for s in range(1, STEPS + 1)], "each grant once"
-            reflected = [struct.unpack(">I", fedpro.handle_values(m.attributeValues)[position.data])[0]
-                         for m in amb.named("reflectAttributeValuesWithTime")]
-            assert reflected == list(range(1, STEPS + 1)), "each of the other's updates once, in order"
-            theirs_seen = [struct.unpack(">I", list(args[1].values())[0])[0]
-                           for args in other.amb.named("reflectAttributeValues")]
-            assert theirs_seen == list(range(1, STEPS + 1)), "each of the FedPro federate's updates once"
         finally:
             other.close()
             rtia.resignFederationExecution(resignAction="CANCEL_THEN_DELETE_THEN_DIVEST")
@@ -92,13 +78,20 @@ def test_a_session_not_resumed_in_time_ends_as_a_resigned_federate(door: Any) ->
         other.rtia.subscribeObjectClassAttributes(o_vehicle, [other.rtia.getAttributeHandle(o_vehicle, "speed")])
         rtia.registerObjectInstance(objectClass=vehicle)
         other.until(lambda: bool(other.amb.named("discoverObjectInstance")))
+        [session] = status(door.address)["fedpro"]["sessions"]
+        assert (session["federation"], session["federate"], session["state"]) == ("Road", "gone", "connected")
         link.close()  # the link is gone for good: the client cannot resume
         started = time.monotonic()
-        # After the door's resume timeout (2 s) its federate resigns, deleting its object.
+        # The status report (and the monitor) show the session dropped, then ended: after the door's resume
+        # timeout (2 s) its federate resigns, deleting its object.
+        wait_until(lambda: status(door.address)["fedpro"]["sessions"][0]["state"] == "dropped")
         other.until(lambda: bool(other.amb.named("removeObjectInstance")), seconds=15)
         assert time.monotonic() - started >= 1.5
         with pytest.raises(Exception):
             other.rtia.getFederateHandle("gone")
+        wait_until(lambda: status(door.address)["fedpro"]["sessions"][0]["state"] == "ended")
+        [session] = status(door.address)["fedpro"]["sessions"]
+        assert (session["federate"], session["reason"]) == ("gone", "not resumed within 2 s")
     finally:
         rtia.close(timeout=1.0)
         other.close()

@@ -172,7 +172,7 @@ def test_a_connection_that_never_says_hello_times_out(tmp_path: pathlib.Path) ->
     [
         (hello(magic=0xDEADBEEF), "expected a Hello handshake, got Hello"),
         (hello(version=99), f"protocol version 99 is not supported (gateway speaks {VERSION})"),
-        (frame("JoinFederation", u32(1) + string("sneaky") + string("TestFed") + string("") + string("")),
+        (frame("JoinFederation", u32(1) + string("sneaky") + string("TestFed") + string("") + string("") + string("")),
          "expected a Hello handshake, got JoinFederation"),
         (frame("Welcome", u16(1) + string("me") + u32(64) + string("") + struct.pack("<QI", 0, 0) + string("")),
          "expected a Hello handshake, got Welcome"),

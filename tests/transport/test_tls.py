@@ -22,7 +22,7 @@ import hlacore.rti as rti
 from hlacore.link import Link
 from hlacore.status import status
 
-from support import ROBOT_FED, RtigProcess, rtig_executable, running_rtig, status_client, wait_for_log
+from support import ROBOT_FED, RtigProcess, make_certificate, rtig_executable, running_rtig, status_client, wait_for_log
 from support.federations import FEDERATION, VALUE, check_federation, run_federation
 from support.wire import closed_and_dropped, raw_client
 
@@ -33,15 +33,6 @@ class Certificates:
     key: pathlib.Path
     other_cert: pathlib.Path  # an unrelated self-signed certificate, also for 127.0.0.1
     other_key: pathlib.Path
-
-
-def make_certificate(directory: pathlib.Path, name: str, subject_alt_name: str) -> tuple[pathlib.Path, pathlib.Path]:
-    cert, key = directory / f"{name}.pem", directory / f"{name}.key"
-    subprocess.run(["openssl", "req", "-x509", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes",
-                    "-keyout", str(key), "-out", str(cert), "-days", "2", "-subj", f"/CN=hlacore test {name}",
-                    "-addext", f"subjectAltName={subject_alt_name}"], check=True, capture_output=True)
-    key.chmod(0o600)
-    return cert, key
 
 
 @pytest.fixture

@@ -164,15 +164,17 @@ void Client::destroy_federation(const std::string& name) {
     call(wire::DestroyFederation{id, name, federation_proof("destroy", name)}, id);
 }
 
-std::uint32_t Client::join(const std::string& federate, const std::string& federation, const std::string& fom_modules) {
+std::uint32_t Client::join(const std::string& federate, const std::string& federation, const std::string& fom_modules,
+                           const std::string& federate_type) {
     {
         std::lock_guard<std::mutex> lock(mu_);
         if (fom_) raise(ErrorCode::FederateAlreadyExecutionMember, "this ambassador is already joined");
         early_fom_.reset();
     }
     const auto id = next_request();
-    auto joined = call<wire::FederationJoined>(
-        wire::JoinFederation{id, federate, federation, federation_proof("join", federation), fom_modules}, id);
+    wire::JoinFederation join{id, federate, federation, federation_proof("join", federation), {}};
+    join.joining.edit() = {fom_modules, federate_type};
+    auto joined = call<wire::FederationJoined>(join, id);
     auto parsed = std::make_unique<fom::Fom>(fom::parse_fom(joined.fed_text, joined.fed_name));
     {
         auto sending = lock_send();

@@ -95,7 +95,8 @@ public:
     // `fom_modules`: FOM modules this federate adds to the federation's (IEEE 1516-2010 §4.5), a bundle
     // (fom::bundle), read and checked by the caller; the gateway refuses what does not fit with ErrorReadingFED
     // or InconsistentFDD, and on success every federate joined before learns the extended FOM (FomExtended).
-    std::uint32_t join(const std::string& federate, const std::string& federation, const std::string& fom_modules = "");
+    std::uint32_t join(const std::string& federate, const std::string& federation, const std::string& fom_modules = "",
+                       const std::string& federate_type = "");
     void resign(std::uint8_t action);
 
     // ---- declaration management ----

@@ -44,7 +44,7 @@ double Federation::federate_time(FederateHandle federate) const {
     return federates_.count(federate) ? time_.federate_time(federate) : std::numeric_limits<double>::quiet_NaN();
 }
 
-FederateHandle Federation::join(const std::string& federate_name) {
+FederateHandle Federation::join(const std::string& federate_name, const std::string& federate_type) {
     for (const auto& [h, f] : federates_) {
         if (f.name == federate_name)
             throw RtiError(ErrorCode::FederateAlreadyExecutionMember,
@@ -52,6 +52,7 @@ FederateHandle Federation::join(const std::string& federate_name) {
     }
     const FederateHandle h = next_federate_++;
     federates_[h].name = federate_name;
+    federates_[h].type = federate_type;
     time_.add_federate(h);
     return h;
 }

@@ -43,7 +43,7 @@ public:
 
     // Federation management. join throws FederateAlreadyExecutionMember for a name in use; resign throws
     // FederateOwnsAttributes when the action would leave attributes owned by a departed federate.
-    FederateHandle join(const std::string& federate_name);
+    FederateHandle join(const std::string& federate_name, const std::string& federate_type = "");
     // Sends a new federate what it must hear first (announcements of pending synchronization points).
     void announce_pending(FederateHandle federate);
     // A federate joined with FOM modules of its own (IEEE 1516-2010 §4.5): the FOM becomes `extended` (every
@@ -151,6 +151,7 @@ private:
 
     struct FederateState {
         std::string name;
+        std::string type;  // as it joined (IEEE 1516-2010; "" in HLA 1.3)
         FederateDeclarations declarations;  // declaration management (HLA 1.3 §5, server/declarations.hpp)
         std::set<ObjectHandle> known;       // registered or discovered, not locally deleted
         // changeInteractionOrderType / changeInteractionTransportationType (HLA 1.3 §6.20, §6.22): this

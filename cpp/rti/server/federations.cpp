@@ -120,8 +120,8 @@ void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
         FederationEntry& entry = *it->second;
         entry.federation.check_membership_change("joinFederationExecution");
         std::optional<fom::ExtendedFom> extended;
-        if (!m.fom_modules.empty()) extended = extended_fom(entry.federation, m.fom_modules);
-        const FederateHandle h = entry.federation.join(m.federate);
+        if (!m.joining->fom_modules.empty()) extended = extended_fom(entry.federation, m.joining->fom_modules);
+        const FederateHandle h = entry.federation.join(m.federate, m.joining->federate_type);
         if (extended) entry.federation.extend_fom(std::move(*extended), h);
         c.federation = entered = &entry;
         c.federate = h;
@@ -136,7 +136,7 @@ void Gateway::serve(Connection& c, const wire::JoinFederation& m) {
     if (trace_) trace_->joined(m.federation, c.federate, m.federate, c.read_ns);
     if (options_.verbose)
         log("'" + m.federate + "' joined '" + m.federation + "' as federate " + std::to_string(c.federate) +
-            (m.fom_modules.empty() ? "" : ", adding FOM modules"));
+            (m.joining->fom_modules.empty() ? "" : ", adding FOM modules"));
 }
 
 void Gateway::serve(Connection& c, const wire::ResignFederation& m) {

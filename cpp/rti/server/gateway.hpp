@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -122,6 +123,10 @@ public:
 
     // Serves until stop() is called.
     void run();
+    // Another part of the process's share of the status report (the Federate Protocol's door: its sessions):
+    // `section` returns `"name":{...}`, called on the gateway's thread while it answers a status query, so it must
+    // be quick and thread-safe. Set before run().
+    void add_status_section(std::function<std::string()> section) { status_sections_.push_back(std::move(section)); }
     // Thread-safe and async-signal-safe.
     void stop();
 
@@ -263,6 +268,7 @@ private:
     };
     SpliceSource splice_source_;
     EventLog events_;  // joins, resigns and drops, for the status report
+    std::vector<std::function<std::string()>> status_sections_;  // add_status_section
     void recorder_failed();  // logs why recording into the file stopped, once
     // Has the federation's outbox hand its callbacks to the recorder (made now if there is none).
     void record_federation(FederationEntry& entry);

@@ -116,11 +116,13 @@ const Options<GatewayOptions>& gateway_options() {
          [](const O& o) { return std::to_string(o.busy_poll_us); },
          "before each wait for clients sleeps, poll for up to US µs without sleeping (0: off): a message that "
          "comes meanwhile costs no wake-up, at the price of a busy core (docs/performance.md, busy polling)"},
-        text_option<&O::fedpro>("--fedpro", "fedpro", "HOST:PORT",
-         "also serve the HLA 4 Federate Protocol (IEEE 1516.1-2025) on HOST:PORT (loopback only for now, plain "
-         "TCP; its default port is 15164): federates in any language join through protobuf calls and callbacks, "
-         "and resume after a dropped connection; the door's federates reach this gateway through a Unix socket "
-         "of their own, proving its secret when it has one (docs/fedpro.md)"),
+        text_option<&O::fedpro>("--fedpro", "fedpro", "[PROTOCOL://]HOST[:PORT]",
+         "also serve the HLA 4 Federate Protocol (IEEE 1516.1-2025) on HOST:PORT over PROTOCOL: tcp (the default; "
+         "port 15164), tls (15165), websocket (80) or websocketsecure (443), the last two also ws and wss; TLS with "
+         "--tls-cert and --tls-key. Federates in any language join through protobuf calls and callbacks, and resume "
+         "after a dropped connection. With --secret-file, connect needs the secret as HLAplainTextPassword "
+         "credentials; beyond loopback the door needs it, over tls or websocketsecure (or --no-secret). The door's "
+         "federates reach this gateway through a Unix socket of their own (docs/fedpro.md)"),
         {"--fedpro-resume-timeout", "fedpro_resume_timeout", nullptr, "S", false,
          [](O& o, Text t) { o.fedpro_resume_timeout_s = number_above(t, 0, false, "seconds"); },
          [](const O& o) { return text(o.fedpro_resume_timeout_s); },

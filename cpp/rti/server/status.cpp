@@ -47,6 +47,8 @@ void Federation::write_status(std::string& out, bool instances,
         const auto& f = federates_.at(t.federate);
         out += "{\"handle\":" + std::to_string(t.federate) + ",\"name\":";
         json_string(out, f.name);
+        out += ",\"type\":";
+        json_string(out, f.type);
         out += ",\"time\":";
         json_number(out, t.time);
         out += ",\"lookahead\":";
@@ -137,6 +139,7 @@ void Gateway::serve(Connection& c, const wire::QueryStatus& m) {
         json += ",\"datagrams\":";
         write_datagram_status(json);
         write_process_status(json);
+        for (auto const& section : status_sections_) json += ',' + section();
         events_.write_after(m.events_after, json);
         json += '}';
         return wire::StatusReport{m.request, std::move(json)};

@@ -21,8 +21,8 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // reason, AbortFederationSave, AbortFederationRestore and the transportation queries and reports; 15:
 // SubscriptionRate; 16: JoinFederation's fom_modules (FOM modules added at join) and FomExtended; 17: several
 // regions (IEEE 1516-2010): AssociateRegion's adds, UnassociateRegion's attributes, SendInteractionWithRegion's
-// regions
-constexpr std::uint16_t kProtocolVersion = 17;
+// regions; 18: JoinFederation's federate_type
+constexpr std::uint16_t kProtocolVersion = 18;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;

@@ -45,6 +45,23 @@ enum class ResignAction : std::uint8_t {
 
 enum class AdvisorySwitch : std::uint8_t { ClassRelevance = 1, AttributeRelevance, AttributeScope, InteractionRelevance };
 
+// A nested record kept on the heap, so that a large message does not make every wire::Message (a std::variant)
+// as large as it. Copies share the record; edit() copies it first if it is shared.
+template <class T>
+class Boxed {
+public:
+    Boxed() : p_(std::make_shared<T>()) {}
+    const T& operator*() const { return *p_; }
+    const T* operator->() const { return p_.get(); }
+    T& edit() {
+        if (p_.use_count() > 1) p_ = std::make_shared<T>(*p_);
+        return *p_;
+    }
+
+private:
+    std::shared_ptr<T> p_;
+};
+
 // ---- handshake ----
 struct Hello {
     HLACORE_TYPE(Hello)
@@ -137,16 +154,22 @@ struct DestroyFederation {
     std::string proof;  // as CreateFederation's, for "destroy"
     HLACORE_FIELDS(request, federation, proof)
 };
+// What a federate adds to its join beyond its name (a record on the heap: Boxed).
+struct Joining {
+    // FOM modules this federate adds to the federation's (IEEE 1516-2010 §4.5), as a bundle of modules
+    // (fom::bundle); empty: none. The gateway refuses the join when they do not read or do not fit.
+    std::string fom_modules;
+    std::string federate_type;  // IEEE 1516-2010's (HLA 1.3 has none: ""), for the status report
+    HLACORE_FIELDS(fom_modules, federate_type)
+};
 struct JoinFederation {
     HLACORE_TYPE(JoinFederation)
     std::uint32_t request = 0;
     std::string federate;
     std::string federation;
     std::string proof;  // as CreateFederation's, for "join"
-    // FOM modules this federate adds to the federation's (IEEE 1516-2010 §4.5), as a bundle of modules
-    // (fom::bundle); empty: none. The gateway refuses the join when they do not read or do not fit.
-    std::string fom_modules;
-    HLACORE_FIELDS(request, federate, federation, proof, fom_modules)
+    Boxed<Joining> joining;
+    HLACORE_FIELDS(request, federate, federation, proof, joining)
 };
 struct ResignFederation {
     HLACORE_TYPE(ResignFederation)
@@ -788,22 +811,6 @@ struct FederationRestoreBegun {
 };
 // initiateFederateRestore(label, federate), carrying what the client mirrors of the restored federate:
 // its handle in the save, time state, declarations and the objects it knows (parallel vectors).
-// A nested record kept on the heap, so that one rare large message does not make every wire::Message (a
-// std::variant) as large as it. Copies share the record; edit() copies it first if it is shared.
-template <class T>
-class Boxed {
-public:
-    Boxed() : p_(std::make_shared<T>()) {}
-    const T& operator*() const { return *p_; }
-    const T* operator->() const { return p_.get(); }
-    T& edit() {
-        if (p_.use_count() > 1) p_ = std::make_shared<T>(*p_);
-        return *p_;
-    }
-
-private:
-    std::shared_ptr<T> p_;
-};
 
 // What a restored federate had in the save, as its client mirrors it (records nested in
 // initiateFederateRestore, each encoded as its fields in order).

@@ -25,19 +25,21 @@ Callbacks are evoked, as HLA's EVOKED callback model: :meth:`RTIambassador.evoke
 from __future__ import annotations
 
 import difflib
+import ssl
 import threading
 import time
 from typing import Any, Callable, Dict, List, Optional, Set, Tuple, Type, Union
 
 from . import messages
 from ._proto import FederateAmbassador_pb2, RTIambassador_pb2, datatypes_pb2
-from .session import Session, SessionError, SessionLost, split_address
+from .session import Session, SessionError, SessionLost, default_port, split_address
 
 _RTI: Any = RTIambassador_pb2
 _FED: Any = FederateAmbassador_pb2
 _DATATYPES: Any = datatypes_pb2
 
-#: The address :class:`RTIambassador` dials when given none: the Federate Protocol's TCP port on this host.
+#: The address :class:`RTIambassador` dials over plain TCP when given none: the Federate Protocol's TCP port on
+#: this host. (Another transport dials this host on its own default port.)
 DEFAULT_ADDRESS = "127.0.0.1:15164"
 
 
@@ -153,7 +155,17 @@ def _success() -> bytes:
 
 class RTIambassador:
     """An HLA 4 RTI ambassador over the Federate Protocol: one session with the RTI at `address`
-    (``"host:port"``, or a :class:`~hlacore.fedpro.session.Session` already open).
+    (``"host:port"``, ``"host"`` for the transport's default port, None for this host; or a
+    :class:`~hlacore.fedpro.session.Session` already open).
+
+    `protocol` is the transport, as the standard's ``connect.protocol``: ``"tcp"`` (port 15164 by default),
+    ``"tls"`` (15165), ``"websocket"`` (80) or ``"websocketsecure"`` (443). Over TLS the RTI's certificate is
+    checked with `ssl_context` (by default ``ssl.create_default_context()``) for `server_hostname` (by
+    default the host dialed); a WebSocket requests `path`. A resume after a dropped connection dials the same
+    way::
+
+        context = ssl.create_default_context(cafile="rti-ca.pem")
+        rtia = RTIambassador("rti.example", protocol="websocketsecure", ssl_context=context, path="/fedpro")
 
     Every HLA service is a method named as in the ``CallRequest`` less ``Request``
     (``rtia.joinFederationExecution(federateName=..., federateType=..., federationName=...)``), or
@@ -167,15 +179,21 @@ class RTIambassador:
     session.
     """
 
-    def __init__(self, address: Union[str, Session] = DEFAULT_ADDRESS, *, timeout: Optional[float] = 60.0,
-                 connect_timeout: float = 10.0, resume_timeout: float = 30.0) -> None:
+    def __init__(self, address: Union[str, Session, None] = None, *, protocol: str = "tcp",
+                 ssl_context: Optional[ssl.SSLContext] = None, server_hostname: Optional[str] = None,
+                 path: str = "/", timeout: Optional[float] = 60.0, connect_timeout: float = 10.0,
+                 resume_timeout: float = 30.0) -> None:
         """Opens the session (the HLA connect service is :meth:`connect`). ``OSError`` when the RTI cannot be
-        reached, :class:`~hlacore.fedpro.session.SessionRefused` when it opens no session."""
+        reached (``ssl.SSLCertVerificationError`` for a certificate not trusted, a ``ConnectionError`` for a
+        refused WebSocket upgrade), :class:`~hlacore.fedpro.session.SessionRefused` when it opens no session,
+        ``ValueError`` for an unknown `protocol`. The transport's arguments are unused with a session given."""
         if isinstance(address, Session):
             self.session = address
         else:
-            host, port = split_address(address)
-            self.session = Session.connect(host, port, timeout=connect_timeout, resume_timeout=resume_timeout)
+            host, port = split_address(address or "127.0.0.1", default_port(protocol))
+            self.session = Session.connect(host, port, protocol=protocol, ssl_context=ssl_context,
+                                           server_hostname=server_hostname, path=path, timeout=connect_timeout,
+                                           resume_timeout=resume_timeout)
         self.timeout = timeout
         self.federate_ambassador: Optional[FederateAmbassador] = None
         self._in_callback = False
@@ -249,7 +267,11 @@ class RTIambassador:
         """HLA connect: sets the federate ambassador that evoked callbacks go to and sends ``connect`` (or
         ``connectWithConfiguration`` / ``...WithCredentials`` for ``rtiConfiguration=`` / ``credentials=``
         fields). Returns the ``ConfigurationResult``. Only the EVOKED callback model is served here:
-        ``UnsupportedCallbackModel`` for another."""
+        ``UnsupportedCallbackModel`` for another.
+
+        ``credentials=`` takes a ``Credentials`` message, such as ``plain_text_password("secret")`` makes
+        (:mod:`hlacore.fedpro.messages`: the standard's ``HLAplainTextPassword``); an RTI that does not accept
+        them raises ``Unauthorized``."""
         if callbackModel not in ("EVOKED", _DATATYPES.EVOKED):
             raise rti_exception("UnsupportedCallbackModel")(
                 f"callback model {callbackModel!r}: this client delivers callbacks when evoked")

@@ -41,10 +41,14 @@ MESSAGE_CLASSES: Dict[str, Any] = {
 
 _FLOAT64 = struct.Struct(">d")
 _INT64 = struct.Struct(">q")
+_U32 = struct.Struct(">I")
 _TIME_TYPES = ("rti1516_2025.fedpro.LogicalTime", "rti1516_2025.fedpro.LogicalTimeInterval")
 _FOM_MODULE = "rti1516_2025.fedpro.FomModule"
 
 PathLike = Union[str, "os.PathLike[str]"]
+
+#: The type of the credentials :func:`plain_text_password` makes, as the standard names it.
+PLAIN_TEXT_PASSWORD = "HLAplainTextPassword"
 
 
 def is_repeated(field: Any) -> bool:
@@ -105,6 +109,21 @@ def integer_time_value(msg: Any) -> int:
     """The HLAinteger64Time in `msg`, found as :func:`time_value` finds a float time."""
     value: int = _INT64.unpack(_time_data(msg))[0]
     return value
+
+
+def unicode_string(text: str) -> bytes:
+    """`text` as HLAunicodeString: the 4-byte big-endian count of its UTF-16 code units, then each unit as 2
+    big-endian bytes (a character beyond U+FFFF is two, a surrogate pair)."""
+    units = text.encode("utf-16-be")
+    return _U32.pack(len(units) // 2) + units
+
+
+def plain_text_password(password: str) -> Any:
+    """``Credentials`` of the standard's ``HLAplainTextPassword`` type holding `password` (its data is the
+    password as HLAunicodeString, :func:`unicode_string`), for HLA connect:
+    ``rtia.connect(amb, credentials=plain_text_password("secret"))``. The password goes as it is: send it over
+    TLS, unless the network is trusted."""
+    return _DATATYPES.Credentials(type=PLAIN_TEXT_PASSWORD, data=unicode_string(password))
 
 
 def fom_module(path: PathLike, name: Optional[str] = None) -> Any:

@@ -6,11 +6,16 @@ sequence number, the session id, the number of the last message received from th
 NewSessionStatus, the RTI's number 0; after them each side numbers what it sends from 1 up, in a 31-bit space
 that wraps (:data:`NO_SEQUENCE` means "none").
 
-:class:`Session` is one session over TCP: the handshake, one reader thread, calls matched to their responses by
+:class:`Session` is one session: the handshake, one reader thread, calls matched to their responses by
 sequence number (from any number of threads), a queue of the RTI's callbacks, heartbeats, termination, and the
 resume after a dropped connection. Everything the federate sends is kept until a header from the RTI says it
 arrived, so that a resume on a new connection sends again exactly what the RTI had not received; what the RTI
 sends again that the federate had is recognised by its number and ignored.
+
+The session runs over any of the protocol's transports, named as the standard's and Pitch's clients name them
+(``connect.protocol``): ``"tcp"``, ``"tls"`` (TCP with TLS), ``"websocket"`` (RFC 6455 over TCP) and
+``"websocketsecure"`` (the same over TLS), on ports 15164, 15165, 80 and 443 by default. A resume dials again
+the same way: a new TLS handshake, a new WebSocket upgrade.
 
 The codec (:func:`encode_header`, :func:`decode_header`, :func:`encode_message`) has no sockets: tests build
 an RTI's side with it.
@@ -20,13 +25,17 @@ from __future__ import annotations
 
 import collections
 import enum
+import errno
 import select
 import socket
+import ssl
 import struct
 import threading
 import time
 from dataclasses import dataclass
-from typing import Deque, Dict, Optional, Set, Tuple
+from typing import Deque, Dict, Optional, Protocol, Set, Tuple
+
+from .websocket import WebSocketStream, wait_readable
 
 #: The size of a message's header, in bytes.
 HEADER_SIZE = 24
@@ -40,11 +49,16 @@ SEQUENCE_MASK = 0x7FFFFFFF
 MAX_MESSAGE_SIZE = 64 << 20
 #: The Federate Protocol's TCP port when an address names none.
 DEFAULT_PORT = 15164
+#: The transports a session runs over (``connect.protocol`` in the standard's and Pitch's clients), each with
+#: the port it dials when none is given.
+DEFAULT_PORTS: Dict[str, int] = {"tcp": DEFAULT_PORT, "tls": 15165, "websocket": 80, "websocketsecure": 443}
 
 _HEADER = struct.Struct(">IIQII")
 _U32 = struct.Struct(">I")
 _U32X2 = struct.Struct(">II")
 _SLICE = 0.1  # waits are cut into slices this long, so that Ctrl-C and a stop request are seen
+_FRAME_SLACK = 64 << 10  # a WebSocket frame may hold a whole message and the start of the next
+_TLS_CHUNK = 1 << 16  # TLS writes go out this much at a time
 
 
 class MessageType(enum.IntEnum):
@@ -199,22 +213,42 @@ def split_address(address: str, default_port: int = DEFAULT_PORT) -> Tuple[str, 
     return host or "127.0.0.1", port
 
 
+class Stream(Protocol):
+    """What the session layer reads and writes: a connected socket, or a stream over one that behaves as it
+    does (a :class:`TlsStream`, a WebSocket stream). ``recv`` returns ``b""`` at the end of the stream and may
+    raise ``BlockingIOError`` when what came holds nothing to return yet: wait (a poll, after ``pending()``
+    when the stream has one) and call again."""
+
+    def recv(self, size: int, /) -> bytes:
+        """Up to `size` bytes."""
+
+    def sendall(self, data: bytes, /) -> None:
+        """Writes all of `data`."""
+
+    def shutdown(self, how: int, /) -> None:
+        """Shuts the connection down (``socket.SHUT_RDWR``, ...), waking a blocked read."""
+
+    def close(self) -> None:
+        """Closes the connection."""
+
+    def fileno(self) -> int:
+        """The connection's file descriptor."""
+
+    def settimeout(self, timeout: Optional[float], /) -> None:
+        """How long a write may wait for the peer (None: no limit)."""
+
+
 class _Closed(Exception):
     """The connection ended (end of stream, an error, or the session stopping)."""
 
 
-def _readable(sock: socket.socket, timeout: float) -> bool:
-    """Whether `sock` has something to read (or has ended) within `timeout` seconds. poll where there is one:
-    select refuses descriptors over FD_SETSIZE."""
-    if hasattr(select, "poll"):
-        poller = select.poll()
-        poller.register(sock, select.POLLIN)
-        return bool(poller.poll(timeout * 1000))
-    readable, _, _ = select.select([sock], [], [], timeout)
-    return bool(readable)
+def _readable(sock: Stream, timeout: float) -> bool:
+    """Whether `sock` has something to read (or has ended) within `timeout` seconds: at once when its TLS or
+    WebSocket layer holds bytes already (a poll on the socket would wait for bytes read off it already)."""
+    return wait_readable(sock, timeout)
 
 
-def _read_exact(sock: socket.socket, size: int, stop: threading.Event, deadline: Optional[float] = None) -> bytes:
+def _read_exact(sock: Stream, size: int, stop: threading.Event, deadline: Optional[float] = None) -> bytes:
     """`size` bytes from `sock`, waiting in slices so that `stop` is seen; :class:`_Closed` at the end of the
     stream, on an error, on `stop`, and past `deadline` (a ``time.monotonic()`` value)."""
     chunks = []
@@ -227,6 +261,8 @@ def _read_exact(sock: socket.socket, size: int, stop: threading.Event, deadline:
             if not _readable(sock, _SLICE):
                 continue
             chunk = sock.recv(min(size, 1 << 20))
+        except BlockingIOError:  # part of a TLS record or of a WebSocket frame, or a ping: wait for more
+            continue
         except (OSError, ValueError) as e:  # ValueError: the socket was closed under us
             raise _Closed(str(e)) from None
         if not chunk:
@@ -236,7 +272,7 @@ def _read_exact(sock: socket.socket, size: int, stop: threading.Event, deadline:
     return b"".join(chunks)
 
 
-def _read_message(sock: socket.socket, max_size: int, stop: threading.Event,
+def _read_message(sock: Stream, max_size: int, stop: threading.Event,
                   deadline: Optional[float] = None) -> Tuple[Header, bytes]:
     header = decode_header(_read_exact(sock, HEADER_SIZE, stop, deadline), max_size)
     return header, _read_exact(sock, header.payload_size, stop, deadline)
@@ -258,27 +294,165 @@ def _dial(address: Tuple[str, int], timeout: float) -> socket.socket:
     return sock
 
 
-def _shutdown(sock: socket.socket) -> None:
+def _shutdown(sock: Stream) -> None:
     try:
         sock.shutdown(socket.SHUT_RDWR)
     except OSError:
         pass
 
 
+def default_port(protocol: str) -> int:
+    """The port the transport `protocol` dials when none is given (:data:`DEFAULT_PORTS`); ``ValueError``
+    naming the transports for another name."""
+    try:
+        return DEFAULT_PORTS[protocol]
+    except (KeyError, TypeError):
+        raise ValueError(f"unknown Federate Protocol transport {protocol!r}: one of "
+                         f"{', '.join(DEFAULT_PORTS)}") from None
+
+
+class TlsStream:
+    """A TLS connection that the session's reader and writers share.
+
+    OpenSSL allows one call at a time on a connection: a read in one thread during a write in another may
+    crash. So every TLS call here takes a lock, and none waits while holding it: the socket is non-blocking,
+    :meth:`recv` raises ``BlockingIOError`` when no whole record came (wait with :meth:`pending` and a poll),
+    and :meth:`sendall` polls for room outside the lock.
+    """
+
+    def __init__(self, sock: ssl.SSLSocket, timeout: Optional[float] = None) -> None:
+        """The stream over `sock`, its handshake done; a write waits up to `timeout` seconds for room."""
+        self._sock = sock
+        self._lock = threading.Lock()
+        self._timeout = timeout
+        sock.setblocking(False)
+
+    def recv(self, size: int, /) -> bytes:
+        """Up to `size` decrypted bytes; ``b""`` at the end of the stream; ``BlockingIOError`` when what came
+        holds none yet."""
+        with self._lock:
+            try:
+                return self._sock.recv(size)
+            except (ssl.SSLWantReadError, ssl.SSLWantWriteError):
+                raise BlockingIOError(errno.EAGAIN, "no whole TLS record yet") from None
+            except ssl.SSLZeroReturnError:
+                return b""
+
+    def pending(self) -> int:
+        """How many decrypted bytes wait in the TLS layer: a poll on the socket does not see them."""
+        with self._lock:
+            return self._sock.pending()
+
+    def sendall(self, data: bytes, /) -> None:
+        """Writes all of `data`; ``TimeoutError`` when the peer takes none of it for the timeout."""
+        view = memoryview(data)
+        deadline = None if self._timeout is None else time.monotonic() + self._timeout
+        while view:
+            chunk = view[:_TLS_CHUNK]  # after a want-read/write, OpenSSL needs the same bytes again
+            with self._lock:
+                try:
+                    view = view[self._sock.send(chunk):]
+                    continue
+                except ssl.SSLWantWriteError:
+                    writing = True
+                except ssl.SSLWantReadError:
+                    writing = False
+            self._wait(writing, deadline)
+
+    def _wait(self, writing: bool, deadline: Optional[float]) -> None:
+        """Waits until the socket can be written (`writing`) or read, or `deadline` passes."""
+        remaining = None if deadline is None else deadline - time.monotonic()
+        if remaining is not None and remaining <= 0:
+            raise TimeoutError(f"the TLS peer took nothing for {self._timeout} s")
+        if hasattr(select, "poll"):
+            poller = select.poll()
+            poller.register(self._sock, select.POLLOUT if writing else select.POLLIN)
+            poller.poll(None if remaining is None else remaining * 1000)
+        else:
+            select.select([] if writing else [self._sock], [self._sock] if writing else [], [], remaining)
+
+    def shutdown(self, how: int, /) -> None:
+        """Shuts the TCP connection down (no TLS close_notify), waking a blocked read."""
+        # The socket's own shutdown: SSLSocket's would drop its TLS state under a reader still using it.
+        socket.socket.shutdown(self._sock, how)
+
+    def close(self) -> None:
+        """Closes the connection."""
+        with self._lock:
+            self._sock.close()
+
+    def fileno(self) -> int:
+        """The connection's file descriptor (for poll and select)."""
+        return self._sock.fileno()
+
+    def settimeout(self, timeout: Optional[float], /) -> None:
+        """How long a write may wait for room (None: no limit); reads never wait."""
+        self._timeout = timeout
+
+
+class Transport:
+    """How a session reaches the RTI, the same for its first connection and for each resume's: a TCP
+    connection, then, as `protocol` says (:data:`DEFAULT_PORTS`), a TLS handshake checking the RTI's
+    certificate with `ssl_context` for `server_hostname` (by default the host dialed) and a WebSocket upgrade
+    requesting `path`, whose frames may be `max_frame` bytes long at most."""
+
+    def __init__(self, protocol: str = "tcp", *, ssl_context: Optional[ssl.SSLContext] = None,
+                 server_hostname: Optional[str] = None, path: str = "/",
+                 max_frame: int = MAX_MESSAGE_SIZE + _FRAME_SLACK) -> None:
+        """``ValueError`` for an unknown `protocol`, or an `ssl_context` for one without TLS. TLS without a
+        context uses ``ssl.create_default_context()``: the system's certificate authorities."""
+        default_port(protocol)
+        self.protocol = protocol
+        #: Whether the connection is TLS.
+        self.secure = protocol in ("tls", "websocketsecure")
+        if ssl_context is not None and not self.secure:
+            raise ValueError(f"an ssl_context for the transport {protocol!r}, which has no TLS: "
+                             f"use 'tls' or 'websocketsecure'")
+        if ssl_context is None and self.secure:
+            ssl_context = ssl.create_default_context()
+        self.ssl_context = ssl_context
+        self.server_hostname = server_hostname
+        self.path = path
+        self.max_frame = max_frame
+
+    def dial(self, address: Tuple[str, int], timeout: float) -> Stream:
+        """A new connection to `address` (host, port) over this transport, ready for the session's first
+        message, within `timeout` seconds: ``OSError`` otherwise (``ssl.SSLError`` when the TLS handshake
+        fails, a ``ConnectionError`` when the WebSocket upgrade does)."""
+        deadline = time.monotonic() + timeout
+        sock = _dial(address, timeout)
+        stream: Stream = sock
+        try:
+            if self.secure:
+                assert self.ssl_context is not None
+                sock.settimeout(max(deadline - time.monotonic(), 0.001))
+                tls = self.ssl_context.wrap_socket(sock, server_hostname=self.server_hostname or address[0])
+                stream = TlsStream(tls, timeout)
+            if self.protocol.startswith("websocket"):
+                stream = WebSocketStream.connect(stream, address[0], address[1], path=self.path,
+                                                 secure=self.secure, timeout=max(deadline - time.monotonic(), 0.001),
+                                                 max_frame=self.max_frame)
+        except BaseException:
+            stream.close()
+            sock.close()
+            raise
+        return stream
+
+
 class Session:
-    """One Federate Protocol session with an RTI over TCP, the federate's side.
+    """One Federate Protocol session with an RTI, the federate's side, over TCP, TLS or a WebSocket.
 
     Open it with :meth:`connect`. Then :meth:`call` sends an HLA call (a serialized ``CallRequest``) and waits
     for its response (a serialized ``CallResponse``); any number of threads may call at once, each response is
     matched to its request by sequence number. The RTI's callbacks (serialized ``CallbackRequest``) queue up
     until :meth:`next_callback` pops them; :meth:`answer_callback` sends each one's ``CallbackResponse``.
 
-    One reader thread reads the connection. When the connection drops, that thread dials the RTI again, for
-    up to `resume_timeout` seconds, and resumes the session: the RTI says which of the federate's messages it
-    has, the session sends the rest again, and the RTI sends again what the federate had not received. Calls
-    made meanwhile are kept and sent on the new connection; a call waits through the resume. If no resume
-    succeeds in time (or the RTI refuses it), the session is lost: the waiting calls and every later one
-    raise :class:`SessionLost`.
+    One reader thread reads the connection. When the connection drops, that thread dials the RTI again (the
+    same way: a new TLS handshake, a new WebSocket upgrade), for up to `resume_timeout` seconds, and resumes
+    the session: the RTI says which of the federate's messages it has, the session sends the rest again, and
+    the RTI sends again what the federate had not received. Calls made meanwhile are kept and sent on the new
+    connection; a call waits through the resume. If no resume succeeds in time (or the RTI refuses it), the
+    session is lost: the waiting calls and every later one raise :class:`SessionLost`.
 
     Memory stays bounded by what the RTI has not confirmed: a sent message is released as soon as a header
     from the RTI shows that it arrived.
@@ -287,12 +461,15 @@ class Session:
     context manager that terminates it (best effort) and closes it.
     """
 
-    def __init__(self, sock: socket.socket, session_id: int, address: Tuple[str, int], *,
+    def __init__(self, sock: Stream, session_id: int, address: Tuple[str, int], *,
                  resume_timeout: float = 30.0, connect_timeout: float = 10.0,
-                 max_message: int = MAX_MESSAGE_SIZE, write_timeout: float = 30.0) -> None:
-        """A session already opened on `sock` (its NewSessionStatus received). :meth:`connect` makes one."""
+                 max_message: int = MAX_MESSAGE_SIZE, write_timeout: float = 30.0,
+                 transport: Optional[Transport] = None) -> None:
+        """A session already opened on `sock` (its NewSessionStatus received), which a resume dials again over
+        `transport` (None: plain TCP). :meth:`connect` makes one."""
         self._session_id = session_id
         self._address = address
+        self._transport = transport if transport is not None else Transport()
         self._resume_timeout = resume_timeout
         self._connect_timeout = connect_timeout
         self._max_message = max_message
@@ -300,7 +477,7 @@ class Session:
         self._send_lock = threading.Lock()  # numbering and writing, so messages leave in their numbers' order
         self._lock = threading.Lock()  # the state below; taken after _send_lock when both are
         self._changed = threading.Condition(self._lock)
-        self._sock: Optional[socket.socket] = sock  # None while the connection is dropped
+        self._sock: Optional[Stream] = sock  # None while the connection is dropped
         self._next = 1  # NewSession was 0
         self._last_received = 0  # NewSessionStatus was the RTI's 0
         self._kept: Deque[Tuple[int, MessageType, bytes]] = collections.deque()
@@ -317,15 +494,28 @@ class Session:
         self._reader.start()
 
     @classmethod
-    def connect(cls, host: str, port: int, *, timeout: float = 10.0, resume_timeout: float = 30.0,
+    def connect(cls, host: str, port: Optional[int] = None, *, protocol: str = "tcp",
+                ssl_context: Optional[ssl.SSLContext] = None, server_hostname: Optional[str] = None,
+                path: str = "/", timeout: float = 10.0, resume_timeout: float = 30.0,
                 max_message: int = MAX_MESSAGE_SIZE) -> "Session":
         """Dials the RTI at `host`:`port` and opens a session: NewSession (protocol version 1), then the RTI's
         NewSessionStatus, within `timeout` seconds (also the timeout of each dial when resuming).
+
+        `protocol` is the transport: ``"tcp"``, ``"tls"``, ``"websocket"`` or ``"websocketsecure"``; `port`
+        None dials its default port (15164, 15165, 80, 443). Over TLS the RTI's certificate is checked with
+        `ssl_context` (by default ``ssl.create_default_context()``, the system's certificate authorities) for
+        `server_hostname` (by default `host`); a WebSocket requests `path`. Each resume dials the same way.
+
         :class:`SessionRefused` when the RTI opens none, :class:`BadMessage` for another answer,
-        ``OSError`` (``ConnectionRefusedError``, ``TimeoutError``, ...) when it cannot be reached or does
-        not answer in time."""
+        ``OSError`` (``ConnectionRefusedError``, ``TimeoutError``, ``ssl.SSLCertVerificationError``, a
+        ``ConnectionError`` quoting the status line of a refused WebSocket upgrade, ...) when it cannot be
+        reached or does not answer in time; ``ValueError`` for an unknown `protocol`."""
+        transport = Transport(protocol, ssl_context=ssl_context, server_hostname=server_hostname, path=path,
+                              max_frame=max_message + _FRAME_SLACK)
+        if port is None:
+            port = default_port(protocol)
         deadline = time.monotonic() + timeout
-        sock = _dial((host, port), timeout)
+        sock = transport.dial((host, port), timeout)
         try:
             sock.sendall(encode_message(MessageType.NEW_SESSION, 0, 0, NO_SEQUENCE, _U32.pack(PROTOCOL_VERSION)))
             try:
@@ -343,7 +533,7 @@ class Session:
             sock.close()
             raise
         return cls(sock, header.session_id, (host, port), resume_timeout=resume_timeout, connect_timeout=timeout,
-                   max_message=max_message)
+                   max_message=max_message, transport=transport)
 
     # ---- what the federate sees ----
 
@@ -498,7 +688,7 @@ class Session:
                 self._write(sock, encode_message(message_type, sequence, self._session_id, last, payload))
         return sequence
 
-    def _write(self, sock: socket.socket, data: bytes) -> None:
+    def _write(self, sock: Stream, data: bytes) -> None:
         """Writes `data`, under _send_lock. On a failure the connection is shut down: the reader sees the drop
         and resumes, and the message, kept, goes out again then."""
         try:
@@ -554,7 +744,7 @@ class Session:
             if sock is not None:
                 sock.close()
 
-    def _drop(self, sock: socket.socket) -> None:
+    def _drop(self, sock: Stream) -> None:
         """Forgets the connection `sock` after it ended (under _send_lock: no write is using it)."""
         _shutdown(sock)
         with self._send_lock:
@@ -615,7 +805,7 @@ class Session:
                            f"{self._resume_timeout} s ({why})")
                 return False
             try:
-                sock = _dial(self._address, min(remaining, self._connect_timeout))
+                sock = self._transport.dial(self._address, min(remaining, self._connect_timeout))
             except OSError as e:
                 why = str(e) or type(e).__name__
                 self._stop.wait(min(delay, max(deadline - time.monotonic(), 0)))
@@ -633,7 +823,7 @@ class Session:
             sock.close()
         return False
 
-    def _resume_on(self, sock: socket.socket, deadline: float) -> bool:
+    def _resume_on(self, sock: Stream, deadline: float) -> bool:
         """The resume handshake on the new connection `sock`; True when the session goes on, on it."""
         with self._lock:
             last = self._last_received

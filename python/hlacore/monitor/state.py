@@ -95,6 +95,7 @@ class MonitorState:
             "connections": report.get("connections", 0),
             "process": {**report.get("process", {}), "cpu_percent": self._cpu_percent(report, monotonic)},
             "federations": federations,
+            "fedpro": report.get("fedpro"),  # the Federate Protocol's door and its sessions, when it has one
             "events": new_events,
         }
         self.latest = view

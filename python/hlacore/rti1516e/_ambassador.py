@@ -185,7 +185,7 @@ class RTIambassador(Regions):
         inner, adapter = self._inner(), self._adapter
         assert adapter is not None
         try:
-            handle = inner._join_with(name, federation, adapter, fom_modules)
+            handle = inner._join_with(name, federation, adapter, fom_modules, federate_type)
         except _core.FederateAlreadyExecutionMember as error:
             if self._joined:
                 raise x.FederateAlreadyExecutionMember(f"FederateAlreadyExecutionMember: {error}") from None

@@ -136,6 +136,33 @@ function drawFederations(view) {
   view.federations.forEach(drawFederation);
 }
 
+// ---- the Federate Protocol's door: its sessions, open and lately ended ----
+function sessionState(s) {
+  if (s.state === "dropped") return `dropped ${s.dropped_seconds.toFixed(1)} s ago, waiting for a resume`;
+  if (s.state === "ended") return `ended: ${s.reason}`;
+  return s.state;
+}
+
+function drawDoor(view) {
+  const door = view.fedpro;
+  document.getElementById("fedpro-section").hidden = !door;
+  if (!door) return;
+  document.getElementById("fedpro-door").textContent = `(${door.transport} on ${door.address})`;
+  const rows = door.sessions.map((s) => {
+    const row = document.createElement("tr");
+    row.className = "session " + s.state;
+    row.dataset.session = s.id;
+    const who = s.federate ? `${s.federate} of '${s.federation}'` : "not joined";
+    for (const text of [s.id, who, sessionState(s), String(s.resumes), bytes(s.kept_bytes)]) {
+      const td = document.createElement("td");
+      td.textContent = text;
+      row.appendChild(td);
+    }
+    return row;
+  });
+  document.querySelector("#fedpro tbody").replaceChildren(...rows.reverse());  // the newest first
+}
+
 // ---- the chart: each federate's logical time against wall-clock time ----
 function record(view) {
   const present = new Set();
@@ -227,6 +254,7 @@ function show(view, fresh) {
   if (fresh) record(view);
   drawGateway(view);
   drawFederations(view);
+  drawDoor(view);
   if (fresh) addEvents(view.events);
   drawChart();
 }

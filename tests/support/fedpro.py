@@ -80,7 +80,7 @@ class Pair:
         """`steps` timestamped steps: at each, both update their vehicle's position (the step number) at the step's
         time and ask to advance to it; `between(step)` runs after the native federate's request and before the
         FedPro federate's (to cut its connection there). Then checks that the FedPro federate got each grant and
-        each of the other's updates once, in order, and the other each of its updates once."""
+        each of the other's updates once, in order, each at its time, and the other each of its updates once."""
         other = self.other
         for step in range(1, steps + 1):
             rtia.updateAttributeValues(objectInstance=self.mine, attributeValues={self.position.data: struct.pack(">I", step)},
@@ -93,8 +93,9 @@ class Pair:
             other.until(lambda: len(other.amb.named("timeAdvanceGrant")) == step)
         grants = [fedpro.time_value(m.time) for m in amb.named("timeAdvanceGrant")]
         assert grants == [float(s) for s in range(1, steps + 1)], "each grant once"
-        reflected = [struct.unpack(">I", fedpro.handle_values(m.attributeValues)[self.position.data])[0]
-                     for m in amb.named("reflectAttributeValuesWithTime")]
-        assert reflected == list(range(1, steps + 1)), "each of the other's updates once, in order"
+        reflected = amb.named("reflectAttributeValuesWithTime")
+        assert [struct.unpack(">I", fedpro.handle_values(m.attributeValues)[self.position.data])[0] for m in reflected] == \
+            list(range(1, steps + 1)), "each of the other's updates once, in order"
+        assert [fedpro.time_value(m.time) for m in reflected] == [float(s) for s in range(1, steps + 1)], "at its time"
         theirs_seen = [struct.unpack(">I", list(args[1].values())[0])[0] for args in other.amb.named("reflectAttributeValues")]
         assert theirs_seen == list(range(1, steps + 1)), "each of the FedPro federate's updates once"

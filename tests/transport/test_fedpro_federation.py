@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import io
 import pathlib
-import struct
 import time
 import zipfile
 from typing import Any, Iterator
@@ -37,6 +36,13 @@ def fedpro_federate(address: str, name: str, create: bool = False) -> tuple[fedp
     joined = rtia.joinFederationExecution(federateName=name, federateType="fedpro", federationName="Road")
     assert joined.logicalTimeImplementationName == "HLAfloat64Time" and joined.federateHandle.data
     return rtia, amb
+
+
+def leave(rtia: fedpro.RTIambassador) -> None:
+    """Resign (deleting what it may), destroy the federation "Road" and close the session."""
+    rtia.resignFederationExecution(resignAction="CANCEL_THEN_DELETE_THEN_DIVEST")
+    rtia.destroyFederationExecution(federationName="Road")
+    rtia.close()
 
 
 def test_a_fedpro_federate_creates_joins_and_exchanges_with_hlacore_federates(door: Any) -> None:
@@ -130,30 +136,11 @@ def test_a_thousand_step_timestamped_lockstep_with_a_1516e_federate(door: Any) -
     pair = Pair(rtia, amb, door.address)
     other = pair.other
     try:
-        position, o_position, mine, theirs = pair.position, pair.o_position, pair.mine, pair.theirs
-
-        for step in range(1, STEPS + 1):
-            rtia.updateAttributeValues(objectInstance=mine, attributeValues={position.data: struct.pack(">I", step)},
-                                       userSuppliedTag=b"", time=fedpro.float64_time(float(step)))
-            other.rtia.updateAttributeValues(theirs, {o_position: struct.pack(">I", step)}, b"", float(step))
-            rtia.timeAdvanceRequest(time=fedpro.float64_time(float(step)))
-            other.rtia.timeAdvanceRequest(float(step))
-            until(rtia, lambda: len(amb.named("timeAdvanceGrant")) == step)
-            other.until(lambda: len(other.amb.named("timeAdvanceGrant")) == step)
-            assert fedpro.time_value(amb.named("timeAdvanceGrant")[-1].time) == step
-        reflected = amb.named("reflectAttributeValuesWithTime")
-        # Every update of the other federate, once, in order, each at its time.
-        assert [struct.unpack(">I", fedpro.handle_values(r.attributeValues)[position.data])[0] for r in reflected] == \
-            list(range(1, STEPS + 1))
-        assert [fedpro.time_value(r.time) for r in reflected] == [float(s) for s in range(1, STEPS + 1)]
-        theirs_seen = other.amb.named("reflectAttributeValues")
-        assert [struct.unpack(">I", list(args[1].values())[0])[0] for args in theirs_seen] == list(range(1, STEPS + 1))
+        pair.lockstep(rtia, amb, STEPS)
         assert fedpro.time_value(rtia.queryLogicalTime()) == STEPS
     finally:
         other.close()
-        rtia.resignFederationExecution(resignAction="CANCEL_THEN_DELETE_THEN_DIVEST")
-        rtia.destroyFederationExecution(federationName="Road")
-        rtia.close()
+        leave(rtia)
 
 
 def test_list_federation_execution_members_names_each_federate_and_its_type(door: Any) -> None:
@@ -177,9 +164,7 @@ def test_list_federation_execution_members_names_each_federate_and_its_type(door
     finally:
         hla13.resignFederationExecution(rti13.ResignAction.NoAction)
         other.close()
-        rtia.resignFederationExecution(resignAction="NO_ACTION")
-        rtia.destroyFederationExecution(federationName="Road")
-        rtia.close()
+        leave(rtia)
 
 
 def java_style_zip(name: str, content: bytes) -> bytes:

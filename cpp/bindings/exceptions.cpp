@@ -51,6 +51,7 @@ void register_exceptions(py::module_& m) {
             exc.attr("file") = e.file();
             exc.attr("line") = e.line();
             exc.attr("column") = e.column();
+            exc.attr("inconsistent") = dynamic_cast<const fom::InconsistentModules*>(&e) != nullptr;  // merge, not read
             PyErr_SetObject(cls.ptr(), exc.ptr());
         } catch (const wire::WireError& e) {
             PyErr_SetString(exception_class(ErrorCode::RTIinternalError), e.what());

@@ -147,6 +147,14 @@ private:
     std::string message_;
 };
 
+// Modules that read but contradict each other (a class or a member with another transportation or order, a member
+// a subclass declares already, a dimension with another upper bound, an update rate with another rate): IEEE
+// 1516-2010's InconsistentFDD.
+class InconsistentModules : public FedError {
+public:
+    using FedError::FedError;
+};
+
 // Parses the text of a `.fed` file; `file_name` only appears in error messages and Fom::source_name.
 // Throws FedError on the first error, and for a text longer than kMaxFedBytes. Linear in the text's
 // size plus the attributes and parameters the classes inherit.

@@ -192,7 +192,7 @@ public:
             const auto same = std::find_if(out.begin(), out.end(), [&](const auto& d) { return d.first.name == name; });
             if (same == out.end()) out.push_back({Dimension{static_cast<Handle>(out.size() + 1), name, upper}, place(e)});
             else if (same->first.upper_bound != upper)
-                fail(e, "dimension '" + name + "' has another upper bound at " + same->second.text());
+                contradict(e, "dimension '" + name + "' has another upper bound at " + same->second.text());
         }
     }
 
@@ -208,13 +208,16 @@ public:
                 fail(e, "update rate '" + name + "' has no positive rate ('" + text + "')");
             const auto same = std::find_if(out.begin(), out.end(), [&](const auto& r) { return r.first.name == name; });
             if (same == out.end()) out.push_back({UpdateRate{name, rate}, place(e)});
-            else if (same->first.rate != rate) fail(e, "update rate '" + name + "' has another rate at " + same->second.text());
+            else if (same->first.rate != rate) contradict(e, "update rate '" + name + "' has another rate at " + same->second.text());
         }
     }
 
 private:
     [[noreturn]] void fail(const Element& e, const std::string& message) const {
         throw FedError(module_.file_name, e.line, e.column, message);
+    }
+    [[noreturn]] void contradict(const Element& e, const std::string& message) const {
+        throw InconsistentModules(module_.file_name, e.line, e.column, message);
     }
     Place place(const Element& e) const { return {module_.file_name, e.line, e.column}; }
 
@@ -243,7 +246,7 @@ private:
             }
             if (const auto d = delivery(e, what)) {
                 if (node.delivery && (node.delivery->transport != d->transport || node.delivery->order != d->order))
-                    fail(e, what + " has another transportation or order at " + node.delivery_where.text());
+                    contradict(e, what + " has another transportation or order at " + node.delivery_where.text());
                 node.delivery = d;
                 node.delivery_where = place(e);
             }
@@ -260,8 +263,8 @@ private:
                     node.members.push_back({name, d, place(c), names_dimensions(c)});
                 } else if (name != "HLAprivilegeToDeleteObject" &&  // the MIM's, declared again as it likes
                            (same->delivery.transport != d.transport || same->delivery.order != d.order)) {
-                    fail(c, std::string(family.member) + " '" + name + "' of " + what + " is declared otherwise at " +
-                                same->where.text());
+                    contradict(c, std::string(family.member) + " '" + name + "' of " + what + " is declared otherwise at " +
+                                      same->where.text());
                 }
             } else if (c.name == e.name) {
                 if (name.empty()) fail(c, "a subclass of " + what + " without a name");
@@ -325,8 +328,9 @@ std::size_t add_member(const ClassTree& node, std::vector<Cls>& out, std::vector
         const auto again = std::find_if(child.members.begin(), child.members.end(),
                                         [&](const Member& m) { return m.name == member.name; });
         if (again != child.members.end())
-            fail_at(declared.where, "'" + member.name + "' is declared already by the subclass '" +
-                                        out[child.handle - 1].qualified_name + "' at " + again->where.text());
+            throw InconsistentModules(declared.where.file, declared.where.line, declared.where.column,
+                                      "'" + member.name + "' is declared already by the subclass '" +
+                                          out[child.handle - 1].qualified_name + "' at " + again->where.text());
         classes += add_member(child, out, members, member, declared);
     }
     return classes;

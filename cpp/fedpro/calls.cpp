@@ -53,6 +53,7 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
             r.mutable_connectresponse()->mutable_configurationresult();
             return;
         case C::kConnectWithConfigurationRequest:
+            declared(q.connectwithconfigurationrequest().rticonfiguration());
             connect(nullptr);
             r.mutable_connectwithconfigurationresponse()->mutable_configurationresult()->set_configurationused(false);
             return;
@@ -61,6 +62,7 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
             r.mutable_connectwithcredentialsresponse()->mutable_configurationresult();
             return;
         case C::kConnectWithConfigurationAndCredentialsRequest:
+            declared(q.connectwithconfigurationandcredentialsrequest().rticonfiguration());
             connect(&q.connectwithconfigurationandcredentialsrequest().credentials());
             r.mutable_connectwithconfigurationandcredentialsresponse()->mutable_configurationresult()->set_configurationused(false);
             return;
@@ -875,6 +877,10 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
             break;
     }
     throw api::RTIinternalError(L"RTIinternalError: a call request that names no call");
+}
+
+void HlaFederate::declared(pb::RtiConfiguration const& configuration) {
+    api_2010_ = configuration.additionalsettings().find("API.version=IEEE 1516-2010") != std::string::npos;
 }
 
 void HlaFederate::connect(pb::Credentials const* credentials) {

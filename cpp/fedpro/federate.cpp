@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 
 #include "fedpro/hla_federate.hpp"
 #include "fedpro/zip.hpp"
@@ -25,9 +26,10 @@ HlaFederate::~HlaFederate() { end(); }
 
 namespace {
 
-// The exceptions HLA 4 renamed, under their HLA 4 names: the federate's API knows those (Pitch's 1516-2010 adapter
-// maps them back).
-std::string hla4_name(std::string const& name) {
+// The exceptions HLA 4 renamed, under their HLA 4 names: the federate's API knows those. A client that declares
+// the 1516-2010 API (Pitch's 1516-2010 adapter) maps back only the first two, and knows the others by their
+// 1516-2010 names.
+std::string hla4_name(std::string const& name, bool api_2010) {
     static const std::pair<const char*, const char*> renamed[] = {
         {"CouldNotOpenFDD", "CouldNotOpenFOM"},
         {"ErrorReadingFDD", "ErrorReadingFOM"},
@@ -35,8 +37,9 @@ std::string hla4_name(std::string const& name) {
         {"InvalidTransportationType", "InvalidTransportationTypeHandle"},
         {"InvalidLocalSettingsDesignator", "ConnectionFailed"},
     };
-    for (auto const& [old_name, new_name] : renamed)
-        if (name == old_name) return new_name;
+    const std::size_t mapped = api_2010 ? 2 : std::size(renamed);
+    for (std::size_t i = 0; i < mapped; ++i)
+        if (name == renamed[i].first) return renamed[i].second;
     return name;
 }
 
@@ -47,7 +50,7 @@ std::string HlaFederate::call(std::string_view bytes_in) {
     pb::CallResponse response;
     auto fail = [&](std::string const& name, std::string const& details) {
         response.Clear();
-        response.mutable_exceptiondata()->set_exceptionname(hla4_name(name));
+        response.mutable_exceptiondata()->set_exceptionname(hla4_name(name, api_2010_));
         response.mutable_exceptiondata()->set_details(details);
     };
     if (!request.ParseFromArray(bytes_in.data(), int(bytes_in.size()))) {

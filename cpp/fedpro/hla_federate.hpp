@@ -56,6 +56,7 @@ private:
     void serve(pb::CallRequest const& request, pb::CallResponse& response);
     // Connects when `credentials` (none: HLAnoCredentials) may: Unauthorized otherwise.
     void connect(pb::Credentials const* credentials);
+    void declared(pb::RtiConfiguration const& configuration);  // what the client says of itself at connect
     void joined(api::FederateHandle const& handle, std::string const& federation, pb::JoinResult* result);
     void left();
     void list_members(std::string const& federation);
@@ -99,6 +100,7 @@ private:
     std::unique_ptr<api::LogicalTimeFactory> factory_;
     std::string modules_dir_;  // the FOM modules sent by content, as files the ambassador reads
     bool joined_ = false;
+    bool api_2010_ = false;  // the client's configuration says API.version=IEEE 1516-2010 (hla4_name)
     mutable std::mutex member_mutex_;
     std::pair<std::string, std::string> member_;  // the federation and the name it joined as
     // The advisory switches as this federate set them since it joined, from the core's defaults: HLA 4's getters

@@ -38,10 +38,12 @@ std::vector<fom::FomModule> read_modules(std::vector<std::wstring> const& design
     return modules;
 }
 
-// ErrorReadingFDD (FILE:LINE:COL) unless the modules read and merge, here at the caller.
+// ErrorReadingFDD (FILE:LINE:COL) unless the modules read, InconsistentFDD unless they merge, here at the caller.
 void check_modules(std::vector<fom::FomModule> const& modules) {
     try {
         fom::parse_omt(modules);
+    } catch (const fom::InconsistentModules& e) {
+        raise("InconsistentFDD", e.what());
     } catch (const fom::FedError& e) {
         raise("ErrorReadingFDD", e.what());
     }

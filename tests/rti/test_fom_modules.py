@@ -112,8 +112,12 @@ def test_modules_merge_and_conflicts_name_both_places() -> None:
     assert _core.parse_fom_modules([(MODULE_2010, "a.xml"), (MODULE_2010, "again.xml")]) is not None  # the same twice
     other = MODULE_2000.replace('name="speed" transportation="HLAbestEffort"', 'name="speed" transportation="HLAreliable"')
     with pytest.raises(rti.ErrorReadingFED, match=r"^other\.xml:7:9: attribute 'speed' of object class 'Vehicle' "
-                                                  r"is declared otherwise at vehicles\.xml:10:9$"):
+                                                  r"is declared otherwise at vehicles\.xml:10:9$") as contradiction:
         _core.parse_fom_modules([(MODULE_2010, "vehicles.xml"), (other, "other.xml")])
+    assert contradiction.value.inconsistent is True  # read, but contradicting: IEEE 1516-2010's InconsistentFDD
+    with pytest.raises(rti.ErrorReadingFED) as unreadable:
+        _core.parse_fom_modules([(MODULE_2010, "vehicles.xml"), ("<objectModel>", "cut.xml")])
+    assert unreadable.value.inconsistent is False
 
 
 @pytest.mark.parametrize("text, error", [

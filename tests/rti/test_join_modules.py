@@ -239,6 +239,26 @@ def test_a_federation_created_from_a_fed_takes_no_modules_at_join(rtig: RtigProc
         creator.destroyFederationExecution("Robots")
 
 
+def test_modules_that_contradict_each_other_are_inconsistent_not_unreadable(rtig: RtigProcess,
+                                                                           tmp_path: pathlib.Path) -> None:
+    """Modules that read but contradict each other (an attribute with another order), given together at creation
+    or at join: InconsistentFDD naming both places, not ErrorReadingFDD."""
+    clash = tmp_path / "clash.xml"
+    clash.write_text(pathlib.Path(VESSELS).read_text().replace("<order>Receive</order>", "<order>TimeStamp</order>"))
+    f = Federate(rtig.address)
+    try:
+        with pytest.raises(rti1516e.InconsistentFDD, match=rf"{re.escape(str(clash))}:\d+:\d+: attribute 'route' of "
+                                                           rf"object class 'Vessel' is declared otherwise at "
+                                                           rf"{re.escape(VESSELS)}:"):
+            f.rtia.createFederationExecution("Clash", [VESSELS, str(clash)])
+        f.rtia.createFederationExecution("Clash", [VESSELS])
+        with pytest.raises(rti1516e.InconsistentFDD, match=rf"{re.escape(str(clash))}:\d+:\d+: "):
+            f.rtia.joinFederationExecution("f", "test", "Clash", [HARBOUR, str(clash)])
+        f.rtia.destroyFederationExecution("Clash")
+    finally:
+        f.close()
+
+
 def test_a_save_after_an_extension_restores_also_once_the_fom_grew_further(fleet: Callable[[], Federate]) -> None:
     """Saved once Boats extended the FOM; a federate then joins adding Harbour and leaves; the restore takes the
     save (its handles mean the same in the grown FOM) and the Boat registered before it is known again."""

@@ -208,3 +208,22 @@ def test_a_federation_from_a_compressed_fom_module(door: Any) -> None:
         rtia.destroyFederationExecution(federationName="Road")
     finally:
         rtia.close()
+
+
+def test_exceptions_go_by_hla4_names_unless_the_client_declares_the_2010_api(door: Any, tmp_path: pathlib.Path) -> None:
+    """HLA 4's names for what HLA 4 renamed (InconsistentFOM, CouldNotOpenFOM); a client that declares the
+    1516-2010 API in its configuration (as Pitch's 1516-2010 adapter does, which maps back only the FOM-reading
+    names) gets InconsistentFDD."""
+    clash = tmp_path / "clash.xml"
+    clash.write_text(pathlib.Path(VEHICLES).read_text().replace("<order>Receive</order>", "<order>TimeStamp</order>", 1))
+    missing = datatypes_pb2.FomModule(url=str(tmp_path / "missing.xml"))
+    for settings, inconsistent in (("", "InconsistentFOM"), ("API.version=IEEE 1516-2010", "InconsistentFDD")):
+        rtia = fedpro.RTIambassador(door.fedpro_address)
+        try:
+            rtia.connect(Calls(), rtiConfiguration=datatypes_pb2.RtiConfiguration(additionalSettings=settings))
+            with pytest.raises(fedpro.rti_exception(inconsistent), match="is declared otherwise at"):
+                rtia.createFederationExecutionWithModules(federationName="Road", fomModules=[VEHICLES, str(clash)])
+            with pytest.raises(fedpro.rti_exception("CouldNotOpenFOM"), match="missing.xml"):
+                rtia.createFederationExecutionWithModules(federationName="Road", fomModules=[missing])
+        finally:
+            rtia.close()

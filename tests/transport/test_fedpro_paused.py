@@ -62,3 +62,46 @@ def test_a_paused_fedpro_federate_stalls_nobody(door: Any) -> None:
             os.kill(slow.pid, signal.SIGCONT)
         slow.close()
         publisher.close()
+
+
+def test_a_fedpro_federate_that_does_not_evoke_queues_within_its_bound(door: Any) -> None:
+    """hlacore.fedpro's session stops reading once its queued callbacks pass `max_queued` (here 1 MiB): a federate
+    that never evokes holds about that much, the rest waits at the door and the gateway; a call still gets its
+    answer meanwhile; evoked at last, every update comes, in order."""
+    from hlacore import fedpro
+
+    from support.fedpro import Calls, until
+
+    host, _, port = door.fedpro_address.rpartition(":")
+    rtia = fedpro.RTIambassador(fedpro.Session.connect(host, int(port), max_queued=MIB))
+    amb = Calls()
+    publisher = Federate(door.address)
+    try:
+        rtia.connect(amb)
+        rtia.createFederationExecutionWithModules(federationName="Road", fomModules=[VEHICLES])
+        rtia.joinFederationExecution(federateName="idle", federateType="fedpro", federationName="Road")
+        vehicle = rtia.getObjectClassHandle(objectClassName="Vehicle")
+        rtia.subscribeObjectClassAttributes(objectClass=vehicle,
+                                            attributes=[rtia.getAttributeHandle(objectClass=vehicle, attributeName="speed")])
+        publisher.rtia.joinFederationExecution("fast", "1516e", "Road")
+        p_vehicle = publisher.rtia.getObjectClassHandle("Vehicle")
+        speed = publisher.rtia.getAttributeHandle(p_vehicle, "speed")
+        publisher.rtia.publishObjectClassAttributes(p_vehicle, [speed])
+        obj = publisher.rtia.registerObjectInstance(p_vehicle)
+        count, size = 24, 256 << 10
+        for n in range(1, count + 1):
+            publisher.rtia.updateAttributeValues(obj, {speed: struct.pack(">I", n) + bytes(size - 4)}, b"")
+        deadline = time.monotonic() + 10
+        while rtia.session.queued_bytes <= MIB and time.monotonic() < deadline:
+            time.sleep(0.05)
+        time.sleep(1.0)  # had it gone on reading, the rest would be here by now
+        assert MIB < rtia.session.queued_bytes <= MIB + size + 4096, rtia.session.queued_bytes
+        assert rtia.getObjectClassName(objectClass=vehicle) == "Vehicle"  # answered while the queue is full
+        until(rtia, lambda: len(amb.named("reflectAttributeValues")) == count, seconds=30)
+        values = [fedpro.handle_values(m.attributeValues) for m in amb.named("reflectAttributeValues")]
+        assert [struct.unpack(">I", list(v.values())[0][:4])[0] for v in values] == list(range(1, count + 1))
+    finally:
+        publisher.close()
+        rtia.resignFederationExecution(resignAction="CANCEL_THEN_DELETE_THEN_DIVEST")
+        rtia.destroyFederationExecution(federationName="Road")
+        rtia.close()

@@ -33,13 +33,15 @@ bool read_file(const std::string& path, std::string& text, std::size_t limit) {
 }
 
 // The federation's FOM with the modules a federate adds at join (IEEE 1516-2010 §4.5): ErrorReadingFED for
-// modules that do not read on their own, InconsistentFDD for ones that contradict the federation's FOM (or
-// for a federation created from a .fed, which takes none).
+// modules that do not read on their own, InconsistentFDD for ones that contradict each other or the federation's
+// FOM (or for a federation created from a .fed, which takes none).
 fom::ExtendedFom extended_fom(const Federation& federation, const std::string& modules) {
     std::vector<fom::FomModule> added;
     try {
         added = fom::unbundle(modules, "the FOM modules added at join");
         fom::parse_omt(added);
+    } catch (const fom::InconsistentModules& e) {
+        throw RtiError(ErrorCode::InconsistentFDD, e.what());
     } catch (const fom::FedError& e) {
         throw RtiError(ErrorCode::ErrorReadingFED, e.what());
     }
@@ -69,6 +71,8 @@ void Gateway::serve(Connection& c, const wire::CreateFederation& m) {
         fom::Fom fom;
         try {
             fom = fom::parse_fom(text, m.fed_name);
+        } catch (const fom::InconsistentModules& e) {  // modules that read but contradict each other
+            throw RtiError(ErrorCode::InconsistentFDD, e.what());
         } catch (const fom::FedError& e) {
             throw RtiError(ErrorCode::ErrorReadingFED, e.what());
         }

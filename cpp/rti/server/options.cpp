@@ -127,7 +127,7 @@ const Options<GatewayOptions>& gateway_options() {
          [](O& o, Text t) { o.fedpro_resume_timeout_s = number_above(t, 0, false, "seconds"); },
          [](const O& o) { return text(o.fedpro_resume_timeout_s); },
          "a Federate Protocol session whose connection dropped and is not resumed within S seconds ends: its "
-         "federate resigns (default 60)"},
+         "federate resigns"},
         {"--verbose", "verbose", nullptr, nullptr, false, [](O& o, Text t) { o.verbose = yes_or_no(t); },
          [](const O& o) { return std::string(o.verbose ? "true" : "false"); }, "log connections, joins and federations to stderr"},
     };

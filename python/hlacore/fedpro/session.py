@@ -47,6 +47,8 @@ NO_SEQUENCE = 0x80000000
 SEQUENCE_MASK = 0x7FFFFFFF
 #: The largest message :func:`decode_header` accepts by default (header included), as the RTI's default limit.
 MAX_MESSAGE_SIZE = 64 << 20
+#: The callbacks' bytes a session queues for a federate that does not evoke them before it stops reading.
+MAX_QUEUED_BYTES = 64 << 20
 #: The Federate Protocol's TCP port when an address names none.
 DEFAULT_PORT = 15164
 #: The transports a session runs over (``connect.protocol`` in the standard's and Pitch's clients), each with
@@ -464,7 +466,7 @@ class Session:
     def __init__(self, sock: Stream, session_id: int, address: Tuple[str, int], *,
                  resume_timeout: float = 30.0, connect_timeout: float = 10.0,
                  max_message: int = MAX_MESSAGE_SIZE, write_timeout: float = 30.0,
-                 transport: Optional[Transport] = None) -> None:
+                 transport: Optional[Transport] = None, max_queued: int = MAX_QUEUED_BYTES) -> None:
         """A session already opened on `sock` (its NewSessionStatus received), which a resume dials again over
         `transport` (None: plain TCP). :meth:`connect` makes one."""
         self._session_id = session_id
@@ -485,6 +487,8 @@ class Session:
         self._pending: Dict[int, Optional[bytes]] = {}  # awaited sequence number -> its response, once here
         self._heartbeats: Set[int] = set()
         self._callbacks: Deque[Tuple[int, bytes]] = collections.deque()
+        self._queued_bytes = 0  # of the callbacks' payloads
+        self._max_queued = max_queued
         self._lost: Optional[str] = None  # why the session is over
         self._terminated = False  # SessionTerminated received
         self._resumes = 0
@@ -497,9 +501,13 @@ class Session:
     def connect(cls, host: str, port: Optional[int] = None, *, protocol: str = "tcp",
                 ssl_context: Optional[ssl.SSLContext] = None, server_hostname: Optional[str] = None,
                 path: str = "/", timeout: float = 10.0, resume_timeout: float = 30.0,
-                max_message: int = MAX_MESSAGE_SIZE) -> "Session":
+                max_message: int = MAX_MESSAGE_SIZE, max_queued: int = MAX_QUEUED_BYTES) -> "Session":
         """Dials the RTI at `host`:`port` and opens a session: NewSession (protocol version 1), then the RTI's
         NewSessionStatus, within `timeout` seconds (also the timeout of each dial when resuming).
+
+        While the callbacks waiting for :meth:`next_callback` hold more than `max_queued` bytes, the session stops
+        reading from the RTI (unless a call or heartbeat awaits its answer): a federate that does not evoke leaves
+        what comes to the RTI, which keeps it within its own budgets, rather than growing this process.
 
         `protocol` is the transport: ``"tcp"``, ``"tls"``, ``"websocket"`` or ``"websocketsecure"``; `port`
         None dials its default port (15164, 15165, 80, 443). Over TLS the RTI's certificate is checked with
@@ -533,7 +541,7 @@ class Session:
             sock.close()
             raise
         return cls(sock, header.session_id, (host, port), resume_timeout=resume_timeout, connect_timeout=timeout,
-                   max_message=max_message, transport=transport)
+                   max_message=max_message, transport=transport, max_queued=max_queued)
 
     # ---- what the federate sees ----
 
@@ -572,6 +580,12 @@ class Session:
         with self._lock:
             return len(self._callbacks)
 
+    @property
+    def queued_bytes(self) -> int:
+        """The bytes of the callbacks waiting in the queue (the session stops reading beyond `max_queued`)."""
+        with self._lock:
+            return self._queued_bytes
+
     def call(self, request: bytes, timeout: Optional[float] = 60.0) -> bytes:
         """Sends an HlaCallRequest with `request` (a serialized ``CallRequest``) and returns the payload of
         its HlaCallResponse (a serialized ``CallResponse``), waiting up to `timeout` seconds (None: no limit),
@@ -591,7 +605,10 @@ class Session:
                 if self._lost is not None:
                     raise SessionLost(self._lost)
                 if self._callbacks:
-                    return self._callbacks.popleft()
+                    callback = self._callbacks.popleft()
+                    self._queued_bytes -= len(callback[1])
+                    self._changed.notify_all()  # the reader may be waiting for room
+                    return callback
                 remaining = _SLICE if deadline is None else deadline - time.monotonic()
                 if remaining <= 0:
                     return None
@@ -679,6 +696,7 @@ class Session:
                 self._next = next_sequence(sequence)
                 if awaited:
                     self._pending[sequence] = None
+                    self._changed.notify_all()  # a reader waiting for room reads again: the answer must come in
                 if heartbeat:
                     self._heartbeats.add(sequence)
                 self._kept.append((sequence, message_type, payload))
@@ -719,7 +737,9 @@ class Session:
     def _run(self) -> None:
         try:
             while not self._stop.is_set():
-                with self._lock:
+                with self._changed:
+                    while self._queued_bytes > self._max_queued and not self._pending and not self._stop.is_set():
+                        self._changed.wait(_SLICE)
                     sock = self._sock
                 if sock is None:
                     if not self._resume():
@@ -772,6 +792,7 @@ class Session:
             self._last_received = header.sequence
             if header.type == MessageType.HLA_CALLBACK_REQUEST:
                 self._callbacks.append((header.sequence, payload))
+                self._queued_bytes += len(payload)
             elif header.type == MessageType.SESSION_TERMINATED:
                 self._terminated = True
                 if self._lost is None:

@@ -208,7 +208,7 @@ _RENAMED: Dict[str, str] = {
 def translate(error: _core.RTIexception) -> Exception:
     """The IEEE 1516-2010 exception for an HLA 1.3 one raised by the core, with the same reason."""
     name = type(error).__name__
-    name = _RENAMED.get(name, name)
+    name = "InconsistentFDD" if getattr(error, "inconsistent", False) else _RENAMED.get(name, name)
     cls = globals().get(name) if name in NAMES else None
     if cls is None:
         name, cls = "RTIinternalError", RTIinternalError

@@ -132,12 +132,14 @@ bool Session::resume(std::shared_ptr<Stream> stream, std::uint32_t last_received
     return true;
 }
 
-bool Session::expired(std::chrono::steady_clock::time_point now) const {
-    if (ended_) return true;
-    std::lock_guard<std::mutex> lock(mutex_);
+std::chrono::steady_clock::duration Session::dropped_for(std::chrono::steady_clock::time_point now) const {
     const auto dropped = dropped_at_.load();
-    return !connected_ && dropped != 0 &&
-           now - std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(dropped)) > limits_.resume_timeout;
+    if (ended_ || connected_ || dropped == 0) return {};
+    return now - std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(dropped));
+}
+
+bool Session::expired(std::chrono::steady_clock::time_point now) const {
+    return ended_ || dropped_for(now) > limits_.resume_timeout;
 }
 
 void Session::end(bool tell_federate, std::string const& reason) {
@@ -162,13 +164,8 @@ std::string Session::status_json(std::chrono::steady_clock::time_point now) cons
     json_string(json, federation);
     json += ",\"federate\":";
     json_string(json, federate);
-    const bool ended = ended_, connected = connected_;
-    const auto dropped = dropped_at_.load();
-    json += std::string(",\"state\":\"") + (ended ? "ended" : connected ? "connected" : "dropped") + '"';
-    const double seconds =
-        ended || connected || dropped == 0
-            ? 0.0
-            : std::chrono::duration<double>(now - std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(dropped))).count();
+    json += std::string(",\"state\":\"") + (ended_ ? "ended" : connected_ ? "connected" : "dropped") + '"';
+    const double seconds = std::chrono::duration<double>(dropped_for(now)).count();
     json += ",\"dropped_seconds\":" + std::to_string(seconds) + ",\"kept_bytes\":" + std::to_string(kept_bytes_.load()) +
             ",\"resumes\":" + std::to_string(resumes_.load()) + ",\"reason\":";
     std::lock_guard<std::mutex> lock(reason_mutex_);

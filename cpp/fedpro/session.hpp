@@ -74,6 +74,8 @@ private:
     SessionState state_;
     SessionLimits limits_;
     std::unique_ptr<Federate> federate_;
+    // How long the connection has been dropped: zero while connected, once ended, or before any drop.
+    std::chrono::steady_clock::duration dropped_for(std::chrono::steady_clock::time_point now) const;
     // Under mutex_ with state_ changed: what status_json and expired read without it (mutex_ is held while
     // writing to a slow federate, and the gateway's thread asks for the status).
     void noted();

@@ -293,14 +293,14 @@ def test_the_page_shows_a_federate_protocol_session_connected_dropped_then_ended
     federate's name; its link cut for good, dropped and waiting for a resume; after the resume timeout, ended
     with the reason, while its federate leaves the federation's table."""
     from hlacore import fedpro
+    from hlacore.fedpro.session import split_address
     from hlacore.link import Link
 
     from support.fedpro import Calls
     from support.rti1516e import VEHICLES
 
     with hlacore.Gateway(port=0, fedpro="127.0.0.1:0", fedpro_resume_timeout=1.0) as gateway:
-        host, _, port = str(gateway.fedpro_address).rpartition(":")
-        link = Link(("127.0.0.1", 0), (host, int(port)))
+        link = Link(("127.0.0.1", 0), split_address(str(gateway.fedpro_address)))
         rtia = fedpro.RTIambassador(link.address, resume_timeout=0.5)
         try:
             rtia.connect(Calls())

@@ -72,8 +72,9 @@ def test_a_fedpro_federate_that_does_not_evoke_queues_within_its_bound(door: Any
 
     from support.fedpro import Calls, until
 
-    host, _, port = door.fedpro_address.rpartition(":")
-    rtia = fedpro.RTIambassador(fedpro.Session.connect(host, int(port), max_queued=MIB))
+    from hlacore.fedpro.session import split_address
+
+    rtia = fedpro.RTIambassador(fedpro.Session.connect(*split_address(door.fedpro_address), max_queued=MIB))
     amb = Calls()
     publisher = Federate(door.address)
     try:

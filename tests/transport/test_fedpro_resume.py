@@ -14,12 +14,13 @@ from typing import Any, Iterator
 import pytest
 
 from hlacore import fedpro
+from hlacore.fedpro.session import split_address
 from hlacore.fedpro import MessageType, encode_message
 from hlacore.link import Link
 from hlacore.status import status
 
 from support import wait_until
-from support.fedpro import Calls, Pair, until
+from support.fedpro import Calls, Pair
 from support.fedpro import door as fedpro_door
 from support.rti1516e import VEHICLES, Federate
 
@@ -30,17 +31,12 @@ def door(tmp_path: pathlib.Path) -> Iterator[Any]:
         yield server
 
 
-def target(address: str) -> tuple[str, int]:
-    host, _, port = address.rpartition(":")
-    return host, int(port)
-
-
 STEPS = 600
 CUTS = (150, 300, 450)
 
 
 def test_a_lockstep_survives_connections_cut_under_it(door: Any) -> None:
-    with Link(("127.0.0.1", 0), target(door.fedpro_address)) as link:
+    with Link(("127.0.0.1", 0), split_address(door.fedpro_address)) as link:
         amb = Calls()
         rtia = fedpro.RTIambassador(link.address, resume_timeout=10.0)
         rtia.connect(amb)
@@ -64,7 +60,7 @@ def test_a_lockstep_survives_connections_cut_under_it(door: Any) -> None:
 
 def test_a_session_not_resumed_in_time_ends_as_a_resigned_federate(door: Any) -> None:
     other = Federate(door.address)
-    link = Link(("127.0.0.1", 0), target(door.fedpro_address))
+    link = Link(("127.0.0.1", 0), split_address(door.fedpro_address))
     rtia = fedpro.RTIambassador(link.address, resume_timeout=0.5)
     try:
         rtia.connect(Calls())
@@ -99,7 +95,7 @@ def test_a_session_not_resumed_in_time_ends_as_a_resigned_federate(door: Any) ->
 
 
 def handshake(address: str) -> tuple[socket.socket, int]:
-    sock = socket.create_connection(target(address), timeout=5)
+    sock = socket.create_connection(split_address(address), timeout=5)
     sock.sendall(encode_message(MessageType.NEW_SESSION, 0, 0, 0x80000000, struct.pack(">I", 1)))
     header = fedpro.decode_header(recv_exact(sock, 24))
     assert header.type == MessageType.NEW_SESSION_STATUS
@@ -143,7 +139,7 @@ def test_bad_first_messages_close_their_connection_only(door: Any, what: str, me
     bystander = fedpro.RTIambassador(door.fedpro_address)
     try:
         bystander.connect(Calls())
-        sock = socket.create_connection(target(door.fedpro_address), timeout=5)
+        sock = socket.create_connection(split_address(door.fedpro_address), timeout=5)
         sock.sendall(message)
         assert closed(sock), what
         sock.close()
@@ -169,7 +165,7 @@ def test_bad_messages_in_a_session_end_it(door: Any) -> None:
     assert closed(sock)
     sock.close()
     # A resume of it now is refused: the session is gone.
-    resume = socket.create_connection(target(door.fedpro_address), timeout=5)
+    resume = socket.create_connection(split_address(door.fedpro_address), timeout=5)
     resume.sendall(encode_message(MessageType.RESUME_REQUEST, 0, session, 1, struct.pack(">II", 1, 1)))
     header = fedpro.decode_header(recv_exact(resume, 24))
     assert header.type == MessageType.RESUME_STATUS
@@ -190,7 +186,7 @@ def test_a_resume_reports_the_last_hla_message_received_not_a_heartbeat(door: An
     header = fedpro.decode_header(recv_exact(sock, 24))
     assert header.type == MessageType.HEARTBEAT_RESPONSE and recv_exact(sock, 4) == struct.pack(">I", 2)
     sock.close()  # dropped: the session waits for a resume
-    resume = socket.create_connection(target(door.fedpro_address), timeout=5)
+    resume = socket.create_connection(split_address(door.fedpro_address), timeout=5)
     resume.sendall(encode_message(MessageType.RESUME_REQUEST, 0, session, header.sequence, struct.pack(">II", 1, 1)))
     header = fedpro.decode_header(recv_exact(resume, 24))
     assert header.type == MessageType.RESUME_STATUS

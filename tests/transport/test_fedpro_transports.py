@@ -15,6 +15,7 @@ import pytest
 
 import hlacore.rti as rti13
 from hlacore import fedpro
+from hlacore.fedpro.session import split_address
 from hlacore.fedpro._proto import datatypes_pb2
 from hlacore.link import Link
 
@@ -24,11 +25,6 @@ from support.fedpro import door as fedpro_door
 from support.rti1516e import VEHICLES
 
 SECURE = ("tls", "websocketsecure")
-
-
-def target(address: str) -> tuple[str, int]:
-    host, _, port = address.rpartition(":")
-    return host, int(port)
 
 
 def trusting(cert: pathlib.Path) -> ssl.SSLContext:
@@ -43,7 +39,7 @@ def test_a_lockstep_over_each_transport_resumes_after_a_cut(tmp_path: pathlib.Pa
     tls = ["--tls-cert", str(cert), "--tls-key", str(key)] if protocol in SECURE else []
     with fedpro_door(tmp_path, *tls, "--unix", str(tmp_path / "gateway.sock"), address=f"{protocol}://127.0.0.1:0") as server:
         assert server.fedpro_protocol == protocol
-        with Link(("127.0.0.1", 0), target(server.fedpro_address)) as link:
+        with Link(("127.0.0.1", 0), split_address(server.fedpro_address)) as link:
             amb = Calls()
             context = trusting(cert) if protocol in SECURE else None
             rtia = fedpro.RTIambassador(link.address, protocol=protocol, ssl_context=context, resume_timeout=10.0)
@@ -114,7 +110,7 @@ def test_the_door_refuses_what_it_cannot_guard(tmp_path: pathlib.Path) -> None:
 
 def exchange(address: str, data: bytes, tls: Optional[ssl.SSLContext] = None) -> bytes:
     """What the door answers to `data` on a fresh connection, until it closes it (at most 5 s)."""
-    raw = socket.create_connection(target(address), timeout=5)
+    raw = socket.create_connection(split_address(address), timeout=5)
     sock = tls.wrap_socket(raw, server_hostname="127.0.0.1") if tls else raw
     with sock:
         sock.sendall(data)

@@ -1,5 +1,7 @@
 // The calls: each CallRequest onto the session's RTIambassador, its result into the CallResponse. What HLA 4 adds
 // and the core does not serve is answered with the standard's exception, never dropped.
+#include <RTI/encoding/BasicDataElements.h>
+
 #include "fedpro/hla_federate.hpp"
 #include "rti1516e/ambassador.hpp"
 
@@ -15,23 +17,15 @@ api::VariableLengthData tag(std::string const& t) { return data(t); }
 
 constexpr const char* kPlainTextPassword = "HLAplainTextPassword";
 
-// HLAplainTextPassword's data: an HLAunicodeString (a 4-byte big-endian count of UTF-16 code units, each big-endian),
-// as UTF-8. InvalidCredentials when it is not one.
+// HLAplainTextPassword's data, an HLAunicodeString, as UTF-8; InvalidCredentials when it is not one.
 std::string password(std::string const& data) {
-    auto bad = [] { return Hla4Exception("InvalidCredentials", "HLAplainTextPassword credentials that are not an HLAunicodeString"); };
-    if (data.size() < 4) throw bad();
-    const std::uint32_t count = std::uint32_t(std::uint8_t(data[0])) << 24 | std::uint32_t(std::uint8_t(data[1])) << 16 |
-                                std::uint32_t(std::uint8_t(data[2])) << 8 | std::uint8_t(data[3]);
-    if (data.size() - 4 != std::uint64_t(count) * 2) throw bad();
-    std::wstring text;
-    for (std::size_t i = 4; i < data.size(); i += 2) {
-        const wchar_t unit = wchar_t(std::uint8_t(data[i]) << 8 | std::uint8_t(data[i + 1]));
-        if (unit >= 0xDC00 && unit < 0xE000 && !text.empty() && text.back() >= 0xD800 && text.back() < 0xDC00)
-            text.back() = 0x10000 + ((text.back() - 0xD800) << 10) + (unit - 0xDC00);  // a surrogate pair: one code point
-        else
-            text += unit;
+    try {
+        api::HLAunicodeString text;
+        text.decode(api::VariableLengthData(data.data(), data.size()));
+        return utf8(text.get());
+    } catch (api::EncoderException const&) {
+        throw Hla4Exception("InvalidCredentials", "HLAplainTextPassword credentials that are not an HLAunicodeString");
     }
-    return utf8(text);
 }
 
 // Compared in constant time: how long it takes says nothing of where they differ.

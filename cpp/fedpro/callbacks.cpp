@@ -195,6 +195,25 @@ void HlaFederate::receiveInteraction(InteractionClassHandle cls, ParameterHandle
                             sent(m, tag, info); timed(m, time, sent_order, received_order);
                             put(m->mutable_optionalretraction(), handle));
 }
+void HlaFederate::receiveDirectedInteraction(InteractionClassHandle cls, ObjectInstanceHandle object,
+                                             ParameterHandleValueMap const& values, VariableLengthData const& tag,
+                                             TransportationType transport, FederateHandle producer) {
+    HLACORE_FEDPRO_CALLBACK(receivedirectedinteraction, put(m->mutable_interactionclass(), cls);
+                            put(m->mutable_objectinstance(), object); put(m->mutable_parametervalues(), values);
+                            m->set_usersuppliedtag(bytes(tag)); put(m->mutable_transportationtype(), transport);
+                            put(m->mutable_producingfederate(), producer));
+}
+void HlaFederate::receiveDirectedInteraction(InteractionClassHandle cls, ObjectInstanceHandle object,
+                                             ParameterHandleValueMap const& values, VariableLengthData const& tag,
+                                             TransportationType transport, FederateHandle producer, LogicalTime const& time,
+                                             OrderType sent_order, OrderType received_order,
+                                             MessageRetractionHandle const* retraction) {
+    HLACORE_FEDPRO_CALLBACK(receivedirectedinteractionwithtime, put(m->mutable_interactionclass(), cls);
+                            put(m->mutable_objectinstance(), object); put(m->mutable_parametervalues(), values);
+                            m->set_usersuppliedtag(bytes(tag)); put(m->mutable_transportationtype(), transport);
+                            put(m->mutable_producingfederate(), producer); timed(m, time, sent_order, received_order);
+                            if (retraction) put(m->mutable_optionalretraction(), *retraction));
+}
 void HlaFederate::removeObjectInstance(ObjectInstanceHandle object, VariableLengthData const& tag, OrderType, SupplementalRemoveInfo info) {
     HLACORE_FEDPRO_CALLBACK(removeobjectinstance, put(m->mutable_objectinstance(), object); sent(m, tag, info));
 }

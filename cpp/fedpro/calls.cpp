@@ -282,16 +282,51 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
             rti_->unsubscribeInteractionClass(interaction_class(q.unsubscribeinteractionclassrequest().interactionclass()));
             r.mutable_unsubscribeinteractionclassresponse();
             return;
-        case C::kPublishObjectClassDirectedInteractionsRequest:
+        case C::kPublishObjectClassDirectedInteractionsRequest: {
+            auto const& m = q.publishobjectclassdirectedinteractionsrequest();
+            hla4("publishObjectClassDirectedInteractions")
+                .publishObjectClassDirectedInteractions(object_class(m.objectclass()), interaction_classes(m.interactionclasses()));
+            r.mutable_publishobjectclassdirectedinteractionsresponse();
+            return;
+        }
         case C::kUnpublishObjectClassDirectedInteractionsRequest:
-        case C::kUnpublishObjectClassDirectedInteractionsWithSetRequest:
-        case C::kSubscribeObjectClassDirectedInteractionsRequest:
-        case C::kSubscribeObjectClassDirectedInteractionsUniversallyRequest:
+            hla4("unpublishObjectClassDirectedInteractions")
+                .unpublishObjectClassDirectedInteractions(object_class(q.unpublishobjectclassdirectedinteractionsrequest().objectclass()));
+            r.mutable_unpublishobjectclassdirectedinteractionsresponse();
+            return;
+        case C::kUnpublishObjectClassDirectedInteractionsWithSetRequest: {
+            auto const& m = q.unpublishobjectclassdirectedinteractionswithsetrequest();
+            hla4("unpublishObjectClassDirectedInteractions")
+                .unpublishObjectClassDirectedInteractions(object_class(m.objectclass()), interaction_classes(m.interactionclasses()));
+            r.mutable_unpublishobjectclassdirectedinteractionswithsetresponse();
+            return;
+        }
+        case C::kSubscribeObjectClassDirectedInteractionsRequest: {
+            auto const& m = q.subscribeobjectclassdirectedinteractionsrequest();
+            hla4("subscribeObjectClassDirectedInteractions")
+                .subscribeObjectClassDirectedInteractions(object_class(m.objectclass()), interaction_classes(m.interactionclasses()), false);
+            r.mutable_subscribeobjectclassdirectedinteractionsresponse();
+            return;
+        }
+        case C::kSubscribeObjectClassDirectedInteractionsUniversallyRequest: {
+            auto const& m = q.subscribeobjectclassdirectedinteractionsuniversallyrequest();
+            hla4("subscribeObjectClassDirectedInteractionsUniversally")
+                .subscribeObjectClassDirectedInteractions(object_class(m.objectclass()), interaction_classes(m.interactionclasses()), true);
+            r.mutable_subscribeobjectclassdirectedinteractionsuniversallyresponse();
+            return;
+        }
         case C::kUnsubscribeObjectClassDirectedInteractionsRequest:
-        case C::kUnsubscribeObjectClassDirectedInteractionsWithSetRequest:
-        case C::kSendDirectedInteractionRequest:
-        case C::kSendDirectedInteractionWithTimeRequest:
-            not_served("directed interactions", "the core has no directed interactions yet");
+            hla4("unsubscribeObjectClassDirectedInteractions")
+                .unsubscribeObjectClassDirectedInteractions(object_class(q.unsubscribeobjectclassdirectedinteractionsrequest().objectclass()));
+            r.mutable_unsubscribeobjectclassdirectedinteractionsresponse();
+            return;
+        case C::kUnsubscribeObjectClassDirectedInteractionsWithSetRequest: {
+            auto const& m = q.unsubscribeobjectclassdirectedinteractionswithsetrequest();
+            hla4("unsubscribeObjectClassDirectedInteractions")
+                .unsubscribeObjectClassDirectedInteractions(object_class(m.objectclass()), interaction_classes(m.interactionclasses()));
+            r.mutable_unsubscribeobjectclassdirectedinteractionswithsetresponse();
+            return;
+        }
 
         // ---- object management ----
         case C::kReserveObjectInstanceNameRequest:
@@ -344,6 +379,24 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
             auto const& m = q.sendinteractionrequest();
             rti_->sendInteraction(interaction_class(m.interactionclass()), values(m.parametervalues()), tag(m.usersuppliedtag()));
             r.mutable_sendinteractionresponse();
+            return;
+        }
+        case C::kSendDirectedInteractionRequest: {
+            auto const& m = q.senddirectedinteractionrequest();
+            hla4("sendDirectedInteraction")
+                .sendDirectedInteraction(interaction_class(m.interactionclass()), object(m.objectinstance()),
+                                         values(m.parametervalues()), tag(m.usersuppliedtag()));
+            r.mutable_senddirectedinteractionresponse();
+            return;
+        }
+        case C::kSendDirectedInteractionWithTimeRequest: {
+            auto const& m = q.senddirectedinteractionwithtimerequest();
+            auto* out = r.mutable_senddirectedinteractionwithtimeresponse()->mutable_result();
+            put(out->mutable_messageretractionhandle(),
+                hla4("sendDirectedInteraction")
+                    .sendDirectedInteraction(interaction_class(m.interactionclass()), object(m.objectinstance()),
+                                             values(m.parametervalues()), tag(m.usersuppliedtag()), *time(m.time())));
+            out->set_retractionhandleisvalid(true);
             return;
         }
         case C::kSendInteractionWithTimeRequest: {
@@ -753,7 +806,10 @@ void HlaFederate::serve(pb::CallRequest const& q, pb::CallResponse& r) {
                 utf8(rti_->getTransportationName(transportation(q.gettransportationtypenamerequest().transportationtype()))));
             return;
         case C::kGetAvailableDimensionsForObjectClassRequest:
-            not_served("getAvailableDimensionsForObjectClass", "dimensions are per attribute in the core (ask for one of its attributes)");
+            put(r.mutable_getavailabledimensionsforobjectclassresponse()->mutable_result(),
+                hla4("getAvailableDimensionsForObjectClass")
+                    .availableDimensionsForObjectClass(object_class(q.getavailabledimensionsforobjectclassrequest().objectclass())));
+            return;
         case C::kGetAvailableDimensionsForInteractionClassRequest:
             put(r.mutable_getavailabledimensionsforinteractionclassresponse()->mutable_result(),
                 rti_->getAvailableDimensionsForInteractionClass(
@@ -905,13 +961,17 @@ void HlaFederate::joined(api::FederateHandle const& handle, std::string const& f
     result->set_logicaltimeimplementationname(utf8(factory_->getName()));
 }
 
+rti1516e::Ambassador& HlaFederate::hla4(const char* service) const {
+    auto* ours = dynamic_cast<rti1516e::Ambassador*>(rti_.get());
+    if (!ours) not_served(service, "the session's ambassador is not hlacore's");
+    return *ours;
+}
+
 // HLA 4's answer is a callback: the members as the gateway's report has them (their types as they joined), or
 // that there is no such federation.
 void HlaFederate::list_members(std::string const& federation) {
-    auto* ours = dynamic_cast<rti1516e::Ambassador*>(rti_.get());
-    if (!ours) not_served("listFederationExecutionMembers", "the session's ambassador is not hlacore's");
     std::vector<std::pair<std::wstring, std::wstring>> members;
-    if (!ours->federationMembers(wide(federation), members)) {
+    if (!hla4("listFederationExecutionMembers").federationMembers(wide(federation), members)) {
         HLACORE_FEDPRO_CALLBACK(reportfederationexecutiondoesnotexist, m->set_federationname(federation));
         return;
     }

@@ -149,6 +149,12 @@ api::AttributeHandleSet HlaFederate::attributes(pb::AttributeHandleSet const& s)
     return out;
 }
 
+rti1516e::InteractionClassHandleSet HlaFederate::interaction_classes(pb::InteractionClassHandleSet const& s) const {
+    rti1516e::InteractionClassHandleSet out;
+    for (auto const& h : s.interactionclasshandle()) out.insert(interaction_class(h));
+    return out;
+}
+
 api::FederateHandleSet HlaFederate::federates(pb::FederateHandleSet const& s) const {
     api::FederateHandleSet out;
     for (auto const& h : s.federatehandle()) out.insert(federate(h));

@@ -17,6 +17,7 @@
 #include "fedpro/proto/RTIambassador.pb.h"
 #include "fedpro/proto/datatypes.pb.h"
 #include "fedpro/federate.hpp"
+#include "rti1516e/ambassador.hpp"
 #include "rti1516e/text.hpp"
 
 namespace hlacore::fedpro {
@@ -37,7 +38,7 @@ struct Hla4Exception : std::runtime_error {
 inline api::VariableLengthData data(std::string const& bytes) { return api::VariableLengthData(bytes.data(), bytes.size()); }
 inline std::string bytes(api::VariableLengthData const& d) { return std::string(static_cast<const char*>(d.data()), d.size()); }
 
-class HlaFederate : public Federate, public api::FederateAmbassador {
+class HlaFederate : public Federate, public api::FederateAmbassador, public rti1516e::DirectedInteractionReceiver {
 public:
     HlaFederate(std::string gateway, std::string password, std::function<void(std::string_view)> send_callback);
     ~HlaFederate() override;
@@ -50,6 +51,13 @@ public:
 #define HLACORE_FEDPRO_DECLARE(ret, name, params, qualifier) ret name params qualifier override;
     RTI1516E_CALLBACKS(HLACORE_FEDPRO_DECLARE)
 #undef HLACORE_FEDPRO_DECLARE
+    // HLA 4's, from the ambassador's extension.
+    void receiveDirectedInteraction(InteractionClassHandle cls, ObjectInstanceHandle object, ParameterHandleValueMap const& values,
+                                    VariableLengthData const& tag, TransportationType transport, FederateHandle producer) override;
+    void receiveDirectedInteraction(InteractionClassHandle cls, ObjectInstanceHandle object, ParameterHandleValueMap const& values,
+                                    VariableLengthData const& tag, TransportationType transport, FederateHandle producer,
+                                    LogicalTime const& time, OrderType sent, OrderType received,
+                                    MessageRetractionHandle const* retraction) override;
 
 private:
     // calls.cpp: the call, onto the ambassador; throws the ambassador's exceptions.
@@ -60,6 +68,8 @@ private:
     void joined(api::FederateHandle const& handle, std::string const& federation, pb::JoinResult* result);
     void left();
     void list_members(std::string const& federation);
+    // The session's ambassador as hlacore's, for HLA 4's services beyond 1516-2010 (not_served otherwise).
+    rti1516e::Ambassador& hla4(const char* service) const;
     std::vector<std::wstring> modules(pb::FomModuleSet const& set);
     std::wstring module(pb::FomModule const& m);
     std::wstring module_file(std::string name, std::string const& content);
@@ -81,6 +91,7 @@ private:
     }
     api::AttributeHandleSet attributes(pb::AttributeHandleSet const& s) const;
     api::FederateHandleSet federates(pb::FederateHandleSet const& s) const;
+    rti1516e::InteractionClassHandleSet interaction_classes(pb::InteractionClassHandleSet const& s) const;
     api::DimensionHandleSet dimensions(pb::DimensionHandleSet const& s) const;
     api::RegionHandleSet regions(pb::RegionHandleSet const& s) const;
     api::AttributeHandleSetRegionHandleSetPairVector pairs(pb::AttributeSetRegionSetPairList const& l) const;

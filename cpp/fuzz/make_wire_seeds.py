@@ -122,7 +122,9 @@ MESSAGES = {
     + u32(1) + u32(7) + u32(1) + s("robot-1") + hs([1, 2]) + b(True)
     # DDM: region 3 in space 1, subscribed for class 2 and interaction 4, associated with object 7's attribute 1.
     + u32(1) + u32(3) + u32(1) + hs([10, 20, 0, 100]) + u32(1) + u32(2) + u32(3) + hs([1])
-    + u32(1) + u32(4) + u32(3) + u32(1) + u32(7) + u32(1) + u32(3) + u32(3),
+    + u32(1) + u32(4) + u32(3) + u32(1) + u32(7) + u32(1) + u32(3) + u32(3)
+    # HLA 4's directed interactions: interaction 4 published at class 2, subscribed universally.
+    + u32(1) + u32(2) + hs([4]) + u32(0) + u32(1) + u32(2) + hs([4]),
     "FederationRestored": b(False) + u8(1),
     "FederationJoined": u32(3) + u32(2) + s(FED) + s("robot.fed") + u8(0),
     "ObjectRegistered": u32(5) + u32(7) + s("robot-1"),
@@ -143,6 +145,10 @@ MESSAGES = {
     "AttributeTransportationReported": u32(7) + u32(1) + u8(2),
     "InteractionTransportationReported": u32(2) + u32(4) + u8(1),
     "SubscriptionRate": u32(2) + s("HLAslow"),
+    "PublishDirectedInteractions": u32(2) + hs([4, 5]),
+    "SubscribeDirectedInteractions": u32(2) + hs([4]) + hs([5]),
+    "SendDirectedInteraction": u32(4) + u32(7) + hv([(1, b"stop")]) + s("tag") + t(2.5) + u64(9),
+    "ReceiveDirectedInteraction": u32(4) + u32(7) + hv([(1, b"stop")]) + s("tag") + u8(2) + u8(1) + t(2.5) + u32(3) + u64(9),
 }
 STREAMS = {
     "stream-join-publish-update": ["Hello", "JoinFederation", "PublishObjectClass", "RegisterObject", "UpdateAttributes"],

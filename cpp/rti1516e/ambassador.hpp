@@ -99,6 +99,7 @@ long long raw(E const& e) {
 }
 
 std::string bytes(api::VariableLengthData const& data);  // a tag
+wire::HandleValues copies(api::ParameterHandleValueMap const& values);  // values the client keeps (objects.cpp)
 
 // Translates the exception being handled into the IEEE 1516-2010 exception of the same meaning (the core's
 // names that the standard renames, RTIinternalError for the rest); one of the API's goes through unchanged.
@@ -126,6 +127,25 @@ private:
     api::HLAinteger64Time integer_time_;
 };
 
+// HLA 4's set of interaction classes, which IEEE 1516-2010's API has no name for.
+using InteractionClassHandleSet = std::set<api::InteractionClassHandle>;
+
+// Not of IEEE 1516-2010: HLA 4's directed interactions (IEEE 1516.1-2025 §6.15) for the Federate Protocol's door,
+// whose federate ambassador is also one of these (the ambassador delivers them to no other).
+class DirectedInteractionReceiver {
+public:
+    virtual ~DirectedInteractionReceiver() = default;
+    virtual void receiveDirectedInteraction(api::InteractionClassHandle cls, api::ObjectInstanceHandle object,
+                                            api::ParameterHandleValueMap const& values, api::VariableLengthData const& tag,
+                                            api::TransportationType transport, api::FederateHandle producer) = 0;
+    // Timestamped: `retraction` null when it cannot be retracted.
+    virtual void receiveDirectedInteraction(api::InteractionClassHandle cls, api::ObjectInstanceHandle object,
+                                            api::ParameterHandleValueMap const& values, api::VariableLengthData const& tag,
+                                            api::TransportationType transport, api::FederateHandle producer,
+                                            api::LogicalTime const& time, api::OrderType sent, api::OrderType received,
+                                            api::MessageRetractionHandle const* retraction) = 0;
+};
+
 class Ambassador final : public api::RTIambassador {
 public:
     Ambassador() = default;
@@ -139,6 +159,25 @@ public:
     // Not of IEEE 1516-2010: HLA 4's listFederationExecutionMembers, for the Federate Protocol's door. Each federate
     // of `federation` as (name, type), from the gateway's report; false when there is no such federation.
     bool federationMembers(std::wstring const& federation, std::vector<std::pair<std::wstring, std::wstring>>& members);
+    // Not of IEEE 1516-2010: HLA 4's getAvailableDimensionsForObjectClass (regions.cpp), for the same door: the
+    // dimensions of any of the class's attributes.
+    DimensionHandleSet availableDimensionsForObjectClass(ObjectClassHandle cls);
+    // Not of IEEE 1516-2010: HLA 4's directed interactions (directed.cpp; IEEE 1516.1-2025 §5.6-5.13, §6.14), for
+    // the same door. An unpublish or unsubscribe without interaction classes is of all the object class's.
+    void publishObjectClassDirectedInteractions(api::ObjectClassHandle cls, InteractionClassHandleSet const& interactions);
+    void unpublishObjectClassDirectedInteractions(api::ObjectClassHandle cls);
+    void unpublishObjectClassDirectedInteractions(api::ObjectClassHandle cls,
+                                                  InteractionClassHandleSet const& interactions);
+    void subscribeObjectClassDirectedInteractions(api::ObjectClassHandle cls,
+                                                  InteractionClassHandleSet const& interactions, bool universally);
+    void unsubscribeObjectClassDirectedInteractions(api::ObjectClassHandle cls);
+    void unsubscribeObjectClassDirectedInteractions(api::ObjectClassHandle cls,
+                                                    InteractionClassHandleSet const& interactions);
+    void sendDirectedInteraction(api::InteractionClassHandle cls, api::ObjectInstanceHandle object,
+                                 api::ParameterHandleValueMap const& values, api::VariableLengthData const& tag);
+    api::MessageRetractionHandle sendDirectedInteraction(api::InteractionClassHandle cls, api::ObjectInstanceHandle object,
+                                                         api::ParameterHandleValueMap const& values,
+                                                         api::VariableLengthData const& tag, api::LogicalTime const& time);
 
 private:
     Client& client() const;  // NotConnected
@@ -159,6 +198,7 @@ private:
 
     std::unique_ptr<Client> client_;
     api::FederateAmbassador* federate_ = nullptr;
+    DirectedInteractionReceiver* directed_ = nullptr;  // federate_, when it receives HLA 4's directed interactions
     bool immediate_ = false;
     bool joined_ = false;
     bool integer_time_ = false;

@@ -35,6 +35,7 @@ struct Deliver {
     std::map<std::uint32_t, std::set<std::uint32_t>>& release_asked;
     std::string const& federate_name;
     bool integer_time;
+    DirectedInteractionReceiver* directed;  // HLA 4's, when the federate ambassador is one
     // A timestamped callback's time, made only where there is one.
     TimeOut time() const { return TimeOut(integer_time); }
 
@@ -98,6 +99,21 @@ struct Deliver {
     void operator()(wire::ReceiveInteraction& m) {
         const auto cls = handle<InteractionClassHandle>(m.interaction_class);
         values_to<ParameterHandle, SupplementalReceiveInfo>(m, [&](auto const&... a) { fa.receiveInteraction(cls, a...); });
+    }
+    void operator()(wire::ReceiveDirectedInteraction& m) {
+        if (!directed) unexpected();
+        const auto values = received<ParameterHandle>(m.values);
+        const auto cls = handle<InteractionClassHandle>(m.interaction_class);
+        const auto object = handle<ObjectInstanceHandle>(m.object);
+        const auto transport = static_cast<TransportationType>(m.transport);
+        const auto producer = handle<FederateHandle>(m.sender);
+        if (m.time) {
+            const auto retraction_handle = retraction(m.sender, m.serial);
+            directed->receiveDirectedInteraction(cls, object, values, tag_of(m.tag), transport, producer, time()(*m.time),
+                                                 TIMESTAMP, TIMESTAMP, &retraction_handle);
+        } else {
+            directed->receiveDirectedInteraction(cls, object, values, tag_of(m.tag), transport, producer);
+        }
     }
     void operator()(wire::RemoveObject& m) {
         const auto object = handle<ObjectInstanceHandle>(m.object);
@@ -183,7 +199,7 @@ struct Deliver {
 
 void Ambassador::deliver(wire::Message& message) {
     Deliver d{*federate_, sync_sets_, reserved_, divesting_, release_asked_, federate_name_,
-              integer_time_};
+              integer_time_, directed_};
     wire::dispatch_callback<void>(message, d);
 }
 

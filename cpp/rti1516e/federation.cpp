@@ -111,6 +111,7 @@ void Ambassador::connect(FederateAmbassador& federate, CallbackModel model, std:
             raise("ConnectionFailed", e.what());
         }
         federate_ = &federate;
+        directed_ = dynamic_cast<DirectedInteractionReceiver*>(&federate);
         immediate_ = raw(model) == HLA_IMMEDIATE;
         if (immediate_) {
             stop_ = false;
@@ -141,6 +142,7 @@ void Ambassador::disconnect() {
         stop_immediate();
         client_.reset();
         federate_ = nullptr;
+        directed_ = nullptr;
     });
 }
 

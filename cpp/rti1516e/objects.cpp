@@ -35,6 +35,12 @@ std::uint8_t order_of(OrderType const& type) {
 
 }  // namespace
 
+wire::HandleValues copies(ParameterHandleValueMap const& values) {
+    wire::HandleValues out;
+    for (const auto& [p, v] : values) out.emplace_back(core(p), std::string(static_cast<const char*>(v.data()), v.size()));
+    return out;
+}
+
 void Ambassador::require_reserved(std::wstring const& name) const {
     if (!reserved_.count(name)) raise("ObjectInstanceNameNotReserved", "'" + utf8(name) + "' (reserve it first)");
 }

@@ -80,6 +80,17 @@ DimensionHandleSet Ambassador::getAvailableDimensionsForClassAttribute(ObjectCla
     return guarded([&] { return dimensions_of(client().attribute_routing_space(core(a), core(cls))); });
 }
 
+DimensionHandleSet Ambassador::availableDimensionsForObjectClass(ObjectClassHandle cls) {
+    return guarded([&] {
+        DimensionHandleSet out;
+        for (auto space : client().attribute_routing_spaces(core(cls))) {
+            const auto dimensions = dimensions_of(space);
+            out.insert(dimensions.begin(), dimensions.end());
+        }
+        return out;
+    });
+}
+
 DimensionHandleSet Ambassador::getAvailableDimensionsForInteractionClass(InteractionClassHandle cls) {
     return guarded([&] { return dimensions_of(client().interaction_routing_space(core(cls))); });
 }
@@ -237,14 +248,6 @@ void Ambassador::unsubscribeInteractionClassWithRegions(InteractionClassHandle c
         }
     });
 }
-
-namespace {
-wire::HandleValues copies(ParameterHandleValueMap const& values) {
-    wire::HandleValues out;
-    for (const auto& [p, v] : values) out.emplace_back(core(p), std::string(static_cast<const char*>(v.data()), v.size()));
-    return out;
-}
-}  // namespace
 
 void Ambassador::sendInteractionWithRegions(InteractionClassHandle cls, ParameterHandleValueMap const& values,
                                             RegionHandleSet const& regions, VariableLengthData const& tag) {

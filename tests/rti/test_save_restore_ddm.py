@@ -277,7 +277,7 @@ def test_regions_come_back_after_rtig_restarts_on_its_save_dir(tmp_path: pathlib
                 p.rtia.requestFederationRestore(label)
                 tick_all(lambda: bool(p.named("requestFederationRestoreFailed")), [p])
                 [(got, reasons[label])] = p.named("requestFederationRestoreFailed")
-            assert "save format version 1 (this gateway reads versions 2 to 3)" in reasons["old"]
+            assert "save format version 1 (this gateway reads versions 2 to 4)" in reasons["old"]
             assert "routing space handle 99 is not defined" in reasons["space"]
             # Nothing changed: delivery still follows the restored regions.
             assert round_from_p(p, s1, v1, u, "still") == ["radio still", "reflect still"]

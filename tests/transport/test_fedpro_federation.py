@@ -167,6 +167,20 @@ def test_list_federation_execution_members_names_each_federate_and_its_type(door
         leave(rtia)
 
 
+def test_an_object_class_has_the_dimensions_of_its_attributes(door: Any) -> None:
+    """HLA 4's getAvailableDimensionsForObjectClass: the dimensions of any of the class's attributes (Vehicle's
+    position has X and Y, its speed none); an undefined class is refused."""
+    rtia, _ = fedpro_federate(door.fedpro_address, "car", create=True)
+    try:
+        vehicle = rtia.getObjectClassHandle(objectClassName="Vehicle")
+        dimensions = rtia.getAvailableDimensionsForObjectClass(objectClass=vehicle).dimensionHandle
+        assert sorted(rtia.getDimensionName(dimension=d) for d in dimensions) == ["X", "Y"]
+        with pytest.raises(fedpro.rti_exception("ObjectClassNotDefined")):
+            rtia.getAvailableDimensionsForObjectClass(objectClass=datatypes_pb2.ObjectClassHandle(data=b"\x00\x00\x03\xe7"))
+    finally:
+        leave(rtia)
+
+
 def java_style_zip(name: str, content: bytes) -> bytes:
     """A zip archive of one deflated file written as Java's ZipOutputStream writes it, to a stream it cannot seek:
     the sizes and CRC after the data (a data descriptor) and in the central directory only."""

@@ -248,10 +248,7 @@ void Client::resign(std::uint8_t action) {
     callbacks_ = CallbackQueue{};  // what the federation sent before the resign: no callback after it
     fom_.reset();
     federate_ = 0;
-    declarations_.published.clear();
-    declarations_.subscribed.clear();
-    declarations_.published_interactions.clear();
-    declarations_.subscribed_interactions.clear();
+    declarations_ = DeclarationState{};
     objects_.clear();
     announced_.clear();
     time_ = TimeState{};

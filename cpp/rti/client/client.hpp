@@ -112,6 +112,19 @@ public:
                                    wire::OptionalTime time);
     std::uint64_t delete_object(std::uint32_t object, const std::string& tag, wire::OptionalTime time);
 
+    // ---- HLA 4's directed interactions (client/directed.cpp; the routing in server/directed.cpp) ----
+    // Adds the interaction classes to those published directed at instances of the object class, or removes
+    // them (all when none are named).
+    void publish_directed(fom::Handle object_class, const std::vector<fom::Handle>& interactions, bool adding);
+    // Received when this federate owns an attribute of the instance, whenever it knows the instance, or no more
+    // (None: all of the class's when none are named).
+    enum class DirectedReceipt : std::uint8_t { None, Owned, Universally };
+    void subscribe_directed(fom::Handle object_class, const std::vector<fom::Handle>& interactions,
+                            DirectedReceipt receipt);
+    // InteractionClassNotPublished unless published directed at the class the object is known as (or a superclass).
+    std::uint64_t send_directed_interaction(fom::Handle cls, std::uint32_t object, wire::HandleValues values,
+                                            const std::string& tag, wire::OptionalTime time);
+
     // ---- transport and order changes (HLA 1.3 §6.19-6.22) ----
     // Handles are fom::Transport / fom::Order values (InvalidTransportationHandle / InvalidOrderingHandle
     // otherwise). They apply to this federate's later updates of the owned attributes (forgotten by the
@@ -226,6 +239,7 @@ public:
     double update_rate(const std::string& designator) const;
     double update_rate_for(std::uint32_t object, fom::Handle attribute) const;
     fom::Handle attribute_routing_space(fom::Handle attribute, fom::Handle cls) const;
+    std::set<fom::Handle> attribute_routing_spaces(fom::Handle cls) const;  // of all the class's attributes
     fom::Handle interaction_routing_space(fom::Handle cls) const;
     // The transportation and ordering types by name ("HLAreliable", "HLAbestEffort"; "Receive", "Timestamp")
     // and back, with CERTI's handles (fom::Transport, fom::Order); NameNotFound, InvalidTransportationHandle,
@@ -287,7 +301,13 @@ private:
         std::set<fom::Handle> published_interactions;
         std::set<fom::Handle> subscribed_interactions;
         std::map<fom::Handle, double> rates;  // object class -> the update rate its subscription asks (IEEE 1516-2010)
+        // HLA 4's directed interactions (client/directed.cpp): object class -> interaction classes.
+        std::map<fom::Handle, std::set<fom::Handle>> published_directed;
+        std::map<fom::Handle, std::set<fom::Handle>> subscribed_directed;  // received when owning an attribute
+        std::map<fom::Handle, std::set<fom::Handle>> subscribed_directed_universally;
     };
+    // ObjectClassNotDefined, InteractionClassNotDefined, a save or restore under way (client/directed.cpp).
+    void check_directed(fom::Handle object_class, const std::vector<fom::Handle>& interactions) const;
     // Where this federate is in a federation save or restore (client/save_restore.cpp).
     struct SaveRestoreState {
         enum class SavePhase : std::uint8_t { None, Initiated, Begun, Answered };
@@ -518,13 +538,17 @@ private:
         const auto& c = defined_interaction_class(cls);
         if (!declarations_.published_interactions.count(cls))
             raise(ErrorCode::InteractionClassNotPublished, "interaction class '" + c.qualified_name + "' is not published");
+        check_sendable_parameters(c, values);
+        return c;
+    }
+    template <class Values>
+    static void check_sendable_parameters(const fom::InteractionClass& c, const Values& values) {
         for (const auto& [param, value] : values) {
             if (!c.parameter(param))
                 raise(ErrorCode::InteractionParameterNotDefined, "parameter handle " + std::to_string(param) +
                                                                      " is not defined for interaction '" +
                                                                      c.qualified_name + "'");
         }
-        return c;
     }
     const fom::InteractionClass& defined_interaction_class(fom::Handle cls) const;
     const LocalObject& known_object(std::uint32_t object) const;

@@ -149,6 +149,13 @@ void Client::delivered(const wire::InitiateFederateRestore& m) {
         std::set<fom::Handle>(saved.published_interactions.begin(), saved.published_interactions.end());
     declarations_.subscribed_interactions =
         std::set<fom::Handle>(saved.subscribed_interactions.begin(), saved.subscribed_interactions.end());
+    for (auto [declared, records] : {std::pair{&declarations_.published_directed, &saved.published_directed},
+                                     std::pair{&declarations_.subscribed_directed, &saved.subscribed_directed},
+                                     std::pair{&declarations_.subscribed_directed_universally,
+                                               &saved.subscribed_directed_universally}}) {
+        declared->clear();
+        for (const auto& [oc, ics] : *records) (*declared)[oc] = std::set<fom::Handle>(ics.begin(), ics.end());
+    }
     objects_.clear();
     for (const auto& known : saved.objects) {
         LocalObject obj = make_local_object(known.known_class, known.name);

@@ -137,6 +137,16 @@ fom::Handle Client::attribute_routing_space(fom::Handle attribute, fom::Handle c
     return s ? s->handle : 0;
 }
 
+std::set<fom::Handle> Client::attribute_routing_spaces(fom::Handle cls) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    std::set<fom::Handle> spaces;
+    for (const auto& a : defined_object_class(cls).attributes) {
+        const auto* s = a.space.empty() ? nullptr : fom_->find_space(a.space);
+        if (s) spaces.insert(s->handle);
+    }
+    return spaces;
+}
+
 fom::Handle Client::interaction_routing_space(fom::Handle cls) const {
     std::lock_guard<std::mutex> lock(mu_);
     const auto& c = defined_interaction_class(cls);

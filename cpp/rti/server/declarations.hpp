@@ -16,6 +16,10 @@ struct FederateDeclarations {
     std::map<fom::Handle, std::set<fom::Handle>> subscribed;  // object class -> attributes
     std::set<fom::Handle> published_interactions;
     std::set<fom::Handle> subscribed_interactions;
+    // HLA 4's directed interactions (server/directed.cpp): object class -> interaction classes.
+    std::map<fom::Handle, std::set<fom::Handle>> published_directed;
+    std::map<fom::Handle, std::set<fom::Handle>> subscribed_directed;              // when owning an attribute
+    std::map<fom::Handle, std::set<fom::Handle>> subscribed_directed_universally;  // whenever knowing the instance
     std::set<fom::Handle> registration_started;    // classes told startRegistrationForObjectClass
     std::set<fom::Handle> interactions_turned_on;  // classes told turnInteractionsOn
     bool class_relevance = true;                   // HLA 1.3 advisory switch defaults

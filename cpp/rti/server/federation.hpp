@@ -226,6 +226,21 @@ private:
     template <class M>
     void deliver_timestamp_order(FederateHandle to, const M& message, FederateHandle sender, std::uint64_t serial,
                                  double time, Routed*& routed, wire::SharedFrame frame);
+    // WireError for a parameter the class does not define (the sender's client checked it).
+    void check_parameters(const fom::InteractionClass& cls, const wire::HandleValueViews& values) const;
+    // How the sender's interactions of the class go: its change of their transport or order (HLA 1.3 §6.20,
+    // §6.22), else the FOM's.
+    std::pair<fom::Transport, fom::Order> interaction_delivery(const FederateState& sender,
+                                                               const fom::InteractionClass& cls) const;
+    // An interaction (ForwardedInteraction, ForwardedDirectedInteraction: sender, serial, tag and transport set)
+    // to federate `to`, received as class `as` with the values that class defines: in timestamp order at
+    // `time`, in receive order without one.
+    template <class Forwarded>
+    void forward_interaction(FederateHandle to, Forwarded& receive, const wire::HandleValueViews& values, fom::Handle as,
+                             const wire::OptionalTime& time, Routed*& routed);
+    // The class federate `gh` receives an interaction of `cls` directed at `obj` as (HLA 4), or 0.
+    fom::Handle directed_receiver(FederateHandle gh, const FederateState& g, fom::Handle cls,
+                                  const ObjectInstance& obj) const;
 
     // The handlers, one per message of HLACORE_FEDERATION_SERVICES (wire/message_list.hpp), each defined in
     // the server file of its group; anything else is a protocol violation.

@@ -250,27 +250,56 @@ void Federation::on(FederateHandle from, const wire::SendInteractionView& m) {
     route_interaction(from, m, SentRegions{});
 }
 
+void Federation::check_parameters(const fom::InteractionClass& cls, const wire::HandleValueViews& values) const {
+    for (const auto& [param, value] : values) {
+        if (!cls.parameter(param))
+            throw WireError("parameter handle " + std::to_string(param) + " is not defined for interaction '" +
+                            cls.qualified_name + "'");
+    }
+}
+
+std::pair<fom::Transport, fom::Order> Federation::interaction_delivery(const FederateState& sender,
+                                                                      const fom::InteractionClass& cls) const {
+    auto transport = sender.interaction_transport.find(cls.handle);
+    auto order = sender.interaction_order.find(cls.handle);
+    return {transport != sender.interaction_transport.end() ? transport->second : cls.transport,
+            order != sender.interaction_order.end() ? order->second : cls.order};
+}
+
+template <class Forwarded>
+void Federation::forward_interaction(FederateHandle to, Forwarded& receive, const wire::HandleValueViews& values,
+                                     fom::Handle as, const wire::OptionalTime& time, Routed*& routed) {
+    // Received as the subscribed superclass: only the parameters that class defines.
+    const auto* received_class = fom_.interaction_class(as);
+    receive.interaction_class = as;
+    receive.values.clear();
+    for (const auto& pair : values)
+        if (received_class->parameter(pair.first)) receive.values.push_back(&pair);
+    if (time) {
+        receive.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
+        receive.time = time;
+        deliver_timestamp_order(to, receive, receive.sender, receive.serial, *time, routed, shared_frame(receive));
+    } else {
+        receive.order = static_cast<std::uint8_t>(fom::Order::Receive);
+        receive.time.reset();
+        deliver_receive_order(to, receive);
+    }
+}
+template void Federation::forward_interaction(FederateHandle, wire::ForwardedDirectedInteraction&,
+                                              const wire::HandleValueViews&, fom::Handle, const wire::OptionalTime&,
+                                              Routed*&);
+
 // `sent_in`: the regions the interaction was sent with (sendInteractionWithRegion), none for the default
 // region, which reaches every subscriber of the class.
 void Federation::route_interaction(FederateHandle from, const wire::SendInteractionView& m, const SentRegions& sent_in) {
     if (m.time) check_timestamp(from, *m.time, "interaction");
     const auto& sent_class = interaction_class(m.interaction_class);
-    for (const auto& [param, value] : m.values) {
-        if (!sent_class.parameter(param))
-            throw WireError("parameter handle " + std::to_string(param) + " is not defined for interaction '" +
-                            sent_class.qualified_name + "'");
-    }
+    check_parameters(sent_class, m.values);
     wire::ForwardedInteraction receive;
     receive.tag = m.tag;
     receive.sender = from;
     receive.serial = m.serial;
-    // The sender's change of the class's transport or order (HLA 1.3 §6.20, §6.22), else the FOM's.
-    const auto& sender = federates_.at(from);
-    auto changed_transport = sender.interaction_transport.find(m.interaction_class);
-    auto changed_order = sender.interaction_order.find(m.interaction_class);
-    const fom::Transport transport =
-        changed_transport != sender.interaction_transport.end() ? changed_transport->second : sent_class.transport;
-    const fom::Order order = changed_order != sender.interaction_order.end() ? changed_order->second : sent_class.order;
+    const auto [transport, order] = interaction_delivery(federates_.at(from), sent_class);
     receive.transport = static_cast<std::uint8_t>(transport);
     const bool timestamped = m.time && order == fom::Order::Timestamp;
     Routed* routed = nullptr;
@@ -278,21 +307,8 @@ void Federation::route_interaction(FederateHandle from, const wire::SendInteract
         if (gh == from) continue;
         const fom::Handle as = interaction_receiver(g, m.interaction_class, sent_in);
         if (as == 0) continue;
-        // Received as the subscribed superclass: only the parameters that class defines.
-        const auto* received_class = fom_.interaction_class(as);
-        receive.interaction_class = as;
-        receive.values.clear();
-        for (const auto& pair : m.values)
-            if (received_class->parameter(pair.first)) receive.values.push_back(&pair);
-        if (timestamped && time_.is_tso(from, gh)) {
-            receive.order = static_cast<std::uint8_t>(fom::Order::Timestamp);
-            receive.time = m.time;
-            deliver_timestamp_order(gh, receive, from, m.serial, *m.time, routed, shared_frame(receive));
-        } else {
-            receive.order = static_cast<std::uint8_t>(fom::Order::Receive);
-            receive.time.reset();
-            deliver_receive_order(gh, receive);
-        }
+        const bool tso = timestamped && time_.is_tso(from, gh);
+        forward_interaction(gh, receive, m.values, as, tso ? m.time : std::nullopt, routed);
     }
     if (m.time) release_time();  // only a timestamped message can have been queued for a grant
 }

@@ -26,11 +26,12 @@ public:
     virtual void callback(FederateHandle to, const wire::Message& message) = 0;
 };
 
-// The callbacks a recording keeps: all but reflections and received interactions, whose content it has
-// from their sender's request.
+// The callbacks a recording keeps: all but reflections and received interactions (directed too), whose content it
+// has from their sender's request.
 template <class M>
-constexpr bool kRecordedCallback =
-    M::kType != wire::MessageType::ReflectAttributes && M::kType != wire::MessageType::ReceiveInteraction;
+constexpr bool kRecordedCallback = M::kType != wire::MessageType::ReflectAttributes &&
+                                   M::kType != wire::MessageType::ReceiveInteraction &&
+                                   M::kType != wire::MessageType::ReceiveDirectedInteraction;
 
 template <class M>
 constexpr bool kForwarded = std::is_same_v<M, wire::ForwardedReflection> || std::is_same_v<M, wire::ForwardedInteraction>;

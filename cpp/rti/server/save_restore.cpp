@@ -40,7 +40,8 @@ constexpr char kFileMagic[8] = {'H', 'L', 'A', 'C', 'S', 'A', 'V', 'E'};
 // restoring one would silently drop the regions federates hold handles to. Version 3: an attribute's
 // update_regions may repeat, one record per region (IEEE 1516-2010's several); a version 2 file, one record
 // an attribute, reads the same, and a version 2 gateway refuses a version 3 file rather than keep one region.
-constexpr std::uint32_t kFormatVersion = 3;
+// Version 4 appends HLA 4's directed interaction declarations, none in an older file.
+constexpr std::uint32_t kFormatVersion = 4;
 constexpr std::uint32_t kOldestReadableVersion = 2;
 
 using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
@@ -82,6 +83,14 @@ struct FederateRecord {
                    attribute_relevance, attribute_scope, interaction_order, interaction_transport, time_management,
                    held_after_save, regions, region_subscriptions, region_interaction_subscriptions,
                    update_regions, in_scope, relevant, last_region)
+};
+
+struct DirectedRecord {  // a federate's HLA 4 directed interaction declarations (version 4)
+    std::uint32_t federate = 0;
+    std::vector<wire::ClassAttributes> published;
+    std::vector<wire::ClassAttributes> subscribed;
+    std::vector<wire::ClassAttributes> universally;
+    HLACORE_FIELDS(federate, published, subscribed, universally)
 };
 
 struct ObjectRecord {
@@ -192,6 +201,7 @@ struct Federation::Snapshot {
     wire::OptionalTime time;
     std::vector<FederateRecord> federates;
     std::vector<ObjectRecord> objects;
+    std::vector<DirectedRecord> directed;
 };
 
 // ---- the state (save_restore.hpp) ----
@@ -396,6 +406,15 @@ std::string Federation::encode_snapshot() const {
         r.relevant = records_of<ObjectAttributes>(f.ddm.relevant);
         federates.push_back(std::move(r));
     }
+    std::vector<DirectedRecord> directed;
+    for (const auto& [h, f] : federates_) {
+        const auto& d = f.declarations;
+        if (d.published_directed.empty() && d.subscribed_directed.empty() && d.subscribed_directed_universally.empty())
+            continue;
+        directed.push_back({h, records_of<wire::ClassAttributes>(d.published_directed),
+                            records_of<wire::ClassAttributes>(d.subscribed_directed),
+                            records_of<wire::ClassAttributes>(d.subscribed_directed_universally)});
+    }
     std::vector<ObjectRecord> objects;
     for (const auto& [oh, obj] : objects_) {
         ObjectRecord r;
@@ -409,7 +428,7 @@ std::string Federation::encode_snapshot() const {
         r.transport = pairs(obj.transport);
         objects.push_back(std::move(r));
     }
-    w(federates, objects);
+    w(federates, objects, directed);
     return out;
 }
 
@@ -426,6 +445,7 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
     try {
         r(s.label, s.federation, s.fed_name, s.fed_text, s.next_federate, s.next_object, s.time);
         r(s.federates, s.objects);
+        if (version >= 4) r(s.directed);
         if (r.remaining() != 0) r.fail("trailing bytes");
     } catch (const WireError& e) {
         // The codec names the message it was decoding; here it is the file.
@@ -487,6 +507,15 @@ Federation::Snapshot Federation::decode_snapshot(const std::string& bytes) const
         for (auto ic : f.published_interactions) interaction_class(ic);
         for (auto ic : f.subscribed_interactions) interaction_class(ic);
         if (f.handle >= s.next_federate) throw WireError("federate handle beyond the saved next handle");
+    }
+    for (const auto& d : s.directed) {
+        if (!handles_seen.count(d.federate)) throw WireError("directed interactions of an unknown federate");
+        for (const auto* declared : {&d.published, &d.subscribed, &d.universally}) {
+            for (const auto& [oc, interactions] : *declared) {
+                object_class(oc);
+                for (auto ic : interactions) interaction_class(ic);
+            }
+        }
     }
     std::map<std::uint32_t, std::uint32_t> objects_seen;  // object -> class
     std::set<std::string> object_names;
@@ -605,6 +634,15 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         // What the save held back is delivered after federationRestored, as it was after federationSaved.
         if (!r.held_after_save.empty()) save_restore_.restore.held[r.handle] = std::move(r.held_after_save);
     }
+    for (const auto& d : snap.directed) {
+        auto& f = federates_.at(d.federate).declarations;
+        auto put = [](auto& declared, const auto& records) {
+            for (const auto& [oc, ics] : records) declared[oc] = std::set<fom::Handle>(ics.begin(), ics.end());
+        };
+        put(f.published_directed, d.published);
+        put(f.subscribed_directed, d.subscribed);
+        put(f.subscribed_directed_universally, d.universally);
+    }
     for (const auto& r : snap.objects) {
         ObjectInstance& obj = objects_[r.handle];
         obj.object_class = r.object_class;
@@ -634,6 +672,10 @@ void Federation::request_restore(FederateHandle from, const std::string& label) 
         state.subscribed = records_of<wire::ClassAttributes>(f.declarations.subscribed);
         state.published_interactions = handles(f.declarations.published_interactions);
         state.subscribed_interactions = handles(f.declarations.subscribed_interactions);
+        state.published_directed = records_of<wire::ClassAttributes>(f.declarations.published_directed);
+        state.subscribed_directed = records_of<wire::ClassAttributes>(f.declarations.subscribed_directed);
+        state.subscribed_directed_universally =
+            records_of<wire::ClassAttributes>(f.declarations.subscribed_directed_universally);
         for (ObjectHandle oh : f.known) {
             const ObjectInstance& obj = objects_.at(oh);
             fom::Handle as = obj.object_class;

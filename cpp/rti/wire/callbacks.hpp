@@ -85,18 +85,29 @@ constexpr const char* callback_name(Callback c) { return kCallbackNames[static_c
     X(TurnUpdatesOn, turnUpdatesOnForObjectInstance)                                                     \
     X(TurnUpdatesOff, turnUpdatesOffForObjectInstance)
 
+// HLA 4's callbacks, for the front ends that serve HLA 4's services (the Federate Protocol's, through
+// rti1516e::Ambassador's extensions); the others never ask for them and need no overload.
+#define HLACORE_HLA4_CALLBACK_MESSAGES(X) X(ReceiveDirectedInteraction)
+
 template <class M>
 struct IsCallback : std::false_type {};
+template <class M>
+struct IsHla4Callback : std::false_type {};
 #define HLACORE_X(name) \
     template <>         \
     struct IsCallback<name> : std::true_type {};
 HLACORE_CALLBACK_MESSAGES(HLACORE_X)
 #undef HLACORE_X
+#define HLACORE_X(name) \
+    template <>         \
+    struct IsHla4Callback<name> : std::true_type {};
+HLACORE_HLA4_CALLBACK_MESSAGES(HLACORE_X)
+#undef HLACORE_X
 
 // Hands a callback message to a front end (the Python binding, the HLA 1.3 C++ API, the ones to come):
 // `front_end(m)` with one overload per message of HLACORE_CALLBACK_MESSAGES, each returning R. A front end
-// that misses one does not compile. Any other message (none reaches the callback queue) goes to
-// front_end.unexpected().
+// that misses one does not compile. Any other message (none reaches the callback queue), and an HLA 4 callback
+// it has no overload for, goes to front_end.unexpected().
 template <class R, class FrontEnd, class Queued>
 R dispatch_callback(Queued& message, FrontEnd& front_end) {
     return std::visit(
@@ -105,6 +116,8 @@ R dispatch_callback(Queued& message, FrontEnd& front_end) {
             if constexpr (IsCallback<M>::value) {
                 static_assert(std::is_invocable_r_v<R, FrontEnd&, decltype(m)>,
                               "a front end has no overload for a message of HLACORE_CALLBACK_MESSAGES");
+                return front_end(m);
+            } else if constexpr (IsHla4Callback<M>::value && std::is_invocable_r_v<R, FrontEnd&, decltype(m)>) {
                 return front_end(m);
             } else {
                 return front_end.unexpected();

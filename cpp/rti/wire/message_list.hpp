@@ -21,8 +21,9 @@ constexpr std::uint32_t kMagic = 0x484c4143;  // "HLAC"
 // reason, AbortFederationSave, AbortFederationRestore and the transportation queries and reports; 15:
 // SubscriptionRate; 16: JoinFederation's fom_modules (FOM modules added at join) and FomExtended; 17: several
 // regions (IEEE 1516-2010): AssociateRegion's adds, UnassociateRegion's attributes, SendInteractionWithRegion's
-// regions; 18: JoinFederation's federate_type
-constexpr std::uint16_t kProtocolVersion = 18;
+// regions; 18: JoinFederation's federate_type; 19: HLA 4's directed interactions (PublishDirectedInteractions ...
+// ReceiveDirectedInteraction) and InitiateFederateRestore's directed declarations
+constexpr std::uint16_t kProtocolVersion = 19;
 // The default frame limit (the gateway's is configurable and announced in its Welcome): larger frames are a
 // protocol error.
 constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
@@ -173,7 +174,12 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     /* IEEE 1516-2010's update rate of a subscription: federate -> gateway */ \
     X(SubscriptionRate)              \
     /* FOM modules added at join (IEEE 1516-2010 §4.5): gateway -> the federates joined before */ \
-    X(FomExtended)
+    X(FomExtended)                   \
+    /* HLA 4's directed interactions: federate -> gateway, and the callback */ \
+    X(PublishDirectedInteractions)   \
+    X(SubscribeDirectedInteractions) \
+    X(SendDirectedInteraction)       \
+    X(ReceiveDirectedInteraction)
 
 // The federate -> gateway messages the gateway serves itself: federation management and the requests
 // answered with a Reply or a result. Each has a `Gateway::serve(Connection&, const M&)` in
@@ -216,7 +222,9 @@ constexpr std::uint32_t kMaxFrameBytes = 64u << 20;
     X(CreateRegion) X(ModifyRegion) X(DeleteRegion) X(AssociateRegion) X(UnassociateRegion)            \
     X(SubscribeObjectClassWithRegion) X(UnsubscribeObjectClassWithRegion)                              \
     X(SubscribeInteractionClassWithRegion) X(UnsubscribeInteractionClassWithRegion)                    \
-    X(SendInteractionWithRegion) X(RequestClassUpdateWithRegion)
+    X(SendInteractionWithRegion) X(RequestClassUpdateWithRegion)                                       \
+    /* directed */                                                                                     \
+    X(PublishDirectedInteractions) X(SubscribeDirectedInteractions) X(SendDirectedInteraction)
 
 // The requests whose federate side is a check followed by the send: each has a
 // `void Client::check(const M&)` in cpp/rti/client/<group>.cpp (the service's checks and the federate's own

@@ -814,7 +814,7 @@ struct FederationRestoreBegun {
 
 // What a restored federate had in the save, as its client mirrors it (records nested in
 // initiateFederateRestore, each encoded as its fields in order).
-struct ClassAttributes {  // a published or subscribed object class and its attributes
+struct ClassAttributes {  // a published or subscribed object class and its attributes (directed: interactions)
     std::uint32_t object_class = 0;
     Handles attributes;
     HLACORE_FIELDS(object_class, attributes)
@@ -879,8 +879,13 @@ struct RestoredState {
     std::vector<InteractionRegion> region_interaction_subscriptions;
     std::vector<UpdateRegion> update_regions;
     std::uint32_t last_region = 0;  // the highest region number this federate ever created
+    // HLA 4's directed interactions: object class and interaction classes published, subscribed, universally.
+    std::vector<ClassAttributes> published_directed;
+    std::vector<ClassAttributes> subscribed_directed;
+    std::vector<ClassAttributes> subscribed_directed_universally;
     HLACORE_FIELDS(time_state, next_serial, published, subscribed, published_interactions, subscribed_interactions,
-                   objects, regions, region_subscriptions, region_interaction_subscriptions, update_regions, last_region)
+                   objects, regions, region_subscriptions, region_interaction_subscriptions, update_regions, last_region,
+                   published_directed, subscribed_directed, subscribed_directed_universally)
 };
 struct InitiateFederateRestore {
     HLACORE_TYPE(InitiateFederateRestore)
@@ -1023,6 +1028,55 @@ struct TurnUpdatesOff {
     Handles attributes;
     HLACORE_FIELDS(object, attributes)
 };
+
+// ---- HLA 4's directed interactions (IEEE 1516.1-2025 §5.6-5.13, §6.14-6.15) ----
+// An interaction sent to one object instance, received by the federates that subscribe to it for the instance's
+// class or a superclass: those owning an attribute of the instance, or, subscribed universally, all that know it.
+
+// Federate -> gateway: all the interaction classes the federate now publishes directed at instances of the
+// object class (none: none any more).
+struct PublishDirectedInteractions {
+    HLACORE_TYPE(PublishDirectedInteractions)
+    std::uint32_t object_class = 0;
+    Handles interaction_classes;
+    HLACORE_FIELDS(object_class, interaction_classes)
+};
+// Federate -> gateway: all the interaction classes the federate now receives directed at instances of the object
+// class, when it owns an attribute of the instance (`owned`) or whenever it knows the instance (`universally`).
+struct SubscribeDirectedInteractions {
+    HLACORE_TYPE(SubscribeDirectedInteractions)
+    std::uint32_t object_class = 0;
+    Handles owned;
+    Handles universally;
+    HLACORE_FIELDS(object_class, owned, universally)
+};
+struct SendDirectedInteraction {
+    HLACORE_TYPE(SendDirectedInteraction)
+    std::uint32_t interaction_class = 0;
+    std::uint32_t object = 0;
+    HandleValues values;
+    std::string tag;
+    OptionalTime time;
+    std::uint64_t serial = 0;
+    HLACORE_FIELDS(interaction_class, object, values, tag, time, serial)
+};
+// Values: HandleValues, or HandleValueRefs for the gateway's forwarding: the same frame.
+template <class Values>
+struct BasicReceiveDirectedInteraction {
+    HLACORE_TYPE(ReceiveDirectedInteraction)
+    std::uint32_t interaction_class = 0;  // as the receiver subscribed to it
+    std::uint32_t object = 0;
+    Values values;
+    std::string tag;
+    std::uint8_t order = 1;
+    std::uint8_t transport = 1;
+    OptionalTime time;
+    std::uint32_t sender = 0;
+    std::uint64_t serial = 0;
+    HLACORE_FIELDS(interaction_class, object, values, tag, order, transport, time, sender, serial)
+};
+using ReceiveDirectedInteraction = BasicReceiveDirectedInteraction<HandleValues>;
+using ForwardedDirectedInteraction = BasicReceiveDirectedInteraction<HandleValueRefs>;
 
 // Index in the variant == wire code.
 #define HLACORE_X(name) , name

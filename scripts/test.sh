@@ -17,6 +17,7 @@ command -v openssl >/dev/null 2>&1 \
 command -v pkg-config >/dev/null 2>&1 \
     || debian_install "pkg-config reads the installed hlacore.pc in tests/system/test_cpp_api.py (the HLA 1.3 C++ API)" pkgconf
 install_hlacore test
+./scripts/install-ros2.sh   # ROS 2's pinned wheels from PyPI for the ROS 2 bridge tests (after hlacore: numpy comes with it)
 [ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja
 mkdir -p build
 # The gateway, and hlacore-rtia over the federate side (it decodes what CERTI federates send: sanitized too), and

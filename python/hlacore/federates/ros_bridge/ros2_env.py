@@ -1,0 +1,101 @@
+"""What a process needs to run ROS 2 from the PyPI wheels (scripts/ros2-requirements.txt), in one place.
+
+The wheels install rclpy and the message packages into the venv's site-packages, and their C libraries
+into ``<prefix>/lib`` (``prefix`` = the venv) and ``site-packages/ros_*.libs`` (libraries that auditwheel
+vendored under hashed names: one wheel's extension needs another wheel's ``.libs``, which no RPATH names).
+So a ROS 2 process needs, **when it starts** (the dynamic loader reads ``LD_LIBRARY_PATH`` only then):
+
+* ``LD_LIBRARY_PATH``: ``<prefix>/lib`` and every ``ros_*.libs`` directory;
+* ``AMENT_PREFIX_PATH=<prefix>``: the ament index (``<prefix>/share/ament_index``), where
+  ``rmw_implementation`` looks up the middleware and rosidl the type supports;
+* ``RMW_IMPLEMENTATION=rmw_fastrtps_cpp``: the only middleware installed (the default would be the same,
+  named here so that a user's other setting does not pick one that is missing);
+* optionally ``ROS_DOMAIN_ID`` (DDS participants of other domains never match: a test's own domain) and
+  ``ROS_LOG_DIR`` (rcl writes a log file per process, by default under ``~/.ros/log``).
+
+:func:`environment` builds that environment for a child process; :func:`reexec_with_ros2` lets a command
+(``python -m hlacore.federates.ros_bridge --ros 2``) give it to itself by re-executing once.
+``HLACORE_ROS2_PREFIX`` names another prefix than the running interpreter's.
+"""
+
+from __future__ import annotations
+
+import glob
+import importlib.util
+import os
+import sys
+from typing import Mapping, Optional
+
+#: The middleware the pinned wheels bring.
+RMW_IMPLEMENTATION = "rmw_fastrtps_cpp"
+#: Set in the environment :func:`environment` builds: the process has it (see :func:`ready`). The wheels'
+#: optional bootstrapper (not installed by scripts/install-ros2.sh) reads its own guard, set too, so that it
+#: would not re-execute such a process again.
+READY_FLAG = "HLACORE_ROS2_ENV"
+INSTALL_HINT = ("the ROS 2 bridge needs ROS 2 Kilted's wheels (rclpy, rmw_fastrtps_cpp and the message "
+                "packages) in this Python: ./scripts/install-ros2.sh installs the pinned set "
+                "(scripts/ros2-requirements.txt)")
+
+
+def prefix() -> str:
+    """Where the wheels put ``lib/`` and ``share/``: ``$HLACORE_ROS2_PREFIX`` or this interpreter's prefix."""
+    return os.environ.get("HLACORE_ROS2_PREFIX", sys.prefix)
+
+
+def site_packages(root: Optional[str] = None) -> str:
+    """The site-packages directory of ``root`` (default :func:`prefix`) for this Python version."""
+    version = f"python{sys.version_info.major}.{sys.version_info.minor}"
+    return os.path.join(root or prefix(), "lib", version, "site-packages")
+
+
+def library_dirs(root: Optional[str] = None) -> list[str]:
+    """``<prefix>/lib`` and the wheels' ``ros_*.libs`` directories, sorted."""
+    base = root or prefix()
+    return [os.path.join(base, "lib"), *sorted(glob.glob(os.path.join(site_packages(base), "ros_*.libs")))]
+
+
+def installed(root: Optional[str] = None) -> bool:
+    """Whether the ROS 2 wheels are there: rclpy importable and the Fast DDS middleware's library present."""
+    base = root or prefix()
+    return (importlib.util.find_spec("rclpy") is not None
+            and os.path.exists(os.path.join(base, "lib", f"lib{RMW_IMPLEMENTATION}.so")))
+
+
+def environment(base: Optional[Mapping[str, str]] = None, domain_id: Optional[int] = None,
+                log_dir: Optional[str] = None) -> dict[str, str]:
+    """``base`` (default ``os.environ``) with what a ROS 2 process needs (see the module docstring):
+    the library path prepended, the ament prefix, the middleware, and ``ROS_DOMAIN_ID`` / ``ROS_LOG_DIR``
+    when given."""
+    env = dict(os.environ if base is None else base)
+    root = prefix()
+    dirs = library_dirs(root)
+    old = [d for d in env.get("LD_LIBRARY_PATH", "").split(os.pathsep) if d and d not in dirs]
+    env["LD_LIBRARY_PATH"] = os.pathsep.join(dirs + old)
+    ament = [p for p in env.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p and p != root]
+    env["AMENT_PREFIX_PATH"] = os.pathsep.join([root, *ament])
+    env["RMW_IMPLEMENTATION"] = RMW_IMPLEMENTATION
+    env[READY_FLAG] = root
+    env["_ROS_WHEELS_BOOTSTRAP_COMPLETE"] = "1"
+    if domain_id is not None:
+        env["ROS_DOMAIN_ID"] = str(domain_id)
+    if log_dir is not None:
+        env["ROS_LOG_DIR"] = log_dir
+    return env
+
+
+def ready(env: Optional[Mapping[str, str]] = None) -> bool:
+    """Whether ``env`` (default this process's) was built by :func:`environment` for this prefix: a process
+    started with it can import rclpy."""
+    return (os.environ if env is None else env).get(READY_FLAG) == prefix()
+
+
+def reexec_with_ros2() -> None:
+    """Re-execute this process (same interpreter, same arguments) with :func:`environment` unless it has it
+    already: for commands that import rclpy when started from a plain shell. Returns only when ready."""
+    if ready():
+        return
+    if not installed():
+        raise ImportError(INSTALL_HINT)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os.execve(sys.executable, sys.orig_argv, environment())

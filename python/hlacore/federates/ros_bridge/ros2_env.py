@@ -1,27 +1,35 @@
 """What a process needs to run ROS 2 from the PyPI wheels (scripts/ros2-requirements.txt), in one place.
 
-The wheels install rclpy and the message packages into the venv's site-packages, and their C libraries
-into ``<prefix>/lib`` (``prefix`` = the venv) and ``site-packages/ros_*.libs`` (libraries that auditwheel
-vendored under hashed names: one wheel's extension needs another wheel's ``.libs``, which no RPATH names).
-So a ROS 2 process needs, **when it starts** (the dynamic loader reads ``LD_LIBRARY_PATH`` only then):
+scripts/install-ros2.sh installs the wheels under a prefix of their own, ``<venv>/ros2``, not into the
+venv's site-packages: ROS 2's message packages have the top-level names of ROS 1's (``std_msgs``,
+``geometry_msgs``, ...), and in the venv they would shadow Debian's ROS 1 messages, which rospy then fails
+to import. Under the prefix they are seen only by the processes started with :func:`environment`. There
+rclpy and the messages are in ``<prefix>/lib/python3.X/site-packages``, the C libraries in ``<prefix>/lib``
+and in ``site-packages/ros_*.libs`` (libraries that auditwheel vendored under hashed names: one wheel's
+extension needs another wheel's ``.libs``, which no RPATH names). So a ROS 2 process needs, **when it
+starts** (the dynamic loader reads ``LD_LIBRARY_PATH`` only then):
 
+* ``PYTHONPATH``: the prefix's site-packages;
 * ``LD_LIBRARY_PATH``: ``<prefix>/lib`` and every ``ros_*.libs`` directory;
 * ``AMENT_PREFIX_PATH=<prefix>``: the ament index (``<prefix>/share/ament_index``), where
   ``rmw_implementation`` looks up the middleware and rosidl the type supports;
 * ``RMW_IMPLEMENTATION=rmw_fastrtps_cpp``: the only middleware installed (the default would be the same,
   named here so that a user's other setting does not pick one that is missing);
+* ``RMW_FASTRTPS_PUBLICATION_MODE=SYNCHRONOUS``: ``publish`` writes the message before it returns (the
+  bridge publishes a grant's Twists before the next ``/clock``; rospy's bridge does the same with
+  ``queue_size=None``), and no extra sending thread per publisher;
 * optionally ``ROS_DOMAIN_ID`` (DDS participants of other domains never match: a test's own domain) and
   ``ROS_LOG_DIR`` (rcl writes a log file per process, by default under ``~/.ros/log``).
 
 :func:`environment` builds that environment for a child process; :func:`reexec_with_ros2` lets a command
 (``python -m hlacore.federates.ros_bridge --ros 2``) give it to itself by re-executing once.
-``HLACORE_ROS2_PREFIX`` names another prefix than the running interpreter's.
+``HLACORE_ROS2_PREFIX`` names another prefix than ``<venv>/ros2`` (a sourced ROS 2 install needs none of
+this: its setup script sets these variables).
 """
 
 from __future__ import annotations
 
 import glob
-import importlib.util
 import os
 import sys
 from typing import Mapping, Optional
@@ -37,9 +45,14 @@ INSTALL_HINT = ("the ROS 2 bridge needs ROS 2 Kilted's wheels (rclpy, rmw_fastrt
                 "(scripts/ros2-requirements.txt)")
 
 
+#: The prefix under the venv where scripts/install-ros2.sh installs the wheels.
+PREFIX_NAME = "ros2"
+
+
 def prefix() -> str:
-    """Where the wheels put ``lib/`` and ``share/``: ``$HLACORE_ROS2_PREFIX`` or this interpreter's prefix."""
-    return os.environ.get("HLACORE_ROS2_PREFIX", sys.prefix)
+    """Where the wheels are: ``$HLACORE_ROS2_PREFIX``, else ``ros2`` under this interpreter's prefix (the
+    venv)."""
+    return os.environ.get("HLACORE_ROS2_PREFIX") or os.path.join(sys.prefix, PREFIX_NAME)
 
 
 def site_packages(root: Optional[str] = None) -> str:
@@ -55,25 +68,29 @@ def library_dirs(root: Optional[str] = None) -> list[str]:
 
 
 def installed(root: Optional[str] = None) -> bool:
-    """Whether the ROS 2 wheels are there: rclpy importable and the Fast DDS middleware's library present."""
+    """Whether the ROS 2 wheels are under the prefix: rclpy and the Fast DDS middleware's library."""
     base = root or prefix()
-    return (importlib.util.find_spec("rclpy") is not None
+    return (os.path.isfile(os.path.join(site_packages(base), "rclpy", "__init__.py"))
             and os.path.exists(os.path.join(base, "lib", f"lib{RMW_IMPLEMENTATION}.so")))
 
 
 def environment(base: Optional[Mapping[str, str]] = None, domain_id: Optional[int] = None,
                 log_dir: Optional[str] = None) -> dict[str, str]:
     """``base`` (default ``os.environ``) with what a ROS 2 process needs (see the module docstring):
-    the library path prepended, the ament prefix, the middleware, and ``ROS_DOMAIN_ID`` / ``ROS_LOG_DIR``
-    when given."""
+    the Python and library paths prepended, the ament prefix, the middleware, and ``ROS_DOMAIN_ID`` /
+    ``ROS_LOG_DIR`` when given."""
     env = dict(os.environ if base is None else base)
     root = prefix()
+    packages = site_packages(root)
+    python = [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p and p != packages]
+    env["PYTHONPATH"] = os.pathsep.join([packages, *python])
     dirs = library_dirs(root)
     old = [d for d in env.get("LD_LIBRARY_PATH", "").split(os.pathsep) if d and d not in dirs]
     env["LD_LIBRARY_PATH"] = os.pathsep.join(dirs + old)
     ament = [p for p in env.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p and p != root]
     env["AMENT_PREFIX_PATH"] = os.pathsep.join([root, *ament])
     env["RMW_IMPLEMENTATION"] = RMW_IMPLEMENTATION
+    env["RMW_FASTRTPS_PUBLICATION_MODE"] = "SYNCHRONOUS"
     env[READY_FLAG] = root
     env["_ROS_WHEELS_BOOTSTRAP_COMPLETE"] = "1"
     if domain_id is not None:

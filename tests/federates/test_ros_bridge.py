@@ -118,11 +118,12 @@ def test_untimed_bridge_round_trip(roscore: dict[str, str], inprocess_gateway: o
     assert any(o[3] == 0.5 for _pose, o, _ranges in states)
 
 
-def test_import_without_ros_names_the_packages(tmp_path: pathlib.Path) -> None:
-    """With no rospy to be found, importing the bridge is an ImportError that says what to install."""
+def test_ros1_without_ros_names_the_packages(tmp_path: pathlib.Path) -> None:
+    """With no rospy to be found, the package still imports (it serves ROS 2 too), and choosing ROS 1 is an
+    ImportError that says what to install."""
     env = dict(os.environ, HLACORE_ROS_DIST_PACKAGES=str(tmp_path))
-    done = subprocess.run([sys.executable, "-c", "import hlacore.federates.ros_bridge"], capture_output=True,
-                          text=True, env=env, timeout=60, stdin=subprocess.DEVNULL)
+    done = subprocess.run([sys.executable, "-c", "import hlacore.federates.ros_bridge as b; b.select(1)"],
+                          capture_output=True, text=True, env=env, timeout=60, stdin=subprocess.DEVNULL)
     assert done.returncode == 1
     assert "ImportError: the ROS bridge needs ROS 1" in done.stderr, done.stderr
     assert "apt-get install -y --no-install-recommends ros-core python3-rospy" in done.stderr
@@ -148,6 +149,7 @@ def test_a_roscore_port_is_one_no_ros_process_can_be_handed_and_another_server_i
 CHECK_FINDER = """
 import importlib.util, json, sys
 import hlacore.federates.ros_bridge as bridge
+bridge.import_rospy()
 import rospy, std_msgs.msg
 print(json.dumps({"rospy": rospy.__file__, "std_msgs": std_msgs.msg.__file__,
                   "dist_on_path": any(p.rstrip("/") == sys.argv[1].rstrip("/") for p in sys.path),

@@ -1,18 +1,18 @@
-"""The ROS 1 bridge: a rospy node and an HLA federate of the robot world in one process (docs/ros-bridge.md).
+"""The ROS bridge: a ROS node (ROS 1 or ROS 2) and an HLA federate of the robot world in one process
+(docs/ros-bridge.md).
 
-Importing it imports Debian's rospy (see :mod:`.ros_import`); without ROS installed it raises an
-ImportError that names the Debian packages to install. Also here: :mod:`.stage_node` (the robot world as a
-stageros-style ROS node), :mod:`.master` (a ROS master for one run), :mod:`.children` (child processes)
-and :mod:`.runner` (the world federate on a thread beside the bridge, for scenario runs).
+The bridge and the stage node are written once against :class:`~.ros_api.RosApi`; :mod:`.ros1` implements it
+with Debian's rospy (:mod:`.ros_import`), :mod:`.ros2` with rclpy from ROS 2 Kilted's wheels
+(:mod:`.ros2_env`: the environment a ROS 2 process needs). Importing this package imports neither: the ROS
+of a bridge is chosen when it is built (:func:`~.ros_api.select`), and a missing one is an ImportError that
+says what to install. Also here: :mod:`.stage_node` (the robot world as a stageros-style ROS node),
+:mod:`.master` (a ROS 1 master for one run), :mod:`.children` (child processes) and :mod:`.runner` (the
+world federate on a thread beside the bridge, for scenario runs).
 
 Federates layer: imports the core and :mod:`hlacore.federates.robot_world`.
 """
 
-from .ros_import import INSTALL_HINT, import_rospy
-
-import_rospy()
-
-from .bridge import (  # noqa: E402
+from .bridge import (
     Mapping,
     OdometryIn,
     OdometryOut,
@@ -30,8 +30,10 @@ from .bridge import (  # noqa: E402
     world_mappings,
     world_node_mappings,
     yaw_of,
-    yaw_quaternion,
 )
+from .ros_api import RosApi
+from .versions import detect, select
+from .ros_import import INSTALL_HINT, import_rospy
 
 __all__ = [
     "INSTALL_HINT",
@@ -40,6 +42,7 @@ __all__ = [
     "OdometryOut",
     "RangeIn",
     "RangeOut",
+    "RosApi",
     "RosBridge",
     "ScanIn",
     "ScanOut",
@@ -48,10 +51,11 @@ __all__ = [
     "TwistIn",
     "TwistOut",
     "import_rospy",
+    "detect",
     "node_mappings",
     "stage_mappings",
     "world_mappings",
     "world_node_mappings",
+    "select",
     "yaw_of",
-    "yaw_quaternion",
 ]

@@ -13,7 +13,10 @@ robots simulated by a ROS node (``python -m hlacore.federates.ros_bridge.stage_n
 ``WorldRobot`` attributes of instances the bridge registers. ``--robot-node NAME`` does the same for one
 robot with no world file, a real one for instance (docs/own-robot.md): its topics under ``/NAME``.
 
-The ROS master is ``$ROS_MASTER_URI`` (set ``ROS_IP=127.0.0.1`` on loopback). Prints ``ros_bridge ready``
+``--ros 1`` bridges ROS 1 (rospy; the master is ``$ROS_MASTER_URI``, set ``ROS_IP=127.0.0.1`` on loopback),
+``--ros 2`` ROS 2 (rclpy over DDS, ``$ROS_DOMAIN_ID``; the command gives itself the environment the ROS 2
+wheels need, re-executing once); without ``--ros``, the ROS found by ``ros_api.detect`` (``$ROS_VERSION``,
+else ROS 1 when ``$ROS_MASTER_URI`` is set, else ROS 2 when installed). Prints ``ros_bridge ready``
 once the node is up and the federate joined (and time-enabled), ``ros_bridge stopped at T`` at the end;
 SIGTERM or SIGINT stops it.
 """
@@ -27,7 +30,9 @@ from typing import Any, Optional, Sequence
 
 from hlacore.federates.robot_world import read_world
 
+from . import ros2_env
 from .bridge import Mapping, RosBridge, node_mappings, stage_mappings, world_mappings, world_node_mappings
+from .versions import detect, select
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
@@ -35,6 +40,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m hlacore.federates.ros_bridge", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--rtig", default=None, help="gateway HOST:PORT (default $HLACORE_RTIG)")
+    parser.add_argument("--ros", type=int, choices=(1, 2), default=None,
+                        help="the ROS to bridge (default: found from the environment and what is installed)")
     parser.add_argument("--federation", default="RobotWorld")
     parser.add_argument("--robot", action="append", default=[], help="a robot to bridge (repeatable)")
     parser.add_argument("--world", help="a .world file: bridge its robots (or the --robot ones) with their "
@@ -74,9 +81,12 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     mappings += [m for robot in args.robot_node for m in node_mappings(robot, sensor=sensor, acks=args.acks)]
     if not mappings:
         parser.error("nothing to bridge: give --robot, --robot-node, --world or --world-node")
+    version = args.ros or detect()
+    if version == 2:
+        ros2_env.reexec_with_ros2()  # the dynamic loader reads the wheels' library path only at start
     bridge = RosBridge(mappings, args.rtig, federation=args.federation, node_name=args.node_name,
                        timed=not args.untimed, period=args.period, lookahead=args.lookahead, clock=args.clock,
-                       rate=args.rate, await_state=args.await_state)
+                       rate=args.rate, await_state=args.await_state, ros=select(version))
 
     def on_signal(signum: int, frame: Any) -> None:
         bridge.stop()
@@ -94,7 +104,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     print(f"ros_bridge stopped at {end!r} (sent {bridge.sent} cmd_vel, published {bridge.published}; "
           f"{bridge.updates} updates, {bridge.commands_out} Twists out, {bridge.late_states} late states, "
           f"{bridge.late_acks} late acks, "
-          f"{bridge.ignored} ignored)", flush=True)
+          f"{bridge.ignored} ignored, {bridge.rejected} rejected; ROS {bridge.ros.version})", flush=True)
     return 0
 
 

@@ -1,4 +1,5 @@
-"""The ROS 1 bridge: one rospy node and one HLA federate of the robot world's federation in one process.
+"""The ROS bridge: one ROS node (ROS 1 or ROS 2, :mod:`.ros_api`) and one HLA federate of the robot world's
+federation in one process.
 
 ROS → HLA: each :class:`TwistIn` subscribes a ``geometry_msgs/Twist`` topic and turns every message into a
 ``cmd_vel`` interaction (``linear.x``, ``angular.z``) for its robot. HLA → ROS: the ``WorldRobot``
@@ -12,16 +13,17 @@ interactions naming its robot as ``geometry_msgs/Twist``; ROS → HLA, :class:`O
 ``pose``), :class:`ScanIn` and :class:`RangeIn` (``ranges``) and :class:`StallIn` (``stall``) become the
 attributes of a ``WorldRobot`` instance that the bridge registers under the robot's name.
 
-Threads: rospy calls the subscriber callbacks on its own threads (one per connection). The bridge's thread
+Threads: the ROS library calls the subscriber callbacks on its own threads (rospy: one per connection;
+rclpy: one executor thread). The bridge's thread
 (the one calling :meth:`RosBridge.spin`) is the only one that ticks the RTI, so the federate-ambassador
-callbacks, and with them every ROS publication of a reflection, run there (rospy's ``publish`` is
-thread-safe). Untimed, a callback sends its interaction at once, in receive order, from rospy's thread
+callbacks, and with them every ROS publication of a reflection, run there (``publish`` is
+thread-safe in both). Untimed, a callback sends its interaction at once, in receive order, from ROS's thread
 (hlacore's sends are thread-safe). Timed, callbacks only queue the commands; the bridge's thread sends
 them after each grant ``G`` stamped ``G + lookahead`` (a send from another thread could race the
 advance and break the sending rule).
 
 Time: untimed (``timed=False``), the bridge is neither regulating nor constrained: commands apply from the
-world's current step and reflections arrive in receive order, stamped with ``rospy.Time.now()``. Timed, it
+world's current step and reflections arrive in receive order, stamped with the node's ROS time (``now``). Timed, it
 is regulating (``lookahead``) and constrained and advances by ``period`` (``timeAdvanceRequest(k *
 period)``), optionally paced at ``rate`` federation seconds per wall second; reflections carry their
 federation timestamp into ``header.stamp``; with ``clock=True`` it sets ``/use_sim_time`` and publishes
@@ -42,202 +44,41 @@ command would reach the node one period late).
 
 from __future__ import annotations
 
+import functools
 import math
 import queue
-import sys
 import threading
 import time as _time
-import warnings
-from dataclasses import dataclass
-from typing import Any, Optional, Sequence, Union
+from typing import Any, Optional, Sequence
 
 import hlacore.rti as rti
 from hlacore.federates.robot_world import codec
-from hlacore.federates.robot_world.worldfile import WorldSpec
 
-from .ros_import import import_rospy
+from .mappings import (
+    Mapping,
+    OdometryIn,
+    OdometryOut,
+    RangeIn,
+    RangeOut,
+    ScanIn,
+    ScanOut,
+    StallIn,
+    StallOut,
+    StateIn,
+    TwistIn,
+    TwistOut,
+    node_mappings,
+    stage_mappings,
+    world_mappings,
+    world_node_mappings,
+)
+from .ros_api import RosApi, reliable, yaw_of
+from .said import Once
+from .versions import select
 
-rospy = import_rospy()
-from geometry_msgs.msg import Quaternion, Twist  # noqa: E402
-from nav_msgs.msg import Odometry  # noqa: E402
-from rosgraph_msgs.msg import Clock  # noqa: E402
-from sensor_msgs.msg import LaserScan, Range  # noqa: E402
-from std_msgs.msg import Bool, UInt32  # noqa: E402
-
-
-@dataclass(frozen=True)
-class _In:
-    """ROS → HLA: what comes in on ``topic`` is about ``robot``."""
-
-    topic: str
-    robot: str
-
-
-@dataclass(frozen=True)
-class _Out:
-    """HLA → ROS: what is about ``robot`` goes out on ``topic``."""
-
-    robot: str
-    topic: str
-
-
-@dataclass(frozen=True)
-class TwistIn(_In):
-    """ROS → HLA: ``geometry_msgs/Twist`` on ``topic`` becomes ``cmd_vel(robot, linear.x, angular.z)``."""
-
-
-@dataclass(frozen=True)
-class OdometryOut(_Out):
-    """HLA → ROS: the robot's ``odometry`` (``source="odometry"``) or ground-truth ``pose``
-    (``source="pose"``, with the odometry's velocities) as ``nav_msgs/Odometry`` on ``topic``."""
-
-    source: str = "odometry"
-    frame_id: str = "odom"
-    child_frame_id: str = "base_footprint"
-
-
-@dataclass(frozen=True)
-class _BeamsOut(_Out):
-    """HLA → ROS: the robot's ``ranges``, its beams spread over ``fov`` radians."""
-
-    fov: float = 0.1  # radians
-    range_min: float = 0.0
-    range_max: float = 5.0
-    frame_id: str = "base_laser_link"
-
-
-@dataclass(frozen=True)
-class ScanOut(_BeamsOut):
-    """HLA → ROS: the robot's ``ranges`` as ``sensor_msgs/LaserScan`` (beams from ``-fov/2`` to ``+fov/2``)."""
-
-
-@dataclass(frozen=True)
-class RangeOut(_BeamsOut):
-    """HLA → ROS: the robot's nearest beam as ``sensor_msgs/Range`` (ULTRASOUND)."""
-
-
-@dataclass(frozen=True)
-class StallOut(_Out):
-    """HLA → ROS: the robot's ``stall`` flag as ``std_msgs/Bool``."""
-
-
-@dataclass(frozen=True)
-class TwistOut(_Out):
-    """HLA → ROS: every ``cmd_vel`` interaction naming ``robot`` is published as ``geometry_msgs/Twist``
-    (``linear.x``, ``angular.z``) on ``topic``.
-
-    ``ack``: a ``std_msgs/UInt32`` topic on which the node counts the Twists it has taken from ``topic``
-    (our stage node's ``/<robot>/cmd_vel_received``; stageros has none). Timed, the bridge then publishes
-    the next ``/clock`` only once the count has caught up with what it published: the node cannot step
-    before it has applied the commands (ROS keeps no order across topics)."""
-
-    ack: Optional[str] = None
-
-
-@dataclass(frozen=True)
-class OdometryIn(_In):
-    """ROS → HLA: ``nav_msgs/Odometry`` on ``topic`` becomes the robot's ``odometry`` attribute (x, y, yaw,
-    ``twist.linear.x``, ``twist.angular.z``; ``attribute="odometry"``) or its ground-truth ``pose``
-    (x, y, yaw; ``attribute="pose"``)."""
-
-    attribute: str = "odometry"
-
-    def __post_init__(self) -> None:
-        if self.attribute not in ("odometry", "pose"):
-            raise ValueError(f"OdometryIn feeds 'odometry' or 'pose', not {self.attribute!r}")
-
-
-@dataclass(frozen=True)
-class ScanIn(_In):
-    """ROS → HLA: ``sensor_msgs/LaserScan`` on ``topic`` becomes the robot's ``ranges`` (every beam)."""
-
-
-@dataclass(frozen=True)
-class RangeIn(_In):
-    """ROS → HLA: ``sensor_msgs/Range`` on ``topic`` becomes the robot's ``ranges`` as one beam (for a
-    robot whose only sensor is a sonar; do not map a ScanIn of the same robot too)."""
-
-
-@dataclass(frozen=True)
-class StallIn(_In):
-    """ROS → HLA: ``std_msgs/Bool`` on ``topic`` becomes the robot's ``stall`` flag (not stamped: it
-    travels with the next update of the robot, never awaited)."""
-
-
-Mapping = Union[TwistIn, OdometryOut, ScanOut, RangeOut, StallOut, TwistOut, OdometryIn, ScanIn, RangeIn, StallIn]
-StateIn = (OdometryIn, ScanIn, RangeIn, StallIn)  #: the ROS → HLA state mappings
-
-
-def stage_mappings(robot: str, prefix: Optional[str] = None, fov: float = 0.1, range_min: float = 0.0,
-                   range_max: float = 5.0) -> list[Mapping]:
-    """stageros' topics for one robot under ``prefix`` (default ``/<robot>``): ``cmd_vel`` in; ``odom``,
-    ``base_pose_ground_truth``, ``base_scan`` out; plus ``range`` (nearest beam) and ``stall``."""
-    p = f"/{robot}" if prefix is None else prefix.rstrip("/")
-    frame = p.lstrip("/")
-    odom_frame = f"{frame}/odom" if frame else "odom"
-    laser_frame = f"{frame}/base_laser_link" if frame else "base_laser_link"
-    return [
-        TwistIn(f"{p}/cmd_vel", robot),
-        OdometryOut(robot, f"{p}/odom", "odometry", odom_frame),
-        OdometryOut(robot, f"{p}/base_pose_ground_truth", "pose", odom_frame),
-        ScanOut(robot, f"{p}/base_scan", fov, range_min, range_max, laser_frame),
-        RangeOut(robot, f"{p}/range", fov, range_min, range_max, laser_frame),
-        StallOut(robot, f"{p}/stall"),
-    ]
-
-
-def world_mappings(spec: WorldSpec, robots: Optional[Sequence[str]] = None) -> list[Mapping]:
-    """:func:`stage_mappings` for each robot of a world (or the named ones), with the first ranger's
-    field of view and range limits."""
-    out: list[Mapping] = []
-    for r in spec.robots:
-        if robots is not None and r.name not in robots:
-            continue
-        if r.sensors:
-            s = r.sensors[0]
-            out.extend(stage_mappings(r.name, fov=s.fov, range_min=s.range_min, range_max=s.range_max))
-        else:
-            out.extend(stage_mappings(r.name))
-    return out
-
-
-def node_mappings(robot: str, prefix: Optional[str] = None, sensor: Optional[str] = "scan",
-                  acks: bool = False) -> list[Mapping]:
-    """The other direction of :func:`stage_mappings`, for a robot simulated by a stageros-style ROS node
-    under ``prefix`` (default ``/<robot>``): ``cmd_vel`` interactions out as Twist on ``cmd_vel`` (with
-    ``acks``, acknowledged on ``cmd_vel_received``: our stage node's); ``odom`` → ``odometry``,
-    ``base_pose_ground_truth`` → ``pose``, ``base_scan`` (``sensor="scan"``) or ``range``
-    (``sensor="range"``; ``None``: no sensor) → ``ranges``, ``stall`` → ``stall`` in."""
-    p = f"/{robot}" if prefix is None else prefix.rstrip("/")
-    ack = f"{p}/cmd_vel_received" if acks else None
-    out: list[Mapping] = [TwistOut(robot, f"{p}/cmd_vel", ack), OdometryIn(f"{p}/odom", robot, "odometry"),
-                          OdometryIn(f"{p}/base_pose_ground_truth", robot, "pose")]
-    if sensor == "scan":
-        out.append(ScanIn(f"{p}/base_scan", robot))
-    elif sensor == "range":
-        out.append(RangeIn(f"{p}/range", robot))
-    elif sensor is not None:
-        raise ValueError(f"sensor is 'scan', 'range' or None, not {sensor!r}")
-    out.append(StallIn(f"{p}/stall", robot))
-    return out
-
-
-def world_node_mappings(spec: WorldSpec, robots: Optional[Sequence[str]] = None,
-                        acks: bool = False) -> list[Mapping]:
-    """:func:`node_mappings` for each robot of a world simulated by a ROS node (or the named ones); robots
-    without a ranger get no sensor mapping."""
-    return [m for r in spec.robots if robots is None or r.name in robots
-            for m in node_mappings(r.name, sensor="scan" if r.sensors else None, acks=acks)]
-
-
-def yaw_of(q: Any) -> float:
-    """The heading (rotation about z) of a quaternion."""
-    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
-
-
-def yaw_quaternion(theta: float) -> Quaternion:
-    """The quaternion of a rotation by ``theta`` about z."""
-    return Quaternion(0.0, 0.0, math.sin(theta / 2.0), math.cos(theta / 2.0))
+__all__ = ["Mapping", "OdometryIn", "OdometryOut", "RangeIn", "RangeOut", "RosBridge", "ScanIn", "ScanOut",
+           "StallIn", "StallOut", "StateIn", "TwistIn", "TwistOut", "node_mappings", "stage_mappings",
+           "world_mappings", "world_node_mappings", "yaw_of"]
 
 
 class _Ambassador(rti.FederateAmbassador):
@@ -287,6 +128,8 @@ class _Ambassador(rti.FederateAmbassador):
 
 
 RETICK = 0.2  #: s between re-published ``/clock`` ticks while the bridge waits for the nodes' first state
+WATCH = 0.5  #: s between looks at the subscribed topics' publishers (:meth:`RosBridge._watch`)
+SILENCE = 2.0  #: s without a message after which an untimed bridge says a state topic went quiet
 
 
 class RosBridge:
@@ -298,7 +141,9 @@ class RosBridge:
                  node_name: str = "hla_bridge", timed: bool = True, period: float = 0.1,
                  lookahead: Optional[float] = None, clock: bool = False, rate: Optional[float] = None,
                  create: bool = True, await_inputs: Optional[float] = None,
-                 await_state: Optional[float] = None, step_by_sum: Optional[bool] = None) -> None:
+                 await_state: Optional[float] = None, step_by_sum: Optional[bool] = None,
+                 ros: Optional[RosApi] = None) -> None:
+        self.ros = ros if ros is not None else select()  #: the ROS side (ROS 1 or ROS 2)
         self.mappings = list(mappings)
         self.address = address
         self.federation = federation
@@ -320,6 +165,8 @@ class RosBridge:
         self.updates = 0  #: WorldRobot updates sent from ROS state
         self.commands_out = 0  #: Twists published from cmd_vel interactions
         self.ignored = 0  #: cmd_vel interactions dropped (naming no TwistOut robot, or malformed)
+        self.rejected = 0  #: ROS messages dropped for a non-finite value (a NaN velocity, a NaN pose)
+        self.said = Once("ros_bridge")  #: what went wrong on the ROS side, said once each
         self.rtia: Optional[rti.RTIAmbassador] = None
         self.sent = 0  #: cmd_vel interactions sent
         self.published = 0  #: ROS messages published from reflections
@@ -346,34 +193,33 @@ class RosBridge:
         self._state: dict[str, dict[str, bytes]] = {}  # robot -> attribute -> encoded value, not sent yet
         self._stamps: dict[str, float] = {}  # stamped state topic -> stamp of its latest message
         self._state_lock = threading.Condition()
+        self._heard: dict[str, int] = {}  # subscribed topic -> publishers it heard at the last watch
+        self._gone: set[str] = set()  # subscribed topics whose every publisher has left: not awaited
+        self._silent: set[str] = set()  # state topics late once: not awaited until they speak again
+        self._last_seen: dict[str, float] = {}  # subscribed topic -> monotonic time of its last message
+        self._next_watch = 0.0
         if self.timed and not self.lookahead > 0:
             raise ValueError("lookahead must be positive")
 
     # ---- life cycle ----
 
     def start(self, master_timeout: float = 10.0, timeout: float = 10.0) -> None:
-        """Init the ROS node (once per process; the master must answer within ``master_timeout`` s), join
-        the federation (creating it from the robot world's FOM when ``create``), enable time management when
-        timed, then advertise and subscribe the ROS topics."""
-        import rosgraph
-
-        deadline = _time.monotonic() + master_timeout
-        while not rosgraph.is_master_online():
-            if _time.monotonic() > deadline:
-                raise TimeoutError(f"no ROS master at {rosgraph.get_master_uri()} within {master_timeout} s")
-            _time.sleep(0.05)
-        rospy.init_node(self.node_name, anonymous=False, disable_signals=True)
+        """Init the ROS node (once per process; ROS 1: the master must answer within ``master_timeout`` s),
+        join the federation (creating it from the robot world's FOM when ``create``), enable time
+        management when timed, then advertise and subscribe the ROS topics, each with the QoS of the HLA
+        transport of what it carries (:func:`.ros_api.reliable`)."""
+        ros, msgs = self.ros, self.ros.msgs
+        ros.init_node(self.node_name, master_timeout, sim_time=self.clock)
         if self.clock:
-            rospy.set_param("/use_sim_time", True)
-            self._clock_pub = rospy.Publisher("/clock", Clock, queue_size=10)
-        kinds = {OdometryOut: Odometry, ScanOut: LaserScan, RangeOut: Range, StallOut: Bool}
+            ros.set_use_sim_time()
+            self._clock_pub = ros.publisher("/clock", msgs.Clock)
+        kinds = {OdometryOut: msgs.Odometry, ScanOut: msgs.LaserScan, RangeOut: msgs.Range, StallOut: msgs.Bool}
         for m in self.mappings:
-            if type(m) in kinds:
-                self._publishers.append((m, rospy.Publisher(m.topic, kinds[type(m)], queue_size=100)))
+            if isinstance(m, (OdometryOut, ScanOut, RangeOut, StallOut)):
+                self._publishers.append((m, ros.publisher(m.topic, kinds[type(m)], reliable(_attribute(m)))))
             elif isinstance(m, TwistOut):
-                with warnings.catch_warnings():  # queue_size=None: publish() writes before it returns,
-                    warnings.simplefilter("ignore", SyntaxWarning)  # so a Twist leaves before the next /clock
-                    pub = rospy.Publisher(m.topic, Twist, queue_size=None)
+                # synchronous: publish() has written before it returns, so a Twist leaves before the next /clock
+                pub = ros.publisher(m.topic, msgs.Twist, reliable(codec.INTERACTION), synchronous=True)
                 self._publishers.append((m, pub))
                 self._twist_out.setdefault(m.robot, []).append(pub)
                 if m.ack is not None:
@@ -412,16 +258,19 @@ class RosBridge:
             rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
             self.rtia = None
             raise
-        state_kinds = {OdometryIn: Odometry, ScanIn: LaserScan, RangeIn: Range, StallIn: Bool}
+        state_kinds = {OdometryIn: msgs.Odometry, ScanIn: msgs.LaserScan, RangeIn: msgs.Range, StallIn: msgs.Bool}
         for m in self.mappings:
             if isinstance(m, TwistIn):
-                self._subscribers.append(rospy.Subscriber(m.topic, Twist, self._on_twist, m.robot,
-                                                          queue_size=100))
-            elif isinstance(m, StateIn):
-                self._subscribers.append(rospy.Subscriber(m.topic, state_kinds[type(m)], self._on_state, m,
-                                                          queue_size=100))
+                self._subscribers.append(ros.subscriber(m.topic, msgs.Twist, functools.partial(self._on_twist,
+                                                        robot=m.robot, topic=m.topic),
+                                                        reliable(codec.INTERACTION), self._mismatch))
+            elif isinstance(m, (OdometryIn, ScanIn, RangeIn, StallIn)):
+                self._subscribers.append(ros.subscriber(m.topic, state_kinds[type(m)],
+                                                        functools.partial(self._on_state, m=m),
+                                                        reliable(_attribute(m)), self._mismatch))
             elif isinstance(m, TwistOut) and m.ack is not None:
-                self._subscribers.append(rospy.Subscriber(m.ack, UInt32, self._on_ack, m.ack, queue_size=100))
+                self._subscribers.append(ros.subscriber(m.ack, msgs.UInt32, functools.partial(self._on_ack,
+                                                        ack=m.ack), True, self._mismatch))
 
     def spin(self, until: Optional[float] = None, cycle_timeout: float = 0.05) -> float:
         """Run the bridge on this thread until :meth:`stop` (or, timed, federation time ``until``); returns
@@ -429,17 +278,20 @@ class RosBridge:
         of ``cycle_timeout`` s so that a stop is seen. Untimed: ticks."""
         rtia = self._rtia()
         if not self.timed:
-            while not self._stop.is_set() and not rospy.is_shutdown():
+            while not self._stop.is_set() and self.ros.ok():
                 rtia.tick(0.01, cycle_timeout)
+                self._watch()
             return self.time
         wall0, fed0 = _time.monotonic(), self.time
         k = round(self.time / self.period)
         if self._objects:  # the node's initial state, as the world federate publishes its own at 0 + L
             # Re-ticked until every state topic has spoken: a rospy subscriber counts its connection before
-            # the node's publisher has added it, so the node's first messages can be lost.
+            # the node's publisher has added it (a DDS reader can match before the writer does), so the
+            # node's first messages can be lost.
             self._tick_clock()
             self._sync_state(retick=True)
-        while not self._stop.is_set() and not rospy.is_shutdown():
+        while not self._stop.is_set() and self.ros.ok():
+            self._watch()
             if until is not None and self.time >= until - 1e-9:
                 break
             k += 1
@@ -450,7 +302,7 @@ class RosBridge:
                     self.time = rtia.await_grant(cycle_timeout)
                     break
                 except TimeoutError:
-                    if self._stop.is_set() or rospy.is_shutdown():
+                    if self._stop.is_set() or not self.ros.ok():
                         return self.time
             self._granted()
             if self.rate:
@@ -462,11 +314,12 @@ class RosBridge:
     def connections(self) -> dict[str, int]:
         """The number of ROS connections of each bridged topic (publishers' subscribers, subscribers'
         publishers): to wait until the nodes on the other side are wired before spinning."""
-        out = {m.topic: pub.get_num_connections() for m, pub in self._publishers}
+        ros = self.ros
+        out = {m.topic: ros.publisher_connections(pub) for m, pub in self._publishers}
         for sub in self._subscribers:
-            out[sub.resolved_name] = sub.get_num_connections()
+            out[ros.topic_of(sub)] = ros.subscriber_connections(sub)
         if self._clock_pub is not None:
-            out["/clock"] = self._clock_pub.get_num_connections()
+            out["/clock"] = ros.publisher_connections(self._clock_pub)
         return out
 
     def wait_connected(self, timeout: float, topics: Optional[Sequence[str]] = None) -> None:
@@ -489,18 +342,23 @@ class RosBridge:
     def close(self, reason: str = "bridge closed") -> None:
         """Unsubscribe, resign (deleting nothing: the bridge owns no object), and shut the ROS node down."""
         for sub in self._subscribers:
-            sub.unregister()
+            self.ros.unsubscribe(sub)
         self._subscribers.clear()
         if self.rtia is not None:
             self.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
             self.rtia = None
-        rospy.signal_shutdown(reason)
+        self.ros.shutdown(reason)
 
     # ---- ROS → HLA ----
 
-    def _on_twist(self, msg: Twist, robot: str) -> None:
-        """rospy's thread: untimed, send now (receive order); timed, queue for the bridge's thread."""
+    def _on_twist(self, msg: Any, robot: str, topic: str) -> None:
+        """ROS's thread: untimed, send now (receive order); timed, queue for the bridge's thread. A
+        non-finite velocity is dropped (said once per topic): NaN would poison the world's physics."""
         linear, angular = float(msg.linear.x), float(msg.angular.z)
+        self._last_seen[topic] = _time.monotonic()
+        if not (math.isfinite(linear) and math.isfinite(angular)):
+            self._reject(topic, f"a Twist with a non-finite velocity (linear.x {linear}, angular.z {angular})")
+            return
         if self.timed:
             with self._inputs:
                 self._pending.put((robot, linear, angular))
@@ -544,16 +402,19 @@ class RosBridge:
             self._send(robot, linear, angular, self.time + self.lookahead)
 
     def _on_state(self, msg: Any, m: Mapping) -> None:
-        """rospy's thread: a robot's state from a simulator node; untimed, sent at once (receive order);
-        timed, kept (the latest value of each attribute wins) until the bridge's thread sends it."""
+        """ROS's thread: a robot's state from a simulator node; untimed, sent at once (receive order);
+        timed, kept (the latest value of each attribute wins) until the bridge's thread sends it. An
+        Odometry with a non-finite value is dropped (said once per topic); ranges keep inf and NaN (REP 117:
+        out of range, no reading)."""
+        topic = getattr(m, "topic")
+        self._last_seen[topic] = _time.monotonic()
         if isinstance(m, OdometryIn):
-            p, q = msg.pose.pose.position, msg.pose.pose.orientation
-            if m.attribute == "pose":
-                value = codec.POSE.pack([float(p.x), float(p.y), yaw_of(q)])
-            else:
-                t = msg.twist.twist
-                value = codec.ODOMETRY.pack([float(p.x), float(p.y), yaw_of(q), float(t.linear.x),
-                                             float(t.angular.z)])
+            p, q, t = msg.pose.pose.position, msg.pose.pose.orientation, msg.twist.twist
+            values = [float(p.x), float(p.y), yaw_of(q), float(t.linear.x), float(t.angular.z)]
+            if not all(math.isfinite(v) for v in values):
+                self._reject(topic, f"an Odometry with a non-finite value ({values})")
+                return
+            value = codec.POSE.pack(values[:3]) if m.attribute == "pose" else codec.ODOMETRY.pack(values)
             attribute = m.attribute
         elif isinstance(m, ScanIn):
             value, attribute = codec.RANGES.pack([float(r) for r in msg.ranges]), "ranges"
@@ -569,8 +430,9 @@ class RosBridge:
             return
         with self._state_lock:
             self._state.setdefault(robot, {})[attribute] = value
+            self._silent.discard(topic)
             if hasattr(msg, "header"):
-                self._stamps[m.topic] = msg.header.stamp.to_sec()
+                self._stamps[topic] = self.ros.seconds(msg.header.stamp)
             self._state_lock.notify_all()
 
     def _sync_state(self, retick: bool = False) -> None:
@@ -579,26 +441,32 @@ class RosBridge:
         ``retick``: publish ``/clock`` again every :data:`RETICK` s while waiting (the first state, see
         :meth:`spin`)."""
         if self.await_state is not None:
-            stamped = [m.topic for m in self.mappings if isinstance(m, (OdometryIn, ScanIn, RangeIn))]
+            topics = [m.topic for m in self.mappings if isinstance(m, (OdometryIn, ScanIn, RangeIn))]
             fresh = self.time - 2e-9 - 1e-9 * abs(self.time)  # ROS stamps are truncated to nanoseconds
 
+            def awaited() -> list[str]:  # a topic whose node has died, or stopped answering, is not awaited
+                return [t for t in topics if t not in self._gone and t not in self._silent]
+
             def arrived() -> bool:
-                return self._stop.is_set() or all(self._stamps.get(t, -math.inf) >= fresh for t in stamped)
+                return self._stop.is_set() or all(self._stamps.get(t, -math.inf) >= fresh for t in awaited())
 
             deadline = _time.monotonic() + self.await_state
             while True:
                 left = deadline - _time.monotonic()
                 with self._state_lock:
-                    if self._state_lock.wait_for(arrived, max(0.0, min(left, RETICK) if retick else left)):
+                    if self._state_lock.wait_for(arrived, max(0.0, min(left, RETICK if retick else WATCH))):
                         break
                     if _time.monotonic() >= deadline:
                         self.late_states += 1
-                        stale = {t: self._stamps.get(t) for t in stamped
-                                 if self._stamps.get(t, -math.inf) < fresh}
-                        print(f"ros_bridge: late state at {self.time!r}: nothing stamped {self.time!r} within "
-                              f"{self.await_state} s on {stale}", file=sys.stderr, flush=True)
+                        stale = {t: self._stamps.get(t) for t in awaited() if self._stamps.get(t, -math.inf) < fresh}
+                        self._silent.update(stale)  # awaited again once they speak (_on_state)
+                        self.said.say(("late", tuple(sorted(stale))),
+                                      f"late state at {self.time!r}: nothing stamped {self.time!r} within "
+                                      f"{self.await_state} s on {stale}; not awaited until they speak again")
                         break
-                self._tick_clock()  # a tick at the node's own time only re-publishes its state
+                if retick:
+                    self._tick_clock()  # a tick at the node's own time only re-publishes its state
+                self._watch()
         with self._state_lock:
             pending, self._state = self._state, {}
         rtia = self._rtia()
@@ -620,7 +488,7 @@ class RosBridge:
     def _publish_commands(self) -> None:
         commands, self._commands = self._commands, []
         for robot, linear, angular in commands:
-            msg = Twist()
+            msg = self.ros.msgs.Twist()
             msg.linear.x, msg.angular.z = linear, angular
             for pub in self._twist_out[robot]:
                 pub.publish(msg)
@@ -631,7 +499,7 @@ class RosBridge:
                         self._acked[ack] += 1
 
     def _on_ack(self, msg: Any, ack: str) -> None:
-        """rospy's thread: the node's count of the Twists it took."""
+        """ROS's thread: the node's count of the Twists it took."""
         with self._state_lock:
             self._acks[ack] = int(msg.data)
             self._state_lock.notify_all()
@@ -642,19 +510,28 @@ class RosBridge:
         if not self._acked:
             return
 
-        def caught_up() -> bool:
-            return self._stop.is_set() or all(self._acks[a] >= n for a, n in self._acked.items())
+        def caught_up() -> bool:  # a node that has died acknowledges nothing: not awaited
+            return self._stop.is_set() or all(self._acks[a] >= n for a, n in self._acked.items()
+                                               if a not in self._gone)
 
-        with self._state_lock:
-            if not self._state_lock.wait_for(caught_up, self.await_state or 5.0):
-                self.late_acks += 1
-                behind = {a: (self._acks[a], n) for a, n in self._acked.items() if self._acks[a] < n}
-                print(f"ros_bridge: late acknowledgement before {self.time!r}: (taken, published) {behind}",
-                      file=sys.stderr, flush=True)
+        deadline = _time.monotonic() + (self.await_state or 5.0)
+        while True:
+            with self._state_lock:
+                if self._state_lock.wait_for(caught_up, max(0.0, min(WATCH, deadline - _time.monotonic()))):
+                    return
+                if _time.monotonic() >= deadline:
+                    self.late_acks += 1
+                    behind = {a: (self._acks[a], n) for a, n in self._acked.items() if self._acks[a] < n}
+                    for a in behind:  # the missing counts are not awaited again
+                        self._acked[a] = self._acks[a]
+                    self.said.say(("late acks", tuple(sorted(behind))),
+                                  f"late acknowledgement before {self.time!r}: (taken, published) {behind}")
+                    return
+            self._watch()
 
     def _tick_clock(self) -> None:
         if self._clock_pub is not None:
-            self._clock_pub.publish(Clock(rospy.Time.from_sec(self.time)))
+            self._clock_pub.publish(self.ros.clock(self.time))
 
     # ---- HLA → ROS ----
 
@@ -662,7 +539,7 @@ class RosBridge:
         odom = values.get("odometry")
         if odom is not None:
             self._velocity[robot] = (float(odom[3]), float(odom[4]))
-        when = rospy.Time.now() if stamp is None else rospy.Time.from_sec(stamp)
+        when = self.ros.now() if stamp is None else self.ros.stamp(stamp)
         for m, pub in self._publishers:
             if m.robot != robot or isinstance(m, TwistOut):
                 continue
@@ -672,44 +549,83 @@ class RosBridge:
                 self.published += 1
 
     def _message(self, m: Mapping, values: dict[str, Any], when: Any) -> Any:
+        msgs = self.ros.msgs
         if isinstance(m, OdometryOut):
             data = values.get(m.source)
             if data is None:
                 return None
-            msg = Odometry()
+            msg = msgs.Odometry()
             msg.header.stamp = when
             msg.header.frame_id = m.frame_id
             msg.child_frame_id = m.child_frame_id
             msg.pose.pose.position.x, msg.pose.pose.position.y = float(data[0]), float(data[1])
-            msg.pose.pose.orientation = yaw_quaternion(float(data[2]))
+            msg.pose.pose.orientation = self.ros.quaternion(float(data[2]))
             v, w = self._velocity.get(m.robot, (0.0, 0.0))
             msg.twist.twist.linear.x, msg.twist.twist.angular.z = v, w
             return msg
         if isinstance(m, StallOut):
             stall = values.get("stall")
-            return None if stall is None else Bool(bool(stall))
+            return None if stall is None else msgs.Bool(data=bool(stall))
         ranges = values.get("ranges")
         if ranges is None or len(ranges) == 0:
             return None
         if isinstance(m, ScanOut):
-            msg = LaserScan()
+            msg = msgs.LaserScan()
             msg.header.stamp = when
             msg.header.frame_id = m.frame_id
             n = len(ranges)
             msg.angle_min, msg.angle_max = (-m.fov / 2, m.fov / 2) if n > 1 else (0.0, 0.0)
             msg.angle_increment = m.fov / (n - 1) if n > 1 else 0.0
-            msg.range_min, msg.range_max = m.range_min, m.range_max
+            msg.range_min, msg.range_max = float(m.range_min), float(m.range_max)
             msg.ranges = [float(r) for r in ranges]
             return msg
         assert isinstance(m, RangeOut), m
-        msg = Range()
+        msg = msgs.Range()
         msg.header.stamp = when
         msg.header.frame_id = m.frame_id
-        msg.radiation_type = Range.ULTRASOUND
-        msg.field_of_view = m.fov
-        msg.min_range, msg.max_range = m.range_min, m.range_max
+        msg.radiation_type = msgs.Range.ULTRASOUND
+        msg.field_of_view = float(m.fov)
+        msg.min_range, msg.max_range = float(m.range_min), float(m.range_max)
         msg.range = float(min(ranges))
         return msg
+
+    # ---- what goes wrong on the ROS side: said once, the federation goes on ----
+
+    def _watch(self) -> None:
+        """On the bridge's thread, every :data:`WATCH` s: a subscribed topic that has lost every publisher
+        (its node died or left) is said once and no longer awaited, until a publisher is back; untimed, a
+        state topic silent for :data:`SILENCE` s while its publisher is still there is said once."""
+        now = _time.monotonic()
+        if now < self._next_watch:
+            return
+        self._next_watch = now + WATCH
+        states = {m.topic for m in self.mappings if isinstance(m, (OdometryIn, ScanIn, RangeIn, StallIn))}
+        for sub in self._subscribers:
+            topic = self.ros.topic_of(sub)
+            count = self.ros.subscriber_connections(sub)
+            if count == 0 and self._heard.get(topic, 0) > 0:
+                self._gone.add(topic)
+                self.said.say(("gone", topic), f"no publisher left on {topic}: its node died or left; "
+                                               "the federation goes on without it")
+            elif count > 0 and topic in self._gone:
+                self._gone.discard(topic)
+                self.said.forget(("gone", topic))
+                self.said.say(("back", topic), f"a publisher is back on {topic}")
+            self._heard[topic] = count
+            seen = self._last_seen.get(topic)
+            if not self.timed and topic in states and count > 0 and seen is not None:
+                if now - seen > SILENCE:
+                    self.said.say(("silent", topic), f"nothing on {topic} for {SILENCE} s: its node stopped "
+                                                     "publishing; the federation goes on")
+                else:
+                    self.said.forget(("silent", topic))
+
+    def _reject(self, topic: str, what: str) -> None:
+        self.rejected += 1
+        self.said.say(("rejected", topic), f"dropped {what} on {topic} (said once; counted as rejected)")
+
+    def _mismatch(self, topic: str, what: str) -> None:
+        self.said.say(("mismatch", topic, what), f"{topic}: {what}; its messages are not bridged")
 
     # ---- helpers ----
 
@@ -717,3 +633,13 @@ class RosBridge:
         if self.rtia is None:
             raise RuntimeError("the bridge is not started")
         return self.rtia
+
+
+def _attribute(m: Mapping) -> str:
+    """The ``WorldRobot`` attribute a state mapping carries (its topic's QoS follows that attribute's
+    transport)."""
+    if isinstance(m, (OdometryIn, OdometryOut)):
+        return m.attribute if isinstance(m, OdometryIn) else m.source
+    if isinstance(m, (StallIn, StallOut)):
+        return "stall"
+    return "ranges"

@@ -1,9 +1,13 @@
 """The robot world as a stageros-style ROS node: Stage's role in paper 1 (ros-ptolemy-hla-iess2015), with
 the HLA side reached through the ROS bridge (``--world-node``). It lives with the bridge because it is ROS
-code (rospy, the bridge's message conversions); the robot world itself knows nothing of ROS.
+code (:class:`~.ros_api.RosApi`, ROS 1 or ROS 2); the robot world itself knows nothing of ROS.
 
-    python -m hlacore.federates.ros_bridge.stage_node WORLD [--dt 0.01] [--watchdog 0.2]
+    python -m hlacore.federates.ros_bridge.stage_node WORLD [--ros 1|2] [--dt 0.01] [--watchdog 0.2]
         [--rate R] [--summary FILE.json] [--snapshot FILE.png] [--until T]
+
+``--ros`` as the bridge's (default: ``ros_api.detect``); on ROS 2 the node's topics are reliable, as the
+robot world's FOM declares every ``WorldRobot`` attribute, and the node's own clock follows ``/clock``
+(``use_sim_time``).
 
 Topics, per robot (named by the world file's ``name``, else ``robot_<index>``, as stageros with ``-u``):
 
@@ -32,6 +36,7 @@ counts, the commands received) and the ``--snapshot`` PNG.
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import math
 import signal
@@ -44,16 +49,18 @@ from hlacore.federates.robot_world.render import trajectories, write_labelled_sn
 from hlacore.federates.robot_world.world import Pose, World
 from hlacore.federates.robot_world.worldfile import read_world
 
-from .bridge import yaw_quaternion
-from .ros_import import import_rospy
+from . import ros2_env
+from .ros_api import RosApi
+from .versions import detect, select
 
 
 class StageNode:
     """A :class:`World` behind stageros' topics (see the module docstring). Build it, :meth:`start` it
-    (the ROS node, once per process), let rospy's threads drive it, :meth:`close` it."""
+    (the ROS node, once per process), let the ROS library's threads drive it, :meth:`close` it."""
 
-    def __init__(self, world: World, node_name: str = "stage") -> None:
+    def __init__(self, world: World, node_name: str = "stage", ros: Optional[RosApi] = None) -> None:
         self.world = world
+        self.ros = ros if ros is not None else select()  #: the ROS side (ROS 1 or ROS 2)
         self.node_name = node_name
         self.lock = threading.Lock()  # rospy calls back on one thread per connection
         #: (world time, poses) after every tick that stepped (the world time is the tick on the step grid)
@@ -64,43 +71,32 @@ class StageNode:
         self.time = world.time  #: the last tick
         self._pubs: dict[str, dict[str, Any]] = {}
         self._received: dict[str, int] = {}  # robot -> Twists taken
-        self._uint32: Any = None
         self._subs: list[Any] = []
-        self._msgs: Any = None
+        self._started = False
 
     def start(self, follow_clock: bool = True) -> None:
         """Init the ROS node, advertise every robot's topics, subscribe its ``cmd_vel`` (and ``/clock`` when
         ``follow_clock``)."""
-        rospy = import_rospy()
-        from geometry_msgs.msg import Twist
-        from nav_msgs.msg import Odometry
-        from rosgraph_msgs.msg import Clock
-        from sensor_msgs.msg import LaserScan, Range
-        from std_msgs.msg import Bool, UInt32
-
-        self._msgs = (rospy, Odometry, LaserScan, Range, Bool, Clock)
-        self._uint32 = UInt32
-        rospy.init_node(self.node_name, anonymous=False, disable_signals=True)
-        kinds = {"odom": Odometry, "base_pose_ground_truth": Odometry, "base_scan": LaserScan, "range": Range,
-                 "stall": Bool}
+        ros, msgs = self.ros, self.ros.msgs
+        ros.init_node(self.node_name, sim_time=follow_clock)
+        self._started = True
+        kinds = {"odom": msgs.Odometry, "base_pose_ground_truth": msgs.Odometry, "base_scan": msgs.LaserScan,
+                 "range": msgs.Range, "stall": msgs.Bool, "cmd_vel_received": msgs.UInt32}
         for robot in self.world.robots:
-            self._pubs[robot.name] = {t: rospy.Publisher(f"/{robot.name}/{t}", k, queue_size=100)
-                                      for t, k in kinds.items()}
-            self._pubs[robot.name]["cmd_vel_received"] = rospy.Publisher(f"/{robot.name}/cmd_vel_received", UInt32,
-                                                                         queue_size=100)
+            self._pubs[robot.name] = {t: ros.publisher(f"/{robot.name}/{t}", k) for t, k in kinds.items()}
             self._received[robot.name] = 0
-            self._subs.append(rospy.Subscriber(f"/{robot.name}/cmd_vel", Twist, self._on_cmd, robot.name,
-                                               queue_size=100))
+            self._subs.append(ros.subscriber(f"/{robot.name}/cmd_vel", msgs.Twist,
+                                             functools.partial(self._on_cmd, robot=robot.name)))
         if follow_clock:
-            self._subs.append(rospy.Subscriber("/clock", Clock, self._on_clock, queue_size=100))
+            self._subs.append(ros.subscriber("/clock", msgs.Clock, self._on_clock))
 
     def close(self) -> None:
         """Unsubscribe and shut the ROS node down."""
         for sub in self._subs:
-            sub.unregister()
+            self.ros.unsubscribe(sub)
         self._subs.clear()
-        if self._msgs is not None:
-            self._msgs[0].signal_shutdown("stage node closed")
+        if self._started:
+            self.ros.shutdown("stage node closed")
 
     # ---- the world's side ----
 
@@ -116,10 +112,10 @@ class StageNode:
                     print(f"stage_node: rejected a non-finite cmd_vel for {robot} ({linear}, {angular})", flush=True)
             self._received[robot] += 1
             # published under the lock: the counts go out in order, after the command took effect
-            self._pubs[robot]["cmd_vel_received"].publish(self._uint32(self._received[robot]))
+            self._pubs[robot]["cmd_vel_received"].publish(self.ros.msgs.UInt32(data=self._received[robot]))
 
     def _on_clock(self, msg: Any) -> None:
-        self.tick(msg.clock.to_sec())
+        self.tick(self.ros.seconds(msg.clock))
 
     def tick(self, t: float) -> None:
         """Step the world to the last grid point at or before ``t`` (when later than now) and publish every
@@ -138,9 +134,8 @@ class StageNode:
     def run(self, rate: float, until: Optional[float], stop: threading.Event) -> None:
         """Free-running (stageros' own loop): ``interval_sim`` of world time per ``interval_sim / rate`` wall
         seconds, publishing ``/clock`` before each state; until ``until`` (world time) or ``stop``."""
-        rospy, *_, Clock = self._msgs
-        clock = rospy.Publisher("/clock", Clock, queue_size=10)
-        rospy.set_param("/use_sim_time", True)
+        clock = self.ros.publisher("/clock", self.ros.msgs.Clock)
+        self.ros.set_use_sim_time()
         interval = self.world.spec.interval_sim
         wall0, k = _time.monotonic(), 0
         while not stop.is_set() and (until is None or self.time < until - 1e-9):
@@ -149,40 +144,40 @@ class StageNode:
             delay = wall0 + t / rate - _time.monotonic()
             if delay > 0 and stop.wait(delay):
                 break
-            clock.publish(Clock(rospy.Time.from_sec(t)))
+            clock.publish(self.ros.clock(t))
             self.tick(t)
 
     def _publish(self, t: float) -> None:
-        rospy, Odometry, LaserScan, Range, Bool, _ = self._msgs
-        stamp = rospy.Time.from_sec(t)
+        msgs = self.ros.msgs
+        stamp = self.ros.stamp(t)
         for robot in self.world.robots:
             pubs = self._pubs[robot.name]
             frame = robot.name
             for topic, pose in (("odom", robot.odometry), ("base_pose_ground_truth", robot.pose)):
-                msg = Odometry()
+                msg = msgs.Odometry()
                 msg.header.stamp, msg.header.frame_id = stamp, f"{frame}/odom"
                 msg.child_frame_id = f"{frame}/base_footprint"
-                msg.pose.pose.position.x, msg.pose.pose.position.y = pose.x, pose.y
-                msg.pose.pose.orientation = yaw_quaternion(pose.theta)
-                msg.twist.twist.linear.x, msg.twist.twist.angular.z = robot.linear, robot.angular
+                msg.pose.pose.position.x, msg.pose.pose.position.y = float(pose.x), float(pose.y)
+                msg.pose.pose.orientation = self.ros.quaternion(pose.theta)
+                msg.twist.twist.linear.x, msg.twist.twist.angular.z = float(robot.linear), float(robot.angular)
                 pubs[topic].publish(msg)
-            pubs["stall"].publish(Bool(robot.stall))
+            pubs["stall"].publish(msgs.Bool(data=bool(robot.stall)))
             sensors = robot.spec.sensors
             if not sensors or not robot.ranges:
                 continue
             s = sensors[0]
-            scan = LaserScan()
+            scan = msgs.LaserScan()
             scan.header.stamp, scan.header.frame_id = stamp, f"{frame}/base_laser_link"
             n = len(robot.ranges)
             scan.angle_min, scan.angle_max = (-s.fov / 2, s.fov / 2) if n > 1 else (0.0, 0.0)
             scan.angle_increment = s.fov / (n - 1) if n > 1 else 0.0
-            scan.range_min, scan.range_max = s.range_min, s.range_max
-            scan.ranges = list(robot.ranges)
+            scan.range_min, scan.range_max = float(s.range_min), float(s.range_max)
+            scan.ranges = [float(r) for r in robot.ranges]
             pubs["base_scan"].publish(scan)
-            rng = Range()
+            rng = msgs.Range()
             rng.header.stamp, rng.header.frame_id = stamp, f"{frame}/base_laser_link"
-            rng.radiation_type, rng.field_of_view = Range.ULTRASOUND, s.fov
-            rng.min_range, rng.max_range, rng.range = s.range_min, s.range_max, min(robot.ranges)
+            rng.radiation_type, rng.field_of_view = msgs.Range.ULTRASOUND, float(s.fov)
+            rng.min_range, rng.max_range, rng.range = float(s.range_min), float(s.range_max), float(min(robot.ranges))
             pubs["range"].publish(rng)
 
     def summary(self) -> dict[str, Any]:
@@ -211,6 +206,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m hlacore.federates.ros_bridge.stage_node",
                                      description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("world", help="a Stage .world file")
+    parser.add_argument("--ros", type=int, choices=(1, 2), default=None,
+                        help="the ROS of the node (default: found from the environment and what is installed)")
     parser.add_argument("--dt", type=float, default=0.01, help="physics step (s)")
     parser.add_argument("--watchdog", type=float, default=0.2, help="stop a robot without cmd_vel for this "
                                                                     "long (s; 0: never)")
@@ -221,8 +218,11 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--snapshot", help="write a PNG of the world, with trails, here at the end")
     parser.add_argument("--node-name", default="stage")
     args = parser.parse_args(argv)
+    version = args.ros or detect()
+    if version == 2:
+        ros2_env.reexec_with_ros2()  # the dynamic loader reads the wheels' library path only at start
     world = World(read_world(args.world), dt=args.dt, watchdog=args.watchdog or None)
-    node = StageNode(world, args.node_name)
+    node = StageNode(world, args.node_name, select(version))
     stop = threading.Event()
     signal.signal(signal.SIGTERM, lambda *_: stop.set())
     signal.signal(signal.SIGINT, lambda *_: stop.set())

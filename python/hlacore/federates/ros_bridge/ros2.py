@@ -1,0 +1,155 @@
+""":class:`~.ros_api.RosApi` on ROS 2: rclpy over Fast DDS, from ROS 2 Kilted's wheels (:mod:`.ros2_env`).
+
+The process must have been started with :func:`.ros2_env.environment` (or a sourced ROS 2 install): the
+dynamic loader reads the library path only at start.
+"""
+
+from __future__ import annotations
+
+import threading
+from typing import Any, Callable, Optional
+
+from .ros2_env import INSTALL_HINT
+from .ros_api import Messages, Mismatch, RosApi
+
+#: Depth of every topic's history (KEEP_LAST): as rospy's queues of 100, enough for a lockstep's bursts.
+DEPTH = 100
+
+
+class Ros2(RosApi):
+    """rclpy: one node in a context of its own, its callbacks run by a single-threaded executor on a thread
+    of its own (so they never run concurrently with each other). QoS: reliable, or best effort (the
+    sensor-data profile's), KEEP_LAST :data:`DEPTH`, volatile. rclpy's signal handlers are not installed:
+    the commands keep their own SIGTERM / SIGINT handling."""
+
+    version = 2
+
+    def __init__(self) -> None:
+        try:
+            import rclpy
+            from geometry_msgs.msg import Quaternion, Twist
+            from nav_msgs.msg import Odometry
+            from rosgraph_msgs.msg import Clock
+            from sensor_msgs.msg import LaserScan, Range
+            from std_msgs.msg import Bool, UInt32
+        except ImportError as error:
+            raise ImportError(f"{INSTALL_HINT}; start the process with "
+                              f"hlacore.federates.ros_bridge.ros2_env.environment() ({error})") from error
+        self.rclpy = rclpy
+        self.msgs = Messages(Twist, Quaternion, Odometry, Clock, LaserScan, Range, Bool, UInt32)
+        self.context = rclpy.Context()
+        self.node: Any = None
+        self._executor: Any = None
+        self._thread: Optional[threading.Thread] = None
+
+    def init_node(self, name: str, timeout: float = 10.0, sim_time: bool = False) -> None:
+        """``rclpy.init`` (no signal handlers) and the node, ``use_sim_time`` = ``sim_time``; its executor
+        starts on a thread named ``rclpy``."""
+        from rclpy.executors import SingleThreadedExecutor
+        from rclpy.parameter import Parameter
+        from rclpy.signals import SignalHandlerOptions
+
+        self.rclpy.init(context=self.context, signal_handler_options=SignalHandlerOptions.NO)
+        self.node = self.rclpy.create_node(name, context=self.context,
+                                           parameter_overrides=[Parameter("use_sim_time", value=sim_time)])
+        self._executor = SingleThreadedExecutor(context=self.context)
+        self._executor.add_node(self.node)
+        self._thread = threading.Thread(target=self._spin, name="rclpy", daemon=True)
+        self._thread.start()
+
+    def _spin(self) -> None:
+        from rclpy.executors import ExternalShutdownException
+
+        try:
+            while self.context.ok():
+                self._executor.spin_once(timeout_sec=0.1)
+        except ExternalShutdownException:
+            pass
+
+    def _qos(self, reliable: bool) -> Any:
+        from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+
+        return QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=DEPTH, durability=DurabilityPolicy.VOLATILE,
+                          reliability=ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT)
+
+    def publisher(self, topic: str, kind: Any, reliable: bool = True, synchronous: bool = False) -> Any:
+        """``create_publisher`` with the QoS of ``reliable`` (``synchronous``: Fast DDS publishes
+        synchronously in any case, :mod:`.ros2_env` sets ``RMW_FASTRTPS_PUBLICATION_MODE``)."""
+        return self.node.create_publisher(kind, topic, self._qos(reliable))
+
+    def subscriber(self, topic: str, kind: Any, callback: Callable[[Any], None], reliable: bool = True,
+                   on_mismatch: Optional[Mismatch] = None) -> Any:
+        """``create_subscription``; the middleware's incompatible-type and incompatible-QoS events go to
+        ``on_mismatch`` with the offending publishers' types or the QoS policy."""
+        from rclpy.event_handler import SubscriptionEventCallbacks
+
+        events = None
+        if on_mismatch is not None:
+            ours = type_name(kind)
+
+            def wrong_type(info: Any) -> None:
+                others = sorted({i.topic_type for i in self.node.get_publishers_info_by_topic(topic)} - {ours})
+                on_mismatch(topic, f"a publisher of {', '.join(others) or 'another type'}, not {ours}")
+
+            def wrong_qos(info: Any) -> None:
+                on_mismatch(topic, f"a publisher whose QoS does not match ({info.last_policy_kind.name}; "
+                                   f"this subscription is {'reliable' if reliable else 'best effort'})")
+
+            events = SubscriptionEventCallbacks(incompatible_type=wrong_type, incompatible_qos=wrong_qos)
+        return self.node.create_subscription(kind, topic, callback, self._qos(reliable), event_callbacks=events)
+
+    def publisher_connections(self, pub: Any) -> int:
+        """``get_subscription_count``: the matched subscriptions."""
+        return int(pub.get_subscription_count())
+
+    def subscriber_connections(self, sub: Any) -> int:
+        """``get_publisher_count``: the matched publishers."""
+        return int(sub.get_publisher_count())
+
+    def topic_of(self, sub: Any) -> str:
+        """``topic_name``."""
+        return str(sub.topic_name)
+
+    def unsubscribe(self, sub: Any) -> None:
+        """``destroy_subscription``."""
+        self.node.destroy_subscription(sub)
+
+    def stamp(self, seconds: float) -> Any:
+        """``builtin_interfaces/Time`` of ``seconds`` rounded to whole nanoseconds."""
+        from builtin_interfaces.msg import Time
+
+        ns = round(seconds * 1e9)
+        return Time(sec=ns // 1_000_000_000, nanosec=ns % 1_000_000_000)
+
+    def seconds(self, stamp: Any) -> float:
+        """``sec + nanosec / 1e9``."""
+        return int(stamp.sec) + int(stamp.nanosec) * 1e-9
+
+    def now(self) -> Any:
+        """The node's clock (``/clock`` when ``use_sim_time``), as a message."""
+        return self.node.get_clock().now().to_msg()
+
+    def set_use_sim_time(self) -> None:
+        """This node's ``use_sim_time`` parameter (ROS 2 has no global one)."""
+        from rclpy.parameter import Parameter
+
+        self.node.set_parameters([Parameter("use_sim_time", value=True)])
+
+    def ok(self) -> bool:
+        """Whether the node's context is up."""
+        return bool(self.context.ok())
+
+    def shutdown(self, reason: str) -> None:
+        """Shut the context down (the executor's thread returns), then destroy the node."""
+        if self.node is None:
+            return
+        self.context.try_shutdown()
+        if self._thread is not None:
+            self._thread.join(5.0)
+        self.node.destroy_node()
+        self.node = None
+
+
+def type_name(kind: Any) -> str:
+    """A ROS 2 message class's type name, as the graph reports it: ``geometry_msgs/msg/Twist``."""
+    return f"{kind.__module__.split('.')[0]}/msg/{kind.__name__}"

@@ -10,7 +10,6 @@ rospy: the ROS side lives in the subprocesses."""
 
 from __future__ import annotations
 
-import contextlib
 import json
 import os
 import pathlib
@@ -18,41 +17,13 @@ import subprocess
 import sys
 import threading
 import time
-import xmlrpc.client
 import xmlrpc.server
-from typing import Iterator
 
 import pytest
 
-import hlacore.rti as rti
-from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, load_world
-from hlacore.federates.robot_world.federate import Pose
 from hlacore.federates.ros_bridge.master import free_master_port, master_online
 
-from support.ros import DIST, WORLD, f32, running, start_bridge, start_teleop
-
-DT, PERIOD = 0.01, 0.1
-MAX_CYCLES = 4000  # bounds each run: 400 s of federation time
-
-
-@contextlib.contextmanager
-def world_federate(address: str, tmp_path: pathlib.Path) -> Iterator[tuple[WorldFederate, pathlib.Path]]:
-    creator = rti.RTIAmbassador(address)
-    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
-    world_file = tmp_path / "rover.world"
-    world_file.write_text(WORLD)
-    fed = WorldFederate.join(World(load_world(WORLD), dt=DT, watchdog=None), address, period=PERIOD,
-                             lookahead=PERIOD)
-    try:
-        yield fed, world_file
-    finally:
-        fed.resign()
-        creator.destroyFederationExecution(FEDERATION)
-
-
-def state(fed: WorldFederate) -> tuple[Pose, tuple[float, ...], list[float]]:
-    r = fed.world.robot("rover")
-    return r.pose, (r.odometry.x, r.odometry.y, r.odometry.theta, r.linear, r.angular), list(r.ranges)
+from support.ros import DIST, MAX_CYCLES, PERIOD, f32, running, start_bridge, start_teleop, state, world_federate
 
 
 def test_timed_bridge_round_trip(roscore: dict[str, str], gateway_address: str, tmp_path: pathlib.Path) -> None:

@@ -7,13 +7,15 @@ in the root namespace (hlacore.link.Link, listening on a host's .254 address and
 host's .1), which is where the emulated link sits. ``lan(a, b)`` wires two hosts directly instead (a veth
 pair between their namespaces, 10.214.n.1 and .2), for traffic a relay cannot carry (ROS 1 nodes connect
 to each other on ports they choose). Everything is removed at the end, also after a failure;
-names carry this process's pid so that parallel runs do not collide.
+names carry this process's pid so that parallel runs do not collide. ``LoopbackNamespace`` is a namespace
+with loopback only and no link out, for ROS 2's DDS.
 """
 
 from __future__ import annotations
 
 import os
 import shutil
+import signal
 import subprocess
 from dataclasses import dataclass
 
@@ -99,3 +101,52 @@ def namespaces_unavailable() -> str:
     subprocess.run(["ip", "netns", "del", probe], capture_output=True)
     return ""
 
+
+
+class LoopbackNamespace:
+    """A network namespace with nothing but its loopback interface, for processes whose sockets must not
+    leave it (ROS 2's DDS binds every interface it sees: here there is only ``lo``). Made on ``__enter__``;
+    on ``__exit__`` every process still inside is killed by pid (they are this test's: the namespace is
+    new) and the namespace is removed; :attr:`leftovers` then names the pids that had to be killed."""
+
+    def __init__(self, name: str) -> None:
+        self.name = f"hlc{os.getpid() % 100000}-{name}"
+        self.leftovers: list[int] = []
+
+    def exec_prefix(self) -> list[str]:
+        """What runs a command inside the namespace: prefix it to the argv (``ip netns exec`` execs the
+        command in place, so the started pid is the command's)."""
+        return ["ip", "netns", "exec", self.name]
+
+    def inode(self) -> int:
+        """The namespace's identity: a process is inside iff ``/proc/PID/ns/net`` has this inode."""
+        return os.stat(f"/run/netns/{self.name}").st_ino
+
+    def pids(self) -> list[int]:
+        """The processes inside the namespace now."""
+        done = subprocess.run(["ip", "netns", "pids", self.name], capture_output=True, text=True)
+        return [int(p) for p in done.stdout.split()]
+
+    def links(self) -> list[str]:
+        """The namespace's network interfaces."""
+        done = subprocess.run(["ip", "-n", self.name, "-o", "link", "show"], capture_output=True, text=True,
+                              check=True)
+        return [line.split(":")[1].strip().split("@")[0] for line in done.stdout.splitlines()]
+
+    def __enter__(self) -> "LoopbackNamespace":
+        _ip("netns", "add", self.name)
+        try:
+            _ip("-n", self.name, "link", "set", "lo", "up")
+        except BaseException:
+            subprocess.run(["ip", "netns", "del", self.name], capture_output=True)
+            raise
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.leftovers = self.pids()
+        for pid in self.leftovers:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        subprocess.run(["ip", "netns", "del", self.name], capture_output=True)

@@ -1,5 +1,6 @@
 """ROS 1 for the tests: whether it is installed, a real roscore on a free port, the bridge and tests/peers'
-ROS nodes started as processes and stopped by pid, and the rover world they drive."""
+ROS nodes started as processes and stopped by pid; and, for the ROS 1 and ROS 2 bridge tests alike, the rover
+world they drive (its federate in the test's process) and reading a process's output."""
 
 from __future__ import annotations
 
@@ -19,11 +20,16 @@ from typing import Any, Iterator, Optional, Sequence
 
 import pytest
 
+import hlacore.rti as rti
+from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, load_world
+from hlacore.federates.robot_world.federate import Pose
 from hlacore.federates.ros_bridge.children import stop_process
 from hlacore.federates.ros_bridge.master import free_master_port
 
 from support import PEERS, ROVER_MODEL
 
+DT, PERIOD = 0.01, 0.1  # the rover world's physics step and the federates' period
+MAX_CYCLES = 4000  # bounds each round-trip run: 400 s of federation time
 DIST = os.environ.get("HLACORE_ROS_DIST_PACKAGES", "/usr/lib/python3/dist-packages")
 WORLD = ROVER_MODEL + """
 bot( pose [ 0 0 0 0 ] name "rover" )
@@ -152,3 +158,23 @@ def running(proc: subprocess.Popen[str]) -> Iterator[Running]:
 def f32(x: float) -> float:
     """x rounded to a float32, as a ROS message carries it."""
     return float(struct.unpack("f", struct.pack("f", x))[0])
+
+
+@contextlib.contextmanager
+def world_federate(address: str, tmp_path: pathlib.Path) -> Iterator[tuple[WorldFederate, pathlib.Path]]:
+    creator = rti.RTIAmbassador(address)
+    creator.createFederationExecution(FEDERATION, str(FOM_PATH))
+    world_file = tmp_path / "rover.world"
+    world_file.write_text(WORLD)
+    fed = WorldFederate.join(World(load_world(WORLD), dt=DT, watchdog=None), address, period=PERIOD,
+                             lookahead=PERIOD)
+    try:
+        yield fed, world_file
+    finally:
+        fed.resign()
+        creator.destroyFederationExecution(FEDERATION)
+
+
+def state(fed: WorldFederate) -> tuple[Pose, tuple[float, ...], list[float]]:
+    r = fed.world.robot("rover")
+    return r.pose, (r.odometry.x, r.odometry.y, r.odometry.theta, r.linear, r.angular), list(r.ranges)

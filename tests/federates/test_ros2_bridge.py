@@ -1,0 +1,121 @@
+"""The ROS 2 bridge with real rclpy nodes, each in a process of its own, inside a network namespace that has
+only loopback (Fast DDS binds UDP sockets on every interface it sees; there it sees only ``lo``), made and
+removed by the test. The gateway and the world federate run in this process, outside the namespace: the
+bridge reaches the gateway through a Unix socket (a path, which no network namespace separates). This process
+never imports rclpy.
+
+The tests run whenever ROS 2's wheels are installed (scripts/install-ros2.sh, called by scripts/test.sh);
+without them they skip, except under CI=true, where that is a failure."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import pathlib
+from typing import Iterator
+
+import pytest
+
+import hlacore
+
+from support import PEERS, running_rtig
+from support.ros import MAX_CYCLES, PERIOD, f32, running, state, world_federate
+from support.ros2 import Ros2Space, root_udp_owners, ros2_space, udp_sockets_of
+
+
+@pytest.fixture
+def space(tmp_path: pathlib.Path) -> Iterator[Ros2Space]:
+    """A loopback-only namespace for the test's ROS 2 processes (removed after; none may be left in it)."""
+    with ros2_space(tmp_path) as s:
+        yield s
+
+
+@pytest.fixture(params=["in-process", "rtig"])
+def unix_gateway(request: pytest.FixtureRequest, tmp_path: pathlib.Path) -> Iterator[str]:
+    """A gateway listening on a Unix socket too, both kinds (the in-process one, the rtig executable): its
+    ``unix:PATH`` address, which reaches it from inside the namespace."""
+    path = tmp_path / "rtig.sock"
+    if request.param == "in-process":
+        with hlacore.Gateway(port=0, unix=path) as gateway:
+            yield str(gateway.unix_address)
+    else:
+        with running_rtig(tmp_path, "--unix", str(path)) as server:
+            yield str(server.unix_address)
+
+
+def bridge_args(address: str, *args: str) -> list[str]:
+    return ["-m", "hlacore.federates.ros_bridge", "--ros", "2", "--rtig", address, *args]
+
+
+def teleop_args(*args: str) -> list[str]:
+    """tests/peers/ros2_teleop.py on /rover, its node's clock on /clock (``use_sim_time``)."""
+    return [str(PEERS / "ros2_teleop.py"), "/rover", *args, "--ros-args", "-p", "use_sim_time:=true"]
+
+
+def test_dds_stays_in_the_namespace(space: Ros2Space) -> None:
+    """Two rclpy processes in the namespace exchange Twists over DDS; every UDP socket they hold is in the
+    namespace (which has no interface but ``lo``) and none in the root namespace; DDS's discovery ports of
+    the test's domain are among them."""
+    assert space.namespace.links() == ["lo"]
+    before = root_udp_owners()
+    with running(space.popen([str(PEERS / "ros2_echo.py"), "listen", "/probe/cmd_vel", "100"])) as listener, \
+            running(space.popen([str(PEERS / "ros2_echo.py"), "talk", "/probe/cmd_vel"])) as talker:
+        listener.out.wait_for("listen ready", 30)
+        listener.out.wait_for("listen got 100", 30)
+        pids = [listener.proc.pid, talker.proc.pid]
+        inside = space.namespace.inode()
+        assert all(os.stat(f"/proc/{pid}/ns/net").st_ino == inside for pid in pids)
+        sockets = {pid: udp_sockets_of(pid) for pid in pids}
+        assert all(sockets.values()), sockets  # DDS did open UDP sockets ...
+        assert not set(pids) & root_udp_owners()  # ... and none of them is in the root namespace
+        ports = {int(line.split()[1].split(":")[1], 16) for table in ("udp", "udp6")
+                 for line in pathlib.Path(f"/proc/{pids[0]}/net/{table}").read_text().splitlines()[1:]}
+        discovery = 7400 + 250 * space.domain  # the RTPS well-known multicast discovery port of the domain
+        assert discovery in ports, (discovery, sorted(ports))
+    assert listener.status == 0 and talker.status == 0, (listener.lines, talker.lines)
+
+
+def test_timed_bridge_round_trip(space: Ros2Space, unix_gateway: str, tmp_path: pathlib.Path) -> None:
+    """A Twist from an rclpy node → cmd_vel → the world moves the robot → Odometry, LaserScan, Range and
+    /clock on ROS 2, stamped with federation time and equal to the world's state at the grant they were
+    taken; the rclpy node's own clock (``use_sim_time``) is federation time."""
+    with world_federate(unix_gateway, tmp_path) as (world, world_file):
+        states = {0: state(world)}
+        with running(space.popen(bridge_args(unix_gateway, "--world", str(world_file), "--clock", "--rate",
+                                             "20"))) as bridge:
+            bridge.out.wait_for("ros_bridge ready", 60)
+            with running(space.popen(teleop_args("0.5", "0.2", "60", "--clock"))) as teleop:
+                for _ in range(MAX_CYCLES):
+                    granted = world.advance(timeout=30)
+                    states[round(granted / PERIOD)] = state(world)
+                    if teleop.proc.poll() is not None:
+                        break
+                seen = teleop.report(30)
+        assert bridge.status == 0, bridge.lines
+        assert any(line.startswith("ros_bridge stopped at") and "ROS 2" in line for line in bridge.lines)
+
+    # the Twist reached the world: the robot drove at the commanded speed
+    assert any(odom[3] == 0.5 for _pose, odom, _ranges in states.values())
+    # Odometry: stamped G + L with the world's odometry at G (float64: exact)
+    odom = seen["odom"]
+    k = round(odom["stamp"] / PERIOD) - 1
+    assert odom["stamp"] == pytest.approx((k + 1) * PERIOD, abs=1e-9)
+    _pose, o, _ranges = states[k]
+    assert (odom["x"], odom["y"], odom["v"]) == (o[0], o[1], o[3])
+    assert odom["x"] > 0.2 and odom["frame"] == "rover/odom" and odom["child"] == "base_footprint"
+    # the node runs in federation time: when the odometry came, its clock was a /clock tick (a grant), not
+    # the wall clock's 1.7e9 s; ticks and Odometry travel on different topics, so one may overtake the other
+    node_time = odom["node_time"]
+    assert node_time > 0 and round(node_time / PERIOD) * PERIOD == pytest.approx(node_time, abs=1e-9), odom
+    assert abs(node_time - odom["stamp"]) < 2.0, odom
+    # LaserScan and Range: the world's beams at G (float32 on the wire), the sonar's 40° fan
+    scan = seen["scan"]
+    k = round(scan["stamp"] / PERIOD) - 1
+    assert scan["ranges"] == [f32(r) for r in states[k][2]]
+    assert scan["angle_min"] == pytest.approx(-0.349066, abs=1e-5) and scan["range_max"] == pytest.approx(4.0)
+    rng = seen["range"]
+    k = round(rng["stamp"] / PERIOD) - 1
+    assert rng["range"] == f32(min(states[k][2])) and rng["radiation_type"] == 0
+    # /clock carries grants (on the bridge's grid); the node took use_sim_time
+    assert seen["clock"] > 0 and round(seen["clock"] / PERIOD) * PERIOD == pytest.approx(seen["clock"], abs=1e-9)
+    assert seen["use_sim_time"] is True

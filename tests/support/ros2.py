@@ -1,0 +1,83 @@
+"""ROS 2 for the tests: whether its wheels are installed (scripts/install-ros2.sh), a loopback-only network
+namespace with the environment of ROS 2 processes (a domain of the test's own, logs in its tmp dir), and
+processes started inside it, stopped by pid. The test process itself never imports rclpy."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import pathlib
+import random
+import re
+import subprocess
+import sys
+from dataclasses import dataclass
+from typing import Iterator, Sequence
+
+import pytest
+
+from hlacore.federates.ros_bridge import ros2_env
+
+from support.nethosts import LoopbackNamespace, namespaces_unavailable
+
+
+def require_ros2() -> None:
+    """Skip without ROS 2's wheels or network namespaces, except under CI, where scripts/test.sh must have
+    installed the wheels and namespaces work (root)."""
+    why = "" if ros2_env.installed() else f"ROS 2 is not installed under {ros2_env.prefix()} (./scripts/install-ros2.sh)"
+    why = why or namespaces_unavailable()
+    if why:
+        if os.environ.get("CI"):
+            pytest.fail(why + "; CI=true requires it")
+        pytest.skip(why)
+
+
+@dataclass
+class Ros2Space:
+    """A loopback-only namespace and the environment of the ROS 2 processes started in it."""
+
+    namespace: LoopbackNamespace
+    env: dict[str, str]
+    domain: int
+
+    def popen(self, args: Sequence[str], extra: dict[str, str] | None = None) -> subprocess.Popen[str]:
+        """``python args...`` inside the namespace, with the ROS 2 environment; stdout and stderr merged."""
+        return subprocess.Popen([*self.namespace.exec_prefix(), sys.executable, *args], stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True,
+                                env={**self.env, **(extra or {})})
+
+
+@contextlib.contextmanager
+def ros2_space(tmp_path: pathlib.Path, name: str = "ros2") -> Iterator[Ros2Space]:
+    """A :class:`Ros2Space` for the block: the namespace is removed at the end (after killing, by pid, any
+    process the test left in it: the test then fails, naming them)."""
+    require_ros2()
+    domain = random.randrange(1, 100)  # the namespace isolates already; a domain of its own costs nothing
+    env = ros2_env.environment(domain_id=domain, log_dir=str(tmp_path / "ros2-log"))
+    env.update(ROS_HOME=str(tmp_path / "ros2-home"), PYTHONUNBUFFERED="1")
+    with LoopbackNamespace(name) as namespace:
+        yield Ros2Space(namespace, env, domain)
+    assert not namespace.leftovers, f"processes left in the namespace {namespace.name}: {namespace.leftovers}"
+
+
+def udp_sockets_of(pid: int) -> set[int]:
+    """The inodes of the UDP sockets ``pid`` holds (from its fds, matched against its namespace's tables)."""
+    fds = set()
+    for fd in os.listdir(f"/proc/{pid}/fd"):
+        try:
+            target = os.readlink(f"/proc/{pid}/fd/{fd}")
+        except OSError:
+            continue
+        if target.startswith("socket:["):
+            fds.add(int(target[8:-1]))
+    udp = set()
+    for table in ("udp", "udp6"):
+        for line in pathlib.Path(f"/proc/{pid}/net/{table}").read_text().splitlines()[1:]:
+            udp.add(int(line.split()[9]))
+    return fds & udp
+
+
+def root_udp_owners() -> set[int]:
+    """The pids owning a UDP socket in this (the root) namespace, from ``ss -uanp``."""
+    done = subprocess.run(["ss", "-uanpH"], capture_output=True, text=True, check=True)
+    return {int(pid) for pid in re.findall(r"pid=(\d+)", done.stdout)}

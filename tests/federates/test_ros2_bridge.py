@@ -10,8 +10,12 @@ without them they skip, except under CI=true, where that is a failure."""
 from __future__ import annotations
 
 import contextlib
+import math
 import os
 import pathlib
+import re
+import signal
+import time
 from typing import Iterator
 
 import pytest
@@ -19,7 +23,7 @@ import pytest
 import hlacore
 
 from support import PEERS, running_rtig
-from support.ros import MAX_CYCLES, PERIOD, f32, running, state, world_federate
+from support.ros import MAX_CYCLES, PERIOD, Running, f32, running, state, world_federate
 from support.ros2 import Ros2Space, root_udp_owners, ros2_space, udp_sockets_of
 
 
@@ -119,3 +123,49 @@ def test_timed_bridge_round_trip(space: Ros2Space, unix_gateway: str, tmp_path: 
     # /clock carries grants (on the bridge's grid); the node took use_sim_time
     assert seen["clock"] > 0 and round(seen["clock"] / PERIOD) * PERIOD == pytest.approx(seen["clock"], abs=1e-9)
     assert seen["use_sim_time"] is True
+
+
+def drain(run: Running) -> list[str]:
+    """Every line the process has printed so far (without waiting)."""
+    while not run.out.lines.empty():
+        run.out.seen.append(run.out.lines.get())
+    return run.out.seen
+
+
+def test_bad_input_is_said_once_and_the_federation_goes_on(space: Ros2Space, unix_gateway: str,
+                                                           tmp_path: pathlib.Path) -> None:
+    """NaN Twists on a bridged cmd_vel, a std_msgs/String publisher on a bridged Odometry topic, and the robot
+    node publishing that Odometry killed: the bridge says each once, sends no NaN into the federation, and
+    the world federate keeps being granted; nothing is left running."""
+    with world_federate(unix_gateway, tmp_path) as (world, world_file):
+        with running(space.popen(bridge_args(unix_gateway, "--world", str(world_file), "--robot-node", "bot",
+                                             "--sensor", "none", "--rate", "20"))) as bridge:
+            bridge.out.wait_for("ros_bridge ready", 60)
+            with running(space.popen([str(PEERS / "ros2_bad.py"), "nan", "/rover/cmd_vel"])) as nan, \
+                    running(space.popen([str(PEERS / "ros2_bad.py"), "wrong", "/bot/odom"])) as wrong, \
+                    running(space.popen([str(PEERS / "ros2_bad.py"), "odom", "/bot/odom"])) as robot:
+                for peer in (nan, wrong, robot):
+                    peer.out.wait_for(f"{peer.proc.args[-2]} ready", 30)  # type: ignore[index]
+                killed_at, after_death = None, 0
+                for _ in range(MAX_CYCLES):
+                    world.advance(timeout=30)
+                    assert math.isfinite(world.world.robot("rover").linear)
+                    said = [line for line in drain(bridge) if line.startswith("ros_bridge: ")]
+                    if killed_at is None and any("non-finite" in line for line in said) \
+                            and any("std_msgs/msg/String" in line for line in said):
+                        robot.proc.send_signal(signal.SIGKILL)  # the robot node dies, without a goodbye
+                        killed_at = time.monotonic()
+                    if any("no publisher left on /bot/odom" in line for line in said):
+                        after_death += 1
+                        if after_death == 20:  # the federation went on: 20 more grants
+                            break
+                dead_after = time.monotonic() - (killed_at or math.inf)
+        assert bridge.status == 0, bridge.lines
+    said = [line for line in bridge.lines if line.startswith("ros_bridge: ")]
+    assert after_death == 20, said
+    assert len([line for line in said if "non-finite" in line]) == 1, said  # said once, for many NaN Twists
+    assert len([line for line in said if "std_msgs/msg/String" in line]) == 1, said
+    assert len([line for line in said if "no publisher left on /bot/odom" in line]) == 1, said
+    stopped = next(line for line in bridge.lines if line.startswith("ros_bridge stopped"))
+    assert int(re.search(r"(\d+) rejected", stopped)[1]) > 1, stopped  # type: ignore[index]
+    print(f"the killed node was said gone after {dead_after:.1f} s")

@@ -304,6 +304,7 @@ class RosBridge:
                 except TimeoutError:
                     if self._stop.is_set() or not self.ros.ok():
                         return self.time
+                    self._watch()  # the federation may be held by another federate: still say what ROS does
             self._granted()
             if self.rate:
                 delay = wall0 + (self.time - fed0) / self.rate - _time.monotonic()
@@ -593,8 +594,9 @@ class RosBridge:
 
     def _watch(self) -> None:
         """On the bridge's thread, every :data:`WATCH` s: a subscribed topic that has lost every publisher
-        (its node died or left) is said once and no longer awaited, until a publisher is back; untimed, a
-        state topic silent for :data:`SILENCE` s while its publisher is still there is said once."""
+        (its node died or left) is said once and no longer awaited, until a publisher is back; a publisher of
+        another type on a subscribed topic is said once; untimed, a state topic silent for :data:`SILENCE` s
+        while its publisher is still there is said once."""
         now = _time.monotonic()
         if now < self._next_watch:
             return
@@ -612,6 +614,8 @@ class RosBridge:
                 self.said.forget(("gone", topic))
                 self.said.say(("back", topic), f"a publisher is back on {topic}")
             self._heard[topic] = count
+            for other in self.ros.foreign_publishers(sub):
+                self._mismatch(topic, f"a publisher of {other} (the bridge reads another type there)")
             seen = self._last_seen.get(topic)
             if not self.timed and topic in states and count > 0 and seen is not None:
                 if now - seen > SILENCE:

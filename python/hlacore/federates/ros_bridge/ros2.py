@@ -79,24 +79,25 @@ class Ros2(RosApi):
 
     def subscriber(self, topic: str, kind: Any, callback: Callable[[Any], None], reliable: bool = True,
                    on_mismatch: Optional[Mismatch] = None) -> Any:
-        """``create_subscription``; the middleware's incompatible-type and incompatible-QoS events go to
-        ``on_mismatch`` with the offending publishers' types or the QoS policy."""
+        """``create_subscription``; the middleware's incompatible-QoS event goes to ``on_mismatch`` with the
+        policy that does not match."""
         from rclpy.event_handler import SubscriptionEventCallbacks
 
         events = None
         if on_mismatch is not None:
-            ours = type_name(kind)
-
-            def wrong_type(info: Any) -> None:
-                others = sorted({i.topic_type for i in self.node.get_publishers_info_by_topic(topic)} - {ours})
-                on_mismatch(topic, f"a publisher of {', '.join(others) or 'another type'}, not {ours}")
-
             def wrong_qos(info: Any) -> None:
                 on_mismatch(topic, f"a publisher whose QoS does not match ({info.last_policy_kind.name}; "
                                    f"this subscription is {'reliable' if reliable else 'best effort'})")
 
-            events = SubscriptionEventCallbacks(incompatible_type=wrong_type, incompatible_qos=wrong_qos)
+            # Fast DDS does not raise the incompatible-type event (seen with these wheels): the bridge looks
+            # at the graph instead (foreign_publishers)
+            events = SubscriptionEventCallbacks(incompatible_qos=wrong_qos)
         return self.node.create_subscription(kind, topic, callback, self._qos(reliable), event_callbacks=events)
+
+    def foreign_publishers(self, sub: Any) -> list[str]:
+        """From the ROS graph: the types of the publishers on the topic other than the subscription's."""
+        ours = type_name(sub.msg_type)
+        return sorted({i.topic_type for i in self.node.get_publishers_info_by_topic(sub.topic_name)} - {ours})
 
     def publisher_connections(self, pub: Any) -> int:
         """``get_subscription_count``: the matched subscriptions."""

@@ -105,6 +105,11 @@ class RosApi(ABC):
     def shutdown(self, reason: str) -> None:
         """Shut this process's node down."""
 
+    def foreign_publishers(self, sub: Any) -> list[str]:
+        """The types of the publishers on ``sub``'s topic that are not of its type (their messages never
+        arrive). ROS 1: none is ever seen (rospy refuses such a connection at its handshake, and logs it)."""
+        return []
+
     def clock(self, seconds: float) -> Any:
         """A ``rosgraph_msgs/Clock`` message of a time in seconds."""
         return self.msgs.Clock(clock=self.stamp(seconds))

@@ -28,6 +28,7 @@ from hlacore.federates.ros_bridge.stage_node import last_step_at_or_before
 
 from support import PEERS, Federate, RtigProcess
 from support.nethosts import NetHosts
+from support.paper1 import check_de_run
 from support.ros import WORLD, f32, running, running_roscore, start_bridge, start_teleop
 
 PERIOD, DT = 0.1, 0.01
@@ -83,36 +84,7 @@ def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_addre
                            "de", "--rtig", gateway_address], capture_output=True, text=True, env=roscore,
                           timeout=300, stdin=subprocess.DEVNULL)
     assert done.returncode == 0, done.stdout + done.stderr
-    summary = json.loads(done.stdout.strip().splitlines()[-1])
-    assert summary["checks"] == {"no_stall": True, "no_overlap": True, "obstacles_crossed": True,
-                                 "held_back": True, "stopped_before_wall": True}
-    assert summary["controller"] == "de" and summary["grants"] == 300 and summary["end"] == pytest.approx(30.0)
-    assert summary["late_states"] == 0 and summary["late_acks"] == 0 and 0.0 < summary["wall_gap"] <= 0.5
-    assert summary["avatar_commands"] == 299 and summary["sent"] == 299 + 3 * 299
-
-    stage = json.loads((out / "stage-node.json").read_text())
-    de = json.loads((out / "de-federate.json").read_text())
-    assert all(v == 0 for v in stage["stall_steps"].values())
-    # every command, stamped DE time + lookahead, acted from exactly that step in the node
-    alone = World(paper1.world_spec(), dt=DT, watchdog=0.2)
-    for t, robot, linear in de["commands"]:
-        alone.schedule(t + PERIOD, robot, linear, 0.0)
-    for t, poses in zip(stage["times"], stage["poses"]):
-        alone.advance_to(t)
-        assert {n: [p.x, p.y, p.theta] for n, p in alone.poses().items()} == poses, t
-    # the DE model saw the node's state of G at G + L (x, y exact through nav_msgs/Odometry)
-    by_tick = {round(t / PERIOD): poses for t, poses in zip(stage["times"], stage["poses"])}
-    assert len(de["poses"]) == 4 * 299  # states of 0 .. 29.8 s (that of 29.9 s is stamped past the end)
-    for t, robot, pose in de["poses"][4:]:  # the first four are the initial state (time 0)
-        node = by_tick[round(t / PERIOD) - 1][robot]
-        assert pose[:2] == node[:2] and pose[2] == pytest.approx(node[2], abs=1e-12)
-    # the avatar was commanded go, slow and stop by the paper-1 rule on the distance it read
-    rule = paper1.Controller()
-    assert {speed for _t, _d, speed in de["control"]} == {rule.go, rule.slow, 0.0}
-    assert all(speed == rule(d) for _t, d, speed in de["control"])
-    lines = (out / "paper1-de-trace.csv").read_text().splitlines()
-    assert len(lines) == 301 and lines[0].startswith("time,distance,avatar_speed,avatar_x")
-    assert (out / "paper1-de-snapshot.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    check_de_run(done.stdout, out)
 
 
 @pytest.mark.slow

@@ -66,6 +66,7 @@ class ChainResult(Result):
     late_acks: int = 0
     bridge: str = ""  #: the bridge's last line
     late: list[str] = field(default_factory=list)  #: the bridge's lines about late states or acknowledgements
+    ros: Optional[int] = None  #: the ROS between the bridge and the world node (None: the children's choice)
 
     def summary(self) -> dict[str, Any]:
         """The checks' summary, plus the DE controller's grants, late states and acknowledgements, the
@@ -73,13 +74,15 @@ class ChainResult(Result):
         out = super().summary()
         out.update(controller="de", de_grants=self.de_grants, late_states=self.late_states,
                    late_acks=self.late_acks, late=self.late,
-                   avatar_commands=len(self.control))
+                   avatar_commands=len(self.control), ros=self.ros)
         return out
 
 
 def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, timeout: float = 60.0,
-        state_timeout: float = 5.0, hosts: Optional[dict[str, Placement]] = None) -> ChainResult:
-    """Play the scenario on the gateway at ``address`` with the ROS master of ``$ROS_MASTER_URI``; the
+        state_timeout: float = 5.0, hosts: Optional[dict[str, Placement]] = None,
+        ros: Optional[int] = None) -> ChainResult:
+    """Play the scenario on the gateway at ``address`` with the ROS master of ``$ROS_MASTER_URI`` (``ros=1``)
+    or over ROS 2's DDS (``ros=2``; None: the children find the ROS, ``ros_bridge.versions.detect``); the
     children's files (world file, summaries, snapshot) go to ``outdir``. ``hosts`` places the stage node
     ("world"), the DE federate ("controller") and the bridge each on a host of its own (docs/networking.md);
     ``outdir`` must then be readable and writable from every host (namespaces share the file system)."""
@@ -97,11 +100,13 @@ def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, 
     creator = rti.RTIAmbassador(address)
     creator.createFederationExecution(FEDERATION, str(FOM_PATH))
     result = ChainResult()
+    result.ros = ros
+    which = [] if ros is None else ["--ros", str(ros)]  # the stage node's and the bridge's
     try:
         with Children(dict(os.environ)) as kids:
             world, control, bridge_host = place["world"], place["controller"], place["bridge"]
             stage = kids.start("stage node", ["-m", "hlacore.federates.ros_bridge.stage_node", str(world_file),
-                                              "--summary", str(stage_json), "--snapshot", str(out / SNAPSHOT)],
+                                              *which, "--summary", str(stage_json), "--snapshot", str(out / SNAPSHOT)],
                                world.prefix, world.env)
             stage.wait_for("stage_node ready", timeout)
             de = kids.start("DE federate", ["-m", "hlacore.experiments.paper1.de_controller",
@@ -109,7 +114,7 @@ def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, 
                                             "--period", repr(period), "--timeout", repr(timeout),
                                             "--out", str(de_json)], control.prefix, control.env)
             de.wait_for("paper1_de joined", timeout)  # regulating before the bridge can advance
-            bridge = kids.start("bridge", ["-m", "hlacore.federates.ros_bridge",
+            bridge = kids.start("bridge", ["-m", "hlacore.federates.ros_bridge", *which,
                                            "--rtig", bridge_host.rtig or address, "--world-node", str(world_file),
                                            "--acks", "--clock", "--period", repr(period),
                                            "--await-state", repr(state_timeout), "--wait-connections",

@@ -3,11 +3,12 @@ as a plain ROS node in another process, as in ros-ptolemy-hla-iess2015 (Stage be
 "Control" script commanding the avatar, a Python ROS node driving the obstacles).
 
     python -m hlacore.experiments.paper1.ros [OUTDIR] [--rtig HOST:PORT] [--duration 30]
-        [--controller node|de]
+        [--controller node|de] [--ros 1|2]
 
 ``--controller de`` plays paper 1's own chain instead (:mod:`.chain`): the controller a DE-engine
 federate, the world a stageros-style ROS node, the bridge between them, each in its own process; it writes
-``paper1-de-trace.csv``, ``paper1-de-snapshot.png`` and ``paper1-de-trajectories.png``. The default
+``paper1-de-trace.csv``, ``paper1-de-snapshot.png`` and ``paper1-de-trajectories.png``; with ``--ros 2``
+the bridge and the world node speak ROS 2 (no master is started). The default
 (``node``) is described below.
 
 One process holds the world federate (on a thread) and the bridge (timed, ``/clock``, waiting each cycle
@@ -171,12 +172,17 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--controller", choices=("node", "de"), default="node",
                         help="node: world federate + bridge + the controllers as a rospy node; de: the DE "
                              "controller federate + bridge + the world as a stageros-style ROS node")
+    parser.add_argument("--ros", type=int, choices=(1, 2), default=None,
+                        help="with --controller de: the ROS between the bridge and the world node (default: found "
+                             "from the environment and what is installed); --controller node is ROS 1")
     parser.add_argument("--node", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.node:
         return node_main()
     if args.controller == "de":
-        return _main_de(args.outdir, args.rtig, args.duration)
+        return _main_de(args.outdir, args.rtig, args.duration, args.ros)
+    if args.ros == 2:
+        parser.error("--ros 2 needs --controller de (the controllers' node of --controller node is rospy's)")
     with contextlib.ExitStack() as stack:
         stack.enter_context(ros_master())
         address = args.rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
@@ -189,13 +195,17 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     return 0 if result.ok else 1
 
 
-def _main_de(outdir: str, rtig: Optional[str], duration: float) -> int:
+def _main_de(outdir: str, rtig: Optional[str], duration: float, ros: Optional[int] = None) -> int:
+    from hlacore.federates.ros_bridge.versions import detect
+
     from . import chain as paper1_chain
 
+    ros = ros or detect()
     with contextlib.ExitStack() as stack:
-        stack.enter_context(ros_master())
+        if ros == 1:
+            stack.enter_context(ros_master())  # ROS 2 has none: its nodes find each other over DDS
         address = rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
-        result = paper1_chain.run(address, outdir, duration=duration)
+        result = paper1_chain.run(address, outdir, duration=duration, ros=ros)
     for name, passed in result.checks.items():
         print(f"{'ok  ' if passed else 'FAIL'} {name}")
     for path in paper1_chain.write_outputs(result, outdir):

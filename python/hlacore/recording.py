@@ -142,7 +142,8 @@ def _record_name(opcode: int) -> str:
 
 
 def read(path: str | os.PathLike[str]) -> Iterator[Event]:
-    """The events of the recording at ``path``, in the order they were recorded.
+    """The events of the recording at ``path``, in the order they were recorded. Channels that are not JSON
+    (ROS topics merged in by :func:`hlacore.federates.ros_bridge.recorder.merge`) are skipped.
 
     Raises :class:`RecordingError` naming the byte offset when the file is not an MCAP file, a record is
     damaged (a chunk's CRC does not match, a message is not JSON) or the file was cut short (the gateway was
@@ -160,6 +161,7 @@ def _events(path: str, file: BinaryIO, size: int) -> Iterator[Event]:
     if file.read(8) != MAGIC:
         raise RecordingError(path, 0, "not an MCAP file (its first bytes are not MCAP's magic)")
     topics: dict[int, tuple[str, str]] = {}
+    foreign: set[int] = set()  # channels that are not the gateway's (ROS topics merged in): skipped
     pos = 8
     while True:
         if pos + 9 > size:
@@ -187,11 +189,16 @@ def _events(path: str, file: BinaryIO, size: int) -> Iterator[Event]:
             raise RecordingError(path, pos, f"damaged {_record_name(opcode)} record: {e}") from None
         for record in records:
             if isinstance(record, Channel):
+                if record.message_encoding != "json":
+                    foreign.add(record.id)
+                    continue
                 try:
                     topics[record.id] = _split_topic(record.topic)
                 except ValueError as e:
                     raise RecordingError(path, pos, str(e)) from None
             elif isinstance(record, Message):
+                if record.channel_id in foreign:
+                    continue
                 if record.channel_id not in topics:
                     raise RecordingError(path, pos, f"message {record.sequence} on channel {record.channel_id}, "
                                                     f"which no channel record announced")

@@ -1,17 +1,22 @@
 """Paper 1's chain on ROS 2 (docs/ros-bridge.md): the DE-engine controller federate commands the world as a
 ROS 2 node (the stageros-style stage node on rclpy) through the RTI, the bridge and ROS 2 topics, each a
 process of its own, all inside a loopback-only network namespace made and removed by the test; the same
-checks as on ROS 1 (tests/support/paper1.py). This process never imports rclpy. Skips without ROS 2's wheels,
-except under CI=true."""
+checks as on ROS 1 (tests/support/paper1.py); and the run's recording, the federation's events and the bridged
+ROS 2 topics in one MCAP file. This process never imports rclpy (the recording's ROS 2 messages are decoded
+from their schemas, as Foxglove does). Skips without ROS 2's wheels, except under CI=true."""
 
 from __future__ import annotations
 
+import json
 import pathlib
-import subprocess
 
 import pytest
+from mcap.reader import make_reader
+from mcap_ros2.decoder import DecoderFactory
 
-from support.paper1 import check_de_run
+from hlacore.recording import read
+
+from support.paper1 import PERIOD, check_de_run
 from support.ros2 import ros2_space
 
 pytestmark = pytest.mark.slow  # four processes and 300 lockstep cycles through DDS
@@ -20,10 +25,13 @@ pytestmark = pytest.mark.slow  # four processes and 300 lockstep cycles through 
 def test_paper1_de_controller_through_ros2(tmp_path: pathlib.Path) -> None:
     """One command, paper 1's architecture on ROS 2: the paper-1 checks pass, every pose of the world node is
     bit-identical to the World alone with the DE federate's commands at their timestamps, the DE model read
-    the node's poses one lookahead later; nothing is left running in the namespace."""
+    the node's poses one lookahead later; nothing is left running in the namespace. The recording
+    (``--record``) opens with the mcap reader; its ROS 2 messages decode with their schemas: the world node's
+    odometry at every tick and a Twist for each cmd_vel interaction the federation's events hold."""
     out = tmp_path / "out"
     with ros2_space(tmp_path) as space:
-        proc = space.popen(["-m", "hlacore.experiments.paper1.ros", str(out), "--controller", "de", "--ros", "2"])
+        proc = space.popen(["-m", "hlacore.experiments.paper1.ros", str(out), "--controller", "de", "--ros", "2",
+                            "--record"])
         try:
             stdout, _ = proc.communicate(timeout=300)
         finally:
@@ -33,3 +41,32 @@ def test_paper1_de_controller_through_ros2(tmp_path: pathlib.Path) -> None:
     assert proc.returncode == 0, stdout
     summary = check_de_run(stdout, out)
     assert summary["ros"] == 2
+
+    recording = out / "paper1-de.mcap"
+    with open(recording, "rb") as f:
+        reader = make_reader(f, decoder_factories=[DecoderFactory()])
+        schemas = {c.topic: reader.get_summary().schemas[c.schema_id].name  # type: ignore[union-attr]
+                   for c in reader.get_summary().channels.values() if c.message_encoding == "cdr"}  # type: ignore[union-attr]
+        odom: dict[int, tuple[float, float]] = {}
+        twists: list[float] = []
+        clocks = 0
+        for _schema, channel, message, decoded in reader.iter_decoded_messages(
+                topics=["/avatar/odom", "/avatar/cmd_vel", "/clock"]):
+            if channel.topic == "/avatar/odom":
+                stamp = decoded.header.stamp.sec + decoded.header.stamp.nanosec * 1e-9
+                odom[round(stamp / PERIOD)] = (decoded.pose.pose.position.x, decoded.pose.pose.position.y)
+                assert message.publish_time == decoded.header.stamp.sec * 10**9 + decoded.header.stamp.nanosec
+            elif channel.topic == "/avatar/cmd_vel":
+                twists.append(decoded.linear.x)
+            else:
+                clocks += 1
+    assert schemas["/avatar/odom"] == "nav_msgs/Odometry" and schemas["/avatar/cmd_vel"] == "geometry_msgs/Twist"
+    assert schemas["/avatar/base_scan"] == "sensor_msgs/LaserScan" and schemas["/clock"] == "rosgraph_msgs/Clock"
+    stage = json.loads((out / "stage-node.json").read_text())
+    for t, poses in zip(stage["times"], stage["poses"]):  # the node's odometry of every tick, decoded
+        assert odom[round(t / PERIOD)] == pytest.approx(tuple(poses["avatar"][:2]), abs=0.0), t
+    assert clocks >= 300
+    # the federation's events are in the same file: one Twist on ROS 2 per cmd_vel interaction for the avatar
+    commands = [e for e in read(recording) if e.kind == "interaction" and e.class_name == "cmd_vel"
+                and b"avatar" in e.values()["robot"]]
+    assert len(commands) == len(twists) == summary["avatar_commands"]

@@ -80,10 +80,11 @@ class ChainResult(Result):
 
 def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, timeout: float = 60.0,
         state_timeout: float = 5.0, hosts: Optional[dict[str, Placement]] = None,
-        ros: Optional[int] = None) -> ChainResult:
+        ros: Optional[int] = None, record_ros: Optional[str] = None) -> ChainResult:
     """Play the scenario on the gateway at ``address`` with the ROS master of ``$ROS_MASTER_URI`` (``ros=1``)
     or over ROS 2's DDS (``ros=2``; None: the children find the ROS, ``ros_bridge.versions.detect``); the
-    children's files (world file, summaries, snapshot) go to ``outdir``. ``hosts`` places the stage node
+    children's files (world file, summaries, snapshot) go to ``outdir``; ``record_ros``: an MCAP file where the
+    bridge writes every ROS message it bridges (``--record-ros``). ``hosts`` places the stage node
     ("world"), the DE federate ("controller") and the bridge each on a host of its own (docs/networking.md);
     ``outdir`` must then be readable and writable from every host (namespaces share the file system)."""
     unknown = set(hosts or {}) - set(ROLES)
@@ -118,7 +119,8 @@ def run(address: str, outdir: str, duration: float = 30.0, period: float = 0.1, 
                                            "--rtig", bridge_host.rtig or address, "--world-node", str(world_file),
                                            "--acks", "--clock", "--period", repr(period),
                                            "--await-state", repr(state_timeout), "--wait-connections",
-                                           repr(timeout), "--until", repr(duration)],
+                                           repr(timeout), "--until", repr(duration),
+                                           *(["--record-ros", record_ros] if record_ros else [])],
                                 bridge_host.prefix, bridge_host.env)
             bridge.wait_for("ros_bridge ready", timeout)
             de.wait_for("paper1_de ready", timeout)

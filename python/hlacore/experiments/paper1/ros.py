@@ -47,6 +47,10 @@ from ..cli import run_command
 from . import scenario as paper1
 from .checks import HALF, WALL_FACE, Result, check, held_back  # noqa: F401  (HALF, WALL_FACE: re-exported, they were here)
 
+#: With ``--record`` (``--controller de``): the run's recording in OUTDIR, the federation's events and the
+#: bridged ROS topics in one MCAP file.
+RECORDING = "paper1-de.mcap"
+
 # ---- the ROS node (the paper's controllers), in its own process ----
 
 def node_main(timeout: float = 600.0) -> int:
@@ -175,12 +179,18 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--ros", type=int, choices=(1, 2), default=None,
                         help="with --controller de: the ROS between the bridge and the world node (default: found "
                              "from the environment and what is installed); --controller node is ROS 1")
+    parser.add_argument("--record", action="store_true",
+                        help="with --controller de and the in-process gateway: record the run into "
+                             "OUTDIR/paper1-de.mcap, the federation's events and the bridged ROS topics in one file")
     parser.add_argument("--node", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.node:
         return node_main()
     if args.controller == "de":
-        return _main_de(args.outdir, args.rtig, args.duration, args.ros)
+        if args.record and args.rtig:
+            parser.error("--record needs the in-process gateway (with rtig: rtig --record, the bridge's "
+                         "--record-ros, then ros_bridge.recorder.merge)")
+        return _main_de(args.outdir, args.rtig, args.duration, args.ros, args.record)
     if args.ros == 2:
         parser.error("--ros 2 needs --controller de (the controllers' node of --controller node is rospy's)")
     with contextlib.ExitStack() as stack:
@@ -195,17 +205,28 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     return 0 if result.ok else 1
 
 
-def _main_de(outdir: str, rtig: Optional[str], duration: float, ros: Optional[int] = None) -> int:
+def _main_de(outdir: str, rtig: Optional[str], duration: float, ros: Optional[int] = None,
+             record: bool = False) -> int:
+    from hlacore.federates.ros_bridge.recorder import merge
     from hlacore.federates.ros_bridge.versions import detect
 
     from . import chain as paper1_chain
 
     ros = ros or detect()
+    recording, topics = pathlib.Path(outdir) / RECORDING, pathlib.Path(outdir) / "bridge-topics.mcap"
+    if record:
+        recording.parent.mkdir(parents=True, exist_ok=True)
     with contextlib.ExitStack() as stack:
         if ros == 1:
             stack.enter_context(ros_master())  # ROS 2 has none: its nodes find each other over DDS
-        address = rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
-        result = paper1_chain.run(address, outdir, duration=duration, ros=ros)
+        gateway = hlacore.Gateway(port=0, record=str(recording)) if record else hlacore.Gateway(port=0)
+        address = rtig or str(stack.enter_context(gateway).address)
+        result = paper1_chain.run(address, outdir, duration=duration, ros=ros,
+                                  record_ros=str(topics) if record else None)
+    if record:  # the gateway has stopped: its recording is complete
+        merge(recording, topics)
+        topics.unlink()
+        print(f"wrote {recording}")
     for name, passed in result.checks.items():
         print(f"{'ok  ' if passed else 'FAIL'} {name}")
     for path in paper1_chain.write_outputs(result, outdir):

@@ -68,6 +68,9 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                         help="federation seconds per wall second (default: as fast as granted)")
     parser.add_argument("--until", type=float, default=None, help="stop at this federation time")
     parser.add_argument("--node-name", default="hla_bridge")
+    parser.add_argument("--record-ros", metavar="FILE.mcap",
+                        help="write every bridged ROS message here (MCAP, with its schema; merge it into the "
+                             "gateway's recording with hlacore.federates.ros_bridge.recorder.merge)")
     args = parser.parse_args(argv)
     mappings: list[Mapping] = []
     if args.world or args.world_node:
@@ -86,7 +89,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         ros2_env.reexec_with_ros2()  # the dynamic loader reads the wheels' library path only at start
     bridge = RosBridge(mappings, args.rtig, federation=args.federation, node_name=args.node_name,
                        timed=not args.untimed, period=args.period, lookahead=args.lookahead, clock=args.clock,
-                       rate=args.rate, await_state=args.await_state, ros=select(version))
+                       rate=args.rate, await_state=args.await_state, ros=select(version), record=args.record_ros)
 
     def on_signal(signum: int, frame: Any) -> None:
         bridge.stop()

@@ -73,6 +73,7 @@ from .mappings import (
     world_node_mappings,
 )
 from .ros_api import RosApi, reliable, yaw_of
+from .recorder import TopicRecorder
 from .said import Once
 from .versions import select
 
@@ -142,8 +143,10 @@ class RosBridge:
                  lookahead: Optional[float] = None, clock: bool = False, rate: Optional[float] = None,
                  create: bool = True, await_inputs: Optional[float] = None,
                  await_state: Optional[float] = None, step_by_sum: Optional[bool] = None,
-                 ros: Optional[RosApi] = None) -> None:
+                 ros: Optional[RosApi] = None, record: Optional[str] = None) -> None:
         self.ros = ros if ros is not None else select()  #: the ROS side (ROS 1 or ROS 2)
+        self.record = record  #: an MCAP file for every message bridged (:mod:`.recorder`), or None
+        self.recorder: Optional[TopicRecorder] = None
         self.mappings = list(mappings)
         self.address = address
         self.federation = federation
@@ -198,6 +201,7 @@ class RosBridge:
         self._silent: set[str] = set()  # state topics late once: not awaited until they speak again
         self._last_seen: dict[str, float] = {}  # subscribed topic -> monotonic time of its last message
         self._next_watch = 0.0
+        self._topic_of: dict[int, str] = {}  # id(TwistOut publisher) -> its topic
         if self.timed and not self.lookahead > 0:
             raise ValueError("lookahead must be positive")
 
@@ -210,6 +214,8 @@ class RosBridge:
         transport of what it carries (:func:`.ros_api.reliable`)."""
         ros, msgs = self.ros, self.ros.msgs
         ros.init_node(self.node_name, master_timeout, sim_time=self.clock)
+        if self.record is not None:
+            self.recorder = TopicRecorder(self.record, ros)
         if self.clock:
             ros.set_use_sim_time()
             self._clock_pub = ros.publisher("/clock", msgs.Clock)
@@ -222,6 +228,7 @@ class RosBridge:
                 pub = ros.publisher(m.topic, msgs.Twist, reliable(codec.INTERACTION), synchronous=True)
                 self._publishers.append((m, pub))
                 self._twist_out.setdefault(m.robot, []).append(pub)
+                self._topic_of[id(pub)] = m.topic
                 if m.ack is not None:
                     self._ack_of[id(pub)] = m.ack
                     self._acked[m.ack] = self._acks[m.ack] = 0
@@ -349,12 +356,15 @@ class RosBridge:
             self.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
             self.rtia = None
         self.ros.shutdown(reason)
+        if self.recorder is not None:
+            self.recorder.close()
 
     # ---- ROS → HLA ----
 
     def _on_twist(self, msg: Any, robot: str, topic: str) -> None:
         """ROS's thread: untimed, send now (receive order); timed, queue for the bridge's thread. A
         non-finite velocity is dropped (said once per topic): NaN would poison the world's physics."""
+        self._recorded(topic, msg)
         linear, angular = float(msg.linear.x), float(msg.angular.z)
         self._last_seen[topic] = _time.monotonic()
         if not (math.isfinite(linear) and math.isfinite(angular)):
@@ -408,6 +418,7 @@ class RosBridge:
         Odometry with a non-finite value is dropped (said once per topic); ranges keep inf and NaN (REP 117:
         out of range, no reading)."""
         topic = getattr(m, "topic")
+        self._recorded(topic, msg)
         self._last_seen[topic] = _time.monotonic()
         if isinstance(m, OdometryIn):
             p, q, t = msg.pose.pose.position, msg.pose.pose.orientation, msg.twist.twist
@@ -493,6 +504,7 @@ class RosBridge:
             msg.linear.x, msg.angular.z = linear, angular
             for pub in self._twist_out[robot]:
                 pub.publish(msg)
+                self._recorded(self._topic_of[id(pub)], msg)
                 self.commands_out += 1
                 ack = self._ack_of.get(id(pub))
                 if ack is not None:
@@ -501,6 +513,7 @@ class RosBridge:
 
     def _on_ack(self, msg: Any, ack: str) -> None:
         """ROS's thread: the node's count of the Twists it took."""
+        self._recorded(ack, msg)
         with self._state_lock:
             self._acks[ack] = int(msg.data)
             self._state_lock.notify_all()
@@ -532,7 +545,9 @@ class RosBridge:
 
     def _tick_clock(self) -> None:
         if self._clock_pub is not None:
-            self._clock_pub.publish(self.ros.clock(self.time))
+            tick = self.ros.clock(self.time)
+            self._clock_pub.publish(tick)
+            self._recorded("/clock", tick)
 
     # ---- HLA → ROS ----
 
@@ -547,6 +562,7 @@ class RosBridge:
             msg = self._message(m, values, when)
             if msg is not None:
                 pub.publish(msg)
+                self._recorded(m.topic, msg)
                 self.published += 1
 
     def _message(self, m: Mapping, values: dict[str, Any], when: Any) -> Any:
@@ -632,6 +648,10 @@ class RosBridge:
         self.said.say(("mismatch", topic, what), f"{topic}: {what}; its messages are not bridged")
 
     # ---- helpers ----
+
+    def _recorded(self, topic: str, msg: Any) -> None:
+        if self.recorder is not None:
+            self.recorder.record(topic, msg)
 
     def _rtia(self) -> rti.RTIAmbassador:
         if self.rtia is None:

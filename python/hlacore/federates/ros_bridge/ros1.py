@@ -16,6 +16,7 @@ class Ros1(RosApi):
     itself at the connection handshake (it logs the mismatch), so ``on_mismatch`` is never called."""
 
     version = 1
+    message_encoding = "ros1"
 
     def __init__(self) -> None:
         self.rospy = import_rospy()
@@ -83,6 +84,18 @@ class Ros1(RosApi):
     def set_use_sim_time(self) -> None:
         """The master's ``/use_sim_time`` parameter: nodes started after it follow ``/clock``."""
         self.rospy.set_param("/use_sim_time", True)
+
+    def serialize(self, msg: Any) -> bytes:
+        """genpy's ``serialize``."""
+        import io
+
+        buffer = io.BytesIO()
+        msg.serialize(buffer)
+        return buffer.getvalue()
+
+    def schema(self, kind: Any) -> tuple[str, str, bytes]:
+        """genpy's ``_type`` and ``_full_text`` (the definition with its dependencies, rosbag's format)."""
+        return str(kind._type), "ros1msg", str(kind._full_text).encode()
 
     def ok(self) -> bool:
         """``not rospy.is_shutdown()``."""

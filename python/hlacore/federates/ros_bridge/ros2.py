@@ -23,6 +23,7 @@ class Ros2(RosApi):
     the commands keep their own SIGTERM / SIGINT handling."""
 
     version = 2
+    message_encoding = "cdr"
 
     def __init__(self) -> None:
         try:
@@ -136,6 +137,35 @@ class Ros2(RosApi):
 
         self.node.set_parameters([Parameter("use_sim_time", value=True)])
 
+    def serialize(self, msg: Any) -> bytes:
+        """``rclpy.serialization.serialize_message``: CDR, as DDS carries it."""
+        from rclpy.serialization import serialize_message
+
+        return bytes(serialize_message(msg))
+
+    def schema(self, kind: Any) -> tuple[str, str, bytes]:
+        """``ros2msg``: the ``.msg`` files of the type and of every type it uses, from the packages' share
+        directories (the ament index), each after a line of ``=`` and ``MSG: pkg/Type``, as rosbag2 writes."""
+        from ament_index_python.packages import get_package_share_directory
+
+        def text(name: str) -> str:
+            package, _, type_ = name.partition("/")
+            path = f"{get_package_share_directory(package)}/msg/{type_}.msg"
+            with open(path, encoding="utf-8") as f:
+                return f.read()
+
+        name = type_name(kind).replace("/msg/", "/")
+        parts, seen, todo = [], {name}, [name]
+        while todo:
+            current = todo.pop(0)
+            definition = text(current)
+            parts.append(definition if current == name else f"{'=' * 80}\nMSG: {current}\n{definition}")
+            for used in msg_dependencies(definition, current.split("/")[0]):
+                if used not in seen:
+                    seen.add(used)
+                    todo.append(used)
+        return name, "ros2msg", "\n".join(parts).encode()
+
     def ok(self) -> bool:
         """Whether the node's context is up."""
         return bool(self.context.ok())
@@ -154,3 +184,24 @@ class Ros2(RosApi):
 def type_name(kind: Any) -> str:
     """A ROS 2 message class's type name, as the graph reports it: ``geometry_msgs/msg/Twist``."""
     return f"{kind.__module__.split('.')[0]}/msg/{kind.__name__}"
+
+
+PRIMITIVES = frozenset({"bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16", "uint16", "int32",
+                        "uint32", "int64", "uint64", "string", "wstring"})
+
+
+def msg_dependencies(definition: str, package: str) -> list[str]:
+    """The message types (``pkg/Type``) a ``.msg`` definition's fields use, in order (``package``: the
+    definition's own, for unqualified names)."""
+    found: list[str] = []
+    for line in definition.splitlines():
+        words = line.split("#", 1)[0].split()
+        if len(words) < 2:
+            continue
+        base = words[0].split("[", 1)[0].split("<=", 1)[0]
+        if base in PRIMITIVES:
+            continue
+        qualified = base.replace("/msg/", "/") if "/" in base else f"{package}/{base}"
+        if qualified not in found:
+            found.append(qualified)
+    return found

@@ -110,6 +110,18 @@ class RosApi(ABC):
         arrive). ROS 1: none is ever seen (rospy refuses such a connection at its handshake, and logs it)."""
         return []
 
+    #: MCAP's name of this ROS's wire format (``ros1`` or ``cdr``), for :mod:`.recorder`
+    message_encoding: str
+
+    @abstractmethod
+    def serialize(self, msg: Any) -> bytes:
+        """``msg`` as it travels on the wire (ROS 1's serialization, ROS 2's CDR)."""
+
+    @abstractmethod
+    def schema(self, kind: Any) -> tuple[str, str, bytes]:
+        """The MCAP schema of a message class: its name (``pkg/Type``), encoding (``ros1msg`` /
+        ``ros2msg``) and text (its definition, then each type it uses, as rosbag writes them)."""
+
     def clock(self, seconds: float) -> Any:
         """A ``rosgraph_msgs/Clock`` message of a time in seconds."""
         return self.msgs.Clock(clock=self.stamp(seconds))

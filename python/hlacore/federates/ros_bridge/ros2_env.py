@@ -26,7 +26,8 @@ starts** (the dynamic loader reads ``LD_LIBRARY_PATH`` only then):
   ``ROS_LOG_DIR`` (rcl writes a log file per process, by default under ``~/.ros/log``).
 
 :func:`environment` builds that environment for a child process; :func:`reexec_with_ros2` lets a command
-(``python -m hlacore.federates.ros_bridge --ros 2``) give it to itself by re-executing once.
+(``python -m hlacore.federates.ros_bridge --ros 2``) give it to itself by re-executing once; ``python -m
+hlacore.federates.ros_bridge.ros2_env COMMAND`` runs any command with it (a user's own ROS 2 node).
 ``HLACORE_ROS2_PREFIX`` names another prefix than ``<venv>/ros2`` (a sourced ROS 2 install needs none of
 this: its setup script sets these variables).
 """
@@ -123,3 +124,28 @@ def reexec_with_ros2() -> None:
     sys.stdout.flush()
     sys.stderr.flush()
     os.execve(sys.executable, sys.orig_argv, environment())
+
+
+def main(argv: Optional[list[str]] = None) -> int:
+    """``python -m hlacore.federates.ros_bridge.ros2_env [COMMAND ...]``: run COMMAND with the ROS 2
+    environment (it replaces this process), or, without one, print it as ``export`` lines for a shell
+    (``eval "$(python -m hlacore.federates.ros_bridge.ros2_env)"``)."""
+    import shlex
+
+    args = sys.argv[1:] if argv is None else argv
+    if not installed():
+        print(INSTALL_HINT, file=sys.stderr)
+        return 2
+    env = environment()
+    if not args:
+        for name in ("PYTHONPATH", "LD_LIBRARY_PATH", "AMENT_PREFIX_PATH", "RMW_IMPLEMENTATION",
+                     "RMW_FASTRTPS_PUBLICATION_MODE", "FASTDDS_DEFAULT_PROFILES_FILE", READY_FLAG):
+            print(f"export {name}={shlex.quote(env[name])}")
+        return 0
+    command = [sys.executable if args[0] in ("python", "python3") else args[0], *args[1:]]
+    os.execvpe(command[0], command, env)
+    return 127  # not reached
+
+
+if __name__ == "__main__":
+    sys.exit(main())

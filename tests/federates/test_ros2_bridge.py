@@ -134,17 +134,19 @@ def drain(run: Running) -> list[str]:
 
 def test_bad_input_is_said_once_and_the_federation_goes_on(space: Ros2Space, unix_gateway: str,
                                                            tmp_path: pathlib.Path) -> None:
-    """NaN Twists on a bridged cmd_vel, a std_msgs/String publisher on a bridged Odometry topic, and the robot
-    node publishing that Odometry killed: the bridge says each once, sends no NaN into the federation, and
-    the world federate keeps being granted; nothing is left running."""
+    """NaN Twists on a bridged cmd_vel, a std_msgs/String publisher and a best-effort Odometry publisher on a
+    bridged (reliable) Odometry topic, and the robot node publishing that Odometry killed: the bridge says
+    each once, sends no NaN into the federation, and the world federate keeps being granted; nothing is left
+    running."""
     with world_federate(unix_gateway, tmp_path) as (world, world_file):
         with running(space.popen(bridge_args(unix_gateway, "--world", str(world_file), "--robot-node", "bot",
                                              "--sensor", "none", "--rate", "20"))) as bridge:
             bridge.out.wait_for("ros_bridge ready", 60)
             with running(space.popen([str(PEERS / "ros2_bad.py"), "nan", "/rover/cmd_vel"])) as nan, \
                     running(space.popen([str(PEERS / "ros2_bad.py"), "wrong", "/bot/odom"])) as wrong, \
+                    running(space.popen([str(PEERS / "ros2_bad.py"), "besteffort", "/bot/odom"])) as sensor, \
                     running(space.popen([str(PEERS / "ros2_bad.py"), "odom", "/bot/odom"])) as robot:
-                for peer in (nan, wrong, robot):
+                for peer in (nan, wrong, sensor, robot):
                     peer.out.wait_for(f"{peer.proc.args[-2]} ready", 30)  # type: ignore[index]
                 killed_at, after_death = None, 0
                 for _ in range(MAX_CYCLES):
@@ -152,7 +154,8 @@ def test_bad_input_is_said_once_and_the_federation_goes_on(space: Ros2Space, uni
                     assert math.isfinite(world.world.robot("rover").linear)
                     said = [line for line in drain(bridge) if line.startswith("ros_bridge: ")]
                     if killed_at is None and any("non-finite" in line for line in said) \
-                            and any("std_msgs/msg/String" in line for line in said):
+                            and any("std_msgs/msg/String" in line for line in said) \
+                            and any("QoS does not match" in line for line in said):
                         robot.proc.send_signal(signal.SIGKILL)  # the robot node dies, without a goodbye
                         killed_at = time.monotonic()
                     if any("no publisher left on /bot/odom" in line for line in said):
@@ -165,6 +168,8 @@ def test_bad_input_is_said_once_and_the_federation_goes_on(space: Ros2Space, uni
     assert after_death == 20, said
     assert len([line for line in said if "non-finite" in line]) == 1, said  # said once, for many NaN Twists
     assert len([line for line in said if "std_msgs/msg/String" in line]) == 1, said
+    assert len([line for line in said if "/bot/odom: a publisher whose QoS does not match "
+                "(RMW_QOS_POLICY_RELIABILITY" in line]) == 1, said
     assert len([line for line in said if "no publisher left on /bot/odom" in line]) == 1, said
     stopped = next(line for line in bridge.lines if line.startswith("ros_bridge stopped"))
     assert int(re.search(r"(\d+) rejected", stopped)[1]) > 1, stopped  # type: ignore[index]

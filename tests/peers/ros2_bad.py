@@ -4,6 +4,8 @@ publishes every 50 ms until SIGTERM (or SIGKILL: the node that dies), after prin
     ros2_bad.py nan TOPIC      geometry_msgs/Twist with linear.x = NaN
     ros2_bad.py wrong TOPIC    std_msgs/String on TOPIC (a topic the bridge reads as another type)
     ros2_bad.py odom TOPIC     a well-formed nav_msgs/Odometry (a robot node, until it is killed)
+    ros2_bad.py besteffort TOPIC   the same, best effort (ROS 2's sensor-data QoS), which a reliable
+                               subscription does not take
 
 Needs the ROS 2 environment (hlacore.federates.ros_bridge.ros2_env)."""
 
@@ -28,8 +30,9 @@ def main() -> int:
     signal.signal(signal.SIGTERM, lambda *_: stop.set())
     rclpy.init(signal_handler_options=SignalHandlerOptions.NO)
     node = rclpy.create_node(f"bad_{role}")
-    kinds = {"nan": Twist, "wrong": String, "odom": Odometry}
-    pub = node.create_publisher(kinds[role], topic, QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE))
+    kinds = {"nan": Twist, "wrong": String, "odom": Odometry, "besteffort": Odometry}
+    reliability = ReliabilityPolicy.BEST_EFFORT if role == "besteffort" else ReliabilityPolicy.RELIABLE
+    pub = node.create_publisher(kinds[role], topic, QoSProfile(depth=10, reliability=reliability))
     print(f"{role} ready", flush=True)
     x = 0.0
     while not stop.wait(0.05):

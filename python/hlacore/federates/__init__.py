@@ -6,7 +6,7 @@ Lowest first (a package imports only lower ones; tests/system/test_layers.py che
 - :mod:`.de` — the discrete-event engine and its HLA-aware director (``docs/de.md``);
 - :mod:`.robot_world` — the pymunk world of Stage-style robots and its federate (``docs/robot-world.md``);
 - :mod:`.robot_driver` — the Robot Federate and its device (``docs/robot.md``);
-- :mod:`.ros_bridge` — the ROS 1 bridge and the stageros-style world node (``docs/ros-bridge.md``);
+- :mod:`.ros_bridge` — the ROS bridge (ROS 1 and ROS 2) and the stageros-style world node (``docs/ros-bridge.md``);
 - :mod:`.testbench` — the UVM-style testbench on the DE engine (``docs/robot.md``).
 
 ``mirror`` and the ``paper1*`` modules here are deprecated aliases of their new homes under

@@ -143,7 +143,7 @@ def _record_name(opcode: int) -> str:
 
 def read(path: str | os.PathLike[str]) -> Iterator[Event]:
     """The events of the recording at ``path``, in the order they were recorded. Channels that are not JSON
-    (ROS topics merged in by :func:`hlacore.federates.ros_bridge.recorder.merge`) are skipped.
+    (ROS topics merged in by ``hlacore.federates.ros_bridge.recorder.merge``) are skipped.
 
     Raises :class:`RecordingError` naming the byte offset when the file is not an MCAP file, a record is
     damaged (a chunk's CRC does not match, a message is not JSON) or the file was cut short (the gateway was

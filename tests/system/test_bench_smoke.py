@@ -20,11 +20,14 @@ from bench.procs import BUSY_POLL_US, cpu_seconds, watching
 from bench.outputs import results_markdown
 from bench.pingpong import PingPong
 from bench.probe import PROBES, lockstep_cpp
+from bench.ros_hop import measure as ros_hop
 from bench.report import Report, expected_keys, three_rtis_keys
 from bench.three_rtis import Server, run
 from bench.save_restore import SaveRestore
 from bench.throughput import Fanout
 from support import cpp_federate, rti1516e_program, rtig_executable
+from support.ros import require_ros
+from support.ros2 import require_ros2
 from hlacore import _core
 from hlacore.status import status
 
@@ -332,3 +335,12 @@ def test_the_federate_protocol_lockstep_and_ping_pong(tmp_path: pathlib.Path) ->
             for _ in range(3):
                 pingpong.round_trip()
             pingpong.finish()  # checks the echo count and the bytes echoed
+
+
+@pytest.mark.parametrize("version", [1, 2])
+def test_ros_bridge_hop_bench_times_both_paths(version: int) -> None:
+    """bench/ros_hop.py: every Twist comes back, through the relay and through HLA, on each ROS."""
+    (require_ros if version == 1 else require_ros2)()
+    result = ros_hop(version, 30)
+    assert len(result["floor"]) == len(result["bridged"]) == 27 and result["ros"] == version
+    assert all(t > 0 for t in result["floor"] + result["bridged"])

@@ -51,9 +51,10 @@ def bridge_args(address: str, *args: str) -> list[str]:
     return ["-m", "hlacore.federates.ros_bridge", "--ros", "2", "--rtig", address, *args]
 
 
-def teleop_args(*args: str) -> list[str]:
-    """tests/peers/ros2_teleop.py on /rover, its node's clock on /clock (``use_sim_time``)."""
-    return [str(PEERS / "ros2_teleop.py"), "/rover", *args, "--ros-args", "-p", "use_sim_time:=true"]
+def teleop_args(*args: str, sim_time: bool = True) -> list[str]:
+    """tests/peers/ros2_teleop.py on /rover; ``sim_time``: its node's clock on /clock (``use_sim_time``)."""
+    return [str(PEERS / "ros2_teleop.py"), "/rover", *args, "--ros-args", "-p",
+            f"use_sim_time:={'true' if sim_time else 'false'}"]
 
 
 def test_dds_stays_in_the_namespace(space: Ros2Space) -> None:
@@ -123,6 +124,33 @@ def test_timed_bridge_round_trip(space: Ros2Space, unix_gateway: str, tmp_path: 
     # /clock carries grants (on the bridge's grid); the node took use_sim_time
     assert seen["clock"] > 0 and round(seen["clock"] / PERIOD) * PERIOD == pytest.approx(seen["clock"], abs=1e-9)
     assert seen["use_sim_time"] is True
+
+
+def test_untimed_bridge_round_trip(space: Ros2Space, tmp_path: pathlib.Path) -> None:
+    """Untimed (neither regulating nor constrained): the Twist goes into the federation in receive order, the
+    reflections come back as they arrive, stamped with the wall clock (ROS time without /clock); the node's
+    Odometry and LaserScan are states the world had."""
+    with hlacore.Gateway(port=0, unix=tmp_path / "rtig.sock") as gateway:
+        address = str(gateway.unix_address)
+        with world_federate(address, tmp_path) as (world, world_file):
+            states = [state(world)]
+            with running(space.popen(bridge_args(address, "--world", str(world_file), "--untimed"))) as bridge:
+                bridge.out.wait_for("ros_bridge ready", 60)
+                started = time.time()
+                with running(space.popen(teleop_args("0.5", "0.2", "60", sim_time=False))) as teleop:
+                    for _ in range(MAX_CYCLES):
+                        world.advance(timeout=30)  # the world alone regulates: the test paces it
+                        states.append(state(world))
+                        if teleop.proc.poll() is not None:
+                            break
+                        time.sleep(0.005)
+                    seen = teleop.report(30)
+            assert bridge.status == 0, bridge.lines
+    odometries = {(o[0], o[1]) for _pose, o, _ranges in states}
+    assert (seen["odom"]["x"], seen["odom"]["y"]) in odometries and seen["odom"]["x"] > 0.2
+    assert seen["scan"]["ranges"] in [[f32(r) for r in ranges] for _pose, _o, ranges in states]
+    assert any(o[3] == 0.5 for _pose, o, _ranges in states)
+    assert started <= seen["odom"]["stamp"] <= time.time() and seen["use_sim_time"] is False  # wall time
 
 
 def drain(run: Running) -> list[str]:

@@ -35,6 +35,7 @@ this: its setup script sets these variables).
 from __future__ import annotations
 
 import glob
+import importlib.util
 import os
 import sys
 from typing import Mapping, Optional
@@ -81,6 +82,11 @@ def installed(root: Optional[str] = None) -> bool:
             and os.path.exists(os.path.join(base, "lib", f"lib{RMW_IMPLEMENTATION}.so")))
 
 
+def sourced() -> bool:
+    """Whether this process can import rclpy as it is (a ROS 2 installation's setup script was sourced)."""
+    return importlib.util.find_spec("rclpy") is not None
+
+
 def environment(base: Optional[Mapping[str, str]] = None, domain_id: Optional[int] = None,
                 log_dir: Optional[str] = None) -> dict[str, str]:
     """``base`` (default ``os.environ``) with what a ROS 2 process needs (see the module docstring):
@@ -116,10 +122,13 @@ def ready(env: Optional[Mapping[str, str]] = None) -> bool:
 
 def reexec_with_ros2() -> None:
     """Re-execute this process (same interpreter, same arguments) with :func:`environment` unless it has it
-    already: for commands that import rclpy when started from a plain shell. Returns only when ready."""
+    already: for commands that import rclpy when started from a plain shell. Returns only when ready, or at
+    once when the wheels are not installed but rclpy is importable (a sourced ROS 2 installation)."""
     if ready():
         return
     if not installed():
+        if sourced():
+            return
         raise ImportError(INSTALL_HINT)
     sys.stdout.flush()
     sys.stderr.flush()

@@ -6,6 +6,7 @@ from __future__ import annotations
 import os
 from typing import Optional
 
+from . import ros2_env
 from .ros_api import RosApi
 
 VERSIONS = (1, 2)
@@ -14,15 +15,13 @@ VERSIONS = (1, 2)
 def detect() -> int:
     """Which ROS to bridge when none is named: ``$ROS_VERSION`` when set (ROS's setup scripts set it);
     else ROS 1 when ``$ROS_MASTER_URI`` is set (a ROS 1 user's shell); else ROS 2 when its wheels are
-    installed (:mod:`.ros2_env`), else ROS 1."""
+    installed (:mod:`.ros2_env`) or rclpy is importable, else ROS 1."""
     version = os.environ.get("ROS_VERSION", "")
     if version in ("1", "2"):
         return int(version)
     if os.environ.get("ROS_MASTER_URI"):
         return 1
-    from . import ros2_env
-
-    return 2 if ros2_env.installed() else 1
+    return 2 if ros2_env.installed() or ros2_env.sourced() else 1
 
 
 def select(version: Optional[int] = None) -> RosApi:

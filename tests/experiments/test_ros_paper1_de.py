@@ -21,7 +21,7 @@ import pytest
 
 import hlacore.rti as rti
 from hlacore import omt
-from hlacore.experiments.paper1 import chain, scenario as paper1
+from hlacore.experiments.paper1 import chain
 from hlacore.link import Direction, Link
 from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, codec, load_world
 from hlacore.federates.ros_bridge.stage_node import last_step_at_or_before

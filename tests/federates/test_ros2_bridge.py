@@ -9,7 +9,6 @@ without them they skip, except under CI=true, where that is a failure."""
 
 from __future__ import annotations
 
-import contextlib
 import math
 import os
 import pathlib

@@ -175,6 +175,7 @@ def test_bad_input_is_said_once_and_the_federation_goes_on(space: Ros2Space, uni
                     running(space.popen([str(PEERS / "ros2_bad.py"), "odom", "/bot/odom"])) as robot:
                 for peer in (nan, wrong, sensor, robot):
                     peer.out.wait_for(f"{peer.proc.args[-2]} ready", 30)  # type: ignore[index]
+                robot.out.wait_for("odom matched", 30)  # the bridge hears the robot before it dies
                 killed_at, after_death = None, 0
                 for _ in range(MAX_CYCLES):
                     world.advance(timeout=30)
@@ -192,7 +193,7 @@ def test_bad_input_is_said_once_and_the_federation_goes_on(space: Ros2Space, uni
                 dead_after = time.monotonic() - (killed_at or math.inf)
         assert bridge.status == 0, bridge.lines
     said = [line for line in bridge.lines if line.startswith("ros_bridge: ")]
-    assert after_death == 20, said
+    assert after_death == 20, "".join(bridge.lines)
     assert len([line for line in said if "non-finite" in line]) == 1, said  # said once, for many NaN Twists
     assert len([line for line in said if "std_msgs/msg/String" in line]) == 1, said
     assert len([line for line in said if "/bot/odom: a publisher whose QoS does not match "
@@ -200,4 +201,6 @@ def test_bad_input_is_said_once_and_the_federation_goes_on(space: Ros2Space, uni
     assert len([line for line in said if "no publisher left on /bot/odom" in line]) == 1, said
     stopped = next(line for line in bridge.lines if line.startswith("ros_bridge stopped"))
     assert int(re.search(r"(\d+) rejected", stopped)[1]) > 1, stopped  # type: ignore[index]
+    # the robot's odometry went into the federation before it died
+    assert int(re.search(r"(\d+) updates", stopped)[1]) > 1, stopped  # type: ignore[index]
     print(f"the killed node was said gone after {dead_after:.1f} s")

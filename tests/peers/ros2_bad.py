@@ -1,5 +1,6 @@
 """Plain rclpy nodes (no hlacore) that give a bridge bad input, for tests/federates/test_ros2_bridge.py; each
-publishes every 50 ms until SIGTERM (or SIGKILL: the node that dies), after printing ``ROLE ready``:
+publishes every 50 ms until SIGTERM (or SIGKILL: the node that dies), after printing ``ROLE ready``, and prints
+``ROLE matched`` once a subscription takes its messages:
 
     ros2_bad.py nan TOPIC      geometry_msgs/Twist with linear.x = NaN
     ros2_bad.py wrong TOPIC    std_msgs/String on TOPIC (a topic the bridge reads as another type)
@@ -34,8 +35,11 @@ def main() -> int:
     reliability = ReliabilityPolicy.BEST_EFFORT if role == "besteffort" else ReliabilityPolicy.RELIABLE
     pub = node.create_publisher(kinds[role], topic, QoSProfile(depth=10, reliability=reliability))
     print(f"{role} ready", flush=True)
-    x = 0.0
+    x, matched = 0.0, False
     while not stop.wait(0.05):
+        if not matched and pub.get_subscription_count() > 0:
+            matched = True
+            print(f"{role} matched", flush=True)
         if role == "nan":
             msg = Twist()
             msg.linear.x = math.nan

@@ -11,6 +11,7 @@ import random
 import re
 import subprocess
 import sys
+import time
 from dataclasses import dataclass
 from typing import Iterator, Sequence
 
@@ -55,9 +56,42 @@ def ros2_space(tmp_path: pathlib.Path, name: str = "ros2") -> Iterator[Ros2Space
     domain = random.randrange(1, 100)  # the namespace isolates already; a domain of its own costs nothing
     env = ros2_env.environment(domain_id=domain, log_dir=str(tmp_path / "ros2-log"))
     env.update(ROS_HOME=str(tmp_path / "ros2-home"), PYTHONUNBUFFERED="1")
-    with LoopbackNamespace(name) as namespace:
-        yield Ros2Space(namespace, env, domain)
+    started = time.time()
+    try:
+        with LoopbackNamespace(name) as namespace:
+            yield Ros2Space(namespace, env, domain)
+    finally:
+        remove_orphan_segments(since=started)
     assert not namespace.leftovers, f"processes left in the namespace {namespace.name}: {namespace.leftovers}"
+
+
+def remove_orphan_segments(since: float, directory: str = "/dev/shm") -> list[str]:
+    """Fast DDS's shared-memory files (``fastdds_*`` segments and their ``_el`` locks, ``sem.fastdds_*``
+    semaphores) made since ``since`` that no process maps or holds open any more: Fast DDS leaves a port's
+    segment and semaphore after its last user by design, and a process killed without a goodbye leaves its
+    own segment; in a tmpfs, test after test. Returns the names removed."""
+    used: set[str] = set()
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open(f"/proc/{pid}/maps") as maps:
+                used.update(line.split(None, 5)[5].split(" (deleted)")[0].strip() for line in maps
+                            if f" {directory}/" in line)
+            for fd in os.listdir(f"/proc/{pid}/fd"):
+                target = os.readlink(f"/proc/{pid}/fd/{fd}")
+                if target.startswith(f"{directory}/"):
+                    used.add(target)
+        except OSError:  # a process that ended meanwhile, or one we may not read
+            continue
+    removed = []
+    for name in os.listdir(directory):
+        path = os.path.join(directory, name)
+        if not name.startswith(("fastdds_", "sem.fastdds_")) or path in used:
+            continue
+        with contextlib.suppress(FileNotFoundError):
+            if os.stat(path).st_mtime >= since - 1:
+                os.unlink(path)
+                removed.append(name)
+    return removed
 
 
 def udp_sockets_of(pid: int) -> set[int]:

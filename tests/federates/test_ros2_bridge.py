@@ -14,6 +14,8 @@ import os
 import pathlib
 import re
 import signal
+import subprocess
+import sys
 import time
 from typing import Iterator
 
@@ -23,6 +25,7 @@ import hlacore
 
 from support import PEERS, running_rtig
 from support.ros import MAX_CYCLES, PERIOD, Running, f32, running, state, world_federate
+from support.nethosts import LoopbackNamespace
 from support.ros2 import Ros2Space, root_udp_owners, ros2_space, udp_sockets_of
 
 
@@ -59,24 +62,33 @@ def teleop_args(*args: str, sim_time: bool = True) -> list[str]:
 def test_dds_stays_in_the_namespace(space: Ros2Space) -> None:
     """Two rclpy processes in the namespace exchange Twists over DDS; every UDP socket they hold is in the
     namespace (which has no interface but ``lo``) and none in the root namespace; DDS's discovery ports of
-    the test's domain are among them."""
+    the test's domain are among them. A listener of the same domain and topic in another namespace hears
+    nothing meanwhile (Fast DDS's shared memory crosses no namespace either: without discovery over the
+    network, nothing flows)."""
     assert space.namespace.links() == ["lo"]
-    before = root_udp_owners()
-    with running(space.popen([str(PEERS / "ros2_echo.py"), "listen", "/probe/cmd_vel", "100"])) as listener, \
-            running(space.popen([str(PEERS / "ros2_echo.py"), "talk", "/probe/cmd_vel"])) as talker:
-        listener.out.wait_for("listen ready", 30)
-        listener.out.wait_for("listen got 100", 30)
-        pids = [listener.proc.pid, talker.proc.pid]
-        inside = space.namespace.inode()
-        assert all(os.stat(f"/proc/{pid}/ns/net").st_ino == inside for pid in pids)
-        sockets = {pid: udp_sockets_of(pid) for pid in pids}
-        assert all(sockets.values()), sockets  # DDS did open UDP sockets ...
-        assert not set(pids) & root_udp_owners()  # ... and none of them is in the root namespace
-        ports = {int(line.split()[1].split(":")[1], 16) for table in ("udp", "udp6")
-                 for line in pathlib.Path(f"/proc/{pids[0]}/net/{table}").read_text().splitlines()[1:]}
-        discovery = 7400 + 250 * space.domain  # the RTPS well-known multicast discovery port of the domain
-        assert discovery in ports, (discovery, sorted(ports))
+    listen = [str(PEERS / "ros2_echo.py"), "listen", "/probe/cmd_vel", "100"]
+    with LoopbackNamespace("outside") as outside, \
+            running(subprocess.Popen([*outside.exec_prefix(), sys.executable, *listen], stdout=subprocess.PIPE,
+                                     stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True,
+                                     env=space.env)) as outsider:
+        outsider.out.wait_for("listen ready", 30)
+        with running(space.popen(listen)) as listener, \
+                running(space.popen([str(PEERS / "ros2_echo.py"), "talk", "/probe/cmd_vel"])) as talker:
+            listener.out.wait_for("listen ready", 30)
+            listener.out.wait_for("listen got 100", 30)
+            pids = [listener.proc.pid, talker.proc.pid]
+            inside = space.namespace.inode()
+            assert all(os.stat(f"/proc/{pid}/ns/net").st_ino == inside for pid in pids)
+            sockets = {pid: udp_sockets_of(pid) for pid in pids}
+            assert all(sockets.values()), sockets  # DDS did open UDP sockets ...
+            assert not set(pids) & root_udp_owners()  # ... and none of them is in the root namespace
+            ports = {int(line.split()[1].split(":")[1], 16) for table in ("udp", "udp6")
+                     for line in pathlib.Path(f"/proc/{pids[0]}/net/{table}").read_text().splitlines()[1:]}
+            discovery = 7400 + 250 * space.domain  # the RTPS well-known multicast discovery port of the domain
+            assert discovery in ports, (discovery, sorted(ports))
     assert listener.status == 0 and talker.status == 0, (listener.lines, talker.lines)
+    assert outsider.status == 0 and "listen heard 0\n" in outsider.lines, outsider.lines
+    assert outside.leftovers == []
 
 
 def test_timed_bridge_round_trip(space: Ros2Space, unix_gateway: str, tmp_path: pathlib.Path) -> None:

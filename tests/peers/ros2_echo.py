@@ -1,6 +1,7 @@
 """Two plain rclpy roles (no hlacore), for the namespace tests: ``ros2_echo.py talk TOPIC`` publishes a
 geometry_msgs/Twist (linear.x = 0, 1, 2, ...) on TOPIC every 10 ms until SIGTERM; ``ros2_echo.py listen TOPIC
-N`` prints ``listen ready``, then ``listen got N`` once it has received N of them, and waits for SIGTERM.
+N`` prints ``listen ready``, then ``listen got N`` once it has received N of them, waits for SIGTERM and prints
+``listen heard K``, the number it received.
 Needs the ROS 2 environment (hlacore.federates.ros_bridge.ros2_env)."""
 
 from __future__ import annotations
@@ -40,6 +41,7 @@ def main() -> int:
         print("listen ready", flush=True)
         while not stop.is_set():
             rclpy.spin_once(node, timeout_sec=0.05)
+        print(f"listen heard {got[0]}", flush=True)
     node.destroy_node()
     rclpy.shutdown()
     return 0

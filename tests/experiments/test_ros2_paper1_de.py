@@ -2,12 +2,13 @@
 ROS 2 node (the stageros-style stage node on rclpy) through the RTI, the bridge and ROS 2 topics, each a
 process of its own, all inside a loopback-only network namespace made and removed by the test; the same
 checks as on ROS 1 (tests/support/paper1.py); and the run's recording, the federation's events and the bridged
-ROS 2 topics in one MCAP file. This process never imports rclpy (the recording's ROS 2 messages are decoded
+ROS 2 topics in one MCAP file; and the world node alone on its own clock. This process never imports rclpy (the recording's ROS 2 messages are decoded
 from their schemas, as Foxglove does). Skips without ROS 2's wheels, except under CI=true."""
 
 from __future__ import annotations
 
 import json
+import math
 import pathlib
 
 import pytest
@@ -16,12 +17,14 @@ from mcap_ros2.decoder import DecoderFactory
 
 from hlacore.recording import read
 
+from support import PEERS
 from support.paper1 import PERIOD, check_de_run
+from support.ros import WORLD, running
 from support.ros2 import ros2_space
 
-pytestmark = pytest.mark.slow  # four processes and 300 lockstep cycles through DDS
 
 
+@pytest.mark.slow  # four processes and 300 lockstep cycles through DDS
 def test_paper1_de_controller_through_ros2(tmp_path: pathlib.Path) -> None:
     """One command, paper 1's architecture on ROS 2: the paper-1 checks pass, every pose of the world node is
     bit-identical to the World alone with the DE federate's commands at their timestamps, the DE model read
@@ -70,3 +73,27 @@ def test_paper1_de_controller_through_ros2(tmp_path: pathlib.Path) -> None:
     commands = [e for e in read(recording) if e.kind == "interaction" and e.class_name == "cmd_vel"
                 and b"avatar" in e.values()["robot"]]
     assert len(commands) == len(twists) == summary["avatar_commands"]
+
+
+def test_stage_node_on_its_own_clock_on_ros2(tmp_path: pathlib.Path) -> None:
+    """The world as a ROS 2 node, like stageros: with --rate it runs its own clock (/clock), applies the Twists
+    of an rclpy node on /<robot>/cmd_vel and publishes odom, base_scan and range stamped with its sim time on
+    interval_sim's grid; the rclpy node's clock (use_sim_time) follows it."""
+    world_file, summary = tmp_path / "rover.world", tmp_path / "stage.json"
+    world_file.write_text(WORLD)
+    with ros2_space(tmp_path) as space:
+        with running(space.popen(["-m", "hlacore.federates.ros_bridge.stage_node", str(world_file), "--ros", "2",
+                                  "--rate", "5", "--summary", str(summary)])) as stage:
+            stage.out.wait_for("stage_node ready", 60)
+            with running(space.popen([str(PEERS / "ros2_teleop.py"), "/rover", "0.5", "0.2", "60", "--clock",
+                                      "--ros-args", "-p", "use_sim_time:=true"])) as teleop:
+                seen = teleop.report(90)
+    assert stage.status == 0 and any(line.startswith("stage_node stopped at") for line in stage.lines), stage.lines
+    odom = seen["odom"]
+    assert odom["v"] == 0.5 and odom["x"] > 0.2 and odom["frame"] == "rover/odom"
+    assert odom["stamp"] == pytest.approx(round(odom["stamp"] / PERIOD) * PERIOD, abs=1e-9)
+    assert seen["scan"]["stamp"] >= odom["stamp"] and len(seen["scan"]["ranges"]) == 5
+    assert seen["scan"]["angle_min"] == pytest.approx(-math.radians(20), abs=1e-6)
+    assert abs(odom["node_time"] - odom["stamp"]) < 2.0 and seen["use_sim_time"] is True and seen["clock"] > 0
+    ran = json.loads(summary.read_text())
+    assert ran["commands"] > 0 and ran["ticks"] == len(ran["times"]) > 0

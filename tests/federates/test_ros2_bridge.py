@@ -171,6 +171,7 @@ def drain(run: Running) -> list[str]:
     return run.out.seen
 
 
+@pytest.mark.slow  # four rclpy nodes, a killed one seen gone after its 3 s lease, 20 more grants
 def test_bad_input_is_said_once_and_the_federation_goes_on(space: Ros2Space, unix_gateway: str,
                                                            tmp_path: pathlib.Path) -> None:
     """NaN Twists on a bridged cmd_vel, a std_msgs/String publisher and a best-effort Odometry publisher on a

@@ -337,6 +337,7 @@ def test_the_federate_protocol_lockstep_and_ping_pong(tmp_path: pathlib.Path) ->
             pingpong.finish()  # checks the echo count and the bytes echoed
 
 
+@pytest.mark.slow  # roscore or a namespace, two bridges, two paths
 @pytest.mark.parametrize("version", [1, 2])
 def test_ros_bridge_hop_bench_times_both_paths(version: int) -> None:
     """bench/ros_hop.py: every Twist comes back, through the relay and through HLA, on each ROS."""

@@ -6,6 +6,7 @@
         [--await-state 5] [--wait-connections 30] ...
     python -m hlacore.federates.ros_bridge --rtig HOST:PORT --robot-node NAME [--sensor scan|range|none]
         --untimed
+    ... [--ros 1|2] [--record-ros FILE.mcap]
 
 ``--world`` bridges robots simulated by an HLA federate (the robot world) to ROS; ``--world-node`` bridges
 robots simulated by a ROS node (``python -m hlacore.federates.ros_bridge.stage_node FILE``) to HLA: the

@@ -37,6 +37,6 @@ if [ ! -s "$missing" ]; then
     exit 0
 fi
 echo "install-ros2.sh: installing $(wc -l <"$missing") pinned wheels of ROS 2 Kilted from PyPI under $PREFIX (rclpy" \
-     "9.1.2, rmw_fastrtps_cpp, the message packages; about 60 MB), for the ROS 2 bridge and its tests" \
+     "9.1.2, rmw_fastrtps_cpp, the message packages; about 60 MB to download, 160 MB installed), for the ROS 2 bridge and its tests" \
      "(docs/ros-bridge.md); exact versions and hashes: $REQUIREMENTS" >&2
 pip_install --no-deps --require-hashes --no-warn-script-location --prefix "$PREFIX" -r "$missing"

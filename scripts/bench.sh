@@ -8,6 +8,7 @@
 # each prefix must hold); without them hlacore's rows run alone and one skip line says so.
 source "$(dirname "$0")/env.sh"
 install_hlacore bench
+./scripts/install-ros2.sh   # ROS 2's pinned wheels for bench/test_ros_bridge.py's ROS 2 row (ROS 1: scripts/install-ros.sh)
 command -v nft >/dev/null 2>&1 \
     || debian_install "nft drops packets in the namespace of the best-effort loss bench (bench/lossy_stream.py)" nftables
 [ -x .venv/bin/cmake ] && [ -x .venv/bin/ninja ] || pip_install cmake ninja

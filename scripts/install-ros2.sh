@@ -39,4 +39,7 @@ fi
 echo "install-ros2.sh: installing $(wc -l <"$missing") pinned wheels of ROS 2 Kilted from PyPI under $PREFIX (rclpy" \
      "9.1.2, rmw_fastrtps_cpp, the message packages; about 60 MB to download, 160 MB installed), for the ROS 2 bridge and its tests" \
      "(docs/ros-bridge.md); exact versions and hashes: $REQUIREMENTS" >&2
-pip_install --no-deps --require-hashes --no-warn-script-location --prefix "$PREFIX" -r "$missing"
+if ! pip_install --no-deps --require-hashes --no-warn-script-location --prefix "$PREFIX" -r "$missing"; then
+    [ "${CI:-}" = true ] && exit 1
+    echo "install-ros2.sh: the install failed; the ROS 2 tests will skip (under CI=true they fail)" >&2
+fi

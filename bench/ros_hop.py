@@ -16,6 +16,7 @@ import json
 import os
 import pathlib
 import random
+import shutil
 import statistics
 import subprocess
 import sys
@@ -91,6 +92,9 @@ def main() -> int:
     count = int(sys.argv[1]) if len(sys.argv) > 1 else 1000
     rows = []
     for version in (1, 2):
+        if version == 1 and not shutil.which("roscore"):
+            print("ROS 1 is not installed (./scripts/install-ros.sh): its row is left out", file=sys.stderr)
+            continue
         if version == 2 and not ros2_env.installed():
             print("ROS 2 is not installed (./scripts/install-ros2.sh): its row is left out", file=sys.stderr)
             continue

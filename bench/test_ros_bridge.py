@@ -5,6 +5,7 @@ quoted in docs/ros-bridge.md beside the command."""
 from __future__ import annotations
 
 import json
+import shutil
 import statistics
 
 import pytest
@@ -19,6 +20,8 @@ COUNT = 1000
 
 @pytest.mark.parametrize("version", [1, 2])
 def test_ros_bridge_hop(version: int) -> None:
+    if version == 1 and not shutil.which("roscore"):
+        pytest.skip("ROS 1 is not installed (./scripts/install-ros.sh)")
     if version == 2 and not ros2_env.installed():
         pytest.skip("ROS 2 is not installed (./scripts/install-ros2.sh)")
     result = measure(version, COUNT)

@@ -24,7 +24,8 @@ import pytest
 import hlacore
 
 from support import PEERS, running_rtig
-from support.ros import MAX_CYCLES, PERIOD, Running, f32, running, state, world_federate
+from support.ros import (MAX_CYCLES, PERIOD, Running, assert_seen_untimed, drive_untimed, f32, running, state,
+                         world_federate)
 from support.nethosts import LoopbackNamespace
 from support.ros2 import Ros2Space, root_udp_owners, ros2_space, udp_sockets_of
 
@@ -149,18 +150,9 @@ def test_untimed_bridge_round_trip(space: Ros2Space, tmp_path: pathlib.Path) -> 
                 bridge.out.wait_for("ros_bridge ready", 60)
                 started = time.time()
                 with running(space.popen(teleop_args("0.5", "0.2", "60", sim_time=False))) as teleop:
-                    for _ in range(MAX_CYCLES):
-                        world.advance(timeout=30)  # the world alone regulates: the test paces it
-                        states.append(state(world))
-                        if teleop.proc.poll() is not None:
-                            break
-                        time.sleep(0.005)
-                    seen = teleop.report(30)
+                    seen = drive_untimed(world, teleop, states)
             assert bridge.status == 0, bridge.lines
-    odometries = {(o[0], o[1]) for _pose, o, _ranges in states}
-    assert (seen["odom"]["x"], seen["odom"]["y"]) in odometries and seen["odom"]["x"] > 0.2
-    assert seen["scan"]["ranges"] in [[f32(r) for r in ranges] for _pose, _o, ranges in states]
-    assert any(o[3] == 0.5 for _pose, o, _ranges in states)
+    assert_seen_untimed(states, seen)
     assert started <= seen["odom"]["stamp"] <= time.time() and seen["use_sim_time"] is False  # wall time
 
 

@@ -23,7 +23,8 @@ import pytest
 
 from hlacore.federates.ros_bridge.master import free_master_port, master_online
 
-from support.ros import DIST, MAX_CYCLES, PERIOD, f32, running, start_bridge, start_teleop, state, world_federate
+from support.ros import (DIST, MAX_CYCLES, PERIOD, assert_seen_untimed, drive_untimed, f32, running, start_bridge,
+                         start_teleop, state, world_federate)
 
 
 def test_timed_bridge_round_trip(roscore: dict[str, str], gateway_address: str, tmp_path: pathlib.Path) -> None:
@@ -75,18 +76,9 @@ def test_untimed_bridge_round_trip(roscore: dict[str, str], inprocess_gateway: o
         with running(start_bridge(roscore, address, "--world", str(world_file), "--untimed")) as bridge:
             bridge.out.wait_for("ros_bridge ready", 60)
             with running(start_teleop(roscore, "/rover", "0.5", "0.2", "60")) as teleop:
-                for _ in range(MAX_CYCLES):
-                    world.advance(timeout=30)  # the world alone regulates: the test paces it
-                    states.append(state(world))
-                    if teleop.proc.poll() is not None:
-                        break
-                    time.sleep(0.005)
-                seen = teleop.report(30)
+                seen = drive_untimed(world, teleop, states)
         assert bridge.status == 0, bridge.lines
-    odometries = {(o[0], o[1]) for _pose, o, _ranges in states}
-    assert (seen["odom"]["x"], seen["odom"]["y"]) in odometries and seen["odom"]["x"] > 0.2
-    assert seen["scan"]["ranges"] in [[f32(r) for r in ranges] for _pose, _o, ranges in states]
-    assert any(o[3] == 0.5 for _pose, o, _ranges in states)
+    assert_seen_untimed(states, seen)
 
 
 def test_ros1_without_ros_names_the_packages(tmp_path: pathlib.Path) -> None:

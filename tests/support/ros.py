@@ -175,6 +175,29 @@ def world_federate(address: str, tmp_path: pathlib.Path) -> Iterator[tuple[World
         creator.destroyFederationExecution(FEDERATION)
 
 
-def state(fed: WorldFederate) -> tuple[Pose, tuple[float, ...], list[float]]:
+State = tuple[Pose, tuple[float, ...], list[float]]  # the robot's pose, odometry and speeds, ranges
+
+
+def state(fed: WorldFederate) -> State:
     r = fed.world.robot("rover")
     return r.pose, (r.odometry.x, r.odometry.y, r.odometry.theta, r.linear, r.angular), list(r.ranges)
+
+
+def drive_untimed(world: WorldFederate, teleop: Running, states: list[State]) -> Any:
+    """Paces the world, which alone regulates, appending its state at each step, until the teleop node (0.5 m/s)
+    ends; the node's report."""
+    for _ in range(MAX_CYCLES):
+        world.advance(timeout=30)
+        states.append(state(world))
+        if teleop.proc.poll() is not None:
+            break
+        time.sleep(0.005)
+    return teleop.report(30)
+
+
+def assert_seen_untimed(states: list[State], seen: Any) -> None:
+    """The odometry and scan the node saw are the world's at one of its steps, and the robot moved at its speed."""
+    odometries = {(o[0], o[1]) for _pose, o, _ranges in states}
+    assert (seen["odom"]["x"], seen["odom"]["y"]) in odometries and seen["odom"]["x"] > 0.2
+    assert seen["scan"]["ranges"] in [[f32(r) for r in ranges] for _pose, _o, ranges in states]
+    assert any(o[3] == 0.5 for _pose, o, _ranges in states)

@@ -1,0 +1,85 @@
+"""``python -m hlacore.fmu MODEL.fmu``: run an FMI 2 co-simulation FMU as a federate (docs/fmu.md).
+
+A bad FMU or mapping is reported as ``error: ...`` on stderr with exit status 2, before joining."""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import pathlib
+import sys
+from typing import Any, Optional, Sequence
+
+from .errors import FmuError
+from .federate import FmuFederate
+from .mapping import Mapping
+from .model import FmuModel
+
+
+def _start_value(text: str) -> tuple[str, Any]:
+    name, equals, value = text.partition("=")
+    if not equals or not name:
+        raise argparse.ArgumentTypeError(f"{text!r}: NAME=VALUE")
+    lowered = value.strip().lower()
+    if lowered in ("true", "false"):
+        return name, lowered == "true"
+    try:
+        return name, int(value) if value.strip().lstrip("+-").isdigit() else float(value)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r}: the value is not a number nor true/false") from None
+
+
+def parser() -> argparse.ArgumentParser:
+    """The command line of ``python -m hlacore.fmu``."""
+    p = argparse.ArgumentParser(prog="python -m hlacore.fmu", description=__doc__.splitlines()[0])
+    p.add_argument("fmu", help="the FMI 2 co-simulation FMU")
+    p.add_argument("--federation", default="FmuFed", help="the federation to join (default: %(default)s)")
+    p.add_argument("--fed", help="create the federation from this .fed unless it exists")
+    p.add_argument("--address", help="the gateway (default: hlacore's, $HLACORE_RTIG_ADDRESS ...)")
+    p.add_argument("--name", help="the federate's name (default: the model's name)")
+    p.add_argument("--mapping", help="a TOML mapping of variables to attributes (default: by name)")
+    p.add_argument("--start", action="append", type=_start_value, default=[], metavar="NAME=VALUE",
+                   help="a start value or parameter (repeatable)")
+    p.add_argument("--step-size", type=float, help="the co-simulation step, also the lookahead "
+                   "(default: the model's DefaultExperiment)")
+    p.add_argument("--stop-time", type=float, help="default: the model's DefaultExperiment")
+    p.add_argument("--write-fom", metavar="FED", help="write the .fed of the mapping to FED and exit")
+    p.add_argument("--csv", metavar="PATH", help="write the outputs sent, one row per step")
+    return p
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """Run the command; its exit status."""
+    args = parser().parse_args(argv)
+    try:
+        model = FmuModel(args.fmu)
+        mapping = Mapping.load(args.mapping, model) if args.mapping else Mapping.by_name(model)
+        if args.write_fom:
+            pathlib.Path(args.write_fom).write_text(mapping.fed(args.federation))
+            print(f"wrote {args.write_fom}")
+            return 0
+        experiment = model.description.defaultExperiment
+        step = args.step_size or (experiment.stepSize if experiment and experiment.stepSize else None)
+        stop = args.stop_time if args.stop_time is not None else (
+            experiment.stopTime if experiment and experiment.stopTime else None)
+        if step is None or stop is None:
+            raise FmuError(f"{args.fmu}: no default experiment; give --step-size and --stop-time")
+        with FmuFederate(args.fmu, args.federation, step_size=float(step), name=args.name, address=args.address,
+                         fed_file=args.fed, mapping=mapping, start_values=dict(args.start)) as federate:
+            federate.join()
+            trajectory = federate.run(float(stop))
+    except FmuError as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
+    if args.csv:
+        with open(args.csv, "w", newline="") as out:
+            writer = csv.writer(out)
+            writer.writerow(["time", *mapping.outputs])
+            for time, values in trajectory:
+                writer.writerow([time, *(values[name] for name in mapping.outputs)])
+    print(f"{federate.name}: {len(trajectory) - 1} steps to t = {federate.time:g}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,195 @@
+"""An FMU as a time-regulating, time-constrained federate: one HLA time advance per co-simulation step.
+
+The time mapping (docs/fmu.md): the federate's logical time is the FMU's time. At a grant of t the FMU holds
+its state at t; its inputs are set to the last value reflected with a timestamp up to t (or their start
+value, before any); ``doStep(t, h)``; its outputs at t + h are sent as updates stamped t + h, which the
+lookahead h allows; then ``timeAdvanceRequest(t + h)``. A peer that wants an input to hold over the step
+from t sends it stamped t. This is FMPy's own order (inputs at t, step, outputs at t + h), so a federated run
+gives ``fmpy.simulate_fmu``'s trajectory.
+"""
+
+from __future__ import annotations
+
+import math
+import pathlib
+from typing import Any, Optional, Union
+
+from .. import rti
+from .errors import FmuError, StepFailed
+from .mapping import ENCODINGS, Endpoint, Mapping
+from .model import FmuInstance, FmuModel, check_value
+
+
+#: The lookahead is the step size less this fraction of it, so that the grid times start + k h, computed without
+#: drift, are always at or past the federate time plus the lookahead despite rounding.
+LOOKAHEAD_MARGIN = 1e-9
+
+
+class _Ambassador(rti.FederateAmbassador):
+    """Keeps the last value reflected of each mapped input attribute (TSO: the last is the latest)."""
+
+    def __init__(self) -> None:
+        self.classes: dict[Any, Any] = {}  # object -> its class
+        self.inputs: dict[tuple[Any, Any], list[tuple[str, Any]]] = {}  # (class, attribute) -> [(input, codec)]
+        self.received: dict[str, Any] = {}
+
+    def discoverObjectInstance(self, obj: Any, objectClass: Any, name: str) -> None:
+        """Note the instance's class, to read its reflections (HLA 1.3 §6.3)."""
+        self.classes[obj] = objectClass
+
+    def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], tag: str, order: Any,
+                               transport: Any, time: Optional[float] = None, retraction: Any = None) -> None:
+        """Keep the mapped attributes' values as the inputs' next values (HLA 1.3 §6.4)."""
+        cls = self.classes.get(obj)
+        for attribute, data in attributes.items():
+            for name, codec in self.inputs.get((cls, attribute), []):
+                self.received[name] = codec.unpack(data)[0]
+
+
+class FmuFederate:
+    """An FMI 2 co-simulation FMU joined to a federation (see the module's docstring for the time mapping).
+
+    Everything that can be wrong with the FMU or the mapping is raised when the object is made, before joining:
+    :class:`FmuError` (missing, corrupt, unsupported, no binary), :class:`NotCoSimulation`,
+    :class:`MappingError`. :meth:`join` joins (creating the federation from ``fed_file`` unless it exists),
+    enables time regulation with lookahead ``step_size`` (:attr:`lookahead`) and time constraint, publishes the outputs, registers
+    one object instance per output class and subscribes to the inputs; :meth:`run` steps; :meth:`close` resigns
+    and frees the FMU. Use it as a context manager to have :meth:`close` called whatever happens.
+    """
+
+    def __init__(self, fmu: Union[str, pathlib.Path], federation: str, *, step_size: float,
+                 name: Optional[str] = None, address: Optional[str] = None, fed_file: Optional[str] = None,
+                 mapping: Union[Mapping, str, pathlib.Path, None] = None,
+                 start_values: Optional[dict[str, Any]] = None, timeout: Optional[float] = 60.0) -> None:
+        if not (step_size > 0 and math.isfinite(step_size)):
+            raise FmuError(f"step size {step_size}: a positive number of seconds")
+        self.model = FmuModel(fmu)
+        if mapping is None:
+            self.mapping = Mapping.by_name(self.model)
+        elif isinstance(mapping, Mapping):
+            mapping.check(self.model)
+            self.mapping = mapping
+        else:
+            self.mapping = Mapping.load(mapping, self.model)
+        for variable, value in (start_values or {}).items():
+            check_value(self.model, variable, value)
+        self.federation = federation
+        self.name = name or self.model.name
+        self.step_size = float(step_size)
+        self.timeout = timeout
+        self._address = address
+        self._fed_file = fed_file
+        self._start_values = dict(start_values or {})
+        self._instance: Optional[FmuInstance] = None
+        self._rtia: Optional[rti.RTIAmbassador] = None
+        self._ambassador = _Ambassador()
+        self._objects: dict[str, Any] = {}  # output class -> the object instance registered
+        self._handles: dict[str, tuple[str, Any, Any]] = {}  # output -> (class, attribute handle, codec)
+        #: (time, {output: value}) at the start and after each step, as sent.
+        self.trajectory: list[tuple[float, dict[str, Any]]] = []
+        self.time = 0.0
+        self._start_time = 0.0
+        self._steps = 0
+
+    def __enter__(self) -> "FmuFederate":
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    @property
+    def lookahead(self) -> float:
+        """The lookahead: the step size, less :data:`LOOKAHEAD_MARGIN` of it."""
+        return self.step_size * (1.0 - LOOKAHEAD_MARGIN)
+
+    @property
+    def rtia(self) -> rti.RTIAmbassador:
+        """The RTI ambassador, once joined."""
+        if self._rtia is None:
+            raise rti.FederateNotExecutionMember(f"{self.name} has not joined")
+        return self._rtia
+
+    def join(self) -> None:
+        """Instantiate the FMU, join, enable time management and declare the mapping (HLA 1.3 §4.4, §8.2, §8.4,
+        §5.2, §5.6). Raises what those services raise (a class or attribute the FOM lacks: NameNotFound),
+        after resigning and freeing the FMU."""
+        outputs = [name for name in self.mapping.outputs]
+        self._instance = self.model.instantiate(0.0, self._start_values)
+        try:
+            self._rtia = rti.RTIAmbassador(self._address)
+            self._rtia.create_or_join(self.name, self.federation, self._fed_file, self._ambassador)
+            self.time = self._start_time = self._rtia.enable_time_management(self.lookahead, timeout=self.timeout)
+            self._declare()
+            self.trajectory.append((self.time, self._instance.get(outputs)))
+        except BaseException:
+            self.close()
+            raise
+
+    def _declare(self) -> None:
+        rtia = self.rtia
+        published: dict[str, list[Any]] = {}
+        for output, endpoint in self.mapping.outputs.items():
+            cls = rtia.getObjectClassHandle(endpoint.object_class)
+            attribute = rtia.getAttributeHandle(endpoint.attribute, cls)
+            published.setdefault(endpoint.object_class, []).append(attribute)
+            self._handles[output] = (endpoint.object_class, attribute, ENCODINGS[self.model.variables[output].type])
+        for object_class, attributes in published.items():
+            rtia.publishObjectClass(rtia.getObjectClassHandle(object_class), attributes)
+            self._objects[object_class] = rtia.registerObjectInstance(
+                rtia.getObjectClassHandle(object_class), f"{self.name}.{object_class}")
+        subscribed: dict[Any, list[Any]] = {}
+        for variable, endpoint in self.mapping.inputs.items():
+            cls = rtia.getObjectClassHandle(endpoint.object_class)
+            attribute = rtia.getAttributeHandle(endpoint.attribute, cls)
+            subscribed.setdefault(cls, []).append(attribute)
+            codec = ENCODINGS[self.model.variables[variable].type]
+            self._ambassador.inputs.setdefault((cls, attribute), []).append((variable, codec))
+        for cls, attributes in subscribed.items():
+            rtia.subscribeObjectClassAttributes(cls, attributes)
+
+    def step(self) -> None:
+        """One co-simulation step from the current time t: inputs, ``doStep(t, h)``, the outputs sent stamped
+        t + h, ``timeAdvanceRequest(t + h)`` until granted. Raises :class:`StepFailed` (after resigning)."""
+        assert self._instance is not None, "join() first"
+        t, h = self.time, self.step_size
+        next_time = self._start_time + (self._steps + 1) * h  # the k-th grant is start + k h: no drift
+        try:
+            self._instance.set(self._ambassador.received)
+            self._ambassador.received = {}
+            values = self._instance.do_step(t, h, list(self.mapping.outputs))
+        except StepFailed:
+            self.close()
+            raise
+        updates: dict[str, dict[Any, bytes]] = {}
+        for output, value in values.items():
+            object_class, attribute, codec = self._handles[output]
+            updates.setdefault(object_class, {})[attribute] = codec.pack(value)
+        for object_class, attributes in updates.items():
+            self.rtia.updateAttributeValues(self._objects[object_class], attributes, self.name, next_time)
+        self.time = self.rtia.advance_to(next_time, timeout=self.timeout)
+        self._steps += 1
+        self.trajectory.append((self.time, values))
+
+    def run(self, stop_time: float) -> list[tuple[float, dict[str, Any]]]:
+        """Step until ``stop_time`` (steps of the step size from the time joined; the last may end past it by
+        less than a step's rounding); returns :attr:`trajectory`."""
+        while self.time < stop_time - 1e-9 * self.step_size:
+            self.step()
+        return self.trajectory
+
+    def close(self) -> None:
+        """Resign (deleting the registered objects) and free the FMU; safe to call twice."""
+        rtia, self._rtia = self._rtia, None
+        try:
+            if rtia is not None:
+                try:
+                    rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+                except rti.FederateNotExecutionMember:
+                    pass
+        finally:
+            instance, self._instance = self._instance, None
+            if instance is not None:
+                instance.close()
+
+
+__all__ = ["FmuFederate", "Endpoint"]

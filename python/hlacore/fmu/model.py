@@ -1,0 +1,213 @@
+"""An FMU on disk and its running instance, over FMPy: what the model description says (the variables, their
+causality and type, whether an output depends directly on an input), and an instance that is set, stepped and
+read by variable name.
+
+FMI 2 co-simulation only, for now: an FMI 1 or FMI 3 FMU, and one that exports model exchange only, is refused
+with its reason before anything is loaded.
+"""
+
+from __future__ import annotations
+
+import math
+import pathlib
+import platform
+import shutil
+import tempfile
+import zipfile
+from dataclasses import dataclass
+from typing import Any, Optional, Union
+
+from .errors import FmuError, MappingError, NotCoSimulation, StepFailed
+
+#: The FMI types an FMU variable may have to travel through the federation (HLA encodings in mapping.py).
+SUPPORTED_TYPES = ("Real", "Integer", "Boolean")
+
+
+@dataclass(frozen=True)
+class Variable:
+    """One scalar variable of the model description."""
+
+    name: str
+    value_reference: int
+    type: str  # 'Real', 'Integer', 'Boolean', 'String', ...
+    causality: str  # 'input', 'output', 'parameter', 'local', ...
+
+
+def _platform_binary(identifier: str) -> str:
+    system = {"Linux": "linux", "Darwin": "darwin", "Windows": "win"}.get(platform.system(), platform.system())
+    suffix = {"linux": ".so", "darwin": ".dylib", "win": ".dll"}.get(system, ".so")
+    return f"binaries/{system}64/{identifier}{suffix}"
+
+
+def check_value(model: "FmuModel", name: str, value: Any) -> None:
+    """Raise :class:`MappingError` unless ``model`` has a variable ``name`` that takes ``value``: a Real a
+    number, an Integer an int, a Boolean a bool."""
+    variable = model.variables.get(name)
+    if variable is None:
+        raise MappingError(f"{name} = {value!r}: {model.path.name} has no variable {name!r}")
+    fits = {"Real": isinstance(value, (int, float)) and not isinstance(value, bool),
+            "Integer": isinstance(value, int) and not isinstance(value, bool),
+            "Boolean": isinstance(value, bool)}.get(variable.type, False)
+    if not fits:
+        raise MappingError(f"{name} = {value!r}: {name} is of type {variable.type}")
+
+
+class FmuModel:
+    """An FMI 2 co-simulation FMU read from ``path``: its model description, checked, without loading it.
+
+    Raises :class:`FmuError` when the file is missing, is not an FMU (not a zip, or no readable
+    ``modelDescription.xml``), is not FMI 2, or carries no binary for this platform, and
+    :class:`NotCoSimulation` when it exports model exchange only."""
+
+    def __init__(self, path: Union[str, pathlib.Path]) -> None:
+        import fmpy
+
+        self.path = pathlib.Path(path)
+        if not self.path.is_file():
+            raise FmuError(f"{self.path}: no such FMU")
+        if not zipfile.is_zipfile(self.path):
+            raise FmuError(f"{self.path}: not an FMU (an FMU is a zip archive)")
+        try:
+            self.description: Any = fmpy.read_model_description(str(self.path), validate=False)
+        except Exception as error:  # fmpy raises plain Exception, KeyError, lxml's errors ...
+            raise FmuError(f"{self.path}: unreadable model description: {error}") from error
+        version = self.description.fmiVersion
+        if version != "2.0":
+            raise FmuError(f"{self.path}: FMI {version}; hlacore.fmu runs FMI 2.0 co-simulation FMUs")
+        if self.description.coSimulation is None:
+            raise NotCoSimulation(
+                f"{self.path}: exports model exchange only; hlacore.fmu runs co-simulation FMUs "
+                "(export the model for co-simulation)")
+        self.identifier: str = self.description.coSimulation.modelIdentifier
+        binary = _platform_binary(self.identifier)
+        with zipfile.ZipFile(self.path) as archive:
+            if binary not in archive.namelist():
+                raise FmuError(f"{self.path}: no binary for this platform ({binary} is missing)")
+        self.variables: dict[str, Variable] = {
+            v.name: Variable(v.name, int(v.valueReference), str(v.type), str(v.causality))
+            for v in self.description.modelVariables}
+
+    @property
+    def name(self) -> str:
+        """The model's name (``modelName``)."""
+        return str(self.description.modelName)
+
+    @property
+    def inputs(self) -> list[Variable]:
+        """The variables of causality ``input``, in the model description's order."""
+        return [v for v in self.variables.values() if v.causality == "input"]
+
+    @property
+    def outputs(self) -> list[Variable]:
+        """The variables of causality ``output``, in the model description's order."""
+        return [v for v in self.variables.values() if v.causality == "output"]
+
+    @property
+    def direct_feedthrough(self) -> bool:
+        """Whether an output depends directly on an input (``ModelStructure/Outputs`` dependencies)."""
+        inputs = {v.name for v in self.inputs}
+        for unknown in self.description.outputs:
+            if any(d.name in inputs for d in (unknown.dependencies or [])):
+                return True
+        return False
+
+    @property
+    def can_save_state(self) -> bool:
+        """Whether the FMU can get, set and serialise its state (a federation save can include it)."""
+        cs = self.description.coSimulation
+        return bool(cs.canGetAndSetFMUstate and cs.canSerializeFMUstate)
+
+    def instantiate(self, start_time: float, start_values: Optional[dict[str, Any]] = None) -> "FmuInstance":
+        """A running instance, initialised at ``start_time`` with ``start_values`` (by variable name).
+
+        Raises :class:`FmuError` when the binary does not load or a start value is refused."""
+        return FmuInstance(self, start_time, start_values or {})
+
+
+class FmuInstance:
+    """One instance of an :class:`FmuModel`, unpacked into a temporary directory that :meth:`close` removes."""
+
+    def __init__(self, model: FmuModel, start_time: float, start_values: dict[str, Any]) -> None:
+        from fmpy import extract
+        from fmpy.fmi2 import FMU2Slave
+
+        self.model = model
+        self._directory = tempfile.mkdtemp(prefix="hlacore-fmu-")
+        self._fmu: Any = None
+        self._healthy = False  # instantiated and no call failed: fmi2Terminate is allowed
+        try:
+            extract(str(model.path), self._directory)
+            self._fmu = FMU2Slave(guid=model.description.guid, unzipDirectory=self._directory,
+                                  modelIdentifier=model.identifier, instanceName=model.identifier)
+            self._fmu.instantiate()
+            self._healthy = True
+            self._fmu.setupExperiment(startTime=start_time)
+            self._fmu.enterInitializationMode()
+            self.set(start_values)
+            self._fmu.exitInitializationMode()
+        except FmuError:
+            self.close()
+            raise
+        except Exception as error:
+            self.close()
+            raise FmuError(f"{model.path}: could not instantiate: {error}") from error
+
+    def set(self, values: dict[str, Any]) -> None:
+        """Set variables by name (``fmi2SetReal``/``Integer``/``Boolean``)."""
+        for name, value in values.items():
+            variable = self.model.variables[name]
+            try:
+                if variable.type == "Real":
+                    self._fmu.setReal([variable.value_reference], [float(value)])
+                elif variable.type == "Integer":
+                    self._fmu.setInteger([variable.value_reference], [int(value)])
+                elif variable.type == "Boolean":
+                    self._fmu.setBoolean([variable.value_reference], [bool(value)])
+                else:
+                    raise FmuError(f"{self.model.path}: {name} is a {variable.type}; hlacore.fmu sets "
+                                   f"{', '.join(SUPPORTED_TYPES)} variables")
+            except FmuError:
+                raise
+            except Exception as error:
+                raise FmuError(f"{self.model.path}: setting {name} = {value!r} failed: {error}") from error
+
+    def get(self, names: list[str]) -> dict[str, Any]:
+        """Read variables by name (``fmi2GetReal``/``Integer``/``Boolean``)."""
+        values: dict[str, Any] = {}
+        for name in names:
+            variable = self.model.variables[name]
+            reference = [variable.value_reference]
+            if variable.type == "Real":
+                values[name] = float(self._fmu.getReal(reference)[0])
+            elif variable.type == "Integer":
+                values[name] = int(self._fmu.getInteger(reference)[0])
+            else:
+                values[name] = bool(self._fmu.getBoolean(reference)[0])
+        return values
+
+    def do_step(self, time: float, step: float, outputs: list[str]) -> dict[str, Any]:
+        """``fmi2DoStep(time, step)``, then the ``outputs`` at ``time + step``.
+
+        Raises :class:`StepFailed` when the step fails or an output is not finite."""
+        try:
+            self._fmu.doStep(currentCommunicationPoint=time, communicationStepSize=step)
+        except Exception as error:
+            self._healthy = False
+            raise StepFailed(f"{self.model.path}: doStep at t = {time:g} failed: {error}") from error
+        values = self.get(outputs)
+        for name, value in values.items():
+            if isinstance(value, float) and not math.isfinite(value):
+                raise StepFailed(f"{self.model.path}: output {name} = {value} at t = {time + step:g}")
+        return values
+
+    def close(self) -> None:
+        """Terminate and free the instance and remove its directory (safe to call twice)."""
+        fmu, self._fmu = self._fmu, None
+        if fmu is not None and self._healthy:
+            try:
+                fmu.terminate()
+            except Exception:  # it is freed all the same
+                pass
+        if fmu is not None and getattr(fmu, "component", None) is not None:
+            fmu.freeInstance()
+        shutil.rmtree(self._directory, ignore_errors=True)

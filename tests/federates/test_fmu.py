@@ -1,0 +1,218 @@
+"""hlacore.fmu: an FMI 2 co-simulation FMU (tests/data/fmu/lag2, compiled by the test) as a federate. Against a
+feeder federate it gives fmpy.simulate_fmu's trajectory on the same input; the command line writes the FOM and
+runs; each bad input is refused with its error before joining, or after a clean resign, leaving nothing behind."""
+
+from __future__ import annotations
+
+import math
+import pathlib
+import subprocess
+import sys
+import tempfile
+import threading
+import zipfile
+from typing import Any, Iterator
+
+import pytest
+
+fmpy = pytest.importorskip("fmpy", reason="the fmu extra (fmpy) is not installed")
+np = pytest.importorskip("numpy")
+
+import hlacore  # noqa: E402
+from hlacore import omt, rti  # noqa: E402
+from hlacore.fmu.federate import LOOKAHEAD_MARGIN  # noqa: E402
+from hlacore.fmu import FmuError, FmuFederate, FmuModel, Mapping, MappingError, NotCoSimulation, StepFailed  # noqa: E402
+
+from support import ROBOT_FED, Federate  # noqa: E402
+from support.fmus import FMU_SOURCES, build_fmu  # noqa: E402
+
+F64 = omt.HLAfloat64BE
+H = 0.1
+STEPS = 20
+
+
+@pytest.fixture(scope="session")
+def lag_fmu(tmp_path_factory: pytest.TempPathFactory) -> pathlib.Path:
+    """The first-order lag of tests/data/fmu/lag2 as an .fmu, compiled once per session."""
+    return build_fmu("lag2", tmp_path_factory.mktemp("fmus"))
+
+
+@pytest.fixture
+def no_leftovers(tmp_path: pathlib.Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[pathlib.Path]:
+    """Temporary files go to a directory of the test's, which must be empty again at the end."""
+    scratch = tmp_path / "scratch"
+    scratch.mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(scratch))
+    yield scratch
+    assert list(scratch.iterdir()) == [], "the FMU's unpacked files were left behind"
+
+
+@pytest.fixture
+def fmu_federation(gateway_address: str, lag_fmu: pathlib.Path, tmp_path: pathlib.Path) -> Iterator[str]:
+    """FmuFed, created from the FOM the default mapping of the lag writes (class Lag, attributes u and y)."""
+    fed = tmp_path / "lag.fed"
+    fed.write_text(Mapping.by_name(FmuModel(lag_fmu)).fed("FmuFed"))
+    creator = rti.RTIAmbassador(gateway_address)
+    creator.createFederationExecution("FmuFed", str(fed))
+    yield gateway_address
+    creator.destroyFederationExecution("FmuFed")  # raises FederatesCurrentlyJoined if one was left joined
+
+
+def signal(k: int) -> float:
+    """The input u at the k-th grid point t = k h: a sine, so every step sees a new value."""
+    return 1.0 + math.sin(3.0 * k * H)
+
+
+def test_against_a_feeder_gives_fmpys_trajectory(fmu_federation: str, lag_fmu: pathlib.Path,
+                                                  no_leftovers: pathlib.Path) -> None:
+    """A feeder federate sends u(t_k) stamped t_k; the FMU's outputs, recorded and as the feeder reflects them,
+    equal fmpy.simulate_fmu's on the same input sampled at the same grid (tau set as a start value)."""
+    feeder = Federate(fmu_federation, "feeder", federation="FmuFed")
+    try:
+        feeder.enable_time(lookahead=H * (1 - LOOKAHEAD_MARGIN))  # k H is always allowed, as for the FMU
+        lag = feeder.rtia.getObjectClassHandle("Lag")
+        u, y = (feeder.rtia.getAttributeHandle(name, lag) for name in ("u", "y"))
+        feeder.rtia.publishObjectClass(lag, [u])
+        feeder.rtia.subscribeObjectClassAttributes(lag, [y])
+        source = feeder.rtia.registerObjectInstance(lag, "source")
+
+        federate = FmuFederate(lag_fmu, "FmuFed", step_size=H, address=fmu_federation,
+                               start_values={"u": signal(0), "tau": 0.5}, timeout=20.0)
+        with federate:
+            federate.join()
+            failure: list[BaseException] = []
+
+            def run() -> None:
+                try:
+                    federate.run(STEPS * H)
+                except BaseException as error:  # reported by the main thread
+                    failure.append(error)
+
+            runner = threading.Thread(target=run)
+            runner.start()
+            for k in range(1, STEPS + 1):
+                if k < STEPS:
+                    feeder.rtia.updateAttributeValues(source, {u: F64.pack(signal(k))}, "feeder", k * H)
+                assert feeder.rtia.advance_to(k * H, timeout=20.0) == pytest.approx(k * H)
+            runner.join(timeout=30.0)
+            assert not runner.is_alive() and not failure, failure
+    finally:
+        feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+
+    inputs = np.array([(k * H, signal(k)) for k in range(STEPS + 1)], dtype=[("time", float), ("u", float)])
+    expected = fmpy.simulate_fmu(str(lag_fmu), stop_time=STEPS * H, output_interval=H, input=inputs,
+                                 start_values={"tau": 0.5}, output=["y"])
+    assert len(expected) == STEPS + 1
+    times = [t for t, _ in federate.trajectory]
+    assert times == pytest.approx(list(expected["time"]), abs=1e-12)
+    assert [v["y"] for _, v in federate.trajectory] == pytest.approx(list(expected["y"]), rel=1e-12, abs=1e-15)
+    reflected = [(args[5], F64.unpack(args[1][y])[0]) for args in feeder.amb.named("reflectAttributeValues")]
+    assert [t for t, _ in reflected] == pytest.approx(list(expected["time"][1:]))
+    assert [v for _, v in reflected] == pytest.approx(list(expected["y"][1:]), rel=1e-12, abs=1e-15)
+    assert max(expected["y"]) > 1.0  # the input moved it: the comparison is not of two constant runs
+
+
+def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway, lag_fmu: pathlib.Path,
+                                              tmp_path: pathlib.Path) -> None:
+    """--write-fom writes the by-name FOM; the command then creates the federation from it, runs alone to the
+    stop time with a parameter from --start, and its CSV is fmpy's run of the same start values."""
+    fed, table = tmp_path / "lag.fed", tmp_path / "y.csv"
+    command = [sys.executable, "-m", "hlacore.fmu", str(lag_fmu), "--federation", "CliFed"]
+    done = subprocess.run(command + ["--write-fom", str(fed)], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "(class Lag\n    (attribute u reliable timestamp)\n    (attribute y reliable timestamp))" in fed.read_text()
+    done = subprocess.run(command + ["--fed", str(fed), "--address", str(inprocess_gateway.address),
+                                     "--step-size", "0.25", "--stop-time", "1", "--start", "u=2", "--start",
+                                     "tau=0.5", "--csv", str(table)], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert "Lag: 4 steps to t = 1" in done.stdout
+    rows = [line.split(",") for line in table.read_text().split()]
+    expected = fmpy.simulate_fmu(str(lag_fmu), stop_time=1.0, output_interval=0.25,
+                                 start_values={"u": 2.0, "tau": 0.5}, output=["y"])
+    assert rows[0] == ["time", "y"]
+    assert [float(r[1]) for r in rows[1:]] == pytest.approx(list(expected["y"]), rel=1e-12)
+    rti.RTIAmbassador(str(inprocess_gateway.address)).destroyFederationExecution("CliFed")  # nobody left joined
+
+
+def _rezip(source: pathlib.Path, target: pathlib.Path, description: str | None = None,
+           binaries: bool = True) -> pathlib.Path:
+    with zipfile.ZipFile(source) as old, zipfile.ZipFile(target, "w") as new:
+        for item in old.namelist():
+            if item == "modelDescription.xml":
+                new.writestr(item, description if description is not None else old.read(item))
+            elif binaries:
+                new.writestr(item, old.read(item))
+    return target
+
+
+def test_bad_fmus_are_refused_before_anything_runs(lag_fmu: pathlib.Path, tmp_path: pathlib.Path) -> None:
+    """A missing file, one that is not a zip, a zip without a model description, a model-exchange-only FMU and
+    one without this platform's binary: each a clear error naming the file, before joining."""
+    description = (FMU_SOURCES / "lag2" / "modelDescription.xml").read_text()
+    corrupt = tmp_path / "corrupt.fmu"
+    corrupt.write_bytes(b"\x00not a zip" * 10)
+    empty = tmp_path / "empty.fmu"
+    with zipfile.ZipFile(empty, "w") as archive:
+        archive.writestr("readme.txt", "no model description")
+    exchange_only = _rezip(lag_fmu, tmp_path / "me.fmu", description.replace(
+        '<CoSimulation modelIdentifier="lag"', '<ModelExchange modelIdentifier="lag"'))
+    no_binary = _rezip(lag_fmu, tmp_path / "nobin.fmu", binaries=False)
+    cases: list[tuple[pathlib.Path, type[Exception], str]] = [
+        (tmp_path / "absent.fmu", FmuError, "absent.fmu: no such FMU"),
+        (corrupt, FmuError, "corrupt.fmu: not an FMU"),
+        (empty, FmuError, "empty.fmu: unreadable model description"),
+        (exchange_only, NotCoSimulation, "me.fmu: exports model exchange only"),
+        (no_binary, FmuError, r"nobin.fmu: no binary for this platform \(binaries/linux64/lag.so is missing\)"),
+    ]
+    for path, error, message in cases:
+        with pytest.raises(error, match=message):
+            FmuFederate(path, "NoFed", step_size=H, address="unused:1")
+    done = subprocess.run([sys.executable, "-m", "hlacore.fmu", str(exchange_only)], capture_output=True,
+                          text=True, timeout=60)
+    assert done.returncode == 2 and "error: " in done.stderr and "model exchange only" in done.stderr, done.stderr
+
+
+def test_bad_mappings_and_start_values_are_refused(lag_fmu: pathlib.Path, tmp_path: pathlib.Path) -> None:
+    """An unknown variable, an output mapped as an input, a malformed endpoint, a start value of the wrong type
+    or for no variable: each a MappingError before joining."""
+    cases = {'[inputs]\nspeed = "Lag.speed"\n': "has no variable 'speed'",
+             '[inputs]\ny = "Lag.y"\n': "its causality is output, not input",
+             '[outputs]\ny = "y"\n': "'y' is not ObjectClass.attribute",
+             '[extra]\n': r"unknown table\(s\) \['extra'\]"}
+    for text, message in cases.items():
+        mapping = tmp_path / "mapping.toml"
+        mapping.write_text(text)
+        with pytest.raises(MappingError, match=message):
+            FmuFederate(lag_fmu, "NoFed", step_size=H, mapping=mapping)
+    with pytest.raises(MappingError, match="tau = True: tau is of type Real"):
+        FmuFederate(lag_fmu, "NoFed", step_size=H, start_values={"tau": True})
+    with pytest.raises(MappingError, match="has no variable 'gain'"):
+        FmuFederate(lag_fmu, "NoFed", step_size=H, start_values={"gain": 1.0})
+
+
+@pytest.mark.parametrize("parameter, message", [("fail_time", "doStep at t = 0.3 failed"),
+                                                ("nan_time", "output y = nan at t = 0.4")])
+def test_a_failing_step_resigns_cleanly(fmu_federation: str, lag_fmu: pathlib.Path, no_leftovers: pathlib.Path,
+                                        parameter: str, message: str) -> None:
+    """A doStep that fails, or leaves y NaN, raises StepFailed after resigning: the federation can be destroyed
+    (the fixture does) and the unpacked FMU is gone."""
+    federate = FmuFederate(lag_fmu, "FmuFed", step_size=H, address=fmu_federation,
+                           start_values={parameter: 0.3 if parameter == "fail_time" else 0.35})
+    federate.join()
+    with pytest.raises(StepFailed, match=message):
+        federate.run(1.0)
+    assert federate.time == pytest.approx(0.3)
+    with pytest.raises(rti.FederateNotExecutionMember):
+        federate.rtia
+
+
+def test_a_class_the_fom_lacks_resigns_before_running(gateway_address: str, lag_fmu: pathlib.Path,
+                                                     no_leftovers: pathlib.Path) -> None:
+    """Joined to a federation whose FOM has no class Lag, join() raises NameNotFound after resigning."""
+    creator = rti.RTIAmbassador(gateway_address)
+    creator.createFederationExecution("TestFed", ROBOT_FED)
+    try:
+        with pytest.raises(rti.NameNotFound):
+            FmuFederate(lag_fmu, "TestFed", step_size=H, address=gateway_address).join()
+    finally:
+        creator.destroyFederationExecution("TestFed")

@@ -1,0 +1,49 @@
+"""The test FMUs, built from the project's own C sources (tests/data/fmu/<model>/) with the FMI headers that
+fmpy's wheel carries: compiled with the system's C compiler into a shared library and zipped with the model
+description as an .fmu. Each build is cached under the directory given, keyed by a hash of its sources, so a
+session compiles each model once. Nothing built here is committed."""
+
+from __future__ import annotations
+
+import hashlib
+import pathlib
+import shutil
+import subprocess
+import zipfile
+
+from support import DATA
+
+FMU_SOURCES = DATA / "fmu"
+
+
+def fmi_headers() -> pathlib.Path:
+    """The directory of fmi2Functions.h and fmi3Functions.h in the installed fmpy."""
+    import fmpy
+
+    return pathlib.Path(fmpy.__file__).parent / "c-code"
+
+
+def build_fmu(model: str, into: pathlib.Path) -> pathlib.Path:
+    """The .fmu of tests/data/fmu/<model>/ (one C file and modelDescription.xml), built into ``into``.
+
+    The model identifier is the C file's stem; the binary goes to binaries/linux64/<identifier>.so."""
+    source_dir = FMU_SOURCES / model
+    (c_file,) = sorted(source_dir.glob("*.c"))
+    description = source_dir / "modelDescription.xml"
+    digest = hashlib.sha256(c_file.read_bytes() + description.read_bytes()).hexdigest()[:16]
+    fmu = into / f"{model}-{digest}.fmu"
+    if fmu.exists():
+        return fmu
+    work = into / f"{model}-{digest}.build"
+    shutil.rmtree(work, ignore_errors=True)
+    binary = work / "binaries" / "linux64" / f"{c_file.stem}.so"
+    binary.parent.mkdir(parents=True)
+    subprocess.run(["cc", "-shared", "-fPIC", "-O2", "-Wall", "-Werror", f"-I{fmi_headers()}", "-o", str(binary),
+                    str(c_file), "-lm"], check=True, timeout=120)
+    partial = fmu.with_suffix(".part")
+    with zipfile.ZipFile(partial, "w") as archive:
+        archive.write(description, "modelDescription.xml")
+        archive.write(binary, f"binaries/linux64/{binary.name}")
+    partial.rename(fmu)  # whole or absent, should two sessions share the cache
+    shutil.rmtree(work)
+    return fmu

@@ -21,7 +21,8 @@ np = pytest.importorskip("numpy")
 import hlacore  # noqa: E402
 from hlacore import omt, rti  # noqa: E402
 from hlacore.fmu.federate import LOOKAHEAD_MARGIN  # noqa: E402
-from hlacore.fmu import FmuError, FmuFederate, FmuModel, Mapping, MappingError, NotCoSimulation, StepFailed  # noqa: E402
+from hlacore.fmu import (  # noqa: E402
+    Endpoint, FmuError, FmuFederate, FmuModel, Mapping, MappingError, NotCoSimulation, StepFailed)
 
 from support import ROBOT_FED, Federate  # noqa: E402
 from support.fmus import FMU_SOURCES, build_fmu  # noqa: E402
@@ -216,3 +217,54 @@ def test_a_class_the_fom_lacks_resigns_before_running(gateway_address: str, lag_
             FmuFederate(lag_fmu, "TestFed", step_size=H, address=gateway_address).join()
     finally:
         creator.destroyFederationExecution("TestFed")
+
+
+def test_two_fmus_coupled_through_the_federation(inprocess_gateway: hlacore.Gateway, lag_fmu: pathlib.Path,
+                                                 tmp_path: pathlib.Path, no_leftovers: pathlib.Path) -> None:
+    """Two lags, each one's input the other's output, by mapping files: both trajectories are the coupled
+    system stepped independently here (each step holds the other's output at its start, as the federation
+    delivers it; at t = 0 the inputs are their start values)."""
+    address = str(inprocess_gateway.address)
+    (tmp_path / "a.toml").write_text('[inputs]\nu = "B.y"\n[outputs]\ny = "A.y"\n')
+    (tmp_path / "b.toml").write_text('[inputs]\nu = "A.y"\n[outputs]\ny = "B.y"\n')
+    fed = tmp_path / "coupled.fed"
+    fed.write_text(Mapping(outputs={"a": Endpoint("A", "y"), "b": Endpoint("B", "y")}).fed("Coupled"))
+    rti.RTIAmbassador(address).createFederationExecution("Coupled", str(fed))
+    parameters = {"a": {"tau": 0.5, "x0": 1.0, "u": 0.0}, "b": {"tau": 2.0, "x0": 0.0, "u": 1.0}}
+    federates = {name: FmuFederate(lag_fmu, "Coupled", step_size=H, name=name, address=address,
+                                   mapping=tmp_path / f"{name}.toml", start_values=parameters[name], timeout=20.0)
+                 for name in ("a", "b")}
+    failures: list[BaseException] = []
+
+    def run(federate: FmuFederate) -> None:
+        try:
+            federate.run(STEPS * H)
+        except BaseException as error:  # reported by the main thread
+            failures.append(error)
+
+    try:
+        for federate in federates.values():
+            federate.join()
+        threads = [threading.Thread(target=run, args=(federate,)) for federate in federates.values()]
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            thread.join(timeout=30.0)
+        assert not any(thread.is_alive() for thread in threads) and not failures, failures
+    finally:
+        for federate in federates.values():
+            federate.close()
+    rti.RTIAmbassador(address).destroyFederationExecution("Coupled")
+
+    x = {"a": 1.0, "b": 0.0}
+    u = {"a": 0.0, "b": 1.0}
+    expected: dict[str, list[float]] = {"a": [x["a"]], "b": [x["b"]]}
+    for _ in range(STEPS):
+        x = {n: u[n] + (x[n] - u[n]) * math.exp(-H / parameters[n]["tau"]) for n in x}
+        u = {"a": x["b"], "b": x["a"]}
+        for n in x:
+            expected[n].append(x[n])
+    for name, federate in federates.items():
+        assert [t for t, _ in federate.trajectory] == pytest.approx([k * H for k in range(STEPS + 1)])
+        assert [v["y"] for _, v in federate.trajectory] == pytest.approx(expected[name], rel=1e-12)
+    assert abs(expected["a"][-1] - expected["b"][-1]) < 0.2  # they pulled each other together

@@ -52,9 +52,10 @@ class FmuFederate:
     Everything that can be wrong with the FMU or the mapping is raised when the object is made, before joining:
     :class:`FmuError` (missing, corrupt, unsupported, no binary), :class:`NotCoSimulation`,
     :class:`MappingError`. :meth:`join` joins (creating the federation from ``fed_file`` unless it exists),
-    enables time regulation with lookahead ``step_size`` (:attr:`lookahead`) and time constraint, publishes the outputs, registers
-    one object instance per output class and subscribes to the inputs; :meth:`run` steps; :meth:`close` resigns
-    and frees the FMU. Use it as a context manager to have :meth:`close` called whatever happens.
+    enables time regulation with lookahead ``step_size`` (:attr:`lookahead`) and time constraint, publishes
+    the outputs, registers one object instance per output class and subscribes to the inputs; :meth:`run`
+    steps; :meth:`close` resigns and frees the FMU. Use it as a context manager to have :meth:`close` called
+    whatever happens.
     """
 
     def __init__(self, fmu: Union[str, pathlib.Path], federation: str, *, step_size: float,

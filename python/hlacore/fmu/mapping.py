@@ -123,5 +123,6 @@ class Mapping:
             lines += [f"    (attribute {a} reliable timestamp)" for a in attributes]
             lines[-1] += ")"
         lines[-1] += "))"
-        lines += [" (interactions", "  (class InteractionRoot reliable receive", "   (class RTIprivate reliable receive))))"]
+        lines += [" (interactions", "  (class InteractionRoot reliable receive",
+                  "   (class RTIprivate reliable receive))))"]
         return "\n".join(lines) + "\n"

@@ -24,7 +24,7 @@ from hlacore.fmu.federate import LOOKAHEAD_MARGIN  # noqa: E402
 from hlacore.fmu import (  # noqa: E402
     Endpoint, FmuError, FmuFederate, FmuModel, Mapping, MappingError, NotCoSimulation, StepFailed)
 
-from support import ROBOT_FED, Federate  # noqa: E402
+from support import ROBOT_FED, Federate, tick_until  # noqa: E402
 from support.fmus import FMU_SOURCES, build_fmu  # noqa: E402
 
 F64 = omt.HLAfloat64BE
@@ -268,3 +268,58 @@ def test_two_fmus_coupled_through_the_federation(inprocess_gateway: hlacore.Gate
         assert [t for t, _ in federate.trajectory] == pytest.approx([k * H for k in range(STEPS + 1)])
         assert [v["y"] for _, v in federate.trajectory] == pytest.approx(expected[name], rel=1e-12)
     assert abs(expected["a"][-1] - expected["b"][-1]) < 0.2  # they pulled each other together
+
+
+def test_save_then_restore_mid_run_continues_to_the_same_end(fmu_federation: str, lag_fmu: pathlib.Path,
+                                                            tmp_path: pathlib.Path) -> None:
+    """A federation save at t = 0.5 keeps the FMU's serialised state; after the run reached 1.0, a restore
+    rewinds the federate and the FMU to 0.5 and the run continues to the same trajectory and end value."""
+    controller = Federate(fmu_federation, "controller", federation="FmuFed")
+    try:
+        federate = FmuFederate(lag_fmu, "FmuFed", step_size=H, address=fmu_federation, timeout=20.0,
+                               start_values={"u": 2.0}, save_dir=tmp_path / "saves")
+        with federate:
+            federate.join()
+            controller.rtia.requestFederationSave("half", 0.5)
+            tick_until(lambda: controller.amb.named("initiateFederateSave"), controller.rtia)
+            controller.rtia.federateSaveComplete()
+            first = list(federate.run(1.0))
+            tick_until(lambda: controller.amb.named("federationSaved"), controller.rtia)
+            assert federate.state_file("half").is_file() and not federate.save_errors
+
+            controller.rtia.requestFederationRestore("half")
+            tick_until(lambda: controller.amb.named("initiateFederateRestore"), controller.rtia)
+            controller.rtia.federateRestoreComplete()
+            federate.settle()  # the restore's callbacks: the FMU is back at 0.5
+            assert federate.time == pytest.approx(0.5) and federate.rtia.queryFederateTime() == pytest.approx(0.5)
+            assert len(federate.trajectory) == 6
+            again = federate.run(1.0)
+            tick_until(lambda: controller.amb.named("federationRestored"), controller.rtia)
+    finally:
+        controller.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+    assert [t for t, _ in again] == pytest.approx([t for t, _ in first])
+    assert [v["y"] for _, v in again] == [v["y"] for _, v in first]
+    assert first[-1][1]["y"] == pytest.approx(2.0 * (1 - math.exp(-1.0)))
+
+
+def test_an_fmu_that_cannot_save_makes_the_save_fail_clearly(fmu_federation: str, lag_fmu: pathlib.Path,
+                                                             tmp_path: pathlib.Path) -> None:
+    """An FMU whose model description says it cannot get and set its state answers the save with
+    federateSaveNotComplete: everyone gets federationNotSaved, the reason is kept, the run goes on."""
+    description = (FMU_SOURCES / "lag2" / "modelDescription.xml").read_text()
+    stateless = _rezip(lag_fmu, tmp_path / "stateless.fmu", description.replace(
+        'canGetAndSetFMUstate="true"', 'canGetAndSetFMUstate="false"'))
+    controller = Federate(fmu_federation, "controller", federation="FmuFed")
+    try:
+        with FmuFederate(stateless, "FmuFed", step_size=H, address=fmu_federation, timeout=20.0,
+                         save_dir=tmp_path / "saves") as federate:
+            federate.join()
+            controller.rtia.requestFederationSave("half", 0.5)
+            tick_until(lambda: controller.amb.named("initiateFederateSave"), controller.rtia)
+            controller.rtia.federateSaveComplete()
+            federate.run(1.0)
+            tick_until(lambda: controller.amb.named("federationNotSaved"), controller.rtia)
+            assert "cannot save its state" in federate.save_errors["half"]
+            assert federate.time == pytest.approx(1.0)
+    finally:
+        controller.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)

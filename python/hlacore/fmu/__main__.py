@@ -44,6 +44,7 @@ def parser() -> argparse.ArgumentParser:
                    "(default: the model's DefaultExperiment)")
     p.add_argument("--stop-time", type=float, help="default: the model's DefaultExperiment")
     p.add_argument("--write-fom", metavar="FED", help="write the .fed of the mapping to FED and exit")
+    p.add_argument("--save-dir", help="where federation saves keep the FMU's state (default: the current directory)")
     p.add_argument("--csv", metavar="PATH", help="write the outputs sent, one row per step")
     return p
 
@@ -65,7 +66,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         if step is None or stop is None:
             raise FmuError(f"{args.fmu}: no default experiment; give --step-size and --stop-time")
         with FmuFederate(args.fmu, args.federation, step_size=float(step), name=args.name, address=args.address,
-                         fed_file=args.fed, mapping=mapping, start_values=dict(args.start)) as federate:
+                         fed_file=args.fed, mapping=mapping, start_values=dict(args.start),
+                         save_dir=args.save_dir) as federate:
             federate.join()
             trajectory = federate.run(float(stop))
     except FmuError as error:

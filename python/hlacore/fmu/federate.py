@@ -10,8 +10,11 @@ gives ``fmpy.simulate_fmu``'s trajectory.
 
 from __future__ import annotations
 
+import base64
+import json
 import math
 import pathlib
+import time
 from typing import Any, Optional, Union
 
 from .. import rti
@@ -26,9 +29,11 @@ LOOKAHEAD_MARGIN = 1e-9
 
 
 class _Ambassador(rti.FederateAmbassador):
-    """Keeps the last value reflected of each mapped input attribute (TSO: the last is the latest)."""
+    """Keeps the last value reflected of each mapped input attribute (TSO: the last is the latest), and hands
+    save and restore to the federate."""
 
-    def __init__(self) -> None:
+    def __init__(self, federate: "FmuFederate") -> None:
+        self.federate = federate
         self.classes: dict[Any, Any] = {}  # object -> its class
         self.inputs: dict[tuple[Any, Any], list[tuple[str, Any]]] = {}  # (class, attribute) -> [(input, codec)]
         self.received: dict[str, Any] = {}
@@ -44,6 +49,34 @@ class _Ambassador(rti.FederateAmbassador):
         for attribute, data in attributes.items():
             for name, codec in self.inputs.get((cls, attribute), []):
                 self.received[name] = codec.unpack(data)[0]
+
+    def initiateFederateSave(self, label: str) -> None:
+        """Save the FMU's state and the federate's under ``label`` (HLA 1.3 §4.12)."""
+        self.federate._save(label)
+
+    def federationSaved(self) -> None:
+        """The save is over (HLA 1.3 §4.15): stepping may go on."""
+        self.federate._saving = False
+
+    def federationNotSaved(self) -> None:
+        """The save failed (HLA 1.3 §4.15): stepping may go on."""
+        self.federate._saving = False
+
+    def federationRestoreBegun(self) -> None:
+        """A restore is under way (HLA 1.3 §4.18): no step until it is over."""
+        self.federate._restoring = True
+
+    def initiateFederateRestore(self, label: str, federateHandle: Any) -> None:
+        """Restore the FMU's state and the federate's saved under ``label`` (HLA 1.3 §4.19)."""
+        self.federate._restore(label)
+
+    def federationRestored(self) -> None:
+        """The restore is over (HLA 1.3 §4.21)."""
+        self.federate._restoring = False
+
+    def federationNotRestored(self) -> None:
+        """The restore failed (HLA 1.3 §4.21)."""
+        self.federate._restoring = False
 
 
 class FmuFederate:
@@ -61,7 +94,8 @@ class FmuFederate:
     def __init__(self, fmu: Union[str, pathlib.Path], federation: str, *, step_size: float,
                  name: Optional[str] = None, address: Optional[str] = None, fed_file: Optional[str] = None,
                  mapping: Union[Mapping, str, pathlib.Path, None] = None,
-                 start_values: Optional[dict[str, Any]] = None, timeout: Optional[float] = 60.0) -> None:
+                 start_values: Optional[dict[str, Any]] = None, timeout: Optional[float] = 60.0,
+                 save_dir: Union[str, pathlib.Path, None] = None) -> None:
         if not (step_size > 0 and math.isfinite(step_size)):
             raise FmuError(f"step size {step_size}: a positive number of seconds")
         self.model = FmuModel(fmu)
@@ -83,7 +117,14 @@ class FmuFederate:
         self._start_values = dict(start_values or {})
         self._instance: Optional[FmuInstance] = None
         self._rtia: Optional[rti.RTIAmbassador] = None
-        self._ambassador = _Ambassador()
+        self._ambassador = _Ambassador(self)
+        #: Where federation saves put this federate's state: ``<label>.<name>.fmustate`` (default: the current
+        #: directory).
+        self.save_dir = pathlib.Path(save_dir if save_dir is not None else ".")
+        #: Why each save or restore this federate could not take part in failed, by label.
+        self.save_errors: dict[str, str] = {}
+        self._saving = False
+        self._restoring = False
         self._objects: dict[str, Any] = {}  # output class -> the object instance registered
         self._handles: dict[str, tuple[str, Any, Any]] = {}  # output -> (class, attribute handle, codec)
         #: (time, {output: value}) at the start and after each step, as sent.
@@ -152,6 +193,7 @@ class FmuFederate:
         """One co-simulation step from the current time t: inputs, ``doStep(t, h)``, the outputs sent stamped
         t + h, ``timeAdvanceRequest(t + h)`` until granted. Raises :class:`StepFailed` (after resigning)."""
         assert self._instance is not None, "join() first"
+        self.settle()
         t, h = self.time, self.step_size
         next_time = self._start_time + (self._steps + 1) * h  # the k-th grant is start + k h: no drift
         try:
@@ -174,9 +216,64 @@ class FmuFederate:
     def run(self, stop_time: float) -> list[tuple[float, dict[str, Any]]]:
         """Step until ``stop_time`` (steps of the step size from the time joined; the last may end past it by
         less than a step's rounding); returns :attr:`trajectory`."""
+        self.settle()
         while self.time < stop_time - 1e-9 * self.step_size:
             self.step()
         return self.trajectory
+
+    def state_file(self, label: str) -> pathlib.Path:
+        """Where the save ``label`` keeps this federate's state."""
+        return self.save_dir / f"{label}.{self.name}.fmustate"
+
+    def settle(self) -> None:
+        """Deliver the callbacks that have arrived, then tick until a federation save or restore under way is over
+        (HLA 1.3 §4.11-4.22; :meth:`step` and :meth:`run` do this first). Raises TimeoutError after ``timeout``."""
+        while self.rtia.tick():
+            pass
+        deadline = None if self.timeout is None else time.monotonic() + self.timeout
+        while self._saving or self._restoring:
+            if deadline is not None and time.monotonic() > deadline:
+                raise TimeoutError(f"{self.name}: the federation save or restore did not end "
+                                   f"within {self.timeout} s")
+            self.rtia.tick(0.1, 0.1)
+
+    def _save(self, label: str) -> None:
+        """The FMU's serialised state and the federate's own (time, steps, inputs received, trajectory) to
+        :meth:`state_file`, then federateSaveComplete; federateSaveNotComplete, the reason in
+        :attr:`save_errors`, when the FMU cannot save."""
+        self._saving = True
+        try:
+            assert self._instance is not None
+            fmu_state = self._instance.save_state()
+            own = {"time": self.time, "start_time": self._start_time, "steps": self._steps,
+                   "received": self._ambassador.received, "trajectory": self.trajectory,
+                   "fmu_state": base64.b64encode(fmu_state).decode()}
+            self.save_dir.mkdir(parents=True, exist_ok=True)
+            partial = self.state_file(label).with_suffix(".part")
+            partial.write_text(json.dumps(own))
+            partial.replace(self.state_file(label))
+        except (FmuError, OSError) as error:
+            self.save_errors[label] = str(error)
+            self.rtia.federateSaveNotComplete()
+            return
+        self.rtia.federateSaveComplete()
+
+    def _restore(self, label: str) -> None:
+        """Back to the state :meth:`_save` wrote for ``label``, then federateRestoreComplete (NotComplete,
+        the reason in :attr:`save_errors`, when the file is missing or the FMU refuses it)."""
+        self._restoring = True
+        try:
+            assert self._instance is not None
+            own = json.loads(self.state_file(label).read_text())
+            self._instance.restore_state(base64.b64decode(own["fmu_state"]))
+        except (FmuError, OSError, ValueError, KeyError) as error:
+            self.save_errors[label] = str(error)
+            self.rtia.federateRestoreNotComplete()
+            return
+        self.time, self._start_time, self._steps = own["time"], own["start_time"], own["steps"]
+        self._ambassador.received = own["received"]
+        self.trajectory = [(t, values) for t, values in own["trajectory"]]
+        self.rtia.federateRestoreComplete()
 
     def close(self) -> None:
         """Resign (deleting the registered objects) and free the FMU; safe to call twice."""

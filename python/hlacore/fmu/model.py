@@ -200,6 +200,36 @@ class FmuInstance:
                 raise StepFailed(f"{self.model.path}: output {name} = {value} at t = {time + step:g}")
         return values
 
+    def save_state(self) -> bytes:
+        """The FMU's state, serialised (``fmi2GetFMUstate``, ``fmi2SerializeFMUstate``).
+
+        Raises :class:`FmuError` when the FMU cannot (its model description says so, or a call fails)."""
+        if not self.model.can_save_state:
+            raise FmuError(f"{self.model.path.name} cannot save its state (canGetAndSetFMUstate and "
+                           "canSerializeFMUstate are not both true in its model description)")
+        try:
+            state = self._fmu.getFMUstate()
+            try:
+                return bytes(self._fmu.serializeFMUstate(state))
+            finally:
+                self._fmu.freeFMUstate(state)
+        except Exception as error:
+            raise FmuError(f"{self.model.path.name}: saving its state failed: {error}") from error
+
+    def restore_state(self, data: bytes) -> None:
+        """Put the FMU back into a state :meth:`save_state` returned (``fmi2DeSerializeFMUstate``,
+        ``fmi2SetFMUstate``). Raises :class:`FmuError` when it cannot."""
+        if not self.model.can_save_state:
+            raise FmuError(f"{self.model.path.name} cannot restore a state")
+        try:
+            state = self._fmu.deSerializeFMUstate(data)
+            try:
+                self._fmu.setFMUstate(state)
+            finally:
+                self._fmu.freeFMUstate(state)
+        except Exception as error:
+            raise FmuError(f"{self.model.path.name}: restoring its state failed: {error}") from error
+
     def close(self) -> None:
         """Terminate and free the instance and remove its directory (safe to call twice)."""
         fmu, self._fmu = self._fmu, None

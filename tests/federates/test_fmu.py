@@ -35,7 +35,14 @@ STEPS = 20
 @pytest.fixture(scope="session")
 def lag_fmu(tmp_path_factory: pytest.TempPathFactory) -> pathlib.Path:
     """The first-order lag of tests/data/fmu/lag2 as an .fmu, compiled once per session."""
-    return build_fmu("lag2", tmp_path_factory.mktemp("fmus"))
+    (tmp_path_factory.getbasetemp() / "fmus").mkdir(exist_ok=True)
+    return build_fmu("lag2", tmp_path_factory.getbasetemp() / "fmus")
+
+
+@pytest.fixture(params=["lag2", "lag3"])
+def any_lag(request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory) -> pathlib.Path:
+    """The lag as an FMI 2 FMU (tests/data/fmu/lag2) and as an FMI 3 one (lag3), the same model."""
+    return build_fmu(request.param, tmp_path_factory.getbasetemp() / "fmus")
 
 
 @pytest.fixture
@@ -64,10 +71,11 @@ def signal(k: int) -> float:
     return 1.0 + math.sin(3.0 * k * H)
 
 
-def test_against_a_feeder_gives_fmpys_trajectory(fmu_federation: str, lag_fmu: pathlib.Path,
+def test_against_a_feeder_gives_fmpys_trajectory(fmu_federation: str, any_lag: pathlib.Path,
                                                   no_leftovers: pathlib.Path) -> None:
     """A feeder federate sends u(t_k) stamped t_k; the FMU's outputs, recorded and as the feeder reflects them,
-    equal fmpy.simulate_fmu's on the same input sampled at the same grid (tau set as a start value)."""
+    equal fmpy.simulate_fmu's on the same input sampled at the same grid (tau set as a start value); FMI 2 and 3."""
+    lag_fmu = any_lag
     feeder = Federate(fmu_federation, "feeder", federation="FmuFed")
     try:
         feeder.enable_time(lookahead=H * (1 - LOOKAHEAD_MARGIN))  # k H is always allowed, as for the FMU
@@ -113,10 +121,11 @@ def test_against_a_feeder_gives_fmpys_trajectory(fmu_federation: str, lag_fmu: p
     assert max(expected["y"]) > 1.0  # the input moved it: the comparison is not of two constant runs
 
 
-def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway, lag_fmu: pathlib.Path,
+def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway, any_lag: pathlib.Path,
                                               tmp_path: pathlib.Path) -> None:
     """--write-fom writes the by-name FOM; the command then creates the federation from it, runs alone to the
-    stop time with a parameter from --start, and its CSV is fmpy's run of the same start values."""
+    stop time with a parameter from --start, and its CSV is fmpy's run of the same start values; FMI 2 and 3."""
+    lag_fmu = any_lag
     fed, table = tmp_path / "lag.fed", tmp_path / "y.csv"
     command = [sys.executable, "-m", "hlacore.fmu", str(lag_fmu), "--federation", "CliFed"]
     done = subprocess.run(command + ["--write-fom", str(fed)], capture_output=True, text=True, timeout=60)
@@ -270,10 +279,12 @@ def test_two_fmus_coupled_through_the_federation(inprocess_gateway: hlacore.Gate
     assert abs(expected["a"][-1] - expected["b"][-1]) < 0.2  # they pulled each other together
 
 
-def test_save_then_restore_mid_run_continues_to_the_same_end(fmu_federation: str, lag_fmu: pathlib.Path,
+def test_save_then_restore_mid_run_continues_to_the_same_end(fmu_federation: str, any_lag: pathlib.Path,
                                                             tmp_path: pathlib.Path) -> None:
     """A federation save at t = 0.5 keeps the FMU's serialised state; after the run reached 1.0, a restore
-    rewinds the federate and the FMU to 0.5 and the run continues to the same trajectory and end value."""
+    rewinds the federate and the FMU to 0.5 and the run continues to the same trajectory and end value; FMI 2
+    and 3."""
+    lag_fmu = any_lag
     controller = Federate(fmu_federation, "controller", federation="FmuFed")
     try:
         federate = FmuFederate(lag_fmu, "FmuFed", step_size=H, address=fmu_federation, timeout=20.0,
@@ -285,12 +296,13 @@ def test_save_then_restore_mid_run_continues_to_the_same_end(fmu_federation: str
             controller.rtia.federateSaveComplete()
             first = list(federate.run(1.0))
             tick_until(lambda: controller.amb.named("federationSaved"), controller.rtia)
-            assert federate.state_file("half").is_file() and not federate.save_errors
+            assert federate.state_file("half").is_file() and federate.saved == ["half"] and not federate.save_errors
 
             controller.rtia.requestFederationRestore("half")
             tick_until(lambda: controller.amb.named("initiateFederateRestore"), controller.rtia)
             controller.rtia.federateRestoreComplete()
-            federate.settle()  # the restore's callbacks: the FMU is back at 0.5
+            tick_until(lambda: federate.restored == ["half"], federate.rtia)  # initiateFederateRestore delivered
+            federate.settle()  # until federationRestored: the FMU is back at 0.5
             assert federate.time == pytest.approx(0.5) and federate.rtia.queryFederateTime() == pytest.approx(0.5)
             assert len(federate.trajectory) == 6
             again = federate.run(1.0)

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import hashlib
 import pathlib
+import re
 import shutil
 import subprocess
 import zipfile
@@ -24,26 +25,32 @@ def fmi_headers() -> pathlib.Path:
 
 
 def build_fmu(model: str, into: pathlib.Path) -> pathlib.Path:
-    """The .fmu of tests/data/fmu/<model>/ (one C file and modelDescription.xml), built into ``into``.
+    """The .fmu of tests/data/fmu/<model>/ (its C files and modelDescription.xml), built into ``into``.
 
-    The model identifier is the C file's stem; the binary goes to binaries/linux64/<identifier>.so."""
+    The binary is named after the model identifier and goes where its FMI version puts it:
+    binaries/linux64/ for FMI 2, binaries/x86_64-linux/ (FMPy's platform tuple) for FMI 3."""
+    from fmpy import platform_tuple
+
     source_dir = FMU_SOURCES / model
-    (c_file,) = sorted(source_dir.glob("*.c"))
+    c_files = sorted(source_dir.glob("*.c"))
     description = source_dir / "modelDescription.xml"
-    digest = hashlib.sha256(c_file.read_bytes() + description.read_bytes()).hexdigest()[:16]
+    text = description.read_text()
+    identifier = re.search(r'modelIdentifier="([^"]+)"', text).group(1)  # type: ignore[union-attr]
+    platform = platform_tuple if 'fmiVersion="3.0"' in text else "linux64"
+    digest = hashlib.sha256(b"".join(f.read_bytes() for f in c_files) + text.encode()).hexdigest()[:16]
     fmu = into / f"{model}-{digest}.fmu"
     if fmu.exists():
         return fmu
     work = into / f"{model}-{digest}.build"
     shutil.rmtree(work, ignore_errors=True)
-    binary = work / "binaries" / "linux64" / f"{c_file.stem}.so"
+    binary = work / "binaries" / platform / f"{identifier}.so"
     binary.parent.mkdir(parents=True)
     subprocess.run(["cc", "-shared", "-fPIC", "-O2", "-Wall", "-Werror", f"-I{fmi_headers()}", "-o", str(binary),
-                    str(c_file), "-lm"], check=True, timeout=120)
+                    *map(str, c_files), "-lm"], check=True, timeout=120)
     partial = fmu.with_suffix(".part")
     with zipfile.ZipFile(partial, "w") as archive:
         archive.write(description, "modelDescription.xml")
-        archive.write(binary, f"binaries/linux64/{binary.name}")
+        archive.write(binary, f"binaries/{platform}/{binary.name}")
     partial.rename(fmu)  # whole or absent, should two sessions share the cache
     shutil.rmtree(work)
     return fmu

@@ -1,4 +1,4 @@
-"""Any FMU a federate: an FMI 2 co-simulation FMU joins an HLA federation as a time-regulating and
+"""Any FMU a federate: an FMI 2 or FMI 3 co-simulation FMU joins an HLA federation as a time-regulating and
 time-constrained federate, one time advance per step (docs/fmu.md).
 
 ``python -m hlacore.fmu MODEL.fmu --federation NAME --step-size H --stop-time T`` from the shell;

@@ -1,4 +1,4 @@
-"""``python -m hlacore.fmu MODEL.fmu``: run an FMI 2 co-simulation FMU as a federate (docs/fmu.md).
+"""``python -m hlacore.fmu MODEL.fmu``: run an FMI 2 or FMI 3 co-simulation FMU as a federate (docs/fmu.md).
 
 A bad FMU or mapping is reported as ``error: ...`` on stderr with exit status 2, before joining."""
 
@@ -32,7 +32,7 @@ def _start_value(text: str) -> tuple[str, Any]:
 def parser() -> argparse.ArgumentParser:
     """The command line of ``python -m hlacore.fmu``."""
     p = argparse.ArgumentParser(prog="python -m hlacore.fmu", description=__doc__.splitlines()[0])
-    p.add_argument("fmu", help="the FMI 2 co-simulation FMU")
+    p.add_argument("fmu", help="the FMI 2 or FMI 3 co-simulation FMU")
     p.add_argument("--federation", default="FmuFed", help="the federation to join (default: %(default)s)")
     p.add_argument("--fed", help="create the federation from this .fed unless it exists")
     p.add_argument("--address", help="the gateway (default: hlacore's, $HLACORE_RTIG_ADDRESS ...)")

@@ -80,7 +80,7 @@ class _Ambassador(rti.FederateAmbassador):
 
 
 class FmuFederate:
-    """An FMI 2 co-simulation FMU joined to a federation (see the module's docstring for the time mapping).
+    """An FMI 2 or FMI 3 co-simulation FMU joined to a federation (the module's docstring: the time mapping).
 
     Everything that can be wrong with the FMU or the mapping is raised when the object is made, before joining:
     :class:`FmuError` (missing, corrupt, unsupported, no binary), :class:`NotCoSimulation`,
@@ -123,6 +123,9 @@ class FmuFederate:
         self.save_dir = pathlib.Path(save_dir if save_dir is not None else ".")
         #: Why each save or restore this federate could not take part in failed, by label.
         self.save_errors: dict[str, str] = {}
+        #: The labels of the saves this federate completed, and of the restores, in order.
+        self.saved: list[str] = []
+        self.restored: list[str] = []
         self._saving = False
         self._restoring = False
         self._objects: dict[str, Any] = {}  # output class -> the object instance registered
@@ -256,6 +259,7 @@ class FmuFederate:
             self.save_errors[label] = str(error)
             self.rtia.federateSaveNotComplete()
             return
+        self.saved.append(label)
         self.rtia.federateSaveComplete()
 
     def _restore(self, label: str) -> None:
@@ -273,6 +277,7 @@ class FmuFederate:
         self.time, self._start_time, self._steps = own["time"], own["start_time"], own["steps"]
         self._ambassador.received = own["received"]
         self.trajectory = [(t, values) for t, values in own["trajectory"]]
+        self.restored.append(label)
         self.rtia.federateRestoreComplete()
 
     def close(self) -> None:

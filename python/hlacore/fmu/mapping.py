@@ -10,7 +10,8 @@ A mapping file is TOML with two tables, each ``variable = "ObjectClass.attribute
 Without a file, the default maps by name: every input and output of the FMU is the attribute of the same name
 of one object class named after the model (``Lag.u``, ``Lag.y``); the FMU publishes its outputs and subscribes
 to its inputs, and whoever drives an input publishes that attribute of the same class. A variable left out
-of the file is not exchanged. Reals travel as HLAfloat64BE, Integers as HLAinteger32BE, Booleans as HLAboolean.
+of the file is not exchanged. Reals (FMI 3: Float64) travel as HLAfloat64BE, Integers (Int32) as
+HLAinteger32BE, Booleans as HLAboolean.
 """
 
 from __future__ import annotations
@@ -25,7 +26,8 @@ from .errors import FmuError, MappingError
 from .model import SUPPORTED_TYPES, FmuModel
 
 #: The HLA encoding of each FMI type.
-ENCODINGS: dict[str, Any] = {"Real": omt.HLAfloat64BE, "Integer": omt.HLAinteger32BE, "Boolean": omt.HLAboolean}
+ENCODINGS: dict[str, Any] = {"Real": omt.HLAfloat64BE, "Float64": omt.HLAfloat64BE, "Integer": omt.HLAinteger32BE,
+                             "Int32": omt.HLAinteger32BE, "Boolean": omt.HLAboolean}
 
 
 @dataclass(frozen=True)

@@ -2,8 +2,8 @@
 causality and type, whether an output depends directly on an input), and an instance that is set, stepped and
 read by variable name.
 
-FMI 2 co-simulation only, for now: an FMI 1 or FMI 3 FMU, and one that exports model exchange only, is refused
-with its reason before anything is loaded.
+FMI 2 and FMI 3 co-simulation: an FMI 1 FMU, and one that exports model exchange only, is refused with its
+reason before anything is loaded.
 """
 
 from __future__ import annotations
@@ -19,8 +19,10 @@ from typing import Any, Optional, Union
 
 from .errors import FmuError, MappingError, NotCoSimulation, StepFailed
 
-#: The FMI types an FMU variable may have to travel through the federation (HLA encodings in mapping.py).
-SUPPORTED_TYPES = ("Real", "Integer", "Boolean")
+#: The FMI types an FMU variable may have to travel through the federation (HLA encodings in mapping.py): FMI 2's
+#: Real, Integer and Boolean, and their FMI 3 forms.
+SUPPORTED_TYPES = ("Real", "Integer", "Boolean", "Float64", "Int32")
+_REAL, _INTEGER = ("Real", "Float64"), ("Integer", "Int32")
 
 
 @dataclass(frozen=True)
@@ -33,7 +35,11 @@ class Variable:
     causality: str  # 'input', 'output', 'parameter', 'local', ...
 
 
-def _platform_binary(identifier: str) -> str:
+def _platform_binary(identifier: str, version: str) -> str:
+    if version.startswith("3."):
+        from fmpy import platform_tuple, sharedLibraryExtension
+
+        return f"binaries/{platform_tuple}/{identifier}{sharedLibraryExtension}"
     system = {"Linux": "linux", "Darwin": "darwin", "Windows": "win"}.get(platform.system(), platform.system())
     suffix = {"linux": ".so", "darwin": ".dylib", "win": ".dll"}.get(system, ".so")
     return f"binaries/{system}64/{identifier}{suffix}"
@@ -45,18 +51,18 @@ def check_value(model: "FmuModel", name: str, value: Any) -> None:
     variable = model.variables.get(name)
     if variable is None:
         raise MappingError(f"{name} = {value!r}: {model.path.name} has no variable {name!r}")
-    fits = {"Real": isinstance(value, (int, float)) and not isinstance(value, bool),
-            "Integer": isinstance(value, int) and not isinstance(value, bool),
-            "Boolean": isinstance(value, bool)}.get(variable.type, False)
+    number = isinstance(value, (int, float)) and not isinstance(value, bool)
+    fits = (number if variable.type in _REAL else number and isinstance(value, int) if variable.type in _INTEGER
+            else isinstance(value, bool) if variable.type == "Boolean" else False)
     if not fits:
         raise MappingError(f"{name} = {value!r}: {name} is of type {variable.type}")
 
 
 class FmuModel:
-    """An FMI 2 co-simulation FMU read from ``path``: its model description, checked, without loading it.
+    """An FMI 2 or FMI 3 co-simulation FMU read from ``path``: its model description, checked, not loaded.
 
     Raises :class:`FmuError` when the file is missing, is not an FMU (not a zip, or no readable
-    ``modelDescription.xml``), is not FMI 2, or carries no binary for this platform, and
+    ``modelDescription.xml``), is FMI 1, or carries no binary for this platform, and
     :class:`NotCoSimulation` when it exports model exchange only."""
 
     def __init__(self, path: Union[str, pathlib.Path]) -> None:
@@ -72,20 +78,25 @@ class FmuModel:
         except Exception as error:  # fmpy raises plain Exception, KeyError, lxml's errors ...
             raise FmuError(f"{self.path}: unreadable model description: {error}") from error
         version = self.description.fmiVersion
-        if version != "2.0":
-            raise FmuError(f"{self.path}: FMI {version}; hlacore.fmu runs FMI 2.0 co-simulation FMUs")
+        if version not in ("2.0", "3.0"):
+            raise FmuError(f"{self.path}: FMI {version}; hlacore.fmu runs FMI 2.0 and 3.0 co-simulation FMUs")
         if self.description.coSimulation is None:
             raise NotCoSimulation(
                 f"{self.path}: exports model exchange only; hlacore.fmu runs co-simulation FMUs "
                 "(export the model for co-simulation)")
         self.identifier: str = self.description.coSimulation.modelIdentifier
-        binary = _platform_binary(self.identifier)
+        binary = _platform_binary(self.identifier, version)
         with zipfile.ZipFile(self.path) as archive:
             if binary not in archive.namelist():
                 raise FmuError(f"{self.path}: no binary for this platform ({binary} is missing)")
         self.variables: dict[str, Variable] = {
             v.name: Variable(v.name, int(v.valueReference), str(v.type), str(v.causality))
             for v in self.description.modelVariables}
+
+    @property
+    def fmi3(self) -> bool:
+        """Whether the FMU is FMI 3.0 (else FMI 2.0)."""
+        return str(self.description.fmiVersion) == "3.0"
 
     @property
     def name(self) -> str:
@@ -130,6 +141,7 @@ class FmuInstance:
     def __init__(self, model: FmuModel, start_time: float, start_values: dict[str, Any]) -> None:
         from fmpy import extract
         from fmpy.fmi2 import FMU2Slave
+        from fmpy.fmi3 import FMU3Slave
 
         self.model = model
         self._directory = tempfile.mkdtemp(prefix="hlacore-fmu-")
@@ -137,12 +149,16 @@ class FmuInstance:
         self._healthy = False  # instantiated and no call failed: fmi2Terminate is allowed
         try:
             extract(str(model.path), self._directory)
-            self._fmu = FMU2Slave(guid=model.description.guid, unzipDirectory=self._directory,
-                                  modelIdentifier=model.identifier, instanceName=model.identifier)
+            slave = FMU3Slave if model.fmi3 else FMU2Slave
+            self._fmu = slave(guid=model.description.guid, unzipDirectory=self._directory,
+                              modelIdentifier=model.identifier, instanceName=model.identifier)
             self._fmu.instantiate()
             self._healthy = True
-            self._fmu.setupExperiment(startTime=start_time)
-            self._fmu.enterInitializationMode()
+            if model.fmi3:
+                self._fmu.enterInitializationMode(startTime=start_time)
+            else:
+                self._fmu.setupExperiment(startTime=start_time)
+                self._fmu.enterInitializationMode()
             self.set(start_values)
             self._fmu.exitInitializationMode()
         except FmuError:
@@ -153,14 +169,18 @@ class FmuInstance:
             raise FmuError(f"{model.path}: could not instantiate: {error}") from error
 
     def set(self, values: dict[str, Any]) -> None:
-        """Set variables by name (``fmi2SetReal``/``Integer``/``Boolean``)."""
+        """Set variables by name (``fmi2SetReal``/``Integer``/``Boolean``; FMI 3: ``Float64``/``Int32``)."""
         for name, value in values.items():
             variable = self.model.variables[name]
             try:
                 if variable.type == "Real":
                     self._fmu.setReal([variable.value_reference], [float(value)])
+                elif variable.type == "Float64":
+                    self._fmu.setFloat64([variable.value_reference], [float(value)])
                 elif variable.type == "Integer":
                     self._fmu.setInteger([variable.value_reference], [int(value)])
+                elif variable.type == "Int32":
+                    self._fmu.setInt32([variable.value_reference], [int(value)])
                 elif variable.type == "Boolean":
                     self._fmu.setBoolean([variable.value_reference], [bool(value)])
                 else:
@@ -172,28 +192,34 @@ class FmuInstance:
                 raise FmuError(f"{self.model.path}: setting {name} = {value!r} failed: {error}") from error
 
     def get(self, names: list[str]) -> dict[str, Any]:
-        """Read variables by name (``fmi2GetReal``/``Integer``/``Boolean``)."""
+        """Read variables by name (``fmi2GetReal``/``Integer``/``Boolean``; FMI 3: ``Float64``/``Int32``)."""
         values: dict[str, Any] = {}
         for name in names:
             variable = self.model.variables[name]
             reference = [variable.value_reference]
             if variable.type == "Real":
                 values[name] = float(self._fmu.getReal(reference)[0])
+            elif variable.type == "Float64":
+                values[name] = float(self._fmu.getFloat64(reference)[0])
             elif variable.type == "Integer":
                 values[name] = int(self._fmu.getInteger(reference)[0])
+            elif variable.type == "Int32":
+                values[name] = int(self._fmu.getInt32(reference)[0])
             else:
                 values[name] = bool(self._fmu.getBoolean(reference)[0])
         return values
 
     def do_step(self, time: float, step: float, outputs: list[str]) -> dict[str, Any]:
-        """``fmi2DoStep(time, step)``, then the ``outputs`` at ``time + step``.
+        """``fmi2DoStep``/``fmi3DoStep(time, step)``, then the ``outputs`` at ``time + step``.
 
         Raises :class:`StepFailed` when the step fails or an output is not finite."""
         try:
-            self._fmu.doStep(currentCommunicationPoint=time, communicationStepSize=step)
+            result = self._fmu.doStep(currentCommunicationPoint=time, communicationStepSize=step)
         except Exception as error:
             self._healthy = False
             raise StepFailed(f"{self.model.path}: doStep at t = {time:g} failed: {error}") from error
+        if self.model.fmi3 and result[1]:  # (eventHandlingNeeded, terminateSimulation, earlyReturn, last time)
+            raise StepFailed(f"{self.model.path}: the FMU asked to terminate the simulation at t = {time + step:g}")
         values = self.get(outputs)
         for name, value in values.items():
             if isinstance(value, float) and not math.isfinite(value):
@@ -201,32 +227,32 @@ class FmuInstance:
         return values
 
     def save_state(self) -> bytes:
-        """The FMU's state, serialised (``fmi2GetFMUstate``, ``fmi2SerializeFMUstate``).
+        """The FMU's state, serialised (``fmi2GetFMUstate``, ``fmi2SerializeFMUstate`` or FMI 3's).
 
         Raises :class:`FmuError` when the FMU cannot (its model description says so, or a call fails)."""
         if not self.model.can_save_state:
             raise FmuError(f"{self.model.path.name} cannot save its state (canGetAndSetFMUstate and "
                            "canSerializeFMUstate are not both true in its model description)")
         try:
-            state = self._fmu.getFMUstate()
+            state = self._fmu.getFMUState()
             try:
-                return bytes(self._fmu.serializeFMUstate(state))
+                return bytes(self._fmu.serializeFMUState(state))
             finally:
-                self._fmu.freeFMUstate(state)
+                self._fmu.freeFMUState(state)
         except Exception as error:
             raise FmuError(f"{self.model.path.name}: saving its state failed: {error}") from error
 
     def restore_state(self, data: bytes) -> None:
         """Put the FMU back into a state :meth:`save_state` returned (``fmi2DeSerializeFMUstate``,
-        ``fmi2SetFMUstate``). Raises :class:`FmuError` when it cannot."""
+        ``fmi2SetFMUstate`` or FMI 3's). Raises :class:`FmuError` when it cannot."""
         if not self.model.can_save_state:
             raise FmuError(f"{self.model.path.name} cannot restore a state")
         try:
-            state = self._fmu.deSerializeFMUstate(data)
+            state = self._fmu.deserializeFMUState(data)
             try:
-                self._fmu.setFMUstate(state)
+                self._fmu.setFMUState(state)
             finally:
-                self._fmu.freeFMUstate(state)
+                self._fmu.freeFMUState(state)
         except Exception as error:
             raise FmuError(f"{self.model.path.name}: restoring its state failed: {error}") from error
 

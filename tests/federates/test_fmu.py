@@ -1,6 +1,8 @@
-"""hlacore.fmu: an FMI 2 co-simulation FMU (tests/data/fmu/lag2, compiled by the test) as a federate. Against a
-feeder federate it gives fmpy.simulate_fmu's trajectory on the same input; the command line writes the FOM and
-runs; each bad input is refused with its error before joining, or after a clean resign, leaving nothing behind."""
+"""hlacore.fmu: FMI 2 and FMI 3 co-simulation FMUs (tests/data/fmu/lag2, lag3, compiled by the test) as federates.
+Against a feeder federate one gives fmpy.simulate_fmu's trajectory on the same input, by attributes or by
+interactions; two coupled through the federation give the coupled system; a save and a restore mid-run end
+where the run did; the command line writes the FOM and runs; each bad input is refused with its error before
+joining, or after a clean resign, leaving nothing behind."""
 
 from __future__ import annotations
 
@@ -13,19 +15,18 @@ import threading
 import zipfile
 from typing import Any, Iterator
 
+import fmpy  # the test extra installs it
+import numpy as np
 import pytest
 
-fmpy = pytest.importorskip("fmpy", reason="the fmu extra (fmpy) is not installed")
-np = pytest.importorskip("numpy")
-
-import hlacore  # noqa: E402
-from hlacore import omt, rti  # noqa: E402
-from hlacore.fmu.federate import LOOKAHEAD_MARGIN  # noqa: E402
-from hlacore.fmu import (  # noqa: E402
+import hlacore
+from hlacore import omt, rti
+from hlacore.fmu import (
     Endpoint, FmuError, FmuFederate, FmuModel, Mapping, MappingError, NotCoSimulation, StepFailed)
+from hlacore.fmu.federate import LOOKAHEAD_MARGIN
 
-from support import ROBOT_FED, Federate, tick_until  # noqa: E402
-from support.fmus import FMU_SOURCES, build_fmu  # noqa: E402
+from support import ROBOT_FED, Federate, tick_until
+from support.fmus import FMU_SOURCES, build_fmu
 
 F64 = omt.HLAfloat64BE
 H = 0.1
@@ -121,6 +122,50 @@ def test_against_a_feeder_gives_fmpys_trajectory(fmu_federation: str, any_lag: p
     assert max(expected["y"]) > 1.0  # the input moved it: the comparison is not of two constant runs
 
 
+def test_inputs_from_interactions(gateway_address: str, lag_fmu: pathlib.Path, tmp_path: pathlib.Path) -> None:
+    """u mapped to a parameter of an interaction: the feeder sends SetU(value) stamped t_k, and the run equals
+    fmpy.simulate_fmu on the same input, as with attributes; the FOM written declares the interaction."""
+    mapping = tmp_path / "mapping.toml"
+    mapping.write_text('[inputs]\nu = { parameter = "SetU.value" }\n[outputs]\ny = "Lag.y"\n')
+    fed = tmp_path / "lag.fed"
+    fed.write_text(Mapping.load(mapping, FmuModel(lag_fmu)).fed("FmuFed"))
+    assert "(class SetU reliable timestamp\n    (parameter value))" in fed.read_text()
+    rti.RTIAmbassador(gateway_address).createFederationExecution("FmuFed", str(fed))
+    feeder = Federate(gateway_address, "feeder", federation="FmuFed")
+    try:
+        feeder.enable_time(lookahead=H * (1 - LOOKAHEAD_MARGIN))
+        set_u = feeder.rtia.getInteractionClassHandle("SetU")
+        value = feeder.rtia.getParameterHandle("value", set_u)
+        feeder.rtia.publishInteractionClass(set_u)
+        with FmuFederate(lag_fmu, "FmuFed", step_size=H, address=gateway_address, mapping=mapping,
+                         start_values={"u": signal(0)}, timeout=20.0) as federate:
+            federate.join()
+            failure: list[BaseException] = []
+
+            def run() -> None:
+                try:
+                    federate.run(STEPS * H)
+                except BaseException as error:  # reported by the main thread
+                    failure.append(error)
+
+            runner = threading.Thread(target=run)
+            runner.start()
+            for k in range(1, STEPS + 1):
+                if k < STEPS:
+                    feeder.rtia.sendInteraction(set_u, {value: F64.pack(signal(k))}, "feeder", k * H)
+                feeder.rtia.advance_to(k * H, timeout=20.0)
+            runner.join(timeout=30.0)
+            assert not runner.is_alive() and not failure, failure
+    finally:
+        feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        rti.RTIAmbassador(gateway_address).destroyFederationExecution("FmuFed")
+    inputs = np.array([(k * H, signal(k)) for k in range(STEPS + 1)], dtype=[("time", float), ("u", float)])
+    expected = fmpy.simulate_fmu(str(lag_fmu), stop_time=STEPS * H, output_interval=H, input=inputs, output=["y"])
+    assert [v["y"] for _, v in federate.trajectory] == pytest.approx(list(expected["y"]), rel=1e-12, abs=1e-15)
+    assert max(expected["y"]) > 1.0
+
+
+
 def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway, any_lag: pathlib.Path,
                                               tmp_path: pathlib.Path) -> None:
     """--write-fom writes the by-name FOM; the command then creates the federation from it, runs alone to the
@@ -188,6 +233,8 @@ def test_bad_mappings_and_start_values_are_refused(lag_fmu: pathlib.Path, tmp_pa
     cases = {'[inputs]\nspeed = "Lag.speed"\n': "has no variable 'speed'",
              '[inputs]\ny = "Lag.y"\n': "its causality is output, not input",
              '[outputs]\ny = "y"\n': "'y' is not ObjectClass.attribute",
+             '[outputs]\ny = { parameter = "Report.y" }\n': "outputs travel as attributes, not parameters",
+             '[inputs]\nu = { param = "SetU.value" }\n': "expected",
              '[extra]\n': r"unknown table\(s\) \['extra'\]"}
     for text, message in cases.items():
         mapping = tmp_path / "mapping.toml"

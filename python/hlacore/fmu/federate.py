@@ -36,6 +36,7 @@ class _Ambassador(rti.FederateAmbassador):
         self.federate = federate
         self.classes: dict[Any, Any] = {}  # object -> its class
         self.inputs: dict[tuple[Any, Any], list[tuple[str, Any]]] = {}  # (class, attribute) -> [(input, codec)]
+        self.parameters: dict[tuple[Any, Any], list[tuple[str, Any]]] = {}  # (interaction, parameter) -> same
         self.received: dict[str, Any] = {}
 
     def discoverObjectInstance(self, obj: Any, objectClass: Any, name: str) -> None:
@@ -48,6 +49,13 @@ class _Ambassador(rti.FederateAmbassador):
         cls = self.classes.get(obj)
         for attribute, data in attributes.items():
             for name, codec in self.inputs.get((cls, attribute), []):
+                self.received[name] = codec.unpack(data)[0]
+
+    def receiveInteraction(self, interactionClass: Any, parameters: dict[Any, bytes], tag: str, order: Any,
+                           transport: Any, time: Optional[float] = None, retraction: Any = None) -> None:
+        """Keep the mapped parameters' values as the inputs' next values (HLA 1.3 §6.6)."""
+        for parameter, data in parameters.items():
+            for name, codec in self.parameters.get((interactionClass, parameter), []):
                 self.received[name] = codec.unpack(data)[0]
 
     def initiateFederateSave(self, label: str) -> None:
@@ -86,9 +94,9 @@ class FmuFederate:
     :class:`FmuError` (missing, corrupt, unsupported, no binary), :class:`NotCoSimulation`,
     :class:`MappingError`. :meth:`join` joins (creating the federation from ``fed_file`` unless it exists),
     enables time regulation with lookahead ``step_size`` (:attr:`lookahead`) and time constraint, publishes
-    the outputs, registers one object instance per output class and subscribes to the inputs; :meth:`run`
-    steps; :meth:`close` resigns and frees the FMU. Use it as a context manager to have :meth:`close` called
-    whatever happens.
+    the outputs, registers one object instance per output class and subscribes to the inputs' attributes and
+    interactions; :meth:`run` steps; :meth:`close` resigns and frees the FMU. Use it as a context manager to
+    have :meth:`close` called whatever happens.
     """
 
     def __init__(self, fmu: Union[str, pathlib.Path], federation: str, *, step_size: float,
@@ -183,14 +191,23 @@ class FmuFederate:
             self._objects[object_class] = rtia.registerObjectInstance(
                 rtia.getObjectClassHandle(object_class), f"{self.name}.{object_class}")
         subscribed: dict[Any, list[Any]] = {}
+        interactions: set[Any] = set()
         for variable, endpoint in self.mapping.inputs.items():
+            codec = ENCODINGS[self.model.variables[variable].type]
+            if endpoint.interaction:
+                interaction = rtia.getInteractionClassHandle(endpoint.object_class)
+                parameter = rtia.getParameterHandle(endpoint.attribute, interaction)
+                self._ambassador.parameters.setdefault((interaction, parameter), []).append((variable, codec))
+                interactions.add(interaction)
+                continue
             cls = rtia.getObjectClassHandle(endpoint.object_class)
             attribute = rtia.getAttributeHandle(endpoint.attribute, cls)
             subscribed.setdefault(cls, []).append(attribute)
-            codec = ENCODINGS[self.model.variables[variable].type]
             self._ambassador.inputs.setdefault((cls, attribute), []).append((variable, codec))
         for cls, attributes in subscribed.items():
             rtia.subscribeObjectClassAttributes(cls, attributes)
+        for interaction in interactions:
+            rtia.subscribeInteractionClass(interaction)
 
     def step(self) -> None:
         """One co-simulation step from the current time t: inputs, ``doStep(t, h)``, the outputs sent stamped

@@ -4,6 +4,7 @@ A mapping file is TOML with two tables, each ``variable = "ObjectClass.attribute
 
     [inputs]            # set from the reflections of this attribute, of any instance
     u = "Source.u"
+    gain = { parameter = "SetGain.value" }   # or from this parameter of the interactions received
     [outputs]           # published, and updated at each step on one instance this federate registers
     y = "Lag.y"
 
@@ -32,18 +33,31 @@ ENCODINGS: dict[str, Any] = {"Real": omt.HLAfloat64BE, "Float64": omt.HLAfloat64
 
 @dataclass(frozen=True)
 class Endpoint:
-    """An attribute of an object class, where a variable travels."""
+    """Where a variable travels: an attribute of an object class, or (``interaction``) a parameter of an
+    interaction class, then ``object_class`` names the interaction class and ``attribute`` the parameter."""
 
     object_class: str
     attribute: str
+    interaction: bool = False
 
     @classmethod
-    def parse(cls, text: str, where: str) -> "Endpoint":
-        """``"ObjectClass.attribute"`` (the class may be dotted: ``robot.turtlebot.sonar``)."""
+    def parse(cls, text: str, where: str, interaction: bool = False) -> "Endpoint":
+        """``"Class.member"`` (the class may be dotted: ``robot.turtlebot.sonar``)."""
         object_class, dot, attribute = text.rpartition(".")
         if not dot or not object_class or not attribute:
-            raise MappingError(f"{where}: {text!r} is not ObjectClass.attribute")
-        return cls(object_class, attribute)
+            form = "Interaction.parameter" if interaction else "ObjectClass.attribute"
+            raise MappingError(f"{where}: {text!r} is not {form}")
+        return cls(object_class, attribute, interaction)
+
+    @classmethod
+    def from_toml(cls, value: Any, where: str) -> "Endpoint":
+        """A mapping file's entry: ``"ObjectClass.attribute"`` or ``{ parameter = "Interaction.parameter" }``."""
+        if isinstance(value, str):
+            return cls.parse(value, where)
+        if isinstance(value, dict) and list(value) == ["parameter"] and isinstance(value["parameter"], str):
+            return cls.parse(value["parameter"], where, interaction=True)
+        raise MappingError(f"{where}: expected \"ObjectClass.attribute\" or "
+                           f"{{ parameter = \"Interaction.parameter\" }}")
 
     def __str__(self) -> str:
         return f"{self.object_class}.{self.attribute}"
@@ -86,9 +100,10 @@ class Mapping:
         tables: dict[str, dict[str, Endpoint]] = {}
         for table in ("inputs", "outputs"):
             entries = data.get(table, {})
-            if not isinstance(entries, dict) or not all(isinstance(v, str) for v in entries.values()):
-                raise MappingError(f"{path}: [{table}] maps variable names to \"ObjectClass.attribute\" strings")
-            tables[table] = {name: Endpoint.parse(text, f"{path}: [{table}] {name}") for name, text in entries.items()}
+            if not isinstance(entries, dict):
+                raise MappingError(f"{path}: [{table}] maps variable names to \"ObjectClass.attribute\"")
+            tables[table] = {name: Endpoint.from_toml(value, f"{path}: [{table}] {name}")
+                             for name, value in entries.items()}
         mapping = cls(tables["inputs"], tables["outputs"])
         mapping.check(model, str(path))
         return mapping
@@ -104,27 +119,37 @@ class Mapping:
                 if variable.causality != causality:
                     raise MappingError(f"{where}: [{table}] {name}: its causality is {variable.causality}, "
                                        f"not {causality}")
+                if table == "outputs" and getattr(self, table)[name].interaction:
+                    raise MappingError(f"{where}: [outputs] {name}: outputs travel as attributes, not parameters")
                 if variable.type not in SUPPORTED_TYPES:
                     raise MappingError(f"{where}: [{table}] {name}: type {variable.type} cannot travel "
                                        f"(only {', '.join(SUPPORTED_TYPES)})")
 
     def fed(self, federation: str) -> str:
-        """An HLA 1.3 ``.fed`` declaring every class and attribute of the mapping (timestamp order, reliable)."""
+        """An HLA 1.3 ``.fed`` declaring every class, attribute, interaction and parameter of the mapping
+        (reliable, timestamp order)."""
         classes: dict[str, list[str]] = {}
+        interactions: dict[str, list[str]] = {}
         for endpoint in [*self.inputs.values(), *self.outputs.values()]:
-            attributes = classes.setdefault(endpoint.object_class, [])
-            if endpoint.attribute not in attributes:
-                attributes.append(endpoint.attribute)
+            members = (interactions if endpoint.interaction else classes).setdefault(endpoint.object_class, [])
+            if endpoint.attribute not in members:
+                members.append(endpoint.attribute)
+        for name in [*classes, *interactions]:
+            if "." in name:
+                raise MappingError(f"--write-fom writes top-level classes; {name} is nested")
         lines = [";; written by python -m hlacore.fmu --write-fom", "(FED", f" (Federation {federation})",
                  " (FEDversion v1.3)", " (spaces)", " (objects", "  (class ObjectRoot",
                  "   (attribute privilegeToDelete reliable timestamp)", "   (class RTIprivate)"]
         for name, attributes in classes.items():
-            if "." in name:
-                raise MappingError(f"--write-fom writes top-level classes; {name} is nested")
             lines.append(f"   (class {name}")
             lines += [f"    (attribute {a} reliable timestamp)" for a in attributes]
             lines[-1] += ")"
         lines[-1] += "))"
         lines += [" (interactions", "  (class InteractionRoot reliable receive",
-                  "   (class RTIprivate reliable receive))))"]
+                  "   (class RTIprivate reliable receive)"]
+        for name, parameters in interactions.items():
+            lines.append(f"   (class {name} reliable timestamp")
+            lines += [f"    (parameter {p})" for p in parameters]
+            lines[-1] += ")"
+        lines[-1] += ")))"
         return "\n".join(lines) + "\n"

@@ -7,6 +7,7 @@ joining, or after a clean resign, leaving nothing behind."""
 from __future__ import annotations
 
 import math
+import os
 import pathlib
 import subprocess
 import sys
@@ -265,12 +266,17 @@ def test_a_failing_step_resigns_cleanly(fmu_federation: str, lag_fmu: pathlib.Pa
 
 def test_a_class_the_fom_lacks_resigns_before_running(gateway_address: str, lag_fmu: pathlib.Path,
                                                      no_leftovers: pathlib.Path) -> None:
-    """Joined to a federation whose FOM has no class Lag, join() raises NameNotFound after resigning."""
+    """Joined to a federation whose FOM has no class Lag, join() raises NameNotFound after resigning; the command
+    says so and exits with status 1."""
     creator = rti.RTIAmbassador(gateway_address)
     creator.createFederationExecution("TestFed", ROBOT_FED)
     try:
         with pytest.raises(rti.NameNotFound):
             FmuFederate(lag_fmu, "TestFed", step_size=H, address=gateway_address).join()
+        done = subprocess.run([sys.executable, "-m", "hlacore.fmu", str(lag_fmu), "--federation", "TestFed",
+                               "--address", gateway_address, "--stop-time", "1"], capture_output=True, text=True,
+                              timeout=60, env={**os.environ, "TMPDIR": str(no_leftovers)})
+        assert done.returncode == 1 and "error: NameNotFound" in done.stderr, done.stderr
     finally:
         creator.destroyFederationExecution("TestFed")
 

@@ -1,6 +1,7 @@
 """``python -m hlacore.fmu MODEL.fmu``: run an FMI 2 or FMI 3 co-simulation FMU as a federate (docs/fmu.md).
 
-A bad FMU or mapping is reported as ``error: ...`` on stderr with exit status 2, before joining."""
+A bad FMU or mapping is reported as ``error: ...`` on stderr with exit status 2, before joining; an RTI error
+(a class the federation's FOM lacks: NameNotFound) or a time-out with status 1, after resigning."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ import pathlib
 import sys
 from typing import Any, Optional, Sequence
 
+from .. import rti
 from .errors import FmuError
 from .federate import FmuFederate
 from .mapping import Mapping
@@ -73,6 +75,9 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     except FmuError as error:
         print(f"error: {error}", file=sys.stderr)
         return 2
+    except (rti.RTIexception, TimeoutError) as error:  # NameNotFound for a class the FOM lacks, ...; resigned
+        print(f"error: {type(error).__name__}: {error}", file=sys.stderr)
+        return 1
     if args.csv:
         with open(args.csv, "w", newline="") as out:
             writer = csv.writer(out)

@@ -27,7 +27,7 @@ from hlacore.fmu import (
 from hlacore.fmu.federate import LOOKAHEAD_MARGIN
 
 from support import ROBOT_FED, Federate, tick_until
-from support.fmus import FMU_SOURCES, build_fmu
+from support.fmus import FMU_SOURCES, build_fmu, build_python_fmu
 
 F64 = omt.HLAfloat64BE
 H = 0.1
@@ -66,6 +66,13 @@ def fmu_federation(gateway_address: str, lag_fmu: pathlib.Path, tmp_path: pathli
     creator.createFederationExecution("FmuFed", str(fed))
     yield gateway_address
     creator.destroyFederationExecution("FmuFed")  # raises FederatesCurrentlyJoined if one was left joined
+
+
+@pytest.fixture(scope="session")
+def gain_fmu(tmp_path_factory: pytest.TempPathFactory) -> pathlib.Path:
+    """The gain of tests/data/fmu/gain as a Python FMU, built by pythonfmu once per session."""
+    (tmp_path_factory.getbasetemp() / "fmus").mkdir(exist_ok=True)
+    return build_python_fmu("gain", tmp_path_factory.getbasetemp() / "fmus")
 
 
 def signal(k: int) -> float:
@@ -388,3 +395,47 @@ def test_an_fmu_that_cannot_save_makes_the_save_fail_clearly(fmu_federation: str
             assert federate.time == pytest.approx(1.0)
     finally:
         controller.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+
+
+def test_a_python_fmu_behind_a_c_fmu(inprocess_gateway: hlacore.Gateway, lag_fmu: pathlib.Path,
+                                     gain_fmu: pathlib.Path, tmp_path: pathlib.Path) -> None:
+    """A pythonfmu FMU (the gain, k = 3) reads the lag's output through the federation: at each grid point its
+    y is 3 times the lag's y one step before (its input held over the step from there), and the lag's run is
+    fmpy's."""
+    address = str(inprocess_gateway.address)
+    (tmp_path / "gain.toml").write_text('[inputs]\nu = "Lag.y"\n[outputs]\ny = "Gain.y"\n')
+    fed = tmp_path / "chain.fed"
+    fed.write_text(Mapping(outputs={"lag": Endpoint("Lag", "y"), "gain": Endpoint("Gain", "y")}).fed("Chain"))
+    rti.RTIAmbassador(address).createFederationExecution("Chain", str(fed))
+    lag = FmuFederate(lag_fmu, "Chain", step_size=H, address=address,
+                      mapping=Mapping(outputs={"y": Endpoint("Lag", "y")}), start_values={"u": 1.0}, timeout=20.0)
+    gain = FmuFederate(gain_fmu, "Chain", step_size=H, address=address, mapping=tmp_path / "gain.toml",
+                       start_values={"k": 3.0}, timeout=20.0)
+    failures: list[BaseException] = []
+
+    def run(federate: FmuFederate) -> None:
+        try:
+            federate.run(STEPS * H)
+        except BaseException as error:  # reported by the main thread
+            failures.append(error)
+
+    try:
+        lag.join()
+        gain.join()
+        threads = [threading.Thread(target=run, args=(federate,)) for federate in (lag, gain)]
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            thread.join(timeout=30.0)
+        assert not any(thread.is_alive() for thread in threads) and not failures, failures
+    finally:
+        lag.close()
+        gain.close()
+    rti.RTIAmbassador(address).destroyFederationExecution("Chain")
+    expected = fmpy.simulate_fmu(str(lag_fmu), stop_time=STEPS * H, output_interval=H, start_values={"u": 1.0},
+                                 output=["y"])
+    lag_y = [v["y"] for _, v in lag.trajectory]
+    assert lag_y == pytest.approx(list(expected["y"]), rel=1e-12)
+    gain_y = [v["y"] for _, v in gain.trajectory]
+    assert gain_y[1:] == pytest.approx([3.0 * y for y in lag_y[:-1]], rel=1e-12)
+    assert gain_y[-1] > 1.5

@@ -10,6 +10,7 @@ import pathlib
 import re
 import shutil
 import subprocess
+import sys
 import zipfile
 
 from support import DATA
@@ -54,3 +55,20 @@ def build_fmu(model: str, into: pathlib.Path) -> pathlib.Path:
     partial.rename(fmu)  # whole or absent, should two sessions share the cache
     shutil.rmtree(work)
     return fmu
+
+
+def build_python_fmu(model: str, into: pathlib.Path) -> pathlib.Path:
+    """The .fmu of the pythonfmu script tests/data/fmu/<model>/<model>.py, built by ``pythonfmu build`` into
+    ``into`` (cached by the script's hash, like :func:`build_fmu`)."""
+    script = FMU_SOURCES / model / f"{model}.py"
+    digest = hashlib.sha256(script.read_bytes()).hexdigest()[:16]
+    out = into / f"{model}-{digest}"
+    built = list(out.glob("*.fmu")) if out.is_dir() else []
+    if built:
+        return built[0]
+    partial = into / f"{model}-{digest}.part"
+    shutil.rmtree(partial, ignore_errors=True)
+    subprocess.run([sys.executable, "-m", "pythonfmu", "build", "-f", str(script), "-d", str(partial)], check=True,
+                   timeout=120, capture_output=True)
+    partial.rename(out)
+    return next(out.glob("*.fmu"))

@@ -439,3 +439,12 @@ def test_a_python_fmu_behind_a_c_fmu(inprocess_gateway: hlacore.Gateway, lag_fmu
     gain_y = [v["y"] for _, v in gain.trajectory]
     assert gain_y[1:] == pytest.approx([3.0 * y for y in lag_y[:-1]], rel=1e-12)
     assert gain_y[-1] > 1.5
+
+
+def test_direct_feedthrough_and_state_saving_are_read_from_the_model_description(
+        lag_fmu: pathlib.Path, gain_fmu: pathlib.Path, tmp_path_factory: pytest.TempPathFactory) -> None:
+    """The lags declare y independent of u and their state saveable; the pythonfmu gain declares no dependencies
+    (so y depends on u, by the standard) and no state saving."""
+    lag3 = build_fmu("lag3", tmp_path_factory.getbasetemp() / "fmus")
+    assert [(FmuModel(f).direct_feedthrough, FmuModel(f).can_save_state) for f in (lag_fmu, lag3, gain_fmu)] \
+        == [(False, True), (False, True), (True, False)]

@@ -115,10 +115,13 @@ class FmuModel:
 
     @property
     def direct_feedthrough(self) -> bool:
-        """Whether an output depends directly on an input (``ModelStructure/Outputs`` dependencies)."""
+        """Whether an output depends directly on an input, by ``ModelStructure``'s outputs: an output without
+        a ``dependencies`` attribute depends on every input (FMI 2 §3.3.1, FMI 3 §2.4.8)."""
         inputs = {v.name for v in self.inputs}
         for unknown in self.description.outputs:
-            if any(d.name in inputs for d in (unknown.dependencies or [])):
+            if unknown.dependencies is None and inputs:
+                return True
+            if any(d.name in inputs for d in unknown.dependencies or []):
                 return True
         return False
 

@@ -61,8 +61,8 @@ def check_value(model: "FmuModel", name: str, value: Any) -> None:
 class FmuModel:
     """An FMI 2 or FMI 3 co-simulation FMU read from ``path``: its model description, checked, not loaded.
 
-    Raises :class:`FmuError` when FMPy is not installed, when the file is missing, is not an FMU (not a zip, or no readable
-    ``modelDescription.xml``), is FMI 1, or carries no binary for this platform, and
+    Raises :class:`FmuError` when FMPy is not installed, or the file is missing, is not an FMU (not a zip, or
+    no readable ``modelDescription.xml``), is FMI 1, or carries no binary for this platform, and
     :class:`NotCoSimulation` when it exports model exchange only."""
 
     def __init__(self, path: Union[str, pathlib.Path]) -> None:

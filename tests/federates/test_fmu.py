@@ -14,7 +14,7 @@ import sys
 import tempfile
 import threading
 import zipfile
-from typing import Any, Iterator
+from typing import Any, Callable, Iterator
 
 import fmpy  # the test extra installs it
 import numpy as np
@@ -23,7 +23,7 @@ import pytest
 import hlacore
 from hlacore import omt, rti
 from hlacore.fmu import (
-    Endpoint, FmuError, FmuFederate, FmuModel, Mapping, MappingError, NotCoSimulation, StepFailed)
+    Endpoint, FmuError, FmuFederate, FmuModel, InputError, Mapping, MappingError, NotCoSimulation, StepFailed)
 from hlacore.fmu.federate import LOOKAHEAD_MARGIN
 
 from support import ROBOT_FED, Federate, tick_until
@@ -80,6 +80,28 @@ def signal(k: int) -> float:
     return 1.0 + math.sin(3.0 * k * H)
 
 
+def run_beside(federate: FmuFederate, feeder: Federate, send: Callable[[int], object]) -> list[BaseException]:
+    """Run ``federate`` to STEPS h on a thread while ``feeder`` calls ``send(k)`` (to send stamped k h) and
+    advances to k h, for k = 1 .. STEPS - 1 (and advances to STEPS h); what the run raised."""
+    failure: list[BaseException] = []
+
+    def run() -> None:
+        try:
+            federate.run(STEPS * H)
+        except BaseException as error:  # reported by the main thread
+            failure.append(error)
+
+    runner = threading.Thread(target=run)
+    runner.start()
+    for k in range(1, STEPS + 1):
+        if k < STEPS:
+            send(k)
+        assert feeder.rtia.advance_to(k * H, timeout=20.0) == pytest.approx(k * H)
+    runner.join(timeout=30.0)
+    assert not runner.is_alive()
+    return failure
+
+
 def test_against_a_feeder_gives_fmpys_trajectory(fmu_federation: str, any_lag: pathlib.Path,
                                                   no_leftovers: pathlib.Path) -> None:
     """A feeder federate sends u(t_k) stamped t_k; the FMU's outputs, recorded and as the feeder reflects them,
@@ -98,22 +120,9 @@ def test_against_a_feeder_gives_fmpys_trajectory(fmu_federation: str, any_lag: p
                                start_values={"u": signal(0), "tau": 0.5}, timeout=20.0)
         with federate:
             federate.join()
-            failure: list[BaseException] = []
-
-            def run() -> None:
-                try:
-                    federate.run(STEPS * H)
-                except BaseException as error:  # reported by the main thread
-                    failure.append(error)
-
-            runner = threading.Thread(target=run)
-            runner.start()
-            for k in range(1, STEPS + 1):
-                if k < STEPS:
-                    feeder.rtia.updateAttributeValues(source, {u: F64.pack(signal(k))}, "feeder", k * H)
-                assert feeder.rtia.advance_to(k * H, timeout=20.0) == pytest.approx(k * H)
-            runner.join(timeout=30.0)
-            assert not runner.is_alive() and not failure, failure
+            failure = run_beside(federate, feeder, lambda k: feeder.rtia.updateAttributeValues(
+                source, {u: F64.pack(signal(k))}, "feeder", k * H))
+            assert not failure, failure
     finally:
         feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
 
@@ -148,22 +157,9 @@ def test_inputs_from_interactions(gateway_address: str, lag_fmu: pathlib.Path, t
         with FmuFederate(lag_fmu, "FmuFed", step_size=H, address=gateway_address, mapping=mapping,
                          start_values={"u": signal(0)}, timeout=20.0) as federate:
             federate.join()
-            failure: list[BaseException] = []
-
-            def run() -> None:
-                try:
-                    federate.run(STEPS * H)
-                except BaseException as error:  # reported by the main thread
-                    failure.append(error)
-
-            runner = threading.Thread(target=run)
-            runner.start()
-            for k in range(1, STEPS + 1):
-                if k < STEPS:
-                    feeder.rtia.sendInteraction(set_u, {value: F64.pack(signal(k))}, "feeder", k * H)
-                feeder.rtia.advance_to(k * H, timeout=20.0)
-            runner.join(timeout=30.0)
-            assert not runner.is_alive() and not failure, failure
+            failure = run_beside(federate, feeder, lambda k: feeder.rtia.sendInteraction(
+                set_u, {value: F64.pack(signal(k))}, "feeder", k * H))
+            assert not failure, failure
     finally:
         feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
         rti.RTIAmbassador(gateway_address).destroyFederationExecution("FmuFed")
@@ -172,6 +168,89 @@ def test_inputs_from_interactions(gateway_address: str, lag_fmu: pathlib.Path, t
     assert [v["y"] for _, v in federate.trajectory] == pytest.approx(list(expected["y"]), rel=1e-12, abs=1e-15)
     assert max(expected["y"]) > 1.0
 
+
+
+ARRAY_MAPPING = """[inputs]
+u = { attribute = "Src.v", element = 1, instance = "good" }
+[outputs]
+y = { parameter = "Report.y" }
+[constants]
+"Report.who" = "lag"
+"""
+
+
+@pytest.fixture
+def array_federation(gateway_address: str, lag_fmu: pathlib.Path, tmp_path: pathlib.Path) -> Iterator[Federate]:
+    """ArrayFed from ARRAY_MAPPING's FOM, and a feeder that publishes Src.v, registers the instances "good" and
+    "other", and subscribes to Report; the federation is destroyed at the end (nobody may be left joined)."""
+    mapping = tmp_path / "mapping.toml"
+    mapping.write_text(ARRAY_MAPPING)
+    fed = tmp_path / "array.fed"
+    fed.write_text(Mapping.load(mapping, FmuModel(lag_fmu)).fed("ArrayFed"))
+    rti.RTIAmbassador(gateway_address).createFederationExecution("ArrayFed", str(fed))
+    feeder = Federate(gateway_address, "feeder", federation="ArrayFed")
+    try:
+        feeder.enable_time(lookahead=H * (1 - LOOKAHEAD_MARGIN))
+        src = feeder.rtia.getObjectClassHandle("Src")
+        feeder.rtia.publishObjectClass(src, [feeder.rtia.getAttributeHandle("v", src)])
+        feeder.rtia.subscribeInteractionClass(feeder.rtia.getInteractionClassHandle("Report"))
+        for name in ("good", "other"):
+            feeder.rtia.registerObjectInstance(src, name)
+        yield feeder
+    finally:
+        feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        rti.RTIAmbassador(gateway_address).destroyFederationExecution("ArrayFed")
+
+
+def send_array(feeder: Federate, instance: str, values: list[float], k: int) -> None:
+    """Update Src.v of ``instance`` to ``values`` (an HLAfixedArray of HLAfloat64BE), stamped k h."""
+    src = feeder.rtia.getObjectClassHandle("Src")
+    feeder.rtia.updateAttributeValues(feeder.rtia.getObjectInstanceHandle(instance),
+                                      {feeder.rtia.getAttributeHandle("v", src): b"".join(map(F64.pack, values))},
+                                      "feeder", k * H)
+
+
+def test_array_elements_one_instance_and_outputs_as_interactions(gateway_address: str, array_federation: Federate,
+                                                                 lag_fmu: pathlib.Path,
+                                                                 tmp_path: pathlib.Path) -> None:
+    """u is element 1 of the array Src.v of the instance "good" only (the instance "other" sends 9s at the
+    same times, after it); y goes out as Report(y, who = "lag"), a constant: the run and the interactions the
+    feeder receives equal fmpy.simulate_fmu's on good's element 1."""
+    feeder = array_federation
+    (tmp_path / "mapping.toml").write_text(ARRAY_MAPPING)
+
+    def send(k: int) -> None:
+        send_array(feeder, "good", [-1.0, signal(k), -2.0], k)
+        send_array(feeder, "other", [9.0, 9.0, 9.0], k)
+
+    with FmuFederate(lag_fmu, "ArrayFed", step_size=H, address=gateway_address,
+                     mapping=tmp_path / "mapping.toml", start_values={"u": signal(0)}, timeout=20.0) as federate:
+        federate.join()
+        assert not run_beside(federate, feeder, send)
+    inputs = np.array([(k * H, signal(k)) for k in range(STEPS + 1)], dtype=[("time", float), ("u", float)])
+    expected = fmpy.simulate_fmu(str(lag_fmu), stop_time=STEPS * H, output_interval=H, input=inputs, output=["y"])
+    assert [v["y"] for _, v in federate.trajectory] == pytest.approx(list(expected["y"]), rel=1e-12, abs=1e-15)
+    report = feeder.rtia.getInteractionClassHandle("Report")
+    y, who = (feeder.rtia.getParameterHandle(name, report) for name in ("y", "who"))
+    received = [(args[5], args[1]) for args in feeder.amb.named("receiveInteraction") if args[0] == report]
+    assert [t for t, _ in received] == pytest.approx([k * H for k in range(1, STEPS + 1)])
+    assert [F64.unpack(p[y])[0] for _, p in received] == pytest.approx(list(expected["y"][1:]), rel=1e-12)
+    assert {omt.HLAASCIIstring.unpack(p[who])[0] for _, p in received} == {b"lag"}
+
+
+def test_a_value_of_the_wrong_size_resigns_with_an_input_error(gateway_address: str, array_federation: Federate,
+                                                               lag_fmu: pathlib.Path, tmp_path: pathlib.Path) -> None:
+    """An array too short for the element mapped (one float where element 1 is read) fails the step that would
+    use it with InputError naming the input and the sizes, after resigning: the federation can be destroyed."""
+    feeder = array_federation
+    (tmp_path / "mapping.toml").write_text(ARRAY_MAPPING)
+    with FmuFederate(lag_fmu, "ArrayFed", step_size=H, address=gateway_address,
+                     mapping=tmp_path / "mapping.toml", timeout=20.0) as federate:
+        federate.join()
+        failure = run_beside(federate, feeder, lambda k: send_array(feeder, "good", [1.0] if k == 3 else [0, 1, 2], k))
+    assert [type(error) for error in failure] == [InputError]
+    assert "u: instance 'good' sent 8 bytes, not an array of HLAfloat64BE with an element 1" in str(failure[0])
+    assert federate.time == pytest.approx(3 * H)
 
 
 def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway, any_lag: pathlib.Path,
@@ -236,12 +315,17 @@ def test_bad_fmus_are_refused_before_anything_runs(lag_fmu: pathlib.Path, tmp_pa
 
 
 def test_bad_mappings_and_start_values_are_refused(lag_fmu: pathlib.Path, tmp_path: pathlib.Path) -> None:
-    """An unknown variable, an output mapped as an input, a malformed endpoint, a start value of the wrong type
-    or for no variable: each a MappingError before joining."""
+    """An unknown variable, an output mapped as an input, a malformed endpoint, an output array with a gap, a
+    constant of no output class or of no HLA type, a start value of the wrong type or for no variable: each a
+    MappingError before joining."""
     cases = {'[inputs]\nspeed = "Lag.speed"\n': "has no variable 'speed'",
              '[inputs]\ny = "Lag.y"\n': "its causality is output, not input",
              '[outputs]\ny = "y"\n': "'y' is not ObjectClass.attribute",
-             '[outputs]\ny = { parameter = "Report.y" }\n': "outputs travel as attributes, not parameters",
+             '[outputs]\ny = { attribute = "Lag.y", element = 1 }\n': "needs each of its elements 0..n-1 once",
+             '[outputs]\ny = { attribute = "Lag.y", instance = "a" }\n': "outputs go to this federate's own",
+             '[inputs]\nu = { attribute = "Lag.u", element = -1 }\n': "an array index, 0 or more",
+             '[outputs]\ny = "Lag.y"\n[constants]\n"Report.who" = "lag"\n': "Report is no class the outputs",
+             '[outputs]\ny = "Lag.y"\n[constants]\n"Lag.who" = [1]\n': "a constant is a string, a number",
              '[inputs]\nu = { param = "SetU.value" }\n': "expected",
              '[extra]\n': r"unknown table\(s\) \['extra'\]"}
     for text, message in cases.items():

@@ -7,10 +7,11 @@ time-constrained federate, one time advance per step (docs/fmu.md).
 
 from __future__ import annotations
 
-from .errors import FmuError, MappingError, NotCoSimulation, StepFailed
+from .errors import FmuError, InputError, MappingError, NotCoSimulation, StepFailed
 from .federate import FmuFederate
 from .mapping import Endpoint, Mapping
 from .model import FmuInstance, FmuModel, Variable
 
-__all__ = ["Endpoint", "FmuError", "FmuFederate", "FmuInstance", "FmuModel", "Mapping", "MappingError",
+__all__ = ["Endpoint", "FmuError", "FmuFederate", "FmuInstance", "FmuModel", "InputError", "Mapping",
+           "MappingError",
            "NotCoSimulation", "StepFailed", "Variable"]

@@ -19,3 +19,8 @@ class MappingError(FmuError):
 
 class StepFailed(FmuError):
     """``doStep`` failed, or left an output that is not a finite number; the federate has resigned."""
+
+
+class InputError(FmuError):
+    """A value received for an input is not of its encoding (a wrong size, an array too short for the element
+    mapped); raised by the step that would have used it, after resigning."""

@@ -3,7 +3,8 @@
 The time mapping (docs/fmu.md): the federate's logical time is the FMU's time. At a grant of t the FMU holds
 its state at t; its inputs are set to the last value reflected with a timestamp up to t (or their start
 value, before any); ``doStep(t, h)``; its outputs at t + h are sent as updates stamped t + h, which the
-lookahead h allows; then ``timeAdvanceRequest(t + h)``. A peer that wants an input to hold over the step
+lookahead h allows (and as interactions stamped t + h, for outputs mapped to parameters); then
+``timeAdvanceRequest(t + h)``. A peer that wants an input to hold over the step
 from t sends it stamped t. This is FMPy's own order (inputs at t, step, outputs at t + h), so a federated run
 gives ``fmpy.simulate_fmu``'s trajectory.
 """
@@ -15,11 +16,11 @@ import json
 import math
 import pathlib
 import time
-from typing import Any, Optional, Union
+from typing import Any, NamedTuple, Optional, Union
 
 from .. import rti
-from .errors import FmuError, StepFailed
-from .mapping import ENCODINGS, Endpoint, Mapping
+from .errors import FmuError, InputError, StepFailed
+from .mapping import ENCODINGS, Endpoint, Mapping, constant_encoding
 from .model import FmuInstance, FmuModel, check_value
 
 
@@ -28,35 +29,65 @@ from .model import FmuInstance, FmuModel, check_value
 LOOKAHEAD_MARGIN = 1e-9
 
 
+class _Input(NamedTuple):
+    """Where a received value goes: the input, its encoding, the array element it is (None: the whole value)
+    and the object instance it must come from (None: any)."""
+
+    variable: str
+    codec: Any
+    element: Optional[int]
+    instance: Optional[str]
+
+    def decode(self, data: bytes, source: str) -> Any:
+        """The value in ``data``; InputError when its size does not fit the encoding or the element."""
+        size = self.codec.fixed_size
+        if self.element is None:
+            if len(data) != size:
+                raise InputError(f"{self.variable}: {source} sent {len(data)} bytes, not one {self.codec.name}")
+            return self.codec.unpack(data)[0]
+        if len(data) % size or len(data) < (self.element + 1) * size:
+            raise InputError(f"{self.variable}: {source} sent {len(data)} bytes, not an array of {self.codec.name} "
+                             f"with an element {self.element}")
+        return self.codec.unpack(data, self.element * size)[0]
+
+
 class _Ambassador(rti.FederateAmbassador):
-    """Keeps the last value reflected of each mapped input attribute (TSO: the last is the latest), and hands
-    save and restore to the federate."""
+    """Keeps the last value received of each mapped input (TSO: the last is the latest), and hands save and
+    restore to the federate. A value that cannot be decoded is kept in ``error`` for the next step to raise."""
 
     def __init__(self, federate: "FmuFederate") -> None:
         self.federate = federate
-        self.classes: dict[Any, Any] = {}  # object -> its class
-        self.inputs: dict[tuple[Any, Any], list[tuple[str, Any]]] = {}  # (class, attribute) -> [(input, codec)]
-        self.parameters: dict[tuple[Any, Any], list[tuple[str, Any]]] = {}  # (interaction, parameter) -> same
+        self.instances: dict[Any, tuple[Any, str]] = {}  # object -> (its class, its name)
+        self.inputs: dict[tuple[Any, Any], list[_Input]] = {}  # (class, attribute) -> where its values go
+        self.parameters: dict[tuple[Any, Any], list[_Input]] = {}  # (interaction, parameter) -> the same
         self.received: dict[str, Any] = {}
+        self.error: Optional[InputError] = None
 
     def discoverObjectInstance(self, obj: Any, objectClass: Any, name: str) -> None:
-        """Note the instance's class, to read its reflections (HLA 1.3 §6.3)."""
-        self.classes[obj] = objectClass
+        """Note the instance's class and name, to read its reflections (HLA 1.3 §6.3)."""
+        self.instances[obj] = (objectClass, name)
 
     def reflectAttributeValues(self, obj: Any, attributes: dict[Any, bytes], tag: str, order: Any,
                                transport: Any, time: Optional[float] = None, retraction: Any = None) -> None:
         """Keep the mapped attributes' values as the inputs' next values (HLA 1.3 §6.4)."""
-        cls = self.classes.get(obj)
+        cls, name = self.instances.get(obj, (None, ""))
         for attribute, data in attributes.items():
-            for name, codec in self.inputs.get((cls, attribute), []):
-                self.received[name] = codec.unpack(data)[0]
+            self._keep(self.inputs.get((cls, attribute), []), data, f"instance {name!r}", name)
 
     def receiveInteraction(self, interactionClass: Any, parameters: dict[Any, bytes], tag: str, order: Any,
                            transport: Any, time: Optional[float] = None, retraction: Any = None) -> None:
         """Keep the mapped parameters' values as the inputs' next values (HLA 1.3 §6.6)."""
         for parameter, data in parameters.items():
-            for name, codec in self.parameters.get((interactionClass, parameter), []):
-                self.received[name] = codec.unpack(data)[0]
+            self._keep(self.parameters.get((interactionClass, parameter), []), data, "an interaction", None)
+
+    def _keep(self, inputs: list[_Input], data: bytes, source: str, instance: Optional[str]) -> None:
+        for target in inputs:
+            if target.instance is not None and target.instance != instance:
+                continue
+            try:
+                self.received[target.variable] = target.decode(data, source)
+            except InputError as error:
+                self.error = self.error or error
 
     def initiateFederateSave(self, label: str) -> None:
         """Save the FMU's state and the federate's under ``label`` (HLA 1.3 §4.12)."""
@@ -85,6 +116,42 @@ class _Ambassador(rti.FederateAmbassador):
     def federationNotRestored(self) -> None:
         """The restore failed (HLA 1.3 §4.21)."""
         self.federate._restoring = False
+
+
+class _Send:
+    """What one output class sends at each step: an update of the instance this federate registered, or an
+    interaction; each member (attribute or parameter) filled by its outputs, in element order, and the constants."""
+
+    def __init__(self, rtia: rti.RTIAmbassador, endpoint: Endpoint) -> None:
+        self.object_class = endpoint.object_class
+        self.interaction = endpoint.interaction
+        self.handle = (rtia.getInteractionClassHandle if self.interaction else rtia.getObjectClassHandle)(
+            endpoint.object_class)
+        self.members: dict[Any, tuple[list[str], Any]] = {}  # member handle -> (outputs, their encoding)
+        self.constants: dict[Any, bytes] = {}  # member handle -> its value, encoded
+        self.target: Any = self.handle  # the interaction class, or the instance registered
+
+    def member(self, rtia: rti.RTIAmbassador, name: str) -> Any:
+        """The handle of the parameter or attribute ``name`` of the class."""
+        return (rtia.getParameterHandle if self.interaction else rtia.getAttributeHandle)(name, self.handle)
+
+    def publish(self, rtia: rti.RTIAmbassador, instance_name: str) -> None:
+        """Publish the class (HLA 1.3 §5.2, §5.4) and, for an object class, register its instance (§6.2)."""
+        if self.interaction:
+            rtia.publishInteractionClass(self.handle)
+            return
+        rtia.publishObjectClass(self.handle, [*self.members, *self.constants])
+        self.target = rtia.registerObjectInstance(self.handle, instance_name)
+
+    def send(self, rtia: rti.RTIAmbassador, outputs: dict[str, Any], tag: str, time: float) -> None:
+        """Update or send the outputs' values and the constants, stamped ``time`` (HLA 1.3 §6.4, §6.6)."""
+        values = dict(self.constants)
+        for handle, (names, codec) in self.members.items():
+            values[handle] = b"".join(codec.pack(outputs[name]) for name in names)
+        if self.interaction:
+            rtia.sendInteraction(self.target, values, tag, time)
+        else:
+            rtia.updateAttributeValues(self.target, values, tag, time)
 
 
 class FmuFederate:
@@ -136,8 +203,7 @@ class FmuFederate:
         self.restored: list[str] = []
         self._saving = False
         self._restoring = False
-        self._objects: dict[str, Any] = {}  # output class -> the object instance registered
-        self._handles: dict[str, tuple[str, Any, Any]] = {}  # output -> (class, attribute handle, codec)
+        self._sends: list[_Send] = []
         #: (time, {output: value}) at the start and after each step, as sent.
         self.trajectory: list[tuple[float, dict[str, Any]]] = []
         self.time = 0.0
@@ -180,30 +246,36 @@ class FmuFederate:
 
     def _declare(self) -> None:
         rtia = self.rtia
-        published: dict[str, list[Any]] = {}
-        for output, endpoint in self.mapping.outputs.items():
-            cls = rtia.getObjectClassHandle(endpoint.object_class)
-            attribute = rtia.getAttributeHandle(endpoint.attribute, cls)
-            published.setdefault(endpoint.object_class, []).append(attribute)
-            self._handles[output] = (endpoint.object_class, attribute, ENCODINGS[self.model.variables[output].type])
-        for object_class, attributes in published.items():
-            rtia.publishObjectClass(rtia.getObjectClassHandle(object_class), attributes)
-            self._objects[object_class] = rtia.registerObjectInstance(
-                rtia.getObjectClassHandle(object_class), f"{self.name}.{object_class}")
+        sends: dict[tuple[str, bool], _Send] = {}
+        for endpoint, outputs in self.mapping.members().items():
+            send = sends.get((endpoint.object_class, endpoint.interaction))
+            if send is None:
+                send = sends[endpoint.object_class, endpoint.interaction] = _Send(rtia, endpoint)
+            send.members[send.member(rtia, endpoint.attribute)] = (
+                outputs, ENCODINGS[self.model.variables[outputs[0]].type])
+        for member, value in self.mapping.constants.items():
+            object_class, _, name = member.rpartition(".")
+            send = sends.get((object_class, True)) or sends[object_class, False]
+            send.constants[send.member(rtia, name)] = constant_encoding(value, member).pack(value)
+        for send in sends.values():
+            send.publish(rtia, f"{self.name}.{send.object_class}")
+        self._sends = list(sends.values())
         subscribed: dict[Any, list[Any]] = {}
         interactions: set[Any] = set()
         for variable, endpoint in self.mapping.inputs.items():
-            codec = ENCODINGS[self.model.variables[variable].type]
+            target = _Input(variable, ENCODINGS[self.model.variables[variable].type], endpoint.element,
+                            endpoint.instance)
             if endpoint.interaction:
                 interaction = rtia.getInteractionClassHandle(endpoint.object_class)
                 parameter = rtia.getParameterHandle(endpoint.attribute, interaction)
-                self._ambassador.parameters.setdefault((interaction, parameter), []).append((variable, codec))
+                self._ambassador.parameters.setdefault((interaction, parameter), []).append(target)
                 interactions.add(interaction)
                 continue
             cls = rtia.getObjectClassHandle(endpoint.object_class)
             attribute = rtia.getAttributeHandle(endpoint.attribute, cls)
-            subscribed.setdefault(cls, []).append(attribute)
-            self._ambassador.inputs.setdefault((cls, attribute), []).append((variable, codec))
+            if attribute not in subscribed.setdefault(cls, []):
+                subscribed[cls].append(attribute)
+            self._ambassador.inputs.setdefault((cls, attribute), []).append(target)
         for cls, attributes in subscribed.items():
             rtia.subscribeObjectClassAttributes(cls, attributes)
         for interaction in interactions:
@@ -211,24 +283,23 @@ class FmuFederate:
 
     def step(self) -> None:
         """One co-simulation step from the current time t: inputs, ``doStep(t, h)``, the outputs sent stamped
-        t + h, ``timeAdvanceRequest(t + h)`` until granted. Raises :class:`StepFailed` (after resigning)."""
+        t + h, ``timeAdvanceRequest(t + h)`` until granted. Raises :class:`StepFailed` or (for a value received
+        that its input cannot decode) :class:`InputError`, after resigning."""
         assert self._instance is not None, "join() first"
         self.settle()
         t, h = self.time, self.step_size
         next_time = self._start_time + (self._steps + 1) * h  # the k-th grant is start + k h: no drift
         try:
+            if self._ambassador.error is not None:
+                raise self._ambassador.error
             self._instance.set(self._ambassador.received)
             self._ambassador.received = {}
             values = self._instance.do_step(t, h, list(self.mapping.outputs))
-        except StepFailed:
+        except (StepFailed, InputError):
             self.close()
             raise
-        updates: dict[str, dict[Any, bytes]] = {}
-        for output, value in values.items():
-            object_class, attribute, codec = self._handles[output]
-            updates.setdefault(object_class, {})[attribute] = codec.pack(value)
-        for object_class, attributes in updates.items():
-            self.rtia.updateAttributeValues(self._objects[object_class], attributes, self.name, next_time)
+        for send in self._sends:
+            send.send(self.rtia, values, self.name, next_time)
         self.time = self.rtia.advance_to(next_time, timeout=self.timeout)
         self._steps += 1
         self.trajectory.append((self.time, values))

@@ -51,6 +51,14 @@ def test_mirror_with_a_dead_gateway_says_so_in_one_line(tmp_path: pathlib.Path) 
     assert not left, left
 
 
+def test_fmu_drive_with_a_dead_gateway_says_so_in_one_line(tmp_path: pathlib.Path) -> None:
+    address = dead_address()
+    done = run("hlacore.experiments.fmu_drive", str(tmp_path / "out"), "--rtig", address)
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines() == [
+        f"python -m hlacore.experiments.fmu_drive: cannot connect to rtig at {address}: Connection refused"]
+
+
 def test_interrupted_main_job_keeps_its_partial_trace_and_plot(tmp_path: pathlib.Path) -> None:
     out, stderr_file = tmp_path / "out", tmp_path / "stderr"
     with Child([sys.executable, "-m", MAIN_JOB, "--out", str(out), "--cycles", "400"], stderr_path=stderr_file) as job:

@@ -458,6 +458,58 @@ def test_save_then_restore_mid_run_continues_to_the_same_end(fmu_federation: str
     assert first[-1][1]["y"] == pytest.approx(2.0 * (1 - math.exp(-1.0)))
 
 
+def test_a_save_and_a_restore_while_the_fmu_waits_for_its_grant(fmu_federation: str, lag_fmu: pathlib.Path,
+                                                                tmp_path: pathlib.Path) -> None:
+    """A regulating controller holds the FMU back: the save comes while the FMU waits for its grant of 0.5
+    (the step to 0.5 done and sent), the restore while it waits for 1.0. The restore ends that wait at once,
+    the FMU resumes at 0.4 with the step to 0.5 still to be granted, and the run ends on the lag's exact
+    trajectory, each grid time once."""
+    controller = Federate(fmu_federation, "controller", federation="FmuFed")
+    controller.enable_time(lookahead=H * (1 - LOOKAHEAD_MARGIN), constrained=False)
+    try:
+        with FmuFederate(lag_fmu, "FmuFed", step_size=H, address=fmu_federation, timeout=20.0,
+                         start_values={"u": 2.0}, save_dir=tmp_path / "saves") as federate:
+            federate.join()
+            failure: list[BaseException] = []
+
+            def run() -> None:
+                try:
+                    federate.run(2.0)
+                except BaseException as error:  # reported by the main thread
+                    failure.append(error)
+
+            def waiting_at(time: float) -> None:  # the FMU granted time, its next step sent and its grant awaited
+                tick_until(lambda: federate.time == pytest.approx(time) and federate.pending is not None,
+                           controller.rtia)
+
+            runner = threading.Thread(target=run)
+            runner.start()
+            controller.rtia.advance_to(0.4, timeout=20.0)  # the FMU may now reach 0.4, not 0.5
+            waiting_at(0.4)
+            controller.rtia.requestFederationSave("mid")
+            tick_until(lambda: controller.amb.named("initiateFederateSave"), controller.rtia)
+            controller.rtia.federateSaveComplete()
+            tick_until(lambda: controller.amb.named("federationSaved"), controller.rtia)
+            assert federate.saved == ["mid"]
+            controller.rtia.advance_to(0.9, timeout=20.0)
+            waiting_at(0.9)
+            controller.rtia.requestFederationRestore("mid")
+            tick_until(lambda: controller.amb.named("initiateFederateRestore"), controller.rtia)
+            controller.rtia.federateRestoreComplete()
+            tick_until(lambda: controller.amb.named("federationRestored"), controller.rtia)
+            assert controller.rtia.queryFederateTime() == pytest.approx(0.4)
+            for k in range(5, 21):
+                controller.rtia.advance_to(k * H, timeout=20.0)
+            runner.join(timeout=30.0)
+            assert not runner.is_alive() and not failure, failure
+    finally:
+        controller.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+    assert federate.restored == ["mid"] and not federate.save_errors
+    assert [t for t, _ in federate.trajectory] == pytest.approx([k * H for k in range(21)])
+    assert [v["y"] for _, v in federate.trajectory] == pytest.approx(
+        [2.0 * (1 - math.exp(-k * H)) for k in range(21)], rel=1e-12, abs=1e-15)
+
+
 def test_an_fmu_that_cannot_save_makes_the_save_fail_clearly(fmu_federation: str, lag_fmu: pathlib.Path,
                                                              tmp_path: pathlib.Path) -> None:
     """An FMU whose model description says it cannot get and set its state answers the save with

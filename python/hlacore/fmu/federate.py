@@ -204,6 +204,7 @@ class FmuFederate:
         self._saving = False
         self._restoring = False
         self._sends: list[_Send] = []
+        self._in_flight: Optional[tuple[float, dict[str, Any]]] = None  # a step done and sent, not yet granted
         #: (time, {output: value}) at the start and after each step, as sent.
         self.trajectory: list[tuple[float, dict[str, Any]]] = []
         self.time = 0.0
@@ -220,6 +221,11 @@ class FmuFederate:
     def lookahead(self) -> float:
         """The lookahead: the step size, less :data:`LOOKAHEAD_MARGIN` of it."""
         return self.step_size * (1.0 - LOOKAHEAD_MARGIN)
+
+    @property
+    def pending(self) -> Optional[float]:
+        """The time of the step done and sent whose grant has not come yet, if any."""
+        return None if self._in_flight is None else self._in_flight[0]
 
     @property
     def rtia(self) -> rti.RTIAmbassador:
@@ -284,25 +290,36 @@ class FmuFederate:
     def step(self) -> None:
         """One co-simulation step from the current time t: inputs, ``doStep(t, h)``, the outputs sent stamped
         t + h, ``timeAdvanceRequest(t + h)`` until granted. Raises :class:`StepFailed` or (for a value received
-        that its input cannot decode) :class:`InputError`, after resigning."""
+        that its input cannot decode) :class:`InputError`, after resigning.
+
+        A save taken while the request waits keeps the step as done and sent; a restore while it waits
+        returns at once, with the federate where that save left it; the next call resumes from there."""
         assert self._instance is not None, "join() first"
         self.settle()
-        t, h = self.time, self.step_size
-        next_time = self._start_time + (self._steps + 1) * h  # the k-th grant is start + k h: no drift
-        try:
-            if self._ambassador.error is not None:
-                raise self._ambassador.error
-            self._instance.set(self._ambassador.received)
-            self._ambassador.received = {}
-            values = self._instance.do_step(t, h, list(self.mapping.outputs))
-        except (StepFailed, InputError):
-            self.close()
-            raise
-        for send in self._sends:
-            send.send(self.rtia, values, self.name, next_time)
-        self.time = self.rtia.advance_to(next_time, timeout=self.timeout)
+        if self._in_flight is None:
+            t, h = self.time, self.step_size
+            next_time = self._start_time + (self._steps + 1) * h  # the k-th grant is start + k h: no drift
+            try:
+                if self._ambassador.error is not None:
+                    raise self._ambassador.error
+                self._instance.set(self._ambassador.received)
+                self._ambassador.received = {}
+                values = self._instance.do_step(t, h, list(self.mapping.outputs))
+            except (StepFailed, InputError):
+                self.close()
+                raise
+            for send in self._sends:
+                send.send(self.rtia, values, self.name, next_time)
+            self._in_flight = (next_time, values)
+        next_time, values = self._in_flight
+        restores = len(self.restored)
+        granted = self.rtia.advance_to(next_time, timeout=self.timeout)
+        if len(self.restored) != restores:
+            return  # the restore dropped the request and put the federate back where the save found it
+        self.time = granted
         self._steps += 1
         self.trajectory.append((self.time, values))
+        self._in_flight = None
 
     def run(self, stop_time: float) -> list[tuple[float, dict[str, Any]]]:
         """Step until ``stop_time`` (steps of the step size from the time joined; the last may end past it by
@@ -337,7 +354,7 @@ class FmuFederate:
             assert self._instance is not None
             fmu_state = self._instance.save_state()
             own = {"time": self.time, "start_time": self._start_time, "steps": self._steps,
-                   "received": self._ambassador.received, "trajectory": self.trajectory,
+                   "received": self._ambassador.received, "trajectory": self.trajectory, "in_flight": self._in_flight,
                    "fmu_state": base64.b64encode(fmu_state).decode()}
             self.save_dir.mkdir(parents=True, exist_ok=True)
             partial = self.state_file(label).with_suffix(".part")
@@ -365,6 +382,8 @@ class FmuFederate:
         self.time, self._start_time, self._steps = own["time"], own["start_time"], own["steps"]
         self._ambassador.received = own["received"]
         self.trajectory = [(t, values) for t, values in own["trajectory"]]
+        in_flight = own.get("in_flight")
+        self._in_flight = None if in_flight is None else (in_flight[0], in_flight[1])
         self.restored.append(label)
         self.rtia.federateRestoreComplete()
 

@@ -577,6 +577,97 @@ def test_a_python_fmu_behind_a_c_fmu(inprocess_gateway: hlacore.Gateway, lag_fmu
     assert gain_y[-1] > 1.5
 
 
+def test_an_output_that_follows_its_input_directly_goes_out_at_the_inputs_time(gateway_address: str,
+                                                                              tmp_path: pathlib.Path,
+                                                                              tmp_path_factory: pytest.TempPathFactory
+                                                                              ) -> None:
+    """The C gain of tests/data/fmu/gain2 declares y = 2 u with direct feedthrough: the federate steps with
+    lookahead 0 and sends y stamped at the time of the u it follows, so the feeder's grant of t brings
+    y(t) = 2 u(t), without the step of delay of FMPy's loop (asked with feedthrough=False: y(t + h) = 2 u(t))."""
+    gain_fmu = build_fmu("gain2", tmp_path_factory.getbasetemp() / "fmus")
+    fed = tmp_path / "gain.fed"
+    fed.write_text(Mapping.by_name(FmuModel(gain_fmu)).fed("GainFed"))
+    runs = {}
+    for feedthrough in (True, False):
+        rti.RTIAmbassador(gateway_address).createFederationExecution("GainFed", str(fed))
+        feeder = Federate(gateway_address, "feeder", federation="GainFed")
+        try:
+            feeder.enable_time(lookahead=H * (1 - LOOKAHEAD_MARGIN))
+            gain = feeder.rtia.getObjectClassHandle("Gain")
+            u, y = (feeder.rtia.getAttributeHandle(name, gain) for name in ("u", "y"))
+            feeder.rtia.publishObjectClass(gain, [u])
+            feeder.rtia.subscribeObjectClassAttributes(gain, [y])
+            source = feeder.rtia.registerObjectInstance(gain, "source")
+            with FmuFederate(gain_fmu, "GainFed", step_size=H, address=gateway_address, timeout=20.0,
+                             start_values={"u": signal(0)}, feedthrough=None if feedthrough else False) as federate:
+                assert federate.feedthrough is feedthrough
+                federate.join()
+                assert not run_beside(federate, feeder, lambda k: feeder.rtia.updateAttributeValues(
+                    source, {u: F64.pack(signal(k))}, "feeder", k * H))
+                assert federate.lookahead == (0.0 if feedthrough else H * (1 - LOOKAHEAD_MARGIN))
+        finally:
+            feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+            rti.RTIAmbassador(gateway_address).destroyFederationExecution("GainFed")
+        # each reflection of y, and the grant it came before
+        seen, grant = [], 0.0
+        for name, args in reversed(feeder.amb.calls):
+            if name == "timeAdvanceGrant":
+                grant = args[0]
+            elif name == "reflectAttributeValues" and y in args[1]:
+                seen.append((args[5], grant, F64.unpack(args[1][y])[0]))
+        runs[feedthrough] = sorted(seen)
+    assert [t for t, _, _ in runs[True]] == pytest.approx([k * H for k in range(1, STEPS + 1)])
+    assert [g for _, g, _ in runs[True]] == [t for t, _, _ in runs[True]]  # y(t) came with the grant of t
+    assert [v for _, _, v in runs[True]] == pytest.approx([2 * signal(min(k, STEPS - 1)) for k in range(1, STEPS + 1)],
+                                                          rel=1e-15)
+    assert [t for t, _, _ in runs[False]] == pytest.approx([k * H for k in range(1, STEPS + 1)])
+    assert [v for _, _, v in runs[False]] == pytest.approx([2 * signal(k - 1) for k in range(1, STEPS + 1)], rel=1e-15)
+
+
+def test_an_input_stamped_after_a_feedthrough_fmu_took_its_inputs_is_an_input_error(
+        gateway_address: str, tmp_path: pathlib.Path, tmp_path_factory: pytest.TempPathFactory) -> None:
+    """A feeder with lookahead 0 (as another FMU with direct feedthrough would be) is granted 0.2 "available",
+    like the gain, and sends u stamped 0.2 once the gain has taken its inputs of 0.2: the gain cannot use it at
+    0.2 any more, and says so with InputError at its next step, after resigning."""
+    gain_fmu = build_fmu("gain2", tmp_path_factory.getbasetemp() / "fmus")
+    fed = tmp_path / "gain.fed"
+    fed.write_text(Mapping.by_name(FmuModel(gain_fmu)).fed("GainFed"))
+    rti.RTIAmbassador(gateway_address).createFederationExecution("GainFed", str(fed))
+    feeder = Federate(gateway_address, "feeder", federation="GainFed")
+    try:
+        feeder.enable_time(lookahead=0.0)
+        gain = feeder.rtia.getObjectClassHandle("Gain")
+        u = feeder.rtia.getAttributeHandle("u", gain)
+        feeder.rtia.publishObjectClass(gain, [u])
+        source = feeder.rtia.registerObjectInstance(gain, "source")
+        with FmuFederate(gain_fmu, "GainFed", step_size=H, address=gateway_address, timeout=20.0) as federate:
+            federate.join()
+            failure: list[BaseException] = []
+
+            def run() -> None:
+                try:
+                    federate.run(STEPS * H)
+                except BaseException as error:  # reported by the main thread
+                    failure.append(error)
+
+            runner = threading.Thread(target=run)
+            runner.start()
+            for k in (1, 2):
+                feeder.rtia.timeAdvanceRequestAvailable(k * H)
+                feeder.rtia.await_grant(timeout=20.0)
+                tick_until(lambda: federate.pending == pytest.approx((k + 1) * H), feeder.rtia)  # took u(k h)
+            feeder.rtia.updateAttributeValues(source, {u: F64.pack(1.0)}, "feeder", 2 * H)
+            feeder.rtia.timeAdvanceRequestAvailable(3 * H)
+            feeder.rtia.await_grant(timeout=20.0)
+            runner.join(timeout=30.0)
+            assert not runner.is_alive()
+    finally:
+        feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        rti.RTIAmbassador(gateway_address).destroyFederationExecution("GainFed")  # the gain resigned
+    assert [type(error) for error in failure] == [InputError]
+    assert "u: instance 'source' sent a value stamped 0.2 after the inputs of 0.2 were taken" in str(failure[0])
+
+
 def test_direct_feedthrough_and_state_saving_are_read_from_the_model_description(
         lag_fmu: pathlib.Path, gain_fmu: pathlib.Path, tmp_path_factory: pytest.TempPathFactory) -> None:
     """The lags declare y independent of u and their state saveable; the pythonfmu gain declares no dependencies

@@ -42,12 +42,15 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--mapping", help="a TOML mapping of variables to attributes (default: by name)")
     p.add_argument("--start", action="append", type=_start_value, default=[], metavar="NAME=VALUE",
                    help="a start value or parameter (repeatable)")
-    p.add_argument("--step-size", type=float, help="the co-simulation step, also the lookahead "
-                   "(default: the model's DefaultExperiment)")
+    p.add_argument("--step-size", type=float, help="the co-simulation step, also the lookahead without "
+                   "--feedthrough (default: the model's DefaultExperiment)")
     p.add_argument("--stop-time", type=float, help="default: the model's DefaultExperiment")
     p.add_argument("--write-fom", metavar="FED", help="write the .fed of the mapping to FED and exit")
     p.add_argument("--save-dir", help="where federation saves keep the FMU's state (default: the current directory)")
     p.add_argument("--csv", metavar="PATH", help="write the outputs sent, one row per step")
+    p.add_argument("--feedthrough", action=argparse.BooleanOptionalAction, default=None,
+                   help="send outputs at the time of the inputs they follow, with lookahead 0 (default: when the "
+                   "model description says an output depends directly on an input)")
     return p
 
 
@@ -69,7 +72,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             raise FmuError(f"{args.fmu}: no default experiment; give --step-size and --stop-time")
         with FmuFederate(args.fmu, args.federation, step_size=float(step), name=args.name, address=args.address,
                          fed_file=args.fed, mapping=mapping, start_values=dict(args.start),
-                         save_dir=args.save_dir) as federate:
+                         save_dir=args.save_dir, feedthrough=args.feedthrough) as federate:
             federate.join()
             trajectory = federate.run(float(stop))
     except FmuError as error:

@@ -62,6 +62,7 @@ class _Ambassador(rti.FederateAmbassador):
         self.parameters: dict[tuple[Any, Any], list[_Input]] = {}  # (interaction, parameter) -> the same
         self.received: dict[str, Any] = {}
         self.error: Optional[InputError] = None
+        self.taken: Optional[float] = None  # with feedthrough: the time of the inputs last taken
 
     def discoverObjectInstance(self, obj: Any, objectClass: Any, name: str) -> None:
         """Note the instance's class and name, to read its reflections (HLA 1.3 §6.3)."""
@@ -72,17 +73,24 @@ class _Ambassador(rti.FederateAmbassador):
         """Keep the mapped attributes' values as the inputs' next values (HLA 1.3 §6.4)."""
         cls, name = self.instances.get(obj, (None, ""))
         for attribute, data in attributes.items():
-            self._keep(self.inputs.get((cls, attribute), []), data, f"instance {name!r}", name)
+            self._keep(self.inputs.get((cls, attribute), []), data, f"instance {name!r}", name, time)
 
     def receiveInteraction(self, interactionClass: Any, parameters: dict[Any, bytes], tag: str, order: Any,
                            transport: Any, time: Optional[float] = None, retraction: Any = None) -> None:
         """Keep the mapped parameters' values as the inputs' next values (HLA 1.3 §6.6)."""
         for parameter, data in parameters.items():
-            self._keep(self.parameters.get((interactionClass, parameter), []), data, "an interaction", None)
+            self._keep(self.parameters.get((interactionClass, parameter), []), data, "an interaction", None, time)
 
-    def _keep(self, inputs: list[_Input], data: bytes, source: str, instance: Optional[str]) -> None:
+    def _keep(self, inputs: list[_Input], data: bytes, source: str, instance: Optional[str],
+              time: Optional[float]) -> None:
         for target in inputs:
             if target.instance is not None and target.instance != instance:
+                continue
+            if time is not None and self.taken is not None and time <= self.taken:
+                self.error = self.error or InputError(
+                    f"{target.variable}: {source} sent a value stamped {time:g} after the inputs of {self.taken:g} "
+                    f"were taken: from a federate with lookahead 0, such as another FMU with direct feedthrough; "
+                    f"run this one with feedthrough off (docs/fmu.md)")
                 continue
             try:
                 self.received[target.variable] = target.decode(data, source)
@@ -125,7 +133,7 @@ class _Send:
     def __init__(self, rtia: rti.RTIAmbassador, endpoint: Endpoint) -> None:
         self.object_class = endpoint.object_class
         self.interaction = endpoint.interaction
-        self.handle = (rtia.getInteractionClassHandle if self.interaction else rtia.getObjectClassHandle)(
+        self.handle: Any = (rtia.getInteractionClassHandle if self.interaction else rtia.getObjectClassHandle)(
             endpoint.object_class)
         self.members: dict[Any, tuple[list[str], Any]] = {}  # member handle -> (outputs, their encoding)
         self.constants: dict[Any, bytes] = {}  # member handle -> its value, encoded
@@ -170,7 +178,7 @@ class FmuFederate:
                  name: Optional[str] = None, address: Optional[str] = None, fed_file: Optional[str] = None,
                  mapping: Union[Mapping, str, pathlib.Path, None] = None,
                  start_values: Optional[dict[str, Any]] = None, timeout: Optional[float] = 60.0,
-                 save_dir: Union[str, pathlib.Path, None] = None) -> None:
+                 save_dir: Union[str, pathlib.Path, None] = None, feedthrough: Optional[bool] = None) -> None:
         if not (step_size > 0 and math.isfinite(step_size)):
             raise FmuError(f"step size {step_size}: a positive number of seconds")
         self.model = FmuModel(fmu)
@@ -183,6 +191,10 @@ class FmuFederate:
             self.mapping = Mapping.load(mapping, self.model)
         for variable, value in (start_values or {}).items():
             check_value(self.model, variable, value)
+        #: Whether outputs are sent at the time of the inputs they follow (lookahead 0: docs/fmu.md, "Direct
+        #: feedthrough"); by default, when the model description says an output depends directly on an input.
+        self.feedthrough = (bool(self.model.direct_feedthrough and self.mapping.inputs and self.mapping.outputs)
+                            if feedthrough is None else bool(feedthrough))
         self.federation = federation
         self.name = name or self.model.name
         self.step_size = float(step_size)
@@ -204,7 +216,8 @@ class FmuFederate:
         self._saving = False
         self._restoring = False
         self._sends: list[_Send] = []
-        self._in_flight: Optional[tuple[float, dict[str, Any]]] = None  # a step done and sent, not yet granted
+        self._in_flight: Optional[tuple[float, Optional[dict[str, Any]]]] = None  # a step done, not yet granted
+        self._lookahead_now = 0.0
         #: (time, {output: value}) at the start and after each step, as sent.
         self.trajectory: list[tuple[float, dict[str, Any]]] = []
         self.time = 0.0
@@ -219,8 +232,19 @@ class FmuFederate:
 
     @property
     def lookahead(self) -> float:
-        """The lookahead: the step size, less :data:`LOOKAHEAD_MARGIN` of it."""
+        """The lookahead while stepping: the step size, less :data:`LOOKAHEAD_MARGIN` of it; 0 with
+        :attr:`feedthrough`, which has the step's between runs (at the start time and once :meth:`run` returns:
+        it sends nothing more at its time, so that others may be granted it)."""
+        return 0.0 if self.feedthrough else self._step_lookahead
+
+    @property
+    def _step_lookahead(self) -> float:
         return self.step_size * (1.0 - LOOKAHEAD_MARGIN)
+
+    def _set_lookahead(self, lookahead: float) -> None:
+        if lookahead != self._lookahead_now:
+            self.rtia.modifyLookahead(lookahead)
+            self._lookahead_now = lookahead
 
     @property
     def pending(self) -> Optional[float]:
@@ -243,7 +267,11 @@ class FmuFederate:
         try:
             self._rtia = rti.RTIAmbassador(self._address)
             self._rtia.create_or_join(self.name, self.federation, self._fed_file, self._ambassador)
-            self.time = self._start_time = self._rtia.enable_time_management(self.lookahead, timeout=self.timeout)
+            # With the step's lookahead even for feedthrough (lowered by each step): a zero-lookahead newcomer would
+            # start at the others' promise (docs/time-management.md), off their grid.
+            self.time = self._start_time = self._rtia.enable_time_management(self._step_lookahead,
+                                                                             timeout=self.timeout)
+            self._lookahead_now = self._step_lookahead
             self._declare()
             self.trajectory.append((self.time, self._instance.get(outputs)))
         except BaseException:
@@ -296,30 +324,61 @@ class FmuFederate:
         returns at once, with the federate where that save left it; the next call resumes from there."""
         assert self._instance is not None, "join() first"
         self.settle()
+        self._set_lookahead(self.lookahead)
         if self._in_flight is None:
             t, h = self.time, self.step_size
             next_time = self._start_time + (self._steps + 1) * h  # the k-th grant is start + k h: no drift
+            values: Optional[dict[str, Any]] = None
             try:
-                if self._ambassador.error is not None:
-                    raise self._ambassador.error
-                self._instance.set(self._ambassador.received)
-                self._ambassador.received = {}
-                values = self._instance.do_step(t, h, list(self.mapping.outputs))
+                if self.feedthrough:  # inputs set and outputs sent at the grant (_exchange)
+                    self._instance.do_step(t, h, [])
+                else:
+                    self._take_inputs()
+                    values = self._instance.do_step(t, h, list(self.mapping.outputs))
             except (StepFailed, InputError):
                 self.close()
                 raise
-            for send in self._sends:
-                send.send(self.rtia, values, self.name, next_time)
+            if values is not None:
+                self._send(values, next_time)
             self._in_flight = (next_time, values)
         next_time, values = self._in_flight
         restores = len(self.restored)
-        granted = self.rtia.advance_to(next_time, timeout=self.timeout)
+        if self.feedthrough:  # granted "available": it may then send at the grant's time
+            self.rtia.timeAdvanceRequestAvailable(next_time)
+            granted = self.rtia.await_grant(timeout=self.timeout)
+        else:
+            granted = self.rtia.advance_to(next_time, timeout=self.timeout)
         if len(self.restored) != restores:
             return  # the restore dropped the request and put the federate back where the save found it
         self.time = granted
         self._steps += 1
-        self.trajectory.append((self.time, values))
+        self.trajectory.append((self.time, values if values is not None else self._exchange(granted)))
         self._in_flight = None
+
+    def _take_inputs(self) -> None:
+        """Set the inputs to the values received (InputError for one that could not be decoded)."""
+        if self._ambassador.error is not None:
+            raise self._ambassador.error
+        assert self._instance is not None
+        self._instance.set(self._ambassador.received)
+        self._ambassador.received = {}
+
+    def _send(self, values: dict[str, Any], time: float) -> None:
+        for send in self._sends:
+            send.send(self.rtia, values, self.name, time)
+
+    def _exchange(self, time: float) -> dict[str, Any]:
+        """With :attr:`feedthrough`, at a grant: the inputs set, the outputs read and sent stamped ``time``."""
+        assert self._instance is not None
+        try:
+            self._take_inputs()
+            self._ambassador.taken = time
+            values = self._instance.outputs(list(self.mapping.outputs), time)
+        except (StepFailed, InputError):
+            self.close()
+            raise
+        self._send(values, time)
+        return values
 
     def run(self, stop_time: float) -> list[tuple[float, dict[str, Any]]]:
         """Step until ``stop_time`` (steps of the step size from the time joined; the last may end past it by
@@ -327,6 +386,7 @@ class FmuFederate:
         self.settle()
         while self.time < stop_time - 1e-9 * self.step_size:
             self.step()
+        self._set_lookahead(self._step_lookahead)
         return self.trajectory
 
     def state_file(self, label: str) -> pathlib.Path:
@@ -381,6 +441,7 @@ class FmuFederate:
             return
         self.time, self._start_time, self._steps = own["time"], own["start_time"], own["steps"]
         self._ambassador.received = own["received"]
+        self._ambassador.taken = None
         self.trajectory = [(t, values) for t, values in own["trajectory"]]
         in_flight = own.get("in_flight")
         self._in_flight = None if in_flight is None else (in_flight[0], in_flight[1])

@@ -170,14 +170,14 @@ class Mapping:
             if len({ENCODINGS[model.variables[o].type] for o in outputs}) > 1:
                 raise MappingError(f"{where}: [outputs] {member}: its elements are of different types")
         classes = {(e.object_class, e.interaction) for e in self.outputs.values()}
-        for member, value in self.constants.items():
-            endpoint = Endpoint.parse(member, f"{where}: [constants]")
+        for name, value in self.constants.items():
+            endpoint = Endpoint.parse(name, f"{where}: [constants]")
             if {(endpoint.object_class, False), (endpoint.object_class, True)}.isdisjoint(classes):
-                raise MappingError(f"{where}: [constants] {member}: {endpoint.object_class} is no class the "
+                raise MappingError(f"{where}: [constants] {name}: {endpoint.object_class} is no class the "
                                    f"outputs are sent as")
-            if any(m.member == member for m in members):
-                raise MappingError(f"{where}: [constants] {member}: an output is mapped to it too")
-            constant_encoding(value, f"{where}: [constants] {member}")
+            if any(m.member == name for m in members):
+                raise MappingError(f"{where}: [constants] {name}: an output is mapped to it too")
+            constant_encoding(value, f"{where}: [constants] {name}")
 
     def members(self) -> dict[Endpoint, list[str]]:
         """Each output member (its endpoint without element) and the outputs that fill it, in element order."""

@@ -226,10 +226,14 @@ class FmuInstance:
             raise StepFailed(f"{self.model.path}: doStep at t = {time:g} failed: {error}") from error
         if self.model.fmi3 and result[1]:  # (eventHandlingNeeded, terminateSimulation, earlyReturn, last time)
             raise StepFailed(f"{self.model.path}: the FMU asked to terminate the simulation at t = {time + step:g}")
-        values = self.get(outputs)
+        return self.outputs(outputs, time + step)
+
+    def outputs(self, names: list[str], time: float) -> dict[str, Any]:
+        """The outputs ``names`` at ``time`` (:meth:`get`); :class:`StepFailed` when one is not finite."""
+        values = self.get(names)
         for name, value in values.items():
             if isinstance(value, float) and not math.isfinite(value):
-                raise StepFailed(f"{self.model.path}: output {name} = {value} at t = {time + step:g}")
+                raise StepFailed(f"{self.model.path}: output {name} = {value} at t = {time:g}")
         return values
 
     def save_state(self) -> bytes:

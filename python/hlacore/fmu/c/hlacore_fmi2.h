@@ -8,6 +8,11 @@
  *     static int model_settable(fmi2ValueReference vr); whether fmi2SetReal may set vr (inputs, parameters)
  *     static int model_step(double v[], double t, double h);  one step from t; 0, or -1 when it fails
  *
+ * and, when an output depends directly on an input (direct feedthrough: the model description lists the input
+ * among the output's dependencies), `#define MODEL_OUTPUTS model_outputs` and
+ *
+ *     static void model_outputs(double v[]);            the outputs from the inputs set, before each get
+ *
  * Everything else FMI 2 asks of a co-simulation FMU is here: its state (the values and the time) can be got,
  * set and serialised, so a federation save includes it; Integer, Boolean and String variables do not exist;
  * derivatives and asynchronous steps are refused, as FMI 2 lets an FMU that does not declare them. */
@@ -68,6 +73,9 @@ fmi2Status fmi2Reset(fmi2Component c) { (void)c; return fmi2Error; }
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Real value[]) {
     State *s = &((Instance *)c)->state;
+#ifdef MODEL_OUTPUTS
+    MODEL_OUTPUTS(s->values);
+#endif
     for (size_t i = 0; i < n; i++) {
         if (vr[i] >= MODEL_REALS) return fmi2Error;
         value[i] = s->values[vr[i]];

@@ -14,7 +14,7 @@ import sys
 import tempfile
 import threading
 import zipfile
-from typing import Any, Callable, Iterator
+from typing import Callable, Iterator
 
 import fmpy  # the test extra installs it
 import numpy as np

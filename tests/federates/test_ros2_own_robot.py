@@ -8,27 +8,17 @@ from __future__ import annotations
 
 import os
 import pathlib
-import re
-import signal
 import sys
 
 import pytest
 
-from hlacore.processes import Child, descendants, still_running
+from hlacore.processes import still_running
 
-from support import ROOT, RtigProcess
+from support import RtigProcess
+from support.own_robot import EXAMPLE, run_walkthrough
 from support.ros2 import ros2_space
 
 pytestmark = pytest.mark.slow  # rtig, the robot node, the bridge and a federate, as the walkthrough runs them
-
-EXAMPLE = ROOT / "docs" / "own-robot"
-
-
-def read_until(child: Child, prefix: str, timeout: float) -> str:
-    line = child.read_line(timeout)
-    while not line.startswith(prefix):
-        line = child.read_line(timeout)
-    return line
 
 
 def test_the_ros2_walkthrough_drives_a_ros2_robot_from_an_hla_federate(tmp_path: pathlib.Path) -> None:
@@ -40,31 +30,12 @@ def test_the_ros2_walkthrough_drives_a_ros2_robot_from_an_hla_federate(tmp_path:
                    PYTHONUNBUFFERED="1")
         rtig = RtigProcess(tmp_path, prefix=inside)
         try:
-            with Child([*inside, python, "-m", "hlacore.federates.ros_bridge.ros2_env", "python",
-                        str(EXAMPLE / "my_robot2.py"), "myrobot", "--wall", "2.0"], env=env) as robot, \
-                    Child([*inside, python, "-m", "hlacore.federates.ros_bridge", "--ros", "2", "--rtig",
-                           rtig.address, "--robot-node", "myrobot", "--sensor", "range", "--untimed"],
-                          env=env) as bridge:
-                read_until(robot, "my_robot ready", 30)
-                read_until(bridge, "ros_bridge ready", 30)
-                with Child([*inside, python, str(EXAMPLE / "drive.py"), "myrobot", "--rtig", rtig.address,
-                            "--timeout", "60"], env=env) as drive:
-                    line = read_until(drive, "drive:", 90)
-                    assert drive.wait(30) == 0, drive.stderr()
-                found = re.fullmatch(r"drive: myrobot stopped ([0-9.]+) m from the obstacle, at x=([0-9.]+) m", line)
-                assert found, line
-                # as on ROS 1 (tests/federates/test_ros_own_robot.py): 20 Hz sensing at 0.3 m/s
-                assert 0.35 <= float(found[1]) <= 0.5 and 1.48 <= float(found[2]) <= 1.65
-                family = descendants(robot.pid) + descendants(bridge.pid)
-                for child in (robot, bridge):
-                    child.send_signal(signal.SIGINT)
-                assert robot.wait(30) == 0, robot.stderr()
-                assert bridge.wait(30) == 0, bridge.stderr()
-                stopped = read_until(robot, "my_robot stopped at x=", 5)
-                assert 1.5 <= float(stopped.split("x=")[1].split()[0]) <= 1.7
-                summary = read_until(bridge, "ros_bridge stopped", 5)
-                assert int(re.search(r"(\d+) Twists out", summary)[1]) > 0  # type: ignore[index]
-                assert "ROS 2" in summary
+            summary, family = run_walkthrough(
+                [python, "-m", "hlacore.federates.ros_bridge.ros2_env", "python", str(EXAMPLE / "my_robot2.py"),
+                 "myrobot", "--wall", "2.0"],
+                [python, "-m", "hlacore.federates.ros_bridge", "--ros", "2", "--rtig", rtig.address, "--robot-node",
+                 "myrobot", "--sensor", "range", "--untimed"], rtig.address, env, env, prefix=inside)
+            assert "ROS 2" in summary
         finally:
             assert rtig.stop() == 0, rtig.log()
     assert not [p for p in family if still_running(p)], family

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import math
 import os
 import pathlib
 import queue
@@ -201,3 +202,37 @@ def assert_seen_untimed(states: list[State], seen: Any) -> None:
     assert (seen["odom"]["x"], seen["odom"]["y"]) in odometries and seen["odom"]["x"] > 0.2
     assert seen["scan"]["ranges"] in [[f32(r) for r in ranges] for _pose, _o, ranges in states]
     assert any(o[3] == 0.5 for _pose, o, _ranges in states)
+
+
+def assert_seen_timed(states: dict[int, State], seen: Any, stamp_tolerance: float) -> None:
+    """What the teleop node saw in a timed round trip (``states`` by grant index): the robot drove at the commanded
+    0.5 m/s; the Odometry was stamped G + L with the world's odometry at G (float64: exact) and the node's frames;
+    the LaserScan and Range were the world's beams at G (float32 on the wire), the sonar's 40° fan."""
+    assert any(odom[3] == 0.5 for _pose, odom, _ranges in states.values())
+    odom = seen["odom"]
+    k = round(odom["stamp"] / PERIOD) - 1
+    assert odom["stamp"] == pytest.approx((k + 1) * PERIOD, abs=stamp_tolerance)
+    _pose, o, _ranges = states[k]
+    assert (odom["x"], odom["y"], odom["v"]) == (o[0], o[1], o[3])
+    assert odom["x"] > 0.2 and odom["frame"] == "rover/odom" and odom["child"] == "base_footprint"
+    scan = seen["scan"]
+    k = round(scan["stamp"] / PERIOD) - 1
+    assert scan["ranges"] == [f32(r) for r in states[k][2]]
+    assert scan["angle_min"] == pytest.approx(-0.349066, abs=1e-5) and scan["range_max"] == pytest.approx(4.0)
+    rng = seen["range"]
+    k = round(rng["stamp"] / PERIOD) - 1
+    assert rng["range"] == f32(min(states[k][2])) and rng["radiation_type"] == 0
+
+
+def assert_stage_on_its_own_clock(stage: Running, seen: Any, summary: pathlib.Path, stamp_tolerance: float) -> None:
+    """A stage node that ran on its own clock (``--rate``) for the teleop node (0.5 m/s): it stopped cleanly; the
+    Odometry came at the speed, stamped on interval_sim's grid; the LaserScan after it, with the world file's 5
+    beams over 40°; its ``--summary`` counts commands and one tick per time."""
+    assert stage.status == 0 and any(line.startswith("stage_node stopped at") for line in stage.lines), stage.lines
+    odom = seen["odom"]
+    assert odom["v"] == 0.5 and odom["x"] > 0.2 and odom["frame"] == "rover/odom"
+    assert odom["stamp"] == pytest.approx(round(odom["stamp"] / PERIOD) * PERIOD, abs=stamp_tolerance)
+    assert seen["scan"]["stamp"] >= odom["stamp"] and len(seen["scan"]["ranges"]) == 5
+    assert seen["scan"]["angle_min"] == pytest.approx(-math.radians(20), abs=1e-6)
+    ran = json.loads(summary.read_text())
+    assert ran["commands"] > 0 and ran["ticks"] == len(ran["times"]) > 0

@@ -48,4 +48,7 @@ fi
 export HLACORE_TEST_RTIG="$PWD/build/asan/rtig" HLACORE_TEST_RTIA="$PWD/build/asan/hlacore-rtia" \
     HLACORE_TEST_TCP_FLOOR="$PWD/build/asan/tcp_floor" \
     HLACORE_TEST_STATE_TYPES="$PWD/build/asan/state_types_test" HLACORE_TEST_HLA13="$PWD/build/hla13-tests"
-exec .venv/bin/python -m pytest "$@"
+# The tests run in parallel processes (pytest-xdist), one more than the cores: most of a test's time is waiting
+# (on a gateway, a child process, a timeout), and in one process the whole suite took two and a half times as long.
+# `-n 0` (or HLACORE_TEST_WORKERS=0) runs it in this process, for a debugger.
+exec .venv/bin/python -m pytest -n "${HLACORE_TEST_WORKERS:-$(( $(nproc) + 1 ))}" "$@"

@@ -7,7 +7,9 @@ in the root namespace (hlacore.link.Link, listening on a host's .254 address and
 host's .1), which is where the emulated link sits. ``lan(a, b)`` wires two hosts directly instead (a veth
 pair between their namespaces, 10.214.n.1 and .2), for traffic a relay cannot carry (ROS 1 nodes connect
 to each other on ports they choose). Everything is removed at the end, also after a failure;
-names carry this process's pid so that parallel runs do not collide. ``LoopbackNamespace`` is a namespace
+names carry this process's pid so that parallel runs do not collide, and the test processes of one run
+(pytest-xdist's workers) number their hosts apart, 16 each, since the root namespace holds every host's .254
+address. ``LoopbackNamespace`` is a namespace
 with loopback only and no link out, for ROS 2's DDS.
 """
 
@@ -21,6 +23,12 @@ from dataclasses import dataclass
 
 SUBNET = "10.213"
 LAN_SUBNET = "10.214"
+HOSTS_PER_WORKER = 16
+
+
+def _first_host() -> int:
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "gw0")  # gw0, gw1, ... under pytest-xdist
+    return 1 + HOSTS_PER_WORKER * int(worker[2:] or 0)
 
 
 @dataclass(frozen=True)
@@ -43,9 +51,9 @@ class NetHosts:
         self._tag = f"hlc{os.getpid() % 100000}"
 
     def add(self, name: str) -> Host:
-        k = len(self.hosts) + 1
-        if k > 250:
-            raise ValueError("at most 250 test hosts")
+        if len(self.hosts) == HOSTS_PER_WORKER:
+            raise ValueError(f"at most {HOSTS_PER_WORKER} test hosts")
+        k = _first_host() + len(self.hosts)
         namespace, outside, inside = f"{self._tag}-{name}", f"{self._tag}o{k}", f"{self._tag}i{k}"
         host = Host(name, namespace, f"{SUBNET}.{k}.1", f"{SUBNET}.{k}.254")
         _ip("netns", "add", namespace)

@@ -13,7 +13,10 @@ void Ambassador::unpublishObjectClassDirectedInteractions(ObjectClassHandle cls)
     guarded([&] { client().publish_directed(core(cls), {}, false); });
 }
 void Ambassador::unpublishObjectClassDirectedInteractions(ObjectClassHandle cls, InteractionClassHandleSet const& interactions) {
-    guarded([&] { if (!interactions.empty()) client().publish_directed(core(cls), cores(interactions), false); });
+    guarded([&] {
+        if (interactions.empty()) return client().check_directed_declaration(core(cls));  // nothing to withdraw
+        client().publish_directed(core(cls), cores(interactions), false);
+    });
 }
 void Ambassador::subscribeObjectClassDirectedInteractions(ObjectClassHandle cls, InteractionClassHandleSet const& interactions,
                                                           bool universally) {
@@ -25,7 +28,10 @@ void Ambassador::unsubscribeObjectClassDirectedInteractions(ObjectClassHandle cl
     guarded([&] { client().subscribe_directed(core(cls), {}, Receipt::None); });
 }
 void Ambassador::unsubscribeObjectClassDirectedInteractions(ObjectClassHandle cls, InteractionClassHandleSet const& interactions) {
-    guarded([&] { if (!interactions.empty()) client().subscribe_directed(core(cls), cores(interactions), Receipt::None); });
+    guarded([&] {
+        if (interactions.empty()) return client().check_directed_declaration(core(cls));  // nothing to withdraw
+        client().subscribe_directed(core(cls), cores(interactions), Receipt::None);
+    });
 }
 
 void Ambassador::sendDirectedInteraction(InteractionClassHandle cls, ObjectInstanceHandle object,

@@ -135,6 +135,10 @@ def test_directed_interactions_are_refused_with_the_standards_exceptions(road: A
     with pytest.raises(fedpro.rti_exception("ObjectClassNotDefined")):
         sender.rtia.publishObjectClassDirectedInteractions(objectClass=datatypes_handle(b"\x00\x00\x03\xe7", "ObjectClassHandle"),
                                                            interactionClasses=[sender.command])
+    for withdraw in (sender.rtia.unpublishObjectClassDirectedInteractionsWithSet,
+                     sender.rtia.unsubscribeObjectClassDirectedInteractionsWithSet):  # nothing to withdraw: still checked
+        with pytest.raises(fedpro.rti_exception("ObjectClassNotDefined")):
+            withdraw(objectClass=datatypes_handle(b"\x00\x00\x03\xe7", "ObjectClassHandle"), interactionClasses=[])
     sender.rtia.unpublishObjectClassDirectedInteractionsWithSet(objectClass=sender.vehicle, interactionClasses=[sender.command])
     with pytest.raises(fedpro.rti_exception("InteractionClassNotPublished")):
         send(sender, car, b"unpublished")

@@ -121,6 +121,9 @@ public:
     enum class DirectedReceipt : std::uint8_t { None, Owned, Universally };
     void subscribe_directed(fom::Handle object_class, const std::vector<fom::Handle>& interactions,
                             DirectedReceipt receipt);
+    // The checks of a declaration that changes nothing (no interaction class to withdraw): ObjectClassNotDefined,
+    // a save or restore under way.
+    void check_directed_declaration(fom::Handle object_class) const;
     // InteractionClassNotPublished unless published directed at the class the object is known as (or a superclass).
     std::uint64_t send_directed_interaction(fom::Handle cls, std::uint32_t object, wire::HandleValues values,
                                             const std::string& tag, wire::OptionalTime time);

@@ -34,6 +34,11 @@ void Client::check_directed(fom::Handle object_class, const std::vector<fom::Han
     for (auto ic : interactions) defined_interaction_class(ic);
 }
 
+void Client::check_directed_declaration(fom::Handle object_class) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    check_directed(object_class, {});
+}
+
 void Client::publish_directed(fom::Handle object_class, const std::vector<fom::Handle>& interactions, bool adding) {
     wire::PublishDirectedInteractions m{object_class, {}};
     {

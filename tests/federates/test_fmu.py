@@ -6,6 +6,7 @@ joining, or after a clean resign, leaving nothing behind."""
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 import pathlib
@@ -80,26 +81,38 @@ def signal(k: int) -> float:
     return 1.0 + math.sin(3.0 * k * H)
 
 
+@contextlib.contextmanager
+def running(*federates: FmuFederate, stop_time: float = STEPS * H) -> Iterator[list[BaseException]]:
+    """Each federate's ``run(stop_time)`` on a thread of its own while the block runs; the threads are joined
+    at its end (they must have ended by then); yields the list of what the runs raised, complete after it."""
+    failures: list[BaseException] = []
+
+    def run(federate: FmuFederate) -> None:
+        try:
+            federate.run(stop_time)
+        except BaseException as error:  # reported by the caller
+            failures.append(error)
+
+    threads = [threading.Thread(target=run, args=(federate,)) for federate in federates]
+    for thread in threads:
+        thread.start()
+    try:
+        yield failures
+    finally:
+        for thread in threads:
+            thread.join(timeout=30.0)
+    assert not any(thread.is_alive() for thread in threads)
+
+
 def run_beside(federate: FmuFederate, feeder: Federate, send: Callable[[int], object]) -> list[BaseException]:
     """Run ``federate`` to STEPS h on a thread while ``feeder`` calls ``send(k)`` (to send stamped k h) and
     advances to k h, for k = 1 .. STEPS - 1 (and advances to STEPS h); what the run raised."""
-    failure: list[BaseException] = []
-
-    def run() -> None:
-        try:
-            federate.run(STEPS * H)
-        except BaseException as error:  # reported by the main thread
-            failure.append(error)
-
-    runner = threading.Thread(target=run)
-    runner.start()
-    for k in range(1, STEPS + 1):
-        if k < STEPS:
-            send(k)
-        assert feeder.rtia.advance_to(k * H, timeout=20.0) == pytest.approx(k * H)
-    runner.join(timeout=30.0)
-    assert not runner.is_alive()
-    return failure
+    with running(federate) as failures:
+        for k in range(1, STEPS + 1):
+            if k < STEPS:
+                send(k)
+            assert feeder.rtia.advance_to(k * H, timeout=20.0) == pytest.approx(k * H)
+    return failures
 
 
 def test_against_a_feeder_gives_fmpys_trajectory(fmu_federation: str, any_lag: pathlib.Path,
@@ -387,23 +400,12 @@ def test_two_fmus_coupled_through_the_federation(inprocess_gateway: hlacore.Gate
     federates = {name: FmuFederate(lag_fmu, "Coupled", step_size=H, name=name, address=address,
                                    mapping=tmp_path / f"{name}.toml", start_values=parameters[name], timeout=20.0)
                  for name in ("a", "b")}
-    failures: list[BaseException] = []
-
-    def run(federate: FmuFederate) -> None:
-        try:
-            federate.run(STEPS * H)
-        except BaseException as error:  # reported by the main thread
-            failures.append(error)
-
     try:
         for federate in federates.values():
             federate.join()
-        threads = [threading.Thread(target=run, args=(federate,)) for federate in federates.values()]
-        for thread in threads:
-            thread.start()
-        for thread in threads:
-            thread.join(timeout=30.0)
-        assert not any(thread.is_alive() for thread in threads) and not failures, failures
+        with running(*federates.values()) as failures:
+            pass
+        assert not failures, failures
     finally:
         for federate in federates.values():
             federate.close()
@@ -470,38 +472,29 @@ def test_a_save_and_a_restore_while_the_fmu_waits_for_its_grant(fmu_federation: 
         with FmuFederate(lag_fmu, "FmuFed", step_size=H, address=fmu_federation, timeout=20.0,
                          start_values={"u": 2.0}, save_dir=tmp_path / "saves") as federate:
             federate.join()
-            failure: list[BaseException] = []
-
-            def run() -> None:
-                try:
-                    federate.run(2.0)
-                except BaseException as error:  # reported by the main thread
-                    failure.append(error)
 
             def waiting_at(time: float) -> None:  # the FMU granted time, its next step sent and its grant awaited
                 tick_until(lambda: federate.time == pytest.approx(time) and federate.pending is not None,
                            controller.rtia)
 
-            runner = threading.Thread(target=run)
-            runner.start()
-            controller.rtia.advance_to(0.4, timeout=20.0)  # the FMU may now reach 0.4, not 0.5
-            waiting_at(0.4)
-            controller.rtia.requestFederationSave("mid")
-            tick_until(lambda: controller.amb.named("initiateFederateSave"), controller.rtia)
-            controller.rtia.federateSaveComplete()
-            tick_until(lambda: controller.amb.named("federationSaved"), controller.rtia)
-            assert federate.saved == ["mid"]
-            controller.rtia.advance_to(0.9, timeout=20.0)
-            waiting_at(0.9)
-            controller.rtia.requestFederationRestore("mid")
-            tick_until(lambda: controller.amb.named("initiateFederateRestore"), controller.rtia)
-            controller.rtia.federateRestoreComplete()
-            tick_until(lambda: controller.amb.named("federationRestored"), controller.rtia)
-            assert controller.rtia.queryFederateTime() == pytest.approx(0.4)
-            for k in range(5, 21):
-                controller.rtia.advance_to(k * H, timeout=20.0)
-            runner.join(timeout=30.0)
-            assert not runner.is_alive() and not failure, failure
+            with running(federate, stop_time=2.0) as failures:
+                controller.rtia.advance_to(0.4, timeout=20.0)  # the FMU may now reach 0.4, not 0.5
+                waiting_at(0.4)
+                controller.rtia.requestFederationSave("mid")
+                tick_until(lambda: controller.amb.named("initiateFederateSave"), controller.rtia)
+                controller.rtia.federateSaveComplete()
+                tick_until(lambda: controller.amb.named("federationSaved"), controller.rtia)
+                assert federate.saved == ["mid"]
+                controller.rtia.advance_to(0.9, timeout=20.0)
+                waiting_at(0.9)
+                controller.rtia.requestFederationRestore("mid")
+                tick_until(lambda: controller.amb.named("initiateFederateRestore"), controller.rtia)
+                controller.rtia.federateRestoreComplete()
+                tick_until(lambda: controller.amb.named("federationRestored"), controller.rtia)
+                assert controller.rtia.queryFederateTime() == pytest.approx(0.4)
+                for k in range(5, 21):
+                    controller.rtia.advance_to(k * H, timeout=20.0)
+            assert not failures, failures
     finally:
         controller.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
     assert federate.restored == ["mid"] and not federate.save_errors
@@ -547,23 +540,12 @@ def test_a_python_fmu_behind_a_c_fmu(inprocess_gateway: hlacore.Gateway, lag_fmu
                       mapping=Mapping(outputs={"y": Endpoint("Lag", "y")}), start_values={"u": 1.0}, timeout=20.0)
     gain = FmuFederate(gain_fmu, "Chain", step_size=H, address=address, mapping=tmp_path / "gain.toml",
                        start_values={"k": 3.0}, timeout=20.0)
-    failures: list[BaseException] = []
-
-    def run(federate: FmuFederate) -> None:
-        try:
-            federate.run(STEPS * H)
-        except BaseException as error:  # reported by the main thread
-            failures.append(error)
-
     try:
         lag.join()
         gain.join()
-        threads = [threading.Thread(target=run, args=(federate,)) for federate in (lag, gain)]
-        for thread in threads:
-            thread.start()
-        for thread in threads:
-            thread.join(timeout=30.0)
-        assert not any(thread.is_alive() for thread in threads) and not failures, failures
+        with running(lag, gain) as failures:
+            pass
+        assert not failures, failures
     finally:
         lag.close()
         gain.close()
@@ -642,30 +624,19 @@ def test_an_input_stamped_after_a_feedthrough_fmu_took_its_inputs_is_an_input_er
         source = feeder.rtia.registerObjectInstance(gain, "source")
         with FmuFederate(gain_fmu, "GainFed", step_size=H, address=gateway_address, timeout=20.0) as federate:
             federate.join()
-            failure: list[BaseException] = []
-
-            def run() -> None:
-                try:
-                    federate.run(STEPS * H)
-                except BaseException as error:  # reported by the main thread
-                    failure.append(error)
-
-            runner = threading.Thread(target=run)
-            runner.start()
-            for k in (1, 2):
-                feeder.rtia.timeAdvanceRequestAvailable(k * H)
+            with running(federate) as failures:
+                for k in (1, 2):
+                    feeder.rtia.timeAdvanceRequestAvailable(k * H)
+                    feeder.rtia.await_grant(timeout=20.0)
+                    tick_until(lambda: federate.pending == pytest.approx((k + 1) * H), feeder.rtia)  # took u(k h)
+                feeder.rtia.updateAttributeValues(source, {u: F64.pack(1.0)}, "feeder", 2 * H)
+                feeder.rtia.timeAdvanceRequestAvailable(3 * H)
                 feeder.rtia.await_grant(timeout=20.0)
-                tick_until(lambda: federate.pending == pytest.approx((k + 1) * H), feeder.rtia)  # took u(k h)
-            feeder.rtia.updateAttributeValues(source, {u: F64.pack(1.0)}, "feeder", 2 * H)
-            feeder.rtia.timeAdvanceRequestAvailable(3 * H)
-            feeder.rtia.await_grant(timeout=20.0)
-            runner.join(timeout=30.0)
-            assert not runner.is_alive()
     finally:
         feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
         rti.RTIAmbassador(gateway_address).destroyFederationExecution("GainFed")  # the gain resigned
-    assert [type(error) for error in failure] == [InputError]
-    assert "u: instance 'source' sent a value stamped 0.2 after the inputs of 0.2 were taken" in str(failure[0])
+    assert [type(error) for error in failures] == [InputError]
+    assert "u: instance 'source' sent a value stamped 0.2 after the inputs of 0.2 were taken" in str(failures[0])
 
 
 def test_direct_feedthrough_and_state_saving_are_read_from_the_model_description(

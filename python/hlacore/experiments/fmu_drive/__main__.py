@@ -18,9 +18,10 @@ import pathlib
 from typing import Any, Optional, Sequence
 
 import hlacore
+from hlacore.federates.robot_world import World, plot_trajectories
 
 from ..cli import run_command
-from .run import BOX, ROBOT, STEP, TOLERANCE, WAYPOINTS, Result, run
+from .run import IDEAL, ROBOT, STEP, WAYPOINTS, Result, run, world_spec
 
 #: The federated path equals the same loop's without HLA to this distance (m): the federation adds no error.
 SAME = 1e-9
@@ -89,37 +90,11 @@ def write_trace(result: Result, path: pathlib.Path) -> pathlib.Path:
 
 
 def plot(result: Result, path: pathlib.Path) -> pathlib.Path:
-    """The robot's federated path and the loop's without delay, the waypoints and the box (matplotlib;
+    """The robot's federated path and the loop's without delay over the world, with the waypoints (matplotlib;
     ImportError without it)."""
-    try:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        from matplotlib.patches import Circle, Rectangle
-    except ImportError:
-        raise ImportError("plotting needs matplotlib: pip install matplotlib") from None
-    fig, ax = plt.subplots(figsize=(7, 7))
-    x, y, side = BOX
-    ax.add_patch(Rectangle((x - side / 2, y - side / 2), side, side, color="black", label=f"box ({side:g} m)"))
-    for i, (wx, wy) in enumerate(WAYPOINTS):
-        ax.add_patch(Circle((wx, wy), TOLERANCE, fill=False, color="tab:orange",
-                            label=f"waypoints (within {TOLERANCE:g} m)" if i == 0 else None))
-        ax.annotate(str(i + 1), (wx, wy), xytext=(6, 6), textcoords="offset points")
-    ax.plot([p.x for p in result.ideal.poses], [p.y for p in result.ideal.poses], "--", color="tab:blue",
-            label="the controller's loop without delay (FMPy + world, no HLA)")
-    ax.plot([p.x for p in result.federated.poses], [p.y for p in result.federated.poses], color="tab:red",
-            label=f"{ROBOT} driven by the FMU through the federation")
-    ax.set_title(f"a controller FMU in the loop of the robot world (steps of {STEP:g} s)")
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
-    ax.set_aspect("equal")
-    ax.grid(True, alpha=0.3)
-    ax.legend(loc="center", bbox_to_anchor=(0.5, 0.3), fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    poses = [{ROBOT: a, IDEAL: b} for a, b in zip(result.federated.poses, result.ideal.poses)]
+    return plot_trajectories(World(world_spec(IDEAL)), poses, path, marks={"waypoints": WAYPOINTS},
+                             title=f"a controller FMU in the loop of the robot world (steps of {STEP:g} s)")
 
 
 if __name__ == "__main__":

@@ -22,6 +22,7 @@ from hlacore.fmu.federate import LOOKAHEAD_MARGIN
 
 SOURCES = pathlib.Path(__file__).resolve().parent / "controller"
 ROBOT = "fmubot"
+IDEAL = "without delay"  #: the name of the undelayed loop's path in the plot
 STEP = 0.1  #: the FMU's step, the world's period and both lookaheads (s)
 WAYPOINTS = [(2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (0.0, 0.0)]  #: the controller's defaults (modelDescription.xml)
 TOLERANCE = 0.1  #: a waypoint is reached within this distance (m), as the controller decides
@@ -32,13 +33,14 @@ interval_sim 100
 define bot position ( size [0.33 0.33 0.40] drive "diff" )
 define box model ( size [{BOX[2]} {BOX[2]} 0.5] color "black" obstacle_return 1 ranger_return 1 )
 bot( pose [ 0 0 0 0 ] name "{ROBOT}" color "red" )
-box( pose [ {BOX[0]} {BOX[1]} 0 0 ] )
+box( pose [ {BOX[0]} {BOX[1]} 0 0 ] name "box" )
 """
 
 
-def world_spec() -> WorldSpec:
-    """The world: the robot at the origin facing +x, a box in the middle of the waypoints' square."""
-    return load_world(WORLD)
+def world_spec(*others: str) -> WorldSpec:
+    """The world: the robot at the origin facing +x, a box in the middle of the waypoints' square; ``others``:
+    robots of these names at the same place, to draw other paths there."""
+    return load_world(WORLD + "".join(f'bot( pose [ 0 0 0 0 ] name "{name}" color "blue" )\n' for name in others))
 
 
 @dataclass

@@ -7,20 +7,15 @@ from their schemas, as Foxglove does). Skips without ROS 2's wheels, except unde
 
 from __future__ import annotations
 
-import json
 import pathlib
 
 import pytest
-from mcap.reader import make_reader
 from mcap_ros2.decoder import DecoderFactory
 
-from hlacore.recording import read
-
 from support import PEERS
-from support.paper1 import PERIOD, check_de_run
+from support.paper1 import check_de_run, check_recording
 from support.ros import WORLD, assert_stage_on_its_own_clock, running
 from support.ros2 import ros2_space
-
 
 
 @pytest.mark.slow  # four processes and 300 lockstep cycles through DDS
@@ -44,34 +39,7 @@ def test_paper1_de_controller_through_ros2(tmp_path: pathlib.Path) -> None:
     summary = check_de_run(stdout, out)
     assert summary["ros"] == 2
 
-    recording = out / "paper1-de.mcap"
-    with open(recording, "rb") as f:
-        reader = make_reader(f, decoder_factories=[DecoderFactory()])
-        schemas = {c.topic: reader.get_summary().schemas[c.schema_id].name  # type: ignore[union-attr]
-                   for c in reader.get_summary().channels.values() if c.message_encoding == "cdr"}  # type: ignore[union-attr]
-        odom: dict[int, tuple[float, float]] = {}
-        twists: list[float] = []
-        clocks = 0
-        for _schema, channel, message, decoded in reader.iter_decoded_messages(
-                topics=["/avatar/odom", "/avatar/cmd_vel", "/clock"]):
-            if channel.topic == "/avatar/odom":
-                stamp = decoded.header.stamp.sec + decoded.header.stamp.nanosec * 1e-9
-                odom[round(stamp / PERIOD)] = (decoded.pose.pose.position.x, decoded.pose.pose.position.y)
-                assert message.publish_time == decoded.header.stamp.sec * 10**9 + decoded.header.stamp.nanosec
-            elif channel.topic == "/avatar/cmd_vel":
-                twists.append(decoded.linear.x)
-            else:
-                clocks += 1
-    assert schemas["/avatar/odom"] == "nav_msgs/Odometry" and schemas["/avatar/cmd_vel"] == "geometry_msgs/Twist"
-    assert schemas["/avatar/base_scan"] == "sensor_msgs/LaserScan" and schemas["/clock"] == "rosgraph_msgs/Clock"
-    stage = json.loads((out / "stage-node.json").read_text())
-    for t, poses in zip(stage["times"], stage["poses"]):  # the node's odometry of every tick, decoded
-        assert odom[round(t / PERIOD)] == pytest.approx(tuple(poses["avatar"][:2]), abs=0.0), t
-    assert clocks >= 300
-    # the federation's events are in the same file: one Twist on ROS 2 per cmd_vel interaction for the avatar
-    commands = [e for e in read(recording) if e.kind == "interaction" and e.class_name == "cmd_vel"
-                and b"avatar" in e.values()["robot"]]
-    assert len(commands) == len(twists) == summary["avatar_commands"]
+    check_recording(out, summary, DecoderFactory(), "cdr", "ros2msg")
 
 
 def test_stage_node_on_its_own_clock_on_ros2(tmp_path: pathlib.Path) -> None:

@@ -28,9 +28,9 @@ from hlacore.federates.ros_bridge.stage_node import last_step_at_or_before
 
 from support import PEERS, Federate, RtigProcess
 from support.nethosts import NetHosts
-from support.paper1 import check_de_run
-from support.ros import (WORLD, assert_stage_on_its_own_clock, f32, running, running_roscore, start_bridge,
-                         start_teleop)
+from support.paper1 import check_de_run, check_recording
+from support.ros import (WORLD, Ros1Decoders, assert_stage_on_its_own_clock, f32, running, running_roscore,
+                         start_bridge, start_teleop)
 
 PERIOD, DT = 0.1, 0.01
 
@@ -86,6 +86,18 @@ def test_paper1_de_controller_through_ros(roscore: dict[str, str], gateway_addre
                           timeout=300, stdin=subprocess.DEVNULL)
     assert done.returncode == 0, done.stdout + done.stderr
     check_de_run(done.stdout, out)
+
+
+@pytest.mark.slow
+def test_paper1_de_run_recorded_with_its_ros_topics(roscore: dict[str, str], tmp_path: pathlib.Path) -> None:
+    """``--record`` on ROS 1: the run passes its checks, and its one MCAP file holds the federation's events and
+    the bridged ROS 1 topics, which decode from their ros1msg schemas alone (tests/support/paper1.py)."""
+    out = tmp_path / "out"
+    done = subprocess.run([sys.executable, "-m", "hlacore.experiments.paper1.ros", str(out), "--controller", "de",
+                           "--record"], capture_output=True, text=True, env=roscore, timeout=300,
+                          stdin=subprocess.DEVNULL)
+    assert done.returncode == 0, done.stdout + done.stderr
+    check_recording(out, check_de_run(done.stdout, out), Ros1Decoders(), "ros1", "ros1msg")
 
 
 @pytest.mark.slow

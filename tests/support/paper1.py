@@ -1,5 +1,6 @@
 """Paper 1's chain through ROS (``python -m hlacore.experiments.paper1.ros OUT --controller de``), checked the same
-whichever ROS carries it: tests/experiments/test_ros_paper1_de.py (ROS 1) and test_ros2_paper1_de.py (ROS 2)."""
+whichever ROS carries it, and its recording (``--record``): tests/experiments/test_ros_paper1_de.py (ROS 1) and
+test_ros2_paper1_de.py (ROS 2)."""
 
 from __future__ import annotations
 
@@ -8,9 +9,12 @@ import pathlib
 from typing import Any
 
 import pytest
+from mcap.decoder import DecoderFactory
+from mcap.reader import make_reader
 
 from hlacore.experiments.paper1 import scenario as paper1
 from hlacore.federates.robot_world import World
+from hlacore.recording import read
 
 PERIOD, DT = 0.1, 0.01
 
@@ -53,3 +57,45 @@ def check_de_run(stdout: str, out: pathlib.Path) -> dict[str, Any]:
     assert len(lines) == 301 and lines[0].startswith("time,distance,avatar_speed,avatar_x")
     assert (out / "paper1-de-snapshot.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     return summary
+
+
+def check_recording(out: pathlib.Path, summary: dict[str, Any], decoders: DecoderFactory, encoding: str,
+                    schema_encoding: str) -> None:
+    """The ``--record`` run's file OUTDIR/paper1-de.mcap: the bridged topics are channels of ``encoding`` with
+    schemas of ``schema_encoding`` named after their message types, and decode with ``decoders``: the world
+    node's odometry at every tick (published at its header's stamp) is the pose the node reported, and there is
+    one Twist for each cmd_vel interaction the federation's events in the same file hold for the avatar."""
+    recording = out / "paper1-de.mcap"
+    with open(recording, "rb") as f:
+        reader = make_reader(f, decoder_factories=[decoders])
+        summary_section = reader.get_summary()
+        assert summary_section is not None
+        schemas = {c.topic: summary_section.schemas[c.schema_id] for c in summary_section.channels.values()
+                   if c.message_encoding == encoding}
+        odom: dict[int, tuple[float, float]] = {}
+        twists: list[float] = []
+        clocks = 0
+        for _schema, channel, message, decoded in reader.iter_decoded_messages(
+                topics=["/avatar/odom", "/avatar/cmd_vel", "/clock"]):
+            if channel.topic == "/avatar/odom":
+                stamp = decoded.header.stamp
+                nanoseconds = (stamp.sec * 10**9 + stamp.nanosec if hasattr(stamp, "nanosec")  # ROS 2
+                               else stamp.secs * 10**9 + stamp.nsecs)  # ROS 1
+                odom[round(nanoseconds * 1e-9 / PERIOD)] = (decoded.pose.pose.position.x,
+                                                            decoded.pose.pose.position.y)
+                assert message.publish_time == nanoseconds
+            elif channel.topic == "/avatar/cmd_vel":
+                twists.append(decoded.linear.x)
+            else:
+                clocks += 1
+    assert {topic: (s.name, s.encoding) for topic, s in schemas.items()
+            if topic in ("/avatar/odom", "/avatar/cmd_vel", "/avatar/base_scan", "/clock")} == {
+        "/avatar/odom": ("nav_msgs/Odometry", schema_encoding), "/avatar/cmd_vel": ("geometry_msgs/Twist", schema_encoding),
+        "/avatar/base_scan": ("sensor_msgs/LaserScan", schema_encoding), "/clock": ("rosgraph_msgs/Clock", schema_encoding)}
+    stage = json.loads((out / "stage-node.json").read_text())
+    for t, poses in zip(stage["times"], stage["poses"]):  # the node's odometry of every tick, decoded
+        assert odom[round(t / PERIOD)] == pytest.approx(tuple(poses["avatar"][:2]), abs=0.0), t
+    assert clocks >= 300
+    commands = [e for e in read(recording) if e.kind == "interaction" and e.class_name == "cmd_vel"
+                and b"avatar" in e.values()["robot"]]
+    assert len(commands) == len(twists) == summary["avatar_commands"]

@@ -17,13 +17,16 @@ import sys
 import threading
 import time
 import xmlrpc.client
-from typing import Any, Iterator, Optional, Sequence
+from typing import Any, Callable, Iterator, Optional, Sequence
 
 import pytest
+from mcap.decoder import DecoderFactory as McapDecoderFactory
+from mcap.records import Schema
 
 import hlacore.rti as rti
 from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, load_world
 from hlacore.federates.robot_world.federate import Pose
+from hlacore.federates.ros_bridge import ros_import
 from hlacore.federates.ros_bridge.children import stop_process
 from hlacore.federates.ros_bridge.master import free_master_port
 
@@ -236,3 +239,18 @@ def assert_stage_on_its_own_clock(stage: Running, seen: Any, summary: pathlib.Pa
     assert seen["scan"]["angle_min"] == pytest.approx(-math.radians(20), abs=1e-6)
     ran = json.loads(summary.read_text())
     assert ran["commands"] > 0 and ran["ticks"] == len(ran["times"]) > 0
+
+
+class Ros1Decoders(McapDecoderFactory):
+    """Decodes the ROS 1 messages of an MCAP file from their ``ros1msg`` schemas alone, with genpy's dynamic
+    message classes (Debian's ROS 1, through hlacore's ROS import), as ROS 1's own tools read a bag."""
+
+    def decoder_for(self, message_encoding: str, schema: Optional[Schema]) -> Optional[Callable[[bytes], Any]]:
+        """A decoder for ``ros1`` messages of a ``ros1msg`` schema; None for anything else."""
+        if message_encoding != "ros1" or schema is None or schema.encoding != "ros1msg":
+            return None
+        ros_import.enable()
+        import genpy.dynamic
+
+        kind = genpy.dynamic.generate_dynamic(schema.name, schema.data.decode())[schema.name]
+        return lambda data: kind().deserialize(data)

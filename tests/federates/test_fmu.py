@@ -15,7 +15,7 @@ import sys
 import tempfile
 import threading
 import zipfile
-from typing import Callable, Iterator
+from typing import Any, Callable, Iterator
 
 import fmpy  # the test extra installs it
 import numpy as np
@@ -264,6 +264,72 @@ def test_a_value_of_the_wrong_size_resigns_with_an_input_error(gateway_address: 
     assert [type(error) for error in failure] == [InputError]
     assert "u: instance 'good' sent 8 bytes, not an array of HLAfloat64BE with an element 1" in str(failure[0])
     assert federate.time == pytest.approx(3 * H)
+
+
+TYPED = {"n": omt.HLAinteger32BE, "flag": omt.HLAboolean, "word": omt.HLAunicodeString,
+         "twice": omt.HLAinteger32BE, "negated": omt.HLAboolean, "shout": omt.HLAunicodeString}
+
+
+@pytest.fixture
+def typed_federation(gateway_address: str, tmp_path: pathlib.Path, tmp_path_factory: pytest.TempPathFactory
+                     ) -> Iterator[tuple[pathlib.Path, Federate, dict[str, Any], Any]]:
+    """The Python FMU of tests/data/fmu/typed (an Integer, a Boolean and a String input and output), TypedFed
+    from its by-name FOM, and a feeder publishing the inputs of its instance "source" and subscribing to the
+    outputs: (the FMU, the feeder, the attribute handles by name, the instance)."""
+    typed_fmu = build_python_fmu("typed", tmp_path_factory.getbasetemp() / "fmus")
+    fed = tmp_path / "typed.fed"
+    fed.write_text(Mapping.by_name(FmuModel(typed_fmu)).fed("TypedFed"))
+    rti.RTIAmbassador(gateway_address).createFederationExecution("TypedFed", str(fed))
+    feeder = Federate(gateway_address, "feeder", federation="TypedFed")
+    try:
+        feeder.enable_time(lookahead=H * (1 - LOOKAHEAD_MARGIN))
+        typed = feeder.rtia.getObjectClassHandle("Typed")
+        handles = {name: feeder.rtia.getAttributeHandle(name, typed) for name in TYPED}
+        feeder.rtia.publishObjectClass(typed, [handles[name] for name in ("n", "flag", "word")])
+        feeder.rtia.subscribeObjectClassAttributes(typed, [handles[name] for name in ("twice", "negated", "shout")])
+        yield typed_fmu, feeder, handles, feeder.rtia.registerObjectInstance(typed, "source")
+    finally:
+        feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        rti.RTIAmbassador(gateway_address).destroyFederationExecution("TypedFed")
+
+
+def test_integers_booleans_and_strings_travel(gateway_address: str, typed_federation: Any) -> None:
+    """Mapped by name, the feeder sends n = k, flag = k odd and word = "w<k>" stamped k h (HLAinteger32BE,
+    HLAboolean, HLAunicodeString) and reflects twice = 2 n, negated = not flag and shout = "W<k>!" of the step
+    before, stamped (k + 1) h."""
+    typed_fmu, feeder, handles, source = typed_federation
+
+    def send(k: int) -> None:
+        values = {"n": k, "flag": k % 2 == 1, "word": f"w{k}"}
+        feeder.rtia.updateAttributeValues(source, {handles[name]: TYPED[name].pack(value)
+                                                   for name, value in values.items()}, "feeder", k * H)
+
+    with FmuFederate(typed_fmu, "TypedFed", step_size=H, address=gateway_address, timeout=20.0,
+                     start_values={"n": 0, "flag": False, "word": "w0"}) as federate:
+        federate.join()
+        assert not run_beside(federate, feeder, send)
+    reflected = [(args[5], {name: TYPED[name].unpack(args[1][handles[name]])[0]
+                            for name in ("twice", "negated", "shout")})
+                 for args in feeder.amb.named("reflectAttributeValues")]
+    assert [t for t, _ in reflected] == pytest.approx([k * H for k in range(1, STEPS + 1)])
+    assert [v for _, v in reflected] == [{"twice": 2 * (k - 1), "negated": (k - 1) % 2 == 0, "shout": f"W{k - 1}!"}
+                                         for k in range(1, STEPS + 1)]
+
+
+def test_a_string_that_is_not_one_unicode_string_is_an_input_error(gateway_address: str,
+                                                                   typed_federation: Any) -> None:
+    """Five UTF-16 characters announced, one sent: the step that would set the word raises InputError, after
+    resigning. (Nor can a String be an array's element: its size varies.)"""
+    typed_fmu, feeder, handles, source = typed_federation
+    with pytest.raises(MappingError, match="word: a String is no array element"):
+        Mapping({"word": Endpoint("Typed", "word", element=0)}).check(FmuModel(typed_fmu))
+    with FmuFederate(typed_fmu, "TypedFed", step_size=H, address=gateway_address, timeout=20.0) as federate:
+        federate.join()
+        failures = run_beside(federate, feeder, lambda k: feeder.rtia.updateAttributeValues(
+            source, {handles["word"]: b"\x00\x00\x00\x05ab" if k == 2 else TYPED["word"].pack("ok")}, "feeder",
+            k * H))
+    assert [type(error) for error in failures] == [InputError]
+    assert "word: instance 'source' sent 6 bytes, not one HLAunicodeString" in str(failures[0])
 
 
 def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway, any_lag: pathlib.Path,

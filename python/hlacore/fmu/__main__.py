@@ -28,7 +28,7 @@ def _start_value(text: str) -> tuple[str, Any]:
     try:
         return name, int(value) if value.strip().lstrip("+-").isdigit() else float(value)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r}: the value is not a number nor true/false") from None
+        return name, value  # a String's value (for another type, the FMU's check says which it takes)
 
 
 def parser() -> argparse.ArgumentParser:

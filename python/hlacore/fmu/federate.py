@@ -42,9 +42,13 @@ class _Input(NamedTuple):
         """The value in ``data``; InputError when its size does not fit the encoding or the element."""
         size = self.codec.fixed_size
         if self.element is None:
-            if len(data) != size:
+            try:
+                value, used = self.codec.unpack(data)
+            except ValueError:
+                used = -1
+            if used != len(data):
                 raise InputError(f"{self.variable}: {source} sent {len(data)} bytes, not one {self.codec.name}")
-            return self.codec.unpack(data)[0]
+            return value
         if len(data) % size or len(data) < (self.element + 1) * size:
             raise InputError(f"{self.variable}: {source} sent {len(data)} bytes, not an array of {self.codec.name} "
                              f"with an element {self.element}")

@@ -16,7 +16,7 @@ Without a file, the default maps by name: every input and output of the FMU is t
 of one object class named after the model (``Lag.u``, ``Lag.y``); the FMU publishes its outputs and subscribes
 to its inputs, and whoever drives an input publishes that attribute of the same class. A variable left out
 of the file is not exchanged. Reals (FMI 3: Float64) travel as HLAfloat64BE, Integers (Int32) as
-HLAinteger32BE, Booleans as HLAboolean; a member with ``element`` is an HLAfixedArray of that type (outputs
+HLAinteger32BE, Booleans as HLAboolean, Strings as HLAunicodeString; a member with ``element`` is an HLAfixedArray of that type (outputs
 must then fill every element); a constant's TOML type gives its encoding (a string: HLAASCIIstring).
 """
 
@@ -33,7 +33,7 @@ from .model import SUPPORTED_TYPES, FmuModel
 
 #: The HLA encoding of each FMI type.
 ENCODINGS: dict[str, Any] = {"Real": omt.HLAfloat64BE, "Float64": omt.HLAfloat64BE, "Integer": omt.HLAinteger32BE,
-                             "Int32": omt.HLAinteger32BE, "Boolean": omt.HLAboolean}
+                             "Int32": omt.HLAinteger32BE, "Boolean": omt.HLAboolean, "String": omt.HLAunicodeString}
 #: The HLA encoding of a constant, by its TOML type (bool before int: a bool is an int in Python).
 CONSTANT_ENCODINGS: list[tuple[type, Any]] = [(bool, omt.HLAboolean), (int, omt.HLAinteger32BE),
                                               (float, omt.HLAfloat64BE), (str, omt.HLAASCIIstring)]
@@ -159,6 +159,9 @@ class Mapping:
                 if variable.type not in SUPPORTED_TYPES:
                     raise MappingError(f"{where}: [{table}] {name}: type {variable.type} cannot travel "
                                        f"(only {', '.join(SUPPORTED_TYPES)})")
+                if getattr(self, table)[name].element is not None and ENCODINGS[variable.type].fixed_size is None:
+                    raise MappingError(f"{where}: [{table}] {name}: a {variable.type} is no array element (its "
+                                       f"size varies)")
                 if table == "outputs" and getattr(self, table)[name].instance is not None:
                     raise MappingError(f"{where}: [outputs] {name}: outputs go to this federate's own instance")
         members = self.members()

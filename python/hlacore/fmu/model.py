@@ -20,9 +20,11 @@ from typing import Any, Optional, Union
 from .errors import FmuError, MappingError, NotCoSimulation, StepFailed
 
 #: The FMI types an FMU variable may have to travel through the federation (HLA encodings in mapping.py): FMI 2's
-#: Real, Integer and Boolean, and their FMI 3 forms.
-SUPPORTED_TYPES = ("Real", "Integer", "Boolean", "Float64", "Int32")
-_REAL, _INTEGER = ("Real", "Float64"), ("Integer", "Int32")
+#: Real, Integer, Boolean and String, and their FMI 3 forms; each with the Python type of its values (FMPy's
+#: set and get methods are named after the type).
+_KINDS: dict[str, type] = {"Real": float, "Float64": float, "Integer": int, "Int32": int, "Boolean": bool,
+                           "String": str}
+SUPPORTED_TYPES = tuple(_KINDS)
 
 
 @dataclass(frozen=True)
@@ -47,14 +49,14 @@ def _platform_binary(identifier: str, version: str) -> str:
 
 def check_value(model: "FmuModel", name: str, value: Any) -> None:
     """Raise :class:`MappingError` unless ``model`` has a variable ``name`` that takes ``value``: a Real a
-    number, an Integer an int, a Boolean a bool."""
+    number, an Integer an int of 32 bits, a Boolean a bool, a String a str."""
     variable = model.variables.get(name)
     if variable is None:
         raise MappingError(f"{name} = {value!r}: {model.path.name} has no variable {name!r}")
-    number = isinstance(value, (int, float)) and not isinstance(value, bool)
-    fits = (number if variable.type in _REAL else number and isinstance(value, int) if variable.type in _INTEGER
-            else isinstance(value, bool) if variable.type == "Boolean" else False)
-    if not fits:
+    kind = _KINDS.get(variable.type)
+    fits = (kind is float and isinstance(value, (int, float)) or kind is int and isinstance(value, int)
+            and -2**31 <= value < 2**31 or kind is not None and kind not in (float, int) and isinstance(value, kind))
+    if not fits or isinstance(value, bool) and kind is not bool:
         raise MappingError(f"{name} = {value!r}: {name} is of type {variable.type}")
 
 
@@ -175,44 +177,26 @@ class FmuInstance:
             raise FmuError(f"{model.path}: could not instantiate: {error}") from error
 
     def set(self, values: dict[str, Any]) -> None:
-        """Set variables by name (``fmi2SetReal``/``Integer``/``Boolean``; FMI 3: ``Float64``/``Int32``)."""
+        """Set variables by name (``fmi2SetReal``/``Integer``/``Boolean``/``String``; FMI 3: ``Float64``/``Int32``
+        /...)."""
         for name, value in values.items():
             variable = self.model.variables[name]
+            kind = _KINDS.get(variable.type)
+            if kind is None:
+                raise FmuError(f"{self.model.path}: {name} is a {variable.type}; hlacore.fmu sets "
+                               f"{', '.join(SUPPORTED_TYPES)} variables")
             try:
-                if variable.type == "Real":
-                    self._fmu.setReal([variable.value_reference], [float(value)])
-                elif variable.type == "Float64":
-                    self._fmu.setFloat64([variable.value_reference], [float(value)])
-                elif variable.type == "Integer":
-                    self._fmu.setInteger([variable.value_reference], [int(value)])
-                elif variable.type == "Int32":
-                    self._fmu.setInt32([variable.value_reference], [int(value)])
-                elif variable.type == "Boolean":
-                    self._fmu.setBoolean([variable.value_reference], [bool(value)])
-                else:
-                    raise FmuError(f"{self.model.path}: {name} is a {variable.type}; hlacore.fmu sets "
-                                   f"{', '.join(SUPPORTED_TYPES)} variables")
-            except FmuError:
-                raise
+                getattr(self._fmu, f"set{variable.type}")([variable.value_reference], [kind(value)])
             except Exception as error:
                 raise FmuError(f"{self.model.path}: setting {name} = {value!r} failed: {error}") from error
 
     def get(self, names: list[str]) -> dict[str, Any]:
-        """Read variables by name (``fmi2GetReal``/``Integer``/``Boolean``; FMI 3: ``Float64``/``Int32``)."""
+        """Read variables by name (``fmi2GetReal``/``Integer``/``Boolean``/``String``; FMI 3: ``Float64``/...)."""
         values: dict[str, Any] = {}
         for name in names:
             variable = self.model.variables[name]
-            reference = [variable.value_reference]
-            if variable.type == "Real":
-                values[name] = float(self._fmu.getReal(reference)[0])
-            elif variable.type == "Float64":
-                values[name] = float(self._fmu.getFloat64(reference)[0])
-            elif variable.type == "Integer":
-                values[name] = int(self._fmu.getInteger(reference)[0])
-            elif variable.type == "Int32":
-                values[name] = int(self._fmu.getInt32(reference)[0])
-            else:
-                values[name] = bool(self._fmu.getBoolean(reference)[0])
+            value = getattr(self._fmu, f"get{variable.type}")([variable.value_reference])[0]
+            values[name] = value.decode() if isinstance(value, bytes) else _KINDS[variable.type](value)
         return values
 
     def do_step(self, time: float, step: float, outputs: list[str]) -> dict[str, Any]:

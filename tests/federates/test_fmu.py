@@ -270,27 +270,37 @@ TYPED = {"n": omt.HLAinteger32BE, "flag": omt.HLAboolean, "word": omt.HLAunicode
          "twice": omt.HLAinteger32BE, "negated": omt.HLAboolean, "shout": omt.HLAunicodeString}
 
 
+@contextlib.contextmanager
+def feeding(gateway_address: str, fmu: pathlib.Path, directory: pathlib.Path
+            ) -> Iterator[tuple[Federate, dict[str, Any], Any]]:
+    """A federation from the FMU's by-name FOM, and a feeder that publishes the FMU's inputs on its instance
+    "source" and subscribes to the outputs: (the feeder, the attribute handles by variable name, the instance).
+    The federation is destroyed at the end (nobody may be left joined)."""
+    mapping = Mapping.by_name(FmuModel(fmu))
+    (cls,) = {endpoint.object_class for endpoint in [*mapping.inputs.values(), *mapping.outputs.values()]}
+    (directory / "by-name.fed").write_text(mapping.fed("FeedFed"))
+    rti.RTIAmbassador(gateway_address).createFederationExecution("FeedFed", str(directory / "by-name.fed"))
+    feeder = Federate(gateway_address, "feeder", federation="FeedFed")
+    try:
+        feeder.enable_time(lookahead=H * (1 - LOOKAHEAD_MARGIN))
+        handle = feeder.rtia.getObjectClassHandle(cls)
+        handles = {name: feeder.rtia.getAttributeHandle(name, handle) for name in [*mapping.inputs, *mapping.outputs]}
+        feeder.rtia.publishObjectClass(handle, [handles[name] for name in mapping.inputs])
+        feeder.rtia.subscribeObjectClassAttributes(handle, [handles[name] for name in mapping.outputs])
+        yield feeder, handles, feeder.rtia.registerObjectInstance(handle, "source")
+    finally:
+        feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+        rti.RTIAmbassador(gateway_address).destroyFederationExecution("FeedFed")
+
+
 @pytest.fixture
 def typed_federation(gateway_address: str, tmp_path: pathlib.Path, tmp_path_factory: pytest.TempPathFactory
                      ) -> Iterator[tuple[pathlib.Path, Federate, dict[str, Any], Any]]:
-    """The Python FMU of tests/data/fmu/typed (an Integer, a Boolean and a String input and output), TypedFed
-    from its by-name FOM, and a feeder publishing the inputs of its instance "source" and subscribing to the
-    outputs: (the FMU, the feeder, the attribute handles by name, the instance)."""
+    """The Python FMU of tests/data/fmu/typed (an Integer, a Boolean and a String input and output) fed by name:
+    (the FMU, the feeder, the attribute handles by name, the instance)."""
     typed_fmu = build_python_fmu("typed", tmp_path_factory.getbasetemp() / "fmus")
-    fed = tmp_path / "typed.fed"
-    fed.write_text(Mapping.by_name(FmuModel(typed_fmu)).fed("TypedFed"))
-    rti.RTIAmbassador(gateway_address).createFederationExecution("TypedFed", str(fed))
-    feeder = Federate(gateway_address, "feeder", federation="TypedFed")
-    try:
-        feeder.enable_time(lookahead=H * (1 - LOOKAHEAD_MARGIN))
-        typed = feeder.rtia.getObjectClassHandle("Typed")
-        handles = {name: feeder.rtia.getAttributeHandle(name, typed) for name in TYPED}
-        feeder.rtia.publishObjectClass(typed, [handles[name] for name in ("n", "flag", "word")])
-        feeder.rtia.subscribeObjectClassAttributes(typed, [handles[name] for name in ("twice", "negated", "shout")])
-        yield typed_fmu, feeder, handles, feeder.rtia.registerObjectInstance(typed, "source")
-    finally:
-        feeder.rtia.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
-        rti.RTIAmbassador(gateway_address).destroyFederationExecution("TypedFed")
+    with feeding(gateway_address, typed_fmu, tmp_path) as fed:
+        yield (typed_fmu, *fed)
 
 
 def test_integers_booleans_and_strings_travel(gateway_address: str, typed_federation: Any) -> None:
@@ -304,7 +314,7 @@ def test_integers_booleans_and_strings_travel(gateway_address: str, typed_federa
         feeder.rtia.updateAttributeValues(source, {handles[name]: TYPED[name].pack(value)
                                                    for name, value in values.items()}, "feeder", k * H)
 
-    with FmuFederate(typed_fmu, "TypedFed", step_size=H, address=gateway_address, timeout=20.0,
+    with FmuFederate(typed_fmu, "FeedFed", step_size=H, address=gateway_address, timeout=20.0,
                      start_values={"n": 0, "flag": False, "word": "w0"}) as federate:
         federate.join()
         assert not run_beside(federate, feeder, send)
@@ -323,13 +333,57 @@ def test_a_string_that_is_not_one_unicode_string_is_an_input_error(gateway_addre
     typed_fmu, feeder, handles, source = typed_federation
     with pytest.raises(MappingError, match="word: a String is no array element"):
         Mapping({"word": Endpoint("Typed", "word", element=0)}).check(FmuModel(typed_fmu))
-    with FmuFederate(typed_fmu, "TypedFed", step_size=H, address=gateway_address, timeout=20.0) as federate:
+    with FmuFederate(typed_fmu, "FeedFed", step_size=H, address=gateway_address, timeout=20.0) as federate:
         federate.join()
         failures = run_beside(federate, feeder, lambda k: feeder.rtia.updateAttributeValues(
             source, {handles["word"]: b"\x00\x00\x00\x05ab" if k == 2 else TYPED["word"].pack("ok")}, "feeder",
             k * H))
     assert [type(error) for error in failures] == [InputError]
     assert "word: instance 'source' sent 6 bytes, not one HLAunicodeString" in str(failures[0])
+
+
+#: FMI 3's other types: each input of tests/data/fmu/typed3 (its output is <type>_out), its encoding and its
+#: value at step k.
+TYPED3: dict[str, tuple[Any, Callable[[int], Any]]] = {
+    "float32": (omt.HLAfloat32BE, lambda k: k + 0.5), "int8": (omt.HLAinteger16BE, lambda k: -k),
+    "uint8": (omt.HLAoctet, lambda k: 200 + k), "int16": (omt.HLAinteger16BE, lambda k: -1000 * k),
+    "uint16": (omt.Unsignedinteger16BE, lambda k: 60000 + k), "uint32": (omt.Unsignedinteger32BE, lambda k: 4 * 10**9 + k),
+    "int64": (omt.HLAinteger64BE, lambda k: -2**62 + k), "uint64": (omt.Unsignedinteger64BE, lambda k: 2**64 - 1 - k),
+    "string": (omt.HLAunicodeString, lambda k: f"é{k}"), "binary": (omt.HLAopaqueData, lambda k: bytes([k, 0, 255]))}
+
+
+def test_fmi3s_other_types_travel(gateway_address: str, tmp_path: pathlib.Path,
+                                  tmp_path_factory: pytest.TempPathFactory) -> None:
+    """An FMI 3 FMU in C (tests/data/fmu/typed3) copies an input of each of Float32, Int8, UInt8, Int16, UInt16,
+    UInt32, Int64, UInt64, String and Binary to an output at each step: mapped by name, each value the feeder sends
+    at k h (HLAfloat32BE, HLAinteger16BE for the Int8, HLAoctet, HLAinteger16BE, Unsignedinteger16BE/32BE,
+    HLAinteger64BE, Unsignedinteger64BE, HLAunicodeString, HLAopaqueData) comes back at (k + 1) h, extremes
+    included; an Int8 beyond its range is an InputError."""
+    typed3 = build_fmu("typed3", tmp_path_factory.getbasetemp() / "fmus")
+    with feeding(gateway_address, typed3, tmp_path) as (feeder, handles, source):
+        def send(k: int) -> None:
+            feeder.rtia.updateAttributeValues(source, {handles[f"{name}_in"]: codec.pack(value(k))
+                                                       for name, (codec, value) in TYPED3.items()}, "feeder", k * H)
+
+        start = {f"{name}_in": value(0) for name, (_, value) in TYPED3.items()}
+        with FmuFederate(typed3, "FeedFed", step_size=H, address=gateway_address, timeout=20.0,
+                         start_values=start) as federate:
+            federate.join()
+            assert not run_beside(federate, feeder, send)
+        reflected = [(args[5], {name: codec.unpack(args[1][handles[f"{name}_out"]])[0]
+                                for name, (codec, _) in TYPED3.items()})
+                     for args in feeder.amb.named("reflectAttributeValues")]
+        assert [t for t, _ in reflected] == pytest.approx([k * H for k in range(1, STEPS + 1)])
+        assert [v for _, v in reflected] == [
+            {name: bytes([value(k - 1)]) if name == "uint8" else value(k - 1) for name, (_, value) in TYPED3.items()}
+            for k in range(1, STEPS + 1)]
+    with feeding(gateway_address, typed3, tmp_path) as (feeder, handles, source):
+        with FmuFederate(typed3, "FeedFed", step_size=H, address=gateway_address, timeout=20.0) as federate:
+            federate.join()
+            failures = run_beside(federate, feeder, lambda k: feeder.rtia.updateAttributeValues(
+                source, {handles["int8_in"]: omt.HLAinteger16BE.pack(300 if k == 2 else k)}, "feeder", k * H))
+    assert [type(error) for error in failures] == [InputError]
+    assert "int8_in: instance 'source' sent 300, beyond its type's (-128, 127)" in str(failures[0])
 
 
 def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway, any_lag: pathlib.Path,

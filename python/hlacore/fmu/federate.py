@@ -21,7 +21,7 @@ from typing import Any, NamedTuple, Optional, Union
 from .. import rti
 from .errors import FmuError, InputError, StepFailed
 from .mapping import ENCODINGS, Endpoint, Mapping, constant_encoding
-from .model import FmuInstance, FmuModel, check_value
+from .model import RANGES, FmuInstance, FmuModel, check_value
 
 
 #: The lookahead is the step size less this fraction of it, so that the grid times start + k h, computed without
@@ -30,16 +30,24 @@ LOOKAHEAD_MARGIN = 1e-9
 
 
 class _Input(NamedTuple):
-    """Where a received value goes: the input, its encoding, the array element it is (None: the whole value)
-    and the object instance it must come from (None: any)."""
+    """Where a received value goes: the input, its encoding, the array element it is (None: the whole value),
+    the object instance it must come from (None: any) and the values its type holds (integers)."""
 
     variable: str
     codec: Any
     element: Optional[int]
     instance: Optional[str]
+    bounds: Optional[tuple[int, int]] = None
 
     def decode(self, data: bytes, source: str) -> Any:
-        """The value in ``data``; InputError when its size does not fit the encoding or the element."""
+        """The value in ``data``; InputError when its size does not fit the encoding or the element, or the
+        number does not fit the type."""
+        value = self._value(data, source)
+        if self.bounds is not None and not self.bounds[0] <= value <= self.bounds[1]:
+            raise InputError(f"{self.variable}: {source} sent {value}, beyond its type's {self.bounds}")
+        return value
+
+    def _value(self, data: bytes, source: str) -> Any:
         size = self.codec.fixed_size
         if self.element is None:
             try:
@@ -301,8 +309,8 @@ class FmuFederate:
         subscribed: dict[Any, list[Any]] = {}
         interactions: set[Any] = set()
         for variable, endpoint in self.mapping.inputs.items():
-            target = _Input(variable, ENCODINGS[self.model.variables[variable].type], endpoint.element,
-                            endpoint.instance)
+            kind = self.model.variables[variable].type
+            target = _Input(variable, ENCODINGS[kind], endpoint.element, endpoint.instance, RANGES.get(kind))
             if endpoint.interaction:
                 interaction = rtia.getInteractionClassHandle(endpoint.object_class)
                 parameter = rtia.getParameterHandle(endpoint.attribute, interaction)

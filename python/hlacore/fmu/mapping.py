@@ -16,7 +16,8 @@ Without a file, the default maps by name: every input and output of the FMU is t
 of one object class named after the model (``Lag.u``, ``Lag.y``); the FMU publishes its outputs and subscribes
 to its inputs, and whoever drives an input publishes that attribute of the same class. A variable left out
 of the file is not exchanged. Reals (FMI 3: Float64) travel as HLAfloat64BE, Integers (Int32) as
-HLAinteger32BE, Booleans as HLAboolean, Strings as HLAunicodeString; a member with ``element`` is an HLAfixedArray of that type (outputs
+HLAinteger32BE, Booleans as HLAboolean, Strings as HLAunicodeString, FMI 3's other types as :data:`ENCODINGS`
+says; a member with ``element`` is an HLAfixedArray of that type (outputs
 must then fill every element); a constant's TOML type gives its encoding (a string: HLAASCIIstring).
 """
 
@@ -31,9 +32,26 @@ from .. import omt
 from .errors import FmuError, MappingError
 from .model import SUPPORTED_TYPES, FmuModel
 
-#: The HLA encoding of each FMI type.
-ENCODINGS: dict[str, Any] = {"Real": omt.HLAfloat64BE, "Float64": omt.HLAfloat64BE, "Integer": omt.HLAinteger32BE,
-                             "Int32": omt.HLAinteger32BE, "Boolean": omt.HLAboolean, "String": omt.HLAunicodeString}
+class _OctetNumber:
+    """HLAoctet carrying an FMI 3 UInt8 as the number it is (hlacore.omt's HLAoctet unpacks to one byte)."""
+
+    name, fixed_size = "HLAoctet", 1
+
+    def pack(self, value: int) -> bytes:
+        return omt.HLAoctet.pack(value)  # type: ignore[no-any-return]
+
+    def unpack(self, data: bytes, offset: int = 0) -> tuple[int, int]:
+        return omt.HLAoctet.unpack(data, offset)[0][0], 1
+
+
+#: The HLA encoding of each FMI type: HLA 1516.2's basic types, HLAinteger16BE for an Int8 (HLA has no signed
+#: octet), its Unsignedinteger*BE for the unsigned ones.
+ENCODINGS: dict[str, Any] = {"Real": omt.HLAfloat64BE, "Float64": omt.HLAfloat64BE, "Float32": omt.HLAfloat32BE,
+                             "Integer": omt.HLAinteger32BE, "Int32": omt.HLAinteger32BE, "Int8": omt.HLAinteger16BE,
+                             "Int16": omt.HLAinteger16BE, "Int64": omt.HLAinteger64BE, "UInt8": _OctetNumber(),
+                             "UInt16": omt.Unsignedinteger16BE, "UInt32": omt.Unsignedinteger32BE,
+                             "UInt64": omt.Unsignedinteger64BE, "Boolean": omt.HLAboolean,
+                             "String": omt.HLAunicodeString, "Binary": omt.HLAopaqueData}
 #: The HLA encoding of a constant, by its TOML type (bool before int: a bool is an int in Python).
 CONSTANT_ENCODINGS: list[tuple[type, Any]] = [(bool, omt.HLAboolean), (int, omt.HLAinteger32BE),
                                               (float, omt.HLAfloat64BE), (str, omt.HLAASCIIstring)]

@@ -20,10 +20,15 @@ from typing import Any, Optional, Union
 from .errors import FmuError, MappingError, NotCoSimulation, StepFailed
 
 #: The FMI types an FMU variable may have to travel through the federation (HLA encodings in mapping.py): FMI 2's
-#: Real, Integer, Boolean and String, and their FMI 3 forms; each with the Python type of its values (FMPy's
-#: set and get methods are named after the type).
-_KINDS: dict[str, type] = {"Real": float, "Float64": float, "Integer": int, "Int32": int, "Boolean": bool,
-                           "String": str}
+#: Real, Integer, Boolean and String, and FMI 3's numbers, Boolean, String and Binary; each with the Python type
+#: of its values (FMPy's set and get methods are named after the type).
+_KINDS: dict[str, type] = {"Real": float, "Float64": float, "Float32": float, "Integer": int, "Boolean": bool,
+                           "String": str, "Binary": bytes,
+                           **{f"{sign}Int{bits}": int for sign in ("", "U") for bits in (8, 16, 32, 64)}}
+#: The values each integer type holds.
+RANGES: dict[str, tuple[int, int]] = {"Integer": (-2**31, 2**31 - 1),
+                                      **{f"Int{bits}": (-2**(bits - 1), 2**(bits - 1) - 1) for bits in (8, 16, 32, 64)},
+                                      **{f"UInt{bits}": (0, 2**bits - 1) for bits in (8, 16, 32, 64)}}
 SUPPORTED_TYPES = tuple(_KINDS)
 
 
@@ -49,13 +54,14 @@ def _platform_binary(identifier: str, version: str) -> str:
 
 def check_value(model: "FmuModel", name: str, value: Any) -> None:
     """Raise :class:`MappingError` unless ``model`` has a variable ``name`` that takes ``value``: a Real a
-    number, an Integer an int of 32 bits, a Boolean a bool, a String a str."""
+    number, an integer type an int in its range, a Boolean a bool, a String a str, a Binary bytes."""
     variable = model.variables.get(name)
     if variable is None:
         raise MappingError(f"{name} = {value!r}: {model.path.name} has no variable {name!r}")
     kind = _KINDS.get(variable.type)
+    low, high = RANGES.get(variable.type, (0, -1))
     fits = (kind is float and isinstance(value, (int, float)) or kind is int and isinstance(value, int)
-            and -2**31 <= value < 2**31 or kind is not None and kind not in (float, int) and isinstance(value, kind))
+            and low <= value <= high or kind is not None and kind not in (float, int) and isinstance(value, kind))
     if not fits or isinstance(value, bool) and kind is not bool:
         raise MappingError(f"{name} = {value!r}: {name} is of type {variable.type}")
 
@@ -177,7 +183,7 @@ class FmuInstance:
             raise FmuError(f"{model.path}: could not instantiate: {error}") from error
 
     def set(self, values: dict[str, Any]) -> None:
-        """Set variables by name (``fmi2SetReal``/``Integer``/``Boolean``/``String``; FMI 3: ``Float64``/``Int32``
+        """Set variables by name (``fmi2SetReal``/``Integer``/``Boolean``/``String``; FMI 3: ``Float64``/``Int8``
         /...)."""
         for name, value in values.items():
             variable = self.model.variables[name]
@@ -196,7 +202,9 @@ class FmuInstance:
         for name in names:
             variable = self.model.variables[name]
             value = getattr(self._fmu, f"get{variable.type}")([variable.value_reference])[0]
-            values[name] = value.decode() if isinstance(value, bytes) else _KINDS[variable.type](value)
+            if variable.type == "String" and isinstance(value, bytes):  # FMI 2's getString gives bytes
+                value = value.decode()
+            values[name] = _KINDS[variable.type](value)
         return values
 
     def do_step(self, time: float, step: float, outputs: list[str]) -> dict[str, Any]:

@@ -27,7 +27,7 @@ def fmi_headers() -> pathlib.Path:
 
 def build_fmu(source_dir: Union[str, pathlib.Path], into: Union[str, pathlib.Path]) -> pathlib.Path:
     """The .fmu of ``source_dir``, built into ``into`` and kept there, named after the directory and a hash of
-    the sources (a second call with the same sources returns it without compiling).
+    the sources and the headers they may include (a second call with the same ones returns it without compiling).
 
     The binary is named after the model identifier and goes where the FMI version puts it: binaries/linux64/
     for FMI 2, FMPy's platform tuple (binaries/x86_64-linux/) for FMI 3. Raises :class:`FmuError` when the
@@ -44,7 +44,9 @@ def build_fmu(source_dir: Union[str, pathlib.Path], into: Union[str, pathlib.Pat
     if identifier is None:
         raise FmuError(f"{description}: no modelIdentifier")
     platform = platform_tuple if 'fmiVersion="3.0"' in text else "linux64"
-    sources = [*c_files, *sorted(SKELETON.glob("*.h"))]
+    # with the headers it may include: its own, those of the directory above (shared by sibling models), hlacore's
+    sources = [*c_files, *sorted(source_dir.glob("*.h")), *sorted(source_dir.parent.glob("*.h")),
+               *sorted(SKELETON.glob("*.h"))]
     digest = hashlib.sha256(b"".join(f.read_bytes() for f in sources) + text.encode()).hexdigest()[:16]
     fmu = into / f"{source_dir.name}-{digest}.fmu"
     if fmu.exists():

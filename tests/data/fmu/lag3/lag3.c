@@ -1,6 +1,6 @@
 /* The first-order lag of ../lag2 as an FMI 3 co-simulation FMU: dx/dt = (u - x) / tau, y = x, doStep exact with
- * u held. The services a co-simulation of Float64 variables does not use are in unsupported.c. Value references
- * are those of modelDescription.xml. */
+ * u held; its instance as the other test FMUs' (../fmi3_instance.h). The services a co-simulation of Float64
+ * variables does not use are in unsupported.c. Value references are those of modelDescription.xml. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,43 +13,9 @@ typedef struct {
     double values[VR_COUNT]; /* time, u, y (= x), tau, x0 */
 } State;
 
-const char *fmi3GetVersion(void) { return fmi3Version; }
+static void state_start(State *s) { s->values[VR_TAU] = 1.0; }
 
-fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean on, size_t n, const fmi3String categories[]) {
-    (void)instance; (void)on; (void)n; (void)categories;
-    return fmi3OK;
-}
-
-fmi3Instance fmi3InstantiateCoSimulation(fmi3String name, fmi3String token, fmi3String resources, fmi3Boolean visible,
-                                         fmi3Boolean logging, fmi3Boolean eventModeUsed, fmi3Boolean earlyReturn,
-                                         const fmi3ValueReference required[], size_t nRequired,
-                                         fmi3InstanceEnvironment environment, fmi3LogMessageCallback log,
-                                         fmi3IntermediateUpdateCallback update) {
-    (void)name; (void)token; (void)resources; (void)visible; (void)logging; (void)eventModeUsed;
-    (void)earlyReturn; (void)required; (void)nRequired; (void)environment; (void)log; (void)update;
-    State *s = calloc(1, sizeof(State));
-    if (s) s->values[VR_TAU] = 1.0;
-    return s;
-}
-
-fmi3Instance fmi3InstantiateModelExchange(fmi3String name, fmi3String token, fmi3String resources,
-                                          fmi3Boolean visible, fmi3Boolean logging,
-                                          fmi3InstanceEnvironment environment, fmi3LogMessageCallback log) {
-    (void)name; (void)token; (void)resources; (void)visible; (void)logging; (void)environment; (void)log;
-    return NULL;
-}
-
-fmi3Instance fmi3InstantiateScheduledExecution(fmi3String name, fmi3String token, fmi3String resources,
-                                               fmi3Boolean visible, fmi3Boolean logging,
-                                               fmi3InstanceEnvironment environment, fmi3LogMessageCallback log,
-                                               fmi3ClockUpdateCallback clock, fmi3LockPreemptionCallback lock,
-                                               fmi3UnlockPreemptionCallback unlock) {
-    (void)name; (void)token; (void)resources; (void)visible; (void)logging; (void)environment; (void)log;
-    (void)clock; (void)lock; (void)unlock;
-    return NULL;
-}
-
-void fmi3FreeInstance(fmi3Instance instance) { free(instance); }
+#include "../fmi3_instance.h"
 
 fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean tolDefined, fmi3Float64 tol,
                                        fmi3Float64 start, fmi3Boolean stopDefined, fmi3Float64 stop) {
@@ -63,8 +29,6 @@ fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
     s->values[VR_Y] = s->values[VR_X0];
     return fmi3OK;
 }
-
-fmi3Status fmi3Terminate(fmi3Instance instance) { (void)instance; return fmi3OK; }
 
 fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t n, fmi3Float64 values[],
                           size_t nValues) {

@@ -1,7 +1,7 @@
 /* FMI 3's other types through the federation, for hlacore's tests: an FMI 3 co-simulation FMU with one input and
  * one output of each of Float32, Int8, UInt8, Int16, UInt16, UInt32, Int64, UInt64, String and Binary; each step
  * copies every input to its output. Input k has value reference 1 + 2k, its output 2 + 2k (modelDescription.xml).
- * The services it does not offer are in unsupported.c. */
+ * Its instance is the other test FMUs' (../fmi3_instance.h); the services it does not offer are in unsupported.c. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -112,24 +112,9 @@ fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 t, fmi3Float64 h, fmi3B
     return fmi3OK;
 }
 
-const char *fmi3GetVersion(void) { return fmi3Version; }
+static void state_start(State *s) { (void)s; }
 
-fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean on, size_t n, const fmi3String categories[]) {
-    (void)instance; (void)on; (void)n; (void)categories;
-    return fmi3OK;
-}
-
-fmi3Instance fmi3InstantiateCoSimulation(fmi3String name, fmi3String token, fmi3String resources, fmi3Boolean visible,
-                                         fmi3Boolean logging, fmi3Boolean eventModeUsed, fmi3Boolean earlyReturn,
-                                         const fmi3ValueReference required[], size_t nRequired,
-                                         fmi3InstanceEnvironment environment, fmi3LogMessageCallback log,
-                                         fmi3IntermediateUpdateCallback update) {
-    (void)name; (void)token; (void)resources; (void)visible; (void)logging; (void)eventModeUsed;
-    (void)earlyReturn; (void)required; (void)nRequired; (void)environment; (void)log; (void)update;
-    return calloc(1, sizeof(State));
-}
-
-void fmi3FreeInstance(fmi3Instance instance) { free(instance); }
+#include "../fmi3_instance.h"
 
 fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean tolDefined, fmi3Float64 tol,
                                        fmi3Float64 start, fmi3Boolean stopDefined, fmi3Float64 stop) {
@@ -138,4 +123,3 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean tolDef
 }
 
 fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) { (void)instance; return fmi3OK; }
-fmi3Status fmi3Terminate(fmi3Instance instance) { (void)instance; return fmi3OK; }

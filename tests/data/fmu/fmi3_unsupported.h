@@ -1,0 +1,41 @@
+/* The FMI 3 functions none of the test FMUs offers, for their unsupported.c (each adds those of its own). FMPy
+ * looks every function of the standard up when it loads an FMU, so each must exist; none is called in the
+ * co-simulations of the tests. Each returns fmi3Error (3). The including file does not include fmi3Functions.h:
+ * the functions are defined without their parameters, which the x86-64 and AArch64 calling conventions allow for
+ * a callee that reads none of them. */
+#define UNSUPPORTED(name) int name(void) { return 3; }
+
+UNSUPPORTED(name)
+UNSUPPORTED(fmi3Reset)
+UNSUPPORTED(fmi3EnterEventMode)
+UNSUPPORTED(fmi3GetClock)
+UNSUPPORTED(fmi3SetClock)
+UNSUPPORTED(fmi3GetNumberOfVariableDependencies)
+UNSUPPORTED(fmi3GetVariableDependencies)
+UNSUPPORTED(fmi3GetDirectionalDerivative)
+UNSUPPORTED(fmi3GetAdjointDerivative)
+UNSUPPORTED(fmi3EnterConfigurationMode)
+UNSUPPORTED(fmi3ExitConfigurationMode)
+UNSUPPORTED(fmi3GetIntervalDecimal)
+UNSUPPORTED(fmi3GetIntervalFraction)
+UNSUPPORTED(fmi3GetShiftDecimal)
+UNSUPPORTED(fmi3GetShiftFraction)
+UNSUPPORTED(fmi3SetIntervalDecimal)
+UNSUPPORTED(fmi3SetIntervalFraction)
+UNSUPPORTED(fmi3SetShiftDecimal)
+UNSUPPORTED(fmi3SetShiftFraction)
+UNSUPPORTED(fmi3EvaluateDiscreteStates)
+UNSUPPORTED(fmi3UpdateDiscreteStates)
+UNSUPPORTED(fmi3EnterContinuousTimeMode)
+UNSUPPORTED(fmi3CompletedIntegratorStep)
+UNSUPPORTED(fmi3SetTime)
+UNSUPPORTED(fmi3SetContinuousStates)
+UNSUPPORTED(fmi3GetContinuousStateDerivatives)
+UNSUPPORTED(fmi3GetEventIndicators)
+UNSUPPORTED(fmi3GetContinuousStates)
+UNSUPPORTED(fmi3GetNominalsOfContinuousStates)
+UNSUPPORTED(fmi3GetNumberOfEventIndicators)
+UNSUPPORTED(fmi3GetNumberOfContinuousStates)
+UNSUPPORTED(fmi3EnterStepMode)
+UNSUPPORTED(fmi3GetOutputDerivatives)
+UNSUPPORTED(fmi3ActivateModelPartition)

@@ -42,6 +42,14 @@ class Member:
     def until(self, done: Any) -> None:
         until(self.rtia, done)
 
+    def handled(self, car: Any) -> None:
+        """Wait until the gateway has handled all this federate sent before: it answers a query of who owns the
+        car's position after them. (Another federate's messages sent later may otherwise overtake them.)"""
+        answers = ("informAttributeOwnership", "attributeIsNotOwned", "attributeIsOwnedByRTI")
+        count = sum(len(self.amb.named(name)) for name in answers)
+        self.rtia.queryAttributeOwnership(objectInstance=car, attributes=[self.position])
+        self.until(lambda: sum(len(self.amb.named(name)) for name in answers) > count)
+
     def directed(self) -> list[bytes]:
         """The verbs of the directed interactions received so far (in receive or timestamp order), in order."""
         return [fedpro.handle_values(m.parameterValues)[self.verb.data] for n, m in self.amb.calls
@@ -95,6 +103,7 @@ def test_a_directed_interaction_reaches_the_owner_and_the_universal_subscribers_
     # sends reaches a receiver in order, so "stop" would have come before "go".
     watcher.rtia.subscribeObjectClassDirectedInteractionsUniversally(objectClass=watcher.vehicle,
                                                                       interactionClasses=[watcher.command])
+    watcher.handled(car)
     send(sender, car, b"go")
     watcher.until(lambda: watcher.directed() == [b"go"])
     owner.until(lambda: owner.directed() == [b"stop", b"go"])
@@ -102,6 +111,7 @@ def test_a_directed_interaction_reaches_the_owner_and_the_universal_subscribers_
     # Unsubscribed, the watcher gets none; a plain interaction after it shows nothing came before.
     watcher.rtia.unsubscribeObjectClassDirectedInteractions(objectClass=watcher.vehicle)
     watcher.rtia.subscribeInteractionClass(interactionClass=watcher.command)
+    watcher.handled(car)
     sender.rtia.publishInteractionClass(interactionClass=sender.command)
     send(sender, car, b"halt")
     sender.rtia.sendInteraction(interactionClass=sender.command, parameterValues={sender.verb.data: b"plain"},
@@ -115,6 +125,7 @@ def test_a_directed_interaction_reaches_the_owner_and_the_universal_subscribers_
     privilege = owner.rtia.getAttributeHandle(objectClass=owner.vehicle, attributeName="HLAprivilegeToDeleteObject")
     owner.rtia.unconditionalAttributeOwnershipDivestiture(objectInstance=car, attributes=[owner.position, privilege])
     owner.rtia.subscribeInteractionClass(interactionClass=owner.command)
+    owner.handled(car)
     send(sender, car, b"unowned")
     sender.rtia.sendInteraction(interactionClass=sender.command, parameterValues={sender.verb.data: b"after"},
                                 userSuppliedTag=b"")

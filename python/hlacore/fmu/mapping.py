@@ -38,9 +38,11 @@ class _OctetNumber:
     name, fixed_size = "HLAoctet", 1
 
     def pack(self, value: int) -> bytes:
+        """One octet holding ``value`` (0 to 255)."""
         return omt.HLAoctet.pack(value)  # type: ignore[no-any-return]
 
     def unpack(self, data: bytes, offset: int = 0) -> tuple[int, int]:
+        """The number in the octet at ``offset``, and its size."""
         return omt.HLAoctet.unpack(data, offset)[0][0], 1
 
 

@@ -16,51 +16,18 @@ import json
 import math
 import pathlib
 import time
-from typing import Any, NamedTuple, Optional, Union
+from typing import Any, Optional, Union
 
 from .. import rti
 from .errors import FmuError, InputError, StepFailed
-from .mapping import ENCODINGS, Endpoint, Mapping, constant_encoding
+from .exchange import Input, Send
+from .mapping import ENCODINGS, Mapping, constant_encoding
 from .model import RANGES, FmuInstance, FmuModel, check_value
 
 
 #: The lookahead is the step size less this fraction of it, so that the grid times start + k h, computed without
 #: drift, are always at or past the federate time plus the lookahead despite rounding.
 LOOKAHEAD_MARGIN = 1e-9
-
-
-class _Input(NamedTuple):
-    """Where a received value goes: the input, its encoding, the array element it is (None: the whole value),
-    the object instance it must come from (None: any) and the values its type holds (integers)."""
-
-    variable: str
-    codec: Any
-    element: Optional[int]
-    instance: Optional[str]
-    bounds: Optional[tuple[int, int]] = None
-
-    def decode(self, data: bytes, source: str) -> Any:
-        """The value in ``data``; InputError when its size does not fit the encoding or the element, or the
-        number does not fit the type."""
-        value = self._value(data, source)
-        if self.bounds is not None and not self.bounds[0] <= value <= self.bounds[1]:
-            raise InputError(f"{self.variable}: {source} sent {value}, beyond its type's {self.bounds}")
-        return value
-
-    def _value(self, data: bytes, source: str) -> Any:
-        size = self.codec.fixed_size
-        if self.element is None:
-            try:
-                value, used = self.codec.unpack(data)
-            except ValueError:
-                used = -1
-            if used != len(data):
-                raise InputError(f"{self.variable}: {source} sent {len(data)} bytes, not one {self.codec.name}")
-            return value
-        if len(data) % size or len(data) < (self.element + 1) * size:
-            raise InputError(f"{self.variable}: {source} sent {len(data)} bytes, not an array of {self.codec.name} "
-                             f"with an element {self.element}")
-        return self.codec.unpack(data, self.element * size)[0]
 
 
 class _Ambassador(rti.FederateAmbassador):
@@ -70,8 +37,8 @@ class _Ambassador(rti.FederateAmbassador):
     def __init__(self, federate: "FmuFederate") -> None:
         self.federate = federate
         self.instances: dict[Any, tuple[Any, str]] = {}  # object -> (its class, its name)
-        self.inputs: dict[tuple[Any, Any], list[_Input]] = {}  # (class, attribute) -> where its values go
-        self.parameters: dict[tuple[Any, Any], list[_Input]] = {}  # (interaction, parameter) -> the same
+        self.inputs: dict[tuple[Any, Any], list[Input]] = {}  # (class, attribute) -> where its values go
+        self.parameters: dict[tuple[Any, Any], list[Input]] = {}  # (interaction, parameter) -> the same
         self.received: dict[str, Any] = {}
         self.error: Optional[InputError] = None
         self.taken: Optional[float] = None  # with feedthrough: the time of the inputs last taken
@@ -93,7 +60,7 @@ class _Ambassador(rti.FederateAmbassador):
         for parameter, data in parameters.items():
             self._keep(self.parameters.get((interactionClass, parameter), []), data, "an interaction", None, time)
 
-    def _keep(self, inputs: list[_Input], data: bytes, source: str, instance: Optional[str],
+    def _keep(self, inputs: list[Input], data: bytes, source: str, instance: Optional[str],
               time: Optional[float]) -> None:
         for target in inputs:
             if target.instance is not None and target.instance != instance:
@@ -136,42 +103,6 @@ class _Ambassador(rti.FederateAmbassador):
     def federationNotRestored(self) -> None:
         """The restore failed (HLA 1.3 §4.21)."""
         self.federate._restoring = False
-
-
-class _Send:
-    """What one output class sends at each step: an update of the instance this federate registered, or an
-    interaction; each member (attribute or parameter) filled by its outputs, in element order, and the constants."""
-
-    def __init__(self, rtia: rti.RTIAmbassador, endpoint: Endpoint) -> None:
-        self.object_class = endpoint.object_class
-        self.interaction = endpoint.interaction
-        self.handle: Any = (rtia.getInteractionClassHandle if self.interaction else rtia.getObjectClassHandle)(
-            endpoint.object_class)
-        self.members: dict[Any, tuple[list[str], Any]] = {}  # member handle -> (outputs, their encoding)
-        self.constants: dict[Any, bytes] = {}  # member handle -> its value, encoded
-        self.target: Any = self.handle  # the interaction class, or the instance registered
-
-    def member(self, rtia: rti.RTIAmbassador, name: str) -> Any:
-        """The handle of the parameter or attribute ``name`` of the class."""
-        return (rtia.getParameterHandle if self.interaction else rtia.getAttributeHandle)(name, self.handle)
-
-    def publish(self, rtia: rti.RTIAmbassador, instance_name: str) -> None:
-        """Publish the class (HLA 1.3 §5.2, §5.4) and, for an object class, register its instance (§6.2)."""
-        if self.interaction:
-            rtia.publishInteractionClass(self.handle)
-            return
-        rtia.publishObjectClass(self.handle, [*self.members, *self.constants])
-        self.target = rtia.registerObjectInstance(self.handle, instance_name)
-
-    def send(self, rtia: rti.RTIAmbassador, outputs: dict[str, Any], tag: str, time: float) -> None:
-        """Update or send the outputs' values and the constants, stamped ``time`` (HLA 1.3 §6.4, §6.6)."""
-        values = dict(self.constants)
-        for handle, (names, codec) in self.members.items():
-            values[handle] = b"".join(codec.pack(outputs[name]) for name in names)
-        if self.interaction:
-            rtia.sendInteraction(self.target, values, tag, time)
-        else:
-            rtia.updateAttributeValues(self.target, values, tag, time)
 
 
 class FmuFederate:
@@ -227,7 +158,7 @@ class FmuFederate:
         self.restored: list[str] = []
         self._saving = False
         self._restoring = False
-        self._sends: list[_Send] = []
+        self._sends: list[Send] = []
         self._in_flight: Optional[tuple[float, Optional[dict[str, Any]]]] = None  # a step done, not yet granted
         self._lookahead_now = 0.0
         #: (time, {output: value}) at the start and after each step, as sent.
@@ -292,11 +223,11 @@ class FmuFederate:
 
     def _declare(self) -> None:
         rtia = self.rtia
-        sends: dict[tuple[str, bool], _Send] = {}
+        sends: dict[tuple[str, bool], Send] = {}
         for endpoint, outputs in self.mapping.members().items():
             send = sends.get((endpoint.object_class, endpoint.interaction))
             if send is None:
-                send = sends[endpoint.object_class, endpoint.interaction] = _Send(rtia, endpoint)
+                send = sends[endpoint.object_class, endpoint.interaction] = Send(rtia, endpoint)
             send.members[send.member(rtia, endpoint.attribute)] = (
                 outputs, ENCODINGS[self.model.variables[outputs[0]].type])
         for member, value in self.mapping.constants.items():
@@ -310,7 +241,7 @@ class FmuFederate:
         interactions: set[Any] = set()
         for variable, endpoint in self.mapping.inputs.items():
             kind = self.model.variables[variable].type
-            target = _Input(variable, ENCODINGS[kind], endpoint.element, endpoint.instance, RANGES.get(kind))
+            target = Input(variable, ENCODINGS[kind], endpoint.element, endpoint.instance, RANGES.get(kind))
             if endpoint.interaction:
                 interaction = rtia.getInteractionClassHandle(endpoint.object_class)
                 parameter = rtia.getParameterHandle(endpoint.attribute, interaction)
@@ -475,4 +406,4 @@ class FmuFederate:
                 instance.close()
 
 
-__all__ = ["FmuFederate", "Endpoint"]
+__all__ = ["FmuFederate"]

@@ -277,7 +277,7 @@ class RosBridge:
                                                         reliable(_attribute(m)), self._mismatch))
             elif isinstance(m, TwistOut) and m.ack is not None:
                 self._subscribers.append(ros.subscriber(m.ack, msgs.UInt32, functools.partial(self._on_ack,
-                                                        ack=m.ack), True, self._mismatch))
+                                                        ack=m.ack), True, self._mismatch, latched=True))
 
     def spin(self, until: Optional[float] = None, cycle_timeout: float = 0.05) -> float:
         """Run the bridge on this thread until :meth:`stop` (or, timed, federation time ``until``); returns

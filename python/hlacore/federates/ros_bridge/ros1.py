@@ -40,17 +40,19 @@ class Ros1(RosApi):
             time.sleep(0.05)
         self.rospy.init_node(name, anonymous=False, disable_signals=True)
 
-    def publisher(self, topic: str, kind: Any, reliable: bool = True, synchronous: bool = False) -> Any:
-        """``rospy.Publisher``; ``synchronous``: ``queue_size=None`` (publish writes before it returns)."""
+    def publisher(self, topic: str, kind: Any, reliable: bool = True, synchronous: bool = False,
+                  latched: bool = False) -> Any:
+        """``rospy.Publisher``; ``synchronous``: ``queue_size=None`` (publish writes before it returns);
+        ``latched``: ``latch=True``."""
         if not synchronous:
-            return self.rospy.Publisher(topic, kind, queue_size=100)
+            return self.rospy.Publisher(topic, kind, queue_size=100, latch=latched)
         with warnings.catch_warnings():  # rospy warns about queue_size=None, which is meant here
             warnings.simplefilter("ignore", SyntaxWarning)
-            return self.rospy.Publisher(topic, kind, queue_size=None)
+            return self.rospy.Publisher(topic, kind, queue_size=None, latch=latched)
 
     def subscriber(self, topic: str, kind: Any, callback: Callable[[Any], None], reliable: bool = True,
-                   on_mismatch: Optional[Mismatch] = None) -> Any:
-        """``rospy.Subscriber`` with a queue of 100."""
+                   on_mismatch: Optional[Mismatch] = None, latched: bool = False) -> Any:
+        """``rospy.Subscriber`` with a queue of 100 (a latched publisher's last message comes by itself)."""
         return self.rospy.Subscriber(topic, kind, callback, queue_size=100)
 
     def publisher_connections(self, pub: Any) -> int:

@@ -67,19 +67,21 @@ class Ros2(RosApi):
         except ExternalShutdownException:
             pass
 
-    def _qos(self, reliable: bool) -> Any:
+    def _qos(self, reliable: bool, latched: bool = False) -> Any:
         from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 
-        return QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=DEPTH, durability=DurabilityPolicy.VOLATILE,
+        durability = DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE
+        return QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=DEPTH, durability=durability,
                           reliability=ReliabilityPolicy.RELIABLE if reliable else ReliabilityPolicy.BEST_EFFORT)
 
-    def publisher(self, topic: str, kind: Any, reliable: bool = True, synchronous: bool = False) -> Any:
-        """``create_publisher`` with the QoS of ``reliable`` (``synchronous``: Fast DDS publishes
-        synchronously in any case, :mod:`.ros2_env` sets ``RMW_FASTRTPS_PUBLICATION_MODE``)."""
-        return self.node.create_publisher(kind, topic, self._qos(reliable))
+    def publisher(self, topic: str, kind: Any, reliable: bool = True, synchronous: bool = False,
+                  latched: bool = False) -> Any:
+        """``create_publisher`` with the QoS of ``reliable`` and ``latched`` (``synchronous``: Fast DDS
+        publishes synchronously in any case, :mod:`.ros2_env` sets ``RMW_FASTRTPS_PUBLICATION_MODE``)."""
+        return self.node.create_publisher(kind, topic, self._qos(reliable, latched))
 
     def subscriber(self, topic: str, kind: Any, callback: Callable[[Any], None], reliable: bool = True,
-                   on_mismatch: Optional[Mismatch] = None) -> Any:
+                   on_mismatch: Optional[Mismatch] = None, latched: bool = False) -> Any:
         """``create_subscription``; the middleware's incompatible-QoS event goes to ``on_mismatch`` with the
         policy that does not match."""
         from rclpy.event_handler import SubscriptionEventCallbacks
@@ -93,7 +95,8 @@ class Ros2(RosApi):
             # Fast DDS does not raise the incompatible-type event (seen with these wheels): the bridge looks
             # at the graph instead (foreign_publishers)
             events = SubscriptionEventCallbacks(incompatible_qos=wrong_qos)
-        return self.node.create_subscription(kind, topic, callback, self._qos(reliable), event_callbacks=events)
+        return self.node.create_subscription(kind, topic, callback, self._qos(reliable, latched),
+                                             event_callbacks=events)
 
     def foreign_publishers(self, sub: Any) -> list[str]:
         """From the ROS graph: the types of the publishers on the topic other than the subscription's."""

@@ -53,16 +53,19 @@ class RosApi(ABC):
         ``sim_time``: the node's own clock follows ``/clock``."""
 
     @abstractmethod
-    def publisher(self, topic: str, kind: Any, reliable: bool = True, synchronous: bool = False) -> Any:
+    def publisher(self, topic: str, kind: Any, reliable: bool = True, synchronous: bool = False,
+                  latched: bool = False) -> Any:
         """A publisher of ``kind`` on ``topic``; ``reliable`` False: best effort (ROS 2's sensor-data QoS;
         ROS 1's TCPROS is always reliable); ``synchronous``: ``publish`` has written the message when it
-        returns."""
+        returns; ``latched``: a subscriber that connects later still gets the last message (ROS 1's latch,
+        ROS 2's transient local durability), so none is lost to a connection still being made."""
 
     @abstractmethod
     def subscriber(self, topic: str, kind: Any, callback: Callable[[Any], None], reliable: bool = True,
-                   on_mismatch: Optional[Mismatch] = None) -> Any:
+                   on_mismatch: Optional[Mismatch] = None, latched: bool = False) -> Any:
         """Call ``callback(msg)`` for each message on ``topic``. ``on_mismatch(topic, what)``: a publisher on
-        the topic does not match (another type, an incompatible QoS); its messages never arrive."""
+        the topic does not match (another type, an incompatible QoS); its messages never arrive. ``latched``:
+        also the last message a latched publisher sent before the connection (ROS 2: transient local)."""
 
     @abstractmethod
     def publisher_connections(self, pub: Any) -> int:

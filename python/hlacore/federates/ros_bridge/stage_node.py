@@ -19,7 +19,8 @@ Topics, per robot (named by the world file's ``name``, else ``robot_<index>``, a
   ``/<robot>/base_scan`` (``sensor_msgs/LaserScan``: every beam of the robot's rangers) and our own
   ``/<robot>/range`` (``sensor_msgs/Range``, the nearest beam) and ``/<robot>/stall`` (``std_msgs/Bool``);
 * out, after each Twist taken (applied or rejected), ours: ``/<robot>/cmd_vel_received`` (``std_msgs/UInt32``,
-  how many so far), so that a bridge can hold the next clock tick until the node has its commands.
+  how many so far; latched, so that a count sent while the bridge's connection is still being made is not
+  lost), so that a bridge can hold the next clock tick until the node has its commands.
 
 Pacing. By default the node has no clock of its own: it follows ``/clock`` (ROS time with
 ``use_sim_time``, published by the ROS bridge at every federation grant). Each tick ``t`` steps the world
@@ -83,7 +84,10 @@ class StageNode:
         kinds = {"odom": msgs.Odometry, "base_pose_ground_truth": msgs.Odometry, "base_scan": msgs.LaserScan,
                  "range": msgs.Range, "stall": msgs.Bool, "cmd_vel_received": msgs.UInt32}
         for robot in self.world.robots:
-            self._pubs[robot.name] = {t: ros.publisher(f"/{robot.name}/{t}", k) for t, k in kinds.items()}
+            # the acknowledgements latched: the first, sent perhaps before the bridge's connection is complete, is
+            # not lost (the bridge would wait for it in vain)
+            self._pubs[robot.name] = {t: ros.publisher(f"/{robot.name}/{t}", k, latched=t == "cmd_vel_received")
+                                      for t, k in kinds.items()}
             self._received[robot.name] = 0
             self._subs.append(ros.subscriber(f"/{robot.name}/cmd_vel", msgs.Twist,
                                              functools.partial(self._on_cmd, robot=robot.name)))

@@ -104,9 +104,11 @@ private:
         if (!gateway_.splice_source_.block || it == peers_.end()) return false;
         Connection& c = *it->second;
         // TLS encrypts from one buffer, the trace reads the frames in `out`, and output() is `tail` while
-        // there is a backlog or a spill.
-        if (c.ssl || gateway_.trace_ || &gateway_.output(c) != &c.out) return false;
+        // there is a backlog or a spill. Asked after mark_dirty(), which may start spilling c: its stream then
+        // goes on in the spill file, and a frame put in `out` would come before the rest of the one cut there.
+        if (c.ssl || gateway_.trace_) return false;
         gateway_.mark_dirty(c);
+        if (&gateway_.output(c) != &c.out) return false;
         // The large values that lie in the frame being served are spliced in, referenced rather than copied.
         const SpliceSource& source = gateway_.splice_source_;
         wire::SplicingOutput output{c.out, [&c, &source](std::size_t at, std::string_view bytes) {

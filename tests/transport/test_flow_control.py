@@ -75,7 +75,9 @@ def test_a_federate_that_does_not_advance_holds_back_its_publisher_within_the_bu
                 time.sleep(0.05)
             with publisher:
                 sent = publisher.read_json(seconds + 60)
+                assert publisher.wait(30) == 0, publisher.stderr()  # resigned, not killed on the way out
             received = paused.read_json(seconds + 120)
+            assert paused.wait(30) == 0, paused.stderr()
         log = server.log()
     print(f"\n{order} order, {seconds:.0f} s, budget {budget // MIB} MiB: rtig VmRSS {baseline / MIB:.1f} MiB before, "
           f"peak {peak / MIB:.1f} MiB (+{(peak - baseline) / MIB:.1f}) while paused, {peak_after / MIB:.1f} MiB "

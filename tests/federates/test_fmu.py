@@ -20,12 +20,17 @@ from typing import Any, Callable, Iterator
 import fmpy  # the test extra installs it
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import hlacore
 from hlacore import omt, rti
 from hlacore.fmu import (
     Endpoint, FmuError, FmuFederate, FmuModel, InputError, Mapping, MappingError, NotCoSimulation, StepFailed)
+from hlacore.fmu.exchange import Input
 from hlacore.fmu.federate import LOOKAHEAD_MARGIN
+from hlacore.fmu.mapping import ENCODINGS
+from hlacore.fmu.model import Variable
 
 from support import ROBOT_FED, Federate, tick_until
 from support.fmus import FMU_SOURCES, build_fmu, build_python_fmu
@@ -349,16 +354,17 @@ TYPED3: dict[str, tuple[Any, Callable[[int], Any]]] = {
     "uint8": (omt.HLAoctet, lambda k: 200 + k), "int16": (omt.HLAinteger16BE, lambda k: -1000 * k),
     "uint16": (omt.Unsignedinteger16BE, lambda k: 60000 + k), "uint32": (omt.Unsignedinteger32BE, lambda k: 4 * 10**9 + k),
     "int64": (omt.HLAinteger64BE, lambda k: -2**62 + k), "uint64": (omt.Unsignedinteger64BE, lambda k: 2**64 - 1 - k),
-    "string": (omt.HLAunicodeString, lambda k: f"é{k}"), "binary": (omt.HLAopaqueData, lambda k: bytes([k, 0, 255]))}
+    "string": (omt.HLAunicodeString, lambda k: f"é{k}"), "binary": (omt.HLAopaqueData, lambda k: bytes([k, 0, 255])),
+    "gear": (omt.HLAinteger32BE, lambda k: (-1, 0, 1)[k % 3])}
 
 
 def test_fmi3s_other_types_travel(gateway_address: str, tmp_path: pathlib.Path,
                                   tmp_path_factory: pytest.TempPathFactory) -> None:
     """An FMI 3 FMU in C (tests/data/fmu/typed3) copies an input of each of Float32, Int8, UInt8, Int16, UInt16,
-    UInt32, Int64, UInt64, String and Binary to an output at each step: mapped by name, each value the feeder sends
-    at k h (HLAfloat32BE, HLAinteger16BE for the Int8, HLAoctet, HLAinteger16BE, Unsignedinteger16BE/32BE,
-    HLAinteger64BE, Unsignedinteger64BE, HLAunicodeString, HLAopaqueData) comes back at (k + 1) h, extremes
-    included; an Int8 beyond its range is an InputError."""
+    UInt32, Int64, UInt64, String, Binary and an Enumeration to an output at each step: mapped by name, each value
+    the feeder sends at k h (HLAfloat32BE, HLAinteger16BE for the Int8, HLAoctet, HLAinteger16BE,
+    Unsignedinteger16BE/32BE, HLAinteger64BE, Unsignedinteger64BE, HLAunicodeString, HLAopaqueData,
+    HLAinteger32BE) comes back at (k + 1) h, extremes included; an Int8 beyond its range is an InputError."""
     typed3 = build_fmu("typed3", tmp_path_factory.getbasetemp() / "fmus")
     with feeding(gateway_address, typed3, tmp_path) as (feeder, handles, source):
         def send(k: int) -> None:
@@ -384,6 +390,84 @@ def test_fmi3s_other_types_travel(gateway_address: str, tmp_path: pathlib.Path,
                 source, {handles["int8_in"]: omt.HLAinteger16BE.pack(300 if k == 2 else k)}, "feeder", k * H))
     assert [type(error) for error in failures] == [InputError]
     assert "int8_in: instance 'source' sent 300, beyond its type's (-128, 127)" in str(failures[0])
+
+
+#: tests/data/fmu/gear2's variables and their encodings (Gear: Reverse = -1, Neutral = 0, Drive = 1).
+GEARBOX = {"gear": omt.HLAinteger32BE, "throttle": F64, "speed": F64, "engaged": omt.HLAinteger32BE,
+           "shifts": omt.HLAinteger32BE}
+
+
+def gear(k: int) -> int:
+    """The gear the feeder sends at step k: Drive, Drive, Reverse, Neutral, ... (a change at every step but one
+    in four)."""
+    return (1, 1, -1, 0)[k % 4]
+
+
+def test_enumerations_travel(gateway_address: str, tmp_path: pathlib.Path,
+                             tmp_path_factory: pytest.TempPathFactory) -> None:
+    """An FMI 2 FMU on hlacore's C skeleton (tests/data/fmu/gear2) with an Enumeration input and output and an
+    Integer output: the start value is given by the item's name ("Drive"); the gear the feeder sends at k h as
+    HLAinteger32BE comes back engaged at (k + 1) h, with speed = gear * throttle and the count of shifts."""
+    gearbox = build_fmu("gear2", tmp_path_factory.getbasetemp() / "fmus")
+    with feeding(gateway_address, gearbox, tmp_path) as (feeder, handles, source):
+        def send(k: int) -> None:
+            feeder.rtia.updateAttributeValues(source, {handles["gear"]: GEARBOX["gear"].pack(gear(k)),
+                                                       handles["throttle"]: F64.pack(k)}, "feeder", k * H)
+
+        with FmuFederate(gearbox, "FeedFed", step_size=H, address=gateway_address, timeout=20.0,
+                         start_values={"gear": "Drive", "throttle": 0.0}) as federate:
+            federate.join()
+            assert not run_beside(federate, feeder, send)
+        reflected = [{name: GEARBOX[name].unpack(args[1][handles[name]])[0] for name in ("speed", "engaged", "shifts")}
+                     for args in feeder.amb.named("reflectAttributeValues")]
+    assert [args[5] for args in feeder.amb.named("reflectAttributeValues")] == pytest.approx(
+        [k * H for k in range(1, STEPS + 1)])
+    assert reflected == [{"speed": gear(k) * k, "engaged": gear(k), "shifts": sum(gear(j) != gear(j - 1)
+                                                                                  for j in range(1, k + 1))}
+                         for k in range(STEPS)]
+
+
+def test_an_enumeration_beyond_its_items_is_refused(gateway_address: str, tmp_path: pathlib.Path,
+                                                    tmp_path_factory: pytest.TempPathFactory) -> None:
+    """A start value no item has (by name or value) is a MappingError before joining; a received value no item has
+    is an InputError, and an output no item has (the gearbox jams on a negative throttle) a StepFailed, each by the
+    step concerned, after resigning."""
+    gearbox = build_fmu("gear2", tmp_path_factory.getbasetemp() / "fmus")
+    for start in ("Fifth", 5):
+        with pytest.raises(MappingError, match=rf"gear = {start!r}: not one of its items \(Reverse = -1, "
+                                               r"Neutral = 0, Drive = 1\)"):
+            FmuFederate(gearbox, "FeedFed", step_size=H, start_values={"gear": start})
+    for field, bad, error, message in [
+            ("gear", 5, InputError, "gear: instance 'source' sent 5, not one of its items (Reverse = -1, "
+                                    "Neutral = 0, Drive = 1)"),
+            ("throttle", -1.0, StepFailed, f"output engaged = 2 at t = {3 * H:g}, not one of its items")]:
+        with feeding(gateway_address, gearbox, tmp_path) as (feeder, handles, source):
+            def send(k: int) -> None:
+                values = {"gear": 1, "throttle": 1.0, **({field: bad} if k == 2 else {})}
+                feeder.rtia.updateAttributeValues(source, {handles[name]: GEARBOX[name].pack(value)
+                                                           for name, value in values.items()}, "feeder", k * H)
+
+            with FmuFederate(gearbox, "FeedFed", step_size=H, address=gateway_address, timeout=20.0) as federate:
+                federate.join()
+                failures = run_beside(federate, feeder, send)
+        assert [type(failure) for failure in failures] == [error]
+        assert message in str(failures[0])
+
+
+@settings(max_examples=300, deadline=None)
+@given(kind=st.sampled_from(sorted(ENCODINGS)), element=st.sampled_from([None, 0, 2]), data=st.binary(max_size=40))
+def test_any_bytes_received_decode_to_a_value_the_input_takes_or_to_an_input_error(kind: str, element: Any,
+                                                                                   data: bytes) -> None:
+    """The decoder of what other federates send (exchange.Input), fuzzed: for each type that travels, whole or as
+    an element, any bytes give a value the variable takes (Variable.refusal) or an InputError, nothing else."""
+    variable = Variable("v", 0, kind, "input", (("A", -1), ("B", 7)) if kind == "Enumeration" else ())
+    received = Input(variable, None if ENCODINGS[kind].fixed_size is None else element, None)
+    try:
+        value = received.decode(data, "fuzz")
+    except InputError as error:
+        assert str(error).startswith("v: fuzz sent ")
+    else:
+        assert variable.refusal(value) is None
 
 
 def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway, any_lag: pathlib.Path,

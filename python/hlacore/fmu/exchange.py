@@ -8,25 +8,30 @@ from typing import Any, NamedTuple, Optional
 
 from .. import rti
 from .errors import InputError
-from .mapping import Endpoint
+from .mapping import ENCODINGS, Endpoint
+from .model import Variable
 
 
 class Input(NamedTuple):
-    """Where a received value goes: the input, its encoding, the array element it is (None: the whole value),
-    the object instance it must come from (None: any) and the values its type holds (integers)."""
+    """Where a received value goes: the input, the array element it is (None: the whole value) and the object
+    instance it must come from (None: any)."""
 
-    variable: str
-    codec: Any
+    variable: Variable
     element: Optional[int]
     instance: Optional[str]
-    bounds: Optional[tuple[int, int]] = None
+
+    @property
+    def codec(self) -> Any:
+        """The HLA encoding of the input's values (mapping.ENCODINGS)."""
+        return ENCODINGS[self.variable.type]
 
     def decode(self, data: bytes, source: str) -> Any:
         """The value in ``data``; InputError when its size does not fit the encoding or the element, or the
-        number does not fit the type."""
+        value does not fit the variable (an integer beyond its type, an Enumeration's value no item has)."""
         value = self._value(data, source)
-        if self.bounds is not None and not self.bounds[0] <= value <= self.bounds[1]:
-            raise InputError(f"{self.variable}: {source} sent {value}, beyond its type's {self.bounds}")
+        refusal = self.variable.refusal(value)
+        if refusal:
+            raise InputError(f"{self.variable.name}: {source} sent {value!r}, {refusal}")
         return value
 
     def _value(self, data: bytes, source: str) -> Any:
@@ -37,10 +42,10 @@ class Input(NamedTuple):
             except ValueError:
                 used = -1
             if used != len(data):
-                raise InputError(f"{self.variable}: {source} sent {len(data)} bytes, not one {self.codec.name}")
+                raise InputError(f"{self.variable.name}: {source} sent {len(data)} bytes, not one {self.codec.name}")
             return value
         if len(data) % size or len(data) < (self.element + 1) * size:
-            raise InputError(f"{self.variable}: {source} sent {len(data)} bytes, not an array of {self.codec.name} "
+            raise InputError(f"{self.variable.name}: {source} sent {len(data)} bytes, not an array of {self.codec.name} "
                              f"with an element {self.element}")
         return self.codec.unpack(data, self.element * size)[0]
 

@@ -22,7 +22,7 @@ from .. import rti
 from .errors import FmuError, InputError, StepFailed
 from .exchange import Input, Send
 from .mapping import ENCODINGS, Mapping, constant_encoding
-from .model import RANGES, FmuInstance, FmuModel, check_value
+from .model import FmuInstance, FmuModel, check_value
 
 
 #: The lookahead is the step size less this fraction of it, so that the grid times start + k h, computed without
@@ -67,12 +67,12 @@ class _Ambassador(rti.FederateAmbassador):
                 continue
             if time is not None and self.taken is not None and time <= self.taken:
                 self.error = self.error or InputError(
-                    f"{target.variable}: {source} sent a value stamped {time:g} after the inputs of {self.taken:g} "
+                    f"{target.variable.name}: {source} sent a value stamped {time:g} after the inputs of {self.taken:g} "
                     f"were taken: from a federate with lookahead 0, such as another FMU with direct feedthrough; "
                     f"run this one with feedthrough off (docs/fmu.md)")
                 continue
             try:
-                self.received[target.variable] = target.decode(data, source)
+                self.received[target.variable.name] = target.decode(data, source)
             except InputError as error:
                 self.error = self.error or error
 
@@ -132,8 +132,6 @@ class FmuFederate:
             self.mapping = mapping
         else:
             self.mapping = Mapping.load(mapping, self.model)
-        for variable, value in (start_values or {}).items():
-            check_value(self.model, variable, value)
         #: Whether outputs are sent at the time of the inputs they follow (lookahead 0: docs/fmu.md, "Direct
         #: feedthrough"); by default, when the model description says an output depends directly on an input.
         self.feedthrough = (bool(self.model.direct_feedthrough and self.mapping.inputs and self.mapping.outputs)
@@ -144,7 +142,8 @@ class FmuFederate:
         self.timeout = timeout
         self._address = address
         self._fed_file = fed_file
-        self._start_values = dict(start_values or {})
+        self._start_values = {variable: check_value(self.model, variable, value)
+                              for variable, value in (start_values or {}).items()}
         self._instance: Optional[FmuInstance] = None
         self._rtia: Optional[rti.RTIAmbassador] = None
         self._ambassador = _Ambassador(self)
@@ -240,8 +239,7 @@ class FmuFederate:
         subscribed: dict[Any, list[Any]] = {}
         interactions: set[Any] = set()
         for variable, endpoint in self.mapping.inputs.items():
-            kind = self.model.variables[variable].type
-            target = Input(variable, ENCODINGS[kind], endpoint.element, endpoint.instance, RANGES.get(kind))
+            target = Input(self.model.variables[variable], endpoint.element, endpoint.instance)
             if endpoint.interaction:
                 interaction = rtia.getInteractionClassHandle(endpoint.object_class)
                 parameter = rtia.getParameterHandle(endpoint.attribute, interaction)

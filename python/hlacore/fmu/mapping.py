@@ -15,9 +15,10 @@ A mapping file is TOML with up to three tables::
 Without a file, the default maps by name: every input and output of the FMU is the attribute of the same name
 of one object class named after the model (``Lag.u``, ``Lag.y``); the FMU publishes its outputs and subscribes
 to its inputs, and whoever drives an input publishes that attribute of the same class. A variable left out
-of the file is not exchanged. Reals (FMI 3: Float64) travel as HLAfloat64BE, Integers (Int32) as
-HLAinteger32BE, Booleans as HLAboolean, Strings as HLAunicodeString, FMI 3's other types as :data:`ENCODINGS`
-says; a member with ``element`` is an HLAfixedArray of that type (outputs
+of the file is not exchanged. Reals (FMI 3: Float64) travel as HLAfloat64BE, Integers (Int32) and
+Enumerations as HLAinteger32BE (the usual representation of an HLA enumerated type; a value no item has is
+refused on receipt), Booleans as HLAboolean, Strings as HLAunicodeString, FMI 3's other types as
+:data:`ENCODINGS` says; a member with ``element`` is an HLAfixedArray of that type (outputs
 must then fill every element); a constant's TOML type gives its encoding (a string: HLAASCIIstring).
 """
 
@@ -49,7 +50,8 @@ class _OctetNumber:
 #: The HLA encoding of each FMI type: HLA 1516.2's basic types, HLAinteger16BE for an Int8 (HLA has no signed
 #: octet), its Unsignedinteger*BE for the unsigned ones.
 ENCODINGS: dict[str, Any] = {"Real": omt.HLAfloat64BE, "Float64": omt.HLAfloat64BE, "Float32": omt.HLAfloat32BE,
-                             "Integer": omt.HLAinteger32BE, "Int32": omt.HLAinteger32BE, "Int8": omt.HLAinteger16BE,
+                             "Integer": omt.HLAinteger32BE, "Int32": omt.HLAinteger32BE,
+                             "Enumeration": omt.HLAinteger32BE, "Int8": omt.HLAinteger16BE,
                              "Int16": omt.HLAinteger16BE, "Int64": omt.HLAinteger64BE, "UInt8": _OctetNumber(),
                              "UInt16": omt.Unsignedinteger16BE, "UInt32": omt.Unsignedinteger32BE,
                              "UInt64": omt.Unsignedinteger64BE, "Boolean": omt.HLAboolean,
@@ -179,6 +181,9 @@ class Mapping:
                 if variable.type not in SUPPORTED_TYPES:
                     raise MappingError(f"{where}: [{table}] {name}: type {variable.type} cannot travel "
                                        f"(only {', '.join(SUPPORTED_TYPES)})")
+                if any(not -2**31 <= value < 2**31 for _, value in variable.items):
+                    raise MappingError(f"{where}: [{table}] {name}: an item of its Enumeration is beyond "
+                                       "HLAinteger32BE, the encoding it travels as")
                 if getattr(self, table)[name].element is not None and ENCODINGS[variable.type].fixed_size is None:
                     raise MappingError(f"{where}: [{table}] {name}: a {variable.type} is no array element (its "
                                        f"size varies)")

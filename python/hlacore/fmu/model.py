@@ -20,11 +20,14 @@ from typing import Any, Optional, Union
 from .errors import FmuError, MappingError, NotCoSimulation, StepFailed
 
 #: The FMI types an FMU variable may have to travel through the federation (HLA encodings in mapping.py): FMI 2's
-#: Real, Integer, Boolean and String, and FMI 3's numbers, Boolean, String and Binary; each with the Python type
-#: of its values (FMPy's set and get methods are named after the type).
+#: Real, Integer, Boolean, String and Enumeration, and FMI 3's numbers, Boolean, String, Binary and Enumeration;
+#: each with the Python type of its values (FMPy's set and get methods are named after the type, except for
+#: an Enumeration: :data:`_ENUMERATION_ACCESS`).
 _KINDS: dict[str, type] = {"Real": float, "Float64": float, "Float32": float, "Integer": int, "Boolean": bool,
-                           "String": str, "Binary": bytes,
+                           "String": str, "Binary": bytes, "Enumeration": int,
                            **{f"{sign}Int{bits}": int for sign in ("", "U") for bits in (8, 16, 32, 64)}}
+#: How an Enumeration is set and got: as an Integer in FMI 2, an Int64 in FMI 3.
+_ENUMERATION_ACCESS = {False: "Integer", True: "Int64"}
 #: The values each integer type holds.
 RANGES: dict[str, tuple[int, int]] = {"Integer": (-2**31, 2**31 - 1),
                                       **{f"Int{bits}": (-2**(bits - 1), 2**(bits - 1) - 1) for bits in (8, 16, 32, 64)},
@@ -40,6 +43,30 @@ class Variable:
     value_reference: int
     type: str  # 'Real', 'Integer', 'Boolean', 'String', ...
     causality: str  # 'input', 'output', 'parameter', 'local', ...
+    items: tuple[tuple[str, int], ...] = ()  # an Enumeration's items, (name, value), from its declared type
+
+    def refusal(self, value: Any) -> Optional[str]:
+        """Why the variable cannot take ``value`` (None: it can): a Real takes a number, an integer type an int
+        in its range, an Enumeration the value of one of its items, a Boolean a bool, a String a str, a Binary
+        bytes."""
+        kind = _KINDS.get(self.type)
+        if self.type == "Enumeration" and (type(value) is not int or value not in {v for _, v in self.items}):
+            return f"not one of its items ({', '.join(f'{n} = {v}' for n, v in self.items)})"
+        if kind is None or isinstance(value, bool) and kind is not bool or not (
+                isinstance(value, (int, float)) if kind is float else isinstance(value, kind)):
+            return f"{self.name} is of type {self.type}"
+        low, high = RANGES.get(self.type, (value, value))
+        if kind is int and not low <= value <= high:
+            return f"beyond its type's ({low}, {high})"
+        return None
+
+
+def _items(variable: Any) -> tuple[tuple[str, int], ...]:
+    """An Enumeration's items from its declared type in FMPy's model description; () for another type."""
+    declared = variable.declaredType
+    if variable.type != "Enumeration" or declared is None:
+        return ()
+    return tuple((str(item.name), int(item.value)) for item in declared.items)
 
 
 def _platform_binary(identifier: str, version: str) -> str:
@@ -52,18 +79,19 @@ def _platform_binary(identifier: str, version: str) -> str:
     return f"binaries/{system}64/{identifier}{suffix}"
 
 
-def check_value(model: "FmuModel", name: str, value: Any) -> None:
-    """Raise :class:`MappingError` unless ``model`` has a variable ``name`` that takes ``value``: a Real a
-    number, an integer type an int in its range, a Boolean a bool, a String a str, a Binary bytes."""
+def check_value(model: "FmuModel", name: str, value: Any) -> Any:
+    """The value to set ``model``'s variable ``name`` to for ``value``: itself, or for an Enumeration given the
+    name of an item, the item's value. Raises :class:`MappingError` when the model has no such variable or it
+    cannot take the value (:meth:`Variable.refusal`)."""
     variable = model.variables.get(name)
     if variable is None:
         raise MappingError(f"{name} = {value!r}: {model.path.name} has no variable {name!r}")
-    kind = _KINDS.get(variable.type)
-    low, high = RANGES.get(variable.type, (0, -1))
-    fits = (kind is float and isinstance(value, (int, float)) or kind is int and isinstance(value, int)
-            and low <= value <= high or kind is not None and kind not in (float, int) and isinstance(value, kind))
-    if not fits or isinstance(value, bool) and kind is not bool:
-        raise MappingError(f"{name} = {value!r}: {name} is of type {variable.type}")
+    if isinstance(value, str) and variable.type == "Enumeration":
+        value = dict(variable.items).get(value, value)
+    refusal = variable.refusal(value)
+    if refusal:
+        raise MappingError(f"{name} = {value!r}: {refusal}")
+    return value
 
 
 class FmuModel:
@@ -101,7 +129,7 @@ class FmuModel:
             if binary not in archive.namelist():
                 raise FmuError(f"{self.path}: no binary for this platform ({binary} is missing)")
         self.variables: dict[str, Variable] = {
-            v.name: Variable(v.name, int(v.valueReference), str(v.type), str(v.causality))
+            v.name: Variable(v.name, int(v.valueReference), str(v.type), str(v.causality), _items(v))
             for v in self.description.modelVariables}
 
     @property
@@ -183,8 +211,8 @@ class FmuInstance:
             raise FmuError(f"{model.path}: could not instantiate: {error}") from error
 
     def set(self, values: dict[str, Any]) -> None:
-        """Set variables by name (``fmi2SetReal``/``Integer``/``Boolean``/``String``; FMI 3: ``Float64``/``Int8``
-        /...)."""
+        """Set variables by name (``fmi2SetReal``/``Integer``/``Boolean``/``String``, an Enumeration as an Integer;
+        FMI 3: ``Float64``/``Int8``/..., an Enumeration as an Int64)."""
         for name, value in values.items():
             variable = self.model.variables[name]
             kind = _KINDS.get(variable.type)
@@ -192,7 +220,7 @@ class FmuInstance:
                 raise FmuError(f"{self.model.path}: {name} is a {variable.type}; hlacore.fmu sets "
                                f"{', '.join(SUPPORTED_TYPES)} variables")
             try:
-                getattr(self._fmu, f"set{variable.type}")([variable.value_reference], [kind(value)])
+                getattr(self._fmu, f"set{self._access(variable)}")([variable.value_reference], [kind(value)])
             except Exception as error:
                 raise FmuError(f"{self.model.path}: setting {name} = {value!r} failed: {error}") from error
 
@@ -201,11 +229,15 @@ class FmuInstance:
         values: dict[str, Any] = {}
         for name in names:
             variable = self.model.variables[name]
-            value = getattr(self._fmu, f"get{variable.type}")([variable.value_reference])[0]
+            value = getattr(self._fmu, f"get{self._access(variable)}")([variable.value_reference])[0]
             if variable.type == "String" and isinstance(value, bytes):  # FMI 2's getString gives bytes
                 value = value.decode()
             values[name] = _KINDS[variable.type](value)
         return values
+
+    def _access(self, variable: Variable) -> str:
+        """The type in the name of FMPy's set and get methods for ``variable``."""
+        return _ENUMERATION_ACCESS[self.model.fmi3] if variable.type == "Enumeration" else variable.type
 
     def do_step(self, time: float, step: float, outputs: list[str]) -> dict[str, Any]:
         """``fmi2DoStep``/``fmi3DoStep(time, step)``, then the ``outputs`` at ``time + step``.
@@ -221,11 +253,16 @@ class FmuInstance:
         return self.outputs(outputs, time + step)
 
     def outputs(self, names: list[str], time: float) -> dict[str, Any]:
-        """The outputs ``names`` at ``time`` (:meth:`get`); :class:`StepFailed` when one is not finite."""
+        """The outputs ``names`` at ``time`` (:meth:`get`); :class:`StepFailed` when one is not finite, or an
+        Enumeration's value no item has."""
         values = self.get(names)
         for name, value in values.items():
             if isinstance(value, float) and not math.isfinite(value):
                 raise StepFailed(f"{self.model.path}: output {name} = {value} at t = {time:g}")
+            variable = self.model.variables[name]
+            if variable.items and variable.refusal(value):
+                raise StepFailed(f"{self.model.path}: output {name} = {value} at t = {time:g}, "
+                                 f"{variable.refusal(value)}")
         return values
 
     def save_state(self) -> bytes:

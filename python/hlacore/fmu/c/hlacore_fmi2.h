@@ -1,7 +1,7 @@
-/* An FMI 2.0 co-simulation FMU from a model of real variables, in a few functions (docs/fmu.md, "Writing an FMU
- * in C"). The model's C file defines, then includes this header once:
+/* An FMI 2.0 co-simulation FMU from a model of numbers, in a few functions (docs/fmu.md, "Writing an FMU in C").
+ * The model's C file defines, then includes this header once:
  *
- *     enum { VR_U, VR_Y, ..., MODEL_REALS };           value references 0 .. MODEL_REALS - 1, as in the
+ *     enum { VR_U, VR_Y, ..., MODEL_VALUES };          value references 0 .. MODEL_VALUES - 1, as in the
  *                                                       model description
  *     static void model_start(double v[]);              start values, at instantiation
  *     static void model_initialize(double v[]);         calculated values, at the end of initialisation mode
@@ -13,8 +13,11 @@
  *
  *     static void model_outputs(double v[]);            the outputs from the inputs set, before each get
  *
+ * The values are Reals, except those `#define MODEL_INTEGER(vr)` is true for: Integer and Enumeration variables,
+ * whole numbers in v[], which fmi2GetInteger and fmi2SetInteger reach (and fmi2GetReal and fmi2SetReal do not).
+ *
  * Everything else FMI 2 asks of a co-simulation FMU is here: its state (the values and the time) can be got,
- * set and serialised, so a federation save includes it; Integer, Boolean and String variables do not exist;
+ * set and serialised, so a federation save includes it; Boolean and String variables do not exist;
  * derivatives and asynchronous steps are refused, as FMI 2 lets an FMU that does not declare them. */
 #ifndef HLACORE_FMI2_H
 #define HLACORE_FMI2_H
@@ -25,7 +28,7 @@
 #include "fmi2Functions.h"
 
 typedef struct {
-    double values[MODEL_REALS];
+    double values[MODEL_VALUES];
     double time;
 } State;
 
@@ -71,26 +74,36 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
 fmi2Status fmi2Terminate(fmi2Component c) { (void)c; return fmi2OK; }
 fmi2Status fmi2Reset(fmi2Component c) { (void)c; return fmi2Error; }
 
-fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Real value[]) {
-    State *s = &((Instance *)c)->state;
-#ifdef MODEL_OUTPUTS
-    MODEL_OUTPUTS(s->values);
+#ifndef MODEL_INTEGER
+#define MODEL_INTEGER(vr) 0
 #endif
-    for (size_t i = 0; i < n; i++) {
-        if (vr[i] >= MODEL_REALS) return fmi2Error;
-        value[i] = s->values[vr[i]];
-    }
-    return fmi2OK;
-}
+#ifdef MODEL_OUTPUTS
+#define HLACORE_OUTPUTS(v) MODEL_OUTPUTS(v)
+#else
+#define HLACORE_OUTPUTS(v) (void)(v)
+#endif
 
-fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Real value[]) {
-    State *s = &((Instance *)c)->state;
-    for (size_t i = 0; i < n; i++) {
-        if (vr[i] >= MODEL_REALS || !model_settable(vr[i])) return fmi2Error;
-        s->values[vr[i]] = value[i];
+/* fmi2Get<Kind> and fmi2Set<Kind> for the value references `is_kind` is true for. */
+#define HLACORE_VARIABLES_OF_TYPE(Kind, Type, is_kind)                                                       \
+    fmi2Status fmi2Get##Kind(fmi2Component c, const fmi2ValueReference vr[], size_t n, Type value[]) {      \
+        State *s = &((Instance *)c)->state;                                                                 \
+        HLACORE_OUTPUTS(s->values);                                                                         \
+        for (size_t i = 0; i < n; i++) {                                                                    \
+            if (vr[i] >= MODEL_VALUES || !(is_kind)) return fmi2Error;                                      \
+            value[i] = (Type)s->values[vr[i]];                                                              \
+        }                                                                                                   \
+        return fmi2OK;                                                                                      \
+    }                                                                                                       \
+    fmi2Status fmi2Set##Kind(fmi2Component c, const fmi2ValueReference vr[], size_t n, const Type value[]) { \
+        State *s = &((Instance *)c)->state;                                                                 \
+        for (size_t i = 0; i < n; i++) {                                                                    \
+            if (vr[i] >= MODEL_VALUES || !(is_kind) || !model_settable(vr[i])) return fmi2Error;            \
+            s->values[vr[i]] = value[i];                                                                    \
+        }                                                                                                   \
+        return fmi2OK;                                                                                      \
     }
-    return fmi2OK;
-}
+HLACORE_VARIABLES_OF_TYPE(Real, fmi2Real, !MODEL_INTEGER(vr[i]))
+HLACORE_VARIABLES_OF_TYPE(Integer, fmi2Integer, MODEL_INTEGER(vr[i]))
 
 #define HLACORE_NO_VARIABLES_OF_TYPE(Kind, Type)                                                            \
     fmi2Status fmi2Get##Kind(fmi2Component c, const fmi2ValueReference vr[], size_t n, Type value[]) {      \
@@ -101,7 +114,6 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
         (void)c; (void)vr; (void)value;                                                                     \
         return n == 0 ? fmi2OK : fmi2Error;                                                                 \
     }
-HLACORE_NO_VARIABLES_OF_TYPE(Integer, fmi2Integer)
 HLACORE_NO_VARIABLES_OF_TYPE(Boolean, fmi2Boolean)
 HLACORE_NO_VARIABLES_OF_TYPE(String, fmi2String)
 

@@ -2,7 +2,7 @@
  * soon as u is set (model_outputs, called before each get), so the federate sends y at the time of u. */
 #include "fmi2Functions.h"
 
-enum { VR_U = 0, VR_Y = 1, VR_K = 2, MODEL_REALS = 3 };
+enum { VR_U = 0, VR_Y = 1, VR_K = 2, MODEL_VALUES = 3 };
 
 static void model_start(double v[]) { v[VR_K] = 2.0; }
 static void model_outputs(double v[]) { v[VR_Y] = v[VR_K] * v[VR_U]; }

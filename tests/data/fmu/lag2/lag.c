@@ -9,7 +9,7 @@
 
 #include "fmi2Functions.h"
 
-enum { VR_U = 0, VR_Y = 1, VR_TAU = 2, VR_X0 = 3, VR_FAIL_TIME = 4, VR_NAN_TIME = 5, MODEL_REALS = 6 };
+enum { VR_U = 0, VR_Y = 1, VR_TAU = 2, VR_X0 = 3, VR_FAIL_TIME = 4, VR_NAN_TIME = 5, MODEL_VALUES = 6 };
 
 static void model_start(double v[]) {
     v[VR_TAU] = 1.0;

@@ -15,7 +15,7 @@ enum {
     VR_V, VR_W, VR_WAYPOINT,                                        /* outputs */
     VR_K_LINEAR, VR_K_ANGULAR, VR_V_MAX, VR_W_MAX, VR_TOLERANCE,    /* parameters */
     VR_WAYPOINTS,                                                   /* x1 y1 ... x4 y4 */
-    MODEL_REALS = VR_WAYPOINTS + 8
+    MODEL_VALUES = VR_WAYPOINTS + 8
 };
 #define WAYPOINTS 4
 

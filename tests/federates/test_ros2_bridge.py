@@ -4,7 +4,7 @@ removed by the test. The gateway and the world federate run in this process, out
 bridge reaches the gateway through a Unix socket (a path, which no network namespace separates). This process
 never imports rclpy.
 
-The tests run whenever ROS 2's wheels are installed (scripts/install-ros2.sh, called by scripts/test.sh);
+The tests run whenever ROS 2's wheels are installed (hlacore.federates.ros_bridge.install_ros2, run by scripts/test.sh);
 without them they skip, except under CI=true, where that is a failure."""
 
 from __future__ import annotations

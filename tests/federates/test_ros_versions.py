@@ -1,19 +1,18 @@
 """Which ROS the bridge speaks, and what a ROS 2 process is given: ``versions.detect``, ``ros2_env.environment``,
-and the pins of scripts/ros2-requirements.txt. No ROS runs here."""
+and the pins of ros2-requirements.txt and what its installer finds missing. No ROS runs here."""
 
 from __future__ import annotations
 
+import importlib.metadata as metadata
 import os
 import pathlib
 import re
+import sysconfig
 
 import pytest
 
-from hlacore.federates.ros_bridge import ros2_env
+from hlacore.federates.ros_bridge import install_ros2, ros2_env
 from hlacore.federates.ros_bridge.versions import detect
-
-from support import ROOT
-
 
 @pytest.mark.parametrize("env, expected", [
     ({"ROS_VERSION": "2", "ROS_MASTER_URI": "http://127.0.0.1:11311"}, 2),  # a setup script said so
@@ -32,7 +31,6 @@ def test_detect_follows_the_environment_then_what_is_installed(monkeypatch: pyte
     monkeypatch.setenv("HLACORE_ROS2_PREFIX", str(tmp_path))
     assert detect() == expected
 
-
 def test_detect_picks_ros2_when_its_wheels_are_installed(monkeypatch: pytest.MonkeyPatch,
                                                          tmp_path: pathlib.Path) -> None:
     """A prefix holding rclpy and the Fast DDS middleware's library is ROS 2, installed."""
@@ -44,7 +42,6 @@ def test_detect_picks_ros2_when_its_wheels_are_installed(monkeypatch: pytest.Mon
     (tmp_path / "lib" / "librmw_fastrtps_cpp.so").write_bytes(b"")
     monkeypatch.setenv("HLACORE_ROS2_PREFIX", str(tmp_path))
     assert ros2_env.installed() and detect() == 2
-
 
 def test_a_ros2_process_gets_the_wheels_paths_in_front_and_keeps_its_own(monkeypatch: pytest.MonkeyPatch,
                                                                         tmp_path: pathlib.Path) -> None:
@@ -66,12 +63,11 @@ def test_a_ros2_process_gets_the_wheels_paths_in_front_and_keeps_its_own(monkeyp
     assert ros2_env.ready(env) and not ros2_env.ready(base)
     assert ros2_env.environment(env, domain_id=7, log_dir="/tmp/logs") == env
 
-
 def test_every_ros2_wheel_is_pinned_to_a_version_and_a_hash() -> None:
-    """scripts/ros2-requirements.txt: each requirement `name==version --hash=sha256:<64 hex>`, rclpy 9.1.2 and
-    the Fast DDS middleware among them, no bootstrapper (its .pth re-executes every Python of the venv)."""
-    lines = [line.split("#", 1)[0].strip() for line in (ROOT / "scripts" / "ros2-requirements.txt").read_text()
-             .splitlines()]
+    """ros2-requirements.txt, shipped in the package (this is the installed one): each requirement
+    `name==version --hash=sha256:<64 hex>`, rclpy 9.1.2 and the Fast DDS middleware among them, no bootstrapper
+    (its .pth re-executes every Python of the venv)."""
+    lines = [line.split("#", 1)[0].strip() for line in install_ros2.REQUIREMENTS.read_text().splitlines()]
     pins = [line for line in lines if line]
     assert len(pins) > 50
     for pin in pins:
@@ -80,3 +76,27 @@ def test_every_ros2_wheel_is_pinned_to_a_version_and_a_hash() -> None:
     assert {"ros-rclpy", "ros-rmw-fastrtps-cpp", "ros-geometry-msgs", "ros-nav-msgs", "ros-sensor-msgs",
             "ros-std-msgs", "ros-rosgraph-msgs"} <= names
     assert "ros-wheels-bootstrapper" not in names and "ros-rclpy==9.1.2" in {p.split()[0] for p in pins}
+
+def test_the_installer_lists_what_a_prefix_lacks(tmp_path: pathlib.Path) -> None:
+    """install_ros2.missing: under an empty prefix every pin but the "# if missing" ones this Python has; under one
+    holding a pinned wheel's metadata at its version, that one no more, at another version, still."""
+    text = install_ros2.REQUIREMENTS.read_text()
+    pins = [line.split("#", 1)[0].strip() for line in text.splitlines() if line.split("#", 1)[0].strip()]
+    optional = [line.split("#", 1)[0].strip() for line in text.splitlines()
+                if line.rstrip().endswith(install_ros2.IF_MISSING)]
+
+    def here(pin: str) -> bool:
+        try:
+            return bool(metadata.version(pin.split("==")[0]))
+        except metadata.PackageNotFoundError:
+            return False
+
+    assert optional
+    assert set(install_ros2.missing(str(tmp_path))) == set(pins) - {pin for pin in optional if here(pin)}
+    packages = pathlib.Path(sysconfig.get_path("purelib", vars={"base": str(tmp_path), "platbase": str(tmp_path)}))
+    for version, listed in (("9.1.2", False), ("9.1.1", True)):
+        info = packages / "ros_rclpy-9.1.2.dist-info"
+        info.mkdir(parents=True, exist_ok=True)
+        (info / "METADATA").write_text(f"Metadata-Version: 2.1\nName: ros-rclpy\nVersion: {version}\n")
+        rclpy = [pin for pin in install_ros2.missing(str(tmp_path)) if pin.startswith("ros-rclpy==")]
+        assert bool(rclpy) == listed

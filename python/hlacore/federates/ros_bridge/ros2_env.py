@@ -1,6 +1,6 @@
-"""What a process needs to run ROS 2 from the PyPI wheels (scripts/ros2-requirements.txt), in one place.
+"""What a process needs to run ROS 2 from the PyPI wheels (ros2-requirements.txt), in one place.
 
-scripts/install-ros2.sh installs the wheels under a prefix of their own, ``<venv>/ros2``, not into the
+:mod:`.install_ros2` installs the wheels under a prefix of their own, ``<venv>/ros2``, not into the
 venv's site-packages: ROS 2's message packages have the top-level names of ROS 1's (``std_msgs``,
 ``geometry_msgs``, ...), and in the venv they would shadow Debian's ROS 1 messages, which rospy then fails
 to import. Under the prefix they are seen only by the processes started with :func:`environment`. There
@@ -40,27 +40,21 @@ import os
 import sys
 from typing import Mapping, Optional
 
+from .install_ros2 import prefix  # where the wheels are, defined where they are installed
+
 #: The middleware the pinned wheels bring.
 RMW_IMPLEMENTATION = "rmw_fastrtps_cpp"
 #: Set in the environment :func:`environment` builds: the process has it (see :func:`ready`). The wheels'
-#: optional bootstrapper (not installed by scripts/install-ros2.sh) reads its own guard, set too, so that it
+#: optional bootstrapper (not installed by :mod:`.install_ros2`) reads its own guard, set too, so that it
 #: would not re-execute such a process again.
 READY_FLAG = "HLACORE_ROS2_ENV"
 INSTALL_HINT = ("the ROS 2 bridge needs ROS 2 Kilted's wheels (rclpy, rmw_fastrtps_cpp and the message "
-                "packages) in this Python: ./scripts/install-ros2.sh installs the pinned set "
-                "(scripts/ros2-requirements.txt)")
+                "packages) for this Python: python -m hlacore.federates.ros_bridge.install_ros2 installs the "
+                "pinned set")
 
 
 #: Fast DDS's XML profile for the processes started with :func:`environment` (see the module docstring).
 PROFILES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fastdds.xml")
-#: The prefix under the venv where scripts/install-ros2.sh installs the wheels.
-PREFIX_NAME = "ros2"
-
-
-def prefix() -> str:
-    """Where the wheels are: ``$HLACORE_ROS2_PREFIX``, else ``ros2`` under this interpreter's prefix (the
-    venv)."""
-    return os.environ.get("HLACORE_ROS2_PREFIX") or os.path.join(sys.prefix, PREFIX_NAME)
 
 
 def site_packages(root: Optional[str] = None) -> str:

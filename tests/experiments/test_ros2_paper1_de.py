@@ -1,9 +1,10 @@
-"""Paper 1's chain on ROS 2 (docs/ros-bridge.md): the DE-engine controller federate commands the world as a
-ROS 2 node (the stageros-style stage node on rclpy) through the RTI, the bridge and ROS 2 topics, each a
-process of its own, all inside a loopback-only network namespace made and removed by the test; the same
-checks as on ROS 1 (tests/support/paper1.py); and the run's recording, the federation's events and the bridged
-ROS 2 topics in one MCAP file; and the world node alone on its own clock. This process never imports rclpy (the recording's ROS 2 messages are decoded
-from their schemas, as Foxglove does). Skips without ROS 2's wheels, except under CI=true."""
+"""Paper 1 on ROS 2 (docs/ros-bridge.md), each process inside a loopback-only network namespace made and removed
+by the test: with the controllers as an rclpy node; and paper 1's chain, the DE-engine controller federate
+commanding the world as a ROS 2 node (the stageros-style stage node on rclpy) through the RTI, the bridge and
+ROS 2 topics; the same checks as on ROS 1 (tests/support/paper1.py); the run's recording, the federation's
+events and the bridged ROS 2 topics in one MCAP file; and the world node alone on its own clock. This process
+never imports rclpy (the recording's ROS 2 messages are decoded from their schemas, as Foxglove does). Skips
+without ROS 2's wheels, except under CI=true."""
 
 from __future__ import annotations
 
@@ -13,7 +14,7 @@ import pytest
 from mcap_ros2.decoder import DecoderFactory
 
 from support import PEERS
-from support.paper1 import check_de_run, check_recording
+from support.paper1 import check_de_run, check_node_run, check_recording
 from support.ros import WORLD, assert_stage_on_its_own_clock, running
 from support.ros2 import ros2_space
 
@@ -40,6 +41,23 @@ def test_paper1_de_controller_through_ros2(tmp_path: pathlib.Path) -> None:
     assert summary["ros"] == 2
 
     check_recording(out, summary, DecoderFactory(), "cdr", "ros2msg")
+
+
+def test_paper1_with_the_controllers_as_a_ros2_node(tmp_path: pathlib.Path) -> None:
+    """One command, ``--ros 2`` with the default controllers: the world federate and the bridge in one process
+    (re-executed with ROS 2's environment), the controllers as an rclpy node in another, in lockstep through
+    DDS; the same checks as on ROS 1; nothing is left running in the namespace."""
+    out = tmp_path / "out"
+    with ros2_space(tmp_path) as space:
+        proc = space.popen(["-m", "hlacore.experiments.paper1.ros", str(out), "--ros", "2"])
+        try:
+            stdout, _ = proc.communicate(timeout=300)
+        finally:
+            if proc.poll() is None:
+                proc.kill()
+                proc.communicate()
+    assert proc.returncode == 0, stdout
+    assert check_node_run(stdout, out)["ros"] == 2
 
 
 def test_stage_node_on_its_own_clock_on_ros2(tmp_path: pathlib.Path) -> None:

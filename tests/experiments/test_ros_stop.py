@@ -19,7 +19,7 @@ from support.ros import require_ros
 
 EXPERIMENTS = {
     "mirror": ["hlacore.experiments.mirror", "--cycles", "400"],
-    "paper1-ros": ["hlacore.experiments.paper1.ros", "--duration", "120"],
+    "paper1-ros": ["hlacore.experiments.paper1.ros", "--duration", "120", "--ros", "1"],  # else ROS 2, found installed
 }
 
 

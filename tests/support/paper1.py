@@ -1,5 +1,6 @@
-"""Paper 1's chain through ROS (``python -m hlacore.experiments.paper1.ros OUT --controller de``), checked the same
-whichever ROS carries it, and its recording (``--record``): tests/experiments/test_ros_paper1_de.py (ROS 1) and
+"""Paper 1 through ROS (``python -m hlacore.experiments.paper1.ros OUT``, the controllers as a ROS node, and
+``--controller de``, paper 1's chain), checked the same whichever ROS carries it, and its recording
+(``--record``): tests/federates/test_ros_bridge.py and tests/experiments/test_ros_paper1_de.py (ROS 1),
 test_ros2_paper1_de.py (ROS 2)."""
 
 from __future__ import annotations
@@ -17,6 +18,20 @@ from hlacore.federates.robot_world import World
 from hlacore.recording import read
 
 PERIOD, DT = 0.1, 0.01
+
+
+def check_node_run(stdout: str, out: pathlib.Path) -> dict[str, Any]:
+    """The checks of a run with the controllers as a ROS node, given its output and OUTDIR: the paper-1 checks
+    pass (the avatar never collides, passes once the obstacles have gone, stops before the wall), 301 grants to
+    30 s, every cycle's commands sent; trace and snapshot written. Returns the run's JSON summary."""
+    summary = json.loads(stdout.strip().splitlines()[-1])
+    assert summary["checks"] == {"no_stall": True, "no_overlap": True, "obstacles_crossed": True,
+                                 "held_back": True, "stopped_before_wall": True}
+    assert summary["grants"] == 301 and summary["end"] == pytest.approx(30.0)
+    assert 0.0 < summary["wall_gap"] <= 0.5 and summary["sent"] > 4 * 250
+    assert (out / "paper1-ros-trace.csv").read_text().count("\n") == 302
+    assert (out / "paper1-ros-snapshot.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    return summary
 
 
 def check_de_run(stdout: str, out: pathlib.Path) -> dict[str, Any]:

@@ -16,8 +16,10 @@ for the controllers' answers: a lockstep through ROS); the node process (``--nod
 ``/avatar/range`` and answers each reading with a go / slow / stop Twist on ``/avatar/cmd_vel``
 (:class:`.scenario.Controller`), and drives each obstacle at 0.3 m/s on
 ``/obstacle<i>/cmd_vel`` until its ground truth (``/obstacle<i>/base_pose_ground_truth``) has travelled 5 m.
-Without a ROS master at ``$ROS_MASTER_URI`` it starts ``roscore`` on a free loopback port and stops it (by
-pid) at the end; without ``--rtig`` it uses an in-process gateway. It prints the checks and one JSON summary
+On ROS 1, without a ROS master at ``$ROS_MASTER_URI`` it starts ``roscore`` on a free loopback port and stops it
+(by pid) at the end; on ROS 2 (``--ros 2``) there is no master, and the command re-executes itself once with
+ROS 2's environment (:mod:`~hlacore.federates.ros_bridge.ros2_env`), which the node process inherits. Without
+``--rtig`` it uses an in-process gateway. It prints the checks and one JSON summary
 line, writes ``paper1-ros-trace.csv`` and a snapshot (and, with matplotlib, the trajectory plot) into
 OUTDIR (default ``paper1-ros-out``), and exits 1 if a check fails.
 """
@@ -32,15 +34,17 @@ import signal
 import subprocess
 import sys
 import threading
-from typing import Optional, Sequence
+from typing import Any, Callable, Optional, Sequence
 
 import hlacore
 import hlacore.rti as rti
 from hlacore.federates.robot_world import FEDERATION, FOM_PATH, World, WorldFederate, render
+from hlacore.federates.ros_bridge import ros2_env
 from hlacore.federates.ros_bridge.bridge import RosBridge, world_mappings
 from hlacore.federates.ros_bridge.children import stop_process
 from hlacore.federates.ros_bridge.master import ros_master
 from hlacore.federates.ros_bridge.runner import WorldThread, wait_wired
+from hlacore.federates.ros_bridge.versions import detect, select
 
 from ..cli import run_command
 
@@ -53,34 +57,32 @@ RECORDING = "paper1-de.mcap"
 
 # ---- the ROS node (the paper's controllers), in its own process ----
 
-def node_main(timeout: float = 600.0) -> int:
-    """The controllers' ROS node: answers each avatar Range and each obstacle pose with a Twist."""
-    from hlacore.federates.ros_bridge.ros_import import import_rospy
+def node_main(ros: Optional[int] = None, timeout: float = 600.0) -> int:
+    """The controllers' ROS node, on ROS ``ros`` (1 or 2; None: found): answers each avatar Range and each
+    obstacle pose with a Twist, with the QoS the bridge gives those topics (ROS 2)."""
+    from hlacore.federates.robot_world import codec
+    from hlacore.federates.ros_bridge.ros_api import reliable
+    from hlacore.federates.ros_bridge.versions import select
 
-    rospy = import_rospy()
-    from geometry_msgs.msg import Twist
-    from nav_msgs.msg import Odometry
-    from sensor_msgs.msg import Range
-
-    rospy.init_node("paper1_control", disable_signals=True)
+    api = select(ros)
+    api.init_node("paper1_control")
+    msgs = api.msgs
     controller = paper1.Controller()
     drive = paper1.ObstacleDriver()
-    pubs = {name: rospy.Publisher(f"/{name}/cmd_vel", Twist, queue_size=100)
+    pubs = {name: api.publisher(f"/{name}/cmd_vel", msgs.Twist, reliable(codec.INTERACTION))
             for name in ("avatar",) + paper1.OBSTACLES}
 
-    def twist(linear: float) -> Twist:
-        msg = Twist()
+    def twist(linear: float) -> Any:
+        msg = msgs.Twist()
         msg.linear.x = linear
         return msg
 
-    def on_range(msg: Range) -> None:
-        pubs["avatar"].publish(twist(controller(msg.range)))
+    def on_pose(name: str) -> Callable[[Any], None]:
+        return lambda msg: pubs[name].publish(twist(drive(name, msg.pose.pose.position.y)))
 
-    def on_pose(msg: Odometry, name: str) -> None:
-        pubs[name].publish(twist(drive(name, msg.pose.pose.position.y)))
-
-    subs = [rospy.Subscriber("/avatar/range", Range, on_range, queue_size=100)]
-    subs += [rospy.Subscriber(f"/{n}/base_pose_ground_truth", Odometry, on_pose, n, queue_size=100)
+    subs = [api.subscriber("/avatar/range", msgs.Range, lambda msg: pubs["avatar"].publish(twist(controller(msg.range))),
+                           reliable("ranges"))]
+    subs += [api.subscriber(f"/{n}/base_pose_ground_truth", msgs.Odometry, on_pose(n), reliable("pose"))
              for n in paper1.OBSTACLES]
     stop = threading.Event()
     signal.signal(signal.SIGTERM, lambda *_: stop.set())
@@ -88,28 +90,32 @@ def node_main(timeout: float = 600.0) -> int:
     print("paper1_control ready", flush=True)
     stop.wait(timeout)
     for sub in subs:
-        sub.unregister()
-    rospy.signal_shutdown("done")
+        api.unsubscribe(sub)
+    api.shutdown("done")
     return 0
 
 
 # ---- the scenario ----
 
 def run(address: str, duration: float = 30.0, period: float = 0.1, dt: float = 0.01,
-        node_timeout: float = 60.0, cycle_timeout: float = 30.0, input_timeout: float = 5.0) -> Result:
-    """Play the scenario on the gateway at ``address`` with the ROS master of ``$ROS_MASTER_URI`` (this
-    process's ROS node is the bridge: call once per process)."""
+        node_timeout: float = 60.0, cycle_timeout: float = 30.0, input_timeout: float = 5.0,
+        ros: Optional[int] = None) -> Result:
+    """Play the scenario on the gateway at ``address`` on ROS ``ros`` (None: found): ROS 1 with the master of
+    ``$ROS_MASTER_URI``, ROS 2 in a process that has its environment (``ros2_env``). This process's ROS node is
+    the bridge: call once per process."""
     creator = rti.RTIAmbassador(address)
     creator.createFederationExecution(FEDERATION, str(FOM_PATH))
     world = WorldFederate.join(World(paper1.world_spec(), dt=dt, watchdog=0.2), address, period=period,
                                lookahead=period)
     result = Result()
     node: Optional[subprocess.Popen[str]] = None
+    api = select(ros)
     bridge = RosBridge(world_mappings(paper1.world_spec()), address, period=period, clock=True,
-                       await_inputs=input_timeout)
+                       await_inputs=input_timeout, ros=api)
     try:
         bridge.start()
-        node = subprocess.Popen([sys.executable, "-m", "hlacore.experiments.paper1.ros", "--node"],
+        node = subprocess.Popen([sys.executable, "-m", "hlacore.experiments.paper1.ros", "--node", "--ros",
+                                 str(api.version)],
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                                 text=True)
         wired = ["/avatar/range", "/avatar/cmd_vel"] + [f"/{n}/{t}" for n in paper1.OBSTACLES
@@ -177,38 +183,39 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                         help="node: world federate + bridge + the controllers as a rospy node; de: the DE "
                              "controller federate + bridge + the world as a stageros-style ROS node")
     parser.add_argument("--ros", type=int, choices=(1, 2), default=None,
-                        help="with --controller de: the ROS between the bridge and the world node (default: found "
-                             "from the environment and what is installed); --controller node is ROS 1")
+                        help="the ROS between the bridge and the ROS node (default: found from the environment "
+                             "and what is installed)")
     parser.add_argument("--record", action="store_true",
                         help="with --controller de and the in-process gateway: record the run into "
                              "OUTDIR/paper1-de.mcap, the federation's events and the bridged ROS topics in one file")
     parser.add_argument("--node", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.node:
-        return node_main()
+        return node_main(args.ros)
     if args.controller == "de":
         if args.record and args.rtig:
             parser.error("--record needs the in-process gateway (with rtig: rtig --record, the bridge's "
                          "--record-ros, then ros_bridge.recorder.merge)")
         return _main_de(args.outdir, args.rtig, args.duration, args.ros, args.record)
-    if args.ros == 2:
-        parser.error("--ros 2 needs --controller de (the controllers' node of --controller node is rospy's)")
+    ros = args.ros or detect()
+    if ros == 2:
+        ros2_env.reexec_with_ros2()  # the bridge runs here: rclpy needs its libraries from the start
     with contextlib.ExitStack() as stack:
-        stack.enter_context(ros_master())
+        if ros == 1:
+            stack.enter_context(ros_master())
         address = args.rtig or str(stack.enter_context(hlacore.Gateway(port=0)).address)
-        result = run(address, duration=args.duration)
+        result = run(address, duration=args.duration, ros=ros)
     for name, passed in result.checks.items():
         print(f"{'ok  ' if passed else 'FAIL'} {name}")
     for path in write_outputs(result, args.outdir):
         print(f"wrote {path}")
-    print(json.dumps(result.summary()), flush=True)
+    print(json.dumps({**result.summary(), "ros": ros}), flush=True)
     return 0 if result.ok else 1
 
 
 def _main_de(outdir: str, rtig: Optional[str], duration: float, ros: Optional[int] = None,
              record: bool = False) -> int:
     from hlacore.federates.ros_bridge.recorder import merge
-    from hlacore.federates.ros_bridge.versions import detect
 
     from . import chain as paper1_chain
 

@@ -199,3 +199,45 @@ def test_large_values_to_a_paused_subscriber_stall_nobody(tmp_path: pathlib.Path
         publisher.close()
     # Held back until the paused one was continued, the calls would have waited for it: none did.
     assert slowest < 5.0, slowest
+
+
+def test_the_large_value_that_starts_a_spill_arrives_whole(tmp_path: pathlib.Path) -> None:
+    """A stopped subscriber is sent values of 1 MiB, each forwarded by reference (spliced): while its stream
+    stays within the budget they go into its buffer; the one that takes it over is sent once it has read nothing
+    for longer than the gateway waits before spilling, so that this value starts the spill. It goes behind what
+    the spill holds, not into the buffer the spill cut: continued, the subscriber reads every value whole, in
+    order."""
+    spill = tmp_path / "spill"
+    spill.mkdir()
+    with optimized_rtig(tmp_path, "--spill-dir", str(spill)) as server:
+        rti.RTIAmbassador(server.address).createFederationExecution("TestFed", ROBOT_FED)
+        with start("paused", server.address, 0, "receive") as paused:
+            publisher = rti.RTIAmbassador(server.address)
+            publisher.joinFederationExecution("publisher", "TestFed", rti.FederateAmbassador())
+            robot = publisher.getObjectClassHandle("robot")
+            location = publisher.getAttributeHandle("location", robot)
+            publisher.publishObjectClass(robot, [location])
+            obj = publisher.registerObjectInstance(robot, "publisher")
+            paused.send_signal(signal.SIGSTOP)
+            sent, started_by = 0, None
+            try:
+                while not backlog(status(server.address), "paused").get("disk"):
+                    assert sent < 64, f"no spill after {sent} values of 1 MiB"
+                    held = backlog(status(server.address), "paused")["memory"]
+                    over = held + MIB > BUDGET
+                    if over:
+                        time.sleep(0.2)  # it reads nothing: it has stopped reading (50 ms), not just fallen behind
+                    publisher.updateAttributeValues(obj, {location: f"{sent:016d}".encode().ljust(MIB, b".")}, "")
+                    sent += 1
+                    started_by = sent if over else None
+                    time.sleep(0.2)  # the gateway has served it when its status is read
+            finally:
+                paused.send_signal(signal.SIGCONT)
+            publisher.updateAttributeValues(obj, {location: b"END"}, "")
+            report = paused.read_json(60)
+            publisher.resignFederationExecution(rti.ResignAction.DeleteObjectsAndReleaseAttributes)
+            assert paused.wait(30) == 0
+        log = server.log()
+    assert started_by == sent, f"the spill began before value {sent}, which took the stream over its budget"
+    assert report["received"] == sent and report["in_order"], report
+    assert "spilled to" in log and "dropped" not in log, log

@@ -32,14 +32,27 @@ def peak_rss(pid: int) -> int:
     raise AssertionError(f"no VmHWM for pid {pid}")
 
 
+def parse_seconds(text: str) -> float:
+    """The best of five parses of ``text``, in seconds (the least disturbed by whatever else runs)."""
+    times = []
+    for _ in range(5):
+        start = time.perf_counter()
+        hlacore.fed.parse_text(text, "big.fed")
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
 def test_forty_thousand_attributes_parse_with_their_handles() -> None:
     """One class of 40 000 attributes (1.75 MB; 5 s before the parser was linear): every class, attribute and
-    handle right, each found by name and by handle, in under a second."""
+    handle right, each found by name and by handle; and the parser about linear: sixteen times the attributes
+    take 35 to 50 times as long here (the larger tables miss the caches more), far from the 256 times of a
+    quadratic parser (a ratio of times measured in the same run, which a loaded machine skews less than a
+    bound in seconds)."""
     text = generate_fed(1, ATTRIBUTES)
-    start = time.perf_counter()
     fom = hlacore.fed.parse_text(text, "big.fed")
-    seconds = time.perf_counter() - start
-    print(f"\n{len(text) / 1e6:.2f} MB, {ATTRIBUTES} attributes: parsed in {seconds * 1e3:.0f} ms")
+    seconds, sixteenth = parse_seconds(text), parse_seconds(generate_fed(1, ATTRIBUTES // 16))
+    print(f"\n{len(text) / 1e6:.2f} MB, {ATTRIBUTES} attributes: parsed in {seconds * 1e3:.0f} ms, "
+          f"{seconds / sixteenth:.0f} times a sixteenth of them")
     assert [c.qualified_name for c in fom.object_classes] == ["ObjectRoot", "RTIprivate", "t0_c0"]
     cls = fom.object_class("ObjectRoot.t0_c0")
     assert len(cls.attributes) == ATTRIBUTES + 1
@@ -51,7 +64,7 @@ def test_forty_thousand_attributes_parse_with_their_handles() -> None:
         assert attribute.order == ("timestamp" if a % 2 else "receive")
     with pytest.raises(KeyError):
         cls.attribute(f"d0a{ATTRIBUTES}")
-    assert seconds < 1.0
+    assert seconds / sixteenth < 128
 
 
 def test_a_deep_tree_of_large_classes_inherits_every_attribute() -> None:

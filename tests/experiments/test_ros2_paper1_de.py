@@ -19,6 +19,21 @@ from support.ros import WORLD, assert_stage_on_its_own_clock, running
 from support.ros2 import ros2_space
 
 
+def paper1_on_ros2(tmp_path: pathlib.Path, out: pathlib.Path, *args: str) -> str:
+    """``python -m hlacore.experiments.paper1.ros OUT --ros 2 ARGS`` in a loopback-only namespace: its stdout,
+    once it has exited with status 0."""
+    with ros2_space(tmp_path) as space:
+        proc = space.popen(["-m", "hlacore.experiments.paper1.ros", str(out), "--ros", "2", *args])
+        try:
+            stdout, _ = proc.communicate(timeout=300)
+        finally:
+            if proc.poll() is None:
+                proc.kill()
+                proc.communicate()
+    assert proc.returncode == 0, stdout
+    return stdout
+
+
 @pytest.mark.slow  # four processes and 300 lockstep cycles through DDS
 def test_paper1_de_controller_through_ros2(tmp_path: pathlib.Path) -> None:
     """One command, paper 1's architecture on ROS 2: the paper-1 checks pass, every pose of the world node is
@@ -27,17 +42,7 @@ def test_paper1_de_controller_through_ros2(tmp_path: pathlib.Path) -> None:
     (``--record``) opens with the mcap reader; its ROS 2 messages decode with their schemas: the world node's
     odometry at every tick and a Twist for each cmd_vel interaction the federation's events hold."""
     out = tmp_path / "out"
-    with ros2_space(tmp_path) as space:
-        proc = space.popen(["-m", "hlacore.experiments.paper1.ros", str(out), "--controller", "de", "--ros", "2",
-                            "--record"])
-        try:
-            stdout, _ = proc.communicate(timeout=300)
-        finally:
-            if proc.poll() is None:
-                proc.kill()
-                proc.communicate()
-    assert proc.returncode == 0, stdout
-    summary = check_de_run(stdout, out)
+    summary = check_de_run(paper1_on_ros2(tmp_path, out, "--controller", "de", "--record"), out)
     assert summary["ros"] == 2
 
     check_recording(out, summary, DecoderFactory(), "cdr", "ros2msg")
@@ -48,16 +53,7 @@ def test_paper1_with_the_controllers_as_a_ros2_node(tmp_path: pathlib.Path) -> N
     (re-executed with ROS 2's environment), the controllers as an rclpy node in another, in lockstep through
     DDS; the same checks as on ROS 1; nothing is left running in the namespace."""
     out = tmp_path / "out"
-    with ros2_space(tmp_path) as space:
-        proc = space.popen(["-m", "hlacore.experiments.paper1.ros", str(out), "--ros", "2"])
-        try:
-            stdout, _ = proc.communicate(timeout=300)
-        finally:
-            if proc.poll() is None:
-                proc.kill()
-                proc.communicate()
-    assert proc.returncode == 0, stdout
-    assert check_node_run(stdout, out)["ros"] == 2
+    assert check_node_run(paper1_on_ros2(tmp_path, out), out)["ros"] == 2
 
 
 def test_stage_node_on_its_own_clock_on_ros2(tmp_path: pathlib.Path) -> None:

@@ -7,6 +7,7 @@ joining, or after a clean resign, leaving nothing behind."""
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import math
 import os
 import pathlib
@@ -429,10 +430,15 @@ def test_enumerations_travel(gateway_address: str, tmp_path: pathlib.Path,
 
 def test_an_enumeration_beyond_its_items_is_refused(gateway_address: str, tmp_path: pathlib.Path,
                                                     tmp_path_factory: pytest.TempPathFactory) -> None:
-    """A start value no item has (by name or value) is a MappingError before joining; a received value no item has
-    is an InputError, and an output no item has (the gearbox jams on a negative throttle) a StepFailed, each by the
-    step concerned, after resigning."""
+    """An item beyond the 32 bits it travels in (FMI 3's enumerations are 64-bit) and a start value no item has
+    (by name or value) are MappingErrors before joining; a received value no item has is an InputError, and an
+    output no item has (the gearbox jams on a negative throttle) a StepFailed, each by the step concerned, after
+    resigning."""
     gearbox = build_fmu("gear2", tmp_path_factory.getbasetemp() / "fmus")
+    model = FmuModel(gearbox)
+    model.variables["gear"] = dataclasses.replace(model.variables["gear"], items=(("Far", 2**40),))
+    with pytest.raises(MappingError, match="gear: an item of its Enumeration is beyond HLAinteger32BE"):
+        Mapping.by_name(model).check(model)
     for start in ("Fifth", 5):
         with pytest.raises(MappingError, match=rf"gear = {start!r}: not one of its items \(Reverse = -1, "
                                                r"Neutral = 0, Drive = 1\)"):

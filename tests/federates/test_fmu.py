@@ -479,7 +479,9 @@ def test_any_bytes_received_decode_to_a_value_the_input_takes_or_to_an_input_err
 def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway, any_lag: pathlib.Path,
                                               tmp_path: pathlib.Path) -> None:
     """--write-fom writes the by-name FOM; the command then creates the federation from it, runs alone to the
-    stop time with a parameter from --start, and its CSV is fmpy's run of the same start values; FMI 2 and 3."""
+    stop time with a parameter from --start, and its CSV is fmpy's run of the same start values; FMI 2 and 3.
+    --alone does the same with no gateway to give (an in-process one, the FOM from the mapping), and not with
+    --address."""
     lag_fmu = any_lag
     fed, table = tmp_path / "lag.fed", tmp_path / "y.csv"
     command = [sys.executable, "-m", "hlacore.fmu", str(lag_fmu), "--federation", "CliFed"]
@@ -497,6 +499,15 @@ def test_command_line_writes_the_fom_and_runs(inprocess_gateway: hlacore.Gateway
     assert rows[0] == ["time", "y"]
     assert [float(r[1]) for r in rows[1:]] == pytest.approx(list(expected["y"]), rel=1e-12)
     rti.RTIAmbassador(str(inprocess_gateway.address)).destroyFederationExecution("CliFed")  # nobody left joined
+    alone = tmp_path / "alone.csv"
+    done = subprocess.run(command + ["--alone", "--step-size", "0.25", "--stop-time", "1", "--start", "u=2",
+                                     "--start", "tau=0.5", "--csv", str(alone)], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert alone.read_text() == table.read_text()
+    done = subprocess.run(command + ["--alone", "--address", "127.0.0.1:60400"], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 2 and "--address: not allowed with argument --alone" in done.stderr, done.stderr
 
 
 def _rezip(source: pathlib.Path, target: pathlib.Path, description: str | None = None,

@@ -1,17 +1,22 @@
 """``python -m hlacore.fmu MODEL.fmu``: run an FMI 2 or FMI 3 co-simulation FMU as a federate (docs/fmu.md).
 
 A bad FMU or mapping is reported as ``error: ...`` on stderr with exit status 2, before joining; an RTI error
-(a class the federation's FOM lacks: NameNotFound) or a time-out with status 1, after resigning."""
+(a class the federation's FOM lacks: NameNotFound) or a time-out with status 1, after resigning. ``--alone``
+runs the FMU by itself on an in-process gateway, its federation created from the mapping's FOM: a check of the
+FMU and its mapping, and its outputs (``--csv``), before it joins others."""
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import csv
 import pathlib
 import sys
+import tempfile
 from typing import Any, Optional, Sequence
 
 from .. import rti
+from ..gateway import Gateway
 from .errors import FmuError
 from .federate import FmuFederate
 from .mapping import Mapping
@@ -37,7 +42,11 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("fmu", help="the FMI 2 or FMI 3 co-simulation FMU")
     p.add_argument("--federation", default="FmuFed", help="the federation to join (default: %(default)s)")
     p.add_argument("--fed", help="create the federation from this .fed unless it exists")
-    p.add_argument("--address", help="the gateway (default: hlacore's, $HLACORE_RTIG_ADDRESS ...)")
+    where = p.add_mutually_exclusive_group()
+    where.add_argument("--address", help="HOST:PORT of the gateway (default $HLACORE_RTIG, "
+                       "$CERTI_HOST:$CERTI_TCP_PORT or 127.0.0.1:60400)")
+    where.add_argument("--alone", action="store_true", help="run alone on an in-process gateway, the federation "
+                       "created from the mapping's FOM (unless --fed names another)")
     p.add_argument("--name", help="the federate's name (default: the model's name)")
     p.add_argument("--mapping", help="a TOML mapping of variables to attributes (default: by name)")
     p.add_argument("--start", action="append", type=_start_value, default=[], metavar="NAME=VALUE",
@@ -70,11 +79,18 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             experiment.stopTime if experiment and experiment.stopTime else None)
         if step is None or stop is None:
             raise FmuError(f"{args.fmu}: no default experiment; give --step-size and --stop-time")
-        with FmuFederate(args.fmu, args.federation, step_size=float(step), name=args.name, address=args.address,
-                         fed_file=args.fed, mapping=mapping, start_values=dict(args.start),
-                         save_dir=args.save_dir, feedthrough=args.feedthrough) as federate:
-            federate.join()
-            trajectory = federate.run(float(stop))
+        with contextlib.ExitStack() as alone:
+            address, fed = args.address, args.fed
+            if args.alone:
+                address = str(alone.enter_context(Gateway(port=0)).address)
+                if fed is None:
+                    fed = str(pathlib.Path(alone.enter_context(tempfile.TemporaryDirectory())) / "mapping.fed")
+                    pathlib.Path(fed).write_text(mapping.fed(args.federation))
+            with FmuFederate(args.fmu, args.federation, step_size=float(step), name=args.name, address=address,
+                             fed_file=fed, mapping=mapping, start_values=dict(args.start),
+                             save_dir=args.save_dir, feedthrough=args.feedthrough) as federate:
+                federate.join()
+                trajectory = federate.run(float(stop))
     except FmuError as error:
         print(f"error: {error}", file=sys.stderr)
         return 2

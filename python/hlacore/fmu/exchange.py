@@ -45,8 +45,8 @@ class Input(NamedTuple):
                 raise InputError(f"{self.variable.name}: {source} sent {len(data)} bytes, not one {self.codec.name}")
             return value
         if len(data) % size or len(data) < (self.element + 1) * size:
-            raise InputError(f"{self.variable.name}: {source} sent {len(data)} bytes, not an array of {self.codec.name} "
-                             f"with an element {self.element}")
+            raise InputError(f"{self.variable.name}: {source} sent {len(data)} bytes, not an array of "
+                             f"{self.codec.name} with an element {self.element}")
         return self.codec.unpack(data, self.element * size)[0]
 
 

@@ -67,8 +67,8 @@ class _Ambassador(rti.FederateAmbassador):
                 continue
             if time is not None and self.taken is not None and time <= self.taken:
                 self.error = self.error or InputError(
-                    f"{target.variable.name}: {source} sent a value stamped {time:g} after the inputs of {self.taken:g} "
-                    f"were taken: from a federate with lookahead 0, such as another FMU with direct feedthrough; "
+                    f"{target.variable.name}: {source} sent a value stamped {time:g} after the inputs of "
+                    f"{self.taken:g} were taken: from a federate with lookahead 0, such as another FMU with direct feedthrough; "
                     f"run this one with feedthrough off (docs/fmu.md)")
                 continue
             try:

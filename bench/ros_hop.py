@@ -96,7 +96,7 @@ def main() -> int:
             print("ROS 1 is not installed (./scripts/install-ros.sh): its row is left out", file=sys.stderr)
             continue
         if version == 2 and not ros2_env.installed():
-            print("ROS 2 is not installed (python -m hlacore.federates.ros_bridge.install_ros2): its row is left out", file=sys.stderr)
+            print(f"ROS 2 is not installed ({ros2_env.INSTALL_COMMAND}): its row is left out", file=sys.stderr)
             continue
         rows.append(measure(version, count))
     print("| ROS | floor ROS → ROS → ROS, median | via HLA ROS → HLA → ROS, median | p99 via HLA | added per hop |")

@@ -23,7 +23,7 @@ def test_ros_bridge_hop(version: int) -> None:
     if version == 1 and not shutil.which("roscore"):
         pytest.skip("ROS 1 is not installed (./scripts/install-ros.sh)")
     if version == 2 and not ros2_env.installed():
-        pytest.skip("ROS 2 is not installed (python -m hlacore.federates.ros_bridge.install_ros2)")
+        pytest.skip(f"ROS 2 is not installed ({ros2_env.INSTALL_COMMAND})")
     result = measure(version, COUNT)
     assert len(result["floor"]) == len(result["bridged"]) == COUNT - COUNT // 10
     out = ROOT / "build" / "bench" / "ros-bridge.json"

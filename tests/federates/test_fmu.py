@@ -398,18 +398,22 @@ GEARBOX = {"gear": omt.HLAinteger32BE, "throttle": F64, "speed": F64, "engaged":
            "shifts": omt.HLAinteger32BE}
 
 
+@pytest.fixture(scope="session")
+def gearbox(tmp_path_factory: pytest.TempPathFactory) -> pathlib.Path:
+    """The gearbox of tests/data/fmu/gear2 (FMI 2, on hlacore's C skeleton) as an .fmu, compiled once per session."""
+    return build_fmu("gear2", tmp_path_factory.getbasetemp() / "fmus")
+
+
 def gear(k: int) -> int:
     """The gear the feeder sends at step k: Drive, Drive, Reverse, Neutral, ... (a change at every step but one
     in four)."""
     return (1, 1, -1, 0)[k % 4]
 
 
-def test_enumerations_travel(gateway_address: str, tmp_path: pathlib.Path,
-                             tmp_path_factory: pytest.TempPathFactory) -> None:
+def test_enumerations_travel(gateway_address: str, tmp_path: pathlib.Path, gearbox: pathlib.Path) -> None:
     """An FMI 2 FMU on hlacore's C skeleton (tests/data/fmu/gear2) with an Enumeration input and output and an
     Integer output: the start value is given by the item's name ("Drive"); the gear the feeder sends at k h as
     HLAinteger32BE comes back engaged at (k + 1) h, with speed = gear * throttle and the count of shifts."""
-    gearbox = build_fmu("gear2", tmp_path_factory.getbasetemp() / "fmus")
     with feeding(gateway_address, gearbox, tmp_path) as (feeder, handles, source):
         def send(k: int) -> None:
             feeder.rtia.updateAttributeValues(source, {handles["gear"]: GEARBOX["gear"].pack(gear(k)),
@@ -429,12 +433,11 @@ def test_enumerations_travel(gateway_address: str, tmp_path: pathlib.Path,
 
 
 def test_an_enumeration_beyond_its_items_is_refused(gateway_address: str, tmp_path: pathlib.Path,
-                                                    tmp_path_factory: pytest.TempPathFactory) -> None:
+                                                    gearbox: pathlib.Path) -> None:
     """An item beyond the 32 bits it travels in (FMI 3's enumerations are 64-bit) and a start value no item has
     (by name or value) are MappingErrors before joining; a received value no item has is an InputError, and an
     output no item has (the gearbox jams on a negative throttle) a StepFailed, each by the step concerned, after
     resigning."""
-    gearbox = build_fmu("gear2", tmp_path_factory.getbasetemp() / "fmus")
     model = FmuModel(gearbox)
     model.variables["gear"] = dataclasses.replace(model.variables["gear"], items=(("Far", 2**40),))
     with pytest.raises(MappingError, match="gear: an item of its Enumeration is beyond HLAinteger32BE"):

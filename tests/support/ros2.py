@@ -1,4 +1,4 @@
-"""ROS 2 for the tests: whether its wheels are installed (hlacore.federates.ros_bridge.install_ros2), a loopback-only network
+"""ROS 2 for the tests: whether its wheels are installed (ros_bridge.install_ros2), a loopback-only network
 namespace with the environment of ROS 2 processes (a domain of the test's own, logs in its tmp dir), and
 processes started inside it, stopped by pid. The test process itself never imports rclpy."""
 
@@ -25,7 +25,7 @@ from support.nethosts import LoopbackNamespace, namespaces_unavailable
 def require_ros2() -> None:
     """Skip without ROS 2's wheels or network namespaces, except under CI, where scripts/test.sh must have
     installed the wheels and namespaces work (root)."""
-    why = "" if ros2_env.installed() else f"ROS 2 is not installed under {ros2_env.prefix()} (python -m hlacore.federates.ros_bridge.install_ros2)"
+    why = "" if ros2_env.installed() else f"ROS 2 is not installed under {ros2_env.prefix()} ({ros2_env.INSTALL_COMMAND})"
     why = why or namespaces_unavailable()
     if why:
         if os.environ.get("CI"):

@@ -221,10 +221,9 @@ def test_the_large_value_that_starts_a_spill_arrives_whole(tmp_path: pathlib.Pat
             paused.send_signal(signal.SIGSTOP)
             sent, started_by = 0, None
             try:
-                while not backlog(status(server.address), "paused").get("disk"):
+                while not (held := backlog(status(server.address), "paused")).get("disk"):
                     assert sent < 64, f"no spill after {sent} values of 1 MiB"
-                    held = backlog(status(server.address), "paused")["memory"]
-                    over = held + MIB > BUDGET
+                    over = held["memory"] + MIB > BUDGET
                     if over:
                         time.sleep(0.2)  # it reads nothing: it has stopped reading (50 ms), not just fallen behind
                     publisher.updateAttributeValues(obj, {location: f"{sent:016d}".encode().ljust(MIB, b".")}, "")

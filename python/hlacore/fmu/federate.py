@@ -68,8 +68,8 @@ class _Ambassador(rti.FederateAmbassador):
             if time is not None and self.taken is not None and time <= self.taken:
                 self.error = self.error or InputError(
                     f"{target.variable.name}: {source} sent a value stamped {time:g} after the inputs of "
-                    f"{self.taken:g} were taken: from a federate with lookahead 0, such as another FMU with direct feedthrough; "
-                    f"run this one with feedthrough off (docs/fmu.md)")
+                    f"{self.taken:g} were taken: from a federate with lookahead 0, such as another FMU with direct "
+                    f"feedthrough; run this one with feedthrough off (docs/fmu.md)")
                 continue
             try:
                 self.received[target.variable.name] = target.decode(data, source)

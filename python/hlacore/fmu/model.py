@@ -49,9 +49,9 @@ class Variable:
         """Why the variable cannot take ``value`` (None: it can): a Real takes a number, an integer type an int
         in its range, an Enumeration the value of one of its items, a Boolean a bool, a String a str, a Binary
         bytes."""
-        kind = _KINDS.get(self.type)
         if self.type == "Enumeration" and (type(value) is not int or value not in {v for _, v in self.items}):
             return f"not one of its items ({', '.join(f'{n} = {v}' for n, v in self.items)})"
+        kind = _KINDS.get(self.type)
         if kind is None or isinstance(value, bool) and kind is not bool or not (
                 isinstance(value, (int, float)) if kind is float else isinstance(value, kind)):
             return f"{self.name} is of type {self.type}"
@@ -259,10 +259,9 @@ class FmuInstance:
         for name, value in values.items():
             if isinstance(value, float) and not math.isfinite(value):
                 raise StepFailed(f"{self.model.path}: output {name} = {value} at t = {time:g}")
-            variable = self.model.variables[name]
-            if variable.items and variable.refusal(value):
-                raise StepFailed(f"{self.model.path}: output {name} = {value} at t = {time:g}, "
-                                 f"{variable.refusal(value)}")
+            refusal = self.model.variables[name].items and self.model.variables[name].refusal(value)
+            if refusal:
+                raise StepFailed(f"{self.model.path}: output {name} = {value} at t = {time:g}, {refusal}")
         return values
 
     def save_state(self) -> bytes:

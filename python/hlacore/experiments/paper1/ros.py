@@ -62,7 +62,6 @@ def node_main(ros: Optional[int] = None, timeout: float = 600.0) -> int:
     obstacle pose with a Twist, with the QoS the bridge gives those topics (ROS 2)."""
     from hlacore.federates.robot_world import codec
     from hlacore.federates.ros_bridge.ros_api import reliable
-    from hlacore.federates.ros_bridge.versions import select
 
     api = select(ros)
     api.init_node("paper1_control")
@@ -77,11 +76,13 @@ def node_main(ros: Optional[int] = None, timeout: float = 600.0) -> int:
         msg.linear.x = linear
         return msg
 
+    def on_range(msg: Any) -> None:
+        pubs["avatar"].publish(twist(controller(msg.range)))
+
     def on_pose(name: str) -> Callable[[Any], None]:
         return lambda msg: pubs[name].publish(twist(drive(name, msg.pose.pose.position.y)))
 
-    subs = [api.subscriber("/avatar/range", msgs.Range, lambda msg: pubs["avatar"].publish(twist(controller(msg.range))),
-                           reliable("ranges"))]
+    subs = [api.subscriber("/avatar/range", msgs.Range, on_range, reliable("ranges"))]
     subs += [api.subscriber(f"/{n}/base_pose_ground_truth", msgs.Odometry, on_pose(n), reliable("pose"))
              for n in paper1.OBSTACLES]
     stop = threading.Event()

@@ -22,6 +22,8 @@ import sysconfig
 import tempfile
 from typing import Optional, Sequence
 
+#: The command, as the hints that it is needed name it.
+COMMAND = "python -m hlacore.federates.ros_bridge.install_ros2"
 #: The pinned wheels, shipped with the package.
 REQUIREMENTS = pathlib.Path(__file__).with_name("ros2-requirements.txt")
 #: The prefix under the venv where the wheels go.
@@ -79,7 +81,7 @@ def install(root: Optional[str] = None) -> int:
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """The command (see the module's docstring)."""
-    parser = argparse.ArgumentParser(prog="python -m hlacore.federates.ros_bridge.install_ros2",
+    parser = argparse.ArgumentParser(prog=COMMAND,
                                      description="Install ROS 2 Kilted's pinned wheels for the ROS 2 bridge.")
     parser.add_argument("--prefix", default=None, help=f"where to install (default: {prefix()})")
     parser.add_argument("--check", action="store_true", help="list the missing wheels, install nothing")

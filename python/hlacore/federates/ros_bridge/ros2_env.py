@@ -40,7 +40,7 @@ import os
 import sys
 from typing import Mapping, Optional
 
-from .install_ros2 import prefix  # where the wheels are, defined where they are installed
+from .install_ros2 import COMMAND as INSTALL_COMMAND, prefix  # how and where the wheels are installed
 
 #: The middleware the pinned wheels bring.
 RMW_IMPLEMENTATION = "rmw_fastrtps_cpp"
@@ -49,8 +49,7 @@ RMW_IMPLEMENTATION = "rmw_fastrtps_cpp"
 #: would not re-execute such a process again.
 READY_FLAG = "HLACORE_ROS2_ENV"
 INSTALL_HINT = ("the ROS 2 bridge needs ROS 2 Kilted's wheels (rclpy, rmw_fastrtps_cpp and the message "
-                "packages) for this Python: python -m hlacore.federates.ros_bridge.install_ros2 installs the "
-                "pinned set")
+                f"packages) for this Python: {INSTALL_COMMAND} installs the pinned set")
 
 
 #: Fast DDS's XML profile for the processes started with :func:`environment` (see the module docstring).
